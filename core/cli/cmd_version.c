@@ -1,0 +1,17 @@
+#include <stdio.h>
+
+#include <sluice/closure.h>
+
+#include "core/cli/cli.h"
+#include "core/plugin/registry.h"
+
+int sl_cmd_version(int argc, char **argv) {
+  if (sl_cli_wants_help(argc, argv)) {
+    puts("usage: sluice version\nPrints the sluice version, the closure ABI and the plugin folder.");
+    return 0;
+  }
+  if (argc > 0) return sl_cli_error(2, "version takes no arguments");
+  printf("sluice %s\nclosure ABI %u.%u\nplugin folder %s\n", SLUICE_VERSION, SL_CLOSURE_ABI_MAJOR,
+         SL_CLOSURE_ABI_MINOR, sl_registry_default_dir());
+  return 0;
+}

@@ -1,0 +1,107 @@
+#include "core/config/scene_schema.h"
+
+#include <math.h>
+#include <string.h>
+
+static const sl_key_spec scene_keys[] = {
+    {"model", SL_KEY_CHOICE, 1, 0, 0, "navier_stokes|mixture|two_fluid", "the physical model"},
+    {"title", SL_KEY_STRING, 0, 0, 0, NULL, "a one-line title"},
+    {"geometry", SL_KEY_CHOICE, 0, 0, 0, "line|planar|axisymmetric", "1-D line, 2-D planar or axisymmetric (r, z)"},
+};
+static const sl_key_spec fluid_keys[] = {
+    {"density", SL_KEY_REAL, 0, 1e-3, 1e5, NULL, "fluid density, kg m^-3"},
+    {"viscosity", SL_KEY_REAL, 0, 1e-7, 1e7, NULL, "fluid dynamic viscosity, Pa s"},
+};
+static const sl_key_spec solid_keys[] = {
+    {"density", SL_KEY_REAL, 0, 1e-3, 1e5, NULL, "solid density, kg m^-3"},
+    {"diameter", SL_KEY_REAL, 0, 1e-9, 1.0, NULL, "particle diameter, m"},
+    {"phi_max", SL_KEY_REAL, 0, 0.01, 1.0, NULL, "maximum packing fraction"},
+    {"sphericity", SL_KEY_REAL, 0, 0.01, 1.0, NULL, "particle sphericity"},
+    {"porosity_max", SL_KEY_REAL, 0, 0.0, 0.99, NULL, "alternative to phi_max: 1 - phi_max"},
+};
+static const sl_key_spec time_keys[] = {
+    {"end", SL_KEY_REAL, 0, 0.0, 1e12, NULL, "end time, s"},
+    {"dt", SL_KEY_REAL, 0, 1e-15, 1e9, NULL, "first (or fixed) time step, s"},
+    {"scheme", SL_KEY_CHOICE, 0, 0, 0, "bdf1|bdf2|steady", "time integration"},
+    {"tolerance", SL_KEY_REAL, 0, 1e-14, 1.0, NULL, "local error tolerance of adaptive steps"},
+    {"adaptive", SL_KEY_BOOL, 0, 0, 0, NULL, "adapt the step to the error estimate"},
+};
+static const sl_key_spec solver_keys[] = {
+    {"linear", SL_KEY_CHOICE, 0, 0, 0, "umfpack|klu|cholmod", "sparse direct solver"},
+    {"nonlinear_tolerance", SL_KEY_REAL, 0, 1e-16, 1.0, NULL, "relative tolerance of Newton/Picard"},
+    {"max_iterations", SL_KEY_INT, 0, 1, 1000, NULL, "nonlinear iterations per step"},
+};
+static const sl_key_spec output_keys[] = {
+    {"file", SL_KEY_STRING, 0, 0, 0, NULL, "HDF5 output file"},
+    {"every", SL_KEY_REAL, 0, 0.0, 1e12, NULL, "output interval, s"},
+    {"fields", SL_KEY_LIST, 0, 0, 0, NULL, "fields to write"},
+};
+static const sl_key_spec plugins_keys[] = {
+    {"path", SL_KEY_LIST, 0, 0, 0, NULL, "folders searched first for closure libraries"},
+};
+
+#define SPEC(n, open, k) {n, open, k, (int)(sizeof k / sizeof k[0])}
+static const sl_section_spec sections[] = {
+    SPEC("scene", 0, scene_keys),   SPEC("fluid", 0, fluid_keys),   SPEC("solid", 0, solid_keys),
+    SPEC("time", 0, time_keys),     SPEC("solver", 0, solver_keys), SPEC("output", 0, output_keys),
+    SPEC("plugins", 0, plugins_keys),
+    {"mesh", 1, NULL, 0},           {"initial", 1, NULL, 0},        {"boundary.", 1, NULL, 0},
+    {"closure.", 1, NULL, 0}, /* checked against each closure's own schema */
+};
+
+const sl_section_spec *sl_scene_sections(int *n) {
+  *n = (int)(sizeof sections / sizeof sections[0]);
+  return sections;
+}
+
+static int check_value(const sl_ini *ini, const char *section, const sl_key_spec *k, sl_diag *d) {
+  switch (k->type) {
+    case SL_KEY_REAL: {
+      double v;
+      return sl_ini_get_real(ini, section, k->name, k->required, k->min, k->min, k->max, &v, d);
+    }
+    case SL_KEY_INT: {
+      long v;
+      return sl_ini_get_int(ini, section, k->name, k->required, (long)k->min, (long)k->min, (long)k->max, &v, d);
+    }
+    case SL_KEY_BOOL: {
+      int v;
+      return sl_ini_get_bool(ini, section, k->name, k->required, 0, &v, d);
+    }
+    case SL_KEY_CHOICE: {
+      int v;
+      return sl_ini_get_choice(ini, section, k->name, k->required, 0, k->choices, &v, d);
+    }
+    case SL_KEY_STRING:
+    case SL_KEY_LIST: {
+      const char *v;
+      return sl_ini_get_string(ini, section, k->name, k->required, "", &v, d);
+    }
+  }
+  return 0;
+}
+
+int sl_scene_validate(const sl_ini *ini, sl_diag *d) {
+  const char *known[32], *prefixes[8];
+  int nk = 0, np = 0;
+  for (size_t i = 0; i < sizeof sections / sizeof sections[0]; ++i) {
+    size_t l = strlen(sections[i].name);
+    if (sections[i].name[l - 1] == '.') prefixes[np++] = sections[i].name;
+    else known[nk++] = sections[i].name;
+  }
+  int rc = sl_ini_check_sections(ini, known, nk, prefixes, np, d);
+  if (rc) return rc;
+  for (size_t i = 0; i < sizeof sections / sizeof sections[0]; ++i) {
+    const sl_section_spec *s = &sections[i];
+    if (s->open) continue;
+    const char *names[32];
+    for (int k = 0; k < s->n_keys; ++k) names[k] = s->keys[k].name;
+    int present = sl_ini_find_section(ini, s->name) != NULL;
+    if (present && (rc = sl_ini_check_keys(ini, s->name, names, s->n_keys, d))) return rc;
+    for (int k = 0; k < s->n_keys; ++k) {
+      if (!present && !s->keys[k].required) continue;
+      if ((rc = check_value(ini, s->name, &s->keys[k], d))) return rc;
+    }
+  }
+  return 0;
+}

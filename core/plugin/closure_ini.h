@@ -1,0 +1,24 @@
+/* From a scene's [closure.<role>] section to a created closure. The role is
+ * the kind, optionally followed by a qualifier: [closure.viscosity],
+ * [closure.wall_stress.inner]. Keys: `model` (the closure name), optional
+ * `library` (which library wins when two provide the name), and the closure's
+ * own parameters, each checked against its schema with file:line errors. */
+#ifndef SLUICE_PLUGIN_CLOSURE_INI_H
+#define SLUICE_PLUGIN_CLOSURE_INI_H
+
+#include "core/config/ini.h"
+#include "core/plugin/instance.h"
+
+/* The kind of a [closure.<role>] section name. */
+int sl_closure_section_kind(const char *section, sl_kind *kind, sl_diag *d);
+
+/* Creates the closure a section names. */
+int sl_closure_from_ini(const sl_registry *r, const sl_ini *ini, const char *section, sl_closure **out,
+                        sl_diag *d);
+
+/* Search folders named in the scene: [plugins] path = dir, dir (relative to
+ * the scene file). Free the result with sl_plugin_dirs_free. */
+int sl_plugin_dirs_from_ini(const sl_ini *ini, char ***dirs, int *n, sl_diag *d);
+void sl_plugin_dirs_free(char **dirs, int n);
+
+#endif

@@ -1,0 +1,290 @@
+#include "core/plugin/instance.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/config/ini.h"
+#include "core/plugin/kinds.h"
+#include "core/plugin/validate.h"
+
+#define SL_HOST_VERSION (0 * 10000 + 1 * 100 + 0)
+
+/* ---- host services handed to closures ---- */
+
+static void host_log(void *host, int level, const char *fmt, ...) {
+  (void)host;
+  static const char *const names[] = {"error", "warning", "info", "debug"};
+  if (level < SL_LOG_ERROR || level > SL_LOG_INFO) return; /* debug output is dropped */
+  va_list ap;
+  va_start(ap, fmt);
+  fprintf(stderr, "closure %s: ", names[level]);
+  vfprintf(stderr, fmt, ap);
+  fputc('\n', stderr);
+  va_end(ap);
+}
+
+static void *host_alloc(void *host, size_t bytes) {
+  (void)host;
+  size_t rounded = (bytes + 63) / 64 * 64;
+  void *p = aligned_alloc(64, rounded ? rounded : 64);
+  if (p) memset(p, 0, rounded ? rounded : 64);
+  return p;
+}
+
+static void host_free(void *host, void *p) {
+  (void)host;
+  free(p);
+}
+
+/* ---- parameters ---- */
+
+int sl_params_new(const sl_closure_desc *desc, void **params, sl_diag *d) {
+  *params = host_alloc(NULL, desc->params_size ? desc->params_size : 1);
+  if (!*params) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  for (int32_t i = 0; i < desc->n_params; ++i) {
+    const sl_param_desc *p = &desc->params[i];
+    char *at = (char *)*params + p->offset;
+    if (p->type == SL_PARAM_REAL) {
+      double v = p->def;
+      memcpy(at, &v, sizeof v);
+    } else {
+      int32_t v = (int32_t)p->def;
+      memcpy(at, &v, sizeof v);
+    }
+  }
+  return 0;
+}
+
+void sl_params_free(void *params) { free(params); }
+
+int sl_params_find(const sl_closure_desc *desc, const char *key) {
+  for (int32_t i = 0; i < desc->n_params; ++i)
+    if (strcmp(desc->params[i].name, key) == 0) return (int)i;
+  return -1;
+}
+
+/* Index of `value` among "a|b|c", or -1. */
+static int choice_index(const char *choices, const char *value, char *list, size_t n) {
+  int idx = 0, found = -1;
+  size_t len = strlen(value);
+  snprintf(list, n, "%s", choices);
+  for (char *c = list; *c; ++c)
+    if (*c == '|') *c = ' ';
+  for (const char *s = choices; *s; ++idx) {
+    const char *bar = strchr(s, '|');
+    size_t l = bar ? (size_t)(bar - s) : strlen(s);
+    if (l == len && strncmp(s, value, l) == 0) found = idx;
+    s += l + (bar ? 1 : 0);
+    if (!bar) break;
+  }
+  return found;
+}
+
+int sl_params_set(const sl_closure_desc *desc, void *params, const char *key, const char *value, sl_diag *d) {
+  int i = sl_params_find(desc, key);
+  if (i < 0) {
+    const char *cands[128];
+    int n = 0;
+    for (int32_t k = 0; k < desc->n_params && n < 128; ++k) cands[n++] = desc->params[k].name;
+    if (n == 0) return sl_diag_set(d, SL_EBADINPUT, "closure '%s' takes no parameters (got '%s')", desc->name, key);
+    const char *s = sl_suggest(key, cands, n);
+    if (s) return sl_diag_set(d, SL_EBADINPUT, "closure '%s' has no parameter '%s'; did you mean '%s'?", desc->name, key, s);
+    return sl_diag_set(d, SL_EBADINPUT, "closure '%s' has no parameter '%s' (`sluice closure describe %s` lists them)",
+                       desc->name, key, desc->name);
+  }
+  const sl_param_desc *p = &desc->params[i];
+  char *at = (char *)params + p->offset;
+  switch (p->type) {
+    case SL_PARAM_REAL: {
+      double v;
+      if (sl_parse_real(value, &v))
+        return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not a number", key, value);
+      if (v < p->min || v > p->max)
+        return sl_diag_set(d, SL_EBADINPUT, "%s = %s is outside the allowed range [%g, %g] %s", key, value, p->min,
+                           p->max, p->units);
+      memcpy(at, &v, sizeof v);
+      return 0;
+    }
+    case SL_PARAM_INT: {
+      long v;
+      if (sl_parse_long(value, &v))
+        return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not an integer", key, value);
+      if (v < p->min || v > p->max)
+        return sl_diag_set(d, SL_EBADINPUT, "%s = %s is outside the allowed range [%g, %g]", key, value, p->min, p->max);
+      int32_t iv = (int32_t)v;
+      memcpy(at, &iv, sizeof iv);
+      return 0;
+    }
+    case SL_PARAM_BOOL: {
+      int b;
+      if (sl_parse_bool(value, &b))
+        return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not a boolean (true or false)", key, value);
+      int32_t iv = b;
+      memcpy(at, &iv, sizeof iv);
+      return 0;
+    }
+    case SL_PARAM_ENUM: {
+      char list[512];
+      int idx = choice_index(p->choices, value, list, sizeof list);
+      if (idx < 0) {
+        /* Suggest among the choices. */
+        char copy[512];
+        const char *cands[32];
+        int n = 0;
+        snprintf(copy, sizeof copy, "%s", p->choices);
+        for (char *save = NULL, *t = strtok_r(copy, "|", &save); t && n < 32; t = strtok_r(NULL, "|", &save))
+          cands[n++] = t;
+        const char *s = sl_suggest(value, cands, n);
+        if (s) return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not one of: %s; did you mean '%s'?", key, value, list, s);
+        return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not one of: %s", key, value, list);
+      }
+      int32_t iv = idx;
+      memcpy(at, &iv, sizeof iv);
+      return 0;
+    }
+  }
+  return sl_diag_set(d, SL_EBADINPUT, "%s: unsupported parameter type", key);
+}
+
+void sl_params_format_value(const sl_closure_desc *desc, const void *params, int i, char *buf, size_t n) {
+  const sl_param_desc *p = &desc->params[i];
+  const char *at = (const char *)params + p->offset;
+  if (p->type == SL_PARAM_REAL) {
+    double v;
+    memcpy(&v, at, sizeof v);
+    /* Shortest text that reads back to the same double; plain notation
+     * (150, 0.001) when it is no longer than the exponent form. */
+    char best[64];
+    snprintf(best, sizeof best, "%.17g", v);
+    for (int prec = 1; prec <= 17; ++prec) {
+      char tmp[64];
+      snprintf(tmp, sizeof tmp, "%.*g", prec, v);
+      if (strtod(tmp, NULL) == v) {
+        snprintf(best, sizeof best, "%s", tmp);
+        break;
+      }
+    }
+    if (strchr(best, 'e') && fabs(v) >= 1e-4 && fabs(v) < 1e15) {
+      for (int prec = 0; prec <= 17; ++prec) {
+        char tmp[64];
+        snprintf(tmp, sizeof tmp, "%.*f", prec, v);
+        if (strtod(tmp, NULL) == v) {
+          if (strlen(tmp) <= strlen(best) + 2) snprintf(best, sizeof best, "%s", tmp);
+          break;
+        }
+      }
+    }
+    snprintf(buf, n, "%s", best);
+    return;
+  }
+  int32_t v;
+  memcpy(&v, at, sizeof v);
+  if (p->type == SL_PARAM_BOOL) {
+    snprintf(buf, n, "%s", v ? "true" : "false");
+  } else if (p->type == SL_PARAM_ENUM) {
+    const char *s = p->choices;
+    for (int32_t k = 0; k < v && s; ++k) {
+      s = strchr(s, '|');
+      if (s) ++s;
+    }
+    size_t l = s ? strcspn(s, "|") : 0;
+    snprintf(buf, n, "%.*s", (int)l, s ? s : "");
+  } else {
+    snprintf(buf, n, "%d", (int)v);
+  }
+}
+
+/* ---- instances ---- */
+
+const char *sl_closure_label(const sl_closure_desc *desc, char *buf, size_t n) {
+  snprintf(buf, n, "%s/%s", sl_kind_name(desc->kind), desc->name);
+  return buf;
+}
+
+int sl_closure_create(const sl_closure_entry *entry, void *params, sl_closure **out, sl_diag *d) {
+  *out = NULL;
+  sl_closure *c = calloc(1, sizeof *c);
+  if (!c) {
+    sl_params_free(params);
+    return sl_diag_set(d, SL_EFAILED, "out of memory");
+  }
+  c->desc = entry->desc;
+  c->library = entry->library;
+  c->params = params;
+  c->api = (sl_host_api){.struct_size = (uint32_t)sizeof(sl_host_api),
+                         .host_version = SL_HOST_VERSION,
+                         .dim = 0,
+                         .log = host_log,
+                         .alloc = host_alloc,
+                         .free = host_free,
+                         .host = NULL};
+  if (c->desc->create) {
+    sl_error err = {-1, ""};
+    int rc = c->desc->create(&c->api, params, &c->state, &err);
+    if (rc != 0) {
+      char label[128];
+      sl_closure_label(c->desc, label, sizeof label);
+      sl_params_free(params);
+      free(c);
+      return sl_diag_set(d, SL_EBADINPUT, "closure %s (%s) refused its parameters: %s", label,
+                         entry->library->path, err.msg[0] ? err.msg : "no reason given");
+    }
+  } else {
+    c->state = params;
+  }
+  entry->library->n_in_use++;
+  *out = c;
+  return 0;
+}
+
+void sl_closure_destroy(sl_closure *c) {
+  if (!c) return;
+  if (c->desc->destroy) c->desc->destroy(&c->api, c->state);
+  if (c->library) c->library->n_in_use--;
+  sl_params_free(c->params);
+  free(c);
+}
+
+int sl_closure_evaluate(sl_closure *c, const sl_eval_args *a) {
+  a->err->point = -1;
+  a->err->msg[0] = '\0';
+  c->n_calls++;
+  c->n_points += (unsigned long long)a->Q;
+  int rc = c->desc->evaluate(c->state, a);
+  if (rc != 0) {
+    if (!a->err->msg[0]) snprintf(a->err->msg, sizeof a->err->msg, "returned %d without a message", rc);
+    return rc;
+  }
+  /* No silent NaN: a non-finite output is the closure's failure, recoverable. */
+  for (int32_t k = 0; k < c->desc->n_out; ++k) {
+    const double *o = a->out[k];
+    if (!o) continue;
+    /* x * 0 is 0 for finite x and NaN otherwise: one vectorisable pass, and
+     * the point-by-point search only when something is wrong. */
+    double acc = 0.0;
+    for (int32_t q = 0; q < a->Q; ++q) acc += o[q] * 0.0;
+    if (acc == 0.0) continue;
+    for (int32_t q = 0; q < a->Q; ++q) {
+      if (!isfinite(o[q])) {
+        a->err->point = q;
+        snprintf(a->err->msg, sizeof a->err->msg, "output '%s' is %g at point %d", c->desc->out[k].name, o[q], (int)q);
+        return SL_RECOVERABLE;
+      }
+    }
+  }
+  return 0;
+}
+
+int sl_closure_input(const sl_closure_desc *desc, const char *name) {
+  for (int32_t i = 0; i < desc->n_in; ++i)
+    if (strcmp(desc->in[i].name, name) == 0) return (int)i;
+  return -1;
+}
+
+int sl_closure_output(const sl_closure_desc *desc, const char *name) {
+  for (int32_t i = 0; i < desc->n_out; ++i)
+    if (strcmp(desc->out[i].name, name) == 0) return (int)i;
+  return -1;
+}
