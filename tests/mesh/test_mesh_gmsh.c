@@ -1,0 +1,340 @@
+/* Gmsh reader: 2.2 and 4.1 files of the same geometry give the same mesh;
+ * every malformed file gives SL_EBADINPUT with the right file:line. */
+#include "mesh_checks.h"
+
+static sl_diag d;
+
+static const char *data(const char *file) {
+  static char path[1024];
+  const char *src = getenv("SLUICE_SOURCE_DIR");
+  if (src)
+    snprintf(path, sizeof path, "%s/tests/mesh/data/%s", src, file);
+  else
+    snprintf(path, sizeof path, "%s/%s", SLUICE_MESH_DATA, file);
+  return path;
+}
+
+static sl_mesh *read(const char *file) {
+  sl_mesh *m = NULL;
+  int rc = sl_mesh_read_gmsh(data(file), &m, &d);
+  CHECK_MSG(rc == 0, "%s: %s", file, d.msg);
+  return m;
+}
+
+static int same_ints(const int *a, const int *b, size_t n) {
+  return (a == NULL) == (b == NULL) && (!a || memcmp(a, b, n * sizeof *a) == 0);
+}
+
+/* Identical node, cell, face and group sets (bit for bit). */
+static void check_same(const sl_mesh *a, const sl_mesh *b) {
+  CHECK(a->dim == b->dim && a->cell_type == b->cell_type);
+  CHECK(a->n_vertices == b->n_vertices && a->n_cells == b->n_cells && a->n_faces == b->n_faces);
+  if (a->n_vertices != b->n_vertices || a->n_cells != b->n_cells || a->n_faces != b->n_faces) return;
+  CHECK(memcmp(a->xy, b->xy, 2 * (size_t)a->n_vertices * sizeof *a->xy) == 0);
+  CHECK(same_ints(a->cell_vertices, b->cell_vertices, (size_t)a->n_cells * a->nv_per_cell));
+  CHECK(same_ints(a->face_vertices, b->face_vertices, 2 * (size_t)a->n_faces));
+  CHECK(same_ints(a->face_tag, b->face_tag, (size_t)a->n_faces));
+  CHECK(a->n_boundaries == b->n_boundaries && a->n_regions == b->n_regions);
+  if (a->n_boundaries != b->n_boundaries || a->n_regions != b->n_regions) return;
+  int names = 1;
+  for (int i = 0; i < a->n_boundaries; ++i) names &= strcmp(a->boundary_names[i], b->boundary_names[i]) == 0;
+  for (int i = 0; i < a->n_regions; ++i) names &= strcmp(a->region_names[i], b->region_names[i]) == 0;
+  CHECK(names);
+  CHECK(same_ints(a->cell_region, b->cell_region, (size_t)a->n_cells));
+}
+
+static void test_box_tri(void) {
+  sl_mesh *a = read("box_tri_22.msh"), *b = read("box_tri_41.msh");
+  if (!a || !b) goto done;
+  check_same(a, b);
+  CHECK(a->dim == 2 && a->cell_type == SL_CELL_TRI3);
+  CHECK(a->n_vertices == 18 && a->n_cells == 22);
+  CHECK(euler(a) == 1);
+  CHECK(a->n_boundary_faces == 12);
+  CHECK_CLOSE(total_area(a), 2.0, 1e-14);
+  CHECK_CLOSE(boundary_length(a, "bottom"), 2.0, 1e-14);
+  CHECK_CLOSE(boundary_length(a, "top"), 2.0, 1e-14);
+  CHECK_CLOSE(boundary_length(a, "left"), 1.0, 1e-14);
+  CHECK_CLOSE(boundary_length(a, "right"), 1.0, 1e-14);
+  CHECK(boundary_count(a, "bottom") == 4 && boundary_count(a, "right") == 2);
+  int id;
+  CHECK(sl_mesh_region_id(a, "fluid", &id, &d) == 0 && id == 0);
+  int all = 1;
+  for (int c = 0; c < a->n_cells; ++c) all &= a->cell_region[c] == 0;
+  CHECK(all);
+  check_mesh_invariants(a);
+  CHECK(sl_mesh_boundary_id(a, "wall", &id, &d) == SL_EBADINPUT);
+  CHECK_CONTAINS(d.msg, "bottom, right, top, left");
+done:
+  sl_mesh_destroy(a);
+  sl_mesh_destroy(b);
+}
+
+static void test_box_quad(void) {
+  sl_mesh *a = read("box_quad_22.msh"), *b = read("box_quad_41.msh");
+  if (!a || !b) goto done;
+  check_same(a, b);
+  CHECK(a->cell_type == SL_CELL_QUAD4 && a->n_cells == 10 && a->n_vertices == 18);
+  CHECK(euler(a) == 1);
+  CHECK_CLOSE(total_area(a), 2.0, 1e-14);
+  CHECK_CLOSE(boundary_length(a, "bottom"), 2.0, 1e-14);
+  CHECK(boundary_count(a, "bottom") == 5);
+  CHECK_CLOSE(boundary_length(a, "outlet"), 1.0, 1e-14);
+  CHECK_CLOSE(boundary_length(a, "inlet"), 1.0, 1e-14);
+  CHECK(a->n_regions == 2);
+  int left, right, nl = 0, nr = 0;
+  CHECK(sl_mesh_region_id(a, "lower_left", &left, &d) == 0);
+  CHECK(sl_mesh_region_id(a, "right_part", &right, &d) == 0);
+  CHECK(sl_mesh_region_id(a, "rigth_part", &right, &d) == SL_EBADINPUT);
+  CHECK_CONTAINS(d.msg, "did you mean \"right_part\"?");
+  sl_mesh_region_id(a, "right_part", &right, &d);
+  double area_left = 0;
+  for (int c = 0; c < a->n_cells; ++c) {
+    nl += a->cell_region[c] == left;
+    nr += a->cell_region[c] == right;
+    if (a->cell_region[c] == left) area_left += sl_mesh_cell_area(a, c);
+  }
+  CHECK(nl == 4 && nr == 6);
+  CHECK_CLOSE(area_left, 0.8, 1e-14);
+  check_mesh_invariants(a);
+done:
+  sl_mesh_destroy(a);
+  sl_mesh_destroy(b);
+}
+
+static void test_line(void) {
+  sl_mesh *a = read("line_22.msh"), *b = read("line_41.msh");
+  if (!a || !b) goto done;
+  check_same(a, b);
+  CHECK(a->dim == 1 && a->cell_type == SL_CELL_LINE2);
+  CHECK(a->n_vertices == 10 && a->n_cells == 9 && a->n_faces == 10 && a->n_boundary_faces == 2);
+  CHECK_CLOSE(total_area(a), 3.0, 1e-14);
+  CHECK(boundary_count(a, "left") == 1 && boundary_count(a, "right") == 1);
+  int id;
+  CHECK(sl_mesh_region_id(a, "column", &id, &d) == 0);
+  double n[2], c[2];
+  sl_mesh_face_normal(a, a->bface[a->bface_start[0]], n);
+  sl_mesh_face_centroid(a, a->bface[a->bface_start[0]], c);
+  CHECK(n[0] == -1 && c[0] == 0);
+  check_mesh_invariants(a);
+done:
+  sl_mesh_destroy(a);
+  sl_mesh_destroy(b);
+}
+
+/* A clockwise surface: the reader turns every cell round. */
+static void test_clockwise(void) {
+  sl_mesh *m = read("box_cw_41.msh");
+  if (!m) return;
+  CHECK(m->n_cells == 22);
+  CHECK_CLOSE(total_area(m), 2.0, 1e-14);
+  check_mesh_invariants(m);
+  sl_mesh_destroy(m);
+}
+
+/* Each malformed file: SL_EBADINPUT, "file:line:" and the key words. */
+static void bad_file(const char *file, int line, const char *words) {
+  sl_mesh *m = (sl_mesh *)&d; /* must be reset to NULL */
+  char where[1200];
+  int rc = sl_mesh_read_gmsh(data(file), &m, &d);
+  CHECK_MSG(rc == SL_EBADINPUT && m == NULL, "%s: rc %d", file, rc);
+  snprintf(where, sizeof where, "%s:%d: ", data(file), line);
+  CHECK_CONTAINS(d.msg, where);
+  CHECK_CONTAINS(d.msg, words);
+  sl_mesh_destroy(rc ? NULL : m);
+}
+
+static void test_bad_files(void) {
+  bad_file("bad_version_30.msh", 2, "version 3.0 is not supported; sluice reads ASCII MSH 2.2 and 4.1");
+  bad_file("bad_truncated_41.msh", 60, "unexpected end of file in $Nodes");
+  bad_file("bad_p2_22.msh", 23, "type 8 (3-node line), which is not supported; supported types: 1 (2-node line)");
+  bad_file("bad_mixed_41.msh", 78, "mix triangles and quadrangles are not supported");
+  bad_file("bad_untagged_41.msh", 60, "line element 8 is in no physical group");
+  bad_file("bad_twogroups_22.msh", 37, "element 2 repeats element 1 (line 36) with physical group 5");
+  bad_file("bad_twogroups_41.msh", 19, "curve 1 is in 2 physical groups (tags 1, 5)");
+  sl_mesh *m;
+  CHECK(sl_mesh_read_gmsh(data("no_such_file.msh"), &m, &d) == SL_EBADINPUT && m == NULL);
+  CHECK_CONTAINS(d.msg, "cannot open");
+}
+
+/* ---- in-memory variants of a two-triangle mesh --------------------------- */
+
+static const char *const base22[] = {
+    "$MeshFormat",                /* 1 */
+    "2.2 0 8",                    /* 2 */
+    "$EndMeshFormat",             /* 3 */
+    "$PhysicalNames",             /* 4 */
+    "2",                          /* 5 */
+    "1 1 \"wall\"",               /* 6 */
+    "2 2 \"fluid\"",              /* 7 */
+    "$EndPhysicalNames",          /* 8 */
+    "$Nodes",                     /* 9 */
+    "4",                          /* 10 */
+    "1 0 0 0",                    /* 11 */
+    "2 1 0 0",                    /* 12 */
+    "3 1 1 0",                    /* 13 */
+    "4 0 1 0",                    /* 14 */
+    "$EndNodes",                  /* 15 */
+    "$Elements",                  /* 16 */
+    "6",                          /* 17 */
+    "1 1 2 1 1 1 2",              /* 18 */
+    "2 1 2 1 1 2 3",              /* 19 */
+    "3 1 2 1 1 3 4",              /* 20 */
+    "4 1 2 1 1 4 1",              /* 21 */
+    "5 2 2 2 1 1 2 3",            /* 22 */
+    "6 2 2 2 1 1 3 4",            /* 23 */
+    "$EndElements",               /* 24 */
+};
+#define NBASE ((int)(sizeof base22 / sizeof *base22))
+
+/* The base text with line `at` (1-based) replaced by `with` (NULL: deleted),
+ * keeping only the first `keep` lines (0: all). */
+static char *variant(int at, const char *with, int keep) {
+  static char buf[4096];
+  size_t used = 0;
+  for (int i = 0; i < NBASE && (keep == 0 || i < keep); ++i) {
+    const char *l = i + 1 == at ? with : base22[i];
+    if (!l) continue;
+    used += (size_t)snprintf(buf + used, sizeof buf - used, "%s\n", l);
+  }
+  return buf;
+}
+
+static void bad_text(const char *text, int line, const char *words) {
+  sl_mesh *m = (sl_mesh *)&d;
+  char where[64];
+  int rc = sl_mesh_read_gmsh_string(text, strlen(text), "t.msh", &m, &d);
+  CHECK_MSG(rc == SL_EBADINPUT && m == NULL, "expected an error with \"%s\", got rc %d", words, rc);
+  snprintf(where, sizeof where, "t.msh:%d: ", line);
+  CHECK_CONTAINS(d.msg, where);
+  CHECK_CONTAINS(d.msg, words);
+  if (rc == 0) sl_mesh_destroy(m);
+}
+
+static void test_bad_texts(void) {
+  sl_mesh *m;
+  const char *ok = variant(0, NULL, 0);
+  CHECK(sl_mesh_read_gmsh_string(ok, strlen(ok), "t.msh", &m, &d) == 0);
+  if (m) {
+    CHECK(m->n_cells == 2 && m->n_boundary_faces == 4 && m->n_boundaries == 1);
+    sl_mesh_destroy(m);
+  }
+  /* CRLF line ends are fine. */
+  char crlf[4096];
+  size_t k = 0;
+  for (const char *p = ok; *p; ++p) {
+    if (*p == '\n') crlf[k++] = '\r';
+    crlf[k++] = *p;
+  }
+  crlf[k] = '\0';
+  CHECK(sl_mesh_read_gmsh_string(crlf, k, "t.msh", &m, &d) == 0);
+  sl_mesh_destroy(m);
+
+  bad_text(variant(2, "4.0 0 8", 0), 2, "version 4.0 is not supported");
+  bad_text(variant(2, "2.2 1 8", 0), 2, "binary MSH files are not supported");
+  bad_text(variant(1, "hello", 0), 1, "not a Gmsh MSH file");
+  bad_text(variant(22, "5 9 2 2 1 1 2 3 5 6 7", 0), 22, "type 9 (6-node triangle)");
+  bad_text(variant(22, "5 4 2 2 1 1 2 3 4", 0), 22, "3-D meshes are not supported");
+  bad_text(variant(23, "6 3 2 2 1 1 3 4 2", 0), 23, "mix triangles and quadrangles");
+  bad_text(variant(20, "3 1 2 0 1 3 4", 0), 20, "line element 3 is in no physical group");
+  bad_text(variant(19, "2 1 2 3 1 2 3", 0), 19, "physical group 3 of dimension 1, which has no name");
+  bad_text(variant(22, "5 2 2 2 1 1 2 9", 0), 22, "refers to node 9, which is not in $Nodes");
+  bad_text(variant(22, "5 2 2 2 1 1 2", 0), 22, "needs 3 node tags, found 2");
+  bad_text(variant(23, "6 2 2 2 1 1 4 3", 0), 23, "cell 1 is inverted");
+  bad_text(variant(12, "2 1 0 0.5", 0), 12, "only planar meshes");
+  bad_text(variant(13, "3 1 x 0", 0), 13, "malformed node");
+  bad_text(variant(10, "5", 0), 15, "malformed node");      /* count too large: $EndNodes read as a node */
+  bad_text(variant(17, "5", 0), 23, "expected $EndElements"); /* count too small */
+  bad_text(variant(0, NULL, 20), 20, "unexpected end of file in $Elements");
+  bad_text(variant(0, NULL, 12), 12, "unexpected end of file in $Nodes");
+  bad_text(variant(0, NULL, 6), 6, "unexpected end of file in $PhysicalNames");
+  bad_text(variant(0, NULL, 15), 15, "no $Elements section");
+  bad_text(variant(18, "1 1 2 1 1 1 3", 0), 18, "lies inside the domain");
+  CHECK(sl_mesh_read_gmsh_string("", 0, "t.msh", &m, &d) == SL_EBADINPUT && m == NULL);
+  CHECK_CONTAINS(d.msg, "t.msh: empty file");
+
+  /* No $PhysicalNames: the first element with a physical tag is named. */
+  char text[4096];
+  size_t used = 0;
+  for (int i = 0; i < NBASE; ++i)
+    if (i < 3 || i > 7) used += (size_t)snprintf(text + used, sizeof text - used, "%s\n", base22[i]);
+  bad_text(text, 13, "no $PhysicalNames section");
+
+  /* An unknown section is skipped; an unterminated one is a truncation. */
+  used = 0;
+  for (int i = 0; i < NBASE; ++i) {
+    used += (size_t)snprintf(text + used, sizeof text - used, "%s\n", base22[i]);
+    if (i == 2) used += (size_t)snprintf(text + used, sizeof text - used, "$Comments\nmade by hand\n$EndComments\n");
+  }
+  CHECK(sl_mesh_read_gmsh_string(text, used, "t.msh", &m, &d) == 0);
+  sl_mesh_destroy(m);
+  bad_text("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Comments\nabc\n", 5, "has no $EndComments");
+}
+
+/* 4.1 specifics: the physical group through $Entities, block headers. */
+static const char *const base41 =
+    "$MeshFormat\n"          /* 1 */
+    "4.1 0 8\n"              /* 2 */
+    "$EndMeshFormat\n"       /* 3 */
+    "$PhysicalNames\n"       /* 4 */
+    "2\n"                    /* 5 */
+    "1 1 \"wall\"\n"         /* 6 */
+    "2 2 \"fluid\"\n"        /* 7 */
+    "$EndPhysicalNames\n"    /* 8 */
+    "$Entities\n"            /* 9 */
+    "0 1 1 0\n"              /* 10 */
+    "1 0 0 0 1 1 0 1 1 0\n"  /* 11: curve 1, physical 1 */
+    "1 0 0 0 1 1 0 1 2 1 1\n" /* 12: surface 1, physical 2 */
+    "$EndEntities\n"         /* 13 */
+    "$Nodes\n"               /* 14 */
+    "1 4 1 4\n"              /* 15 */
+    "2 1 0 4\n"              /* 16 */
+    "1\n2\n3\n4\n"           /* 17-20 */
+    "0 0 0\n1 0 0\n1 1 0\n0 1 0\n" /* 21-24 */
+    "$EndNodes\n"            /* 25 */
+    "$Elements\n"            /* 26 */
+    "2 6 1 6\n"              /* 27 */
+    "1 1 1 4\n"              /* 28 */
+    "1 1 2\n2 2 3\n3 3 4\n4 4 1\n" /* 29-32 */
+    "2 1 2 2\n"              /* 33 */
+    "5 1 2 3\n6 1 3 4\n"     /* 34-35 */
+    "$EndElements\n";        /* 36 */
+
+static char *replace41(const char *from, const char *to) {
+  static char buf[4096];
+  const char *p = strstr(base41, from);
+  if (!p) return NULL;
+  snprintf(buf, sizeof buf, "%.*s%s%s", (int)(p - base41), base41, to, p + strlen(from));
+  return buf;
+}
+
+static void test_41(void) {
+  sl_mesh *m;
+  CHECK(sl_mesh_read_gmsh_string(base41, strlen(base41), "t.msh", &m, &d) == 0);
+  if (m) {
+    CHECK(m->n_cells == 2 && m->n_boundary_faces == 4 && boundary_count(m, "wall") == 4);
+    CHECK(m->n_regions == 1 && m->cell_region[0] == 0 && m->cell_region[1] == 0);
+    sl_mesh_destroy(m);
+  }
+  /* The curve carries no physical tag. */
+  bad_text(replace41("1 0 0 0 1 1 0 1 1 0\n", "1 0 0 0 1 1 0 0 0\n"), 29, "line element 1 is in no physical group");
+  /* The curve is in two physical groups. */
+  bad_text(replace41("1 0 0 0 1 1 0 1 1 0\n", "1 0 0 0 1 1 0 2 1 3 0\n"), 11, "curve 1 is in 2 physical groups");
+  /* An unsupported element type is named at its block header. */
+  bad_text(replace41("2 1 2 2\n", "2 1 9 2\n"), 33, "type 9 (6-node triangle)");
+  /* Node block counts that do not add up. */
+  bad_text(replace41("1 4 1 4\n", "1 5 1 4\n"), 24, "announces 5 nodes but its blocks hold 4");
+  bad_text(replace41("2 6 1 6\n", "2 7 1 6\n"), 35, "announces 7 elements but its blocks hold 6");
+  bad_text(replace41("$EndNodes\n", ""), 25, "expected $EndNodes");
+}
+
+int main(void) {
+  test_box_tri();
+  test_box_quad();
+  test_line();
+  test_clockwise();
+  test_bad_files();
+  test_bad_texts();
+  test_41();
+  return sl_test_summary();
+}
