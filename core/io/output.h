@@ -1,0 +1,140 @@
+/* HDF5 output with an XDMF sidecar that ParaView opens as is, provenance,
+ * checkpoints for restart, and readers for sampling.
+ *
+ * Takes plain arrays, not a mesh struct. File layout (all 0-based):
+ *   /mesh/coordinates           n_vertices x 3, F64LE (1-D and 2-D padded with 0)
+ *   /mesh/topology              n_cells x nodes_per_cell, I32LE; attribute topology_type, dim
+ *   /step_NNNNNN/<field>        n or n x 3, F64LE; attributes centring, components
+ *   /step_NNNNNN                attributes time (F64LE), index (I32LE)
+ *   /provenance                 attribute sluice_version; dataset ini; closures/closure_NNN
+ *   /checkpoint                 two slots, attribute current: the last complete one
+ * After every step the file is flushed and OUT.xmf (next to OUT.h5, same stem)
+ * is rewritten atomically (temporary file + rename), so a run killed between
+ * steps leaves a file that h5dump and ParaView read. A crash in the middle of
+ * a step can still leave an unreadable file: HDF5 1.10 without SWMR gives no
+ * stronger guarantee.
+ *
+ * Every function returns 0 or an SL_E* code with a message naming the file
+ * and the dataset: SL_EBADINPUT for caller mistakes and bad paths (nothing
+ * written), SL_EFAILED for I/O failures during the run. */
+#ifndef SLUICE_IO_OUTPUT_H
+#define SLUICE_IO_OUTPUT_H
+
+#include <stdint.h>
+
+#include "core/util/diag.h"
+
+typedef enum sl_centring { SL_CENTRE_NODE = 0, SL_CENTRE_CELL = 1 } sl_centring;
+
+typedef struct sl_output sl_output;
+
+/* Creates (truncates) the HDF5 file and removes a stale sidecar. A missing
+ * directory is SL_EBADINPUT with a message saying so. */
+int sl_output_open(sl_output **out, const char *path, sl_diag *d);
+
+/* Once, before the first step. coords: n_vertices x dim (dim 1..3), cells:
+ * n_cells x nodes_per_cell, 0-based. topology: the XDMF name, one of
+ * "Polyline" (2 nodes), "Triangle" (3), "Quadrilateral" (4), "Triangle_6",
+ * "Quadrilateral_9"; it must match nodes_per_cell. */
+int sl_output_write_mesh(sl_output *out, int dim, int32_t n_vertices, const double *coords, int32_t n_cells,
+                         int nodes_per_cell, const int32_t *cells, const char *topology, sl_diag *d);
+
+/* One output time: begin, write the fields, end (flush + sidecar). */
+int sl_output_begin_step(sl_output *out, double t, sl_diag *d);
+/* values: n x components, row-major, n = n_vertices (node) or n_cells (cell).
+ * components 1 (scalar), 2 (stored padded to 3) or 3 (vector). */
+int sl_output_write_field(sl_output *out, const char *name, sl_centring centring, int components, const double *values,
+                          sl_diag *d);
+int sl_output_end_step(sl_output *out, sl_diag *d);
+
+/* Provenance. Written when called (at the start of a run, so an interrupted
+ * run has it); calling again replaces it. */
+typedef struct sl_provenance_closure {
+  const char *role; /* INI section, e.g. "closure.drag" (may be NULL) */
+  const char *kind;
+  const char *name;
+  const char *version;
+  const char *library;    /* path of the shared object */
+  const char *parameters; /* resolved parameters as text, e.g. "n = 4.65\n" */
+} sl_provenance_closure;
+
+typedef struct sl_provenance {
+  const char *sluice_version;
+  const char *ini_text; /* the resolved INI, overrides applied */
+  int n_closures;
+  const sl_provenance_closure *closures;
+} sl_provenance;
+
+int sl_output_write_provenance(sl_output *out, const sl_provenance *p, sl_diag *d);
+
+/* Checkpoint: named double arrays plus scalars, enough to restart. */
+enum { SL_CHECKPOINT_MAX_INTS = 16, SL_CHECKPOINT_NAME_MAX = 64 };
+
+typedef struct sl_checkpoint_array {
+  char name[SL_CHECKPOINT_NAME_MAX];
+  int64_t n;
+  const double *data; /* writer: the caller's; reader: allocated, freed by sl_checkpoint_free */
+} sl_checkpoint_array;
+
+typedef struct sl_checkpoint {
+  double time, dt;
+  int64_t step;
+  int n_ints;
+  char int_names[SL_CHECKPOINT_MAX_INTS][SL_CHECKPOINT_NAME_MAX];
+  int64_t ints[SL_CHECKPOINT_MAX_INTS];
+  int n_arrays;
+  sl_checkpoint_array *arrays; /* writer: the caller's; reader: allocated */
+} sl_checkpoint;
+
+/* Writes into the slot not holding the last checkpoint, flushes, then marks
+ * it current: a crash while checkpointing leaves the previous one intact. */
+int sl_output_write_checkpoint(sl_output *out, const sl_checkpoint *ck, sl_diag *d);
+
+/* Flushes, writes the sidecar, closes and frees (also after failures). */
+int sl_output_close(sl_output *out, sl_diag *d);
+
+/* ---- readers: each opens the file read-only and closes it again. They do
+ * not take HDF5's file lock, so a running simulation's output can be read
+ * between its steps. */
+
+/* The last complete checkpoint, bit for bit. Free with sl_checkpoint_free. */
+int sl_checkpoint_read(const char *path, sl_checkpoint *ck, sl_diag *d);
+void sl_checkpoint_free(sl_checkpoint *ck);
+/* The array called name, or NULL. */
+const sl_checkpoint_array *sl_checkpoint_find(const sl_checkpoint *ck, const char *name);
+
+typedef struct sl_output_mesh {
+  int dim;
+  int32_t n_vertices;
+  double *coords; /* n_vertices x 3 */
+  int32_t n_cells;
+  int nodes_per_cell;
+  int32_t *cells; /* n_cells x nodes_per_cell */
+  char topology[32];
+} sl_output_mesh;
+
+int sl_output_read_mesh(const char *path, sl_output_mesh *m, sl_diag *d);
+void sl_output_mesh_free(sl_output_mesh *m);
+
+/* Output times in step order; *times is malloc'ed (NULL when there are none). */
+int sl_output_read_times(const char *path, int *n_steps, double **times, sl_diag *d);
+
+typedef struct sl_output_field {
+  int step;    /* index of the step read */
+  double time; /* its time */
+  sl_centring centring;
+  int components; /* as stored: 1 or 3 */
+  int32_t n;      /* entities (vertices or cells) */
+  double *values; /* n x components */
+} sl_output_field;
+
+/* Field `name` at the step nearest to time t among the steps holding it
+ * (the earlier one on a tie). An unknown name gets a did-you-mean. */
+int sl_output_read_field(const char *path, const char *name, double t, sl_output_field *f, sl_diag *d);
+void sl_output_field_free(sl_output_field *f);
+
+/* A string dataset or attribute, e.g. "/provenance/ini" or
+ * "/provenance@sluice_version" (object@attribute). *text is malloc'ed. */
+int sl_output_read_text(const char *path, const char *what, char **text, sl_diag *d);
+
+#endif

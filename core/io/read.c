@@ -1,0 +1,309 @@
+/* Readers of sluice output files: mesh, output times, a field at the step
+ * nearest a time, string provenance. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/io/h5util.h"
+#include "core/io/output.h"
+
+/* Reads a whole dataset of rank 1 or 2 into a new buffer. */
+static int read_array(const char *path, hid_t loc, const char *name, hid_t mtype, size_t elem, int *rank,
+                      hsize_t dims[2], void **buf, sl_diag *d) {
+  *buf = NULL;
+  hid_t ds = H5Dopen2(loc, name, H5P_DEFAULT);
+  if (ds < 0) return sl_h5_fail(d, SL_EBADINPUT, path, "cannot open dataset", name);
+  hid_t sp = H5Dget_space(ds);
+  int rc = 0;
+  dims[0] = dims[1] = 1;
+  int r = sp >= 0 ? H5Sget_simple_extent_ndims(sp) : -1;
+  if (r < 1 || r > 2 || H5Sget_simple_extent_dims(sp, dims, NULL) != r) {
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: dataset %s is not a 1-D or 2-D array", path, name);
+  } else {
+    *rank = r;
+    size_t count = (size_t)dims[0] * (r == 2 ? (size_t)dims[1] : 1);
+    *buf = malloc(count * elem + 1);
+    if (!*buf)
+      rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory reading %s", path, name);
+    else if (count > 0 && H5Dread(ds, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, *buf) < 0)
+      rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot read dataset", name);
+  }
+  if (sp >= 0) H5Sclose(sp);
+  H5Dclose(ds);
+  if (rc) {
+    free(*buf);
+    *buf = NULL;
+  }
+  return rc;
+}
+
+int sl_output_read_mesh(const char *path, sl_output_mesh *m, sl_diag *d) {
+  memset(m, 0, sizeof *m);
+  hid_t f;
+  int rc = sl_h5_open_read(path, &f, d);
+  if (rc) return rc;
+  int rank_c = 0, rank_t = 0;
+  hsize_t dc[2], dt[2];
+  void *coords = NULL, *cells = NULL;
+  rc = read_array(path, f, "/mesh/coordinates", H5T_NATIVE_DOUBLE, sizeof(double), &rank_c, dc, &coords, d);
+  if (!rc) rc = read_array(path, f, "/mesh/topology", H5T_NATIVE_INT32, sizeof(int32_t), &rank_t, dt, &cells, d);
+  if (!rc && (rank_c != 2 || dc[1] != 3 || rank_t != 2))
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: /mesh/coordinates or /mesh/topology has an unexpected shape", path);
+  if (!rc) {
+    hid_t top = H5Dopen2(f, "/mesh/topology", H5P_DEFAULT);
+    int64_t dim = 0;
+    if (top < 0) {
+      rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot open dataset", "/mesh/topology");
+    } else {
+      rc = sl_h5_read_attr_string(top, "topology_type", m->topology, sizeof m->topology, path, "/mesh/topology", d);
+      if (!rc) rc = sl_h5_read_attr_int64(top, "dim", &dim, path, "/mesh/topology", d);
+      H5Dclose(top);
+    }
+    m->dim = (int)dim;
+  }
+  H5Fclose(f);
+  if (rc) {
+    free(coords), free(cells);
+    memset(m, 0, sizeof *m);
+    return rc;
+  }
+  m->coords = coords;
+  m->cells = cells;
+  m->n_vertices = (int32_t)dc[0];
+  m->n_cells = (int32_t)dt[0];
+  m->nodes_per_cell = (int)dt[1];
+  return 0;
+}
+
+void sl_output_mesh_free(sl_output_mesh *m) {
+  if (!m) return;
+  free(m->coords);
+  free(m->cells);
+  memset(m, 0, sizeof *m);
+}
+
+typedef struct step_entry {
+  int index;
+  double time;
+  char name[32];
+} step_entry;
+
+static int cmp_steps(const void *a, const void *b) {
+  const step_entry *x = a, *y = b;
+  return (x->index > y->index) - (x->index < y->index);
+}
+
+/* The step groups of an open file, in index order. */
+static int list_steps(const char *path, hid_t f, step_entry **out, int *n_out, sl_diag *d) {
+  char **names = NULL;
+  int n = 0, k = 0;
+  *out = NULL;
+  *n_out = 0;
+  int rc = sl_h5_list(f, &names, &n, path, "/", d);
+  if (rc) return rc;
+  step_entry *s = malloc(((size_t)n + 1) * sizeof *s);
+  if (!s) rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory", path);
+  for (int i = 0; !rc && i < n; ++i) {
+    int idx, len = 0;
+    if (sscanf(names[i], "step_%d%n", &idx, &len) != 1 || names[i][len] != 0 || strlen(names[i]) >= 32) continue;
+    hid_t g = H5Gopen2(f, names[i], H5P_DEFAULT);
+    if (g < 0) {
+      rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot open group", names[i]);
+      break;
+    }
+    htri_t done = H5Aexists(g, "complete"); /* begun but never ended: a run died mid-step */
+    if (done > 0) {
+      s[k].index = idx;
+      snprintf(s[k].name, sizeof s[k].name, "%s", names[i]);
+      rc = sl_h5_read_attr_double(g, "time", &s[k].time, path, names[i], d);
+      ++k;
+    } else if (done < 0) {
+      rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot query attributes of", names[i]);
+    }
+    H5Gclose(g);
+  }
+  sl_io_free_names(names, n);
+  if (rc) {
+    free(s);
+    return rc;
+  }
+  qsort(s, (size_t)k, sizeof *s, cmp_steps);
+  *out = s;
+  *n_out = k;
+  return 0;
+}
+
+int sl_output_read_times(const char *path, int *n_steps, double **times, sl_diag *d) {
+  *n_steps = 0;
+  *times = NULL;
+  hid_t f;
+  int rc = sl_h5_open_read(path, &f, d);
+  if (rc) return rc;
+  step_entry *s = NULL;
+  int n = 0;
+  rc = list_steps(path, f, &s, &n, d);
+  H5Fclose(f);
+  if (rc) return rc;
+  if (n > 0) {
+    *times = malloc((size_t)n * sizeof **times);
+    if (!*times) {
+      free(s);
+      return sl_diag_set(d, SL_EFAILED, "%s: out of memory", path);
+    }
+    for (int i = 0; i < n; ++i) (*times)[i] = s[i].time;
+  }
+  *n_steps = n;
+  free(s);
+  return 0;
+}
+
+/* "no field" message with the fields of the last step and a did-you-mean. */
+static int unknown_field(const char *path, hid_t f, const step_entry *s, int n, const char *name, sl_diag *d) {
+  if (n == 0) return sl_diag_set(d, SL_EBADINPUT, "%s: no output steps in this file", path);
+  char **names = NULL;
+  int k = 0;
+  hid_t g = H5Gopen2(f, s[n - 1].name, H5P_DEFAULT);
+  if (g >= 0) {
+    sl_diag tmp;
+    if (sl_h5_list(g, &names, &k, path, s[n - 1].name, &tmp)) k = 0;
+    H5Gclose(g);
+  }
+  H5Eclear2(H5E_DEFAULT);
+  char list[512] = "";
+  size_t len = 0;
+  for (int i = 0; i < k && len < sizeof list; ++i)
+    len += (size_t)snprintf(list + len, sizeof list - len, "%s%s", i ? ", " : "", names[i]);
+  const char *hint = k > 0 ? sl_suggest(name, (const char *const *)names, k) : NULL;
+  int rc;
+  if (hint)
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: no field '%s' in any output step (did you mean '%s'?); fields: %s", path,
+                     name, hint, list);
+  else
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: no field '%s' in any output step; fields: %s", path, name,
+                     k ? list : "(none)");
+  sl_io_free_names(names, k);
+  return rc;
+}
+
+int sl_output_read_field(const char *path, const char *name, double t, sl_output_field *fld, sl_diag *d) {
+  memset(fld, 0, sizeof *fld);
+  int rc = sl_io_check_name(name, 200, "field", d);
+  if (rc) return rc;
+  if (isnan(t)) return sl_diag_set(d, SL_EBADINPUT, "%s: requested time is NaN", path);
+  hid_t f;
+  rc = sl_h5_open_read(path, &f, d);
+  if (rc) return rc;
+  step_entry *s = NULL;
+  int n = 0;
+  rc = list_steps(path, f, &s, &n, d);
+  if (rc) {
+    H5Fclose(f);
+    return rc;
+  }
+  /* nearest step holding the field; the earlier on a tie, the last for +inf */
+  int best = -1;
+  double best_dist = INFINITY;
+  for (int i = 0; i < n; ++i) {
+    char link[256];
+    snprintf(link, sizeof link, "%s/%s", s[i].name, name);
+    if (H5Lexists(f, link, H5P_DEFAULT) <= 0) continue;
+    double dist = fabs(s[i].time - t);
+    if (best < 0 || dist < best_dist || (isinf(t) && t > 0)) best = i, best_dist = dist;
+  }
+  H5Eclear2(H5E_DEFAULT);
+  if (best < 0) {
+    rc = unknown_field(path, f, s, n, name, d);
+    free(s);
+    H5Fclose(f);
+    return rc;
+  }
+  char link[256];
+  snprintf(link, sizeof link, "/%s/%s", s[best].name, name);
+  int rank = 0;
+  hsize_t dims[2];
+  void *buf = NULL;
+  rc = read_array(path, f, link, H5T_NATIVE_DOUBLE, sizeof(double), &rank, dims, &buf, d);
+  char centring[16] = "node";
+  if (!rc) {
+    hid_t ds = H5Dopen2(f, link, H5P_DEFAULT);
+    if (ds < 0) {
+      rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot open dataset", link);
+    } else {
+      rc = sl_h5_read_attr_string(ds, "centring", centring, sizeof centring, path, link, d);
+      H5Dclose(ds);
+    }
+  }
+  if (!rc) {
+    fld->step = s[best].index;
+    fld->time = s[best].time;
+    fld->centring = strcmp(centring, "cell") == 0 ? SL_CENTRE_CELL : SL_CENTRE_NODE;
+    fld->components = rank == 1 ? 1 : (int)dims[1];
+    fld->n = (int32_t)dims[0];
+    fld->values = buf;
+  } else {
+    free(buf);
+  }
+  free(s);
+  H5Fclose(f);
+  return rc;
+}
+
+void sl_output_field_free(sl_output_field *f) {
+  if (!f) return;
+  free(f->values);
+  memset(f, 0, sizeof *f);
+}
+
+int sl_output_read_text(const char *path, const char *what, char **text, sl_diag *d) {
+  *text = NULL;
+  char obj[512];
+  snprintf(obj, sizeof obj, "%s", what);
+  char *at = strchr(obj, '@');
+  if (at) *at++ = 0;
+  hid_t f;
+  int rc = sl_h5_open_read(path, &f, d);
+  if (rc) return rc;
+  hid_t o = H5Oopen(f, obj[0] ? obj : "/", H5P_DEFAULT), a = -1, type = -1;
+  if (o < 0) {
+    rc = sl_h5_fail(d, SL_EBADINPUT, path, "no object", obj);
+    H5Fclose(f);
+    return rc;
+  }
+  if (at) {
+    a = H5Aexists(o, at) > 0 ? H5Aopen(o, at, H5P_DEFAULT) : -1;
+    if (a < 0) {
+      H5Eclear2(H5E_DEFAULT);
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s: no attribute %s", path, what);
+    } else {
+      type = H5Aget_type(a);
+    }
+  } else if (H5Iget_type(o) != H5I_DATASET) {
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: %s is not a dataset", path, what);
+  } else {
+    type = H5Dget_type(o);
+  }
+  if (!rc && (type < 0 || H5Tget_class(type) != H5T_STRING || H5Tis_variable_str(type) != 0))
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: %s is not a fixed-length string", path, what);
+  if (!rc) {
+    size_t sz = H5Tget_size(type);
+    char *buf = malloc(sz + 1);
+    if (!buf) {
+      rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory reading %s", path, what);
+    } else {
+      herr_t st = at ? H5Aread(a, type, buf) : H5Dread(o, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf);
+      if (st < 0) {
+        rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot read", what);
+        free(buf);
+      } else {
+        buf[sz] = 0;
+        *text = buf;
+      }
+    }
+  }
+  if (type >= 0) H5Tclose(type);
+  if (a >= 0) H5Aclose(a);
+  H5Oclose(o);
+  H5Fclose(f);
+  return rc;
+}

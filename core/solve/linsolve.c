@@ -1,0 +1,147 @@
+#include "core/solve/linsolve.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+struct sl_linsolve {
+  const sl_linsolve_ops *ops;
+  void *backend;
+  /* what the current factorisation was computed from */
+  int have_symbolic, have_numeric, force_numeric;
+  uint64_t pattern_id, values_gen;
+  const sl_csr *matrix;
+  const double *values;
+  int32_t n;
+  double *work; /* copy of b for in-place solves */
+  sl_linsolve_stats st;
+};
+
+static const char *const solver_names[] = {"umfpack", "klu", "cholmod"};
+static const sl_linsolve_ops *const solver_ops[] = {&sl_linsolve_umfpack_ops, &sl_linsolve_klu_ops,
+                                                    &sl_linsolve_cholmod_ops};
+enum { N_SOLVERS = (int)(sizeof solver_names / sizeof solver_names[0]) };
+
+const char *const *sl_linsolve_names(int *n) {
+  if (n) *n = N_SOLVERS;
+  return solver_names;
+}
+
+static double now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+int sl_linsolve_create_ops(sl_linsolve **ls, const sl_linsolve_ops *ops, sl_diag *d) {
+  *ls = NULL;
+  sl_linsolve *s = calloc(1, sizeof *s);
+  if (!s) return sl_diag_set(d, SL_EFAILED, "%s: out of memory", ops->name);
+  s->ops = ops;
+  int rc = ops->create(&s->backend, d);
+  if (rc) {
+    free(s);
+    return rc;
+  }
+  *ls = s;
+  return 0;
+}
+
+int sl_linsolve_create(sl_linsolve **ls, const char *name, sl_diag *d) {
+  *ls = NULL;
+  if (!name || !*name) name = solver_names[0];
+  for (int i = 0; i < N_SOLVERS; ++i)
+    if (strcmp(name, solver_names[i]) == 0) return sl_linsolve_create_ops(ls, solver_ops[i], d);
+  const char *hint = sl_suggest(name, solver_names, N_SOLVERS);
+  if (hint)
+    return sl_diag_set(d, SL_EBADINPUT, "unknown linear solver '%s' (did you mean '%s'?); known: umfpack, klu, cholmod",
+                       name, hint);
+  return sl_diag_set(d, SL_EBADINPUT, "unknown linear solver '%s'; known: umfpack, klu, cholmod", name);
+}
+
+void sl_linsolve_destroy(sl_linsolve *ls) {
+  if (!ls) return;
+  ls->ops->destroy(ls->backend);
+  free(ls->work);
+  free(ls);
+}
+
+void sl_linsolve_values_changed(sl_linsolve *ls) { ls->force_numeric = 1; }
+const char *sl_linsolve_name(const sl_linsolve *ls) { return ls->ops->name; }
+const char *sl_linsolve_description(const sl_linsolve *ls) { return ls->ops->description; }
+const sl_linsolve_stats *sl_linsolve_get_stats(const sl_linsolve *ls) { return &ls->st; }
+
+void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len) {
+  const sl_linsolve_stats *s = &ls->st;
+  int k = snprintf(buf, len, "%s: %ld symbolic %.3g s, %ld numeric %.3g s", ls->ops->name, s->n_symbolic, s->t_symbolic,
+                   s->n_numeric, s->t_numeric);
+  if (k >= 0 && (size_t)k < len && s->n_refactor > 0)
+    k += snprintf(buf + k, len - (size_t)k, " (%ld refactor, %ld redone)", s->n_refactor, s->n_refactor_redo);
+  if (k >= 0 && (size_t)k < len) snprintf(buf + k, len - (size_t)k, ", %ld solves %.3g s", s->n_solves, s->t_solve);
+}
+
+int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
+  const char *name = ls->ops->name;
+  if (A->n_rows != A->n_cols)
+    return sl_diag_set(d, SL_EBADINPUT, "%s: matrix is %d x %d, not square", name, (int)A->n_rows, (int)A->n_cols);
+  if (A->n_rows <= 0 || !A->row_ptr) return sl_diag_set(d, SL_EBADINPUT, "%s: empty matrix", name);
+
+  if (!ls->have_symbolic || ls->pattern_id != A->pattern_id || ls->n != A->n_rows) {
+    ls->have_symbolic = ls->have_numeric = 0;
+    double t0 = now();
+    int rc = ls->ops->symbolic(ls->backend, A, d);
+    ls->st.t_symbolic += now() - t0;
+    if (rc) return rc;
+    ++ls->st.n_symbolic;
+    ls->have_symbolic = 1;
+    ls->pattern_id = A->pattern_id;
+    ls->n = A->n_rows;
+  }
+  if (!ls->have_numeric || ls->force_numeric || ls->values_gen != A->values_gen || ls->matrix != A ||
+      ls->values != A->values) {
+    ls->have_numeric = 0;
+    /* A NaN from a closure would otherwise surface as a misleading "singular". */
+    for (int32_t i = 0; i < A->n_rows; ++i)
+      for (int32_t p = A->row_ptr[i]; p < A->row_ptr[i + 1]; ++p)
+        if (!isfinite(A->values[p]))
+          return sl_diag_set(d, SL_EFAILED, "%s: matrix entry (%d, %d) is not finite (%g)", name, (int)i,
+                             (int)A->col_idx[p], A->values[p]);
+    double t0 = now();
+    int rc = ls->ops->numeric(ls->backend, A, &ls->st, d);
+    ls->st.t_numeric += now() - t0;
+    if (rc) return rc; /* stays without a numeric factorisation: the next call retries */
+    ++ls->st.n_numeric;
+    ls->have_numeric = 1;
+    ls->force_numeric = 0;
+    ls->values_gen = A->values_gen;
+    ls->matrix = A;
+    ls->values = A->values;
+  }
+  return 0;
+}
+
+int sl_linsolve_solve(sl_linsolve *ls, const sl_csr *A, const double *b, double *x, sl_diag *d) {
+  int rc = sl_linsolve_factor(ls, A, d);
+  if (rc) return rc;
+  int32_t n = A->n_rows;
+  if (x == b) {
+    /* the backends need distinct b and x */
+    double *w = realloc(ls->work, (size_t)n * sizeof *w);
+    if (!w) return sl_diag_set(d, SL_EFAILED, "%s: out of memory", ls->ops->name);
+    ls->work = w;
+    memcpy(w, b, (size_t)n * sizeof *w);
+    b = w;
+  }
+  double t0 = now();
+  rc = ls->ops->solve(ls->backend, A, b, x, d);
+  ls->st.t_solve += now() - t0;
+  if (rc) return rc;
+  ++ls->st.n_solves;
+  for (int32_t i = 0; i < n; ++i)
+    if (!isfinite(x[i]))
+      return sl_diag_set(d, SL_EFAILED, "%s: solution is not finite (x[%d] = %g; rcond %.3g)", ls->ops->name, (int)i,
+                         x[i], ls->st.rcond);
+  return 0;
+}
