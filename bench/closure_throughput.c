@@ -18,10 +18,10 @@ static int ergun_inline(int32_t Q, const double *const *in, double *K, double *d
     if (!(phi >= 0.0 && phi <= 0.74) || !(slip >= 0.0 && slip < HUGE_VAL) || !(rho >= 1e-3 && rho <= 1e5) ||
         !(mu >= 1e-7 && mu <= 1e5) || !(dp >= 1e-8 && dp <= 1.0) || !(psi >= 0.01 && psi <= 1.0))
       return 1;
-    double d = psi * dp, n = 1.0 - phi;
-    double visc = 150.0 * mu / (d * d), iner = 1.75 * rho / d;
-    K[q] = visc * phi * phi / n + iner * phi * slip;
-    dK_dphi[q] = visc * phi * (2.0 - phi) / (n * n) + iner * slip;
+    double inv_d = 1.0 / (psi * dp), inv_n = 1.0 / (1.0 - phi);
+    double visc = 150.0 * mu * inv_d * inv_d, iner = 1.75 * rho * inv_d;
+    K[q] = visc * phi * phi * inv_n + iner * phi * slip;
+    dK_dphi[q] = visc * phi * (2.0 - phi) * inv_n * inv_n + iner * slip;
     dK_dslip[q] = iner * phi;
   }
   return 0;

@@ -18,13 +18,17 @@ static const char describe_usage[] =
     "--all describes every closure; --markdown writes the same as Markdown.";
 
 static const char eval_usage[] =
-    "usage: sluice closure eval NAME|KIND/NAME [--set p=v]... --at SPEC [--deriv]\n"
+    "usage: sluice closure eval NAME[,NAME...] [--set p=v]... --at SPEC [--deriv]\n"
     "Evaluates a closure at a table of states and prints CSV on stdout: one column\n"
     "per input, per output and, with --deriv, per derivative d(out)/d(in).\n"
+    "Several closures (a comma list, NAME or KIND/NAME) are compared at the same\n"
+    "states: their outputs are suffixed [name]; a --set goes to each closure\n"
+    "that has the parameter.\n"
     "SPEC is a comma list of input=value or input=first:last:count (a uniform\n"
     "sweep); several sweeps form a grid, the first varying slowest. Inputs not\n"
     "given take their typical values (see describe).\n"
-    "example: sluice closure eval ergun --at \"phi=0:0.6:13,slip=0.01\" --deriv";
+    "examples: sluice closure eval ergun --at \"phi=0:0.6:13,slip=0.01\" --deriv\n"
+    "          sluice closure eval drag/ergun,drag/wen_yu --at \"phi=0.05:0.6:12,slip=0.01\"";
 
 /* Finds NAME or KIND/NAME; a bare name given by two kinds is ambiguous. */
 static int lookup(const sl_registry *r, const char *spec, const sl_closure_entry **out) {
@@ -273,12 +277,26 @@ static int cmd_describe(int argc, char **argv) {
 /* ---- eval ---- */
 
 typedef struct sweep {
-  int input;
+  int input; /* index into the union of the closures' inputs */
   double first, last;
   long count;
 } sweep;
 
-static int parse_at(const sl_closure_desc *c, const char *spec, sweep *sw, int *n_sw, int cap) {
+enum { MAX_EVAL_CLOSURES = 16, MAX_EVAL_INPUTS = 64 };
+
+/* The inputs of all closures compared, each once, in order of appearance. */
+typedef struct input_union {
+  int n;
+  const sl_field_desc *field[MAX_EVAL_INPUTS];
+} input_union;
+
+static int union_find(const input_union *u, const char *name) {
+  for (int i = 0; i < u->n; ++i)
+    if (strcmp(u->field[i]->name, name) == 0) return i;
+  return -1;
+}
+
+static int parse_at(const input_union *u, const char *spec, sweep *sw, int *n_sw, int cap) {
   *n_sw = 0;
   char *copy = strdup(spec);
   if (!copy) return sl_cli_error(SL_EFAILED, "out of memory");
@@ -293,15 +311,13 @@ static int parse_at(const sl_closure_desc *c, const char *spec, sweep *sw, int *
     *eq = '\0';
     char *name = item, *val = eq + 1;
     for (char *end = name + strlen(name); end > name && end[-1] == ' ';) *--end = '\0';
-    int i = sl_closure_input(c, name);
+    int i = union_find(u, name);
     if (i < 0) {
-      const char *cands[64];
-      int n = 0;
-      for (int32_t k = 0; k < c->n_in && n < 64; ++k) cands[n++] = c->in[k].name;
-      const char *s = sl_suggest(name, cands, n);
-      rc = s ? sl_cli_error(SL_EBADINPUT, "--at: closure '%s' has no input '%s'; did you mean '%s'?", c->name, name, s)
-             : sl_cli_error(SL_EBADINPUT, "--at: closure '%s' has no input '%s' (`sluice closure describe %s` lists them)",
-                            c->name, name, c->name);
+      const char *cands[MAX_EVAL_INPUTS];
+      for (int k = 0; k < u->n; ++k) cands[k] = u->field[k]->name;
+      const char *s = sl_suggest(name, cands, u->n);
+      rc = s ? sl_cli_error(SL_EBADINPUT, "--at: no input '%s'; did you mean '%s'?", name, s)
+             : sl_cli_error(SL_EBADINPUT, "--at: no input '%s' (`sluice closure describe NAME` lists them)", name);
       break;
     }
     for (int k = 0; k < *n_sw; ++k)
@@ -330,12 +346,33 @@ static int parse_at(const sl_closure_desc *c, const char *spec, sweep *sw, int *
   return rc;
 }
 
+/* Applies the --set list: each parameter goes to every compared closure that
+ * has it; a parameter none of them has is an error. */
+static int apply_sets(sl_closure_entry const *const *e, int n_cl, void **params, const char *const *sets, int n_sets) {
+  for (int i = 0; i < n_sets; ++i) {
+    char key[128];
+    const char *eq = strchr(sets[i], '=');
+    if (!eq) return sl_cli_error(SL_EBADINPUT, "--set %s: expected parameter=value", sets[i]);
+    snprintf(key, sizeof key, "%.*s", (int)(eq - sets[i]), sets[i]);
+    int used = 0;
+    sl_diag d;
+    for (int k = 0; k < n_cl; ++k) {
+      if (n_cl > 1 && sl_params_find(e[k]->desc, key) < 0) continue;
+      int rc = sl_params_set(e[k]->desc, params[k], key, eq + 1, &d);
+      if (rc) return sl_cli_error(rc, "--set %s: %s", sets[i], d.msg);
+      used = 1;
+    }
+    if (!used) return sl_cli_error(SL_EBADINPUT, "--set %s: none of the closures compared has parameter '%s'", sets[i], key);
+  }
+  return 0;
+}
+
 static int cmd_eval(int argc, char **argv) {
   if (sl_cli_wants_help(argc, argv)) {
     puts(eval_usage);
     return 0;
   }
-  const char *name = NULL, *at = NULL;
+  const char *names = NULL, *at = NULL;
   int deriv = 0;
   enum { MAX_SETS = 64 };
   const char *sets[MAX_SETS];
@@ -348,46 +385,59 @@ static int cmd_eval(int argc, char **argv) {
       sets[n_sets++] = argv[++i];
     } else if (argv[i][0] == '-')
       return sl_cli_error(SL_EBADINPUT, "closure eval: unknown option or missing value '%s'", argv[i]);
-    else if (!name) name = argv[i];
+    else if (!names) names = argv[i];
     else return sl_cli_error(SL_EBADINPUT, "closure eval: unexpected argument '%s'", argv[i]);
   }
-  if (!name) return sl_cli_error(SL_EBADINPUT, "closure eval: which closure?\n%s", eval_usage);
+  if (!names) return sl_cli_error(SL_EBADINPUT, "closure eval: which closure?\n%s", eval_usage);
   sl_registry *r;
   int rc = sl_cli_registry(&r, 1);
   if (rc) return rc;
-  const sl_closure_entry *e;
-  sl_closure *cl = NULL;
-  void *params = NULL;
-  sl_diag d;
+  const sl_closure_entry *e[MAX_EVAL_CLOSURES];
+  sl_closure *cl[MAX_EVAL_CLOSURES] = {NULL};
+  void *params[MAX_EVAL_CLOSURES] = {NULL};
+  int n_cl = 0;
   double *data = NULL;
-  if ((rc = lookup(r, name, &e))) goto done;
-  const sl_closure_desc *c = e->desc;
-  if ((rc = sl_params_new(c, &params, &d))) {
-    rc = sl_cli_error(rc, "%s", d.msg);
+  char *list = strdup(names);
+  sl_diag d;
+  input_union u = {0, {NULL}};
+  if (!list) {
+    rc = sl_cli_error(SL_EFAILED, "out of memory");
     goto done;
   }
-  for (int i = 0; i < n_sets; ++i) {
-    char key[128];
-    const char *eq = strchr(sets[i], '=');
-    if (!eq) {
-      sl_params_free(params);
-      rc = sl_cli_error(SL_EBADINPUT, "--set %s: expected parameter=value", sets[i]);
+  /* NAME or a comma list of closures to compare at the same states. */
+  for (char *save = NULL, *t = strtok_r(list, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+    if (n_cl == MAX_EVAL_CLOSURES) {
+      rc = sl_cli_error(SL_EBADINPUT, "closure eval: at most %d closures at once", MAX_EVAL_CLOSURES);
       goto done;
     }
-    snprintf(key, sizeof key, "%.*s", (int)(eq - sets[i]), sets[i]);
-    if ((rc = sl_params_set(c, params, key, eq + 1, &d))) {
-      sl_params_free(params);
-      rc = sl_cli_error(rc, "--set %s: %s", sets[i], d.msg);
+    if ((rc = lookup(r, t, &e[n_cl]))) goto done;
+    if ((rc = sl_params_new(e[n_cl]->desc, &params[n_cl], &d))) {
+      rc = sl_cli_error(rc, "%s", d.msg);
       goto done;
     }
+    ++n_cl;
   }
-  if ((rc = sl_closure_create(e, params, &cl, &d))) {
-    rc = sl_cli_error(rc, "%s", d.msg);
-    goto done;
+  for (int k = 0; k < n_cl; ++k)
+    for (int32_t i = 0; i < e[k]->desc->n_in; ++i)
+      if (union_find(&u, e[k]->desc->in[i].name) < 0) {
+        if (u.n == MAX_EVAL_INPUTS) {
+          rc = sl_cli_error(SL_EBADINPUT, "closure eval: too many inputs");
+          goto done;
+        }
+        u.field[u.n++] = &e[k]->desc->in[i];
+      }
+  if ((rc = apply_sets(e, n_cl, params, sets, n_sets))) goto done;
+  for (int k = 0; k < n_cl; ++k) {
+    rc = sl_closure_create(e[k], params[k], &cl[k], &d);
+    params[k] = NULL; /* owned by the closure now, also on failure */
+    if (rc) {
+      rc = sl_cli_error(rc, "%s", d.msg);
+      goto done;
+    }
   }
   sweep sw[32];
   int n_sw = 0;
-  if (at && (rc = parse_at(c, at, sw, &n_sw, 32))) goto done;
+  if (at && (rc = parse_at(&u, at, sw, &n_sw, 32))) goto done;
   long Q = 1;
   for (int k = 0; k < n_sw; ++k) {
     if (Q > 10000000 / sw[k].count) {
@@ -396,62 +446,86 @@ static int cmd_eval(int argc, char **argv) {
     }
     Q *= sw[k].count;
   }
-  /* One batch: inputs, outputs, derivatives, structure of arrays. */
-  size_t ni = (size_t)c->n_in, no = (size_t)c->n_out, nq = (size_t)Q;
-  data = calloc((ni + no + no * ni) * nq + 1, sizeof(double));
-  const double *in[64];
-  double *out[64], *dout[64 * 64];
-  if (!data || ni > 64 || no > 64) {
+  /* The states (one column per union input), then per closure its outputs
+   * and derivatives, structure of arrays. */
+  size_t nq = (size_t)Q, ncols = (size_t)u.n;
+  for (int k = 0; k < n_cl; ++k) ncols += (size_t)e[k]->desc->n_out * (1 + (size_t)e[k]->desc->n_in);
+  data = calloc(ncols * nq + 1, sizeof(double));
+  if (!data) {
     rc = sl_cli_error(SL_EFAILED, "out of memory");
     goto done;
   }
-  for (size_t i = 0; i < ni; ++i) in[i] = data + i * nq;
-  for (size_t k = 0; k < no; ++k) out[k] = data + (ni + k) * nq;
-  for (size_t k = 0; k < no; ++k)
-    for (size_t i = 0; i < ni; ++i)
-      dout[k * ni + i] = (c->in[i].flags & SL_FIELD_DIFF) ? data + (ni + no + k * ni + i) * nq : NULL;
   for (size_t q = 0; q < nq; ++q) {
-    for (size_t i = 0; i < ni; ++i) ((double *)in[i])[q] = c->in[i].typical;
+    for (int i = 0; i < u.n; ++i) data[(size_t)i * nq + q] = u.field[i]->typical;
     long rest = (long)q;
     for (int k = n_sw - 1; k >= 0; --k) {
       long j = rest % sw[k].count;
       rest /= sw[k].count;
       double v = sw[k].count == 1 ? sw[k].first
                                   : sw[k].first + (sw[k].last - sw[k].first) * (double)j / (double)(sw[k].count - 1);
-      ((double *)in[sw[k].input])[q] = v;
+      data[(size_t)sw[k].input * nq + q] = v;
     }
   }
-  sl_error err;
-  sl_eval_args a = {.Q = (int32_t)Q, .in = in, .out = out, .dout = deriv ? dout : NULL, .err = &err};
-  int erc = sl_closure_evaluate(cl, &a);
-  if (erc != 0) {
-    char pt[512] = "";
-    size_t used = 0;
-    for (size_t i = 0; i < ni && err.point >= 0 && used < sizeof pt; ++i)
-      used += (size_t)snprintf(pt + used, sizeof pt - used, "%s%s=%g", i ? "," : "", c->in[i].name, in[i][err.point]);
-    rc = sl_cli_error(SL_EFAILED, "%s/%s %s at %s: %s", sl_kind_name(c->kind), c->name,
-                      erc > 0 ? "is outside its validity" : "failed", err.point >= 0 ? pt : "(no point)", err.msg);
-    goto done;
+  double *outs[MAX_EVAL_CLOSURES][MAX_EVAL_INPUTS];
+  double *douts[MAX_EVAL_CLOSURES][MAX_EVAL_INPUTS * MAX_EVAL_INPUTS];
+  size_t col = (size_t)u.n;
+  for (int k = 0; k < n_cl && !rc; ++k) {
+    const sl_closure_desc *c = e[k]->desc;
+    const double *in[MAX_EVAL_INPUTS];
+    if (c->n_out > MAX_EVAL_INPUTS) {
+      rc = sl_cli_error(SL_EFAILED, "closure %s has too many outputs", c->name);
+      break;
+    }
+    for (int32_t i = 0; i < c->n_in; ++i) in[i] = data + (size_t)union_find(&u, c->in[i].name) * nq;
+    for (int32_t o = 0; o < c->n_out; ++o) outs[k][o] = data + (col++) * nq;
+    for (int32_t o = 0; o < c->n_out; ++o)
+      for (int32_t i = 0; i < c->n_in; ++i)
+        douts[k][o * c->n_in + i] = (c->in[i].flags & SL_FIELD_DIFF) ? data + (col++) * nq : NULL;
+    sl_error err;
+    sl_eval_args a = {.Q = (int32_t)Q, .in = in, .out = outs[k], .dout = deriv ? douts[k] : NULL, .err = &err};
+    int erc = sl_closure_evaluate(cl[k], &a);
+    if (erc != 0) {
+      char pt[512] = "";
+      size_t used = 0;
+      for (int32_t i = 0; i < c->n_in && err.point >= 0 && used < sizeof pt; ++i)
+        used += (size_t)snprintf(pt + used, sizeof pt - used, "%s%s=%g", i ? "," : "", c->in[i].name, in[i][err.point]);
+      rc = sl_cli_error(SL_EFAILED, "%s/%s %s at %s: %s", sl_kind_name(c->kind), c->name,
+                        erc > 0 ? "is outside its validity" : "failed", err.point >= 0 ? pt : "(no point)", err.msg);
+    }
   }
-  for (size_t i = 0; i < ni; ++i) printf("%s%s", i ? "," : "", c->in[i].name);
-  for (size_t k = 0; k < no; ++k) printf(",%s", c->out[k].name);
-  if (deriv)
-    for (size_t k = 0; k < no; ++k)
-      for (size_t i = 0; i < ni; ++i)
-        if (dout[k * ni + i]) printf(",d%s/d%s", c->out[k].name, c->in[i].name);
+  if (rc) goto done;
+  /* Header: inputs, then outputs (suffixed [closure] when comparing). */
+  for (int i = 0; i < u.n; ++i) printf("%s%s", i ? "," : "", u.field[i]->name);
+  for (int k = 0; k < n_cl; ++k) {
+    const sl_closure_desc *c = e[k]->desc;
+    char tag[96] = "";
+    if (n_cl > 1) snprintf(tag, sizeof tag, "[%s]", c->name);
+    for (int32_t o = 0; o < c->n_out; ++o) printf(",%s%s", c->out[o].name, tag);
+    if (deriv)
+      for (int32_t o = 0; o < c->n_out; ++o)
+        for (int32_t i = 0; i < c->n_in; ++i)
+          if (douts[k][o * c->n_in + i]) printf(",d%s/d%s%s", c->out[o].name, c->in[i].name, tag);
+  }
   printf("\n");
   for (size_t q = 0; q < nq; ++q) {
-    for (size_t i = 0; i < ni; ++i) printf("%s%.12g", i ? "," : "", in[i][q]);
-    for (size_t k = 0; k < no; ++k) printf(",%.12g", out[k][q]);
-    if (deriv)
-      for (size_t k = 0; k < no; ++k)
-        for (size_t i = 0; i < ni; ++i)
-          if (dout[k * ni + i]) printf(",%.12g", dout[k * ni + i][q]);
+    for (int i = 0; i < u.n; ++i) printf("%s%.12g", i ? "," : "", data[(size_t)i * nq + q]);
+    for (int k = 0; k < n_cl; ++k) {
+      const sl_closure_desc *c = e[k]->desc;
+      for (int32_t o = 0; o < c->n_out; ++o) printf(",%.12g", outs[k][o][q]);
+      if (deriv)
+        for (int32_t o = 0; o < c->n_out; ++o)
+          for (int32_t i = 0; i < c->n_in; ++i)
+            if (douts[k][o * c->n_in + i]) printf(",%.12g", douts[k][o * c->n_in + i][q]);
+    }
     printf("\n");
   }
 done:
   free(data);
-  sl_closure_destroy(cl);
+  free(list);
+  for (int k = 0; k < n_cl; ++k) {
+    sl_closure_destroy(cl[k]);
+    sl_params_free(params[k]);
+  }
   sl_registry_destroy(r);
   return rc;
 }

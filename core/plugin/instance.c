@@ -261,11 +261,19 @@ int sl_closure_evaluate(sl_closure *c, const sl_eval_args *a) {
   for (int32_t k = 0; k < c->desc->n_out; ++k) {
     const double *o = a->out[k];
     if (!o) continue;
-    /* x * 0 is 0 for finite x and NaN otherwise: one vectorisable pass, and
-     * the point-by-point search only when something is wrong. */
-    double acc = 0.0;
-    for (int32_t q = 0; q < a->Q; ++q) acc += o[q] * 0.0;
-    if (acc == 0.0) continue;
+    /* x * 0 is 0 for finite x and NaN otherwise. Four independent sums keep
+     * the pass off the add latency; the point-by-point search runs only when
+     * something is wrong. */
+    double acc[4] = {0.0, 0.0, 0.0, 0.0};
+    int32_t q4 = a->Q & ~3;
+    for (int32_t q = 0; q < q4; q += 4) {
+      acc[0] += o[q] * 0.0;
+      acc[1] += o[q + 1] * 0.0;
+      acc[2] += o[q + 2] * 0.0;
+      acc[3] += o[q + 3] * 0.0;
+    }
+    for (int32_t q = q4; q < a->Q; ++q) acc[0] += o[q] * 0.0;
+    if (acc[0] + acc[1] + acc[2] + acc[3] == 0.0) continue;
     for (int32_t q = 0; q < a->Q; ++q) {
       if (!isfinite(o[q])) {
         a->err->point = q;
