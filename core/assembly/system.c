@@ -1,0 +1,113 @@
+/* Element-by-element systems and Dirichlet constraints. */
+#include "core/assembly/system.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+int sl_system_init(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_elem, const int32_t *elem_dofs,
+                   sl_diag *d) {
+  memset(s, 0, sizeof *s);
+  s->n_dofs = n_dofs, s->n_elem = n_elem, s->dofs_per_elem = dofs_per_elem, s->elem_dofs = elem_dofs;
+  int32_t *ptr = malloc(((size_t)n_elem + 1) * sizeof *ptr);
+  s->b = calloc((size_t)n_dofs, sizeof *s->b);
+  if (!ptr || !s->b) {
+    free(ptr);
+    sl_system_free(s);
+    return sl_diag_set(d, SL_EFAILED, "assembly: out of memory for a system of %d dofs", (int)n_dofs);
+  }
+  for (int32_t e = 0; e <= n_elem; ++e) ptr[e] = e * dofs_per_elem;
+  int rc = sl_csr_build_uniform(&s->A, n_dofs, n_elem, dofs_per_elem, elem_dofs, d);
+  if (!rc) rc = sl_csr_elem_map_build(&s->map, &s->A, n_elem, ptr, elem_dofs, NULL, NULL, d);
+  free(ptr);
+  if (rc) sl_system_free(s);
+  return rc;
+}
+
+void sl_system_free(sl_system *s) {
+  sl_csr_free(&s->A);
+  sl_csr_elem_map_free(&s->map);
+  free(s->b);
+  memset(s, 0, sizeof *s);
+}
+
+void sl_system_zero(sl_system *s) {
+  sl_csr_zero(&s->A);
+  memset(s->b, 0, (size_t)s->n_dofs * sizeof *s->b);
+}
+
+int sl_system_add_element(sl_system *s, int32_t e, const double *Ke, const double *be, sl_diag *d) {
+  if (Ke) {
+    int rc = sl_csr_add_element_mapped(&s->A, &s->map, e, Ke, d);
+    if (rc) return rc;
+  }
+  if (be) {
+    const int32_t *dofs = s->elem_dofs + (size_t)e * s->dofs_per_elem;
+    for (int a = 0; a < s->dofs_per_elem; ++a)
+      if (dofs[a] >= 0) s->b[dofs[a]] += be[a];
+  }
+  return 0;
+}
+
+/* ---- constraints --------------------------------------------------------- */
+
+int sl_constraints_init(sl_constraints *bc, int32_t n_dofs, sl_diag *d) {
+  memset(bc, 0, sizeof *bc);
+  bc->fixed = calloc((size_t)n_dofs, 1);
+  bc->value = calloc((size_t)n_dofs, sizeof *bc->value);
+  if (!bc->fixed || !bc->value) {
+    sl_constraints_free(bc);
+    return sl_diag_set(d, SL_EFAILED, "constraints: out of memory");
+  }
+  bc->n_dofs = n_dofs;
+  return 0;
+}
+
+void sl_constraints_free(sl_constraints *bc) {
+  free(bc->fixed);
+  free(bc->value);
+  memset(bc, 0, sizeof *bc);
+}
+
+void sl_constraints_fix(sl_constraints *bc, int32_t i, double v) {
+  if (!bc->fixed[i]) ++bc->n_fixed;
+  bc->fixed[i] = 1, bc->value[i] = v;
+}
+
+int sl_constraints_fix_boundary(sl_constraints *bc, const sl_dofmap *dm, const char *boundary, int32_t offset,
+                                sl_exact_fn g, void *user, double value, sl_diag *d) {
+  if (offset < 0 || offset + dm->n_dofs > bc->n_dofs)
+    return sl_diag_set(d, SL_EBADINPUT, "constraints: block offset %d does not fit %d dofs", (int)offset,
+                       (int)bc->n_dofs);
+  int32_t *dofs, n;
+  int rc = sl_dofmap_boundary_dofs(dm, boundary, &dofs, &n, d);
+  if (rc) return rc;
+  for (int32_t k = 0; k < n; ++k) {
+    double v = value;
+    if (g) g(user, dm->xy + 2 * (size_t)dofs[k], &v, NULL);
+    sl_constraints_fix(bc, offset + dofs[k], v);
+  }
+  free(dofs);
+  return 0;
+}
+
+int sl_constraints_apply(const sl_constraints *bc, sl_system *s, int symmetric, sl_diag *d) {
+  if (bc->n_dofs != s->n_dofs)
+    return sl_diag_set(d, SL_EBADINPUT, "constraints: %d dofs, the system has %d", (int)bc->n_dofs, (int)s->n_dofs);
+  if (bc->n_fixed == 0) return 0;
+  int32_t *rows = malloc((size_t)bc->n_fixed * sizeof *rows), k = 0;
+  double *vals = malloc((size_t)bc->n_fixed * sizeof *vals);
+  if (!rows || !vals) {
+    free(rows), free(vals);
+    return sl_diag_set(d, SL_EFAILED, "constraints: out of memory");
+  }
+  for (int32_t i = 0; i < bc->n_dofs; ++i)
+    if (bc->fixed[i]) rows[k] = i, vals[k++] = bc->value[i];
+  int rc = sl_csr_set_dirichlet(&s->A, k, rows, vals, s->b, symmetric, d);
+  free(rows), free(vals);
+  return rc;
+}
+
+void sl_constraints_impose(const sl_constraints *bc, double *u) {
+  for (int32_t i = 0; i < bc->n_dofs; ++i)
+    if (bc->fixed[i]) u[i] = bc->value[i];
+}
