@@ -13,6 +13,8 @@
 #include <math.h>
 #include <sluice/closure.h>
 
+#include "drag/dense_drag_laws.h"
+
 typedef struct ergun_params {
   double viscous;   /* 150 */
   double inertial;  /* 1.75 */
@@ -74,15 +76,10 @@ static int evaluate(const void *state, const sl_eval_args *a) {
       return sl_fail(a->err, SL_RECOVERABLE, q,
                      "fluid or particle property outside its range (rho_f %g, mu_f %g, d_p %g, sphericity %g)", rho, mu,
                      dp, psi);
-    /* Two divisions per point: the rest are products with reciprocals. */
-    const double inv_d = 1.0 / (psi * dp), inv_n = 1.0 / (1.0 - phi);
-    const double visc = c_visc * mu * inv_d * inv_d, iner = c_iner * rho * inv_d;
-    /* Inertial factor g(phi): phi (gidaspow) or phi/(1-phi) (pringle_printed). */
-    const double g = gidaspow_form ? phi : phi * inv_n;
-    const double dg = gidaspow_form ? 1.0 : inv_n * inv_n;
-    K[q] = visc * phi * phi * inv_n + iner * g * slip;
-    if (dK_dphi) dK_dphi[q] = visc * phi * (2.0 - phi) * inv_n * inv_n + iner * dg * slip;
-    if (dK_dslip) dK_dslip[q] = iner * g;
+    const sl_drag_value v = sl_ergun_law(phi, slip, rho, mu, psi * dp, c_visc, c_iner, !gidaspow_form);
+    K[q] = v.K;
+    if (dK_dphi) dK_dphi[q] = v.K_phi;
+    if (dK_dslip) dK_dslip[q] = v.K_slip;
   }
   return SL_OK;
 }

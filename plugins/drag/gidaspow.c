@@ -22,7 +22,7 @@
 #include <math.h>
 #include <sluice/closure.h>
 
-#include "drag/sphere_drag.h"
+#include "drag/dense_drag_laws.h"
 
 typedef struct gidaspow_params {
   double switch_fluid_fraction; /* 0.8 */
@@ -75,21 +75,9 @@ static int evaluate(const void *state, const sl_eval_args *a) {
   for (int32_t q = 0; q < a->Q; ++q) {
     int rc = sl_check_inputs(inputs, N_IN, a, q, -1);
     if (rc) return rc;
-    double d = psi[q] * dp[q];
-    double eps = 1.0 - phi[q];
-    double k1 = mu[q] / (d * d);
-    double s = slip[q];
-    /* Ergun (Gidaspow form) and its derivatives. */
-    double kE = 150.0 * k1 * phi[q] * phi[q] / eps + 1.75 * phi[q] * rho[q] * s / d;
-    double kE_phi = 150.0 * k1 * phi[q] * (2.0 - phi[q]) / (eps * eps) + 1.75 * rho[q] * s / d;
-    double kE_s = 1.75 * phi[q] * rho[q] / d;
-    /* Wen-Yu: 18 k1 phi eps^-2.65 f(Re), Re = eps rho s d / mu. */
-    double re = eps * rho[q] * s * d / mu[q], re_df;
-    double f = sl_sn_factor(re, &re_df);
-    double hind = pow(eps, -2.65);
-    double kW = 18.0 * k1 * phi[q] * hind * f;
-    double kW_phi = 18.0 * k1 * hind * (f + phi[q] * (2.65 * f / eps - re_df / eps));
-    double kW_s = s > 0.0 ? 18.0 * k1 * phi[q] * hind * re_df / s : 0.0;
+    const double d = psi[q] * dp[q], eps = 1.0 - phi[q];
+    const sl_drag_value e = sl_ergun_law(phi[q], slip[q], rho[q], mu[q], d, 150.0, 1.75, 0);
+    const sl_drag_value y = sl_wen_yu_law(phi[q], slip[q], rho[q], mu[q], d, 2.65, 1);
     double w, w_phi;
     if (p->blend == 1) {
       double x = st * (eps - sw);
@@ -99,9 +87,9 @@ static int evaluate(const void *state, const sl_eval_args *a) {
       w = eps < sw ? 0.0 : 1.0;
       w_phi = 0.0;
     }
-    K[q] = (1.0 - w) * kE + w * kW;
-    if (dK_dphi) dK_dphi[q] = (1.0 - w) * kE_phi + w * kW_phi + w_phi * (kW - kE);
-    if (dK_dslip) dK_dslip[q] = (1.0 - w) * kE_s + w * kW_s;
+    K[q] = (1.0 - w) * e.K + w * y.K;
+    if (dK_dphi) dK_dphi[q] = (1.0 - w) * e.K_phi + w * y.K_phi + w_phi * (y.K - e.K);
+    if (dK_dslip) dK_dslip[q] = (1.0 - w) * e.K_slip + w * y.K_slip;
   }
   return SL_OK;
 }

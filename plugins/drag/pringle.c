@@ -39,7 +39,7 @@
 #include <math.h>
 #include <sluice/closure.h>
 
-#include "drag/sphere_drag.h"
+#include "drag/dense_drag_laws.h"
 
 typedef struct pringle_params {
   double switch_fluid_fraction; /* 0.6 */
@@ -119,13 +119,11 @@ static int evaluate(const void *state, const sl_eval_args *a) {
     double s = slip[q];
     double k, k_phi, k_s;
     if (eps < p->switch_fluid_fraction) {
-      /* Ergun; inertial factor g(phi) = phi/eps (printed) or phi (gidaspow). */
-      double iner = 1.75 * rho[q] / d;
-      double g = p->ergun_form == 0 ? phi[q] / eps : phi[q];
-      double dg = p->ergun_form == 0 ? 1.0 / (eps * eps) : 1.0;
-      k = 150.0 * k1 * phi[q] * phi[q] / eps + iner * g * s;
-      k_phi = 150.0 * k1 * phi[q] * (2.0 - phi[q]) / (eps * eps) + iner * dg * s;
-      k_s = iner * g;
+      /* Ergun; inertial factor phi/eps (printed eq 3.12, ergun_form 0) or phi (gidaspow). */
+      const sl_drag_value e = sl_ergun_law(phi[q], s, rho[q], mu[q], d, 150.0, 1.75, p->ergun_form == 0);
+      k = e.K;
+      k_phi = e.K_phi;
+      k_s = e.K_slip;
     } else {
       /* 18 k1 f(Re) eps^(2-n) X, X = phi (consistent) or rho_s/drho - eps (printed). */
       double re = rho[q] * s * d / mu[q], re_df;

@@ -21,7 +21,7 @@
 #include <math.h>
 #include <sluice/closure.h>
 
-#include "drag/sphere_drag.h"
+#include "drag/dense_drag_laws.h"
 
 typedef struct wen_yu_params {
   double exponent;  /* 2.65 */
@@ -73,19 +73,10 @@ static int evaluate(const void *state, const sl_eval_args *a) {
   for (int32_t q = 0; q < a->Q; ++q) {
     int rc = sl_check_inputs(inputs, N_IN, a, q, -1);
     if (rc) return rc;
-    double d = psi[q] * dp[q];
-    double eps = 1.0 - phi[q];
-    double k1 = 18.0 * mu[q] / (d * d);
-    double hind = pow(eps, -m);
-    double re = (fluid_fraction_re ? eps : 1.0) * rho[q] * slip[q] * d / mu[q], re_df;
-    double f = sl_sn_factor(re, &re_df);
-    /* K = k1 phi eps^-m f(Re);  dRe/dphi = -Re/eps (fluid_fraction) or 0. */
-    K[q] = k1 * phi[q] * hind * f;
-    if (dK_dphi) {
-      double df_dphi = fluid_fraction_re ? -re_df / eps : 0.0;
-      dK_dphi[q] = k1 * hind * (f + phi[q] * (m * f / eps + df_dphi));
-    }
-    if (dK_dslip) dK_dslip[q] = slip[q] > 0.0 ? k1 * phi[q] * hind * re_df / slip[q] : 0.0;
+    const sl_drag_value v = sl_wen_yu_law(phi[q], slip[q], rho[q], mu[q], psi[q] * dp[q], m, fluid_fraction_re);
+    K[q] = v.K;
+    if (dK_dphi) dK_dphi[q] = v.K_phi;
+    if (dK_dslip) dK_dslip[q] = v.K_slip;
   }
   return SL_OK;
 }
