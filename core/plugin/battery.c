@@ -9,6 +9,7 @@
 
 #include "core/plugin/instance.h"
 #include "core/plugin/kinds.h"
+#include "core/plugin/validate.h"
 
 enum { N_STATES = 64, N_THREAD_REPEATS = 50 };
 
@@ -138,11 +139,16 @@ static void describe_point(const sl_closure_desc *c, const batch *bt, int32_t q,
 
 /* 1. Schema sanity was enforced at load; 2. create/destroy and host bounds. */
 static void check_schema_and_bounds(battery *b) {
-  report(b, 1, "schema", "%d parameters, %d inputs, %d outputs", (int)b->desc->n_params, (int)b->desc->n_in,
-         (int)b->desc->n_out);
   const sl_closure_desc *c = b->desc;
-  void *params = NULL;
   sl_diag d;
+  /* Loading validated it already; the battery does not rely on how the
+   * entry was obtained. */
+  int schema_ok = sl_validate_descriptor(c, &d) == 0;
+  if (schema_ok)
+    report(b, 1, "schema", "%d parameters, %d inputs, %d outputs", (int)c->n_params, (int)c->n_in, (int)c->n_out);
+  else
+    report(b, 0, "schema", "%s", d.msg);
+  void *params = NULL;
   int refused_all = 1, tried = 0;
   char what[160] = "";
   if (sl_params_new(c, &params, &d) == 0) {

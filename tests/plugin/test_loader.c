@@ -1,5 +1,6 @@
 /* The loader against deliberately broken closure libraries: every defect
  * gives a clear message naming the file, never a crash. */
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -209,6 +210,40 @@ static void test_parameters(void) {
   sl_registry_destroy(r);
 }
 
+/* A descriptor that never went through the loader: its parameter default is
+ * outside its own bounds, which the battery's schema check must catch. */
+typedef struct bad_params {
+  double a;
+} bad_params;
+static const sl_param_desc bad_param_table[] = {
+    {"a", SL_PARAM_REAL, offsetof(bad_params, a), 20.0, 0.0, 10.0, "1", NULL, "default outside [0, 10]"},
+};
+static const sl_field_desc bad_inputs[] = {{"phi", "1", SL_FIELD_DIFF, 0.3, 0.0, 0.6, "solids fraction"}};
+static const sl_field_desc bad_outputs[] = {{"p_s", "Pa", 0, 0, 0, 0, "a phi"}};
+static int bad_evaluate(const void *state, const sl_eval_args *args) {
+  const bad_params *p = state;
+  for (int32_t q = 0; q < args->Q; ++q) {
+    if (!(args->in[0][q] >= 0.0 && args->in[0][q] <= 0.6)) return sl_fail(args->err, SL_RECOVERABLE, q, "phi out");
+    args->out[0][q] = p->a * args->in[0][q];
+    double *dp = sl_dout(args, 1, 0, 0);
+    if (dp) dp[q] = p->a;
+  }
+  return SL_OK;
+}
+static const sl_closure_desc bad_desc = {
+    SL_CLOSURE_DESC_HEADER, .kind = SL_KIND_SOLIDS_PRESSURE, .name = "bad_default", .version = "0", .summary = "s",
+    .formula = "f", .reference = "r", .validity = "v", .n_params = 1, .params = bad_param_table,
+    .params_size = sizeof(bad_params), .n_in = 1, .in = bad_inputs, .n_out = 1, .out = bad_outputs,
+    .evaluate = bad_evaluate};
+
+static void test_battery_rechecks_schema(void) {
+  sl_library lib = {.path = "(in the test program)"};
+  sl_closure_entry e = {&bad_desc, &lib};
+  sl_battery_result res = {0, 0, 0};
+  sl_battery_run(&e, NULL, &res);
+  CHECK_MSG(res.failed == 1, "bad default: %d failed", res.failed);
+}
+
 int main(int argc, char **argv) {
   if (argc < 2) {
     fprintf(stderr, "usage: %s BROKEN_PLUGIN_DIR\n", argv[0]);
@@ -220,5 +255,6 @@ int main(int argc, char **argv) {
   test_nan_and_recoverable();
   test_battery_verdicts();
   test_parameters();
+  test_battery_rechecks_schema();
   return sl_test_summary();
 }
