@@ -27,6 +27,7 @@ typedef struct sl_qp_batch {
   const int32_t *cell;      /* [n] the cell of each point */
   const double *shear_rate; /* [n] sqrt(2 D(u):D(u)) of the velocity the
                                caller passed (Stokes), else NULL */
+  const double (*normal)[2]; /* [n] outward unit normal on boundary batches, else NULL */
 } sl_qp_batch;
 
 /* Writes `out` for all points of the batch: out[i] for a scalar, out[k * i

@@ -17,6 +17,9 @@ static const char usage[] =
     "  closure describe NAME|--all     schema, units, ranges, reference, an INI stanza\n"
     "  closure eval NAME --at SPEC     evaluate a closure without a mesh (CSV)\n"
     "  check-closure LIB.so            run the conformance battery on a closure library\n"
+    "  sample OUT.h5 --field F --line x0,y0:x1,y1 [--n N] [--time T]\n"
+    "                                  a field of an output file along a line (CSV);\n"
+    "                                  --point x,y for one point, --list for the contents\n"
     "  version                         print the version\n"
     "\n"
     "Each command takes --help. Closures are searched in the folders named by the\n"
@@ -52,6 +55,7 @@ int sl_cli_registry(sl_registry **r, int warn) {
   return 0;
 }
 
+
 typedef struct command {
   const char *name;
   int (*run)(int argc, char **argv);
@@ -60,6 +64,7 @@ typedef struct command {
 static const command commands[] = {
     {"run", sl_cmd_run},           {"closures", sl_cmd_closures}, {"closure", sl_cmd_closure},
     {"check-closure", sl_cmd_check_closure}, {"version", sl_cmd_version},
+    {"sample", sl_cmd_sample},
 };
 
 int main(int argc, char **argv) {

@@ -15,7 +15,9 @@ static const struct {
   const char *name;
   int nodes;
 } topologies[] = {
-    {"Polyline", 2}, {"Triangle", 3}, {"Quadrilateral", 4}, {"Triangle_6", 6}, {"Quadrilateral_9", 9},
+    /* Edge_3 is the 1-D P2 cell: the 2 end vertices, then the midpoint. */
+    {"Polyline", 2},      {"Edge_3", 3},     {"Triangle", 3},
+    {"Quadrilateral", 4}, {"Triangle_6", 6}, {"Quadrilateral_9", 9},
 };
 enum { N_TOPOLOGIES = (int)(sizeof topologies / sizeof topologies[0]) };
 
@@ -219,8 +221,8 @@ int sl_output_write_mesh(sl_output *o, int dim, int32_t n_vertices, const double
     for (int i = 0; i < N_TOPOLOGIES; ++i) names[i] = topologies[i].name;
     const char *hint = topology ? sl_suggest(topology, names, N_TOPOLOGIES) : NULL;
     return sl_diag_set(d, SL_EBADINPUT,
-                       "%s: unknown XDMF topology '%s'%s%s%s; known: Polyline, Triangle, Quadrilateral, Triangle_6, "
-                       "Quadrilateral_9",
+                       "%s: unknown XDMF topology '%s'%s%s%s; known: Polyline, Edge_3, Triangle, Quadrilateral, "
+                       "Triangle_6, Quadrilateral_9",
                        o->path, topology ? topology : "(null)", hint ? " (did you mean '" : "", hint ? hint : "",
                        hint ? "'?)" : "");
   }

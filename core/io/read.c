@@ -1,5 +1,5 @@
 /* Readers of sluice output files: mesh, output times, a field at the step
- * nearest a time, string provenance. */
+ * nearest a time, string provenance, the list of fields and times. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -7,6 +7,7 @@
 
 #include "core/io/h5util.h"
 #include "core/io/output.h"
+#include "core/io/sample.h"
 
 /* Reads a whole dataset of rank 1 or 2 into a new buffer. */
 static int read_array(const char *path, hid_t loc, const char *name, hid_t mtype, size_t elem, int *rank,
@@ -306,4 +307,86 @@ int sl_output_read_text(const char *path, const char *what, char **text, sl_diag
   H5Oclose(o);
   H5Fclose(f);
   return rc;
+}
+
+static int cmp_field_info(const void *a, const void *b) {
+  return strcmp(((const sl_output_field_info *)a)->name, ((const sl_output_field_info *)b)->name);
+}
+
+/* Adds one dataset of a step to the field list (a new entry or one more step
+ * of a known field). */
+static int note_field(const char *path, hid_t g, const step_entry *st, const char *name, sl_output_contents *c,
+                      int *cap, sl_diag *d) {
+  char full[320];
+  snprintf(full, sizeof full, "/%s/%s", st->name, name);
+  hid_t ds = H5Dopen2(g, name, H5P_DEFAULT);
+  if (ds < 0) return sl_h5_fail(d, SL_EBADINPUT, path, "cannot open dataset", full);
+  char centring[16];
+  int64_t components = 0;
+  int rc = sl_h5_read_attr_string(ds, "centring", centring, sizeof centring, path, full, d);
+  if (!rc) rc = sl_h5_read_attr_int64(ds, "components", &components, path, full, d);
+  H5Dclose(ds);
+  if (rc) return rc;
+  sl_output_field_info *fi = NULL;
+  for (int i = 0; i < c->n_fields && !fi; ++i)
+    if (strcmp(c->fields[i].name, name) == 0) fi = &c->fields[i];
+  if (!fi) {
+    if (c->n_fields == *cap) {
+      int ncap = *cap ? 2 * *cap : 8;
+      sl_output_field_info *nf = realloc(c->fields, (size_t)ncap * sizeof *nf);
+      if (!nf) return sl_diag_set(d, SL_EFAILED, "%s: out of memory", path);
+      c->fields = nf, *cap = ncap;
+    }
+    fi = &c->fields[c->n_fields++];
+    memset(fi, 0, sizeof *fi);
+    snprintf(fi->name, sizeof fi->name, "%s", name);
+    fi->centring = strcmp(centring, "cell") == 0 ? SL_CENTRE_CELL : SL_CENTRE_NODE;
+    fi->components = (int)components;
+    fi->t_first = st->time;
+  }
+  ++fi->n_steps;
+  fi->t_last = st->time;
+  return 0;
+}
+
+int sl_output_read_contents(const char *path, sl_output_contents *c, sl_diag *d) {
+  memset(c, 0, sizeof *c);
+  hid_t f;
+  int rc = sl_h5_open_read(path, &f, d);
+  if (rc) return rc;
+  step_entry *s = NULL;
+  int n = 0, cap = 0;
+  rc = list_steps(path, f, &s, &n, d);
+  if (!rc && n > 0 && !(c->times = malloc((size_t)n * sizeof *c->times)))
+    rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory", path);
+  for (int i = 0; !rc && i < n; ++i) {
+    c->times[i] = s[i].time;
+    c->n_steps = i + 1;
+    hid_t g = H5Gopen2(f, s[i].name, H5P_DEFAULT);
+    if (g < 0) {
+      rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot open group", s[i].name);
+      break;
+    }
+    char **names = NULL;
+    int k = 0;
+    rc = sl_h5_list(g, &names, &k, path, s[i].name, d);
+    for (int j = 0; !rc && j < k; ++j) rc = note_field(path, g, &s[i], names[j], c, &cap, d);
+    sl_io_free_names(names, k);
+    H5Gclose(g);
+  }
+  free(s);
+  H5Fclose(f);
+  if (rc) {
+    sl_output_contents_free(c);
+    return rc;
+  }
+  if (c->n_fields > 1) qsort(c->fields, (size_t)c->n_fields, sizeof *c->fields, cmp_field_info);
+  return 0;
+}
+
+void sl_output_contents_free(sl_output_contents *c) {
+  if (!c) return;
+  free(c->times);
+  free(c->fields);
+  memset(c, 0, sizeof *c);
 }

@@ -16,6 +16,9 @@ struct sl_linsolve {
   const double *values;
   int32_t n;
   double *work; /* copy of b for in-place solves */
+  double *factored; /* copy of the values last factorised: a re-assembled but
+                       unchanged matrix (a constant operator) is not refactorised */
+  int32_t n_factored;
   sl_linsolve_stats st;
 };
 
@@ -65,6 +68,7 @@ void sl_linsolve_destroy(sl_linsolve *ls) {
   if (!ls) return;
   ls->ops->destroy(ls->backend);
   free(ls->work);
+  free(ls->factored);
   free(ls);
 }
 
@@ -77,6 +81,8 @@ void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len) {
   const sl_linsolve_stats *s = &ls->st;
   int k = snprintf(buf, len, "%s: %ld symbolic %.3g s, %ld numeric %.3g s", ls->ops->name, s->n_symbolic, s->t_symbolic,
                    s->n_numeric, s->t_numeric);
+  if (k >= 0 && (size_t)k < len && s->n_numeric_skipped > 0)
+    k += snprintf(buf + k, len - (size_t)k, " (%ld skipped: matrix unchanged)", s->n_numeric_skipped);
   if (k >= 0 && (size_t)k < len && s->n_refactor > 0)
     k += snprintf(buf + k, len - (size_t)k, " (%ld refactor, %ld redone)", s->n_refactor, s->n_refactor_redo);
   if (k >= 0 && (size_t)k < len) snprintf(buf + k, len - (size_t)k, ", %ld solves %.3g s", s->n_solves, s->t_solve);
@@ -99,8 +105,16 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
     ls->pattern_id = A->pattern_id;
     ls->n = A->n_rows;
   }
-  if (!ls->have_numeric || ls->force_numeric || ls->values_gen != A->values_gen || ls->matrix != A ||
-      ls->values != A->values) {
+  int stale = !ls->have_numeric || ls->force_numeric || ls->values_gen != A->values_gen || ls->matrix != A ||
+              ls->values != A->values;
+  if (stale && ls->have_numeric && !ls->force_numeric && ls->n_factored == A->nnz &&
+      memcmp(ls->factored, A->values, (size_t)A->nnz * sizeof *A->values) == 0) {
+    /* same pattern, bitwise the same values: the factorisation still holds */
+    ++ls->st.n_numeric_skipped;
+    ls->values_gen = A->values_gen, ls->matrix = A, ls->values = A->values;
+    stale = 0;
+  }
+  if (stale) {
     ls->have_numeric = 0;
     /* A NaN from a closure would otherwise surface as a misleading "singular". */
     for (int32_t i = 0; i < A->n_rows; ++i)
@@ -118,6 +132,12 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
     ls->values_gen = A->values_gen;
     ls->matrix = A;
     ls->values = A->values;
+    if (ls->n_factored != A->nnz) {
+      free(ls->factored);
+      ls->factored = malloc((size_t)A->nnz * sizeof *ls->factored);
+      ls->n_factored = ls->factored ? A->nnz : 0;
+    }
+    if (ls->factored) memcpy(ls->factored, A->values, (size_t)A->nnz * sizeof *A->values);
   }
   return 0;
 }

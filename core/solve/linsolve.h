@@ -4,7 +4,10 @@
  *
  * The solver remembers the pattern and the values generation of the matrix it
  * factorised: the symbolic analysis runs once per pattern, the numeric
- * factorisation only when the values changed (or the caller says so). */
+ * factorisation only when the values changed (or the caller says so). A
+ * matrix re-assembled with bitwise the same values (a constant operator of a
+ * linear problem) is recognised by comparison with a copy of the factorised
+ * values and not factorised again. */
 #ifndef SLUICE_SOLVE_LINSOLVE_H
 #define SLUICE_SOLVE_LINSOLVE_H
 
@@ -18,6 +21,7 @@ typedef struct sl_linsolve_stats {
   long n_numeric;       /* numeric factorisations, refactorisations included */
   long n_refactor;      /* of those, klu_refactor reusing the old pivots */
   long n_refactor_redo; /* klu_refactor results thrown away for a fresh klu_factor (rcond degraded) */
+  long n_numeric_skipped; /* re-assembled matrices found bitwise unchanged: not refactorised */
   long n_solves;
   double t_symbolic, t_numeric, t_solve; /* wall-clock seconds */
   double rcond;                          /* last reciprocal condition estimate (backend's own, crude) */

@@ -1,0 +1,50 @@
+/* A discrete incompressible-flow problem ready for the nonlinear solver:
+ * the Taylor–Hood space, its system, the Dirichlet constraints and the flow
+ * operator's options, with the assembly callback of core/solve/newton.h.
+ *
+ *   sl_flow_problem_init(&p, th, d);
+ *   sl_constraints_fix_boundary(&p.bc, ...); ...   (velocity values)
+ *   p.opts = ...;                                   (physics)
+ *   sl_flow_problem_solve(&p, u, ls, &newton_opts, &stats, d);
+ *
+ * Constrained dofs hold their prescribed values in the iterate; their rows
+ * become identity rows with a zero right-hand side, so corrections vanish
+ * there. */
+#ifndef SLUICE_MODELS_FLOW_PROBLEM_H
+#define SLUICE_MODELS_FLOW_PROBLEM_H
+
+#include "core/assembly/flow.h"
+#include "core/assembly/system.h"
+#include "core/solve/newton.h"
+
+enum { SL_FLOW_MAX_TRACTIONS = 16 };
+
+typedef struct sl_flow_traction {
+  const char *boundary; /* borrowed */
+  sl_qp_fn fn;
+  void *user;
+} sl_flow_traction;
+
+typedef struct sl_flow_problem {
+  const sl_th_space *th; /* not owned */
+  sl_system sys;
+  sl_constraints bc;
+  sl_flow_opts opts;
+  int n_tractions; /* prescribed tractions (sl_assemble_flow_traction) */
+  sl_flow_traction traction[SL_FLOW_MAX_TRACTIONS];
+  int32_t n_fixed; /* the constrained dofs, collected at solve time */
+  int32_t *fixed;
+} sl_flow_problem;
+
+int sl_flow_problem_init(sl_flow_problem *p, const sl_th_space *th, sl_diag *d);
+void sl_flow_problem_free(sl_flow_problem *p);
+
+/* The sl_nl_assemble_fn of the problem (user = the problem). */
+int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_csr *A, double *b, sl_diag *d);
+
+/* Imposes the constraint values on u, then solves with Newton/Picard. The
+ * correction test runs over the velocity dofs. */
+int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const sl_newton_opts *o,
+                          sl_newton_stats *st, sl_diag *d);
+
+#endif

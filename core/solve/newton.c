@@ -1,0 +1,150 @@
+/* Newton with line search and Picard fallback (see newton.h). */
+#include "core/solve/newton.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static double wall(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static double norm2(const double *x, int32_t n) {
+  double s = 0.0;
+  for (int32_t i = 0; i < n; ++i) s += x[i] * x[i];
+  return sqrt(s);
+}
+
+static double norm_inf(const double *x, int32_t n) {
+  double s = 0.0;
+  for (int32_t i = 0; i < n; ++i) s = fmax(s, fabs(x[i]));
+  return s;
+}
+
+typedef struct nl_ctx {
+  sl_csr *A;
+  double *b;
+  int32_t n;
+  sl_nl_assemble_fn fn;
+  void *user;
+  sl_newton_stats *st;
+} nl_ctx;
+
+static int assemble(nl_ctx *c, const double *u, sl_nl_mode mode, sl_diag *d) {
+  double t0 = wall();
+  if (mode != SL_NL_RESIDUAL) sl_csr_zero(c->A);
+  memset(c->b, 0, (size_t)c->n * sizeof *c->b);
+  int rc = c->fn(c->user, u, mode, c->A, c->b, d);
+  c->st->t_assembly += wall() - t0;
+  if (mode == SL_NL_RESIDUAL) ++c->st->residuals;
+  else ++c->st->assemblies;
+  if (rc) return rc;
+  for (int32_t i = 0; i < c->n; ++i)
+    if (!isfinite(c->b[i]))
+      return sl_diag_set(d, SL_EFAILED, "nonlinear solve: the residual is not finite (entry %d)", (int)i);
+  return 0;
+}
+
+int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_fn fn, void *user, sl_linsolve *ls,
+                    const sl_newton_opts *opts, sl_newton_stats *st, sl_diag *d) {
+  sl_newton_opts o = *opts;
+  if (!(o.rtol > 0)) o.rtol = 1e-8;
+  if (!(o.scale > 0)) o.scale = 1e-12;
+  if (o.max_iterations <= 0) o.max_iterations = 30;
+  if (o.picard_fallback <= 0) o.picard_fallback = 5;
+  if (!(o.min_step > 0)) o.min_step = 1.0 / 64.0;
+  int32_t n_check = o.n_check > 0 && o.n_check <= n ? o.n_check : n;
+  memset(st, 0, sizeof *st);
+  nl_ctx c = {A, b, n, fn, user, st};
+
+  double *du = malloc((size_t)n * sizeof *du), *trial = malloc((size_t)n * sizeof *trial);
+  if (!du || !trial) {
+    free(du), free(trial);
+    return sl_diag_set(d, SL_EFAILED, "nonlinear solve: out of memory for %d unknowns", (int)n);
+  }
+  int picard_left = o.picard_only ? o.max_iterations : o.picard_first;
+  sl_nl_mode mode = picard_left > 0 ? SL_NL_PICARD : SL_NL_NEWTON;
+  int rc = assemble(&c, u, mode, d);
+  double res = rc ? NAN : norm2(b, n);
+  st->residual0 = st->residual = res;
+  int converged = 0;
+  while (!rc && !converged) {
+    if (o.atol > 0 && res <= o.atol) {
+      converged = 1;
+      break;
+    }
+    if (st->iterations == o.max_iterations) break;
+    if ((rc = sl_linsolve_solve(ls, A, b, du, d))) break;
+    ++st->iterations;
+    if (mode == SL_NL_PICARD) ++st->picard_iterations;
+    st->correction = norm_inf(du, n_check) / fmax(norm_inf(u, n_check), o.scale);
+    if (st->iterations <= SL_NEWTON_HISTORY) st->history[st->iterations - 1] = st->correction;
+    if (o.linear || st->correction <= o.rtol) {
+      /* Linear, or a correction at the tolerance: take it and stop (a line
+       * search at round-off level would only see noise). */
+      for (int32_t i = 0; i < n; ++i) u[i] += du[i];
+      if (o.linear && !(rc = assemble(&c, u, SL_NL_RESIDUAL, d))) st->residual = norm2(b, n);
+      converged = !rc;
+      break;
+    }
+    /* Line search: the full step first, assembled completely so that an
+     * accepted full step needs no second assembly. */
+    double lambda = 1.0, trial_res = INFINITY;
+    sl_nl_mode next = mode;
+    if (mode == SL_NL_PICARD && --picard_left <= 0 && !o.picard_only) next = SL_NL_NEWTON;
+    int accepted = 0, full = 1;
+    for (;;) {
+      for (int32_t i = 0; i < n; ++i) trial[i] = u[i] + lambda * du[i];
+      if ((rc = assemble(&c, trial, full ? next : SL_NL_RESIDUAL, d))) {
+        /* A closure outside its range at the trial point: shorten the step. */
+        if (rc != SL_EFAILED || lambda * 0.5 < o.min_step) break;
+        rc = 0;
+        trial_res = INFINITY;
+      } else {
+        trial_res = norm2(b, n);
+      }
+      /* A Picard step is a fixed-point step: accept it unless it blows up. */
+      if (trial_res <= (1.0 - 1e-4 * lambda) * res || (mode == SL_NL_PICARD && trial_res <= 10.0 * res)) {
+        accepted = 1;
+        break;
+      }
+      if (lambda * 0.5 < o.min_step) break;
+      lambda *= 0.5, full = 0;
+      ++st->backtracks;
+    }
+    if (rc) break;
+    if (!accepted) {
+      if (mode == SL_NL_NEWTON && !o.picard_only) {
+        /* No decrease along the Newton direction: fall back to Picard at u. */
+        mode = SL_NL_PICARD, picard_left = o.picard_fallback;
+        rc = assemble(&c, u, mode, d);
+        continue;
+      }
+      rc = sl_diag_set(d, SL_EFAILED,
+                       "nonlinear solve: no decrease of the residual along the %s step (residual %.3g, started at "
+                       "%.3g, %d iterations)",
+                       mode == SL_NL_PICARD ? "Picard" : "Newton", res, st->residual0, st->iterations);
+      break;
+    }
+    memcpy(u, trial, (size_t)n * sizeof *u);
+    if (getenv("SLUICE_NEWTON_TRACE"))
+      fprintf(stderr, "  %s %2d: step %.3g, correction %.3e, residual %.3e -> %.3e\n",
+              mode == SL_NL_PICARD ? "picard" : "newton", st->iterations, lambda, st->correction, res, trial_res);
+    res = trial_res;
+    st->residual = res;
+    if (!full) rc = assemble(&c, u, next, d); /* the matrix at the accepted point */
+    mode = next;
+  }
+  free(du), free(trial);
+  if (rc) return rc;
+  if (!converged)
+    return sl_diag_set(d, SL_EFAILED,
+                       "nonlinear solve: not converged in %d iterations (relative correction %.3g > %.3g, residual "
+                       "%.3g from %.3g)",
+                       st->iterations, st->correction, o.rtol, res, st->residual0);
+  return 0;
+}

@@ -1,0 +1,62 @@
+/* Newton's method with a backtracking line search and a Picard fallback,
+ * over a problem given by one assembly callback.
+ *
+ * The callback assembles, at the iterate u, the right-hand side b = -R(u)
+ * and (unless asked for the residual only) the matrix of the requested
+ * linearisation, both with the constrained dofs already eliminated: the
+ * iterate satisfies the Dirichlet values, so a constrained row holds the
+ * identity and b = 0 there. The correction then solves A du = b.
+ *
+ * The iteration converges when the correction is small,
+ *   max |du_i| <= rtol * max(max |u_i|, scale)   over i < n_check
+ * (that last correction is applied), or the residual is, |b|_2 <= atol. Each trial step is accepted when the
+ * residual norm falls (Armijo, sufficient decrease 1e-4 of the predicted
+ * one); otherwise the step is halved, down to min_step. A Newton step that
+ * finds no decrease switches to Picard iterations (robust, linearly
+ * convergent) for picard_fallback iterations, then back to Newton. */
+#ifndef SLUICE_SOLVE_NEWTON_H
+#define SLUICE_SOLVE_NEWTON_H
+
+#include "core/solve/linsolve.h"
+#include "core/solve/sparse.h"
+#include "core/util/diag.h"
+
+typedef enum sl_nl_mode { SL_NL_RESIDUAL = 0, SL_NL_NEWTON, SL_NL_PICARD } sl_nl_mode;
+
+/* Assemble at u. A and b are zeroed before the call. */
+typedef int (*sl_nl_assemble_fn)(void *user, const double *u, sl_nl_mode mode, sl_csr *A, double *b, sl_diag *d);
+
+typedef struct sl_newton_opts {
+  double rtol;          /* on the correction; default 1e-8 */
+  double atol;          /* on |b|_2; default 0 (unused) */
+  double scale;         /* floor of the solution scale in the correction test; default 1e-12 */
+  int n_check;          /* entries entering the correction test; 0: all */
+  int max_iterations;   /* default 30 */
+  int picard_first;     /* Picard iterations before Newton (a far initial guess) */
+  int picard_fallback;  /* default 5 */
+  int picard_only;      /* never use Newton */
+  int linear;           /* the problem is linear: one solve, then the residual is reported */
+  double min_step;      /* smallest line-search factor; default 1/64 */
+} sl_newton_opts;
+
+enum { SL_NEWTON_HISTORY = 32 };
+
+typedef struct sl_newton_stats {
+  int iterations;        /* linear solves */
+  int picard_iterations; /* of those, Picard */
+  int assemblies;        /* full (matrix) assemblies */
+  int residuals;         /* residual-only assemblies (line search) */
+  int backtracks;
+  double residual0, residual; /* |b|_2 at the start and at the end */
+  double correction;          /* the last relative correction */
+  double history[SL_NEWTON_HISTORY]; /* relative correction of each iteration */
+  double t_assembly;          /* wall seconds in the callback */
+} sl_newton_stats;
+
+/* Solves R(u) = 0 starting from u (overwritten with the solution). Returns 0,
+ * SL_EFAILED when it does not converge (u then holds the last iterate and
+ * the message says how far it got) or a code from the callback or solver. */
+int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_fn assemble, void *user,
+                    sl_linsolve *ls, const sl_newton_opts *opts, sl_newton_stats *st, sl_diag *d);
+
+#endif

@@ -1,0 +1,73 @@
+/* Variable-step BDF1/BDF2 for du/dt = F(u) (an index-1 DAE in the flow
+ * solver: the pressure has no time derivative), with a predictor, a local
+ * error estimate and step-size control.
+ *
+ * Step h from t_n with previous step hp (omega = h / hp):
+ *   BDF1: (u_{n+1} - u_n) / h
+ *   BDF2: (a0 u_{n+1} + a1 u_n + a2 u_{n-1}) / h,
+ *         a0 = (1 + 2 omega)/(1 + omega), a1 = -(1 + omega), a2 = omega^2/(1 + omega)
+ * (Hairer, Norsett & Wanner, Solving ODEs I, 2nd ed. 1993, section III.5,
+ * variable-step BDF), written as du/dt ~ mass_coef u_{n+1} + history.
+ *
+ * Error estimate (Milne's device): the predictor is the extrapolation of the
+ * same order through the past solutions, P = u_{n+1} + C_p u^(p+1) with the
+ * sign convention below, and the corrector's local error is
+ * C_c u^(p+1); for a smooth solution both are known multiples of the same
+ * derivative, so
+ *   local error ~ C_c / (C_c + C_p) (u_{n+1} - P).
+ * Taylor expansion about t_{n+1} gives (derived in bdf.c)
+ *   BDF1: C_c = h^2/2,  C_p = h (h + hp)/2                          (u'')
+ *   BDF2: C_c = h^3 (1+omega)^2 / (6 omega (1 + 2 omega)),
+ *         C_p = h (h + hp)(h + hp + hpp)/6                          (u''')
+ * (constant steps: 1/3 and 2/11 of the difference). The first step has no
+ * past to extrapolate from and is taken unestimated; the second is BDF1
+ * with the linear predictor; BDF2 starts at the third, once the quadratic
+ * predictor has three past values. */
+#ifndef SLUICE_TIME_BDF_H
+#define SLUICE_TIME_BDF_H
+
+#include <stdint.h>
+
+#include "core/util/diag.h"
+
+typedef struct sl_bdf {
+  int order_max;   /* 1 or 2 */
+  int32_t n;       /* unknowns */
+  int n_past;      /* past solutions held (1..3) */
+  double t;        /* time of u_n */
+  double h_past[2]; /* the last two accepted steps: h_{n-1}, h_{n-2} */
+  double *past[3]; /* u_n, u_{n-1}, u_{n-2} */
+} sl_bdf;
+
+/* The history starts at u0 at time t0. */
+int sl_bdf_init(sl_bdf *b, int order_max, int32_t n, const double *u0, double t0, sl_diag *d);
+void sl_bdf_free(sl_bdf *b);
+
+typedef struct sl_bdf_step {
+  int order;        /* of the scheme used for this step */
+  int estimated;    /* whether an error estimate is available */
+  double h;
+  double mass_coef; /* du/dt ~ mass_coef u_{n+1} + history */
+  double err_factor; /* C_c / (C_c + C_p) */
+} sl_bdf_step;
+
+/* Prepares a step of size h: the coefficients, history[n] and the
+ * predictor[n] (the initial guess of the nonlinear solve). */
+void sl_bdf_prepare(const sl_bdf *b, double h, sl_bdf_step *s, double *history, double *predictor);
+
+/* The scaled error of the step: max over i < n_err of
+ *   err_factor |u_i - P_i| / (rtol max(|u|_inf, scale))
+ * where the max norm runs over the same entries; accept when <= 1. 0 when
+ * the step has no estimate. */
+double sl_bdf_error(const sl_bdf_step *s, const double *u, const double *predictor, int32_t n_err, double rtol,
+                    double scale);
+
+/* The next step after a step of size h with scaled error err (accepted or
+ * not): h * clamp(0.9 err^(-1/(order+1)), shrink_min, grow_max), further
+ * limited for BDF2 to omega <= 2 (zero-stable below 1 + sqrt 2). */
+double sl_bdf_next_h(const sl_bdf_step *s, double err);
+
+/* Accepts u as u_{n+1}: shifts the history, t += h. */
+void sl_bdf_accept(sl_bdf *b, const sl_bdf_step *s, const double *u);
+
+#endif
