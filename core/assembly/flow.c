@@ -314,6 +314,10 @@ int sl_assemble_flow(sl_system *s, const sl_th_space *th, const double *u, const
   return rc;
 }
 
+int sl_flow_check_geometry(const sl_th_space *th, const sl_flow_opts *o, sl_diag *d) {
+  return check_input(NULL, th, o, d);
+}
+
 int sl_flow_cell_diagnostics(const sl_th_space *th, const double *u, const sl_flow_opts *o, double yield_stress,
                              double *shear_rate, double *viscosity, double *yielded, sl_diag *d) {
   int rc = check_input(NULL, th, o, d);

@@ -63,6 +63,10 @@ typedef struct sl_flow_opts {
 int sl_assemble_flow(sl_system *s, const sl_th_space *th, const double *u, const sl_flow_opts *o,
                      sl_flow_linearisation lin, sl_diag *d);
 
+/* Checks that the options fit the space (components, geometry, rotation):
+ * the messages a scene set-up should give before assembling. */
+int sl_flow_check_geometry(const sl_th_space *th, const sl_flow_opts *o, sl_diag *d);
+
 /* Natural (traction) boundary condition: b += int_G t.v ds (r ds
  * axisymmetric) over the named boundary, t = (sigma - p I) n the traction
  * the outside exerts, n_comp values per point from the callback, which

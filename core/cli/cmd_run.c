@@ -1,6 +1,7 @@
-/* sluice run SCENE.ini: parse and validate a scene, resolve its closures.
- * The finite-element engine that would then simulate it is not part of this
- * build yet; `run` says so instead of pretending. */
+/* sluice run SCENE.ini: parse and validate a scene, resolve its closures,
+ * and run it (model navier_stokes; the mixture and two-fluid models are not
+ * built yet and `run` says so). */
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,26 +9,76 @@
 #include "core/cli/cli.h"
 #include "core/config/ini.h"
 #include "core/config/scene_schema.h"
+#include "core/cli/progress.h"
+#include "core/models/navier_stokes.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
 
 static const char run_usage[] =
     "usage: sluice run SCENE.ini [--set section.key=value]... [--print-config] [-o OUT.h5]\n"
+    "                            [--restart FILE.h5] [--check]\n"
     "Reads a scene, applies the --set overrides, checks every section and key\n"
-    "(unknown ones are errors with a suggestion), and loads and validates each\n"
-    "[closure.<kind>] against the closure's own schema.\n"
-    "--print-config prints the resolved configuration (includes flattened,\n"
-    "overrides applied) and stops.\n"
-    "Note: the simulation engine is not built yet. `run` validates the scene and\n"
-    "its closures and stops there: nothing is simulated and no output is written.";
+    "(unknown ones are errors with a suggestion), loads and validates each\n"
+    "[closure.<kind>] against the closure's own schema, and runs it.\n"
+    "  --print-config   print the resolved configuration (includes flattened,\n"
+    "                   overrides applied) and stop\n"
+    "  --check          validate the scene and its closures, and stop\n"
+    "  -o OUT.h5        output file (default: [output] file, else SCENE.h5)\n"
+    "  --restart F.h5   continue from the last checkpoint in F.h5\n"
+    "A progress line is drawn when stderr is a terminal (SLUICE_PROGRESS=0/1\n"
+    "forces it off/on); the run ends with a one-line summary. Ctrl-C stops after\n"
+    "the current step and saves it. Exit status: 0 done, 1 the run failed (the\n"
+    "last good state is saved), 2 bad input.\n"
+    "Models: navier_stokes runs; mixture and two_fluid are validated only (their\n"
+    "engines are not built yet).";
+
+static volatile sig_atomic_t interrupted;
+static void on_sigint(int sig) {
+  (void)sig;
+  interrupted = 1;
+}
+
+static void monitor(void *user, double t, double dt, long step, int nl) {
+  sl_progress_update(user, t, dt, step, nl);
+}
+
+static int simulate(sl_ini *ini, const sl_registry *reg, const char *scene, const char *out_file, const char *restart,
+                    sl_diag *d) {
+  double t0, t1;
+  int rc = sl_ns_time_span(ini, &t0, &t1, d);
+  if (rc) return rc;
+  sl_progress prog;
+  sl_progress_begin(&prog, stderr, t0, t1);
+  sl_ns_run_opts o = {.scene_path = scene, .output = out_file, .restart = restart, .sluice_version = SLUICE_VERSION,
+                      .monitor = monitor, .monitor_user = &prog, .interrupt = &interrupted};
+  sl_ns_result res;
+  double w0 = sl_wall_seconds(), c0 = sl_cpu_seconds();
+  void (*old)(int) = signal(SIGINT, on_sigint);
+  rc = sl_ns_run(ini, reg, &o, &res, d);
+  signal(SIGINT, old);
+  sl_progress_end(&prog);
+  sl_run_summary s = {.steps = res.steps, .rejected_steps = res.rejected_steps,
+                      .nonlinear_iterations = res.nonlinear_iterations,
+                      .nonlinear_name = res.used_picard ? "Newton/Picard" : "Newton",
+                      .wall_seconds = sl_wall_seconds() - w0, .cpu_seconds = sl_cpu_seconds() - c0,
+                      .assembly = res.assembly, .factorisation = res.factorisation, .solve = res.solve,
+                      .output = res.output, .step_limit = res.step_limit};
+  if (rc != SL_EBADINPUT) {
+    char line[512];
+    sl_run_summary_format(&s, line, sizeof line);
+    fprintf(stderr, "%s\n", line);
+    if (res.output_path[0]) fprintf(stderr, "sluice: output %s (%s)\n", res.output_path, res.linear_summary);
+  }
+  return rc;
+}
 
 int sl_cmd_run(int argc, char **argv) {
   if (sl_cli_wants_help(argc, argv)) {
     puts(run_usage);
     return 0;
   }
-  const char *scene = NULL, *out_file = NULL;
-  int print_config = 0;
+  const char *scene = NULL, *out_file = NULL, *restart = NULL;
+  int print_config = 0, check_only = 0;
   enum { MAX_SETS = 256 };
   const char *sets[MAX_SETS];
   int n_sets = 0;
@@ -42,6 +93,10 @@ int sl_cmd_run(int argc, char **argv) {
       print_config = 1;
     } else if (strcmp(argv[i], "-o") == 0 && i + 1 < argc) {
       out_file = argv[++i];
+    } else if (strcmp(argv[i], "--restart") == 0 && i + 1 < argc) {
+      restart = argv[++i];
+    } else if (strcmp(argv[i], "--check") == 0) {
+      check_only = 1;
     } else if (argv[i][0] == '-') {
       return sl_cli_error(SL_EBADINPUT, "run: unknown option or missing value '%s' (sluice run --help)", argv[i]);
     } else if (!scene) {
@@ -51,7 +106,6 @@ int sl_cmd_run(int argc, char **argv) {
     }
   }
   if (!scene) return sl_cli_error(SL_EBADINPUT, "run: which scene?\n%s", run_usage);
-  (void)out_file;
 
   sl_diag d;
   sl_ini *ini = NULL;
@@ -80,14 +134,24 @@ int sl_cmd_run(int argc, char **argv) {
   }
   if (print_config) {
     if (sl_ini_write(ini, stdout)) rc = sl_diag_set(&d, SL_EFAILED, "cannot write the configuration");
-  } else {
+    goto fail;
+  }
+  int model = 0;
+  if ((rc = sl_ini_get_choice(ini, "scene", "model", 1, 0, "navier_stokes|mixture|two_fluid", &model, &d))) goto fail;
+  if (check_only || model != 0) {
     printf("%s: scene valid; %d closure%s resolved\n", scene, n_closures, n_closures == 1 ? "" : "s");
     for (int i = 0; i < n_closures; ++i) {
       const sl_closure_desc *c = closures[i]->desc;
       printf("  %-18s %-24s %s (%s)\n", sl_kind_name(c->kind), c->name, c->version, closures[i]->library->path);
     }
-    fprintf(stderr, "sluice: the simulation engine is not built yet: nothing was simulated, no output written\n");
+    if (!check_only)
+      fprintf(stderr, "sluice: the %s model is not built yet: nothing was simulated, no output written\n",
+              model == 1 ? "mixture" : "two_fluid");
+    goto fail;
   }
+  for (int i = 0; i < n_closures; ++i) sl_closure_destroy(closures[i]);
+  n_closures = 0;
+  rc = simulate(ini, reg, scene, out_file, restart, &d);
 fail:
   for (int i = 0; i < n_closures; ++i) sl_closure_destroy(closures[i]);
   sl_registry_destroy(reg);

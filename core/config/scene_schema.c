@@ -25,11 +25,44 @@ static const sl_key_spec time_keys[] = {
     {"scheme", SL_KEY_CHOICE, 0, 0, 0, "bdf1|bdf2|steady", "time integration"},
     {"tolerance", SL_KEY_REAL, 0, 1e-14, 1.0, NULL, "local error tolerance of adaptive steps"},
     {"adaptive", SL_KEY_BOOL, 0, 0, 0, NULL, "adapt the step to the error estimate"},
+    {"dt_min", SL_KEY_REAL, 0, 0.0, 1e9, NULL, "smallest step before the run gives up, s"},
+    {"dt_max", SL_KEY_REAL, 0, 1e-15, 1e12, NULL, "largest step, s"},
+    {"max_steps", SL_KEY_INT, 0, 1, 1e8, NULL, "stop (with a checkpoint) after this many steps"},
 };
 static const sl_key_spec solver_keys[] = {
     {"linear", SL_KEY_CHOICE, 0, 0, 0, "umfpack|klu|cholmod", "sparse direct solver"},
     {"nonlinear_tolerance", SL_KEY_REAL, 0, 1e-16, 1.0, NULL, "relative tolerance of Newton/Picard"},
     {"max_iterations", SL_KEY_INT, 0, 1, 1000, NULL, "nonlinear iterations per step"},
+    {"nonlinear", SL_KEY_CHOICE, 0, 0, 0, "newton|picard", "Newton (line search, Picard fallback) or Picard only"},
+    {"picard_first", SL_KEY_INT, 0, 0, 1000, NULL, "Picard iterations before Newton (far initial guesses)"},
+    {"continuation", SL_KEY_STRING, 0, 0, 0, NULL, "steady: approach section.key's value in stages"},
+    {"continuation_from", SL_KEY_REAL, 0, -1e300, 1e300, NULL, "first value of the continuation parameter"},
+    {"continuation_steps", SL_KEY_INT, 0, 1, 1000, NULL, "continuation stages (geometric when both ends > 0)"},
+};
+static const sl_key_spec flow_keys[] = {
+    {"third_component", SL_KEY_BOOL, 0, 0, 0, NULL, "solve the out-of-plane velocity (planar, line) or the swirl (axisymmetric)"},
+    {"convection", SL_KEY_BOOL, 0, 0, 0, NULL, "include rho (u.grad)u (false: Stokes flow)"},
+    {"gravity", SL_KEY_LIST, 0, 0, 0, NULL, "gravitational acceleration per component, m s^-2"},
+    {"body_force", SL_KEY_LIST, 0, 0, 0, NULL, "body force per unit volume per component, N m^-3 (e.g. -dp/dz)"},
+    {"rotation", SL_KEY_REAL, 0, -1e6, 1e6, NULL, "angular velocity of the frame, rad s^-1"},
+    {"rotation_centre", SL_KEY_LIST, 0, 0, 0, NULL, "planar: the rotation axis x, y"},
+};
+static const sl_key_spec mesh_keys[] = {
+    {"generator", SL_KEY_CHOICE, 0, 0, 0, "interval|rectangle|annulus|inclined_box|gmsh", "how the mesh is made"},
+    {"x", SL_KEY_LIST, 0, 0, 0, NULL, "x0, x1 (interval, rectangle)"},
+    {"y", SL_KEY_LIST, 0, 0, 0, NULL, "y0, y1 (rectangle)"},
+    {"r", SL_KEY_LIST, 0, 0, 0, NULL, "r0, r1 (annulus)"},
+    {"z", SL_KEY_LIST, 0, 0, 0, NULL, "z0, z1 (annulus)"},
+    {"origin", SL_KEY_LIST, 0, 0, 0, NULL, "lower-left corner (inclined_box)"},
+    {"width", SL_KEY_REAL, 0, 1e-12, 1e12, NULL, "inclined_box width, m"},
+    {"height", SL_KEY_REAL, 0, 1e-12, 1e12, NULL, "inclined_box height, m"},
+    {"angle", SL_KEY_REAL, 0, -7.0, 7.0, NULL, "inclined_box rotation, rad"},
+    {"cells", SL_KEY_LIST, 0, 0, 0, NULL, "cells per direction: n or nx, ny"},
+    {"cell_type", SL_KEY_CHOICE, 0, 0, 0, "quad|tri", "quadrilaterals or triangles"},
+    {"diagonal", SL_KEY_CHOICE, 0, 0, 0, "right|left|union_jack", "how quads are split into triangles"},
+    {"grading_x", SL_KEY_STRING, 0, 0, 0, NULL, "geometric:RATIO or symmetric:RATIO along x (r)"},
+    {"grading_y", SL_KEY_STRING, 0, 0, 0, NULL, "geometric:RATIO or symmetric:RATIO along y (z)"},
+    {"file", SL_KEY_STRING, 0, 0, 0, NULL, "Gmsh file (2.2 or 4.1), relative to the scene"},
 };
 static const sl_key_spec output_keys[] = {
     {"file", SL_KEY_STRING, 0, 0, 0, NULL, "HDF5 output file"},
@@ -44,8 +77,7 @@ static const sl_key_spec plugins_keys[] = {
 static const sl_section_spec sections[] = {
     SPEC("scene", 0, scene_keys),   SPEC("fluid", 0, fluid_keys),   SPEC("solid", 0, solid_keys),
     SPEC("time", 0, time_keys),     SPEC("solver", 0, solver_keys), SPEC("output", 0, output_keys),
-    SPEC("plugins", 0, plugins_keys),
-    {"mesh", 1, NULL, 0},           {"initial", 1, NULL, 0},        {"boundary.", 1, NULL, 0},
+    SPEC("plugins", 0, plugins_keys), SPEC("flow", 0, flow_keys), SPEC("mesh", 0, mesh_keys),           {"initial", 1, NULL, 0},        {"boundary.", 1, NULL, 0},
     {"closure.", 1, NULL, 0}, /* checked against each closure's own schema */
 };
 

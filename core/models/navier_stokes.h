@@ -1,0 +1,60 @@
+/* The navier_stokes model: a scene's incompressible, generalized-Newtonian
+ * flow, from the INI file to the output file.
+ *
+ * Sections read (README "Scenes" has the user's view):
+ *   [scene]  geometry = line | planar | axisymmetric
+ *   [mesh]   see core/models/scene_mesh.h
+ *   [fluid]  density, viscosity (the Newtonian viscosity when no
+ *            [closure.viscosity] is given)
+ *   [closure.viscosity]  a generalized-Newtonian law of the shear rate
+ *   [flow]   third_component, convection, gravity, body_force, rotation,
+ *            rotation_centre
+ *   [boundary.NAME] type = wall | velocity | slip | axis | open | pressure
+ *            | traction; velocity = expressions of x, y, t; pressure; traction
+ *   [initial] velocity = expressions of x, y
+ *   [time]   scheme = steady | bdf1 | bdf2, end, dt, tolerance, adaptive,
+ *            dt_min, dt_max, max_steps
+ *   [solver] linear, nonlinear, nonlinear_tolerance, max_iterations,
+ *            picard_first, continuation, continuation_from, continuation_steps
+ *   [output] file, every, fields
+ */
+#ifndef SLUICE_MODELS_NAVIER_STOKES_H
+#define SLUICE_MODELS_NAVIER_STOKES_H
+
+#include <signal.h>
+
+#include "core/config/ini.h"
+#include "core/plugin/registry.h"
+#include "core/util/diag.h"
+
+typedef struct sl_ns_run_opts {
+  const char *scene_path;     /* for the default output name */
+  const char *output;         /* overrides [output] file; NULL: keep */
+  const char *restart;        /* continue from this file's last checkpoint; NULL: start */
+  const char *sluice_version; /* for provenance */
+  /* Called after every accepted step (progress display); may be NULL. */
+  void (*monitor)(void *user, double t, double dt, long step, int nonlinear_iterations);
+  void *monitor_user;
+  volatile sig_atomic_t *interrupt; /* set asynchronously (Ctrl-C): stop after the step, save */
+} sl_ns_run_opts;
+
+typedef struct sl_ns_result {
+  long steps, rejected_steps, nonlinear_iterations;
+  int used_picard;
+  double t_start, t_end, t_reached;
+  /* wall seconds */
+  double assembly, factorisation, solve, output;
+  const char *step_limit;   /* what limited the step most often (static string) or NULL */
+  char output_path[4096];
+  char linear_summary[256];
+} sl_ns_result;
+
+/* The simulated time span the run will cover (for the progress display). */
+int sl_ns_time_span(const sl_ini *ini, double *t0, double *t1, sl_diag *d);
+
+/* Runs the scene. Returns 0, SL_EBADINPUT (bad scene: nothing written) or
+ * SL_EFAILED (the run failed: the last good state is in the output file and
+ * the message says where and why). */
+int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d);
+
+#endif
