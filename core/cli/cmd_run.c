@@ -69,6 +69,8 @@ static int simulate(sl_ini *ini, const sl_registry *reg, const char *scene, cons
     fprintf(stderr, "%s\n", line);
     if (res.output_path[0]) fprintf(stderr, "sluice: output %s (%s)\n", res.output_path, res.linear_summary);
   }
+  if (rc == SL_EFAILED && res.output_path[0])
+    sl_diag_prefix(d, rc, "run failed at t = %g; last state saved in %s", res.t_reached, res.output_path);
   return rc;
 }
 
