@@ -292,54 +292,81 @@ static int batch_pass(flow_work *w, const sl_th_space *th, const double *u, cons
   return 0;
 }
 
-int sl_assemble_flow(sl_system *s, const sl_th_space *th, const double *u, const sl_flow_opts *o,
-                     sl_flow_linearisation lin, sl_diag *d) {
+/* What to do with each batch once the iterate and the coefficients are known. */
+typedef int (*batch_fn)(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, int first, int n, void *user,
+                        sl_diag *d);
+
+/* Runs fn over the mesh, batch by batch (see batch_pass). */
+static int for_each_batch(const sl_th_space *th, const double *u, const sl_flow_opts *o, const sl_system *s,
+                          batch_fn fn, void *user, sl_diag *d) {
   int rc = check_input(s, th, o, d);
   if (rc) return rc;
   flow_work *w = NULL;
   if ((rc = work_create(&w, th, o, d))) return rc;
-  int ncell = th->mesh->n_cells, nq = w->fv->quad.n;
+  int ncell = th->mesh->n_cells;
   for (int first = 0; first < ncell && !rc; first += SL_ASSEMBLY_BATCH_CELLS) {
     int n = ncell - first < SL_ASSEMBLY_BATCH_CELLS ? ncell - first : SL_ASSEMBLY_BATCH_CELLS;
-    if ((rc = batch_pass(w, th, u, o, first, n, d))) break;
-    for (int i = 0; i < n && !rc; ++i) {
-      size_t at = (size_t)i * nq;
-      if ((rc = sl_fe_values_reinit(w->fv, first + i, d))) break;
-      element(w, th, o, lin, w->state + at, w->batch.shear_rate + at, w->rho + at, w->mu + 2 * at,
-              w->force + at * th->n_comp);
-      rc = sl_system_add_element(s, first + i, lin != SL_FLOW_RESIDUAL ? w->Ke : NULL, w->be, d);
-    }
+    if (!(rc = batch_pass(w, th, u, o, first, n, d))) rc = fn(w, th, o, first, n, user, d);
   }
   work_free(w);
   return rc;
+}
+
+typedef struct assemble_ctx {
+  sl_system *s;
+  sl_flow_linearisation lin;
+} assemble_ctx;
+
+static int assemble_batch(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, int first, int n, void *user,
+                          sl_diag *d) {
+  const assemble_ctx *a = user;
+  int nq = w->fv->quad.n, rc = 0;
+  for (int i = 0; i < n && !rc; ++i) {
+    size_t at = (size_t)i * nq;
+    if ((rc = sl_fe_values_reinit(w->fv, first + i, d))) break;
+    element(w, th, o, a->lin, w->state + at, w->batch.shear_rate + at, w->rho + at, w->mu + 2 * at,
+            w->force + at * th->n_comp);
+    rc = sl_system_add_element(a->s, first + i, a->lin != SL_FLOW_RESIDUAL ? w->Ke : NULL, w->be, d);
+  }
+  return rc;
+}
+
+int sl_assemble_flow(sl_system *s, const sl_th_space *th, const double *u, const sl_flow_opts *o,
+                     sl_flow_linearisation lin, sl_diag *d) {
+  assemble_ctx a = {s, lin};
+  return for_each_batch(th, u, o, s, assemble_batch, &a, d);
 }
 
 int sl_flow_check_geometry(const sl_th_space *th, const sl_flow_opts *o, sl_diag *d) {
   return check_input(NULL, th, o, d);
 }
 
+typedef struct diag_ctx {
+  double yield_stress;
+  double *shear_rate, *viscosity, *yielded;
+} diag_ctx;
+
+static int diagnostics_batch(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, int first, int n,
+                             void *user, sl_diag *d) {
+  const diag_ctx *c = user;
+  int nq = w->fv->quad.n;
+  (void)th, (void)o, (void)d;
+  for (int i = 0; i < n; ++i) {
+    double sg = 0.0, sm = 0.0, sy = 0.0;
+    for (int q = 0; q < nq; ++q) {
+      size_t k = (size_t)i * nq + q;
+      double g = w->batch.shear_rate[k], mu = w->mu[2 * k];
+      sg += g, sm += mu, sy += mu * g > c->yield_stress ? 1.0 : 0.0;
+    }
+    if (c->shear_rate) c->shear_rate[first + i] = sg / nq;
+    if (c->viscosity) c->viscosity[first + i] = sm / nq;
+    if (c->yielded) c->yielded[first + i] = sy / nq;
+  }
+  return 0;
+}
+
 int sl_flow_cell_diagnostics(const sl_th_space *th, const double *u, const sl_flow_opts *o, double yield_stress,
                              double *shear_rate, double *viscosity, double *yielded, sl_diag *d) {
-  int rc = check_input(NULL, th, o, d);
-  if (rc) return rc;
-  flow_work *w = NULL;
-  if ((rc = work_create(&w, th, o, d))) return rc;
-  int ncell = th->mesh->n_cells, nq = w->fv->quad.n;
-  for (int first = 0; first < ncell && !rc; first += SL_ASSEMBLY_BATCH_CELLS) {
-    int n = ncell - first < SL_ASSEMBLY_BATCH_CELLS ? ncell - first : SL_ASSEMBLY_BATCH_CELLS;
-    if ((rc = batch_pass(w, th, u, o, first, n, d))) break;
-    for (int i = 0; i < n; ++i) {
-      double sg = 0.0, sm = 0.0, sy = 0.0;
-      for (int q = 0; q < nq; ++q) {
-        size_t k = (size_t)i * nq + q;
-        double g = w->batch.shear_rate[k], mu = w->mu[2 * k];
-        sg += g, sm += mu, sy += mu * g > yield_stress ? 1.0 : 0.0;
-      }
-      if (shear_rate) shear_rate[first + i] = sg / nq;
-      if (viscosity) viscosity[first + i] = sm / nq;
-      if (yielded) yielded[first + i] = sy / nq;
-    }
-  }
-  work_free(w);
-  return rc;
+  diag_ctx c = {yield_stress, shear_rate, viscosity, yielded};
+  return for_each_batch(th, u, o, NULL, diagnostics_batch, &c, d);
 }
