@@ -7,12 +7,19 @@
 
 #include <math.h>
 
-#include "drag/sphere_drag.h"
+#include "sphere_drag.h" /* beside this file: also found from bench/ */
 
 /* K and its derivatives with respect to phi and the slip speed. */
 typedef struct sl_drag_value {
   double K, K_phi, K_slip;
 } sl_drag_value;
+
+/* The validity ranges of the Ergun closure's inputs (ergun.c declares the
+ * same ones), written as negated ranges so that NaN inputs fail too. */
+static inline int sl_ergun_inputs_ok(double phi, double slip, double rho, double mu, double dp, double psi) {
+  return (phi >= 0.0 && phi <= 0.74) && (slip >= 0.0 && slip < HUGE_VAL) && (rho >= 1e-3 && rho <= 1e5) &&
+         (mu >= 1e-7 && mu <= 1e5) && (dp >= 1e-8 && dp <= 1.0) && (psi >= 0.01 && psi <= 1.0);
+}
 
 /* Ergun (1952) as K (Gidaspow 1994 eq 5.62; Pringle 2001 eq 3.12):
  *   K = c_visc phi^2 mu / (eps d^2) + c_iner g(phi) rho |slip| / d

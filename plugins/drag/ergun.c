@@ -54,8 +54,30 @@ static const sl_check_point checks[] = {
     {check_in_1, OUT_K, 75.0e3, 5e-4, "Pringle (2001) digest 2.1.6 table, n = 0.50: 75.0 mu/d^2"},
 };
 
-static int evaluate(const void *state, const sl_eval_args *a) {
-  const ergun_params *p = state;
+/* Names the first offending input at point q (the cold path of the loop). */
+static int refuse(const sl_eval_args *a, int32_t q) {
+  const double phi = a->in[IN_PHI][q], slip = a->in[IN_SLIP][q], rho = a->in[IN_RHO_F][q], mu = a->in[IN_MU_F][q],
+               dp = a->in[IN_D_P][q], psi = a->in[IN_SPHERICITY][q];
+  /* Written as negated ranges so that NaN inputs fail too. */
+  if (!(phi >= 0.0 && phi <= 0.74)) return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %g outside [0, 0.74]", phi);
+  if (!(slip >= 0.0 && slip < HUGE_VAL))
+    return sl_fail(a->err, SL_RECOVERABLE, q, "slip = %g is not a finite speed >= 0", slip);
+  return sl_fail(a->err, SL_RECOVERABLE, q,
+                 "fluid or particle property outside its range (rho_f %g, mu_f %g, d_p %g, sphericity %g)", rho, mu, dp,
+                 psi);
+}
+
+#if defined(__GNUC__)
+#define ERGUN_SPECIALISED static inline __attribute__((always_inline))
+#else
+#define ERGUN_SPECIALISED static inline
+#endif
+
+/* The loop, specialised below on the form and on which derivatives are asked
+ * for (constant arguments), so that none of those tests stays inside it: the
+ * loop then matches the law written inline for one case. */
+ERGUN_SPECIALISED int ergun_loop(const ergun_params *p, const sl_eval_args *a, const int pringle_form,
+                                 const int want_dphi, const int want_dslip) {
   /* The host guarantees the arrays do not alias (closure.h): say so, so the
    * compiler keeps inputs and parameters in registers across the stores. */
   const double *restrict phi_in = a->in[IN_PHI], *restrict slip_in = a->in[IN_SLIP],
@@ -64,24 +86,25 @@ static int evaluate(const void *state, const sl_eval_args *a) {
   double *restrict K = a->out[OUT_K];
   double *restrict dK_dphi = sl_dout(a, N_IN, OUT_K, IN_PHI), *restrict dK_dslip = sl_dout(a, N_IN, OUT_K, IN_SLIP);
   const double c_visc = p->viscous, c_iner = p->inertial;
-  const int gidaspow_form = p->form == 0;
-  for (int32_t q = 0; q < a->Q; ++q) {
+  const int32_t Q = a->Q;
+  for (int32_t q = 0; q < Q; ++q) {
     const double phi = phi_in[q], slip = slip_in[q], rho = rho_in[q], mu = mu_in[q], dp = dp_in[q], psi = psi_in[q];
-    /* Written as negated ranges so that NaN inputs fail too. */
-    if (!(phi >= 0.0 && phi <= 0.74)) return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %g outside [0, 0.74]", phi);
-    if (!(slip >= 0.0 && slip < HUGE_VAL))
-      return sl_fail(a->err, SL_RECOVERABLE, q, "slip = %g is not a finite speed >= 0", slip);
-    if (!(rho >= 1e-3 && rho <= 1e5) || !(mu >= 1e-7 && mu <= 1e5) || !(dp >= 1e-8 && dp <= 1.0) ||
-        !(psi >= 0.01 && psi <= 1.0))
-      return sl_fail(a->err, SL_RECOVERABLE, q,
-                     "fluid or particle property outside its range (rho_f %g, mu_f %g, d_p %g, sphericity %g)", rho, mu,
-                     dp, psi);
-    const sl_drag_value v = sl_ergun_law(phi, slip, rho, mu, psi * dp, c_visc, c_iner, !gidaspow_form);
+    if (!sl_ergun_inputs_ok(phi, slip, rho, mu, dp, psi)) return refuse(a, q);
+    const sl_drag_value v = sl_ergun_law(phi, slip, rho, mu, psi * dp, c_visc, c_iner, pringle_form);
     K[q] = v.K;
-    if (dK_dphi) dK_dphi[q] = v.K_phi;
-    if (dK_dslip) dK_dslip[q] = v.K_slip;
+    if (want_dphi) dK_dphi[q] = v.K_phi;
+    if (want_dslip) dK_dslip[q] = v.K_slip;
   }
   return SL_OK;
+}
+
+static int evaluate(const void *state, const sl_eval_args *a) {
+  const ergun_params *p = state;
+  const int pringle = p->form != 0;
+  const int dphi = sl_dout(a, N_IN, OUT_K, IN_PHI) != NULL, dslip = sl_dout(a, N_IN, OUT_K, IN_SLIP) != NULL;
+  if (dphi && dslip) return pringle ? ergun_loop(p, a, 1, 1, 1) : ergun_loop(p, a, 0, 1, 1);
+  if (!dphi && !dslip) return pringle ? ergun_loop(p, a, 1, 0, 0) : ergun_loop(p, a, 0, 0, 0);
+  return ergun_loop(p, a, pringle, dphi, dslip); /* one derivative: rare */
 }
 
 static const sl_closure_desc ergun = {
