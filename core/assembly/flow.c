@@ -198,7 +198,8 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
         if (axi && A == 2) T[0][2] = -ph / r;
         v->D = sym_part(T);
         v->div = T[0][0] + T[1][1] + T[2][2];
-        for (int B = 0; B < 3; ++B) v->Tu[B] = T[B][0] * s->u[0] + T[B][1] * s->u[1] + T[B][2] * s->u[2];
+        if (o->convection)
+          for (int B = 0; B < 3; ++B) v->Tu[B] = T[B][0] * s->u[0] + T[B][1] * s->u[1] + T[B][2] * s->u[2];
         v->phi = ph;
         v->A = A;
       }

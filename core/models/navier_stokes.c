@@ -88,7 +88,6 @@ typedef struct physics {
   double yield_stress; /* for `yielded`; 0 when the law has none */
   double *buf;         /* closure inputs/outputs for one batch */
   int cap;
-  double force[MAX_COMP]; /* rho g + body force, per unit volume (rho g added per point) */
   double gravity[MAX_COMP], body_force[MAX_COMP];
   int has_force;
 } physics;
@@ -110,7 +109,7 @@ static int viscosity_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *
     ph->buf = nb, ph->cap = need;
   }
   const double *in[16];
-  double *outs[16], *dout[64];
+  double *outs[16], *dout[16 * 16];
   double *w = ph->buf;
   for (int i = 0; i < n_in; ++i) {
     if (i == ph->in_shear) {
@@ -449,24 +448,24 @@ static int write_state(ns_run *r, double t, const double *u, sl_diag *d) {
   return rc;
 }
 
+/* The state to restart from: the BDF history (a steady run passes a
+ * history of its one solution). */
 static int write_checkpoint(ns_run *r, const sl_bdf *b, double t, double dt_next, long step, sl_diag *d) {
   double t0 = wall();
   sl_checkpoint_array arr[4];
   int na = 0;
-  int32_t n = r->th->n_dofs;
   const char *names[3] = {"u", "u_prev", "u_prev2"};
-  for (int k = 0; k < (b ? b->n_past : 1); ++k) {
+  for (int k = 0; k < b->n_past; ++k) {
     snprintf(arr[na].name, sizeof arr[na].name, "%s", names[k]);
-    arr[na].n = n, arr[na].data = b ? b->past[k] : r->work;
+    arr[na].n = b->n, arr[na].data = b->past[k];
     ++na;
   }
-  double h_past[2] = {b ? b->h_past[0] : 0.0, b ? b->h_past[1] : 0.0};
   snprintf(arr[na].name, sizeof arr[na].name, "h_past");
-  arr[na].n = 2, arr[na].data = h_past, ++na;
+  arr[na].n = 2, arr[na].data = b->h_past, ++na;
   sl_checkpoint ck = {.time = t, .dt = dt_next, .step = step, .n_arrays = na, .arrays = arr};
   ck.n_ints = 2;
   snprintf(ck.int_names[0], SL_CHECKPOINT_NAME_MAX, "n_past");
-  ck.ints[0] = b ? b->n_past : 1;
+  ck.ints[0] = b->n_past;
   snprintf(ck.int_names[1], SL_CHECKPOINT_NAME_MAX, "rejected");
   ck.ints[1] = r->res->rejected_steps;
   int rc = sl_output_write_checkpoint(r->out, &ck, d);
@@ -553,9 +552,10 @@ static int open_output(ns_run *r, const sl_ns_run_opts *o, sl_diag *d) {
 
 /* ---- solves ---------------------------------------------------------------- */
 
-static int solve(ns_run *r, double *u, sl_diag *d) {
+static int solve(ns_run *r, double *u, int *iterations, sl_diag *d) {
   sl_newton_stats st;
   int rc = sl_flow_problem_solve(&r->prob, u, r->ls, &r->nopts, &st, d);
+  if (iterations) *iterations = st.iterations;
   r->res->nonlinear_iterations += st.iterations;
   r->res->assembly += st.t_assembly;
   if (st.picard_iterations) r->res->used_picard = 1;
@@ -580,7 +580,7 @@ static int steady(ns_run *r, sl_ini *ini, const sl_registry *reg, double *u, sl_
   int rc = sl_ini_get_string(ini, "solver", "continuation", 0, "", &key, d);
   if (rc) return rc;
   if (!*key) {
-    rc = solve(r, u, d);
+    rc = solve(r, u, NULL, d);
     r->res->steps = 1;
     return rc ? sl_diag_prefix(d, rc, "steady solve") : 0;
   }
@@ -611,7 +611,7 @@ static int steady(ns_run *r, sl_ini *ini, const sl_registry *reg, double *u, sl_
     snprintf(assign, sizeof assign, "%s=%.17g", key, v);
     if ((rc = sl_ini_apply_override(ini, assign, d))) break;
     if ((rc = rebuild_physics(r, reg, d))) break;
-    rc = solve(r, u, d);
+    rc = solve(r, u, NULL, d);
     if (rc) rc = sl_diag_prefix(d, rc, "continuation stage %ld of %ld (%s = %g)", k, steps, key, v);
     r->res->steps++;
   }
@@ -631,7 +631,6 @@ static int time_config(const sl_ini *ini, time_cfg *tc, sl_diag *d) {
   memset(tc, 0, sizeof *tc);
   int rc = sl_ini_get_choice(ini, "time", "scheme", 0, 2, "steady|bdf1|bdf2", &tc->scheme, d);
   if (rc) return rc;
-  tc->scheme = tc->scheme == 0 ? 0 : tc->scheme; /* steady | bdf1 | bdf2 -> 0 | 1 | 2 */
   if (!sl_ini_find_section(ini, "time")) tc->scheme = 0;
   if (tc->scheme == 0) return 0;
   if ((rc = sl_ini_get_real(ini, "time", "end", 1, 0, 0, 1e12, &tc->end, d))) return rc;
@@ -713,7 +712,7 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     if (r->bcs.time_dependent && (rc = bc_apply(&r->bcs, r->th, &r->prob.bc, b.t + hh, r->datum, d))) break;
     memcpy(trial, pred, (size_t)n * sizeof *trial);
     sl_diag dn;
-    int nrc = solve(r, trial, &dn);
+    int its = 0, nrc = solve(r, trial, &its, &dn);
     double err = 0.0;
     if (nrc == 0 && tc->adaptive) err = sl_bdf_error(&s, trial, pred, r->th->p_offset, tc->tol, 1e-12);
     if (nrc != 0 || err > 1.0) {
@@ -732,18 +731,17 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
       continue;
     }
     sl_bdf_accept(&b, &s, trial);
-    memcpy(u, trial, (size_t)n * sizeof *u);
     ++step, ++steps_here;
     double h_next = tc->adaptive ? sl_bdf_next_h(&s, err) : tc->dt;
     if (h_next > tc->dt_max) h_next = tc->dt_max, limit = 2;
     if (limit != 3) h = h_next; /* a step shortened to hit the end keeps the proposal */
     limit_count[limit]++;
-    if (o->monitor) o->monitor(o->monitor_user, b.t, hh, step, 0);
+    if (o->monitor) o->monitor(o->monitor_user, b.t, hh, step, its);
     int due = tc->every > 0 ? b.t >= next_out * tc->every - eps_t : 0;
     int last = b.t >= tc->end - eps_t || steps_here >= tc->max_steps;
     if (due || last) {
       while (tc->every > 0 && b.t >= next_out * tc->every - eps_t) ++next_out;
-      if ((rc = write_state(r, b.t, u, d)) || (rc = write_checkpoint(r, &b, b.t, h, step, d))) break;
+      if ((rc = write_state(r, b.t, b.past[0], d)) || (rc = write_checkpoint(r, &b, b.t, h, step, d))) break;
     }
   }
   r->res->steps = step;
@@ -861,11 +859,10 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
     rc = steady(&r, ini, reg, u, d);
     sl_diag d2;
     int wrc = write_state(&r, 0.0, u, rc ? &d2 : d);
-    if (!wrc) {
-      sl_checkpoint_array arr = {.n = r.th->n_dofs, .data = u};
-      snprintf(arr.name, sizeof arr.name, "u");
-      sl_checkpoint c1 = {.n_arrays = 1, .arrays = &arr};
-      wrc = sl_output_write_checkpoint(r.out, &c1, rc ? &d2 : d);
+    sl_bdf one;
+    if (!wrc && !(wrc = sl_bdf_init(&one, 1, r.th->n_dofs, u, 0.0, rc ? &d2 : d))) {
+      wrc = write_checkpoint(&r, &one, 0.0, 0.0, res->steps, rc ? &d2 : d);
+      sl_bdf_free(&one);
     }
     if (!rc) rc = wrc;
   } else {

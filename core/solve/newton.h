@@ -13,7 +13,9 @@
  * residual norm falls (Armijo, sufficient decrease 1e-4 of the predicted
  * one); otherwise the step is halved, down to min_step. A Newton step that
  * finds no decrease switches to Picard iterations (robust, linearly
- * convergent) for picard_fallback iterations, then back to Newton. */
+ * convergent) for picard_fallback iterations, then back to Newton.
+ * SLUICE_NEWTON_TRACE=1 in the environment prints each accepted iteration
+ * (step length, correction, residual) on stderr. */
 #ifndef SLUICE_SOLVE_NEWTON_H
 #define SLUICE_SOLVE_NEWTON_H
 
