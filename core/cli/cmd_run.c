@@ -1,5 +1,5 @@
 /* sluice run SCENE.ini: parse and validate a scene, resolve its closures,
- * and run it (model navier_stokes; the mixture and two-fluid models are not
+ * and run it (models navier_stokes and mixture; the two-fluid model is not
  * built yet and `run` says so). */
 #include <signal.h>
 #include <stdio.h>
@@ -10,6 +10,7 @@
 #include "core/config/ini.h"
 #include "core/config/scene_schema.h"
 #include "core/cli/progress.h"
+#include "core/models/mixture.h"
 #include "core/models/navier_stokes.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
@@ -29,8 +30,8 @@ static const char run_usage[] =
     "forces it off/on); the run ends with a one-line summary. Ctrl-C stops after\n"
     "the current step and saves it. Exit status: 0 done, 1 the run failed (the\n"
     "last good state is saved), 2 bad input.\n"
-    "Models: navier_stokes runs; mixture and two_fluid are validated only (their\n"
-    "engines are not built yet).";
+    "Models: navier_stokes and mixture run; two_fluid is validated only (its\n"
+    "engine is not built yet).";
 
 static volatile sig_atomic_t interrupted;
 static void on_sigint(int sig) {
@@ -42,8 +43,8 @@ static void monitor(void *user, double t, double dt, long step, int nl) {
   sl_progress_update(user, t, dt, step, nl);
 }
 
-static int simulate(sl_ini *ini, const sl_registry *reg, const char *scene, const char *out_file, const char *restart,
-                    sl_diag *d) {
+static int simulate(sl_ini *ini, const sl_registry *reg, int model, const char *scene, const char *out_file,
+                    const char *restart, sl_diag *d) {
   double t0, t1;
   int rc = sl_ns_time_span(ini, &t0, &t1, d);
   if (rc) return rc;
@@ -54,7 +55,7 @@ static int simulate(sl_ini *ini, const sl_registry *reg, const char *scene, cons
   sl_ns_result res;
   double w0 = sl_wall_seconds(), c0 = sl_cpu_seconds();
   void (*old)(int) = signal(SIGINT, on_sigint);
-  rc = sl_ns_run(ini, reg, &o, &res, d);
+  rc = model == 1 ? sl_mixture_run(ini, reg, &o, &res, d) : sl_ns_run(ini, reg, &o, &res, d);
   signal(SIGINT, old);
   sl_progress_end(&prog);
   sl_run_summary s = {.steps = res.steps, .rejected_steps = res.rejected_steps,
@@ -67,6 +68,7 @@ static int simulate(sl_ini *ini, const sl_registry *reg, const char *scene, cons
     char line[512];
     sl_run_summary_format(&s, line, sizeof line);
     fprintf(stderr, "%s\n", line);
+    if (res.coupling_summary[0]) fprintf(stderr, "sluice: %s\n", res.coupling_summary);
     if (res.output_path[0]) fprintf(stderr, "sluice: output %s (%s)\n", res.output_path, res.linear_summary);
   }
   if (rc == SL_EFAILED && res.output_path[0])
@@ -140,20 +142,19 @@ int sl_cmd_run(int argc, char **argv) {
   }
   int model = 0;
   if ((rc = sl_ini_get_choice(ini, "scene", "model", 1, 0, "navier_stokes|mixture|two_fluid", &model, &d))) goto fail;
-  if (check_only || model != 0) {
+  if (check_only || model == 2) {
     printf("%s: scene valid; %d closure%s resolved\n", scene, n_closures, n_closures == 1 ? "" : "s");
     for (int i = 0; i < n_closures; ++i) {
       const sl_closure_desc *c = closures[i]->desc;
       printf("  %-18s %-24s %s (%s)\n", sl_kind_name(c->kind), c->name, c->version, closures[i]->library->path);
     }
     if (!check_only)
-      fprintf(stderr, "sluice: the %s model is not built yet: nothing was simulated, no output written\n",
-              model == 1 ? "mixture" : "two_fluid");
+      fprintf(stderr, "sluice: the two_fluid model is not built yet: nothing was simulated, no output written\n");
     goto fail;
   }
   for (int i = 0; i < n_closures; ++i) sl_closure_destroy(closures[i]);
   n_closures = 0;
-  rc = simulate(ini, reg, scene, out_file, restart, &d);
+  rc = simulate(ini, reg, model, scene, out_file, restart, &d);
 fail:
   for (int i = 0; i < n_closures; ++i) sl_closure_destroy(closures[i]);
   sl_registry_destroy(reg);

@@ -68,6 +68,13 @@ static const sl_key_spec output_keys[] = {
     {"file", SL_KEY_STRING, 0, 0, 0, NULL, "HDF5 output file"},
     {"every", SL_KEY_REAL, 0, 0.0, 1e12, NULL, "output interval, s"},
     {"fields", SL_KEY_LIST, 0, 0, 0, NULL, "fields to write"},
+    {"interface", SL_KEY_LIST, 0, 0, 0, NULL, "mixture: levels of phi whose heights are written"},
+};
+static const sl_key_spec transport_keys[] = {
+    {"order", SL_KEY_INT, 0, 1, 2, NULL, "1: Godunov, 2: MUSCL (second order)"},
+    {"limiter", SL_KEY_CHOICE, 0, 0, 0, "mc|minmod", "slope limiter of order 2"},
+    {"cfl", SL_KEY_REAL, 0, 1e-3, 1.0, NULL, "fraction of the stable explicit sub-step"},
+    {"table_points", SL_KEY_INT, 0, 17, 1000001, NULL, "nodes of the settling-flux table"},
 };
 static const sl_key_spec plugins_keys[] = {
     {"path", SL_KEY_LIST, 0, 0, 0, NULL, "folders searched first for closure libraries"},
@@ -77,7 +84,7 @@ static const sl_key_spec plugins_keys[] = {
 static const sl_section_spec sections[] = {
     SPEC("scene", 0, scene_keys),   SPEC("fluid", 0, fluid_keys),   SPEC("solid", 0, solid_keys),
     SPEC("time", 0, time_keys),     SPEC("solver", 0, solver_keys), SPEC("output", 0, output_keys),
-    SPEC("plugins", 0, plugins_keys), SPEC("flow", 0, flow_keys), SPEC("mesh", 0, mesh_keys),           {"initial", 1, NULL, 0},        {"boundary.", 1, NULL, 0},
+    SPEC("plugins", 0, plugins_keys), SPEC("flow", 0, flow_keys), SPEC("mesh", 0, mesh_keys), SPEC("transport", 0, transport_keys),           {"initial", 1, NULL, 0},        {"boundary.", 1, NULL, 0},
     {"closure.", 1, NULL, 0}, /* checked against each closure's own schema */
 };
 

@@ -491,3 +491,12 @@ int sl_output_close(sl_output *o, sl_diag *d) {
   free_output(o);
   return rc;
 }
+
+int sl_output_write_scalar(sl_output *o, const char *name, double value, sl_diag *d) {
+  if (!o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: scalar '%s' written outside a step", o->path, name);
+  int rc = sl_io_check_name(name, 200, "scalar", d);
+  if (rc) return sl_diag_prefix(d, rc, "%s", o->path);
+  char group[32];
+  snprintf(group, sizeof group, "/step_%06d", o->next_index);
+  return sl_h5_attr_double(o->step_group, name, value, o->path, group, d);
+}

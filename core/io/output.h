@@ -46,6 +46,12 @@ int sl_output_begin_step(sl_output *out, double t, sl_diag *d);
 int sl_output_write_field(sl_output *out, const char *name, sl_centring centring, int components, const double *values,
                           sl_diag *d);
 int sl_output_end_step(sl_output *out, sl_diag *d);
+/* A number belonging to the open output time (an attribute of its group):
+ * diagnostics such as the solids inventory. */
+int sl_output_write_scalar(sl_output *out, const char *name, double value, sl_diag *d);
+/* The scalar `name` of the output time nearest t (sl_output_read_field's
+ * choice of time). */
+int sl_output_read_scalar(const char *path, const char *name, double t, double *value, double *t_found, sl_diag *d);
 
 /* Provenance. Written when called (at the start of a run, so an interrupted
  * run has it); calling again replaces it. */

@@ -390,3 +390,40 @@ void sl_output_contents_free(sl_output_contents *c) {
   free(c->fields);
   memset(c, 0, sizeof *c);
 }
+
+int sl_output_read_scalar(const char *path, const char *name, double t, double *value, double *t_found, sl_diag *d) {
+  int rc = sl_io_check_name(name, 200, "scalar", d);
+  if (rc) return rc;
+  if (isnan(t)) return sl_diag_set(d, SL_EBADINPUT, "%s: requested time is NaN", path);
+  hid_t f;
+  if ((rc = sl_h5_open_read(path, &f, d))) return rc;
+  step_entry *s = NULL;
+  int n = 0;
+  if ((rc = list_steps(path, f, &s, &n, d))) {
+    H5Fclose(f);
+    return rc;
+  }
+  int best = -1;
+  double best_dist = INFINITY;
+  for (int i = 0; i < n; ++i) {
+    if (H5Aexists_by_name(f, s[i].name, name, H5P_DEFAULT) <= 0) continue;
+    double dist = fabs(s[i].time - t);
+    if (best < 0 || dist < best_dist || (isinf(t) && t > 0)) best = i, best_dist = dist;
+  }
+  H5Eclear2(H5E_DEFAULT);
+  if (best < 0) {
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: no output time holds the scalar '%s'", path, name);
+  } else {
+    hid_t g = H5Gopen2(f, s[best].name, H5P_DEFAULT);
+    if (g < 0) {
+      rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot open group", s[best].name);
+    } else {
+      rc = sl_h5_read_attr_double(g, name, value, path, s[best].name, d);
+      H5Gclose(g);
+    }
+    if (!rc && t_found) *t_found = s[best].time;
+  }
+  free(s);
+  H5Fclose(f);
+  return rc;
+}

@@ -90,6 +90,8 @@ typedef struct physics {
   int cap;
   double gravity[MAX_COMP], body_force[MAX_COMP];
   int has_force;
+  const sl_ns_coupling *cpl; /* solids fraction: variable density, buoyancy, phi input; NULL: none */
+  int in_phi, in_density;    /* viscosity inputs fed per point (-1: absent) */
 } physics;
 
 static void physics_free(physics *ph) {
@@ -102,7 +104,7 @@ static void physics_free(physics *ph) {
 static int viscosity_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
   physics *ph = user;
   int n_in = ph->visc->desc->n_in, n_out = ph->visc->desc->n_out;
-  int need = b->n * (n_in + n_out + n_out * n_in);
+  int need = b->n * (n_in + n_out + n_in + 1);
   if (need > ph->cap) {
     double *nb = realloc(ph->buf, (size_t)need * sizeof *nb);
     if (!nb) return sl_diag_set(d, SL_EFAILED, "viscosity: out of memory");
@@ -111,9 +113,18 @@ static int viscosity_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *
   const double *in[16];
   double *outs[16], *dout[16 * 16];
   double *w = ph->buf;
+  const double *phi = ph->cpl ? ph->cpl->cell_phi(ph->cpl->user) : NULL;
   for (int i = 0; i < n_in; ++i) {
     if (i == ph->in_shear) {
       in[i] = b->shear_rate;
+      continue;
+    }
+    if (phi && (i == ph->in_phi || i == ph->in_density)) {
+      for (int q = 0; q < b->n; ++q) {
+        double f = phi[b->cell[q]];
+        w[q] = i == ph->in_phi ? f : ph->density + f * (ph->cpl->rho_solid - ph->density);
+      }
+      in[i] = w, w += b->n;
       continue;
     }
     for (int k = 0; k < ph->n_other; ++k)
@@ -124,6 +135,9 @@ static int viscosity_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *
   for (int k = 0; k < n_out; ++k) outs[k] = w, w += b->n;
   for (int k = 0; k < n_out * n_in; ++k) dout[k] = NULL;
   if (ph->has_dmu) dout[ph->out_visc * n_in + ph->in_shear] = w, w += b->n;
+  for (int i = 0; i < n_in; ++i) /* the ABI asks a slot for every differentiable input once one is asked */
+    if (ph->has_dmu && i != ph->in_shear && (ph->visc->desc->in[i].flags & SL_FIELD_DIFF))
+      dout[ph->out_visc * n_in + i] = w, w += b->n;
   sl_error err;
   sl_eval_args a = {.Q = b->n, .in = in, .out = outs, .dout = dout, .err = &err};
   int rc = sl_closure_evaluate(ph->visc, &a);
@@ -131,20 +145,37 @@ static int viscosity_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *
     char label[128];
     sl_closure_label(ph->visc->desc, label, sizeof label);
     int q = err.point >= 0 && err.point < b->n ? err.point : 0;
-    return sl_diag_set(d, SL_EFAILED, "closure %s %s at (%g, %g) in cell %d (shear rate %g): %s", label,
+    char extra[64] = "";
+    if (phi) snprintf(extra, sizeof extra, ", phi %g", phi[b->cell[q]]);
+    return sl_diag_set(d, SL_EFAILED, "closure %s %s at (%g, %g) in cell %d (shear rate %g%s): %s", label,
                        rc > 0 ? "outside its validity" : "failed", b->x[q][0], b->x[q][1], (int)b->cell[q],
-                       b->shear_rate[q], err.msg);
+                       b->shear_rate[q], extra, err.msg);
   }
   const double *mu = outs[ph->out_visc], *dmu = ph->has_dmu ? dout[ph->out_visc * n_in + ph->in_shear] : NULL;
   for (int q = 0; q < b->n; ++q) out[2 * q] = mu[q], out[2 * q + 1] = dmu ? dmu[q] : 0.0;
   return 0;
 }
 
+/* Gravity and the body force. With a solids fraction only the excess
+ * density (rho - rho_f) = phi (rho_s - rho_f) is buoyant: rho_f g goes into
+ * the (reduced) pressure. */
 static int force_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
   const physics *ph = user;
   (void)d;
-  for (int q = 0; q < b->n; ++q)
-    for (int c = 0; c < ph->n_comp; ++c) out[q * ph->n_comp + c] = ph->density * ph->gravity[c] + ph->body_force[c];
+  const double *phi = ph->cpl ? ph->cpl->cell_phi(ph->cpl->user) : NULL;
+  for (int q = 0; q < b->n; ++q) {
+    double rho = phi ? phi[b->cell[q]] * (ph->cpl->rho_solid - ph->density) : ph->density;
+    for (int c = 0; c < ph->n_comp; ++c) out[q * ph->n_comp + c] = rho * ph->gravity[c] + ph->body_force[c];
+  }
+  return 0;
+}
+
+/* The mixture density rho_f + phi (rho_s - rho_f) (Nigam 1999 eq 2.1). */
+static int density_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
+  const physics *ph = user;
+  (void)d;
+  const double *phi = ph->cpl->cell_phi(ph->cpl->user);
+  for (int q = 0; q < b->n; ++q) out[q] = ph->density + phi[b->cell[q]] * (ph->cpl->rho_solid - ph->density);
   return 0;
 }
 
@@ -161,16 +192,21 @@ static int vec_get(const sl_ini *ini, const char *sec, const char *key, int n_co
   return 0;
 }
 
-static int physics_setup(const sl_ini *ini, const sl_registry *reg, int n_comp, int dim, int axi, physics *ph,
-                         sl_diag *d) {
+static int physics_setup(const sl_ini *ini, const sl_registry *reg, int n_comp, int dim, int axi,
+                         const sl_ns_coupling *cpl, physics *ph, sl_diag *d) {
   memset(ph, 0, sizeof *ph);
-  ph->n_comp = n_comp, ph->dim = dim, ph->axisymmetric = axi;
+  ph->n_comp = n_comp, ph->dim = dim, ph->axisymmetric = axi, ph->cpl = cpl;
+  ph->in_phi = ph->in_density = -1;
   int rc = sl_ini_get_real(ini, "fluid", "density", 0, 1000.0, 1e-3, 1e5, &ph->density, d);
   if (!rc) rc = sl_ini_get_real(ini, "fluid", "viscosity", 0, 1e-3, 1e-7, 1e7, &ph->viscosity, d);
   if (!rc) rc = vec_get(ini, "flow", "gravity", n_comp, ph->gravity, d);
   if (!rc) rc = vec_get(ini, "flow", "body_force", n_comp, ph->body_force, d);
   if (rc) return rc;
   for (int c = 0; c < MAX_COMP; ++c) ph->has_force |= ph->gravity[c] != 0.0 || ph->body_force[c] != 0.0;
+  if (cpl && cpl->rho_solid == ph->density) { /* neutrally buoyant: gravity acts on nothing */
+    ph->has_force = 0;
+    for (int c = 0; c < MAX_COMP; ++c) ph->has_force |= ph->body_force[c] != 0.0;
+  }
   if (!sl_ini_find_section(ini, "closure.viscosity")) return 0;
   if ((rc = sl_closure_from_ini(reg, ini, "closure.viscosity", &ph->visc, d))) return rc;
   const sl_closure_desc *c = ph->visc->desc;
@@ -179,24 +215,30 @@ static int physics_setup(const sl_ini *ini, const sl_registry *reg, int n_comp, 
   ph->in_shear = sl_closure_input(c, "shear_rate");
   ph->out_visc = sl_closure_output(c, "viscosity");
   const sl_ini_section *sec = sl_ini_find_section(ini, "closure.viscosity");
-  if (ph->out_visc < 0 || ph->in_shear < 0 || c->n_in > 16 || c->n_out > 16)
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [closure.viscosity] %s does not map a shear rate to a viscosity",
-                       sec->file, sec->line, label);
+  if (cpl) {
+    ph->in_phi = sl_closure_input(c, "phi");
+    ph->in_density = sl_closure_input(c, "density");
+  }
+  if (ph->out_visc < 0 || (ph->in_shear < 0 && ph->in_phi < 0 && ph->in_density < 0) || c->n_in > 16 ||
+      c->n_out > 16)
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [closure.viscosity] %s does not map a shear rate%s to a viscosity",
+                       sec->file, sec->line, label, cpl ? " or a solids fraction" : "");
   for (int i = 0; i < c->n_in; ++i) {
-    if (i == ph->in_shear) continue;
+    if (i == ph->in_shear || i == ph->in_phi || i == ph->in_density) continue;
     const char *name = c->in[i].name;
     double v;
     if (strcmp(name, "mu_f") == 0) v = ph->viscosity;
-    else if (strcmp(name, "rho_f") == 0 || strcmp(name, "density") == 0) v = ph->density;
+    else if (strcmp(name, "rho_f") == 0 || (!cpl && strcmp(name, "density") == 0)) v = ph->density;
     else
       return sl_diag_set(d, SL_EBADINPUT,
-                         "%s:%d: [closure.viscosity] %s needs the input '%s', which the navier_stokes model does not "
-                         "provide (it provides shear_rate, mu_f, rho_f)",
-                         sec->file, sec->line, label, name);
+                         "%s:%d: [closure.viscosity] %s needs the input '%s', which the %s model does not "
+                         "provide (it provides shear_rate, mu_f, rho_f%s)",
+                         sec->file, sec->line, label, name, cpl ? "mixture" : "navier_stokes",
+                         cpl ? ", phi, density" : "");
     if (ph->n_other == 8) return sl_diag_set(d, SL_EBADINPUT, "%s: too many inputs", label);
     ph->in_other[ph->n_other] = i, ph->other_value[ph->n_other++] = v;
   }
-  ph->has_dmu = (c->in[ph->in_shear].flags & SL_FIELD_DIFF) != 0;
+  ph->has_dmu = ph->in_shear >= 0 && (c->in[ph->in_shear].flags & SL_FIELD_DIFF) != 0;
   int k = sl_params_find(c, "yield_stress");
   if (k >= 0) {
     char buf[64];
@@ -208,7 +250,8 @@ static int physics_setup(const sl_ini *ini, const sl_registry *reg, int n_comp, 
 
 static void physics_opts(physics *ph, sl_flow_opts *o) {
   o->axisymmetric = ph->axisymmetric;
-  o->density = (sl_coef){NULL, NULL, ph->density};
+  o->density = ph->cpl && ph->cpl->rho_solid != ph->density ? (sl_coef){density_fn, ph, 0.0}
+                                                               : (sl_coef){NULL, NULL, ph->density};
   o->viscosity = ph->visc ? viscosity_fn : NULL;
   o->viscosity_user = ph;
   o->viscosity_value = ph->viscosity;
@@ -256,7 +299,7 @@ static int aligned_normal(const sl_mesh *m, int id) {
   return comp;
 }
 
-static int bc_setup(const sl_ini *ini, const sl_mesh *m, int n_comp, int axi, bc_set *s, sl_diag *d) {
+static int bc_setup(const sl_ini *ini, const sl_mesh *m, int n_comp, int axi, int solids, bc_set *s, sl_diag *d) {
   memset(s, 0, sizeof *s);
   s->b = calloc((size_t)m->n_boundaries, sizeof *s->b);
   if (!s->b) return sl_diag_set(d, SL_EFAILED, "out of memory");
@@ -268,8 +311,8 @@ static int bc_setup(const sl_ini *ini, const sl_mesh *m, int n_comp, int axi, bc
     const char *name = sec->name + 9;
     int id, rc = sl_mesh_boundary_id(m, name, &id, d);
     if (rc) return sl_diag_prefix(d, rc, "%s:%d: [%s]", sec->file, sec->line, sec->name);
-    static const char *const keys[] = {"type", "velocity", "pressure", "traction"};
-    if ((rc = sl_ini_check_keys(ini, sec->name, keys, 4, d))) return rc;
+    static const char *const keys[] = {"type", "velocity", "pressure", "traction", "phi"};
+    if ((rc = sl_ini_check_keys(ini, sec->name, keys, solids ? 5 : 4, d))) return rc;
     bc *b = &s->b[id];
     int type;
     if ((rc = sl_ini_get_choice(ini, sec->name, "type", 1, 0, bc_types, &type, d))) return rc;
@@ -371,8 +414,8 @@ static int traction_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d
 
 /* ---- output ---------------------------------------------------------------- */
 
-enum { F_VELOCITY = 1, F_PRESSURE = 2, F_SHEAR = 4, F_VISCOSITY = 8, F_YIELDED = 16 };
-static const char *const field_names[] = {"velocity", "pressure", "shear_rate", "viscosity", "yielded"};
+enum { F_VELOCITY = 1, F_PRESSURE = 2, F_SHEAR = 4, F_VISCOSITY = 8, F_YIELDED = 16, F_PHI = 32 };
+static const char *const field_names[] = {"velocity", "pressure", "shear_rate", "viscosity", "yielded", "phi"};
 
 typedef struct ns_run {
   const sl_ini *ini;
@@ -389,6 +432,7 @@ typedef struct ns_run {
   double *cellbuf;
   sl_ns_result *res;
   int datum;
+  const sl_ns_coupling *cpl; /* NULL: single-phase */
 } ns_run;
 
 static int write_state(ns_run *r, double t, const double *u, sl_diag *d) {
@@ -443,6 +487,7 @@ static int write_state(ns_run *r, double t, const double *u, sl_diag *d) {
     if (!rc && (r->fields & F_VISCOSITY)) rc = sl_output_write_field(r->out, "viscosity", SL_CENTRE_CELL, 1, mu, d);
     if (!rc && (r->fields & F_YIELDED)) rc = sl_output_write_field(r->out, "yielded", SL_CENTRE_CELL, 1, y, d);
   }
+  if (!rc && r->cpl) rc = r->cpl->write(r->cpl->user, r->out, d);
   if (!rc) rc = sl_output_end_step(r->out, d);
   r->res->output += wall() - t0;
   return rc;
@@ -452,7 +497,7 @@ static int write_state(ns_run *r, double t, const double *u, sl_diag *d) {
  * history of its one solution). */
 static int write_checkpoint(ns_run *r, const sl_bdf *b, double t, double dt_next, long step, sl_diag *d) {
   double t0 = wall();
-  sl_checkpoint_array arr[4];
+  sl_checkpoint_array arr[12];
   int na = 0;
   const char *names[3] = {"u", "u_prev", "u_prev2"};
   for (int k = 0; k < b->n_past; ++k) {
@@ -462,6 +507,7 @@ static int write_checkpoint(ns_run *r, const sl_bdf *b, double t, double dt_next
   }
   snprintf(arr[na].name, sizeof arr[na].name, "h_past");
   arr[na].n = 2, arr[na].data = b->h_past, ++na;
+  if (r->cpl) na += r->cpl->checkpoint(r->cpl->user, arr + na, 12 - na);
   sl_checkpoint ck = {.time = t, .dt = dt_next, .step = step, .n_arrays = na, .arrays = arr};
   ck.n_ints = 2;
   snprintf(ck.int_names[0], SL_CHECKPOINT_NAME_MAX, "n_past");
@@ -504,13 +550,15 @@ static int open_output(ns_run *r, const sl_ns_run_opts *o, sl_diag *d) {
       char name[64];
       snprintf(name, sizeof name, "%.*s", (int)(q - p), p);
       int found = -1;
-      for (int k = 0; k < 5; ++k)
+      int n_known = r->cpl ? 6 : 5; /* phi: the mixture model's (always written) */
+      for (int k = 0; k < n_known; ++k)
         if (strcmp(name, field_names[k]) == 0) found = k;
       if (found < 0) {
-        const char *s = sl_suggest(name, field_names, 5);
+        const char *s = sl_suggest(name, field_names, n_known);
         return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] fields: unknown field '%s'%s%s%s (known: %s)", e->file,
                            e->line, name, s ? "; did you mean '" : "", s ? s : "", s ? "'?" : "",
-                           "velocity, pressure, shear_rate, viscosity, yielded");
+                           r->cpl ? "velocity, pressure, shear_rate, viscosity, yielded, phi"
+                                  : "velocity, pressure, shear_rate, viscosity, yielded");
       }
       r->fields |= 1 << found;
       p = q;
@@ -530,8 +578,8 @@ static int open_output(ns_run *r, const sl_ns_run_opts *o, sl_diag *d) {
   if (rc) return rc;
   /* provenance */
   char *ini_text = sl_ini_to_string(r->ini);
-  sl_provenance_closure pc = {0};
-  char params[2048] = "";
+  sl_provenance_closure pc[8] = {{0}};
+  char params[2048] = "", cparams[4096] = "";
   sl_provenance pv = {.sluice_version = o->sluice_version ? o->sluice_version : "unknown", .ini_text = ini_text};
   if (r->ph.visc) {
     const sl_closure_desc *c = r->ph.visc->desc;
@@ -541,10 +589,11 @@ static int open_output(ns_run *r, const sl_ns_run_opts *o, sl_diag *d) {
       sl_params_format_value(c, r->ph.visc->params, k, v, sizeof v);
       at += (size_t)snprintf(params + at, sizeof params - at, "%s = %s\n", c->params[k].name, v);
     }
-    pc = (sl_provenance_closure){"closure.viscosity", sl_kind_name(c->kind), c->name, c->version,
-                                 r->ph.visc->library->path, params};
-    pv.n_closures = 1, pv.closures = &pc;
+    pc[pv.n_closures++] = (sl_provenance_closure){"closure.viscosity", sl_kind_name(c->kind), c->name, c->version,
+                                                  r->ph.visc->library->path, params};
   }
+  if (r->cpl) pv.n_closures += r->cpl->provenance(r->cpl->user, pc + pv.n_closures, 8 - pv.n_closures, cparams, sizeof cparams);
+  pv.closures = pc;
   rc = sl_output_write_provenance(r->out, &pv, d);
   free(ini_text);
   return rc;
@@ -565,7 +614,7 @@ static int solve(ns_run *r, double *u, int *iterations, sl_diag *d) {
 /* Rebuilds the physics after an INI change (continuation). */
 static int rebuild_physics(ns_run *r, const sl_registry *reg, sl_diag *d) {
   physics_free(&r->ph);
-  int rc = physics_setup(r->ini, reg, r->th->n_comp, r->mesh->dim, r->prob.opts.axisymmetric, &r->ph, d);
+  int rc = physics_setup(r->ini, reg, r->th->n_comp, r->mesh->dim, r->prob.opts.axisymmetric, r->cpl, &r->ph, d);
   if (rc) return rc;
   int convection = r->prob.opts.convection;
   double omega = r->prob.opts.omega, c0 = r->prob.opts.rotation_centre[0], c1 = r->prob.opts.rotation_centre[1];
@@ -652,7 +701,9 @@ int sl_ns_time_span(const sl_ini *ini, double *t0, double *t1, sl_diag *d) {
   return rc;
 }
 
-static const char *const limits[] = {"error estimate", "nonlinear convergence", "dt_max", "end time", "fixed dt"};
+static const char *const limits[] = {"error estimate", "nonlinear convergence", "dt_max",
+                                     "end or output time", "fixed dt",            "solids transport"};
+enum { N_LIMITS = 6 };
 
 static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, double *u, const sl_checkpoint *ck,
                      sl_diag *d) {
@@ -693,7 +744,7 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     goto out;
   }
   r->res->t_start = b.t;
-  long limit_count[5] = {0};
+  long limit_count[N_LIMITS] = {0};
   const double eps_t = 1e-12 * fmax(1.0, tc->end);
   long steps_here = 0;
   while (b.t < tc->end - eps_t) {
@@ -704,7 +755,10 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     if (steps_here >= tc->max_steps) break;
     int limit = tc->adaptive ? 0 : 4;
     double hh = h;
-    if (b.t + hh > tc->end - eps_t || b.t + 1.05 * hh > tc->end) hh = tc->end - b.t, limit = 3;
+    /* land on the end and on every output time (a step within 5 % of one is stretched to it) */
+    double t_stop = tc->end;
+    if (tc->every > 0 && next_out * tc->every < t_stop) t_stop = next_out * tc->every;
+    if (b.t + hh > t_stop - eps_t || b.t + 1.05 * hh > t_stop) hh = t_stop - b.t, limit = 3;
     sl_bdf_step s;
     sl_bdf_prepare(&b, hh, &s, hist, pred);
     r->prob.opts.mass_coef = s.mass_coef;
@@ -715,10 +769,12 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     int its = 0, nrc = solve(r, trial, &its, &dn);
     double err = 0.0;
     if (nrc == 0 && tc->adaptive) err = sl_bdf_error(&s, trial, pred, r->th->p_offset, tc->tol, 1e-12);
+    int coupled_failed = 0;
+    if (nrc == 0 && err <= 1.0 && r->cpl) coupled_failed = (nrc = r->cpl->advance(r->cpl->user, b.t, hh, trial, &dn)) != 0;
     if (nrc != 0 || err > 1.0) {
       r->res->rejected_steps++;
       h = nrc ? 0.25 * hh : sl_bdf_next_h(&s, err);
-      limit_count[nrc ? 1 : 0]++;
+      limit_count[coupled_failed ? 5 : nrc ? 1 : 0]++;
       if (nrc && nrc != SL_EFAILED) {
         rc = sl_diag_set(d, nrc, "%s", dn.msg);
         break;
@@ -731,6 +787,7 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
       continue;
     }
     sl_bdf_accept(&b, &s, trial);
+    if (r->cpl) r->cpl->accept(r->cpl->user);
     ++step, ++steps_here;
     double h_next = tc->adaptive ? sl_bdf_next_h(&s, err) : tc->dt;
     if (h_next > tc->dt_max) h_next = tc->dt_max, limit = 2;
@@ -747,7 +804,7 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
   r->res->steps = step;
   r->res->t_reached = b.t;
   long best = 0;
-  for (int k = 0; k < 5; ++k)
+  for (int k = 0; k < N_LIMITS; ++k)
     if (limit_count[k] > best) best = limit_count[k], r->res->step_limit = limits[k];
   if (rc == SL_EFAILED) {
     /* keep the last good state */
@@ -776,7 +833,7 @@ static int initial_velocity(const sl_ini *ini, const sl_th_space *th, double *u,
 
 int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d) {
   memset(res, 0, sizeof *res);
-  ns_run r = {.ini = ini, .res = res};
+  ns_run r = {.ini = ini, .res = res, .cpl = o->coupling};
   double *u = NULL;
   sl_checkpoint ck = {0};
   int have_ck = 0;
@@ -812,14 +869,28 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
     goto out;
   }
   if ((rc = sl_th_create(r.mesh, dim + (third ? 1 : 0), &r.th, d))) goto out;
-  if ((rc = physics_setup(ini, reg, r.th->n_comp, dim, axi, &r.ph, d))) goto out;
-  if ((rc = bc_setup(ini, r.mesh, r.th->n_comp, axi, &r.bcs, d))) goto out;
+  if ((rc = physics_setup(ini, reg, r.th->n_comp, dim, axi, r.cpl, &r.ph, d))) goto out;
+  if ((rc = bc_setup(ini, r.mesh, r.th->n_comp, axi, r.cpl != NULL, &r.bcs, d))) goto out;
   if ((rc = sl_flow_problem_init(&r.prob, r.th, d))) goto out;
   physics_opts(&r.ph, &r.prob.opts);
   r.prob.opts.convection = convection;
   r.prob.opts.omega = omega;
   r.prob.opts.rotation_centre[0] = centre[0], r.prob.opts.rotation_centre[1] = centre[1];
   if ((rc = sl_flow_check_geometry(r.th, &r.prob.opts, d))) goto out;
+  if (r.cpl) {
+    if (tc.scheme == 0) {
+      rc = sl_diag_set(d, SL_EBADINPUT, "[time] scheme = steady: the mixture model is transient (bdf1 or bdf2)");
+      goto out;
+    }
+    unsigned char open[256] = {0};
+    for (int i = 0; i < r.bcs.n; ++i) {
+      bc_type ty = r.bcs.b[i].type;
+      if (ty != BC_OPEN && ty != BC_PRESSURE && ty != BC_TRACTION) continue;
+      for (int k = 0; k < r.mesh->n_boundaries && k < 256; ++k)
+        if (strcmp(r.mesh->boundary_names[k], r.bcs.b[i].name) == 0) open[k] = 1;
+    }
+    if ((rc = r.cpl->setup(r.cpl->user, r.th, axi, open, d))) goto out;
+  }
   r.datum = !r.bcs.has_natural;
   for (int i = 0; i < r.bcs.n; ++i)
     if (r.bcs.b[i].type == BC_PRESSURE || r.bcs.b[i].type == BC_TRACTION) {
@@ -833,7 +904,8 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
                              .picard_only = nonlinear == 1,
                              .picard_first = picard_first,
                              .linear = !convection && !r.ph.visc,
-                             .scale = 1e-12};
+                             .scale = 1e-12,
+                             .rtol_residual = 1e-10};
   u = calloc((size_t)r.th->n_dofs, sizeof *u);
   r.work = malloc((size_t)r.th->n_vel * 3 * sizeof *r.work);
   r.cellbuf = malloc((size_t)r.mesh->n_cells * 3 * sizeof *r.cellbuf);
@@ -853,6 +925,7 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
       }
       memcpy(u, a->data, (size_t)a->n * sizeof *u); /* a steady solve starts from it */
     }
+    if (r.cpl && (rc = r.cpl->restore(r.cpl->user, &ck, d))) goto out;
   }
   if ((rc = open_output(&r, o, d))) goto out;
   if (tc.scheme == 0) {

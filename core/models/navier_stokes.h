@@ -24,8 +24,31 @@
 #include <signal.h>
 
 #include "core/config/ini.h"
+#include "core/fe/dofmap.h"
+#include "core/io/output.h"
 #include "core/plugin/registry.h"
 #include "core/util/diag.h"
+
+/* A model riding on the flow: the mixture model's solids fraction. The flow
+ * takes density rho_f + phi (rho_s - rho_f), buoyancy (rho - rho_f) g (the
+ * pressure is then the reduced pressure p - rho_f g.x) and the viscosity
+ * closure's input `phi` from the coupling's cell values; the coupling
+ * advances them after every converged flow step. A step the coupling
+ * refuses (SL_EFAILED) is retried smaller, like a failed Newton solve. */
+typedef struct sl_ns_coupling {
+  void *user;
+  double rho_solid;
+  /* After the velocity space exists; open[b] != 0 marks boundaries where the
+   * velocity is free (open, pressure, traction). */
+  int (*setup)(void *user, const sl_th_space *th, int axisymmetric, const unsigned char *open, sl_diag *d);
+  const double *(*cell_phi)(void *user);                 /* the current cell values */
+  int (*advance)(void *user, double t, double dt, const double *u, sl_diag *d); /* into a trial state */
+  void (*accept)(void *user);                            /* the trial becomes current */
+  int (*write)(void *user, sl_output *out, sl_diag *d);  /* inside an output step */
+  int (*checkpoint)(void *user, sl_checkpoint_array *arrays, int max); /* arrays to save: their count */
+  int (*restore)(void *user, const sl_checkpoint *ck, sl_diag *d);
+  int (*provenance)(void *user, sl_provenance_closure *c, int max, char *buf, size_t buf_len); /* closures used */
+} sl_ns_coupling;
 
 typedef struct sl_ns_run_opts {
   const char *scene_path;     /* for the default output name */
@@ -36,6 +59,7 @@ typedef struct sl_ns_run_opts {
   void (*monitor)(void *user, double t, double dt, long step, int nonlinear_iterations);
   void *monitor_user;
   volatile sig_atomic_t *interrupt; /* set asynchronously (Ctrl-C): stop after the step, save */
+  const sl_ns_coupling *coupling;   /* NULL: single-phase flow */
 } sl_ns_run_opts;
 
 typedef struct sl_ns_result {
@@ -47,6 +71,7 @@ typedef struct sl_ns_result {
   const char *step_limit;   /* what limited the step most often (static string) or NULL */
   char output_path[4096];
   char linear_summary[256];
+  char coupling_summary[256]; /* the coupled model's one line, or "" */
 } sl_ns_result;
 
 /* The simulated time span the run will cover (for the progress display). */

@@ -73,7 +73,7 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
   st->residual0 = st->residual = res;
   int converged = 0;
   while (!rc && !converged) {
-    if (o.atol > 0 && res <= o.atol) {
+    if ((o.atol > 0 && res <= o.atol) || (st->iterations > 0 && res <= o.rtol_residual * st->residual0)) {
       converged = 1;
       break;
     }

@@ -31,6 +31,8 @@ typedef int (*sl_nl_assemble_fn)(void *user, const double *u, sl_nl_mode mode, s
 typedef struct sl_newton_opts {
   double rtol;          /* on the correction; default 1e-8 */
   double atol;          /* on |b|_2; default 0 (unused) */
+  double rtol_residual; /* also converged when |b|_2 <= rtol_residual |b0|_2 (a solution at round-off
+                           whose correction test cannot pass, e.g. u = 0); default 0 (unused) */
   double scale;         /* floor of the solution scale in the correction test; default 1e-12 */
   int n_check;          /* entries entering the correction test; 0: all */
   int max_iterations;   /* default 30 */

@@ -1,0 +1,136 @@
+/* Conservative face fluxes of a Taylor–Hood velocity (see face_flux.h). */
+#include "core/models/face_flux.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct sl_face_flux {
+  const sl_th_space *th;
+  int axisymmetric;
+  unsigned char *adjustable; /* [n_faces] */
+  sl_csr L;                  /* cell graph Laplacian over adjustable faces, one cell pinned if closed */
+  sl_linsolve *ls;
+  int pinned;                /* the pinned cell, -1 when L is regular */
+  double *div, *lambda;      /* [n_cells] */
+};
+
+void sl_face_flux_destroy(sl_face_flux *ff) {
+  if (!ff) return;
+  sl_csr_free(&ff->L);
+  sl_linsolve_destroy(ff->ls);
+  free(ff->adjustable);
+  free(ff->div);
+  free(ff->lambda);
+  free(ff);
+}
+
+void sl_face_flux_raw(const sl_face_flux *ff, const double *u, double *q) {
+  const sl_th_space *th = ff->th;
+  const sl_mesh *m = th->mesh;
+  const int nb = th->vel->dofs_per_cell, nv = m->nv_per_cell;
+  for (int f = 0; f < m->n_faces; ++f) {
+    int c = m->face_cells[2 * f], k = m->face_local[2 * f];
+    const int32_t *cd = th->vel->cell_dofs + (size_t)c * nb;
+    if (m->dim == 1) {
+      /* local face 0 is the left end (normal -1), face 1 the right end */
+      double un = u[sl_th_vel_dof(th, 0, cd[k])];
+      double r = ff->axisymmetric ? th->vel->xy[2 * cd[k]] : 1.0;
+      q[f] = (k == 0 ? -un : un) * r;
+      continue;
+    }
+    int32_t node[3] = {cd[k], cd[nv + k], cd[(k + 1) % nv]};
+    const double *a = th->vel->xy + 2 * node[0], *b = th->vel->xy + 2 * node[2];
+    /* outward normal of the owner times the length: (dy, -dx) */
+    double nx = b[1] - a[1], ny = -(b[0] - a[0]);
+    static const double simpson[3] = {1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0};
+    double s = 0.0;
+    for (int j = 0; j < 3; ++j) {
+      double un = u[sl_th_vel_dof(th, 0, node[j])] * nx + u[sl_th_vel_dof(th, 1, node[j])] * ny;
+      double r = ff->axisymmetric ? th->vel->xy[2 * node[j]] : 1.0;
+      s += simpson[j] * un * r;
+    }
+    q[f] = s;
+  }
+}
+
+int sl_face_flux_create(const sl_th_space *th, int axisymmetric, const unsigned char *adjustable,
+                        sl_face_flux **out, sl_diag *d) {
+  *out = NULL;
+  const sl_mesh *m = th->mesh;
+  sl_face_flux *ff = calloc(1, sizeof *ff);
+  if (!ff) return sl_diag_set(d, SL_EFAILED, "face fluxes: out of memory");
+  ff->th = th, ff->axisymmetric = axisymmetric, ff->pinned = -1;
+  int nc = m->n_cells, nf = m->n_faces, rc = 0;
+  ff->adjustable = calloc((size_t)nf, 1);
+  ff->div = malloc((size_t)nc * sizeof *ff->div);
+  ff->lambda = malloc((size_t)nc * sizeof *ff->lambda);
+  /* the pattern: one "element" per interior face coupling its two cells, one per cell for the diagonal */
+  int32_t *ptr = malloc((size_t)(nf + nc + 1) * sizeof *ptr), *rows = calloc((size_t)(2 * nf + nc), sizeof *rows);
+  if (!ff->adjustable || !ff->div || !ff->lambda || !ptr || !rows) {
+    rc = sl_diag_set(d, SL_EFAILED, "face fluxes: out of memory");
+    goto out;
+  }
+  int open = 0;
+  for (int f = 0; f < nf; ++f) {
+    int tag = m->face_tag[f];
+    ff->adjustable[f] = tag < 0 || (adjustable && adjustable[tag]);
+    if (tag >= 0 && ff->adjustable[f]) open = 1;
+  }
+  int32_t at = 0, ne = 0;
+  ptr[0] = 0;
+  for (int c = 0; c < nc; ++c) rows[at++] = c, ptr[++ne] = at;
+  for (int f = 0; f < nf; ++f)
+    if (m->face_cells[2 * f + 1] >= 0) rows[at++] = m->face_cells[2 * f], rows[at++] = m->face_cells[2 * f + 1], ptr[++ne] = at;
+  if ((rc = sl_csr_build(&ff->L, nc, nc, ne, ptr, rows, NULL, NULL, d))) goto out;
+  for (int f = 0; f < nf; ++f) {
+    if (!ff->adjustable[f]) continue;
+    int a = m->face_cells[2 * f], b = m->face_cells[2 * f + 1];
+    ff->L.values[sl_csr_find(&ff->L, a, a)] += 1.0;
+    if (b < 0) continue;
+    ff->L.values[sl_csr_find(&ff->L, b, b)] += 1.0;
+    ff->L.values[sl_csr_find(&ff->L, a, b)] -= 1.0;
+    ff->L.values[sl_csr_find(&ff->L, b, a)] -= 1.0;
+  }
+  if (!open) {
+    /* closed vessel: the constants are the null space; pin cell 0 (symmetrically, for Cholesky) */
+    ff->pinned = 0;
+    int32_t r0 = 0;
+    if ((rc = sl_csr_set_dirichlet(&ff->L, 1, &r0, NULL, NULL, 1, d))) goto out;
+  }
+  sl_csr_touch(&ff->L);
+  if ((rc = sl_linsolve_create(&ff->ls, "cholmod", d))) goto out;
+  if ((rc = sl_linsolve_factor(ff->ls, &ff->L, d))) rc = sl_diag_prefix(d, rc, "face fluxes: cell Laplacian");
+out:
+  free(ptr), free(rows);
+  if (rc) sl_face_flux_destroy(ff);
+  else *out = ff;
+  return rc;
+}
+
+int sl_face_flux_conservative(sl_face_flux *ff, const double *u, double floor, double *q, double *raw_divergence,
+                              sl_diag *d) {
+  const sl_mesh *m = ff->th->mesh;
+  int nc = m->n_cells, nf = m->n_faces;
+  sl_face_flux_raw(ff, u, q);
+  memset(ff->div, 0, (size_t)nc * sizeof *ff->div);
+  memset(ff->lambda, 0, (size_t)nc * sizeof *ff->lambda); /* reused for the through-flow */
+  for (int f = 0; f < nf; ++f) {
+    int a = m->face_cells[2 * f], b = m->face_cells[2 * f + 1];
+    ff->div[a] += q[f], ff->lambda[a] += fabs(q[f]);
+    if (b >= 0) ff->div[b] -= q[f], ff->lambda[b] += fabs(q[f]);
+  }
+  double dmax = 0.0, smax = 0.0;
+  for (int c = 0; c < nc; ++c) dmax = fmax(dmax, fabs(ff->div[c])), smax = fmax(smax, ff->lambda[c]);
+  if (raw_divergence) *raw_divergence = fmax(smax, floor) > 0.0 ? dmax / fmax(smax, floor) : 0.0;
+  if (smax == 0.0) return 0; /* nothing moves */
+  if (ff->pinned >= 0) ff->div[ff->pinned] = 0.0;
+  int rc = sl_linsolve_solve(ff->ls, &ff->L, ff->div, ff->lambda, d);
+  if (rc) return sl_diag_prefix(d, rc, "face fluxes");
+  for (int f = 0; f < nf; ++f) {
+    if (!ff->adjustable[f]) continue;
+    int a = m->face_cells[2 * f], b = m->face_cells[2 * f + 1];
+    q[f] -= ff->lambda[a] - (b >= 0 ? ff->lambda[b] : 0.0);
+  }
+  return 0;
+}

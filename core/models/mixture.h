@@ -1,0 +1,43 @@
+/* The mixture (drift-flux) model: the flow of core/models/navier_stokes.h in
+ * the volume-averaged velocity j (div j = 0), carrying a solids fraction phi
+ * that moves with j plus the hindered-settling flux (Nigam 1999, eqs
+ * 2.31-2.36; digest of seed 002, section 1.6):
+ *
+ *   rho(phi) (dj/dt + j.grad j) = -grad p + div(2 mu D(j)) + (rho(phi) - rho_f) g,
+ *   div j = 0,   dphi/dt + div(phi j + j_R) = 0,   j_R = phi u_settle(phi) b,
+ *
+ * rho = rho_f + phi (rho_s - rho_f), mu from [closure.viscosity] (inputs
+ * phi, shear_rate, density, mu_f), u_settle from
+ * [closure.hindered_settling] along b, the body force per unit mass
+ * relative to its magnitude g_ref: gravity, plus the centrifugal
+ * acceleration in a rotating frame ([flow] rotation). Dropped against Nigam
+ * (2.31): the j_R j_R stress and the epsilon-acceleration terms (his
+ * conclusion: no effect seen in his simulations), and in j_R the
+ * acceleration dj/dt + j.grad j (small when the particle relaxation time
+ * is short against the flow's).
+ *
+ * Time splitting: every step solves the flow with phi frozen at t_n, then
+ * moves phi from t_n to t_n + dt by the finite-volume transport
+ * (core/transport) with conservative face fluxes of the new velocity
+ * (core/models/face_flux.h), sub-cycled within its CFL limit. A transport
+ * step that fails rejects the whole step, which is retried smaller.
+ *
+ * Scene sections beyond navier_stokes.h's:
+ *   [solid]      density, diameter, phi_max, sphericity
+ *   [closure.hindered_settling]   the settling law (none: no settling)
+ *   [initial]    phi = expression of x, y (cell centroids)
+ *   [boundary.N] phi = the solids fraction of inflow on open boundaries
+ *   [transport]  order = 1|2, limiter = mc|minmod, cfl
+ *   [output]     interface = levels of phi whose heights are reported
+ * Output: the cell field phi and, per output time, the attributes
+ * solids_inventory, solids_conservation_error and interface_height_<k>. */
+#ifndef SLUICE_MODELS_MIXTURE_H
+#define SLUICE_MODELS_MIXTURE_H
+
+#include "core/models/navier_stokes.h"
+
+/* Runs a model = mixture scene; the arguments and returns of sl_ns_run.
+ * res->coupling_summary gets the transport's one-line summary. */
+int sl_mixture_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d);
+
+#endif
