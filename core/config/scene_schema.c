@@ -51,6 +51,7 @@ static const sl_key_spec mesh_keys[] = {
     {"generator", SL_KEY_CHOICE, 0, 0, 0, "interval|rectangle|annulus|inclined_box|gmsh", "how the mesh is made"},
     {"x", SL_KEY_LIST, 0, 0, 0, NULL, "x0, x1 (interval, rectangle)"},
     {"y", SL_KEY_LIST, 0, 0, 0, NULL, "y0, y1 (rectangle)"},
+    {"shear", SL_KEY_REAL, 0, -10.0, 10.0, NULL, "rectangle: x moves by shear (y - y0), a parallelogram"},
     {"r", SL_KEY_LIST, 0, 0, 0, NULL, "r0, r1 (annulus)"},
     {"z", SL_KEY_LIST, 0, 0, 0, NULL, "z0, z1 (annulus)"},
     {"origin", SL_KEY_LIST, 0, 0, 0, NULL, "lower-left corner (inclined_box)"},

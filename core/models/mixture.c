@@ -9,21 +9,76 @@
 
 #include "core/config/expr.h"
 #include "core/models/face_flux.h"
+#include "core/models/stream_function.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/instance.h"
 #include "core/plugin/kinds.h"
+#include "core/transport/migration.h"
 #include "core/transport/transport.h"
 
 enum { MAX_LEVELS = 8, MAX_IN = 32 };
 
-/* The hindered-settling closure as the transport's batch callback: phi
- * varies, every other input is fixed by the scene. */
-typedef struct settling {
-  sl_closure *c; /* NULL: no settling */
-  int in_phi, out_u;
+/* A closure evaluated in batch with some inputs varying (per point) and the
+ * others fixed by the scene; one output and its derivatives. */
+typedef struct bound_closure {
+  sl_closure *c;
   double fixed[MAX_IN];
   double *buf;
   int cap;
+} bound_closure;
+
+/* Evaluates output `out` at n points; var[i] != NULL supplies input i per
+ * point, the others take fixed[i]. dvar (may be NULL) gets d out / d input
+ * `wrt`. */
+static int bound_eval(bound_closure *b, int n, const double *const *var, int out, double *value, int wrt, double *dvar,
+                      sl_diag *d) {
+  const sl_closure_desc *c = b->c->desc;
+  int n_in = c->n_in, n_out = c->n_out;
+  int need = n * (2 * n_in + n_out);
+  if (need > b->cap) {
+    double *nb = realloc(b->buf, (size_t)need * sizeof *nb);
+    if (!nb) return sl_diag_set(d, SL_EFAILED, "closure %s: out of memory", c->name);
+    b->buf = nb, b->cap = need;
+  }
+  const double *in[MAX_IN];
+  double *outs[MAX_IN] = {0}, *dout[MAX_IN * MAX_IN] = {0}, *w = b->buf;
+  for (int i = 0; i < n_in; ++i) {
+    if (var[i]) {
+      in[i] = var[i];
+      continue;
+    }
+    for (int k = 0; k < n; ++k) w[k] = b->fixed[i];
+    in[i] = w, w += n;
+  }
+  for (int k = 0; k < n_out; ++k)
+    if (k == out || !(c->out[k].flags & SL_FIELD_OPTIONAL)) outs[k] = w, w += n;
+  if (dvar)
+    for (int i = 0; i < n_in; ++i) /* a slot for every differentiable input of the asked output (ABI) */
+      if (c->in[i].flags & SL_FIELD_DIFF) dout[out * n_in + i] = w, w += n;
+  sl_error err;
+  sl_eval_args a = {.Q = n, .in = in, .out = outs, .dout = dout, .err = &err};
+  int rc = sl_closure_evaluate(b->c, &a);
+  if (rc) {
+    char label[128], where[64] = "";
+    sl_closure_label(c, label, sizeof label);
+    for (int i = 0; i < n_in; ++i)
+      if (var[i] && err.point >= 0 && err.point < n) {
+        snprintf(where, sizeof where, " at %s = %g", c->in[i].name, var[i][err.point]);
+        break;
+      }
+    return sl_diag_set(d, SL_EFAILED, "closure %s %s%s: %s", label, rc > 0 ? "is outside its validity" : "failed", where,
+                       err.msg);
+  }
+  memcpy(value, outs[out], (size_t)n * sizeof *value);
+  if (dvar) memcpy(dvar, dout[out * n_in + wrt], (size_t)n * sizeof *dvar);
+  return 0;
+}
+
+/* The hindered-settling closure as the transport's batch callback: phi
+ * varies, every other input is fixed by the scene. */
+typedef struct settling {
+  bound_closure b; /* b.c NULL: no settling */
+  int in_phi, out_u;
 } settling;
 
 typedef struct mixture {
@@ -40,6 +95,9 @@ typedef struct mixture {
   sl_transport *tr;
   sl_face_flux *ff;
   double *phi, *trial, *q, *w; /* cells, cells, faces, faces */
+  double *q_acc;               /* [n_faces] the conservative fluxes of the last accepted step */
+  double *psi, *node_psi;      /* [n_vertices], [velocity nodes]: the stream function (2-D) */
+  sl_stream_graph pg;
   double inventory0, inflow, trial_inflow;
   double book[2]; /* inventory0 and inflow as checkpointed */
   long substeps, fallbacks, trial_substeps, trial_fallbacks, advances;
@@ -47,6 +105,12 @@ typedef struct mixture {
   double flux_floor; /* the settling flux scale max |w_f| max |F|: the divergence is measured against it too */
   int n_levels;
   double level[MAX_LEVELS];
+  /* shear-induced migration (optional) */
+  const sl_flow_opts *flow;
+  bound_closure mig, visc; /* [closure.migration]; [closure.viscosity] as mu(phi) */
+  int mig_phi, mig_shear, mig_dc, mig_dmu, visc_phi, visc_out;
+  sl_migration *mg;
+  double *shear;           /* [n_cells] */
   char params[2048];
 } mixture;
 
@@ -54,44 +118,14 @@ typedef struct mixture {
 
 static int settling_fn(void *user, int n, const double *phi, double *u, double *du, sl_diag *d) {
   settling *s = user;
-  if (!s->c) {
+  if (!s->b.c) {
     for (int i = 0; i < n; ++i) u[i] = du[i] = 0.0;
     return 0;
   }
-  const sl_closure_desc *c = s->c->desc;
-  int n_in = c->n_in, n_out = c->n_out;
-  int need = n * (n_in + n_out + n_in);
-  if (need > s->cap) {
-    double *nb = realloc(s->buf, (size_t)need * sizeof *nb);
-    if (!nb) return sl_diag_set(d, SL_EFAILED, "hindered settling: out of memory");
-    s->buf = nb, s->cap = need;
-  }
-  const double *in[MAX_IN];
-  double *out[MAX_IN] = {0}, *dout[MAX_IN * MAX_IN] = {0}, *w = s->buf;
-  for (int i = 0; i < n_in; ++i) {
-    if (i == s->in_phi) {
-      in[i] = phi;
-      continue;
-    }
-    for (int k = 0; k < n; ++k) w[k] = s->fixed[i];
-    in[i] = w, w += n;
-  }
-  for (int k = 0; k < n_out; ++k)
-    if (k == s->out_u || !(c->out[k].flags & SL_FIELD_OPTIONAL)) out[k] = w, w += n;
-  for (int i = 0; i < n_in; ++i) /* a slot for every differentiable input of the asked output (ABI) */
-    if (c->in[i].flags & SL_FIELD_DIFF) dout[s->out_u * n_in + i] = w, w += n;
-  sl_error err;
-  sl_eval_args a = {.Q = n, .in = in, .out = out, .dout = dout, .err = &err};
-  int rc = sl_closure_evaluate(s->c, &a);
-  if (rc) {
-    char label[128];
-    sl_closure_label(c, label, sizeof label);
-    return sl_diag_set(d, SL_EBADINPUT, "closure %s %s at phi = %g: %s", label,
-                       rc > 0 ? "is outside its validity" : "failed", err.point >= 0 && err.point < n ? phi[err.point] : NAN,
-                       err.msg);
-  }
-  for (int i = 0; i < n; ++i) u[i] = out[s->out_u][i], du[i] = dout[s->out_u * n_in + s->in_phi][i];
-  return 0;
+  const double *var[MAX_IN] = {0};
+  var[s->in_phi] = phi;
+  int rc = bound_eval(&s->b, n, var, s->out_u, u, s->in_phi, du, d);
+  return rc ? sl_diag_prefix(d, SL_EBADINPUT, "settling flux") : 0;
 }
 
 /* Binds the closure's inputs to the scene: phi varies; d_p, sphericity,
@@ -101,9 +135,9 @@ static int settling_setup(mixture *x, sl_diag *d) {
   settling *s = &x->st;
   const sl_ini *ini = x->ini;
   if (!sl_ini_find_section(ini, "closure.hindered_settling")) return 0;
-  int rc = sl_closure_from_ini(x->reg, ini, "closure.hindered_settling", &s->c, d);
+  int rc = sl_closure_from_ini(x->reg, ini, "closure.hindered_settling", &s->b.c, d);
   if (rc) return rc;
-  const sl_closure_desc *c = s->c->desc;
+  const sl_closure_desc *c = s->b.c->desc;
   const sl_ini_section *sec = sl_ini_find_section(ini, "closure.hindered_settling");
   char label[128];
   sl_closure_label(c, label, sizeof label);
@@ -129,7 +163,7 @@ static int settling_setup(mixture *x, sl_diag *d) {
                          "provide (it provides phi, d_p, sphericity, rho_s, rho_f, mu_f, gravity, d_vessel)",
                          sec->file, sec->line, label, name);
     if (rc) return sl_diag_prefix(d, rc, "[closure.hindered_settling] %s needs %s", label, name);
-    s->fixed[i] = v;
+    s->b.fixed[i] = v;
   }
   /* phi_max: the closure's packing parameter unless the scene sets [solid] phi_max; both must agree */
   int k = sl_params_find(c, "phi_max");
@@ -137,7 +171,7 @@ static int settling_setup(mixture *x, sl_diag *d) {
   if (k >= 0) {
     char buf[64];
     double cv;
-    sl_params_format_value(c, s->c->params, k, buf, sizeof buf);
+    sl_params_format_value(c, s->b.c->params, k, buf, sizeof buf);
     sl_parse_real(buf, &cv);
     if (!pe) x->phi_max = cv;
     else if (fabs(cv - x->phi_max) > 1e-12)
@@ -202,6 +236,77 @@ static double interface_height(const mixture *x, const double *phi, double level
 
 /* ---- the coupling hooks ----------------------------------------------------- */
 
+/* ---- shear-induced migration ------------------------------------------------- */
+
+static int migration_coef(void *user, int n, const double *phi, const double *g, double *D_c, double *D_mu, sl_diag *d) {
+  mixture *x = user;
+  const double *var[MAX_IN] = {0};
+  var[x->mig_phi] = phi, var[x->mig_shear] = g;
+  int rc = bound_eval(&x->mig, n, var, x->mig_dc, D_c, 0, NULL, d);
+  if (!rc) rc = bound_eval(&x->mig, n, var, x->mig_dmu, D_mu, 0, NULL, d);
+  return rc;
+}
+
+static int migration_lnmu(void *user, int n, const double *phi, double *ln_mu, double *dln_mu, sl_diag *d) {
+  mixture *x = user;
+  const double *var[MAX_IN] = {0};
+  var[x->visc_phi] = phi;
+  int rc = bound_eval(&x->visc, n, var, x->visc_out, ln_mu, x->visc_phi, dln_mu, d);
+  for (int i = 0; i < n && !rc; ++i) dln_mu[i] /= ln_mu[i], ln_mu[i] = log(ln_mu[i]);
+  return rc;
+}
+
+/* [closure.migration] (Phillips et al. 1992) with [closure.viscosity] as
+ * mu(phi) for its viscosity-gradient part. */
+static int migration_setup(mixture *x, sl_diag *d) {
+  const sl_ini *ini = x->ini;
+  const sl_ini_section *sec = sl_ini_find_section(ini, "closure.migration");
+  if (!sec) return 0;
+  int rc = sl_closure_from_ini(x->reg, ini, "closure.migration", &x->mig.c, d);
+  if (rc) return rc;
+  const sl_closure_desc *c = x->mig.c->desc;
+  char label[128];
+  sl_closure_label(c, label, sizeof label);
+  x->mig_phi = sl_closure_input(c, "phi"), x->mig_shear = sl_closure_input(c, "shear_rate");
+  x->mig_dc = sl_closure_output(c, "D_c"), x->mig_dmu = sl_closure_output(c, "D_mu");
+  if (x->mig_phi < 0 || x->mig_shear < 0 || x->mig_dc < 0 || x->mig_dmu < 0 || c->n_in > MAX_IN || c->n_out > MAX_IN)
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [closure.migration] %s does not give D_c and D_mu of phi and shear_rate",
+                       sec->file, sec->line, label);
+  for (int i = 0; i < c->n_in; ++i) {
+    if (i == x->mig_phi || i == x->mig_shear) continue;
+    if (strcmp(c->in[i].name, "d_p") != 0)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [closure.migration] %s needs the input '%s', which the mixture model "
+                                          "does not provide (it provides phi, shear_rate, d_p)",
+                         sec->file, sec->line, label, c->in[i].name);
+    if ((rc = sl_ini_get_real(ini, "solid", "diameter", 1, 0, 1e-9, 1.0, &x->mig.fixed[i], d))) return rc;
+  }
+  sl_migration_opts mo = {.coef = migration_coef, .coef_user = x};
+  const sl_ini_section *vs = sl_ini_find_section(ini, "closure.viscosity");
+  if (vs) {
+    if ((rc = sl_closure_from_ini(x->reg, ini, "closure.viscosity", &x->visc.c, d))) return rc;
+    const sl_closure_desc *v = x->visc.c->desc;
+    sl_closure_label(v, label, sizeof label);
+    x->visc_phi = sl_closure_input(v, "phi"), x->visc_out = sl_closure_output(v, "viscosity");
+    if (x->visc_phi < 0 || x->visc_out < 0 || !(v->in[x->visc_phi].flags & SL_FIELD_DIFF) || v->n_in > MAX_IN)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [closure.migration] needs [closure.viscosity] as a viscosity of phi; "
+                                          "%s is not", vs->file, vs->line, label);
+    for (int i = 0; i < v->n_in; ++i) {
+      if (i == x->visc_phi) continue;
+      const char *name = v->in[i].name;
+      if (strcmp(name, "mu_f") == 0) x->visc.fixed[i] = x->mu_f;
+      else if (strcmp(name, "rho_f") == 0) x->visc.fixed[i] = x->rho_f;
+      else
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [closure.migration] takes mu(phi) from [closure.viscosity], but %s "
+                                            "also depends on '%s'", vs->file, vs->line, label, name);
+    }
+    mo.ln_mu = migration_lnmu, mo.ln_mu_user = x;
+  }
+  if ((rc = sl_migration_create(x->tr, &mo, &x->mg, d))) return rc;
+  if ((rc = sl_transport_set_extra_flux(x->tr, sl_migration_flux, x->mg, d))) return rc;
+  x->shear = calloc((size_t)x->m->n_cells, sizeof *x->shear);
+  return x->shear ? 0 : sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+}
+
 static const double *cell_phi(void *user) { return ((mixture *)user)->phi; }
 
 static int initial_phi(mixture *x, sl_diag *d) {
@@ -237,9 +342,9 @@ static int transport_boundaries(mixture *x, const unsigned char *open, sl_diag *
   return 0;
 }
 
-static int setup(void *user, const sl_th_space *th, int axisymmetric, const unsigned char *open, sl_diag *d) {
+static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, const unsigned char *open, sl_diag *d) {
   mixture *x = user;
-  x->th = th, x->m = th->mesh, x->axi = axisymmetric;
+  x->th = th, x->m = th->mesh, x->axi = flow->axisymmetric, x->flow = flow;
   int nc = x->m->n_cells, nf = x->m->n_faces, rc;
   /* body force and its reference magnitude */
   double gl[3] = {0, 0, 0};
@@ -259,7 +364,7 @@ static int setup(void *user, const sl_th_space *th, int axisymmetric, const unsi
     x->g_ref = x->omega * x->omega * rmax;
   }
   if ((rc = settling_setup(x, d))) return rc;
-  if (x->st.c && x->g_ref == 0.0)
+  if (x->st.b.c && x->g_ref == 0.0)
     return sl_diag_set(d, SL_EBADINPUT, "[closure.hindered_settling] is set but nothing drives settling: give [flow] "
                                         "gravity or rotation");
   /* the transport */
@@ -285,13 +390,21 @@ static int setup(void *user, const sl_th_space *th, int axisymmetric, const unsi
   x->trial = malloc((size_t)nc * sizeof *x->trial);
   x->q = malloc((size_t)nf * sizeof *x->q);
   x->w = calloc((size_t)nf, sizeof *x->w);
-  if (!x->phi || !x->trial || !x->q || !x->w) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
-  if (x->st.c) {
+  x->q_acc = calloc((size_t)nf, sizeof *x->q_acc);
+  if (!x->phi || !x->trial || !x->q || !x->w || !x->q_acc) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+  if (x->m->dim == 2) {
+    x->psi = malloc((size_t)x->m->n_vertices * sizeof *x->psi);
+    x->node_psi = malloc((size_t)th->n_vel * sizeof *x->node_psi);
+    if (!x->psi || !x->node_psi || sl_stream_graph_build(&x->pg, x->m))
+      return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+  }
+  if (x->st.b.c) {
     sl_transport_settling_field(x->tr, body_direction, x, x->w);
     double wmax = 0.0;
     for (int f = 0; f < nf; ++f) wmax = fmax(wmax, fabs(x->w[f]));
     x->flux_floor = wmax * sl_transport_table(x->tr)->F_absmax;
   }
+  if ((rc = migration_setup(x, d))) return rc;
   if ((rc = initial_phi(x, d))) return rc;
   x->inventory0 = sl_transport_mass(x->tr, x->phi);
   /* interface levels */
@@ -307,11 +420,22 @@ static int setup(void *user, const sl_th_space *th, int axisymmetric, const unsi
 
 static int advance(void *user, double t, double dt, const double *u, sl_diag *d) {
   mixture *x = user;
-  int rc = sl_face_flux_conservative(x->ff, u, x->flux_floor, x->q, &x->trial_raw_div, d);
+  /* the divergence is measured against the through-flow, or against the settling flux and 1e-8 of the
+   * largest speed where the mixture hardly moves across faces (a swirl, a closed column) */
+  double umax = 0.0, amax = 0.0;
+  for (int32_t i = 0; i < x->th->p_offset; ++i) umax = fmax(umax, fabs(u[i]));
+  const double *area = sl_transport_face_areas(x->tr);
+  for (int f = 0; f < x->m->n_faces; ++f) amax = fmax(amax, area[f]);
+  int rc = sl_face_flux_conservative(x->ff, u, fmax(x->flux_floor, 1e-8 * umax * amax), x->q, &x->trial_raw_div, d);
   if (rc) return rc;
   memcpy(x->trial, x->phi, (size_t)x->m->n_cells * sizeof *x->trial);
+  if (x->mg) { /* the shear rate of the new velocity drives the migration over the step */
+    if ((rc = sl_flow_cell_diagnostics(x->th, u, x->flow, 0.0, x->shear, NULL, NULL, d)) ||
+        (rc = sl_migration_set_shear_rate(x->mg, x->shear, d)))
+      return rc;
+  }
   sl_transport_stats st;
-  rc = sl_transport_step(x->tr, dt, x->q, x->st.c ? x->w : NULL, x->trial, &st, d);
+  rc = sl_transport_step(x->tr, dt, x->q, x->st.b.c ? x->w : NULL, x->trial, &st, d);
   if (rc) return sl_diag_prefix(d, SL_EFAILED, "solids transport from t = %.6g over dt = %.3g", t, dt);
   x->trial_substeps = st.n_substeps, x->trial_fallbacks = st.n_fallbacks;
   x->trial_inflow = st.boundary_inflow;
@@ -322,6 +446,7 @@ static int advance(void *user, double t, double dt, const double *u, sl_diag *d)
 static void accept(void *user) {
   mixture *x = user;
   memcpy(x->phi, x->trial, (size_t)x->m->n_cells * sizeof *x->phi);
+  memcpy(x->q_acc, x->q, (size_t)x->m->n_faces * sizeof *x->q_acc);
   x->inflow += x->trial_inflow;
   x->substeps += x->trial_substeps, x->fallbacks += x->trial_fallbacks, ++x->advances;
   x->max_raw_div = fmax(x->max_raw_div, x->trial_raw_div);
@@ -330,6 +455,29 @@ static void accept(void *user) {
 static int write(void *user, sl_output *out, sl_diag *d) {
   mixture *x = user;
   int rc = sl_output_write_field(out, "phi", SL_CENTRE_CELL, 1, x->phi, d);
+  if (!rc && x->psi) {
+    /* at the velocity nodes: vertices as computed, edge and centre nodes the mean of their cell's vertices
+       (exact on edge midpoints for psi linear along the edge) */
+    sl_stream_function(x->m, &x->pg, x->q_acc, x->psi);
+    const sl_mesh *m = x->m;
+    int nb = x->th->vel->dofs_per_cell, nvc = m->nv_per_cell;
+    for (int c = 0; c < m->n_cells; ++c) {
+      const int32_t *vd = x->th->vel->cell_dofs + (size_t)c * nb;
+      const int *cv = m->cell_vertices + (size_t)c * nvc;
+      for (int k = 0; k < nb; ++k) {
+        double v = 0.0;
+        if (k < nvc) {
+          v = x->psi[cv[k]];
+        } else if (k - nvc < nvc) {
+          v = 0.5 * (x->psi[cv[k - nvc]] + x->psi[cv[(k - nvc + 1) % nvc]]);
+        } else {
+          for (int j = 0; j < nvc; ++j) v += x->psi[cv[j]] / nvc;
+        }
+        x->node_psi[vd[k]] = v;
+      }
+    }
+    rc = sl_output_write_field(out, "stream_function", SL_CENTRE_NODE, 1, x->node_psi, d);
+  }
   double inv = sl_transport_mass(x->tr, x->phi);
   double err = x->inventory0 + x->inflow > 0.0 ? (inv - x->inventory0 - x->inflow) / (x->inventory0 + x->inflow) : 0.0;
   if (!rc) rc = sl_output_write_scalar(out, "solids_inventory", inv, d);
@@ -367,17 +515,17 @@ static int restore(void *user, const sl_checkpoint *ck, sl_diag *d) {
 
 static int provenance(void *user, sl_provenance_closure *pc, int max, char *buf, size_t len) {
   mixture *x = user;
-  if (!x->st.c || max < 1) return 0;
-  const sl_closure_desc *c = x->st.c->desc;
+  if (!x->st.b.c || max < 1) return 0;
+  const sl_closure_desc *c = x->st.b.c->desc;
   size_t at = 0;
   buf[0] = '\0';
   for (int k = 0; k < c->n_params && at < len; ++k) {
     char v[64];
-    sl_params_format_value(c, x->st.c->params, k, v, sizeof v);
+    sl_params_format_value(c, x->st.b.c->params, k, v, sizeof v);
     at += (size_t)snprintf(buf + at, len - at, "%s = %s\n", c->params[k].name, v);
   }
   pc[0] = (sl_provenance_closure){"closure.hindered_settling", sl_kind_name(c->kind), c->name, c->version,
-                                  x->st.c->library->path, buf};
+                                  x->st.b.c->library->path, buf};
   return 1;
 }
 
@@ -405,8 +553,14 @@ int sl_mixture_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o,
   }
   sl_transport_destroy(x.tr);
   sl_face_flux_destroy(x.ff);
-  free(x.phi), free(x.trial), free(x.q), free(x.w);
-  free(x.st.buf);
-  sl_closure_destroy(x.st.c);
+  free(x.phi), free(x.trial), free(x.q), free(x.w), free(x.q_acc), free(x.psi), free(x.node_psi);
+  sl_stream_graph_free(&x.pg);
+  free(x.st.b.buf);
+  sl_closure_destroy(x.st.b.c);
+  sl_migration_destroy(x.mg);
+  free(x.shear);
+  free(x.mig.buf), free(x.visc.buf);
+  sl_closure_destroy(x.mig.c);
+  sl_closure_destroy(x.visc.c);
   return rc;
 }

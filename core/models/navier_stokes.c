@@ -889,7 +889,7 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
       for (int k = 0; k < r.mesh->n_boundaries && k < 256; ++k)
         if (strcmp(r.mesh->boundary_names[k], r.bcs.b[i].name) == 0) open[k] = 1;
     }
-    if ((rc = r.cpl->setup(r.cpl->user, r.th, axi, open, d))) goto out;
+    if ((rc = r.cpl->setup(r.cpl->user, r.th, &r.prob.opts, open, d))) goto out;
   }
   r.datum = !r.bcs.has_natural;
   for (int i = 0; i < r.bcs.n; ++i)

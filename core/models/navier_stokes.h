@@ -24,6 +24,7 @@
 #include <signal.h>
 
 #include "core/config/ini.h"
+#include "core/assembly/flow.h"
 #include "core/fe/dofmap.h"
 #include "core/io/output.h"
 #include "core/plugin/registry.h"
@@ -38,9 +39,10 @@
 typedef struct sl_ns_coupling {
   void *user;
   double rho_solid;
-  /* After the velocity space exists; open[b] != 0 marks boundaries where the
-   * velocity is free (open, pressure, traction). */
-  int (*setup)(void *user, const sl_th_space *th, int axisymmetric, const unsigned char *open, sl_diag *d);
+  /* After the velocity space exists; `flow` stays valid through the run
+   * (its viscosity gives the shear rate); open[b] != 0 marks boundaries
+   * where the velocity is free (open, pressure, traction). */
+  int (*setup)(void *user, const sl_th_space *th, const sl_flow_opts *flow, const unsigned char *open, sl_diag *d);
   const double *(*cell_phi)(void *user);                 /* the current cell values */
   int (*advance)(void *user, double t, double dt, const double *u, sl_diag *d); /* into a trial state */
   void (*accept)(void *user);                            /* the trial becomes current */

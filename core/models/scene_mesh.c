@@ -75,7 +75,13 @@ int sl_scene_mesh(const sl_ini *ini, sl_mesh **out, sl_diag *d) {
       return sl_mesh_interval(x[0], x[1], n[0], &o.grade_x, out, d);
     case 1: /* rectangle */
       if ((rc = range(ini, "x", x, d)) || (rc = range(ini, "y", y, d)) || (rc = cells(ini, 2, n, d))) return rc;
-      return sl_mesh_rectangle(x[0], x[1], y[0], y[1], n[0], n[1], &o, out, d);
+      double shear;
+      if ((rc = sl_ini_get_real(ini, "mesh", "shear", 0, 0.0, -10.0, 10.0, &shear, d))) return rc;
+      if ((rc = sl_mesh_rectangle(x[0], x[1], y[0], y[1], n[0], n[1], &o, out, d))) return rc;
+      /* a parallelogram: x moves by shear (y - y0); the map has determinant 1, so cells keep their orientation */
+      for (int v = 0; v < (*out)->n_vertices && shear != 0.0; ++v)
+        (*out)->xy[2 * v] += shear * ((*out)->xy[2 * v + 1] - y[0]);
+      return 0;
     case 2: /* annulus: (r, z) box */
       if ((rc = range(ini, "r", x, d)) || (rc = range(ini, "z", y, d)) || (rc = cells(ini, 2, n, d))) return rc;
       if (x[0] < 0.0) {

@@ -263,7 +263,7 @@ int sl_registry_scan(sl_registry *r, sl_diag *d) {
       n++;
     }
     closedir(dir);
-    if (!rc) qsort(names, (size_t)n, sizeof *names, cmp_str); /* deterministic order */
+    if (!rc && n > 1) qsort(names, (size_t)n, sizeof *names, cmp_str); /* deterministic order (names is NULL when empty) */
     for (int k = 0; k < n && !rc; ++k) {
       char path[PATH_MAX];
       snprintf(path, sizeof path, "%s/%s", r->dirs[i], names[k]);

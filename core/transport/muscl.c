@@ -5,7 +5,8 @@
  * uniform 1-D grid the least-squares slope is the central one and this limit
  * is exactly the monotonized-central limiter (van Leer 1977); beta = 1/2
  * gives minmod. Face values inside the neighbours' range are what the
- * bound argument of transport.h needs. */
+ * bound argument of transport.h needs. Across a periodic pair the
+ * neighbour's cell point is translated next to the face. */
 #include <math.h>
 
 #include "core/transport/transport_impl.h"
@@ -22,11 +23,12 @@ void sl_transport_reconstruct(sl_transport *t, const double *phi) {
     double rx = 0, ry = 0, pc = phi[c], lo = pc, hi = pc;
     for (int k = 0; k < nfc; ++k) {
       int f = m->cell_faces[(size_t)c * nfc + k];
-      int j = m->face_cells[2 * f] == c ? m->face_cells[2 * f + 1] : m->face_cells[2 * f];
+      double sh[2];
+      int j = sl_transport_across(t, f, c, sh);
       if (j < 0) continue;
       double dp = phi[j] - pc;
-      rx += (t->xc[2 * j] - xc[0]) * dp;
-      ry += (t->xc[2 * j + 1] - xc[1]) * dp;
+      rx += (t->xc[2 * j] + sh[0] - xc[0]) * dp;
+      ry += (t->xc[2 * j + 1] + sh[1] - xc[1]) * dp;
       if (phi[j] < lo) lo = phi[j];
       if (phi[j] > hi) hi = phi[j];
     }

@@ -19,6 +19,13 @@ void sl_transport_destroy(sl_transport *t) {
   free(t->bc_type);
   free(t->bc_phi);
   free(t->fkind);
+  free(t->partner);
+  free(t->pshift);
+  free(t->xflux);
+  free(t->xflux2);
+  free(t->xin);
+  free(t->xout);
+  free(t->xadv);
   free(t->res);
   free(t->cur);
   free(t->stage);
@@ -98,14 +105,22 @@ static int build_geometry(sl_transport *t, sl_diag *d) {
     }
     t->fkind[f] = m->face_cells[2 * f + 1] >= 0 ? SL_FACE_INTERIOR : SL_FACE_WALL;
   }
-  /* Least-squares gradient matrices sum_j d d^T over face neighbours. */
+  sl_transport_build_lsq(t);
+  return 0;
+}
+
+/* Least-squares gradient matrices sum_j d d^T over the face neighbours
+ * (across periodic pairs too, at their translated points). */
+void sl_transport_build_lsq(sl_transport *t) {
+  const sl_mesh *m = t->m;
   for (int c = 0; c < m->n_cells; ++c) {
     double a = 0, b = 0, e = 0;
     for (int k = 0; k < m->nf_per_cell; ++k) {
       int f = m->cell_faces[(size_t)c * m->nf_per_cell + k];
-      int j = m->face_cells[2 * f] == c ? m->face_cells[2 * f + 1] : m->face_cells[2 * f];
+      double sh[2];
+      int j = sl_transport_across(t, f, c, sh);
       if (j < 0) continue;
-      double dx = t->xc[2 * j] - t->xc[2 * c], dy = t->xc[2 * j + 1] - t->xc[2 * c + 1];
+      double dx = t->xc[2 * j] + sh[0] - t->xc[2 * c], dy = t->xc[2 * j + 1] + sh[1] - t->xc[2 * c + 1];
       a += dx * dx, b += dx * dy, e += dy * dy;
     }
     double *L = t->lsq + 3 * c;
@@ -118,7 +133,6 @@ static int build_geometry(sl_transport *t, sl_diag *d) {
         L[0] = e / det, L[1] = -b / det, L[2] = a / det;
     }
   }
-  return 0;
 }
 
 int sl_transport_create(const sl_mesh *m, const sl_transport_opts *o, sl_transport **out, sl_diag *d) {
@@ -178,6 +192,9 @@ int sl_transport_set_boundary(sl_transport *t, int b, sl_transport_bc type, doub
   if (b < 0 || b >= m->n_boundaries)
     return sl_diag_set(d, SL_EBADINPUT, "transport: boundary %d does not exist (the mesh has %d)", b,
                        m->n_boundaries);
+  if (t->bc_type[b] == SL_TRANSPORT_PERIODIC_)
+    return sl_diag_set(d, SL_EBADINPUT, "transport: boundary '%s' is periodic; it cannot become a %s",
+                       m->boundary_names[b], type == SL_TRANSPORT_OPEN ? "open boundary" : "wall");
   if (type != SL_TRANSPORT_WALL && type != SL_TRANSPORT_OPEN)
     return sl_diag_set(d, SL_EBADINPUT, "transport: boundary '%s': unknown type %d", m->boundary_names[b], (int)type);
   if (type == SL_TRANSPORT_OPEN && !(phi_outside >= 0 && phi_outside <= t->o.phi_max))

@@ -44,7 +44,12 @@
  * does not carry over exactly, a sub-step whose MUSCL result leaves [0,
  * phi_max] (beyond 1e-12) is redone at first order and counted.
  *
- * Conservation: each face flux is computed once and given to both cells, so
+ * Optional: an extra face flux evaluated from phi at every stage (the
+ * shear-induced migration flux, migration.h; sl_transport_set_extra_flux),
+ * and periodic boundary pairs (sl_transport_set_periodic).
+ *
+ * Conservation: each face flux (a periodic pair's and the extra flux
+ * included) is computed once and given to both cells, so
  * sum_i V_i phi_i changes only by the flux through open boundaries, exactly
  * up to round-off. Round-off excursions past the bounds (a MUSCL stage on
  * triangles gave -4e-32) are set back to the bound, so that a closure asked
@@ -78,7 +83,21 @@ typedef enum sl_transport_limiter {
 typedef enum sl_transport_bc {
   SL_TRANSPORT_WALL = 0, /* zero total flux (the default on every boundary) */
   SL_TRANSPORT_OPEN      /* Godunov flux against the exterior state phi_outside */
-} sl_transport_bc;
+} sl_transport_bc;       /* periodic pairs: sl_transport_set_periodic */
+
+/* An extra solids flux through the faces (the shear-induced migration flux
+ * of migration.h, or any other), evaluated from the current cell values at
+ * every stage and added to the Godunov flux. The callback fills flux[f]
+ * for every face f: the solids volume per unit time through f along its
+ * normal, out of face_cells[2f], in the units of q phi (int N.n dA,
+ * r-weighted without 2 pi when axisymmetric). Only faces between two cells
+ * use it (interior faces, and the first face of each periodic pair: its
+ * flux goes into the owner of the paired face); walls and open boundaries
+ * carry none. *dt_stable is the largest forward-Euler step for which the
+ * flux keeps phi >= 0 and does not oscillate (+infinity when it is zero
+ * everywhere); the transport multiplies it by cfl. Returns 0 or an SL_E*
+ * code with d set. */
+typedef int (*sl_transport_extra_fn)(void *user, const double *phi, double *flux, double *dt_stable, sl_diag *d);
 
 typedef struct sl_transport_opts {
   double phi_max;                 /* maximum packing, (0, 1] */
@@ -102,6 +121,11 @@ typedef struct sl_transport_stats {
                              excluded): the discrete divergence relative to the flow's scale */
   double clamped;         /* sum |change| V of round-off excursions (< 1e-12) set back to 0 or
                              phi_max, and of values below 1e-250 set to 0: bounds the mass they move */
+  /* With an extra flux (sl_transport_set_extra_flux): */
+  double dt_extra;        /* the smallest stable step it reported at a sub-step's start, cfl included
+                             (+infinity without an extra flux) */
+  int n_extra_limited;    /* extra face fluxes scaled down to keep 0 <= phi <= phi_max (bounds limiter) */
+  double extra_limited;   /* the solids volume those scalings held back (int r dA units) */
 } sl_transport_stats;
 
 typedef struct sl_transport sl_transport;
@@ -113,8 +137,57 @@ int sl_transport_create(const sl_mesh *m, const sl_transport_opts *o, sl_transpo
 void sl_transport_destroy(sl_transport *t);
 
 /* Boundary `b` (a mesh boundary index) becomes a wall or an open boundary
- * with exterior state phi_outside in [0, phi_max]. */
+ * with exterior state phi_outside in [0, phi_max]. A boundary of a periodic
+ * pair is refused. */
 int sl_transport_set_boundary(sl_transport *t, int b, sl_transport_bc type, double phi_outside, sl_diag *d);
+
+/* Periodic pair: the faces of mesh boundaries a and b, which must match by
+ * one translation s (x_b = x_a + s), become interior faces between their two
+ * cells: Godunov flux, MUSCL reconstruction (the neighbour's cell point
+ * taken at x - s or x + s), extra (migration) flux with the translated cell
+ * point. s is the difference of the boundaries' length-weighted mean face
+ * points, refined to the median of the differences of the face pairs that
+ * match within a quarter of the smallest face (so one misplaced face does
+ * not shift it for the others); every face of a must have a partner on b
+ * whose face point (and,
+ * in 2-D, both vertices) lies at x_a + s within 1e-9 of the mesh's extent
+ * (its bounding-box diagonal), one to one, else SL_EBADINPUT naming the
+ * boundary, the face and where its partner was sought. In an axisymmetric
+ * geometry the translation must be along z (s_r = 0). a and b must differ
+ * and not already be periodic; an open or wall boundary may be made
+ * periodic. Several pairs may be set (a doubly periodic box).
+ *
+ * The face flux q and settling coefficient w of a pair are the mean of
+ * what the caller gives on its two faces, q[fa] and -q[fb] (their normals
+ * are opposite): fill both, as a periodic finite-element velocity does. */
+int sl_transport_set_periodic(sl_transport *t, int boundary_a, int boundary_b, sl_diag *d);
+/* The same with the boundaries' names (sl_mesh_boundary_id's errors). */
+int sl_transport_set_periodic_named(sl_transport *t, const char *a, const char *b, sl_diag *d);
+/* The translation s of the pair that boundary b belongs to, from its first
+ * boundary to its second; returns 0, or SL_EBADINPUT when b is not periodic. */
+int sl_transport_periodic_shift(const sl_transport *t, int b, double s[2], sl_diag *d);
+
+/* Installs (fn != NULL) or removes (fn == NULL) the extra face flux; see
+ * sl_transport_extra_fn. With one, sl_transport_step chooses each
+ * sub-step's length from the state at its start: the largest h <= min(the
+ * advective stable step, cfl * the extra flux's dt_stable) that splits the
+ * rest of the outer step into equal parts. The second SSP-RK2 stage uses
+ * the flux of the stage state at that h.
+ *
+ * Bounds. The extra flux is limited face by face, conservatively (one
+ * factor per face, for both cells), as in flux-corrected transport
+ * (Zalesak 1979, J. Comput. Phys. 31:335): in each stage, with phi_a the
+ * cell value after the Godunov fluxes alone, the extra inflows of a cell
+ * may raise it by at most half of phi_max - phi_a and its extra outflows
+ * lower it by at most phi_a. So every stage stays in [0, phi_max] and a
+ * cell below phi_max never reaches it through the extra flux (where the
+ * migration flux's ln mu would be infinite). A face flux is scaled by the
+ * smaller of its sender's and its receiver's factor. Within the stable
+ * step a flux like the migration one (positive coefficients: migration.h)
+ * needs no limiting at the lower bound; at the upper one it acts only in
+ * a transient that drives a cell towards phi_max faster than half the gap
+ * per stage. The stats count the scaled faces and the volume held back. */
+int sl_transport_set_extra_flux(sl_transport *t, sl_transport_extra_fn fn, void *user, sl_diag *d);
 
 /* Geometry as the scheme sees it: cell volumes, face areas, the cell and
  * face points where the reconstruction is taken (r-weighted centroids when
@@ -142,7 +215,9 @@ double sl_transport_stable_dt(const sl_transport *t, const double *q, const doub
  * phi is left as it was: SL_EBADINPUT for a bad dt, non-finite q or w, or
  * phi outside [0, phi_max] on entry (the cell is named); SL_EFAILED when
  * more than max_substeps sub-steps are needed or a first-order sub-step
- * leaves the bounds (face fluxes not divergence-free). st may be NULL. */
+ * leaves the bounds (face fluxes not divergence-free); the extra flux
+ * callback's code (its message prefixed) when it fails or gives a
+ * non-finite flux or a dt_stable that is not > 0. st may be NULL. */
 int sl_transport_step(sl_transport *t, double dt, const double *q, const double *w, double *phi,
                       sl_transport_stats *st, sl_diag *d);
 

@@ -1,0 +1,26 @@
+/* The stream function at the vertices from the conservative face fluxes:
+ * psi(b) - psi(a) = q_f across the face from a to b (its vertices in the
+ * owner's counter-clockwise order), psi = 0 at vertex 0. This is psi with
+ * u = d psi/dy, v = -d psi/dx in the plane, and the Stokes stream function
+ * (r-weighted fluxes, per radian) when axisymmetric. Well defined because
+ * the fluxes of every cell sum to zero (and the mesh is connected): a
+ * breadth-first walk over the vertex-face graph visits each vertex once. */
+#ifndef SLUICE_MODELS_STREAM_FUNCTION_H
+#define SLUICE_MODELS_STREAM_FUNCTION_H
+
+#include "core/mesh/mesh.h"
+
+typedef struct sl_stream_graph {
+  int *start, *face; /* vertex -> its faces (CSR) */
+  int *queue;
+  unsigned char *seen;
+} sl_stream_graph;
+
+/* The vertex-face graph of a 2-D mesh; 0 or -1 (out of memory: free it). */
+int sl_stream_graph_build(sl_stream_graph *g, const sl_mesh *m);
+void sl_stream_graph_free(sl_stream_graph *g);
+
+/* psi[n_vertices] from the face fluxes q[n_faces]. */
+void sl_stream_function(const sl_mesh *m, sl_stream_graph *g, const double *q, double *psi);
+
+#endif
