@@ -199,6 +199,40 @@ int sl_mesh_region_id(const sl_mesh *m, const char *name, int *id, sl_diag *d);
 
 const char *sl_cell_type_name(sl_cell_type t);
 
+/* ---- periodic boundaries ------------------------------------------------ */
+
+/* Two boundaries that are translates of each other: `partner` is the image
+ * of `boundary` under x -> x + shift, vertex for vertex and face for face.
+ * The pairing behind periodic dof maps (core/fe/dofmap.h); a finite-volume
+ * scheme can link the paired faces the same way. */
+typedef struct sl_mesh_periodic {
+  int boundary, partner; /* boundary ids */
+  double shift[2];       /* partner = boundary + shift */
+  int n_vertices;
+  int *vertex_pairs;     /* [2 * n_vertices]: (vertex of boundary, its image on partner),
+                            ascending in the first */
+  int n_faces;
+  int *face_pairs;       /* [2 * n_faces]: (face of boundary, its image on partner),
+                            ascending in the first */
+} sl_mesh_periodic;
+
+/* Relative tolerance of the match: two points coincide when they differ by
+ * at most this times the diagonal of the mesh's bounding box, per
+ * coordinate. */
+#define SL_MESH_PERIODIC_TOL 1e-9
+
+/* Finds the translation (from the boundaries' bounding boxes) and pairs
+ * every vertex and face of `partner` with one of `boundary`. SL_EBADINPUT,
+ * with both names in the message, for an unknown name (did-you-mean), a
+ * boundary paired with itself, different vertex or face counts, boundaries
+ * that are not translates of each other (extents differ: rotated or
+ * reflected), or a vertex of `partner` with no vertex of `boundary` at
+ * x - shift (the point and where its partner was expected are named).
+ * SL_EFAILED: out of memory. On error *out is zeroed. */
+int sl_mesh_periodic_match(const sl_mesh *m, const char *boundary, const char *partner, sl_mesh_periodic *out,
+                           sl_diag *d);
+void sl_mesh_periodic_free(sl_mesh_periodic *p);
+
 /* ---- geometry ---------------------------------------------------------- */
 
 /* Planar area of cell c (length in 1-D). Exact for straight-sided cells:
