@@ -41,9 +41,12 @@
 typedef struct sl_face_flux sl_face_flux;
 
 /* adjustable[b] != 0 for the mesh boundaries b (indices into the mesh's
- * boundary names) whose faces the correction may change; NULL: none. */
-int sl_face_flux_create(const sl_th_space *th, int axisymmetric, const unsigned char *adjustable,
-                        sl_face_flux **out, sl_diag *d);
+ * boundary names) whose faces the correction may change; NULL: none.
+ * pairs[2k], pairs[2k + 1] are the two faces of a periodic seam (n_pairs of
+ * them): one face between their cells, whose flux is the mean of both
+ * sides' (q[fb] = -q[fa] on return). */
+int sl_face_flux_create(const sl_th_space *th, int axisymmetric, const unsigned char *adjustable, const int *pairs,
+                        int n_pairs, sl_face_flux **out, sl_diag *d);
 void sl_face_flux_destroy(sl_face_flux *ff);
 
 /* The raw fluxes of the velocity u (combined numbering) into q[n_faces]. */

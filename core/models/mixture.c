@@ -342,7 +342,27 @@ static int transport_boundaries(mixture *x, const unsigned char *open, sl_diag *
   return 0;
 }
 
-static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, const unsigned char *open, sl_diag *d) {
+/* Periodic pairs: the transport pairs the faces itself; the face fluxes get
+ * the same pairs from the mesh's match. */
+static int periodic_setup(mixture *x, const unsigned char *open, const sl_periodic_pair *pairs, int n_pairs,
+                          sl_diag *d) {
+  int rc = 0, n = 0, *fp = NULL;
+  for (int k = 0; k < n_pairs && !rc; ++k) {
+    sl_mesh_periodic pm;
+    if ((rc = sl_transport_set_periodic_named(x->tr, pairs[k].boundary, pairs[k].partner, d))) break;
+    if ((rc = sl_mesh_periodic_match(x->m, pairs[k].boundary, pairs[k].partner, &pm, d))) break;
+    int *nf = realloc(fp, (size_t)2 * (n + pm.n_faces) * sizeof *nf);
+    if (!nf) rc = sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+    else memcpy(nf + 2 * n, pm.face_pairs, (size_t)2 * pm.n_faces * sizeof *nf), fp = nf, n += pm.n_faces;
+    sl_mesh_periodic_free(&pm);
+  }
+  if (!rc) rc = sl_face_flux_create(x->th, x->axi, open, fp, n, &x->ff, d);
+  free(fp);
+  return rc;
+}
+
+static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, const unsigned char *open,
+                 const sl_periodic_pair *pairs, int n_pairs, sl_diag *d) {
   mixture *x = user;
   x->th = th, x->m = th->mesh, x->axi = flow->axisymmetric, x->flow = flow;
   int nc = x->m->n_cells, nf = x->m->n_faces, rc;
@@ -385,7 +405,7 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
                                  .settling_user = &x->st};
   if ((rc = sl_transport_create(x->m, &x->topts, &x->tr, d))) return sl_diag_prefix(d, rc, "solids transport");
   if ((rc = transport_boundaries(x, open, d))) return rc;
-  if ((rc = sl_face_flux_create(th, x->axi, open, &x->ff, d))) return rc;
+  if ((rc = periodic_setup(x, open, pairs, n_pairs, d))) return rc;
   x->phi = malloc((size_t)nc * sizeof *x->phi);
   x->trial = malloc((size_t)nc * sizeof *x->trial);
   x->q = malloc((size_t)nf * sizeof *x->q);
@@ -394,7 +414,7 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
   if (!x->phi || !x->trial || !x->q || !x->w || !x->q_acc) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
   if (x->m->dim == 2) {
     x->psi = malloc((size_t)x->m->n_vertices * sizeof *x->psi);
-    x->node_psi = malloc((size_t)th->n_vel * sizeof *x->node_psi);
+    x->node_psi = malloc((size_t)th->vel->n_nodes * sizeof *x->node_psi);
     if (!x->psi || !x->node_psi || sl_stream_graph_build(&x->pg, x->m))
       return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
   }
@@ -462,7 +482,7 @@ static int write(void *user, sl_output *out, sl_diag *d) {
     const sl_mesh *m = x->m;
     int nb = x->th->vel->dofs_per_cell, nvc = m->nv_per_cell;
     for (int c = 0; c < m->n_cells; ++c) {
-      const int32_t *vd = x->th->vel->cell_dofs + (size_t)c * nb;
+      const int32_t *vd = x->th->vel->cell_nodes + (size_t)c * nb;
       const int *cv = m->cell_vertices + (size_t)c * nvc;
       for (int k = 0; k < nb; ++k) {
         double v = 0.0;

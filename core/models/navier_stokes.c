@@ -261,8 +261,8 @@ static void physics_opts(physics *ph, sl_flow_opts *o) {
 
 /* ---- boundary conditions ------------------------------------------------- */
 
-typedef enum bc_type { BC_WALL, BC_VELOCITY, BC_SLIP, BC_AXIS, BC_OPEN, BC_PRESSURE, BC_TRACTION } bc_type;
-static const char *const bc_types = "wall|velocity|slip|axis|open|pressure|traction";
+typedef enum bc_type { BC_WALL, BC_VELOCITY, BC_SLIP, BC_AXIS, BC_OPEN, BC_PRESSURE, BC_TRACTION, BC_PERIODIC } bc_type;
+static const char *const bc_types = "wall|velocity|slip|axis|open|pressure|traction|periodic";
 
 typedef struct bc {
   const char *name; /* the mesh's boundary name */
@@ -278,11 +278,14 @@ typedef struct bc_set {
   bc *b;
   int time_dependent;
   int has_natural; /* an open, pressure or traction boundary: no pressure datum */
+  int n_pairs;     /* periodic pairs (boundary, partner), each once */
+  sl_periodic_pair *pairs;
 } bc_set;
 
 static void bc_set_free(bc_set *s) {
   for (int i = 0; i < s->n; ++i) expr_vec_free(&s->b[i].velocity);
   free(s->b);
+  free(s->pairs);
   memset(s, 0, sizeof *s);
 }
 
@@ -302,7 +305,8 @@ static int aligned_normal(const sl_mesh *m, int id) {
 static int bc_setup(const sl_ini *ini, const sl_mesh *m, int n_comp, int axi, int solids, bc_set *s, sl_diag *d) {
   memset(s, 0, sizeof *s);
   s->b = calloc((size_t)m->n_boundaries, sizeof *s->b);
-  if (!s->b) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  s->pairs = calloc((size_t)m->n_boundaries, sizeof *s->pairs);
+  if (!s->b || !s->pairs) return sl_diag_set(d, SL_EFAILED, "out of memory");
   s->n = m->n_boundaries;
   for (int i = 0; i < s->n; ++i) s->b[i].name = m->boundary_names[i], s->b[i].type = BC_WALL;
   for (int k = 0; k < ini->n_sections; ++k) {
@@ -311,8 +315,8 @@ static int bc_setup(const sl_ini *ini, const sl_mesh *m, int n_comp, int axi, in
     const char *name = sec->name + 9;
     int id, rc = sl_mesh_boundary_id(m, name, &id, d);
     if (rc) return sl_diag_prefix(d, rc, "%s:%d: [%s]", sec->file, sec->line, sec->name);
-    static const char *const keys[] = {"type", "velocity", "pressure", "traction", "phi"};
-    if ((rc = sl_ini_check_keys(ini, sec->name, keys, solids ? 5 : 4, d))) return rc;
+    static const char *const keys[] = {"type", "velocity", "pressure", "traction", "partner", "phi"};
+    if ((rc = sl_ini_check_keys(ini, sec->name, keys, solids ? 6 : 5, d))) return rc;
     bc *b = &s->b[id];
     int type;
     if ((rc = sl_ini_get_choice(ini, sec->name, "type", 1, 0, bc_types, &type, d))) return rc;
@@ -348,7 +352,58 @@ static int bc_setup(const sl_ini *ini, const sl_mesh *m, int n_comp, int axi, in
       s->has_natural = 1;
     } else if (b->type == BC_OPEN) {
       s->has_natural = 1;
+    } else if (b->type == BC_PERIODIC) {
+      /* the partner is the same boundary translated: its dofs become this boundary's */
+      const char *partner;
+      int pid;
+      if ((rc = sl_ini_get_string(ini, sec->name, "partner", 0, "", &partner, d))) return rc;
+      if (!*partner) continue; /* the partner side of a pair named elsewhere: checked below */
+      if ((rc = sl_mesh_boundary_id(m, partner, &pid, d)))
+        return sl_diag_prefix(d, rc, "%s:%d: [%s] partner", sec->file, sec->line, sec->name);
+      if (pid == id)
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] partner: a boundary cannot be its own partner", sec->file,
+                           sec->line, sec->name);
+      sl_mesh_periodic pm;
+      if ((rc = sl_mesh_periodic_match(m, name, partner, &pm, d)))
+        return sl_diag_prefix(d, rc, "%s:%d: [%s] type = periodic", sec->file, sec->line, sec->name);
+      double shift_r = pm.shift[0];
+      sl_mesh_periodic_free(&pm);
+      if (axi && fabs(shift_r) > 0.0)
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] type = periodic: an axisymmetric scene repeats along z only, "
+                                            "and '%s' is '%s' moved by %g in r", sec->file, sec->line, sec->name,
+                           partner, name, shift_r);
+      s->pairs[s->n_pairs++] = (sl_periodic_pair){m->boundary_names[id], m->boundary_names[pid]};
     }
+  }
+  /* every periodic boundary belongs to exactly one pair; the partner of a pair is periodic too */
+  for (int k = 0; k < s->n_pairs; ++k) {
+    int pid = -1;
+    sl_diag quiet;
+    if (sl_mesh_boundary_id(m, s->pairs[k].partner, &pid, &quiet)) pid = -1;
+    for (int j = 0; j < k; ++j)
+      if (s->pairs[j].boundary == s->pairs[k].partner && s->pairs[j].partner == s->pairs[k].boundary) {
+        s->pairs[k--] = s->pairs[--s->n_pairs]; /* written on both sides: keep one */
+        pid = -1;
+        break;
+      }
+    if (pid < 0) continue;
+    char psec[300];
+    snprintf(psec, sizeof psec, "boundary.%s", s->pairs[k].partner);
+    if (sl_ini_find_section(ini, psec) && s->b[pid].type != BC_PERIODIC) {
+      const sl_ini_section *ps = sl_ini_find_section(ini, psec);
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] is the periodic partner of '%s' and cannot have another type",
+                         ps->file, ps->line, psec, s->pairs[k].boundary);
+    }
+    s->b[pid].type = BC_PERIODIC;
+  }
+  for (int i = 0; i < s->n; ++i) {
+    if (s->b[i].type != BC_PERIODIC) continue;
+    int paired = 0;
+    for (int k = 0; k < s->n_pairs; ++k)
+      paired |= strcmp(s->pairs[k].boundary, s->b[i].name) == 0 || strcmp(s->pairs[k].partner, s->b[i].name) == 0;
+    if (!paired)
+      return sl_diag_set(d, SL_EBADINPUT, "[boundary.%s] type = periodic needs partner = <the matching boundary>",
+                         s->b[i].name);
   }
   /* Unnamed boundaries of an axisymmetric mesh called "axis" are the axis. */
   for (int i = 0; i < s->n && axi; ++i)
@@ -391,7 +446,7 @@ static int bc_apply(const bc_set *s, const sl_th_space *th, sl_constraints *con,
           bc_eval be = {b->velocity.e[c], t};
           rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, c, 0), bc_value, &be, 0.0, d);
         }
-      if (pass == 2 && b->type == BC_WALL)
+      if (pass == 2 && b->type == BC_WALL) /* periodic boundaries carry no condition */
         for (int c = 0; c < th->n_comp && !rc; ++c)
           rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, c, 0), NULL, NULL, 0.0, d);
     }
@@ -438,13 +493,13 @@ typedef struct ns_run {
 static int write_state(ns_run *r, double t, const double *u, sl_diag *d) {
   double t0 = wall();
   const sl_th_space *th = r->th;
-  int32_t nv = th->n_vel;
   int rc = sl_output_begin_step(r->out, t, d);
   if (!rc && (r->fields & F_VELOCITY)) {
     /* in the frame: in-plane components, then the out-of-plane/swirl one as component 2 */
-    memset(r->work, 0, (size_t)nv * 3 * sizeof *r->work);
-    for (int32_t i = 0; i < nv; ++i)
-      for (int c = 0; c < th->n_comp; ++c) r->work[3 * i + (c < th->mesh->dim ? c : 2)] = u[sl_th_vel_dof(th, c, i)];
+    memset(r->work, 0, (size_t)th->vel->n_nodes * 3 * sizeof *r->work);
+    for (int32_t i = 0; i < th->vel->n_nodes; ++i)
+      for (int c = 0; c < th->n_comp; ++c)
+        r->work[3 * i + (c < th->mesh->dim ? c : 2)] = u[sl_th_vel_dof(th, c, th->vel->node_dof[i])];
     rc = sl_output_write_field(r->out, "velocity", SL_CENTRE_NODE, 3, r->work, d);
   }
   if (!rc && (r->fields & F_PRESSURE)) {
@@ -460,19 +515,19 @@ static int write_state(ns_run *r, double t, const double *u, sl_diag *d) {
     const sl_mesh *m = th->mesh;
     int nb = th->vel->dofs_per_cell, nvc = m->nv_per_cell;
     for (int c = 0; c < m->n_cells; ++c) {
-      const int32_t *vd = th->vel->cell_dofs + (size_t)c * nb;
+      const int32_t *vd = th->vel->cell_nodes + (size_t)c * nb, *pn = th->pres->node_dof;
       const int *cv = m->cell_vertices + (size_t)c * nvc;
       for (int k = 0; k < nb; ++k) {
         double v;
         if (k < nvc) {
-          v = p[cv[k]];
+          v = p[pn[cv[k]]];
         } else if (m->dim == 1 || (m->cell_type == SL_CELL_QUAD4 && k == 8)) {
           v = 0.0;
-          for (int j = 0; j < nvc; ++j) v += p[cv[j]];
+          for (int j = 0; j < nvc; ++j) v += p[pn[cv[j]]];
           v /= nvc;
         } else {
           int f = k - nvc;
-          v = 0.5 * (p[cv[f]] + p[cv[(f + 1) % nvc]]);
+          v = 0.5 * (p[pn[cv[f]]] + p[pn[cv[(f + 1) % nvc]]]);
         }
         r->work[vd[k]] = v - mean;
       }
@@ -568,13 +623,14 @@ static int open_output(ns_run *r, const sl_ns_run_opts *o, sl_diag *d) {
   const sl_th_space *th = r->th;
   static const char *const topo[] = {[SL_CELL_LINE2] = "Edge_3", [SL_CELL_TRI3] = "Triangle_6",
                                      [SL_CELL_QUAD4] = "Quadrilateral_9"};
-  const double *coords = th->vel->xy;
+  /* the geometric nodes: periodic boundaries keep both sides in the file */
+  const double *coords = th->vel->node_xy;
   if (th->mesh->dim == 1) { /* the writer takes n x dim coordinates */
-    for (int32_t i = 0; i < th->n_vel; ++i) r->work[i] = th->vel->xy[2 * i];
+    for (int32_t i = 0; i < th->vel->n_nodes; ++i) r->work[i] = th->vel->node_xy[2 * i];
     coords = r->work;
   }
-  rc = sl_output_write_mesh(r->out, th->mesh->dim, th->n_vel, coords, th->mesh->n_cells, th->vel->dofs_per_cell,
-                            th->vel->cell_dofs, topo[th->mesh->cell_type], d);
+  rc = sl_output_write_mesh(r->out, th->mesh->dim, th->vel->n_nodes, coords, th->mesh->n_cells,
+                            th->vel->dofs_per_cell, th->vel->cell_nodes, topo[th->mesh->cell_type], d);
   if (rc) return rc;
   /* provenance */
   char *ini_text = sl_ini_to_string(r->ini);
@@ -868,9 +924,9 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
                      geometry == 0 ? "line" : geometry == 1 ? "planar" : "axisymmetric", dim);
     goto out;
   }
-  if ((rc = sl_th_create(r.mesh, dim + (third ? 1 : 0), &r.th, d))) goto out;
+  if ((rc = bc_setup(ini, r.mesh, dim + (third ? 1 : 0), axi, r.cpl != NULL, &r.bcs, d))) goto out;
+  if ((rc = sl_th_create_periodic(r.mesh, dim + (third ? 1 : 0), r.bcs.pairs, r.bcs.n_pairs, &r.th, d))) goto out;
   if ((rc = physics_setup(ini, reg, r.th->n_comp, dim, axi, r.cpl, &r.ph, d))) goto out;
-  if ((rc = bc_setup(ini, r.mesh, r.th->n_comp, axi, r.cpl != NULL, &r.bcs, d))) goto out;
   if ((rc = sl_flow_problem_init(&r.prob, r.th, d))) goto out;
   physics_opts(&r.ph, &r.prob.opts);
   r.prob.opts.convection = convection;
@@ -889,7 +945,7 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
       for (int k = 0; k < r.mesh->n_boundaries && k < 256; ++k)
         if (strcmp(r.mesh->boundary_names[k], r.bcs.b[i].name) == 0) open[k] = 1;
     }
-    if ((rc = r.cpl->setup(r.cpl->user, r.th, &r.prob.opts, open, d))) goto out;
+    if ((rc = r.cpl->setup(r.cpl->user, r.th, &r.prob.opts, open, r.bcs.pairs, r.bcs.n_pairs, d))) goto out;
   }
   r.datum = !r.bcs.has_natural;
   for (int i = 0; i < r.bcs.n; ++i)
@@ -907,7 +963,7 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
                              .scale = 1e-12,
                              .rtol_residual = 1e-10};
   u = calloc((size_t)r.th->n_dofs, sizeof *u);
-  r.work = malloc((size_t)r.th->n_vel * 3 * sizeof *r.work);
+  r.work = malloc((size_t)r.th->vel->n_nodes * 3 * sizeof *r.work);
   r.cellbuf = malloc((size_t)r.mesh->n_cells * 3 * sizeof *r.cellbuf);
   if (!u || !r.work || !r.cellbuf) {
     rc = sl_diag_set(d, SL_EFAILED, "out of memory for %d unknowns", (int)r.th->n_dofs);

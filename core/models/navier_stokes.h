@@ -41,8 +41,10 @@ typedef struct sl_ns_coupling {
   double rho_solid;
   /* After the velocity space exists; `flow` stays valid through the run
    * (its viscosity gives the shear rate); open[b] != 0 marks boundaries
-   * where the velocity is free (open, pressure, traction). */
-  int (*setup)(void *user, const sl_th_space *th, const sl_flow_opts *flow, const unsigned char *open, sl_diag *d);
+   * where the velocity is free (open, pressure, traction); pairs are the
+   * periodic boundary pairs. */
+  int (*setup)(void *user, const sl_th_space *th, const sl_flow_opts *flow, const unsigned char *open,
+               const sl_periodic_pair *pairs, int n_pairs, sl_diag *d);
   const double *(*cell_phi)(void *user);                 /* the current cell values */
   int (*advance)(void *user, double t, double dt, const double *u, sl_diag *d); /* into a trial state */
   void (*accept)(void *user);                            /* the trial becomes current */
