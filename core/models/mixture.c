@@ -99,6 +99,7 @@ typedef struct mixture {
   double *psi, *node_psi;      /* [n_vertices], [velocity nodes]: the stream function (2-D) */
   sl_stream_graph pg;
   double inventory0, inflow, trial_inflow;
+  double inventory; /* of the current state: the summary needs it after the mesh is gone */
   double book[2]; /* inventory0 and inflow as checkpointed */
   long substeps, fallbacks, trial_substeps, trial_fallbacks, advances;
   double max_raw_div, trial_raw_div, max_div;
@@ -426,7 +427,7 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
   }
   if ((rc = migration_setup(x, d))) return rc;
   if ((rc = initial_phi(x, d))) return rc;
-  x->inventory0 = sl_transport_mass(x->tr, x->phi);
+  x->inventory = x->inventory0 = sl_transport_mass(x->tr, x->phi);
   /* interface levels */
   const sl_ini_entry *le = sl_ini_find(x->ini, "output", "interface");
   if (le) {
@@ -468,6 +469,7 @@ static void accept(void *user) {
   memcpy(x->phi, x->trial, (size_t)x->m->n_cells * sizeof *x->phi);
   memcpy(x->q_acc, x->q, (size_t)x->m->n_faces * sizeof *x->q_acc);
   x->inflow += x->trial_inflow;
+  x->inventory = sl_transport_mass(x->tr, x->phi);
   x->substeps += x->trial_substeps, x->fallbacks += x->trial_fallbacks, ++x->advances;
   x->max_raw_div = fmax(x->max_raw_div, x->trial_raw_div);
 }
@@ -530,6 +532,7 @@ static int restore(void *user, const sl_checkpoint *ck, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "restart: the checkpoint holds no solids fraction of %d cells", x->m->n_cells);
   memcpy(x->phi, p->data, (size_t)p->n * sizeof *x->phi);
   x->inventory0 = b->data[0], x->inflow = b->data[1];
+  x->inventory = sl_transport_mass(x->tr, x->phi);
   return 0;
 }
 
@@ -562,9 +565,8 @@ int sl_mixture_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o,
   sl_ns_run_opts oo = *o;
   oo.coupling = &x.cpl;
   rc = sl_ns_run(ini, reg, &oo, res, d);
-  if (x.tr) {
-    double inv = x.phi ? sl_transport_mass(x.tr, x.phi) : 0.0;
-    double base = x.inventory0 + x.inflow;
+  if (x.tr) { /* the mesh is gone now: only what the run kept */
+    double inv = x.inventory, base = x.inventory0 + x.inflow;
     snprintf(res->coupling_summary, sizeof res->coupling_summary,
              "solids: %ld transport sub-steps (%.1f per step, %ld at first order), conservation error %.1e, "
              "raw face-flux divergence up to %.1e",
