@@ -1,16 +1,50 @@
-/* Work-precision of the flow engine on configs/cavity_stokes.ini: the
- * minimum of u on the vertical centreline (401 samples refined by golden
- * section) against the value on the finest mesh, versus CPU time, with the
- * split into assembly, factorisation and solve, and the peak memory.
- * Each mesh runs in its own process so that its peak resident set is its own.
+/* Work-precision of the flow engine on configs/cavity_stokes.ini (Q2/Q1,
+ * n x n cells): the minimum of u on the vertical centreline (401 samples
+ * refined by golden section) against a converged value u*, versus CPU time,
+ * with the split into assembly, factorisation and back-substitution, and the
+ * peak memory; for each sparse direct solver asked for (--solvers, default
+ * umfpack,klu; "scene" keeps the scene's).
  *
- *   bench_cavity_work_precision [SOURCE_DIR] [n ...]     (default 8 16 32 64 128)
- * CSV on stdout. */
+ * u* is the Richardson extrapolation through the three finest meshes,
+ *   u* = u_h + (u_h - u_2h) / (r - 1),  r = (u_2h - u_4h) / (u_h - u_2h),
+ * when they are successive halvings whose differences shrink (|r| > 1; the
+ * formula is exact for errors in geometric progression, r = 2^p, or -2^p
+ * when they alternate in sign); otherwise the finest mesh's value.
+ * --reference VALUE overrides both.
+ *
+ * Each mesh runs in its own process (so that each peak resident set, from
+ * getrusage ru_maxrss right after the run, is its own), twice:
+ *  - the steady Stokes solve of the scene (the work-precision point);
+ *  - unless --steps 0: a transient run of the same constant-coefficient
+ *    problem, BDF1 with a fixed step (--dt, default 0.01) for K steps
+ *    (--steps, default 10), to count numeric factorisations (one is the
+ *    target: later steps re-assemble a bitwise unchanged matrix and only
+ *    back-substitute) and to time a step that reuses the factorisation: the
+ *    mean over steps 2..K-1 of the wall time between accepted steps and of
+ *    the assembly in it (the first factorises; the last is cut to end at K dt
+ *    exactly, which in floating point may be a slightly different step and
+ *    so a different matrix; the output is written after it).
+ *    --transient-max N runs it only for n <= N.
+ * --repeat R keeps the fastest (wall) of R runs of each, for runs under a
+ * minute.
+ *
+ *   bench_cavity_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH]
+ *       [--solvers A,B] [--steps K] [--dt DT] [--transient-max N]
+ *       [--repeat R] [--reference VALUE] [--set section.key=value ...]
+ *       [n ...]                               (default n: 8 16 32 64 128 256)
+ *
+ * CSV on stdout (and in --csv PATH), '#' lines for u*, the observed orders
+ * and the machine; progress on stderr. --svg PATH writes the plot (svg_plot.h):
+ * error versus CPU time, peak memory versus unknowns, and per solver the time
+ * split versus unknowns. The exit status is 1 when any run failed. */
+#include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <sys/types.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -18,12 +52,41 @@
 #include "core/config/scene_schema.h"
 #include "core/io/sample.h"
 #include "core/models/navier_stokes.h"
+#include "svg_plot.h"
 
-static double cpu(void) {
+enum { MAX_N = 16, MAX_SET = 8, MAX_SOLVERS = 4 };
+
+typedef struct run_result {
+  int ok;
+  char err[2048 + 64];
+  int dofs;
+  double umin;         /* steady only */
+  double cpu, wall;    /* process CPU and wall seconds in sl_ns_run */
+  double assembly;     /* wall seconds (sl_ns_result) */
+  double t_symbolic, t_numeric, t_solve;
+  long n_symbolic, n_numeric, n_skipped, n_solves;
+  long rss_kb;         /* peak resident set after the run */
+  long steps;          /* transient: accepted steps */
+  long step_count;     /* transient: steps 2..K-1 measured */
+  double step_wall, step_assembly; /* transient: their mean wall and assembly seconds */
+  double step_wall_max;            /* transient: the longest of them */
+} run_result;
+
+typedef struct bench_opts {
+  const char *src;
+  const char *sets[MAX_SET];
+  int n_sets;
+  long steps;
+  double dt;
+} bench_opts;
+
+static double clock_s(clockid_t id) {
   struct timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  clock_gettime(id, &ts);
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
+
+/* ---- the centreline minimum -------------------------------------------- */
 
 static double u_at(const char *file, double y) {
   double xy[2] = {0.5, y};
@@ -54,77 +117,512 @@ static double centreline_min(const char *file) {
   return fmin(fc, fe);
 }
 
-/* Runs one mesh; writes "umin cpu assembly factorisation solve rss_kb dofs" to fd. */
-static int child(const char *src, int n, FILE *out) {
-  char path[4096], set[64], file[64];
-  snprintf(path, sizeof path, "%s/configs/cavity_stokes.ini", src);
-  snprintf(set, sizeof set, "mesh.cells=%d", n);
-  snprintf(file, sizeof file, "/tmp/sluice_bench_cavity_%d.h5", n);
-  sl_diag d;
-  sl_ini *ini = NULL;
-  sl_registry *reg = NULL;
-  int rc = sl_ini_parse_file(path, &ini, &d);
-  if (!rc) rc = sl_ini_apply_override(ini, set, &d);
-  if (!rc) rc = sl_scene_validate(ini, &d);
-  if (!rc) rc = sl_registry_create(&reg, NULL, 0, &d);
-  sl_ns_result res;
-  sl_ns_run_opts o = {.scene_path = path, .output = file, .sluice_version = "bench"};
-  double t0 = cpu();
-  if (!rc) rc = sl_ns_run(ini, reg, &o, &res, &d);
-  double t = cpu() - t0;
-  if (rc) {
-    fprintf(stderr, "n = %d: %s\n", n, d.msg);
-    return rc;
+/* ---- one run (in a child process) -------------------------------------- */
+
+/* "umfpack: 1 symbolic 0.12 s, 1 numeric 2.71 s (9 skipped: matrix
+ * unchanged), 10 solves 0.5 s" (core/solve/linsolve.c) into r. */
+static int parse_summary(const char *s, run_result *r) {
+  const char *c = strchr(s, ':');
+  if (!c || sscanf(c + 1, " %ld symbolic %lf s, %ld numeric %lf s", &r->n_symbolic, &r->t_symbolic, &r->n_numeric,
+                   &r->t_numeric) != 4)
+    return -1;
+  r->n_skipped = 0;
+  for (const char *p = strchr(s, '('); p; p = strchr(p + 1, '(')) {
+    long k;
+    char word[16];
+    if (sscanf(p, "(%ld %15[a-z]", &k, word) == 2 && !strcmp(word, "skipped")) r->n_skipped = k;
   }
-  struct rusage ru;
-  getrusage(RUSAGE_SELF, &ru);
-  int dofs = 2 * (2 * n + 1) * (2 * n + 1) + (n + 1) * (n + 1);
-  fprintf(out, "%.15g %.6g %.6g %.6g %.6g %ld %d %s\n", centreline_min(file), t, res.assembly, res.factorisation,
-          res.solve, ru.ru_maxrss, dofs, res.linear_summary);
-  remove(file);
-  sl_registry_destroy(reg);
-  sl_ini_free(ini);
+  const char *v = strrchr(s, ',');
+  if (!v || sscanf(v, ", %ld solves %lf s", &r->n_solves, &r->t_solve) != 2) return -1;
   return 0;
 }
 
-int main(int argc, char **argv) {
-  const char *src = argc > 1 ? argv[1] : ".";
-  int ns[16] = {8, 16, 32, 64, 128}, nn = 5;
-  if (argc > 2) {
-    nn = 0;
-    for (int i = 2; i < argc && nn < 16; ++i) ns[nn++] = atoi(argv[i]);
+typedef struct monitor {
+  const sl_ns_result *res;
+  run_result *r;
+  long last; /* the last step: shortened to end exactly, it may be a new matrix */
+  double wall_prev, assembly_prev;
+} monitor;
+
+static void on_step(void *user, double t, double dt, long step, int iterations) {
+  (void)t, (void)dt, (void)iterations;
+  monitor *m = user;
+  double now = clock_s(CLOCK_MONOTONIC);
+  if (step >= 2 && step < m->last) {
+    m->r->step_wall += now - m->wall_prev;
+    m->r->step_wall_max = fmax(m->r->step_wall_max, now - m->wall_prev);
+    m->r->step_assembly += m->res->assembly - m->assembly_prev;
+    ++m->r->step_count;
   }
-  double umin[16], t[16], ta[16], tf[16], ts[16];
-  long rss[16];
-  int dofs[16];
-  char lin[16][256];
-  for (int k = 0; k < nn; ++k) {
-    int fd[2];
-    if (pipe(fd)) return 1;
-    pid_t pid = fork();
-    if (pid == 0) {
-      close(fd[0]);
-      FILE *f = fdopen(fd[1], "w");
-      int rc = child(src, ns[k], f);
-      fclose(f);
-      _exit(rc);
+  m->wall_prev = now, m->assembly_prev = m->res->assembly;
+}
+
+static int run(const bench_opts *bo, const char *solver, int n, int transient, run_result *r) {
+  memset(r, 0, sizeof *r);
+  r->umin = NAN;
+  r->dofs = 2 * (2 * n + 1) * (2 * n + 1) + (n + 1) * (n + 1);
+  char path[4096], file[128], set[128];
+  snprintf(path, sizeof path, "%s/configs/cavity_stokes.ini", bo->src);
+  snprintf(file, sizeof file, "/tmp/sluice_bench_cavity_%ld_%d.h5", (long)getpid(), n);
+  sl_diag d = {0};
+  sl_ini *ini = NULL;
+  sl_registry *reg = NULL;
+  int rc = sl_ini_parse_file(path, &ini, &d);
+  snprintf(set, sizeof set, "mesh.cells=%d", n);
+  if (!rc) rc = sl_ini_apply_override(ini, set, &d);
+  if (solver && !rc) {
+    snprintf(set, sizeof set, "solver.linear=%s", solver);
+    rc = sl_ini_apply_override(ini, set, &d);
+  }
+  for (int k = 0; k < bo->n_sets && !rc; ++k) rc = sl_ini_apply_override(ini, bo->sets[k], &d);
+  if (transient && !rc) {
+    char dt[64];
+    snprintf(dt, sizeof dt, "time.dt=%.17g", bo->dt);
+    snprintf(set, sizeof set, "time.end=%.17g", bo->dt * (double)bo->steps);
+    rc = sl_ini_apply_override(ini, "time.scheme=bdf1", &d);
+    if (!rc) rc = sl_ini_apply_override(ini, dt, &d);
+    if (!rc) rc = sl_ini_apply_override(ini, "time.adaptive=false", &d);
+    if (!rc) rc = sl_ini_apply_override(ini, set, &d);
+  }
+  if (!rc) rc = sl_scene_validate(ini, &d);
+  if (!rc) rc = sl_registry_create(&reg, NULL, 0, &d);
+  sl_ns_result res;
+  monitor mon = {.res = &res, .r = r, .last = bo->steps};
+  sl_ns_run_opts o = {.scene_path = path, .output = file, .sluice_version = "bench", .monitor = on_step,
+                      .monitor_user = &mon};
+  if (!rc) {
+    double c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID), w0 = clock_s(CLOCK_MONOTONIC);
+    mon.wall_prev = w0;
+    rc = sl_ns_run(ini, reg, &o, &res, &d);
+    r->cpu = clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0, r->wall = clock_s(CLOCK_MONOTONIC) - w0;
+    struct rusage ru;
+    if (!rc) {
+      if (getrusage(RUSAGE_SELF, &ru)) rc = sl_diag_set(&d, SL_EFAILED, "getrusage: %s", strerror(errno));
+      else r->rss_kb = ru.ru_maxrss;
+    }
+  }
+  if (!rc) {
+    r->assembly = res.assembly, r->steps = res.steps;
+    if (parse_summary(res.linear_summary, r))
+      rc = sl_diag_set(&d, SL_EFAILED, "unexpected linear solver summary '%s'", res.linear_summary);
+  }
+  if (!rc && r->step_count > 0) r->step_wall /= (double)r->step_count, r->step_assembly /= (double)r->step_count;
+  if (!rc && !transient && !isfinite(r->umin = centreline_min(file)))
+    rc = sl_diag_set(&d, SL_EFAILED, "sampling the centreline of %s failed", file);
+  if (rc) snprintf(r->err, sizeof r->err, "%s", d.msg);
+  r->ok = !rc;
+  remove(file);
+  snprintf(file + strlen(file) - 3, 5, ".xmf"); /* the XDMF sidecar */
+  remove(file);
+  sl_registry_destroy(reg);
+  sl_ini_free(ini);
+  return rc;
+}
+
+/* Runs one mesh in a child process; its result comes back through a pipe. */
+static int run_child(const bench_opts *bo, const char *solver, int n, int transient, run_result *r) {
+  memset(r, 0, sizeof *r);
+  int fd[2];
+  if (pipe(fd)) {
+    snprintf(r->err, sizeof r->err, "pipe: %s", strerror(errno));
+    return -1;
+  }
+  fflush(NULL);
+  pid_t pid = fork();
+  if (pid < 0) {
+    snprintf(r->err, sizeof r->err, "fork: %s", strerror(errno));
+    close(fd[0]), close(fd[1]);
+    return -1;
+  }
+  if (pid == 0) {
+    close(fd[0]);
+    run_result mine;
+    run(bo, solver, n, transient, &mine);
+    const char *p = (const char *)&mine;
+    size_t left = sizeof mine;
+    while (left > 0) {
+      ssize_t w = write(fd[1], p, left);
+      if (w < 0 && errno == EINTR) continue;
+      if (w <= 0) _exit(2);
+      p += w, left -= (size_t)w;
     }
     close(fd[1]);
-    FILE *f = fdopen(fd[0], "r");
-    int got = fscanf(f, "%lf %lf %lf %lf %lf %ld %d %255[^\n]", &umin[k], &t[k], &ta[k], &tf[k], &ts[k], &rss[k],
-                     &dofs[k], lin[k]);
+    _exit(mine.ok ? 0 : 1);
+  }
+  close(fd[1]);
+  char *p = (char *)r;
+  size_t got = 0;
+  while (got < sizeof *r) {
+    ssize_t k = read(fd[0], p + got, sizeof *r - got);
+    if (k < 0 && errno == EINTR) continue;
+    if (k <= 0) break;
+    got += (size_t)k;
+  }
+  close(fd[0]);
+  int status;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) {
+      snprintf(r->err, sizeof r->err, "waitpid: %s", strerror(errno));
+      return -1;
+    }
+  if (got != sizeof *r) {
+    memset(r, 0, sizeof *r);
+    if (WIFSIGNALED(status))
+      snprintf(r->err, sizeof r->err, "the child was killed by signal %d%s", WTERMSIG(status),
+               WTERMSIG(status) == SIGKILL ? " (out of memory?)" : "");
+    else snprintf(r->err, sizeof r->err, "the child exited with status %d without a result", WEXITSTATUS(status));
+    return -1;
+  }
+  return r->ok ? 0 : -1;
+}
+
+/* Best of `repeat` runs (the one with the least wall time), repeating only
+ * runs that took under a minute. */
+static int best_of(const bench_opts *bo, const char *solver, int n, int transient, int repeat, run_result *r) {
+  if (run_child(bo, solver, n, transient, r)) return -1;
+  for (int k = 1; k < repeat && r->wall < 60.0; ++k) {
+    run_result again;
+    if (run_child(bo, solver, n, transient, &again)) {
+      *r = again;
+      return -1;
+    }
+    if (again.wall < r->wall) *r = again;
+  }
+  return 0;
+}
+
+/* ---- the machine ------------------------------------------------------- */
+
+static void machine(char *buf, size_t len) {
+  char model[256] = "unknown CPU", line[512];
+  FILE *f = fopen("/proc/cpuinfo", "r");
+  if (f) {
+    while (fgets(line, sizeof line, f))
+      if (!strncmp(line, "model name", 10)) {
+        const char *c = strchr(line, ':');
+        if (c) {
+          snprintf(model, sizeof model, "%s", c + 1 + (c[1] == ' '));
+          model[strcspn(model, "\n")] = 0;
+        }
+        break;
+      }
     fclose(f);
-    int status;
-    waitpid(pid, &status, 0);
-    if (got != 8 || !WIFEXITED(status) || WEXITSTATUS(status)) {
-      fprintf(stderr, "n = %d failed\n", ns[k]);
-      return 1;
+  }
+  double load = NAN;
+  f = fopen("/proc/loadavg", "r");
+  if (f) {
+    if (fscanf(f, "%lf", &load) != 1) load = NAN;
+    fclose(f);
+  }
+  snprintf(buf, len, "%s, %ld cores, load %.2f at start", model, sysconf(_SC_NPROCESSORS_ONLN), load);
+}
+
+/* ---- output ------------------------------------------------------------ */
+
+typedef struct table {
+  int nn, ns[MAX_N];
+  int nsolv;
+  const char *solvers[MAX_SOLVERS]; /* NULL: the scene's */
+  run_result st[MAX_SOLVERS][MAX_N], tr[MAX_SOLVERS][MAX_N];
+  int have_tr[MAX_SOLVERS][MAX_N];
+  double umin[MAX_N];  /* per mesh, from the first solver that ran it */
+  double spread;       /* largest difference in min u between solvers on one mesh */
+  double ref, err[MAX_N], ratio;
+  double fit_order; /* least-squares slope of log e against log n, all meshes but the coarsest */
+  int fit_from, fit_to;
+  char ref_method[256];
+  char machine[512];
+} table;
+
+static const char *solver_name(const table *t, int s) { return t->solvers[s] ? t->solvers[s] : "scene"; }
+
+static void write_csv(FILE *f, const table *t) {
+  fprintf(f, "# bench_cavity_work_precision: configs/cavity_stokes.ini, Q2/Q1 on n x n cells\n");
+  fprintf(f, "# machine: %s\n", t->machine);
+  fprintf(f, "# reference min u* = %.12f: %s\n", t->ref, t->ref_method);
+  if (isfinite(t->ratio) && fabs(t->ratio) > 1.0)
+    fprintf(f, "#   u* = u_h + (u_h - u_2h) / (r - 1), r = (u_2h - u_4h) / (u_h - u_2h), h the finest\n");
+  fprintf(f, "# min u of one mesh differs between solvers by at most %.2g\n", t->spread);
+  fprintf(f, "# observed order log2(e_n / e_2n) of the error against u*:");
+  for (int k = 0; k + 1 < t->nn; ++k)
+    if (t->err[k] > 0 && t->err[k + 1] > 0 && t->ns[k + 1] == 2 * t->ns[k])
+      fprintf(f, " %d-%d: %.2f", t->ns[k], t->ns[k + 1], log2(t->err[k] / t->err[k + 1]));
+  fprintf(f, "\n# least-squares order over n = %d..%d: %.2f\n", t->fit_from, t->fit_to, t->fit_order);
+  fprintf(f, "# cpu_s: process CPU time of the run; the split (assembly, symbolic, numeric, solve) and wall_s are "
+             "wall time; assembly_share = assembly / wall; tr_*: the constant-coefficient BDF1 run, tr_step_s the "
+             "mean (tr_step_max_s the longest) of its steps 2..K-1, which reuse the factorisation\n");
+  for (int s = 0; s < t->nsolv; ++s)
+    for (int k = 0; k < t->nn; ++k) {
+      if (!t->st[s][k].ok) fprintf(f, "# failed: %s, n = %d: %s\n", solver_name(t, s), t->ns[k], t->st[s][k].err);
+      else if (t->have_tr[s][k] && !t->tr[s][k].ok)
+        fprintf(f, "# failed: %s, n = %d, BDF1 run: %s\n", solver_name(t, s), t->ns[k], t->tr[s][k].err);
+    }
+  fprintf(f, "solver,n,unknowns,umin,error,cpu_s,wall_s,assembly_s,assembly_share,n_symbolic,symbolic_s,n_numeric,"
+             "numeric_s,n_solves,solve_s,peak_rss_mb,tr_steps,tr_n_numeric,tr_n_skipped,tr_cpu_s,tr_step_s,"
+             "tr_step_max_s,tr_step_assembly_s,tr_assembly_share,tr_peak_rss_mb\n");
+  for (int s = 0; s < t->nsolv; ++s)
+    for (int k = 0; k < t->nn; ++k) {
+      const run_result *a = &t->st[s][k], *r = &t->tr[s][k];
+      fprintf(f, "%s,%d,%d,", solver_name(t, s), t->ns[k], a->dofs);
+      if (!a->ok) {
+        fprintf(f, ",,,,,,,,,,,,,,,,,,,,,\n");
+        continue;
+      }
+      fprintf(f, "%.10f,%.3e,%.4g,%.4g,%.4g,%.4f,%ld,%.4g,%ld,%.4g,%ld,%.4g,%.1f,", a->umin, fabs(a->umin - t->ref),
+              a->cpu, a->wall, a->assembly, a->assembly / a->wall, a->n_symbolic, a->t_symbolic, a->n_numeric,
+              a->t_numeric, a->n_solves, a->t_solve, a->rss_kb / 1024.0);
+      if (t->have_tr[s][k] && r->ok)
+        fprintf(f, "%ld,%ld,%ld,%.4g,%.4g,%.4g,%.4g,%.4f,%.1f\n", r->steps, r->n_numeric, r->n_skipped, r->cpu,
+                r->step_wall, r->step_wall_max, r->step_assembly, r->step_assembly / r->step_wall, r->rss_kb / 1024.0);
+      else fprintf(f, ",,,,,,,,\n");
+    }
+}
+
+static const char *const solver_colours[MAX_SOLVERS] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
+
+static int write_svg(const char *path, const table *t) {
+  enum { SPLIT = 6 };
+  double cpu[MAX_SOLVERS][MAX_N], err[MAX_SOLVERS][MAX_N], rss[MAX_SOLVERS][MAX_N], dofs[MAX_N];
+  double split[MAX_SOLVERS][SPLIT][MAX_N];
+  char buf[MAX_N][32];
+  const char *labels[MAX_N];
+  svgp_series s_err[MAX_SOLVERS], s_mem[MAX_SOLVERS], s_split[MAX_SOLVERS][SPLIT];
+  svgp_panel panels[2 + MAX_SOLVERS];
+  char titles[MAX_SOLVERS][96];
+  static const char *const split_name[SPLIT] = {"steady solve, total",       "its factorisation",
+                                                "its assembly",              "its back-substitution",
+                                                "BDF1 step, factors reused", "assembly in that step"};
+  static const char *const split_colour[SPLIT] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#2ca02c"};
+  static const svgp_marker split_marker[SPLIT] = {SVGP_CIRCLE, SVGP_SQUARE, SVGP_TRIANGLE, SVGP_DIAMOND, SVGP_CIRCLE,
+                                                  SVGP_TRIANGLE};
+  for (int k = 0; k < t->nn; ++k) {
+    dofs[k] = t->st[0][k].dofs;
+    snprintf(buf[k], sizeof buf[k], "n=%d", t->ns[k]);
+    labels[k] = buf[k];
+  }
+  int np = 2; /* a split panel for each solver with a successful run */
+  for (int s = 0; s < t->nsolv; ++s) {
+    int any_tr = 0, any = 0;
+    for (int k = 0; k < t->nn; ++k) {
+      const run_result *a = &t->st[s][k], *r = &t->tr[s][k];
+      int tr = t->have_tr[s][k] && r->ok;
+      any_tr |= tr, any |= a->ok;
+      cpu[s][k] = a->ok ? a->cpu : NAN, err[s][k] = a->ok ? fabs(a->umin - t->ref) : NAN;
+      rss[s][k] = a->ok ? a->rss_kb / 1024.0 : NAN;
+      split[s][0][k] = a->ok ? a->wall : NAN, split[s][1][k] = a->ok ? a->t_symbolic + a->t_numeric : NAN;
+      split[s][2][k] = a->ok ? a->assembly : NAN, split[s][3][k] = a->ok ? a->t_solve : NAN;
+      split[s][4][k] = tr ? r->step_wall : NAN, split[s][5][k] = tr ? r->step_assembly : NAN;
+    }
+    const char *c = solver_colours[s % MAX_SOLVERS];
+    s_err[s] = (svgp_series){.name = solver_name(t, s), .n = t->nn, .x = cpu[s], .y = err[s],
+                             .labels = s == t->nsolv - 1 ? labels : NULL, .colour = c, .marker = (svgp_marker)s};
+    s_mem[s] = (svgp_series){.name = solver_name(t, s), .n = t->nn, .x = dofs, .y = rss[s],
+                             .labels = s == t->nsolv - 1 ? labels : NULL, .colour = c, .marker = (svgp_marker)s};
+    for (int q = 0; q < SPLIT; ++q)
+      s_split[s][q] = (svgp_series){.name = split_name[q], .n = t->nn, .x = dofs, .y = split[s][q],
+                                    .colour = split_colour[q], .marker = split_marker[q], .dashed = q >= 4};
+    if (!any) continue;
+    snprintf(titles[s], sizeof titles[s], "Where the time goes: %s", solver_name(t, s));
+    panels[np++] = (svgp_panel){.title = titles[s], .xlabel = "unknowns", .ylabel = "wall time (s)",
+                                .n_series = any_tr ? SPLIT : 4, .series = s_split[s], .legend = SVGP_TOP_LEFT};
+  }
+  /* the split panels share their axes */
+  double lo = INFINITY, hi = -INFINITY;
+  for (int s = 0; s < t->nsolv; ++s)
+    for (int q = 0; q < SPLIT; ++q)
+      for (int k = 0; k < t->nn; ++k)
+        if (split[s][q][k] > 0.0) lo = fmin(lo, split[s][q][k]), hi = fmax(hi, split[s][q][k]);
+  for (int p = 2; p < np; ++p) {
+    panels[p].xspan[0] = dofs[0], panels[p].xspan[1] = dofs[t->nn - 1];
+    panels[p].yspan[0] = lo, panels[p].yspan[1] = hi;
+  }
+  char err_label[128];
+  snprintf(err_label, sizeof err_label, "|min u - u*| on x = 1/2, u* = %.8f", t->ref);
+  panels[0] = (svgp_panel){.title = "Error against CPU time", .xlabel = "CPU time of the steady solve (s)",
+                           .ylabel = err_label, .n_series = t->nsolv, .series = s_err, .legend = SVGP_TOP_RIGHT};
+  panels[1] = (svgp_panel){.title = "Peak memory", .xlabel = "unknowns", .ylabel = "peak resident set (MB)",
+                           .n_series = t->nsolv, .series = s_mem, .legend = SVGP_TOP_LEFT};
+  char note[4096];
+  int at = snprintf(note, sizeof note, "u*: %s.\n%s. Release build, one process per run.", t->ref_method, t->machine);
+  for (int s = 0; s < t->nsolv; ++s) /* the failed steady runs, one line each */
+    for (int k = 0; k < t->nn && at > 0 && (size_t)at < sizeof note; ++k)
+      if (!t->st[s][k].ok)
+        at += snprintf(note + at, sizeof note - (size_t)at, "\nNot plotted: %s, n = %d failed: %.110s", solver_name(t, s),
+                       t->ns[k], t->st[s][k].err);
+  svgp_figure fig = {.title = "Stokes lid-driven cavity (configs/cavity_stokes.ini), Q2/Q1 on n x n cells",
+                     .note = note, .n_panels = np, .panels = panels, .columns = 2, .panel_width = 480,
+                     .panel_height = 360};
+  return svgp_write(path, &fig);
+}
+
+/* ---- main -------------------------------------------------------------- */
+
+static int usage(void) {
+  fprintf(stderr, "usage: bench_cavity_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH] [--solvers A,B|scene] "
+                  "[--steps K] [--dt DT] [--transient-max N] [--repeat R] [--reference VALUE] [--set section.key=value ...] "
+                  "[n ...]\n");
+  return 2;
+}
+
+/* The converged value: Richardson (Aitken) through the three finest meshes
+ * when they are successive halvings whose differences shrink. */
+static void reference(table *t, double given) {
+  int ok[MAX_N], m = 0;
+  for (int k = 0; k < t->nn; ++k)
+    if (isfinite(t->umin[k])) ok[m++] = k;
+  t->ratio = NAN;
+  if (isfinite(given)) {
+    t->ref = given;
+    snprintf(t->ref_method, sizeof t->ref_method, "given with --reference");
+    return;
+  }
+  int a = m >= 3 ? ok[m - 3] : -1, b = m >= 3 ? ok[m - 2] : -1, c = ok[m - 1];
+  t->ref = t->umin[c];
+  snprintf(t->ref_method, sizeof t->ref_method, "the finest mesh's value (n = %d)", t->ns[c]);
+  if (a < 0 || t->ns[b] != 2 * t->ns[a] || t->ns[c] != 2 * t->ns[b]) return;
+  double d1 = t->umin[b] - t->umin[a], d2 = t->umin[c] - t->umin[b], r = d1 / d2;
+  t->ratio = r;
+  if (!isfinite(r) || fabs(r) <= 1.0) {
+    snprintf(t->ref_method, sizeof t->ref_method,
+             "the finest mesh's value (n = %d; the differences of the three finest do not shrink, ratio %.3g: no "
+             "Richardson)",
+             t->ns[c], r);
+    return;
+  }
+  t->ref = t->umin[c] + d2 / (r - 1.0);
+  snprintf(t->ref_method, sizeof t->ref_method,
+           "Richardson extrapolation of n = %d, %d, %d (difference ratio r = %.3f%s, order log2|r| = %.2f)", t->ns[a],
+           t->ns[b], t->ns[c], r, r < 0 ? ", alternating" : "", log2(fabs(r)));
+}
+
+/* The least-squares slope of log e against log(1/n) over all meshes but the
+ * coarsest (pre-asymptotic) with a positive error. */
+static void fit_order(table *t) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int m = 0;
+  t->fit_order = NAN, t->fit_from = t->fit_to = 0;
+  for (int k = 1; k < t->nn; ++k) {
+    if (!(t->err[k] > 0.0)) continue;
+    double x = log((double)t->ns[k]), y = -log(t->err[k]);
+    sx += x, sy += y, sxx += x * x, sxy += x * y, ++m;
+    if (!t->fit_from) t->fit_from = t->ns[k];
+    t->fit_to = t->ns[k];
+  }
+  if (m >= 2 && sxx * m - sx * sx > 0.0) t->fit_order = (m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+
+int main(int argc, char **argv) {
+  bench_opts bo = {.src = ".", .steps = 10, .dt = 0.01};
+  const char *csv = NULL, *svg = NULL;
+  char solvers_arg[256] = "umfpack,klu";
+  long transient_max = 1L << 30;
+  int repeat = 1;
+  double ref_given = NAN;
+  static table t;
+  int i = 1;
+  if (argc > 1 && argv[1][0] != '-' && strspn(argv[1], "0123456789") != strlen(argv[1])) bo.src = argv[i++];
+  for (; i < argc; ++i) {
+    const char *a = argv[i];
+    char *end;
+    if (!strcmp(a, "--csv") && i + 1 < argc) csv = argv[++i];
+    else if (!strcmp(a, "--svg") && i + 1 < argc) svg = argv[++i];
+    else if (!strcmp(a, "--solvers") && i + 1 < argc) {
+      if (strlen(argv[++i]) >= sizeof solvers_arg) return usage();
+      snprintf(solvers_arg, sizeof solvers_arg, "%s", argv[i]);
+    } else if (!strcmp(a, "--steps") && i + 1 < argc) {
+      bo.steps = strtol(argv[++i], &end, 10);
+      if (*end || bo.steps < 0 || (bo.steps > 0 && bo.steps < 3)) return fprintf(stderr, "--steps: 0 or >= 3\n"), 2;
+    } else if (!strcmp(a, "--dt") && i + 1 < argc) {
+      bo.dt = strtod(argv[++i], &end);
+      if (*end || !(bo.dt > 0.0) || !isfinite(bo.dt)) return usage();
+    } else if (!strcmp(a, "--transient-max") && i + 1 < argc) {
+      transient_max = strtol(argv[++i], &end, 10);
+      if (*end) return usage();
+    } else if (!strcmp(a, "--repeat") && i + 1 < argc) {
+      long r = strtol(argv[++i], &end, 10);
+      if (*end || r < 1 || r > 100) return usage();
+      repeat = (int)r;
+    } else if (!strcmp(a, "--reference") && i + 1 < argc) {
+      ref_given = strtod(argv[++i], &end);
+      if (*end || !isfinite(ref_given)) return usage();
+    } else if (!strcmp(a, "--set") && i + 1 < argc) {
+      if (bo.n_sets == MAX_SET) return fprintf(stderr, "at most %d --set\n", MAX_SET), 2;
+      bo.sets[bo.n_sets++] = argv[++i];
+    } else if (a[0] != '-') {
+      long n = strtol(a, &end, 10);
+      if (*end || n < 1 || n > 4096) return fprintf(stderr, "bad mesh size '%s'\n", a), 2;
+      if (t.nn == MAX_N) return fprintf(stderr, "at most %d meshes\n", MAX_N), 2;
+      t.ns[t.nn++] = (int)n;
+    } else {
+      return usage();
     }
   }
-  printf("n,dofs,umin,error_vs_finest,cpu_s,assembly_s,factorisation_s,solve_s,assembly_share,peak_rss_mb,linear\n");
-  for (int k = 0; k < nn; ++k)
-    printf("%d,%d,%.10f,%.3e,%.3f,%.3f,%.3f,%.3f,%.3f,%.1f,%s\n", ns[k], dofs[k], umin[k],
-           k == nn - 1 ? 0.0 : fabs(umin[k] - umin[nn - 1]), t[k], ta[k], tf[k], ts[k], ta[k] / t[k], rss[k] / 1024.0,
-           lin[k]);
-  return 0;
+  for (char *tok = strtok(solvers_arg, ","); tok; tok = strtok(NULL, ",")) {
+    if (t.nsolv == MAX_SOLVERS) return fprintf(stderr, "at most %d solvers\n", MAX_SOLVERS), 2;
+    t.solvers[t.nsolv++] = strcmp(tok, "scene") ? tok : NULL;
+  }
+  if (!t.nsolv) return usage();
+  if (!t.nn) {
+    static const int def[] = {8, 16, 32, 64, 128, 256};
+    for (int k = 0; k < 6; ++k) t.ns[t.nn++] = def[k];
+  }
+  for (int a = 1; a < t.nn; ++a) /* ascending */
+    for (int b = a; b > 0 && t.ns[b - 1] > t.ns[b]; --b) {
+      int s = t.ns[b];
+      t.ns[b] = t.ns[b - 1], t.ns[b - 1] = s;
+    }
+  machine(t.machine, sizeof t.machine);
+
+  int failures = 0;
+  for (int s = 0; s < t.nsolv; ++s)
+    for (int k = 0; k < t.nn; ++k) {
+      int n = t.ns[k];
+      run_result *a = &t.st[s][k];
+      fprintf(stderr, "%s, n = %d: steady ...", solver_name(&t, s), n);
+      if (best_of(&bo, t.solvers[s], n, 0, repeat, a)) {
+        fprintf(stderr, " failed: %s\n", a->err);
+        ++failures;
+        a->dofs = 2 * (2 * n + 1) * (2 * n + 1) + (n + 1) * (n + 1);
+        continue;
+      }
+      fprintf(stderr, " %.3g s CPU, %.0f MB", a->cpu, a->rss_kb / 1024.0);
+      if (bo.steps > 0 && n <= transient_max) {
+        run_result *r = &t.tr[s][k];
+        t.have_tr[s][k] = 1;
+        fprintf(stderr, "; BDF1 x %ld ...", bo.steps);
+        if (best_of(&bo, t.solvers[s], n, 1, repeat, r)) {
+          fprintf(stderr, " failed: %s", r->err);
+          ++failures;
+        } else {
+          fprintf(stderr, " %.3g s CPU, %ld numeric factorisation(s)", r->cpu, r->n_numeric);
+        }
+      }
+      fputc('\n', stderr);
+    }
+
+  int any = 0;
+  for (int k = 0; k < t.nn; ++k) {
+    t.umin[k] = NAN;
+    for (int s = 0; s < t.nsolv; ++s) {
+      if (!t.st[s][k].ok) continue;
+      if (isnan(t.umin[k])) t.umin[k] = t.st[s][k].umin, any = 1;
+      else t.spread = fmax(t.spread, fabs(t.st[s][k].umin - t.umin[k]));
+    }
+  }
+  if (!any) return fprintf(stderr, "no run succeeded\n"), 1;
+  reference(&t, ref_given);
+  for (int k = 0; k < t.nn; ++k) t.err[k] = fabs(t.umin[k] - t.ref);
+  fit_order(&t);
+
+  write_csv(stdout, &t);
+  if (csv) {
+    FILE *f = fopen(csv, "w");
+    if (!f) return fprintf(stderr, "%s: %s\n", csv, strerror(errno)), 1;
+    write_csv(f, &t);
+    int werr = ferror(f);
+    if (fclose(f) || werr) return fprintf(stderr, "%s: write failed\n", csv), 1;
+  }
+  if (svg && write_svg(svg, &t)) return fprintf(stderr, "%s: %s\n", svg, strerror(errno)), 1;
+  if (fflush(stdout)) return 1;
+  return failures ? 1 : 0;
 }
