@@ -104,6 +104,7 @@ typedef struct mixture {
   long substeps, fallbacks, trial_substeps, trial_fallbacks, advances;
   double max_raw_div, trial_raw_div, max_div;
   double flux_floor; /* the settling flux scale max |w_f| max |F|: the divergence is measured against it too */
+  double area_max;   /* the largest face area */
   int n_levels;
   double level[MAX_LEVELS];
   /* shear-induced migration (optional) */
@@ -407,6 +408,8 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
   if ((rc = sl_transport_create(x->m, &x->topts, &x->tr, d))) return sl_diag_prefix(d, rc, "solids transport");
   if ((rc = transport_boundaries(x, open, d))) return rc;
   if ((rc = periodic_setup(x, open, pairs, n_pairs, d))) return rc;
+  const double *area = sl_transport_face_areas(x->tr);
+  for (int f = 0; f < nf; ++f) x->area_max = fmax(x->area_max, area[f]);
   x->phi = malloc((size_t)nc * sizeof *x->phi);
   x->trial = malloc((size_t)nc * sizeof *x->trial);
   x->q = malloc((size_t)nf * sizeof *x->q);
@@ -443,11 +446,9 @@ static int advance(void *user, double t, double dt, const double *u, sl_diag *d)
   mixture *x = user;
   /* the divergence is measured against the through-flow, or against the settling flux and 1e-8 of the
    * largest speed where the mixture hardly moves across faces (a swirl, a closed column) */
-  double umax = 0.0, amax = 0.0;
+  double umax = 0.0;
   for (int32_t i = 0; i < x->th->p_offset; ++i) umax = fmax(umax, fabs(u[i]));
-  const double *area = sl_transport_face_areas(x->tr);
-  for (int f = 0; f < x->m->n_faces; ++f) amax = fmax(amax, area[f]);
-  int rc = sl_face_flux_conservative(x->ff, u, fmax(x->flux_floor, 1e-8 * umax * amax), x->q, &x->trial_raw_div, d);
+  int rc = sl_face_flux_conservative(x->ff, u, fmax(x->flux_floor, 1e-8 * umax * x->area_max), x->q, &x->trial_raw_div, d);
   if (rc) return rc;
   memcpy(x->trial, x->phi, (size_t)x->m->n_cells * sizeof *x->trial);
   if (x->mg) { /* the shear rate of the new velocity drives the migration over the step */

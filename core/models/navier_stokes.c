@@ -814,7 +814,10 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     /* land on the end and on every output time (a step within 5 % of one is stretched to it) */
     double t_stop = tc->end;
     if (tc->every > 0 && next_out * tc->every < t_stop) t_stop = next_out * tc->every;
-    if (b.t + hh > t_stop - eps_t || b.t + 1.05 * hh > t_stop) hh = t_stop - b.t, limit = 3;
+    /* a step that ends there up to round-off keeps its length, so that a constant-coefficient matrix stays
+       bitwise the same and is not factorised again */
+    if (fabs(b.t + hh - t_stop) > eps_t && (b.t + hh > t_stop || b.t + 1.05 * hh > t_stop))
+      hh = t_stop - b.t, limit = 3;
     sl_bdf_step s;
     sl_bdf_prepare(&b, hh, &s, hist, pred);
     r->prob.opts.mass_coef = s.mass_coef;
@@ -938,14 +941,19 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
       rc = sl_diag_set(d, SL_EBADINPUT, "[time] scheme = steady: the mixture model is transient (bdf1 or bdf2)");
       goto out;
     }
-    unsigned char open[256] = {0};
+    /* bcs.b[i] is the mesh's boundary i */
+    unsigned char *open = calloc((size_t)r.bcs.n + 1, 1);
+    if (!open) {
+      rc = sl_diag_set(d, SL_EFAILED, "out of memory");
+      goto out;
+    }
     for (int i = 0; i < r.bcs.n; ++i) {
       bc_type ty = r.bcs.b[i].type;
-      if (ty != BC_OPEN && ty != BC_PRESSURE && ty != BC_TRACTION) continue;
-      for (int k = 0; k < r.mesh->n_boundaries && k < 256; ++k)
-        if (strcmp(r.mesh->boundary_names[k], r.bcs.b[i].name) == 0) open[k] = 1;
+      open[i] = ty == BC_OPEN || ty == BC_PRESSURE || ty == BC_TRACTION;
     }
-    if ((rc = r.cpl->setup(r.cpl->user, r.th, &r.prob.opts, open, r.bcs.pairs, r.bcs.n_pairs, d))) goto out;
+    rc = r.cpl->setup(r.cpl->user, r.th, &r.prob.opts, open, r.bcs.pairs, r.bcs.n_pairs, d);
+    free(open);
+    if (rc) goto out;
   }
   r.datum = !r.bcs.has_natural;
   for (int i = 0; i < r.bcs.n; ++i)

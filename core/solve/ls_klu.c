@@ -9,6 +9,8 @@
 
 #include "core/solve/linsolve.h"
 
+_Static_assert(sizeof(int) == sizeof(int32_t), "the klu_ interface takes int indices");
+
 #define STR_(x) #x
 #define STR(x) STR_(x)
 

@@ -1,15 +1,18 @@
 /* UMFPACK backend (general sparse LU, the default). The CSR arrays of A are
- * handed over as the CSC of A^T and the system is solved with UMFPACK_At. */
+ * handed over as the CSC of A^T and the system is solved with UMFPACK_At.
+ * The 64-bit interface (umfpack_dl): the 32-bit one runs out of index space
+ * in the factor's workspace near 2 GB (a 590k-unknown Q2/Q1 Stokes matrix),
+ * whatever memory the machine has. Its index arrays are 64-bit copies of the
+ * pattern, made once per symbolic analysis. */
 #include <float.h>
 #include <stdlib.h>
 #include <umfpack.h>
 
 #include "core/solve/linsolve.h"
 
-_Static_assert(sizeof(int) == sizeof(int32_t), "SuiteSparse di/klu_ interfaces take int indices");
-
 typedef struct umf_state {
   void *sym, *num;
+  SuiteSparse_long *ptr, *idx; /* the pattern's row_ptr and col_idx, 64-bit */
   double control[UMFPACK_CONTROL];
   double info[UMFPACK_INFO];
 } umf_state;
@@ -42,24 +45,35 @@ static int umf_fail(int status, const char *stage, int32_t n, sl_diag *d) {
 static int umf_create(void **backend, sl_diag *d) {
   umf_state *s = calloc(1, sizeof *s);
   if (!s) return sl_diag_set(d, SL_EFAILED, "umfpack: out of memory");
-  umfpack_di_defaults(s->control);
+  umfpack_dl_defaults(s->control);
   s->control[UMFPACK_PRL] = 0; /* never print */
   *backend = s;
   return 0;
 }
 
 static void umf_drop(umf_state *s) {
-  if (s->num) umfpack_di_free_numeric(&s->num);
-  if (s->sym) umfpack_di_free_symbolic(&s->sym);
+  if (s->num) umfpack_dl_free_numeric(&s->num);
+  if (s->sym) umfpack_dl_free_symbolic(&s->sym);
   s->num = s->sym = NULL;
+  free(s->ptr), free(s->idx);
+  s->ptr = s->idx = NULL;
 }
 
 static int umf_symbolic(void *backend, const sl_csr *A, sl_diag *d) {
   umf_state *s = backend;
   umf_drop(s);
-  int st = umfpack_di_symbolic(A->n_rows, A->n_cols, A->row_ptr, A->col_idx, A->values, &s->sym, s->control, s->info);
+  s->ptr = malloc(((size_t)A->n_rows + 1) * sizeof *s->ptr);
+  s->idx = malloc(((size_t)A->nnz + 1) * sizeof *s->idx);
+  if (!s->ptr || !s->idx) {
+    umf_drop(s);
+    return sl_diag_set(d, SL_EFAILED, "umfpack: out of memory for the pattern of a %d x %d matrix", (int)A->n_rows,
+                       (int)A->n_rows);
+  }
+  for (int32_t i = 0; i <= A->n_rows; ++i) s->ptr[i] = A->row_ptr[i];
+  for (int32_t k = 0; k < A->nnz; ++k) s->idx[k] = A->col_idx[k];
+  int st = (int)umfpack_dl_symbolic(A->n_rows, A->n_cols, s->ptr, s->idx, A->values, &s->sym, s->control, s->info);
   if (st != UMFPACK_OK) {
-    if (s->sym) umfpack_di_free_symbolic(&s->sym);
+    if (s->sym) umfpack_dl_free_symbolic(&s->sym);
     s->sym = NULL;
     return umf_fail(st, "symbolic analysis", A->n_rows, d);
   }
@@ -68,21 +82,21 @@ static int umf_symbolic(void *backend, const sl_csr *A, sl_diag *d) {
 
 static int umf_numeric(void *backend, const sl_csr *A, sl_linsolve_stats *stats, sl_diag *d) {
   umf_state *s = backend;
-  if (s->num) umfpack_di_free_numeric(&s->num);
+  if (s->num) umfpack_dl_free_numeric(&s->num);
   s->num = NULL;
-  int st = umfpack_di_numeric(A->row_ptr, A->col_idx, A->values, s->sym, &s->num, s->control, s->info);
+  int st = (int)umfpack_dl_numeric(s->ptr, s->idx, A->values, s->sym, &s->num, s->control, s->info);
   stats->rcond = s->info[UMFPACK_RCOND];
   /* The singular-matrix warning is positive: UMFPACK still returns a factor,
    * but its solutions contain Inf/NaN, so it is a failure for us. */
   if (st != UMFPACK_OK && st != UMFPACK_WARNING_determinant_underflow && st != UMFPACK_WARNING_determinant_overflow) {
-    if (s->num) umfpack_di_free_numeric(&s->num);
+    if (s->num) umfpack_dl_free_numeric(&s->num);
     s->num = NULL;
     return umf_fail(st, "numeric factorisation", A->n_rows, d);
   }
   /* Crude estimate min|U_ii| / max|U_ii| of the scaled matrix: below the
    * machine epsilon the solution has no correct digit. */
   if (!(s->info[UMFPACK_RCOND] >= DBL_EPSILON)) {
-    umfpack_di_free_numeric(&s->num);
+    umfpack_dl_free_numeric(&s->num);
     s->num = NULL;
     return sl_diag_set(d, SL_EFAILED,
                        "umfpack: matrix is numerically singular (pivot ratio %.3g) in the numeric factorisation of a "
@@ -95,7 +109,7 @@ static int umf_numeric(void *backend, const sl_csr *A, sl_linsolve_stats *stats,
 static int umf_solve(void *backend, const sl_csr *A, const double *b, double *x, sl_diag *d) {
   umf_state *s = backend;
   /* CSR of A = CSC of A^T: UMFPACK factored A^T, so solve with its transpose. */
-  int st = umfpack_di_solve(UMFPACK_At, A->row_ptr, A->col_idx, A->values, x, b, s->num, s->control, s->info);
+  int st = (int)umfpack_dl_solve(UMFPACK_At, s->ptr, s->idx, A->values, x, b, s->num, s->control, s->info);
   if (st != UMFPACK_OK) return umf_fail(st, "solve", A->n_rows, d);
   return 0;
 }

@@ -145,14 +145,10 @@ int sl_transport_set_boundary(sl_transport *t, int b, sl_transport_bc type, doub
  * one translation s (x_b = x_a + s), become interior faces between their two
  * cells: Godunov flux, MUSCL reconstruction (the neighbour's cell point
  * taken at x - s or x + s), extra (migration) flux with the translated cell
- * point. s is the difference of the boundaries' length-weighted mean face
- * points, refined to the median of the differences of the face pairs that
- * match within a quarter of the smallest face (so one misplaced face does
- * not shift it for the others); every face of a must have a partner on b
- * whose face point (and,
- * in 2-D, both vertices) lies at x_a + s within 1e-9 of the mesh's extent
- * (its bounding-box diagonal), one to one, else SL_EBADINPUT naming the
- * boundary, the face and where its partner was sought. In an axisymmetric
+ * point. The match is the mesh's (sl_mesh_periodic_match, the one the
+ * finite-element spaces use): every node of b at a node of a plus s, within
+ * 1e-9 of the mesh's bounding-box diagonal, else SL_EBADINPUT naming both
+ * boundaries, the unmatched node and where its partner was sought. In an axisymmetric
  * geometry the translation must be along z (s_r = 0). a and b must differ
  * and not already be periodic; an open or wall boundary may be made
  * periodic. Several pairs may be set (a doubly periodic box).

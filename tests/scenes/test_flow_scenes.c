@@ -12,7 +12,8 @@
  *    regularisation tightens;
  *  - a transient scene (1-D diffusion of w = sin(pi y) e^{-pi^2 t}): BDF1 and
  *    BDF2 observed orders in time, and a run stopped after 5 steps and
- *    restarted from its checkpoint reproduces the uninterrupted run bit for bit. */
+ *    restarted from its checkpoint reproduces the uninterrupted run bit for bit;
+ *  - a fixed-step constant-coefficient run factorises its matrix once. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -270,6 +271,20 @@ static int read_velocity(const char *file, sl_output_field *f) {
   return rc;
 }
 
+/* A constant-coefficient run with a fixed step: BDF1 with dt = 0.01 to
+ * t = 0.1, where the accumulated time reaches the end 1e-17 short of a
+ * whole step. Every step's matrix is the same, so it is factorised once
+ * (the last step is not shortened by round-off into a new matrix). */
+static void single_factorisation(void) {
+  const char *sets[] = {"time.scheme=bdf1", "time.adaptive=false", "time.dt=0.01", "time.end=0.1",
+                        "output.every=0", NULL};
+  sl_ns_result res;
+  if (run_scene("diffusion_1d", sets, "one_factor.h5", NULL, &res)) return;
+  printf("constant coefficients: %ld steps, %s\n", res.steps, res.linear_summary);
+  CHECK(res.steps == 10);
+  CHECK_CONTAINS(res.linear_summary, " 1 numeric");
+}
+
 static void restart(void) {
   sl_ns_result a, b, c;
   const char *full[] = {"time.adaptive=true", NULL};
@@ -301,6 +316,7 @@ int main(void) {
   bingham_cavity();
   snprintf(configs, sizeof configs, "%s/tests/scenes", src ? src : ".");
   time_orders();
+  single_factorisation();
   restart();
   return sl_test_summary();
 }

@@ -23,7 +23,7 @@
  * (a pipe slice periodic along its axis) against eq 4.210 the same way.
  * boycott (a vessel inclined 45 degrees, coarse 12 x 16 mesh): the front
  * falls more than 1.6 times as fast as in an upright vessel and lags the
- * PNK law by less than 0.06 at t = 0.3; the stream function is zero on all
+ * PNK law by at most 0.05 (the digest's tolerance) at t = 0.3; the stream function is zero on all
  * walls. */
 #include <math.h>
 #include <stdio.h>
@@ -361,7 +361,7 @@ static void boycott(void) {
   /* the front falls much faster than in an upright vessel, and lags PNK a little (Nigam: the layer takes
      some of the clear fluid while it forms) */
   CHECK_MSG(enhancement > 1.6, "Boycott enhancement x%.2f", enhancement);
-  CHECK_MSG(lag > 0.0 && lag < 0.06, "front %.4f vs PNK %.4f", z, pnk(t));
+  CHECK_MSG(lag > 0.0 && lag <= 0.05, "front %.4f vs PNK %.4f", z, pnk(t)); /* the digest's tolerance */
   CHECK_MSG(fabs(scalar(out, "solids_conservation_error", t)) < 1e-13, "solids not conserved");
   /* the stream function of the conservative fluxes: zero on every wall of the closed vessel */
   sl_output_field f;
