@@ -77,6 +77,14 @@ static const sl_key_spec transport_keys[] = {
     {"cfl", SL_KEY_REAL, 0, 1e-3, 1.0, NULL, "fraction of the stable explicit sub-step"},
     {"table_points", SL_KEY_INT, 0, 17, 1000001, NULL, "nodes of the settling-flux table"},
 };
+static const sl_key_spec mixture_keys[] = {
+    {"slip_acceleration", SL_KEY_BOOL, 0, 0, 0, NULL,
+     "the slip follows g - Dj/Dt (Nigam 1999 eq 2.25), not only gravity and the frame's centrifugal force"},
+    {"reference_acceleration", SL_KEY_REAL, 0, 1e-12, 1e12, NULL,
+     "the acceleration the settling closure is evaluated at, m s^-2 (default |g|, else the frame's largest "
+     "centrifugal one, else 1)"},
+    {"diffusivity", SL_KEY_REAL, 0, 0.0, 1e6, NULL, "particle diffusivity eps: the flux -eps grad(phi), m^2 s^-1"},
+};
 static const sl_key_spec plugins_keys[] = {
     {"path", SL_KEY_LIST, 0, 0, 0, NULL, "folders searched first for closure libraries"},
 };
@@ -85,7 +93,8 @@ static const sl_key_spec plugins_keys[] = {
 static const sl_section_spec sections[] = {
     SPEC("scene", 0, scene_keys),   SPEC("fluid", 0, fluid_keys),   SPEC("solid", 0, solid_keys),
     SPEC("time", 0, time_keys),     SPEC("solver", 0, solver_keys), SPEC("output", 0, output_keys),
-    SPEC("plugins", 0, plugins_keys), SPEC("flow", 0, flow_keys), SPEC("mesh", 0, mesh_keys), SPEC("transport", 0, transport_keys),           {"initial", 1, NULL, 0},        {"boundary.", 1, NULL, 0},
+    SPEC("plugins", 0, plugins_keys), SPEC("flow", 0, flow_keys), SPEC("mesh", 0, mesh_keys), SPEC("transport", 0, transport_keys),
+    SPEC("mixture", 0, mixture_keys), {"initial", 1, NULL, 0},        {"boundary.", 1, NULL, 0},
     {"closure.", 1, NULL, 0}, /* checked against each closure's own schema */
 };
 

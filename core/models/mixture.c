@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "core/config/expr.h"
+#include "core/fe/field.h"
 #include "core/models/face_flux.h"
 #include "core/models/stream_function.h"
 #include "core/plugin/closure_ini.h"
@@ -91,6 +92,9 @@ typedef struct mixture {
   double rho_f, mu_f, phi_max;
   double g[2], g_ref, omega, centre[2];
   settling st;
+  int slip_acceleration; /* [mixture]: the slip follows g - Dj/Dt */
+  double *acc;           /* [2 n_cells] Dj/Dt (+ Coriolis) at the cell points */
+  double *b_face;        /* [2 n_faces] the body-force direction per face */
   sl_transport_opts topts;
   sl_transport *tr;
   sl_face_flux *ff;
@@ -198,6 +202,40 @@ static void body_direction(void *user, const double x[2], double b[2]) {
   b[0] /= mx->g_ref, b[1] /= mx->g_ref;
 }
 
+/* Nigam (1999) eq 2.25 (rotating frame: eq 3.4): the slip is driven by
+ * the effective acceleration f - Dj/Dt - 2 Omega x j, so j's acceleration
+ * a = dj/dt + (j.grad) j + 2 Omega x j is evaluated at every cell point
+ * (axisymmetric: with the centripetal -u_theta^2 / r of the swirl), and a
+ * face takes the mean of its cells (its one cell on the boundary). */
+static void cell_accelerations(mixture *x, const double *u, const double *dudt) {
+  const sl_th_space *th = x->th;
+  const sl_mesh *m = x->m;
+  const double *xc = sl_transport_cell_points(x->tr);
+  double xi[2] = {0.0, 0.0};
+  if (m->cell_type == SL_CELL_TRI3) xi[0] = xi[1] = 1.0 / 3.0;
+  int dim = m->dim, swirl = x->axi && th->n_comp == 3;
+  for (int c = 0; c < m->n_cells; ++c) {
+    double v[3] = {0, 0, 0}, g[2][2] = {{0, 0}, {0, 0}}, a[2] = {0, 0}, rate;
+    for (int i = 0; i < th->n_comp; ++i) sl_fe_eval(th->vel, u + (size_t)i * th->n_vel, c, xi, &v[i], i < dim ? g[i] : NULL);
+    for (int i = 0; i < dim; ++i) {
+      sl_fe_eval(th->vel, dudt + (size_t)i * th->n_vel, c, xi, &rate, NULL);
+      a[i] = rate + v[0] * g[i][0] + (dim > 1 ? v[1] * g[i][1] : 0.0);
+    }
+    if (swirl) a[0] -= v[2] * v[2] / xc[2 * c] + 2.0 * x->omega * v[2];
+    else if (dim == 2 && !x->axi) a[0] -= 2.0 * x->omega * v[1], a[1] += 2.0 * x->omega * v[0];
+    x->acc[2 * c] = a[0], x->acc[2 * c + 1] = a[1];
+  }
+  for (int f = 0; f < m->n_faces; ++f) {
+    const int *fc = m->face_cells + 2 * f;
+    double b[2];
+    body_direction(x, sl_transport_face_points(x->tr) + 2 * f, b);
+    for (int i = 0; i < 2; ++i) {
+      double af = fc[1] >= 0 ? 0.5 * (x->acc[2 * fc[0] + i] + x->acc[2 * fc[1] + i]) : x->acc[2 * fc[0] + i];
+      x->b_face[2 * f + i] = b[i] - af / x->g_ref;
+    }
+  }
+}
+
 /* ---- diagnostics -------------------------------------------------------------- */
 
 /* The height (along -g) where the slab-averaged phi first reaches `level`
@@ -258,14 +296,24 @@ static int migration_lnmu(void *user, int n, const double *phi, double *ln_mu, d
   return rc;
 }
 
+/* The gradient fluxes (migration, diffusion) as the transport's extra flux. */
+static int create_gradient_flux(mixture *x, const sl_migration_opts *mo, sl_diag *d) {
+  int rc = sl_migration_create(x->tr, mo, &x->mg, d);
+  return rc ? rc : sl_transport_set_extra_flux(x->tr, sl_migration_flux, x->mg, d);
+}
+
 /* [closure.migration] (Phillips et al. 1992) with [closure.viscosity] as
- * mu(phi) for its viscosity-gradient part. */
+ * mu(phi) for its viscosity-gradient part, and [mixture] diffusivity, the
+ * particle diffusivity of a pseudo-continuum (Lalli 1993, eq 0.2). */
 static int migration_setup(mixture *x, sl_diag *d) {
   const sl_ini *ini = x->ini;
   const sl_ini_section *sec = sl_ini_find_section(ini, "closure.migration");
-  if (!sec) return 0;
-  int rc = sl_closure_from_ini(x->reg, ini, "closure.migration", &x->mig.c, d);
+  double eps = 0.0;
+  int rc = sl_ini_get_real(ini, "mixture", "diffusivity", 0, 0.0, 0.0, 1e6, &eps, d);
   if (rc) return rc;
+  sl_migration_opts mo = {.diffusivity = eps};
+  if (!sec) return eps > 0.0 ? create_gradient_flux(x, &mo, d) : 0;
+  if ((rc = sl_closure_from_ini(x->reg, ini, "closure.migration", &x->mig.c, d))) return rc;
   const sl_closure_desc *c = x->mig.c->desc;
   char label[128];
   sl_closure_label(c, label, sizeof label);
@@ -282,7 +330,7 @@ static int migration_setup(mixture *x, sl_diag *d) {
                          sec->file, sec->line, label, c->in[i].name);
     if ((rc = sl_ini_get_real(ini, "solid", "diameter", 1, 0, 1e-9, 1.0, &x->mig.fixed[i], d))) return rc;
   }
-  sl_migration_opts mo = {.coef = migration_coef, .coef_user = x};
+  mo.coef = migration_coef, mo.coef_user = x;
   const sl_ini_section *vs = sl_ini_find_section(ini, "closure.viscosity");
   if (vs) {
     if ((rc = sl_closure_from_ini(x->reg, ini, "closure.viscosity", &x->visc.c, d))) return rc;
@@ -303,10 +351,9 @@ static int migration_setup(mixture *x, sl_diag *d) {
     }
     mo.ln_mu = migration_lnmu, mo.ln_mu_user = x;
   }
-  if ((rc = sl_migration_create(x->tr, &mo, &x->mg, d))) return rc;
-  if ((rc = sl_transport_set_extra_flux(x->tr, sl_migration_flux, x->mg, d))) return rc;
   x->shear = calloc((size_t)x->m->n_cells, sizeof *x->shear);
-  return x->shear ? 0 : sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+  if (!x->shear) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+  return create_gradient_flux(x, &mo, d);
 }
 
 static const double *cell_phi(void *user) { return ((mixture *)user)->phi; }
@@ -385,10 +432,14 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
     }
     x->g_ref = x->omega * x->omega * rmax;
   }
+  if ((rc = sl_ini_get_bool(x->ini, "mixture", "slip_acceleration", 0, 0, &x->slip_acceleration, d))) return rc;
+  if (x->slip_acceleration && x->g_ref == 0.0) x->g_ref = 1.0;
+  if ((rc = sl_ini_get_real(x->ini, "mixture", "reference_acceleration", 0, x->g_ref, 1e-12, 1e12, &x->g_ref, d)))
+    return rc;
   if ((rc = settling_setup(x, d))) return rc;
   if (x->st.b.c && x->g_ref == 0.0)
     return sl_diag_set(d, SL_EBADINPUT, "[closure.hindered_settling] is set but nothing drives settling: give [flow] "
-                                        "gravity or rotation");
+                                        "gravity or rotation, or [mixture] slip_acceleration = true");
   /* the transport */
   long order = 2, table = 0;
   int lim = 0;
@@ -422,6 +473,11 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
     if (!x->psi || !x->node_psi || sl_stream_graph_build(&x->pg, x->m))
       return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
   }
+  if (x->slip_acceleration) {
+    x->acc = malloc((size_t)2 * nc * sizeof *x->acc);
+    x->b_face = malloc((size_t)2 * nf * sizeof *x->b_face);
+    if (!x->acc || !x->b_face) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+  }
   if (x->st.b.c) {
     sl_transport_settling_field(x->tr, body_direction, x, x->w);
     double wmax = 0.0;
@@ -442,8 +498,15 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
   return 0;
 }
 
-static int advance(void *user, double t, double dt, const double *u, sl_diag *d) {
+static int advance(void *user, double t, double dt, const double *u, const double *dudt, sl_diag *d) {
   mixture *x = user;
+  if (x->st.b.c && x->slip_acceleration) { /* the slip of this step follows the acceleration at its end */
+    cell_accelerations(x, u, dudt);
+    sl_transport_settling_faces(x->tr, x->b_face, x->w);
+    double wmax = 0.0;
+    for (int f = 0; f < x->m->n_faces; ++f) wmax = fmax(wmax, fabs(x->w[f]));
+    x->flux_floor = wmax * sl_transport_table(x->tr)->F_absmax;
+  }
   /* the divergence is measured against the through-flow, or against the settling flux and 1e-8 of the
    * largest speed where the mixture hardly moves across faces (a swirl, a closed column) */
   double umax = 0.0;
@@ -451,7 +514,7 @@ static int advance(void *user, double t, double dt, const double *u, sl_diag *d)
   int rc = sl_face_flux_conservative(x->ff, u, fmax(x->flux_floor, 1e-8 * umax * x->area_max), x->q, &x->trial_raw_div, d);
   if (rc) return rc;
   memcpy(x->trial, x->phi, (size_t)x->m->n_cells * sizeof *x->trial);
-  if (x->mg) { /* the shear rate of the new velocity drives the migration over the step */
+  if (x->mig.c) { /* the shear rate of the new velocity drives the migration over the step */
     if ((rc = sl_flow_cell_diagnostics(x->th, u, x->flow, 0.0, x->shear, NULL, NULL, d)) ||
         (rc = sl_migration_set_shear_rate(x->mg, x->shear, d)))
       return rc;
@@ -576,7 +639,7 @@ int sl_mixture_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o,
   }
   sl_transport_destroy(x.tr);
   sl_face_flux_destroy(x.ff);
-  free(x.phi), free(x.trial), free(x.q), free(x.w), free(x.q_acc), free(x.psi), free(x.node_psi);
+  free(x.phi), free(x.trial), free(x.q), free(x.w), free(x.q_acc), free(x.acc), free(x.b_face), free(x.psi), free(x.node_psi);
   sl_stream_graph_free(&x.pg);
   free(x.st.b.buf);
   sl_closure_destroy(x.st.b.c);

@@ -768,8 +768,8 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
   int rc = sl_bdf_init(&b, tc->scheme, n, u, 0.0, d);
   if (rc) return rc;
   double *hist = malloc((size_t)n * sizeof *hist), *pred = malloc((size_t)n * sizeof *pred);
-  double *trial = malloc((size_t)n * sizeof *trial);
-  if (!hist || !pred || !trial) {
+  double *trial = malloc((size_t)n * sizeof *trial), *rate = malloc((size_t)n * sizeof *rate);
+  if (!hist || !pred || !trial || !rate) {
     rc = sl_diag_set(d, SL_EFAILED, "out of memory");
     goto out;
   }
@@ -829,7 +829,10 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     double err = 0.0;
     if (nrc == 0 && tc->adaptive) err = sl_bdf_error(&s, trial, pred, r->th->p_offset, tc->tol, 1e-12);
     int coupled_failed = 0;
-    if (nrc == 0 && err <= 1.0 && r->cpl) coupled_failed = (nrc = r->cpl->advance(r->cpl->user, b.t, hh, trial, &dn)) != 0;
+    if (nrc == 0 && err <= 1.0 && r->cpl) {
+      for (int32_t i = 0; i < n; ++i) rate[i] = s.mass_coef * trial[i] + hist[i]; /* the BDF du/dt at t + hh */
+      coupled_failed = (nrc = r->cpl->advance(r->cpl->user, b.t, hh, trial, rate, &dn)) != 0;
+    }
     if (nrc != 0 || err > 1.0) {
       r->res->rejected_steps++;
       h = nrc ? 0.25 * hh : sl_bdf_next_h(&s, err);
@@ -871,7 +874,7 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     if (write_state(r, b.t, b.past[0], &d2) == 0) write_checkpoint(r, &b, b.t, h, step, &d2);
   }
 out:
-  free(hist), free(pred), free(trial);
+  free(hist), free(pred), free(trial), free(rate);
   sl_bdf_free(&b);
   return rc;
 }

@@ -46,7 +46,9 @@ typedef struct sl_ns_coupling {
   int (*setup)(void *user, const sl_th_space *th, const sl_flow_opts *flow, const unsigned char *open,
                const sl_periodic_pair *pairs, int n_pairs, sl_diag *d);
   const double *(*cell_phi)(void *user);                 /* the current cell values */
-  int (*advance)(void *user, double t, double dt, const double *u, sl_diag *d); /* into a trial state */
+  /* Into a trial state, from the converged velocity u at t + dt and the
+   * integrator's time derivative dudt of it (both combined numbering). */
+  int (*advance)(void *user, double t, double dt, const double *u, const double *dudt, sl_diag *d);
   void (*accept)(void *user);                            /* the trial becomes current */
   int (*write)(void *user, sl_output *out, sl_diag *d);  /* inside an output step */
   int (*checkpoint)(void *user, sl_checkpoint_array *arrays, int max); /* arrays to save: their count */
@@ -68,6 +70,7 @@ typedef struct sl_ns_run_opts {
 
 typedef struct sl_ns_result {
   long steps, rejected_steps, nonlinear_iterations;
+  long matrix_assemblies, residual_assemblies; /* full (matrix and right-hand side) and right-hand-side-only */
   int used_picard;
   double t_start, t_end, t_reached;
   /* wall seconds */

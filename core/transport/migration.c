@@ -39,7 +39,9 @@ void sl_migration_destroy(sl_migration *mg) {
 
 int sl_migration_create(const sl_transport *t, const sl_migration_opts *o, sl_migration **out, sl_diag *d) {
   *out = NULL;
-  if (!t || !o || !o->coef) return sl_diag_set(d, SL_EBADINPUT, "migration: no transport or no coefficient callback");
+  if (!t || !o || (!o->coef && !(o->diffusivity > 0.0)) || !(o->diffusivity >= 0.0 && isfinite(o->diffusivity)))
+    return sl_diag_set(d, SL_EBADINPUT, "migration: no transport, or neither a coefficient callback nor a finite "
+                                        "diffusivity > 0");
   sl_migration *mg = calloc(1, sizeof *mg);
   if (!mg) return sl_diag_set(d, SL_EFAILED, "migration: out of memory");
   size_t nc = (size_t)t->m->n_cells, nf = (size_t)t->m->n_faces + 1;
@@ -99,9 +101,13 @@ int sl_migration_flux(void *migration, const double *phi, double *flux, double *
     ++nff;
   }
   if (nff == 0) return 0;
-  if ((rc = mg->o.coef(mg->o.coef_user, nff, mg->pf, mg->gf, mg->dc, mg->dmu, d)))
+  if (!mg->o.coef) {
+    memset(mg->dc, 0, (size_t)nff * sizeof *mg->dc);
+    memset(mg->dmu, 0, (size_t)nff * sizeof *mg->dmu);
+  } else if ((rc = mg->o.coef(mg->o.coef_user, nff, mg->pf, mg->gf, mg->dc, mg->dmu, d))) {
     return sl_diag_prefix(d, rc, "migration: the coefficients D_c, D_mu");
-  if (mg->o.ln_mu) {
+  }
+  if (mg->o.ln_mu && mg->o.coef) {
     if ((rc = mg->o.ln_mu(mg->o.ln_mu_user, nc, phi, mg->lnmu, mg->dlnmu, d)))
       return sl_diag_prefix(d, rc, "migration: ln mu");
     for (int c = 0; c < nc; ++c)
@@ -114,7 +120,8 @@ int sl_migration_flux(void *migration, const double *phi, double *flux, double *
   }
   double *sum = mg->sum;
   memset(sum, 0, (size_t)nc * sizeof *sum);
-  const int use_mu = mg->o.ln_mu != NULL;
+  const int use_mu = mg->o.ln_mu != NULL && mg->o.coef != NULL;
+  const double eps = mg->o.diffusivity;
   const double *L = mg->lnmu, *dL = mg->dlnmu;
   for (int k = 0; k < nff; ++k) {
     int f = mg->fface[k];
@@ -134,14 +141,14 @@ int sl_migration_flux(void *migration, const double *phi, double *flux, double *
                          f, t->xf[2 * f], t->xf[2 * f + 1], o, n, dn);
     double T = t->area[f] / dn;
     double dphi = phi[n] - phi[o], dlnmu = use_mu ? L[n] - L[o] : 0;
-    flux[f] = -T * (dc * (g[n] * phi[n] - g[o] * phi[o]) + dmu * dlnmu);
+    flux[f] = -T * (dc * (g[n] * phi[n] - g[o] * phi[o]) + dmu * dlnmu + eps * dphi);
     double S = 0;
     if (use_mu) {
       S = fabs(dphi) > SECANT_MIN ? dlnmu / dphi : 0.5 * (dL[o] + dL[n]);
       if (S < 0) S = 0;
     }
-    sum[o] += T * (dc * g[o] + dmu * S);
-    sum[n] += T * (dc * g[n] + dmu * S);
+    sum[o] += T * (dc * g[o] + dmu * S + eps);
+    sum[n] += T * (dc * g[n] + dmu * S + eps);
   }
   double best = HUGE_VAL;
   for (int c = 0; c < nc; ++c)

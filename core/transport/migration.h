@@ -75,15 +75,22 @@ typedef int (*sl_migration_coef_fn)(void *user, int n, const double *phi, const 
 typedef int (*sl_migration_lnmu_fn)(void *user, int n, const double *phi, double *ln_mu, double *dln_mu, sl_diag *d);
 
 typedef struct sl_migration_opts {
-  sl_migration_coef_fn coef; /* required */
+  sl_migration_coef_fn coef; /* NULL: no shear-induced flux (then diffusivity > 0) */
   void *coef_user;
   sl_migration_lnmu_fn ln_mu; /* NULL: no viscosity-gradient flux (D_mu unused) */
   void *ln_mu_user;
+  /* A constant Fickian particle diffusivity eps (m^2/s; 0: none), the
+   * flux -eps grad(phi) of a pseudo-continuum (Lalli 1993, eq 0.2). It
+   * adds T_f eps (phi_o - phi_n) to a face's flux and T_f eps to the
+   * coefficients of the stable step above, so positivity and the bounds
+   * hold as for the migration flux. */
+  double diffusivity;
 } sl_migration_opts;
 
 typedef struct sl_migration sl_migration;
 
-/* Returns 0, SL_EBADINPUT (no coefficient callback) or SL_EFAILED. The
+/* Returns 0, SL_EBADINPUT (neither a coefficient callback nor a positive
+ * diffusivity) or SL_EFAILED. The
  * shear rate starts at zero (no flux). */
 int sl_migration_create(const sl_transport *t, const sl_migration_opts *o, sl_migration **out, sl_diag *d);
 void sl_migration_destroy(sl_migration *mg);

@@ -228,6 +228,11 @@ void sl_transport_settling_field(const sl_transport *t, void (*b)(void *user, co
   }
 }
 
+void sl_transport_settling_faces(const sl_transport *t, const double *b, double *w) {
+  for (int f = 0; f < t->m->n_faces; ++f)
+    w[f] = t->area[f] * (b[2 * f] * t->normal[2 * f] + b[2 * f + 1] * t->normal[2 * f + 1]);
+}
+
 double sl_transport_mass(const sl_transport *t, const double *phi) {
   double s = 0, c = 0;
   for (int i = 0; i < t->m->n_cells; ++i) {

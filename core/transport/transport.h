@@ -202,6 +202,10 @@ void sl_transport_settling_uniform(const sl_transport *t, const double b[2], dou
 void sl_transport_settling_field(const sl_transport *t, void (*b)(void *user, const double x[2], double b[2]),
                                  void *user, double *w);
 
+/* w[f] = A_f (b_f . n_f) for a body-force direction given per face
+ * (b[2 f], b[2 f + 1]): an acceleration field that varies in time. */
+void sl_transport_settling_faces(const sl_transport *t, const double *b, double *w);
+
 /* The stable explicit sub-step for these fluxes (cfl and the order's factor
  * included): +infinity when nothing moves. *cell (may be NULL) is the cell
  * that sets it, -1 then. */

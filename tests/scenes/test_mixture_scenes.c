@@ -24,7 +24,10 @@
  * boycott (a vessel inclined 45 degrees, coarse 12 x 16 mesh): the front
  * falls more than 1.6 times as fast as in an upright vessel and lags the
  * PNK law by at most 0.05 (the digest's tolerance) at t = 0.3; the stream function is zero on all
- * walls. */
+ * walls. spinup (light particles in a spinning cylinder, slip along the
+ * fluid's acceleration): the kinematic shock against the asymptotic theory
+ * of the digest's table. wave_bed (seed 003's pseudo-continuum): solids
+ * conserved and bounded, the soft bed yields and a stiff one does not. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -463,6 +466,102 @@ static void migration_poiseuille(void) {
   sl_output_field_free(&f);
 }
 
+/* ---- spin-up of a light-particle suspension ------------------------------------ */
+
+/* Digest of seed 002, 4.1: the kinematic shock r_s and the mixture-side
+ * fraction alpha_s of the asymptotic theory (Amberg & Ungarish 1993;
+ * Nigam 1999 eqs 4.57-4.64) at t = 25 (tau = 0.572), heights z. */
+static const double spin_z[4] = {0.10, 0.15, 0.20, 0.225};
+static const double spin_rs[4] = {0.8711, 0.8401, 0.8142, 0.7993}, spin_as[4] = {0.186, 0.224, 0.263, 0.288};
+
+static void spinup(void) {
+  const char *out = "spinup.h5";
+  const char *sets[] = {"time.end=25", "mesh.cells=48,24", "solver.nonlinear_tolerance=1e-6", NULL};
+  if (run_ok("spinup", NULL, NULL, sets, out)) return;
+  const double t = 25.0;
+  enum { N = 401 };
+  static double xy[2 * N];
+  sl_diag d = {{0}};
+  double worst = 0.0, worst_a = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    for (int i = 0; i < N; ++i) xy[2 * i] = 1.0 - (double)i / (N - 1), xy[2 * i + 1] = spin_z[k];
+    sl_sample smp;
+    if (sl_sample_points(out, "phi", t, N, xy, &smp, &d)) {
+      CHECK_MSG(0, "%s", d.msg);
+      return;
+    }
+    /* the shock: coming in from the clear fluid at the wall, where phi first reaches alpha_s / 2 */
+    double rs = NAN, amax = 0.0;
+    for (int i = 1; i < N && isnan(rs); ++i)
+      if (smp.values[i] >= 0.5 * spin_as[k]) {
+        double p0 = smp.values[i - 1], p1 = smp.values[i];
+        rs = xy[2 * (i - 1)] + (xy[2 * i] - xy[2 * (i - 1)]) * (0.5 * spin_as[k] - p0) / (p1 - p0);
+      }
+    for (int i = 0; i < N; ++i) amax = fmax(amax, smp.values[i]);
+    sl_sample_free(&smp);
+    printf("  spinup: t = %g, z = %.3f: shock at r = %.4f (theory %.4f), largest phi %.3f (mixture side %.3f)\n", t,
+           spin_z[k], rs, spin_rs[k], amax, spin_as[k]);
+    worst = fmax(worst, fabs(rs - spin_rs[k]));
+    if (!isnan(rs)) worst_a = fmax(worst_a, fabs(amax - spin_as[k]));
+    CHECK_MSG(!isnan(rs), "no shock at z = %g", spin_z[k]);
+  }
+  printf("  spinup: shock position within %.4f of the theory, mixture-side phi within %.3f\n", worst, worst_a);
+  CHECK_MSG(worst <= 0.03, "shock off the theory by %.4f", worst); /* the digest: 2-3 cells of the 128 x 64 grid */
+  CHECK_MSG(fabs(scalar(out, "solids_conservation_error", t)) < 1e-13, "solids not conserved");
+}
+
+/* ---- a gravity wave over a Bingham bed (seed 003) ------------------------------ */
+
+/* The mean of `yielded` over the bed's cells (y < 0.15, below its smeared
+ * surface at 0.2) at time t, and the extreme phi of the whole field. */
+static double bed_yielded(const char *out, double t, double *phi_lo, double *phi_hi) {
+  sl_output_field y, p;
+  sl_output_mesh m;
+  sl_diag d = {{0}};
+  if (sl_output_read_field(out, "yielded", t, &y, &d) || sl_output_read_field(out, "phi", t, &p, &d) ||
+      sl_output_read_mesh(out, &m, &d)) {
+    CHECK_MSG(0, "%s: %s", out, d.msg);
+    return NAN;
+  }
+  double sum = 0.0;
+  int n = 0;
+  *phi_lo = INFINITY, *phi_hi = -INFINITY;
+  for (int c = 0; c < m.n_cells; ++c) {
+    double yc = 0.0;
+    for (int k = 0; k < m.nodes_per_cell; ++k) yc += m.coords[(size_t)3 * m.cells[(size_t)c * m.nodes_per_cell + k] + 1];
+    if (yc / m.nodes_per_cell < 0.15) sum += y.values[c], ++n;
+    *phi_lo = fmin(*phi_lo, p.values[c]), *phi_hi = fmax(*phi_hi, p.values[c]);
+  }
+  sl_output_field_free(&y), sl_output_field_free(&p), sl_output_mesh_free(&m);
+  return n ? sum / n : NAN;
+}
+
+/* wave_bed on a coarse mesh over a twelfth of a period. The scene's bed
+ * (Bingham number 10 on the viscous stress scale) yields under the wave's
+ * pressure gradient, a fluid-mud layer; with the yield stress raised to
+ * 0.2 (of rho U0^2 = 0.0227: far above every stress of the wave) the same
+ * bed stays rigid. Solids conserved and 0 <= phi <= 1 in both. */
+static void wave_bed(void) {
+  static const char *const soft[] = {"mesh.cells=16,12", "time.end=0.5", "output.every=0.5", NULL};
+  static const char *const rigid[] = {"mesh.cells=16,12", "time.end=0.5", "output.every=0.5",
+                                      "closure.viscosity.yield_stress=0.2", NULL};
+  const char *const *sets[2] = {soft, rigid};
+  const char *outs[2] = {"wave_bed_soft.h5", "wave_bed_rigid.h5"};
+  double yielded[2];
+  for (int k = 0; k < 2; ++k) {
+    if (run_ok("wave_bed", NULL, NULL, sets[k], outs[k])) return;
+    double lo, hi;
+    yielded[k] = bed_yielded(outs[k], 0.5, &lo, &hi);
+    double err = scalar(outs[k], "solids_conservation_error", 0.5);
+    printf("  wave_bed (%s bed): yielded fraction of the bed %.3f, phi in [%.3g, %.15g], conservation error %.1e\n",
+           k ? "rigid" : "soft", yielded[k], lo, hi, err);
+    CHECK_MSG(lo >= 0.0 && hi <= 1.0, "phi outside [0, 1]: [%g, %g]", lo, hi);
+    CHECK_MSG(fabs(err) < 1e-13, "solids not conserved: %g", err);
+  }
+  CHECK_MSG(yielded[0] > 0.9, "the scene's bed should yield under the wave: %.3f", yielded[0]);
+  CHECK_MSG(yielded[1] == 0.0, "a bed with a yield stress above the wave's stresses flows: %.3f", yielded[1]);
+}
+
 static void bad_input(void) {
   sl_diag d = {{0}};
   const char *sets[] = {"initial.phi=0.7", NULL};
@@ -471,15 +570,20 @@ static void bad_input(void) {
   CHECK_MSG(strstr(d.msg, "[initial] phi") && strstr(d.msg, "phi_max = 0.64"), "message: %s", d.msg);
 }
 
-int main(void) {
+int main(int argc, char **argv) {
   const char *src = getenv("SLUICE_SOURCE_DIR");
   snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
+  if (argc > 1 && strcmp(argv[1], "spinup") == 0) { /* its own ctest entry: 140 s, skipped in the sanitizer build */
+    if (!getenv("SLUICE_SKIP_LONG")) spinup();
+    return sl_test_summary();
+  }
   richardson_zaki();
   nigam_fan();
   refinement();
   migration_couette();
   migration_poiseuille();
   if (!getenv("SLUICE_SKIP_LONG")) boycott(); /* 12 s; skipped in the sanitizer build */
+  wave_bed();
   bad_input();
   return sl_test_summary();
 }
