@@ -236,6 +236,13 @@ static void cell_accelerations(mixture *x, const double *u, const double *dudt) 
   }
 }
 
+/* The settling flux scale max |w_f| max |F| of the current settling field. */
+static void set_flux_floor(mixture *x) {
+  double wmax = 0.0;
+  for (int f = 0; f < x->m->n_faces; ++f) wmax = fmax(wmax, fabs(x->w[f]));
+  x->flux_floor = wmax * sl_transport_table(x->tr)->F_absmax;
+}
+
 /* ---- diagnostics -------------------------------------------------------------- */
 
 /* The height (along -g) where the slab-averaged phi first reaches `level`
@@ -480,9 +487,7 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
   }
   if (x->st.b.c) {
     sl_transport_settling_field(x->tr, body_direction, x, x->w);
-    double wmax = 0.0;
-    for (int f = 0; f < nf; ++f) wmax = fmax(wmax, fabs(x->w[f]));
-    x->flux_floor = wmax * sl_transport_table(x->tr)->F_absmax;
+    set_flux_floor(x);
   }
   if ((rc = migration_setup(x, d))) return rc;
   if ((rc = initial_phi(x, d))) return rc;
@@ -503,9 +508,7 @@ static int advance(void *user, double t, double dt, const double *u, const doubl
   if (x->st.b.c && x->slip_acceleration) { /* the slip of this step follows the acceleration at its end */
     cell_accelerations(x, u, dudt);
     sl_transport_settling_faces(x->tr, x->b_face, x->w);
-    double wmax = 0.0;
-    for (int f = 0; f < x->m->n_faces; ++f) wmax = fmax(wmax, fabs(x->w[f]));
-    x->flux_floor = wmax * sl_transport_table(x->tr)->F_absmax;
+    set_flux_floor(x);
   }
   /* the divergence is measured against the through-flow, or against the settling flux and 1e-8 of the
    * largest speed where the mixture hardly moves across faces (a swirl, a closed column) */
