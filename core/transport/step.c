@@ -307,6 +307,10 @@ int sl_transport_step(sl_transport *t, double dt, const double *q, const double 
   if (rc) return rc;
   const sl_mesh *m = t->m;
   const int nc = m->n_cells;
+  /* A periodic pair added since the limiter's neighbours were listed joins them. */
+  if (t->o.order == 2 && t->vnb_pairs != sl_transport_periodic_count(t) &&
+      (rc = sl_transport_build_vertex_cells(t, d)))
+    return rc;
   st->max_divergence = max_divergence(t, q);
   st->dt_stable = sl_transport_stable_dt(t, q, w, &st->limiting_cell);
   memcpy(t->cur, phi, (size_t)nc * sizeof *t->cur);

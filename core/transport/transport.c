@@ -16,6 +16,8 @@ void sl_transport_destroy(sl_transport *t) {
   free(t->xf);
   free(t->xc);
   free(t->lsq);
+  free(t->vnb_start);
+  free(t->vnb);
   free(t->bc_type);
   free(t->bc_phi);
   free(t->fkind);
@@ -176,6 +178,7 @@ int sl_transport_create(const sl_mesh *m, const sl_transport_opts *o, sl_transpo
     goto fail;
   }
   if ((rc = build_geometry(t, d))) goto fail;
+  if (r.order == 2 && (rc = sl_transport_build_vertex_cells(t, d))) goto fail;
   if ((rc = sl_settling_table_build(&t->tab, r.phi_max, r.table_points, r.settling, r.settling_user, d))) {
     sl_diag_prefix(d, rc, "transport");
     goto fail;

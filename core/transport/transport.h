@@ -24,8 +24,12 @@
  * Scheme. Cell averages; the exact Godunov flux of h_f(phi) = q_f phi +
  * w_f F(phi) at every face (flux.h: correct for non-convex settling fluxes,
  * no expansion shocks). Order 2: MUSCL (van Leer 1979) with a least-squares
- * gradient and a Barth–Jespersen (1989) limit on the face values (in 1-D
- * the MC limiter, or minmod), SSP-RK2 (Shu & Osher 1988) in time.
+ * gradient and a Barth–Jespersen (1989) limit of the face values to the
+ * range of the cells that share a vertex with the cell, across periodic
+ * pairs too (the face neighbours alone clip smooth data on triangles: L1
+ * orders 0.5 to 1.8 on union-jack meshes, test_transport_muscl.c;
+ * Venkatakrishnan 1995), in 1-D the MC limiter, or minmod; SSP-RK2 (Shu &
+ * Osher 1988) in time.
  * Explicit, sub-cycled: a call advances one outer step dt (the engine's) in
  * n equal sub-steps, each within the stable step.
  *
@@ -42,7 +46,10 @@
  * two first-order updates with twice the step; Zhang & Shu 2010, J. Comput.
  * Phys. 229:3091, section 2), so order 2 uses cfl / 2. On 2-D meshes, where that argument
  * does not carry over exactly, a sub-step whose MUSCL result leaves [0,
- * phi_max] (beyond 1e-12) is redone at first order and counted.
+ * phi_max] (beyond 1e-12) is redone at first order and counted. The
+ * limiter also keeps 2-D face values within [2 phi_i - phi_max, 2 phi_i]
+ * of their cell's phi_i, which gives the bound face by face (muscl.c), so
+ * with divergence-free q that fallback is a guard against round-off.
  *
  * Optional: an extra face flux evaluated from phi at every stage (the
  * shear-induced migration flux, migration.h; sl_transport_set_extra_flux),
@@ -76,7 +83,7 @@ typedef enum sl_transport_geometry {
 } sl_transport_geometry;
 
 typedef enum sl_transport_limiter {
-  SL_LIMITER_MC = 0, /* Barth–Jespersen: face values within the neighbours' range (1-D: monotonized central) */
+  SL_LIMITER_MC = 0, /* Barth–Jespersen: face values within the vertex neighbours' range (1-D: monotonized central) */
   SL_LIMITER_MINMOD  /* half that range (1-D: minmod), more diffusive */
 } sl_transport_limiter;
 

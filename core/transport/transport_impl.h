@@ -22,6 +22,12 @@ struct sl_transport {
   double *xf;     /* [2 n_faces] face points */
   double *xc;     /* [2 n_cells] cell points (r-weighted centroids when axisymmetric) */
   double *lsq;    /* [3 n_cells] inverse least-squares matrix (xx, xy, yy); zeros: no gradient */
+  /* Order 2: the cells that share a vertex with cell c (c excluded), across
+   * periodic pairs too, vnb[vnb_start[c] .. vnb_start[c + 1] - 1]: the
+   * limiter's range (muscl.c). vnb_pairs: the periodic boundaries linked
+   * when it was built (pairs are only ever added, so a count tells). */
+  int *vnb_start, *vnb;
+  int vnb_pairs;
   int *bc_type;   /* [n_boundaries] sl_transport_bc, or SL_TRANSPORT_PERIODIC_ (below) */
   double *bc_phi; /* [n_boundaries] */
   int *fkind;     /* [n_faces] SL_FACE_* */
@@ -58,7 +64,13 @@ static inline int sl_transport_across(const sl_transport *t, int f, int c, doubl
 /* The least-squares matrices (after the geometry or the pairs changed). */
 void sl_transport_build_lsq(sl_transport *t);
 
-/* Limited gradients of phi into t->grad (order 2). */
+/* Builds t->vnb for the current periodic pairs (at creation, and again by
+ * the step after a pair was added). Returns 0 or SL_EFAILED (d set). */
+int sl_transport_build_vertex_cells(sl_transport *t, sl_diag *d);
+/* The number of boundaries in periodic pairs (compare with t->vnb_pairs). */
+int sl_transport_periodic_count(const sl_transport *t);
+
+/* Limited gradients of phi into t->grad (order 2; t->vnb current). */
 void sl_transport_reconstruct(sl_transport *t, const double *phi);
 
 #endif

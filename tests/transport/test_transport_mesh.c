@@ -16,6 +16,7 @@
 
 #include "kynch_run.h"
 #include "testing.h"
+#include "transport/transport_testing.h"
 
 #define PHI_MAX 0.64
 
@@ -59,12 +60,6 @@ static void run(sl_transport *t, const double *q, const double *w, double *phi, 
     tot->clamped += st.clamped;
     for (int c = 0; c < m->n_cells; ++c) tot->max_phi = fmax(tot->max_phi, phi[c]), tot->min_phi = fmin(tot->min_phi, phi[c]);
   }
-}
-
-static double *alloc(int n) {
-  double *p = malloc((size_t)n * sizeof *p);
-  if (!p) exit(1);
-  return p;
 }
 
 /* ---- columns ----------------------------------------------------------------- */

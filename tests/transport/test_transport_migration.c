@@ -22,12 +22,7 @@
  *    takes more sub-steps: its z faces count in the stable step). */
 #include "migration_exact.h"
 #include "testing.h"
-
-static double *alloc(int n) {
-  double *p = malloc((size_t)n * sizeof *p);
-  if (!p) exit(1);
-  return p;
-}
+#include "transport/transport_testing.h"
 
 static sl_transport *open_t(const sl_mesh *m, int order, sl_transport_geometry geo) {
   sl_diag d;

@@ -18,25 +18,9 @@
 #include "core/mesh/mesh.h"
 #include "core/transport/transport.h"
 #include "testing.h"
+#include "transport/transport_testing.h"
 
 #define PHI_MAX 0.64
-
-static int no_settling(void *user, int n, const double *phi, double *u, double *du, sl_diag *d) {
-  (void)user, (void)phi, (void)d;
-  for (int i = 0; i < n; ++i) u[i] = du[i] = 0;
-  return 0;
-}
-
-static void die(const char *what, const sl_diag *d) {
-  fprintf(stderr, "%s: %s\n", what, d->msg);
-  exit(1);
-}
-
-static double *alloc(int n) {
-  double *p = malloc((size_t)n * sizeof *p);
-  if (!p) exit(1);
-  return p;
-}
 
 static sl_transport *open_t(const sl_mesh *m, int order, sl_transport_geometry geo) {
   sl_diag d;
@@ -161,9 +145,8 @@ static void test_doubly_periodic_triangles(void) {
   const int ns[3] = {16, 32, 64};
   const double u[2] = {1, 1};
   double l1[3];
-  /* Uniform "/" diagonals: three levels for the order; union jack: one level, mass and bounds (on union-jack
-   * triangles the Barth-Jespersen limit on the face neighbours clips smooth data and order 2 does not
-   * converge at its rate, periodic or not; unlimited, the same doubly periodic run converges at 2.0). */
+  /* Uniform "/" diagonals: three levels for the order; union jack: one level, mass and bounds (its order:
+   * test_transport_muscl.c). */
   for (int i = 0; i < 4; ++i) {
     sl_diag d;
     sl_mesh *m;
