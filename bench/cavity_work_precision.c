@@ -17,9 +17,10 @@
  *  - the steady Stokes solve of the scene (the work-precision point);
  *  - unless --steps 0: a transient run of the same constant-coefficient
  *    problem, BDF1 with a fixed step (--dt, default 0.01) for K steps
- *    (--steps, default 10), to count numeric factorisations (one is the
- *    target: later steps re-assemble a bitwise unchanged matrix and only
- *    back-substitute) and to time a step that reuses the factorisation: the
+ *    (--steps, default 10), to count numeric factorisations and matrix
+ *    assemblies (one each is the target: later steps assemble the
+ *    right-hand side only and back-substitute) and to time a step that
+ *    reuses the matrix and its factorisation: the
  *    mean over steps 2..K-1 of the wall time between accepted steps and of
  *    the assembly in it (the first factorises; the last is cut to end at K dt
  *    exactly, which in floating point may be a slightly different step and
@@ -65,6 +66,7 @@ typedef struct run_result {
   double assembly;     /* wall seconds (sl_ns_result) */
   double t_symbolic, t_numeric, t_solve;
   long n_symbolic, n_numeric, n_skipped, n_solves;
+  long matrix_asm, rhs_asm; /* full and right-hand-side-only assemblies (sl_ns_result) */
   long rss_kb;         /* peak resident set after the run */
   long steps;          /* transient: accepted steps */
   long step_count;     /* transient: steps 2..K-1 measured */
@@ -203,6 +205,7 @@ static int run(const bench_opts *bo, const char *solver, int n, int transient, r
   }
   if (!rc) {
     r->assembly = res.assembly, r->steps = res.steps;
+    r->matrix_asm = res.matrix_assemblies, r->rhs_asm = res.residual_assemblies;
     if (parse_summary(res.linear_summary, r))
       rc = sl_diag_set(&d, SL_EFAILED, "unexpected linear solver summary '%s'", res.linear_summary);
   }
@@ -350,7 +353,8 @@ static void write_csv(FILE *f, const table *t) {
   fprintf(f, "\n# least-squares order over n = %d..%d: %.2f\n", t->fit_from, t->fit_to, t->fit_order);
   fprintf(f, "# cpu_s: process CPU time of the run; the split (assembly, symbolic, numeric, solve) and wall_s are "
              "wall time; assembly_share = assembly / wall; tr_*: the constant-coefficient BDF1 run, tr_step_s the "
-             "mean (tr_step_max_s the longest) of its steps 2..K-1, which reuse the factorisation\n");
+             "mean (tr_step_max_s the longest) of its steps 2..K-1, which reuse the matrix and its factorisation; "
+             "tr_n_matrix_asm and tr_n_rhs_asm count its full and right-hand-side-only assemblies\n");
   for (int s = 0; s < t->nsolv; ++s)
     for (int k = 0; k < t->nn; ++k) {
       if (!t->st[s][k].ok) fprintf(f, "# failed: %s, n = %d: %s\n", solver_name(t, s), t->ns[k], t->st[s][k].err);
@@ -359,22 +363,23 @@ static void write_csv(FILE *f, const table *t) {
     }
   fprintf(f, "solver,n,unknowns,umin,error,cpu_s,wall_s,assembly_s,assembly_share,n_symbolic,symbolic_s,n_numeric,"
              "numeric_s,n_solves,solve_s,peak_rss_mb,tr_steps,tr_n_numeric,tr_n_skipped,tr_cpu_s,tr_step_s,"
-             "tr_step_max_s,tr_step_assembly_s,tr_assembly_share,tr_peak_rss_mb\n");
+             "tr_step_max_s,tr_step_assembly_s,tr_assembly_share,tr_peak_rss_mb,tr_n_matrix_asm,tr_n_rhs_asm\n");
   for (int s = 0; s < t->nsolv; ++s)
     for (int k = 0; k < t->nn; ++k) {
       const run_result *a = &t->st[s][k], *r = &t->tr[s][k];
       fprintf(f, "%s,%d,%d,", solver_name(t, s), t->ns[k], a->dofs);
       if (!a->ok) {
-        fprintf(f, ",,,,,,,,,,,,,,,,,,,,,\n");
+        fprintf(f, ",,,,,,,,,,,,,,,,,,,,,,,\n");
         continue;
       }
       fprintf(f, "%.10f,%.3e,%.4g,%.4g,%.4g,%.4f,%ld,%.4g,%ld,%.4g,%ld,%.4g,%.1f,", a->umin, fabs(a->umin - t->ref),
               a->cpu, a->wall, a->assembly, a->assembly / a->wall, a->n_symbolic, a->t_symbolic, a->n_numeric,
               a->t_numeric, a->n_solves, a->t_solve, a->rss_kb / 1024.0);
       if (t->have_tr[s][k] && r->ok)
-        fprintf(f, "%ld,%ld,%ld,%.4g,%.4g,%.4g,%.4g,%.4f,%.1f\n", r->steps, r->n_numeric, r->n_skipped, r->cpu,
-                r->step_wall, r->step_wall_max, r->step_assembly, r->step_assembly / r->step_wall, r->rss_kb / 1024.0);
-      else fprintf(f, ",,,,,,,,\n");
+        fprintf(f, "%ld,%ld,%ld,%.4g,%.4g,%.4g,%.4g,%.4f,%.1f,%ld,%ld\n", r->steps, r->n_numeric, r->n_skipped, r->cpu,
+                r->step_wall, r->step_wall_max, r->step_assembly, r->step_assembly / r->step_wall, r->rss_kb / 1024.0,
+                r->matrix_asm, r->rhs_asm);
+      else fprintf(f, ",,,,,,,,,,\n");
     }
 }
 
@@ -594,7 +599,8 @@ int main(int argc, char **argv) {
           fprintf(stderr, " failed: %s", r->err);
           ++failures;
         } else {
-          fprintf(stderr, " %.3g s CPU, %ld numeric factorisation(s)", r->cpu, r->n_numeric);
+          fprintf(stderr, " %.3g s CPU, %ld numeric factorisation(s), %ld matrix assembl%s", r->cpu, r->n_numeric,
+                  r->matrix_asm, r->matrix_asm == 1 ? "y" : "ies");
         }
       }
       fputc('\n', stderr);

@@ -69,7 +69,14 @@ static int simulate(sl_ini *ini, const sl_registry *reg, int model, const char *
     sl_run_summary_format(&s, line, sizeof line);
     fprintf(stderr, "%s\n", line);
     if (res.coupling_summary[0]) fprintf(stderr, "sluice: %s\n", res.coupling_summary);
-    if (res.output_path[0]) fprintf(stderr, "sluice: output %s (%s)\n", res.output_path, res.linear_summary);
+    if (res.output_path[0]) {
+      fprintf(stderr, "sluice: output %s (%s", res.output_path, res.linear_summary);
+      /* what was skipped shows in the counts: a constant matrix is assembled once */
+      if (res.matrix_assemblies + res.residual_assemblies > 0)
+        fprintf(stderr, "; assemblies: %ld matrix, %ld right-hand-side only", res.matrix_assemblies,
+                res.residual_assemblies);
+      fputs(")\n", stderr);
+    }
   }
   if (rc == SL_EFAILED && res.output_path[0])
     sl_diag_prefix(d, rc, "run failed at t = %g; last state saved in %s", res.t_reached, res.output_path);

@@ -22,14 +22,45 @@ void sl_flow_problem_free(sl_flow_problem *p) {
   memset(p, 0, sizeof *p);
 }
 
+/* The constrained dofs into p->fixed; a change of the set drops the kept
+ * matrix (its identity rows are those of the old set). */
 static int collect_fixed(sl_flow_problem *p, sl_diag *d) {
-  int32_t *f = realloc(p->fixed, ((size_t)p->bc.n_fixed + 1) * sizeof *f), k = 0;
+  int32_t old = p->n_fixed, k = 0;
+  int32_t *f = realloc(p->fixed, ((size_t)(p->bc.n_fixed > old ? p->bc.n_fixed : old) + 1) * sizeof *f);
   if (!f) return sl_diag_set(d, SL_EFAILED, "flow: out of memory");
   p->fixed = f;
+  int same = 1;
   for (int32_t i = 0; i < p->bc.n_dofs; ++i)
-    if (p->bc.fixed[i]) f[k++] = i;
+    if (p->bc.fixed[i]) {
+      same &= k < old && f[k] == i; /* f[0 .. old) still holds the previous set */
+      f[k++] = i;
+    }
+  if (!same || k != old) p->matrix.valid = 0;
   p->n_fixed = k;
   return 0;
+}
+
+typedef struct sl_flow_matrix_key matrix_key;
+
+/* The inputs of the matrix when it does not depend on the iterate (nor on
+ * anything a callback could change); 0 otherwise. Everything else in the
+ * options (history, body force, rotation centre) and the tractions enter the
+ * right-hand side only. */
+static int constant_matrix_key(const sl_flow_opts *o, matrix_key *k) {
+  if (o->convection || o->viscosity || o->density.fn) return 0;
+  *k = (matrix_key){.mass_coef = o->mass_coef, .density = o->density.value, .viscosity = o->viscosity_value,
+                    .omega = o->omega, .axisymmetric = o->axisymmetric, .quad_degree = o->quad_degree};
+  return 1;
+}
+
+/* Whether sys.A still holds the matrix of the current options. */
+static int matrix_current(const sl_flow_problem *p) {
+  const matrix_key *m = &p->matrix;
+  matrix_key k;
+  return m->valid && constant_matrix_key(&p->opts, &k) && k.mass_coef == m->mass_coef && k.density == m->density &&
+         k.viscosity == m->viscosity && k.omega == m->omega && k.axisymmetric == m->axisymmetric &&
+         k.quad_degree == m->quad_degree && p->sys.A.pattern_id == m->pattern_id &&
+         p->sys.A.values_gen == m->values_gen;
 }
 
 int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_csr *A, double *b, sl_diag *d) {
@@ -37,6 +68,7 @@ int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_cs
   static const sl_flow_linearisation lin[] = {SL_FLOW_RESIDUAL, SL_FLOW_NEWTON, SL_FLOW_PICARD};
   if (A != &p->sys.A || b != p->sys.b)
     return sl_diag_set(d, SL_EBADINPUT, "flow: assemble into the problem's own system");
+  if (mode != SL_NL_RESIDUAL) p->matrix.valid = 0;
   int rc = sl_assemble_flow(&p->sys, p->th, u, &p->opts, lin[mode], d);
   for (int k = 0; k < p->n_tractions && !rc; ++k)
     rc = sl_assemble_flow_traction(&p->sys, p->th, p->traction[k].boundary, p->traction[k].fn, p->traction[k].user,
@@ -46,7 +78,13 @@ int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_cs
     for (int32_t k = 0; k < p->n_fixed; ++k) b[p->fixed[k]] = 0.0;
     return 0;
   }
-  return sl_csr_set_dirichlet(A, p->n_fixed, p->fixed, NULL, b, 0, d);
+  if ((rc = sl_csr_set_dirichlet(A, p->n_fixed, p->fixed, NULL, b, 0, d))) return rc;
+  matrix_key k;
+  if (constant_matrix_key(&p->opts, &k)) {
+    k.valid = 1, k.pattern_id = A->pattern_id, k.values_gen = A->values_gen;
+    p->matrix = k;
+  }
+  return 0;
 }
 
 int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const sl_newton_opts *o,
@@ -56,5 +94,6 @@ int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const 
   sl_constraints_impose(&p->bc, u);
   sl_newton_opts oo = *o;
   if (oo.n_check <= 0) oo.n_check = p->th->p_offset;
+  oo.matrix_current = oo.linear && matrix_current(p);
   return sl_newton_solve(&p->sys.A, p->sys.b, p->th->n_dofs, u, sl_flow_problem_assemble, p, ls, &oo, st, d);
 }

@@ -9,7 +9,16 @@
  *
  * Constrained dofs hold their prescribed values in the iterate; their rows
  * become identity rows with a zero right-hand side, so corrections vanish
- * there. */
+ * there.
+ *
+ * A problem whose matrix does not depend on the iterate (no convection, no
+ * viscosity or density callback) keeps its assembled matrix between solves:
+ * while the matrix inputs (mass coefficient, density, viscosity, rotation,
+ * geometry, quadrature, the set of constrained dofs) stay the same and
+ * nothing else wrote to sys.A, a linear solve (newton opts.linear) assembles
+ * the right-hand side only, and the linear solver keeps its factorisation.
+ * Time-dependent data (history, body force, tractions, constraint values)
+ * enter the right-hand side alone. */
 #ifndef SLUICE_MODELS_FLOW_PROBLEM_H
 #define SLUICE_MODELS_FLOW_PROBLEM_H
 
@@ -34,6 +43,14 @@ typedef struct sl_flow_problem {
   sl_flow_traction traction[SL_FLOW_MAX_TRACTIONS];
   int32_t n_fixed; /* the constrained dofs, collected at solve time */
   int32_t *fixed;
+  /* What the matrix in sys.A was assembled from, when it does not depend on
+   * the iterate (valid != 0); see sl_flow_problem_solve. */
+  struct sl_flow_matrix_key {
+    int valid;
+    uint64_t pattern_id, values_gen; /* sys.A as left by that assembly */
+    double mass_coef, density, viscosity, omega;
+    int axisymmetric, quad_degree;
+  } matrix;
 } sl_flow_problem;
 
 int sl_flow_problem_init(sl_flow_problem *p, const sl_th_space *th, sl_diag *d);
@@ -43,7 +60,10 @@ void sl_flow_problem_free(sl_flow_problem *p);
 int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_csr *A, double *b, sl_diag *d);
 
 /* Imposes the constraint values on u, then solves with Newton/Picard. The
- * correction test runs over the velocity dofs. */
+ * correction test runs over the velocity dofs. With o->linear and the
+ * matrix of the previous solve still current (see above), only the
+ * right-hand side is assembled (st->assemblies == 0); the problem sets
+ * o->matrix_current itself. */
 int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const sl_newton_opts *o,
                           sl_newton_stats *st, sl_diag *d);
 

@@ -662,6 +662,7 @@ static int solve(ns_run *r, double *u, int *iterations, sl_diag *d) {
   int rc = sl_flow_problem_solve(&r->prob, u, r->ls, &r->nopts, &st, d);
   if (iterations) *iterations = st.iterations;
   r->res->nonlinear_iterations += st.iterations;
+  r->res->matrix_assemblies += st.assemblies, r->res->residual_assemblies += st.residuals;
   r->res->assembly += st.t_assembly;
   if (st.picard_iterations) r->res->used_picard = 1;
   return rc;
@@ -743,8 +744,9 @@ static int time_config(const sl_ini *ini, time_cfg *tc, sl_diag *d) {
   if ((rc = sl_ini_get_real(ini, "time", "tolerance", 0, 1e-3, 1e-14, 1, &tc->tol, d))) return rc;
   if ((rc = sl_ini_get_bool(ini, "time", "adaptive", 0, 1, &tc->adaptive, d))) return rc;
   if ((rc = sl_ini_get_real(ini, "time", "dt_min", 0, tc->dt * 1e-6, 0, 1e9, &tc->dt_min, d))) return rc;
-  if ((rc = sl_ini_get_real(ini, "time", "dt_max", 0, tc->end > 0 ? tc->end / 10 : tc->dt, 1e-15, 1e12, &tc->dt_max, d)))
-    return rc;
+  /* A fixed step is what was asked for; an adaptive one is capped at a tenth of the run by default. */
+  double dt_max = tc->adaptive && tc->end > 0 ? tc->end / 10 : tc->dt;
+  if ((rc = sl_ini_get_real(ini, "time", "dt_max", 0, dt_max, 1e-15, 1e12, &tc->dt_max, d))) return rc;
   if ((rc = sl_ini_get_int(ini, "time", "max_steps", 0, 100000000L, 1, 100000000L, &tc->max_steps, d))) return rc;
   if ((rc = sl_ini_get_real(ini, "output", "every", 0, 0.0, 0.0, 1e12, &tc->every, d))) return rc;
   return 0;

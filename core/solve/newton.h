@@ -14,6 +14,14 @@
  * one); otherwise the step is halved, down to min_step. A Newton step that
  * finds no decrease switches to Picard iterations (robust, linearly
  * convergent) for picard_fallback iterations, then back to Newton.
+ *
+ * A linear problem (opts.linear) takes one solve, which is exact; the
+ * residual it reports is b - A du, computed with the matrix (no second
+ * assembly), so A must be the exact operator. When A already holds that
+ * operator (opts.matrix_current: a constant-coefficient problem re-solved
+ * with new data), only b is assembled and A is left untouched, so the
+ * solver also keeps its factorisation.
+ *
  * SLUICE_NEWTON_TRACE=1 in the environment prints each accepted iteration
  * (step length, correction, residual) on stderr. */
 #ifndef SLUICE_SOLVE_NEWTON_H
@@ -39,7 +47,8 @@ typedef struct sl_newton_opts {
   int picard_first;     /* Picard iterations before Newton (a far initial guess) */
   int picard_fallback;  /* default 5 */
   int picard_only;      /* never use Newton */
-  int linear;           /* the problem is linear: one solve, then the residual is reported */
+  int linear;           /* the problem is linear: one solve, then the residual b - A du is reported */
+  int matrix_current;   /* with linear: A already holds the operator; assemble the residual only */
   double min_step;      /* smallest line-search factor; default 1/64 */
 } sl_newton_opts;
 
@@ -49,7 +58,7 @@ typedef struct sl_newton_stats {
   int iterations;        /* linear solves */
   int picard_iterations; /* of those, Picard */
   int assemblies;        /* full (matrix) assemblies */
-  int residuals;         /* residual-only assemblies (line search) */
+  int residuals;         /* residual-only assemblies (line search, a reused matrix) */
   int backtracks;
   double residual0, residual; /* |b|_2 at the start and at the end */
   double correction;          /* the last relative correction */
