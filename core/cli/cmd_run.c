@@ -1,6 +1,7 @@
 /* sluice run SCENE.ini: parse and validate a scene, resolve its closures,
- * and run it (models navier_stokes and mixture; the two-fluid model is not
- * built yet and `run` says so). */
+ * and run it (models navier_stokes, mixture and, on 1-D columns,
+ * two_fluid; a 2-D two_fluid scene is validated and `run` says that it is
+ * not built yet). */
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,6 +13,7 @@
 #include "core/cli/progress.h"
 #include "core/models/mixture.h"
 #include "core/models/navier_stokes.h"
+#include "core/models/two_fluid.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
 
@@ -30,8 +32,8 @@ static const char run_usage[] =
     "forces it off/on); the run ends with a one-line summary. Ctrl-C stops after\n"
     "the current step and saves it. Exit status: 0 done, 1 the run failed (the\n"
     "last good state is saved), 2 bad input.\n"
-    "Models: navier_stokes and mixture run; two_fluid is validated only (its\n"
-    "engine is not built yet).";
+    "Models: navier_stokes, mixture and two_fluid (1-D columns, geometry = line;\n"
+    "a 2-D two_fluid scene is validated only: that engine is not built yet).";
 
 static volatile sig_atomic_t interrupted;
 static void on_sigint(int sig) {
@@ -55,7 +57,9 @@ static int simulate(sl_ini *ini, const sl_registry *reg, int model, const char *
   sl_ns_result res;
   double w0 = sl_wall_seconds(), c0 = sl_cpu_seconds();
   void (*old)(int) = signal(SIGINT, on_sigint);
-  rc = model == 1 ? sl_mixture_run(ini, reg, &o, &res, d) : sl_ns_run(ini, reg, &o, &res, d);
+  rc = model == 1   ? sl_mixture_run(ini, reg, &o, &res, d)
+       : model == 2 ? sl_two_fluid_run(ini, reg, &o, &res, d)
+                    : sl_ns_run(ini, reg, &o, &res, d);
   signal(SIGINT, old);
   sl_progress_end(&prog);
   sl_run_summary s = {.steps = res.steps, .rejected_steps = res.rejected_steps,
@@ -149,14 +153,25 @@ int sl_cmd_run(int argc, char **argv) {
   }
   int model = 0;
   if ((rc = sl_ini_get_choice(ini, "scene", "model", 1, 0, "navier_stokes|mixture|two_fluid", &model, &d))) goto fail;
-  if (check_only || model == 2) {
+  int two_d = 0; /* two_fluid: only 1-D columns run (geometry = line, the default for this model) */
+  if (model == 2) {
+    int geometry = 0;
+    if ((rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, &d))) goto fail;
+    two_d = geometry != 0;
+  }
+  if (check_only || two_d) {
     printf("%s: scene valid; %d closure%s resolved\n", scene, n_closures, n_closures == 1 ? "" : "s");
     for (int i = 0; i < n_closures; ++i) {
       const sl_closure_desc *c = closures[i]->desc;
       printf("  %-18s %-24s %s (%s)\n", sl_kind_name(c->kind), c->name, c->version, closures[i]->library->path);
     }
-    if (!check_only)
-      fprintf(stderr, "sluice: the two_fluid model is not built yet: nothing was simulated, no output written\n");
+    if (!check_only) {
+      const sl_ini_entry *e = sl_ini_find(ini, "scene", "geometry");
+      rc = sl_diag_set(&d, SL_EBADINPUT,
+                       "%s:%d: [scene] geometry = %s: the 2-D two_fluid model is not built yet (1-D columns, geometry "
+                       "= line, run): nothing was simulated, no output written",
+                       e->file, e->line, e->value);
+    }
     goto fail;
   }
   for (int i = 0; i < n_closures; ++i) sl_closure_destroy(closures[i]);

@@ -85,6 +85,14 @@ static const sl_key_spec mixture_keys[] = {
      "centrifugal one, else 1)"},
     {"diffusivity", SL_KEY_REAL, 0, 0.0, 1e6, NULL, "particle diffusivity eps: the flux -eps grad(phi), m^2 s^-1"},
 };
+static const sl_key_spec two_fluid_keys[] = {
+    {"iterations", SL_KEY_INT, 0, 1, 1000, NULL, "two_fluid: most iterations of one implicit step before it is retried smaller"},
+    {"tolerance", SL_KEY_REAL, 0, 1e-15, 1e-2, NULL,
+     "two_fluid: a step has converged when the solids velocity changes by less than this times its scale"},
+    {"cfl", SL_KEY_REAL, 0, 1e-3, 1.0, NULL, "two_fluid: fraction of the stable sub-step of the solids transport"},
+    {"steady_tolerance", SL_KEY_REAL, 0, 0.0, 1.0, NULL,
+     "two_fluid: stop when max |dphi/dt| falls below this, s^-1 (0: run to [time] end)"},
+};
 static const sl_key_spec plugins_keys[] = {
     {"path", SL_KEY_LIST, 0, 0, 0, NULL, "folders searched first for closure libraries"},
 };
@@ -94,7 +102,7 @@ static const sl_section_spec sections[] = {
     SPEC("scene", 0, scene_keys),   SPEC("fluid", 0, fluid_keys),   SPEC("solid", 0, solid_keys),
     SPEC("time", 0, time_keys),     SPEC("solver", 0, solver_keys), SPEC("output", 0, output_keys),
     SPEC("plugins", 0, plugins_keys), SPEC("flow", 0, flow_keys), SPEC("mesh", 0, mesh_keys), SPEC("transport", 0, transport_keys),
-    SPEC("mixture", 0, mixture_keys), {"initial", 1, NULL, 0},        {"boundary.", 1, NULL, 0},
+    SPEC("mixture", 0, mixture_keys), SPEC("two_fluid", 0, two_fluid_keys), {"initial", 1, NULL, 0},        {"boundary.", 1, NULL, 0},
     {"closure.", 1, NULL, 0}, /* checked against each closure's own schema */
 };
 

@@ -13,6 +13,7 @@
 #include "core/io/output.h"
 #include "core/models/flow_problem.h"
 #include "core/models/scene_mesh.h"
+#include "core/models/scene_output.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
 #include "core/time/bdf.h"
@@ -575,51 +576,13 @@ static int write_checkpoint(ns_run *r, const sl_bdf *b, double t, double dt_next
 }
 
 static int open_output(ns_run *r, const sl_ns_run_opts *o, sl_diag *d) {
-  const char *file;
-  int rc = sl_ini_get_string(r->ini, "output", "file", 0, "", &file, d);
+  int rc = sl_scene_output_path(r->ini, o->output, o->scene_path, r->res->output_path, sizeof r->res->output_path, d);
   if (rc) return rc;
-  char *path = r->res->output_path;
-  size_t cap = sizeof r->res->output_path;
-  if (o->output) {
-    snprintf(path, cap, "%s", o->output);
-  } else if (*file) {
-    snprintf(path, cap, "%s", file);
-  } else {
-    const char *base = o->scene_path ? strrchr(o->scene_path, '/') : NULL;
-    base = base ? base + 1 : o->scene_path ? o->scene_path : "sluice";
-    const char *dot = strrchr(base, '.');
-    snprintf(path, cap, "%.*s.h5", dot ? (int)(dot - base) : (int)strlen(base), base);
-  }
-  /* fields */
-  const char *list;
-  if ((rc = sl_ini_get_string(r->ini, "output", "fields", 0, "", &list, d))) return rc;
-  if (!*list) {
-    r->fields = F_VELOCITY | F_PRESSURE | (r->ph.visc ? F_SHEAR | F_VISCOSITY | F_YIELDED : 0);
-  } else {
-    const sl_ini_entry *e = sl_ini_find(r->ini, "output", "fields");
-    for (const char *p = list; *p;) {
-      while (*p == ' ' || *p == ',') ++p;
-      const char *q = p;
-      while (*q && *q != ',' && *q != ' ') ++q;
-      if (q == p) break;
-      char name[64];
-      snprintf(name, sizeof name, "%.*s", (int)(q - p), p);
-      int found = -1;
-      int n_known = r->cpl ? 6 : 5; /* phi: the mixture model's (always written) */
-      for (int k = 0; k < n_known; ++k)
-        if (strcmp(name, field_names[k]) == 0) found = k;
-      if (found < 0) {
-        const char *s = sl_suggest(name, field_names, n_known);
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] fields: unknown field '%s'%s%s%s (known: %s)", e->file,
-                           e->line, name, s ? "; did you mean '" : "", s ? s : "", s ? "'?" : "",
-                           r->cpl ? "velocity, pressure, shear_rate, viscosity, yielded, phi"
-                                  : "velocity, pressure, shear_rate, viscosity, yielded");
-      }
-      r->fields |= 1 << found;
-      p = q;
-    }
-  }
-  if ((rc = sl_output_open(&r->out, path, d))) return rc;
+  /* fields; phi: the mixture model's (always written) */
+  unsigned mask, def = F_VELOCITY | F_PRESSURE | (r->ph.visc ? F_SHEAR | F_VISCOSITY | F_YIELDED : 0);
+  if ((rc = sl_scene_output_fields(r->ini, field_names, r->cpl ? 6 : 5, def, &mask, d))) return rc;
+  r->fields = (int)mask;
+  if ((rc = sl_output_open(&r->out, r->res->output_path, d))) return rc;
   const sl_th_space *th = r->th;
   static const char *const topo[] = {[SL_CELL_LINE2] = "Edge_3", [SL_CELL_TRI3] = "Triangle_6",
                                      [SL_CELL_QUAD4] = "Quadrilateral_9"};

@@ -27,6 +27,7 @@
 #include "core/io/sample.h"
 #include "core/models/navier_stokes.h"
 #include "core/plugin/closure_ini.h"
+#include "scene_runner.h"
 #include "testing.h"
 
 static char configs[4096];
@@ -34,22 +35,10 @@ static char configs[4096];
 /* Runs configs/<scene>.ini with overrides into out; returns the code. */
 static int run_scene(const char *scene, const char *const *sets, const char *out, const char *restart,
                      sl_ns_result *res) {
-  char path[4200];
-  snprintf(path, sizeof path, "%s/%s.ini", configs, scene);
   sl_diag d = {{0}};
-  sl_ini *ini = NULL;
-  sl_registry *reg = NULL;
-  int rc = sl_ini_parse_file(path, &ini, &d);
-  for (int i = 0; sets && sets[i] && !rc; ++i) rc = sl_ini_apply_override(ini, sets[i], &d);
-  if (!rc) rc = sl_scene_validate(ini, &d);
-  if (!rc) rc = sl_registry_create(&reg, NULL, 0, &d);
-  if (!rc) rc = sl_registry_scan(reg, &d);
-  sl_ns_result r;
-  sl_ns_run_opts o = {.scene_path = path, .output = out, .restart = restart, .sluice_version = "test"};
-  if (!rc) rc = sl_ns_run(ini, reg, &o, res ? res : &r, &d);
+  scene_request q = {.configs = configs, .scene = scene, .sets = sets, .out = out, .restart = restart};
+  int rc = scene_run(&q, sl_ns_run, res, &d);
   CHECK_MSG(rc == 0, "%s: %s", scene, d.msg);
-  sl_registry_destroy(reg);
-  sl_ini_free(ini);
   return rc;
 }
 

@@ -38,54 +38,13 @@
 #include "core/io/sample.h"
 #include "core/models/mixture.h"
 #include "core/plugin/closure_ini.h"
+#include "scene_runner.h"
 #include "testing.h"
 #include "transport/kynch_exact.h"
 
 static char configs[4096];
 
-/* Runs configs/<scene>.ini, its section [replace_section] replaced by the
- * text `replacement` when both are given, with the overrides `sets`. */
-static int run_scene(const char *scene, const char *replace_section, const char *replacement, const char *const *sets,
-                     const char *out, sl_diag *d) {
-  char path[4200];
-  snprintf(path, sizeof path, "%s/%s.ini", configs, scene);
-  sl_ini *ini = NULL;
-  sl_registry *reg = NULL;
-  int rc;
-  if (replace_section) {
-    FILE *f = fopen(path, "rb");
-    static char text[1 << 16], edited[1 << 16];
-    size_t n = f ? fread(text, 1, sizeof text - 1, f) : 0;
-    if (f) fclose(f);
-    text[n] = '\0';
-    char head[128];
-    snprintf(head, sizeof head, "[%s]", replace_section);
-    char *a = strstr(text, head), *b = a ? strstr(a + 1, "\n[") : NULL;
-    if (!a) return sl_diag_set(d, SL_EBADINPUT, "%s: no section %s", path, head);
-    snprintf(edited, sizeof edited, "%.*s%s%s", (int)(a - text), text, replacement, b ? b : "");
-    rc = sl_ini_parse_string(edited, strlen(edited), path, &ini, d);
-  } else {
-    rc = sl_ini_parse_file(path, &ini, d);
-  }
-  for (int i = 0; sets && sets[i] && !rc; ++i) rc = sl_ini_apply_override(ini, sets[i], d);
-  if (!rc) rc = sl_scene_validate(ini, d);
-  if (!rc) rc = sl_registry_create(&reg, NULL, 0, d);
-  if (!rc) rc = sl_registry_scan(reg, d);
-  sl_ns_result r;
-  sl_ns_run_opts o = {.scene_path = path, .output = out, .sluice_version = "test"};
-  if (!rc) rc = sl_mixture_run(ini, reg, &o, &r, d);
-  sl_registry_destroy(reg);
-  sl_ini_free(ini);
-  return rc;
-}
-
-static int run_ok(const char *scene, const char *section, const char *replacement, const char *const *sets,
-                  const char *out) {
-  sl_diag d = {{0}};
-  int rc = run_scene(scene, section, replacement, sets, out, &d);
-  CHECK_MSG(rc == 0, "%s: %s", scene, d.msg);
-  return rc;
-}
+SCENE_RUNNERS(sl_mixture_run)
 
 static double scalar(const char *file, const char *name, double t) {
   sl_diag d = {{0}};

@@ -1,0 +1,539 @@
+/* The 1-D two-fluid model (see two_fluid.h): the scene, the time loop and
+ * the output. One step is core/models/two_fluid_step.c. */
+#include "core/models/two_fluid.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "core/models/scene_mesh.h"
+#include "core/models/scene_output.h"
+#include "core/models/two_fluid_impl.h"
+#include "core/plugin/closure_ini.h"
+#include "core/plugin/kinds.h"
+
+enum { F_PHI = 1, F_US = 2, F_UF = 4, F_P = 8 };
+static const char *const field_names[] = {"phi", "velocity_solid", "velocity_fluid", "pressure"};
+
+typedef struct tf_run {
+  sl_ini *ini;
+  sl_ns_result *res;
+  sl_mesh *mesh;
+  tf_column c;
+  int *face_vertex; /* [n+1] */
+  int *cell_of;     /* [n]: the mesh cell of column cell i */
+  double *node;     /* [n_vertices] scratch for node fields */
+  sl_output *out;
+  int fields;
+  double inventory0, outflow;
+  double steady_tol;
+  long substeps, iterations, advances;
+  char params[2][1024];
+} tf_run;
+
+static double cpu_now(void) { return (double)clock() / CLOCKS_PER_SEC; }
+
+/* ---- the column from the mesh ------------------------------------------------ */
+
+static int column_from_mesh(tf_run *r, sl_diag *d) {
+  const sl_mesh *m = r->mesh;
+  tf_column *c = &r->c;
+  if (m->dim != 1)
+    return sl_diag_set(d, SL_EBADINPUT, "[scene] model = two_fluid runs on 1-D meshes only (geometry = line): the "
+                                        "2-D two-fluid model is not built yet");
+  int n = m->n_cells;
+  c->n = n;
+  r->cell_of = malloc((size_t)n * sizeof *r->cell_of);
+  r->face_vertex = malloc((size_t)(n + 1) * sizeof *r->face_vertex);
+  if (!r->cell_of || !r->face_vertex) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  /* cells in order of increasing x: start at the vertex that begins a cell and ends none */
+  int *next = malloc((size_t)m->n_vertices * sizeof *next), *cell_at = malloc((size_t)m->n_vertices * sizeof *cell_at);
+  int *ends = calloc((size_t)m->n_vertices, sizeof *ends);
+  if (!next || !cell_at || !ends) {
+    free(next), free(cell_at), free(ends);
+    return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  }
+  for (int v = 0; v < m->n_vertices; ++v) next[v] = -1;
+  for (int e = 0; e < n; ++e) {
+    int a = m->cell_vertices[2 * e], b = m->cell_vertices[2 * e + 1]; /* 1-D cells run towards increasing x */
+    next[a] = b, cell_at[a] = e, ends[b] = 1;
+  }
+  int v = -1, ok = 1;
+  for (int k = 0; k < m->n_vertices; ++k)
+    if (next[k] >= 0 && !ends[k]) v = k;
+  for (int i = 0; i < n && ok; ++i) {
+    if (v < 0 || next[v] < 0) ok = 0;
+    else r->face_vertex[i] = v, r->cell_of[i] = cell_at[v], v = next[v];
+  }
+  if (ok) r->face_vertex[n] = v;
+  free(next), free(cell_at), free(ends);
+  if (!ok || v < 0) return sl_diag_set(d, SL_EBADINPUT, "two_fluid: the 1-D mesh is not a single chain of cells");
+  c->h = malloc((size_t)n * sizeof *c->h), c->xc = malloc((size_t)n * sizeof *c->xc);
+  c->xf = malloc((size_t)(n + 1) * sizeof *c->xf), c->dual = malloc((size_t)(n + 1) * sizeof *c->dual);
+  if (!c->h || !c->xc || !c->xf || !c->dual) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  for (int k = 0; k <= n; ++k) c->xf[k] = m->xy[2 * r->face_vertex[k]];
+  for (int i = 0; i < n; ++i) c->h[i] = c->xf[i + 1] - c->xf[i], c->xc[i] = 0.5 * (c->xf[i] + c->xf[i + 1]);
+  c->dual[0] = 0.5 * c->h[0], c->dual[n] = 0.5 * c->h[n - 1];
+  for (int k = 1; k < n; ++k) c->dual[k] = 0.5 * (c->h[k - 1] + c->h[k]);
+  return 0;
+}
+
+/* The boundary names of the two ends, from the mesh's tagged faces. */
+static const char *end_name(const sl_mesh *m, int vertex) {
+  for (int f = 0; f < m->n_faces; ++f)
+    if (m->face_vertices[2 * f] == vertex && m->face_tag[f] >= 0) return m->boundary_names[m->face_tag[f]];
+  return NULL;
+}
+
+static int boundaries(tf_run *r, sl_diag *d) {
+  tf_column *c = &r->c;
+  const char *names[2] = {end_name(r->mesh, r->face_vertex[0]), end_name(r->mesh, r->face_vertex[c->n])};
+  if (!names[0] || !names[1]) return sl_diag_set(d, SL_EBADINPUT, "two_fluid: the column's ends carry no boundary tag");
+  /* every [boundary.X] must name an end */
+  for (int s = 0; s < r->ini->n_sections; ++s) {
+    const sl_ini_section *sec = &r->ini->sections[s];
+    if (strncmp(sec->name, "boundary.", 9) != 0) continue;
+    const char *b = sec->name + 9;
+    if (strcmp(b, names[0]) != 0 && strcmp(b, names[1]) != 0) {
+      const char *sug = sl_suggest(b, names, 2);
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the mesh has no boundary '%s'%s%s%s (its ends: %s, %s)",
+                         sec->file, sec->line, sec->name, b, sug ? "; did you mean '" : "", sug ? sug : "",
+                         sug ? "'?" : "", names[0], names[1]);
+    }
+  }
+  int rc, n_out = 0;
+  c->inlet_side = -1;
+  for (int side = 0; side < 2; ++side) {
+    char sec[300];
+    snprintf(sec, sizeof sec, "boundary.%s", names[side]);
+    static const char *const keys[] = {"type", "velocity", "pressure"};
+    if (sl_ini_find_section(r->ini, sec) && (rc = sl_ini_check_keys(r->ini, sec, keys, 3, d))) return rc;
+    if ((rc = sl_ini_get_choice(r->ini, sec, "type", 0, TF_WALL, "wall|inlet|outlet", &c->bc[side], d))) return rc;
+    const sl_ini_entry *ve = sl_ini_find(r->ini, sec, "velocity"), *pe = sl_ini_find(r->ini, sec, "pressure");
+    if (ve && c->bc[side] != TF_INLET)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] velocity: only an inlet takes a velocity", ve->file, ve->line,
+                         sec);
+    if (pe && c->bc[side] != TF_OUTLET)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] pressure: only an outlet takes a pressure", pe->file, pe->line,
+                         sec);
+    if (c->bc[side] == TF_INLET) {
+      if (c->inlet_side >= 0)
+        return sl_diag_set(d, SL_EBADINPUT, "[%s]: a second inlet (1-D: one inlet and one outlet at most)", sec);
+      if (!ve)
+        return sl_diag_set(d, SL_EBADINPUT, "[%s] velocity: an inlet needs the superficial fluid velocity entering, "
+                                            "m/s (an expression of t)", sec);
+      static const char *const vars[] = {"t"};
+      if ((rc = sl_expr_compile(ve->value, vars, 1, &c->inlet, d)))
+        return sl_diag_prefix(d, rc, "%s:%d: [%s] velocity", ve->file, ve->line, sec);
+      c->inlet_side = side;
+    }
+    if (c->bc[side] == TF_OUTLET) {
+      ++n_out;
+      if ((rc = sl_ini_get_real(r->ini, sec, "pressure", 0, 0.0, -1e12, 1e12, &c->p_out, d))) return rc;
+    }
+  }
+  if (n_out == 2)
+    return sl_diag_set(d, SL_EBADINPUT, "[boundary.%s], [boundary.%s]: two outlets leave the 1-D mixture flux "
+                                        "undetermined; make one an inlet or a wall", names[0], names[1]);
+  if (c->inlet_side >= 0 && n_out == 0)
+    return sl_diag_set(d, SL_EBADINPUT, "[boundary.%s]: an inlet needs an outlet at the other end (in 1-D the "
+                                        "mixture flux is the same everywhere)", names[c->inlet_side]);
+  return 0;
+}
+
+/* ---- closures ------------------------------------------------------------------- */
+
+static int bind_closure(tf_run *r, const sl_registry *reg, const char *section, tf_closure *b, int with_slip,
+                        const char *output, sl_diag *d) {
+  int rc = sl_closure_from_ini(reg, r->ini, section, &b->c, d);
+  if (rc) return rc;
+  const sl_closure_desc *cd = b->c->desc;
+  const sl_ini_section *sec = sl_ini_find_section(r->ini, section);
+  char label[128];
+  sl_closure_label(cd, label, sizeof label);
+  b->in_phi = sl_closure_input(cd, "phi");
+  b->in_slip = with_slip ? sl_closure_input(cd, "slip") : -1;
+  b->out = sl_closure_output(cd, output);
+  if (b->in_phi < 0 || (with_slip && b->in_slip < 0) || b->out < 0 || cd->n_in > TF_MAX_IN || cd->n_out > TF_MAX_IN)
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] %s does not give %s of phi%s", sec->file, sec->line, section,
+                       label, output, with_slip ? " and slip" : "");
+  const tf_column *c = &r->c;
+  for (int i = 0; i < cd->n_in; ++i) {
+    const char *name = cd->in[i].name;
+    double v;
+    if (i == b->in_phi || i == b->in_slip) continue;
+    if (strcmp(name, "rho_f") == 0) v = c->rho_f;
+    else if (strcmp(name, "mu_f") == 0) v = c->mu_f;
+    else if (strcmp(name, "rho_s") == 0) v = c->rho_s;
+    else if (strcmp(name, "d_p") == 0) v = c->d_p;
+    else if (strcmp(name, "sphericity") == 0) v = c->sphericity;
+    else if (strcmp(name, "gravity") == 0) v = fabs(c->g);
+    else
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "%s:%d: [%s] %s needs the input '%s', which the two_fluid model does not provide (it "
+                         "provides phi, slip, rho_f, mu_f, rho_s, d_p, sphericity, gravity)",
+                         sec->file, sec->line, section, label, name);
+    b->fixed[i] = v;
+  }
+  return 0;
+}
+
+static void closure_params(const sl_closure *cl, char *buf, size_t len) {
+  size_t at = 0;
+  buf[0] = '\0';
+  for (int k = 0; k < cl->desc->n_params && at < len; ++k) {
+    char v[64];
+    sl_params_format_value(cl->desc, cl->params, k, v, sizeof v);
+    at += (size_t)snprintf(buf + at, len - at, "%s = %s\n", cl->desc->params[k].name, v);
+  }
+}
+
+/* ---- scene ---------------------------------------------------------------------- */
+
+static int physics(tf_run *r, const sl_registry *reg, sl_diag *d) {
+  tf_column *c = &r->c;
+  sl_ini *ini = r->ini;
+  int rc = sl_ini_get_real(ini, "fluid", "density", 0, 1000.0, 1e-3, 1e5, &c->rho_f, d);
+  if (!rc) rc = sl_ini_get_real(ini, "fluid", "viscosity", 0, 1e-3, 1e-7, 1e7, &c->mu_f, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "density", 1, 0, 1e-3, 1e5, &c->rho_s, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "diameter", 1, 0, 1e-9, 1.0, &c->d_p, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "sphericity", 0, 1.0, 0.01, 1.0, &c->sphericity, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "phi_max", 0, 0.64, 0.01, 0.99, &c->phi_max, d);
+  if (rc) return rc;
+  const sl_ini_entry *pm = sl_ini_find(ini, "solid", "phi_max"), *nm = sl_ini_find(ini, "solid", "porosity_max");
+  if (nm) {
+    double n_min;
+    if ((rc = sl_ini_get_real(ini, "solid", "porosity_max", 0, 0.36, 0.01, 0.99, &n_min, d))) return rc;
+    if (pm)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [solid] porosity_max and phi_max both given: set one", nm->file,
+                         nm->line);
+    c->phi_max = 1.0 - n_min;
+  }
+  double gl[3] = {-9.81, 0, 0};
+  int ng = 0;
+  if ((rc = sl_ini_get_real_list(ini, "flow", "gravity", 0, gl, 3, &ng, d))) return rc;
+  if (ng > 1) {
+    const sl_ini_entry *e = sl_ini_find(ini, "flow", "gravity");
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [flow] gravity: a 1-D column takes one component (along x), %d given",
+                       e->file, e->line, ng);
+  }
+  c->g = ng == 1 ? gl[0] : -9.81;
+  c->below = c->g <= 0.0;
+  long it;
+  if ((rc = sl_ini_get_int(ini, "two_fluid", "iterations", 0, 50, 1, 1000, &it, d))) return rc;
+  c->max_iterations = (int)it;
+  if ((rc = sl_ini_get_real(ini, "two_fluid", "tolerance", 0, 1e-9, 1e-15, 1e-2, &c->tolerance, d))) return rc;
+  if ((rc = sl_ini_get_real(ini, "two_fluid", "cfl", 0, 0.9, 1e-3, 1.0, &c->cfl, d))) return rc;
+  if ((rc = sl_ini_get_real(ini, "two_fluid", "steady_tolerance", 0, 0.0, 0.0, 1.0, &r->steady_tol, d))) return rc;
+  if (!sl_ini_find_section(ini, "closure.drag"))
+    return sl_diag_set(d, SL_EBADINPUT, "[closure.drag]: the two_fluid model needs a drag closure (e.g. model = "
+                                        "wen_yu); `sluice closures` lists them");
+  if ((rc = bind_closure(r, reg, "closure.drag", &c->drag, 1, "K", d))) return rc;
+  if (sl_ini_find_section(ini, "closure.solids_pressure") &&
+      (rc = bind_closure(r, reg, "closure.solids_pressure", &c->ps, 0, "p_s", d)))
+    return rc;
+  for (int s = 0; s < ini->n_sections; ++s) {
+    const char *name = ini->sections[s].name;
+    if (strncmp(name, "closure.", 8) == 0 && strcmp(name, "closure.drag") != 0 &&
+        strcmp(name, "closure.solids_pressure") != 0)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the 1-D two_fluid model uses [closure.drag] and "
+                                          "[closure.solids_pressure] only", ini->sections[s].file,
+                         ini->sections[s].line, name);
+  }
+  /* the velocity scale of the convergence test: the Stokes velocity of one particle, or the through-flow */
+  double d_eff = c->sphericity * c->d_p;
+  c->v_ref = fmax(fabs(c->rho_s - c->rho_f) * fabs(c->g) * d_eff * d_eff / (18.0 * c->mu_f), 1e-12);
+  return 0;
+}
+
+static int initial_state(tf_run *r, sl_diag *d) {
+  tf_column *c = &r->c;
+  const sl_ini_entry *e = sl_ini_find(r->ini, "initial", "phi"), *en = sl_ini_find(r->ini, "initial", "porosity");
+  if (e && en)
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] porosity and phi both given: set one", en->file, en->line);
+  if (!e && !en)
+    return sl_diag_set(d, SL_EBADINPUT, "[initial] phi (or porosity): the two_fluid model needs the initial solids "
+                                        "fraction");
+  const sl_ini_entry *use = e ? e : en;
+  static const char *const vars[] = {"x", "y"};
+  sl_expr *ex;
+  int rc = sl_expr_compile(use->value, vars, 2, &ex, d);
+  if (rc) return sl_diag_prefix(d, rc, "%s:%d: [initial] %s", use->file, use->line, use->key);
+  for (int i = 0; i < c->n && !rc; ++i) {
+    double xy[2] = {c->xc[i], 0.0}, v = sl_expr_eval(ex, xy), phi = e ? v : 1.0 - v;
+    if (!(phi >= 0.0 && phi <= c->phi_max))
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s = %g at x = %g: allowed %s = %g", use->file, use->line,
+                       use->key, v, c->xc[i], e ? "0 <= phi <= phi_max" : "1 - phi_max <= porosity <= 1, phi_max",
+                       c->phi_max);
+    c->phi[i] = phi;
+  }
+  sl_expr_free(ex);
+  return rc;
+}
+
+static int allocate(tf_column *c, sl_diag *d) {
+  size_t n = (size_t)c->n, f = n + 1;
+  double **cells[] = {&c->phi, &c->p, &c->phi_new, &c->p_new, &c->ps_v, &c->ps_d, &c->alpha};
+  double **faces[] = {&c->u,  &c->uf,   &c->u_new, &c->uf_new, &c->w,  &c->K,   &c->dK,   &c->phif,
+                      &c->slip, &c->lo, &c->di,    &c->up,     &c->rhs, &c->flux, &c->dpdx};
+  for (size_t i = 0; i < sizeof cells / sizeof cells[0]; ++i)
+    if (!(*cells[i] = calloc(n, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  for (size_t i = 0; i < sizeof faces / sizeof faces[0]; ++i)
+    if (!(*faces[i] = calloc(f, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  return 0;
+}
+
+static void release(tf_run *r) {
+  tf_column *c = &r->c;
+  double *all[] = {c->h,     c->xc,  c->xf,    c->dual,   c->phi,   c->p,    c->phi_new, c->p_new, c->ps_v,
+                   c->ps_d,  c->alpha, c->u,   c->uf,     c->u_new, c->uf_new, c->w,     c->K,       c->dK,
+                   c->phif,  c->slip, c->lo,   c->di,     c->up,    c->rhs,  c->flux,  c->dpdx,    c->drag.buf,
+                   c->ps.buf, r->node};
+  for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i) free(all[i]);
+  sl_closure_destroy(c->drag.c);
+  sl_closure_destroy(c->ps.c);
+  sl_expr_free(c->inlet);
+  free(r->face_vertex), free(r->cell_of);
+  sl_mesh_destroy(r->mesh);
+}
+
+/* ---- output ----------------------------------------------------------------------- */
+
+static double inventory(const tf_column *c) {
+  double s = 0.0;
+  for (int i = 0; i < c->n; ++i) s += c->phi[i] * c->h[i];
+  return s;
+}
+
+static int open_output(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
+  unsigned mask;
+  int rc = sl_scene_output_path(r->ini, o->output, o->scene_path, r->res->output_path, sizeof r->res->output_path, d);
+  if (!rc) rc = sl_scene_output_fields(r->ini, field_names, 4, F_PHI | F_US | F_UF | F_P, &mask, d);
+  if (rc) return rc;
+  r->fields = (int)mask;
+  if ((rc = sl_output_open(&r->out, r->res->output_path, d))) return rc;
+  const sl_mesh *m = r->mesh;
+  int32_t *cells = malloc((size_t)m->n_cells * 2 * sizeof *cells);
+  r->node = calloc((size_t)m->n_vertices, sizeof *r->node);
+  if (!cells || !r->node) {
+    free(cells);
+    return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  }
+  for (int v = 0; v < m->n_vertices; ++v) r->node[v] = m->xy[2 * v];
+  for (int e2 = 0; e2 < 2 * m->n_cells; ++e2) cells[e2] = m->cell_vertices[e2];
+  rc = sl_output_write_mesh(r->out, 1, m->n_vertices, r->node, m->n_cells, 2, cells, "Polyline", d);
+  free(cells);
+  if (rc) return rc;
+  char *ini_text = sl_ini_to_string(r->ini);
+  sl_provenance_closure pc[2];
+  sl_provenance pv = {.sluice_version = o->sluice_version ? o->sluice_version : "unknown", .ini_text = ini_text,
+                      .closures = pc};
+  const sl_closure *cl[2] = {r->c.drag.c, r->c.ps.c};
+  const char *roles[2] = {"closure.drag", "closure.solids_pressure"};
+  for (int k = 0; k < 2; ++k) {
+    if (!cl[k]) continue;
+    closure_params(cl[k], r->params[k], sizeof r->params[k]);
+    pc[pv.n_closures++] = (sl_provenance_closure){roles[k], sl_kind_name(cl[k]->desc->kind), cl[k]->desc->name,
+                                                  cl[k]->desc->version, cl[k]->library->path, r->params[k]};
+  }
+  rc = sl_output_write_provenance(r->out, &pv, d);
+  free(ini_text);
+  return rc;
+}
+
+/* Cell arrays in the mesh's cell order, face arrays at the mesh's vertices. */
+static int write_state(tf_run *r, double t, sl_diag *d) {
+  double t0 = cpu_now();
+  tf_column *c = &r->c;
+  int rc = sl_output_begin_step(r->out, t, d);
+  double *cellv = r->c.alpha; /* scratch of n cells */
+  const double *cf[2] = {c->phi, c->p}, *ff[2] = {c->u, c->uf};
+  const int cflag[2] = {F_PHI, F_P}, fflag[2] = {F_US, F_UF};
+  const char *cname[2] = {"phi", "pressure"}, *fname[2] = {"velocity_solid", "velocity_fluid"};
+  for (int k = 0; k < 2 && !rc; ++k) {
+    if (!(r->fields & cflag[k])) continue;
+    for (int i = 0; i < c->n; ++i) cellv[r->cell_of[i]] = cf[k][i];
+    rc = sl_output_write_field(r->out, cname[k], SL_CENTRE_CELL, 1, cellv, d);
+  }
+  for (int k = 0; k < 2 && !rc; ++k) {
+    if (!(r->fields & fflag[k])) continue;
+    for (int f = 0; f <= c->n; ++f) r->node[r->face_vertex[f]] = ff[k][f];
+    rc = sl_output_write_field(r->out, fname[k], SL_CENTRE_NODE, 1, r->node, d);
+  }
+  double inv = inventory(c);
+  if (!rc) rc = sl_output_write_scalar(r->out, "solids_inventory", inv, d);
+  if (!rc)
+    rc = sl_output_write_scalar(r->out, "solids_conservation_error",
+                                r->inventory0 > 0.0 ? (inv + r->outflow - r->inventory0) / r->inventory0 : 0.0, d);
+  if (!rc) rc = sl_output_write_scalar(r->out, "mixture_flux", tf_mixture_flux(c, t), d);
+  if (!rc) rc = sl_output_end_step(r->out, d);
+  r->res->output += cpu_now() - t0;
+  return rc;
+}
+
+static int write_checkpoint(tf_run *r, double t, double dt, long step, sl_diag *d) {
+  double book[2] = {r->inventory0, r->outflow};
+  sl_checkpoint_array a[5] = {{"phi", r->c.n, r->c.phi}, {"velocity_solid", r->c.n + 1, r->c.u},
+                              {"velocity_fluid", r->c.n + 1, r->c.uf}, {"pressure", r->c.n, r->c.p},
+                              {"solids_book", 2, book}};
+  sl_checkpoint ck = {.time = t, .dt = dt, .step = step, .n_arrays = 5, .arrays = a};
+  ck.n_ints = 1;
+  snprintf(ck.int_names[0], SL_CHECKPOINT_NAME_MAX, "rejected");
+  ck.ints[0] = r->res->rejected_steps;
+  return sl_output_write_checkpoint(r->out, &ck, d);
+}
+
+static int restore(tf_run *r, const char *path, double *t, double *dt, long *step, sl_diag *d) {
+  sl_checkpoint ck;
+  int rc = sl_checkpoint_read(path, &ck, d);
+  if (rc) return rc;
+  const char *names[5] = {"phi", "velocity_solid", "velocity_fluid", "pressure", "solids_book"};
+  double *dst[4] = {r->c.phi, r->c.u, r->c.uf, r->c.p};
+  int64_t len[5] = {r->c.n, r->c.n + 1, r->c.n + 1, r->c.n, 2};
+  for (int k = 0; k < 5 && !rc; ++k) {
+    const sl_checkpoint_array *a = sl_checkpoint_find(&ck, names[k]);
+    if (!a || a->n != len[k])
+      rc = sl_diag_set(d, SL_EBADINPUT, "restart: %s holds no two_fluid '%s' of %lld values", path, names[k],
+                       (long long)len[k]);
+    else if (k < 4) memcpy(dst[k], a->data, (size_t)a->n * sizeof(double));
+    else r->inventory0 = a->data[0], r->outflow = a->data[1];
+  }
+  *t = ck.time, *dt = ck.dt, *step = (long)ck.step;
+  if (!rc && ck.n_ints > 0) r->res->rejected_steps = (long)ck.ints[0];
+  sl_checkpoint_free(&ck);
+  return rc;
+}
+
+/* ---- the time loop ------------------------------------------------------------------ */
+
+static int time_loop(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
+  tf_column *c = &r->c;
+  double end, dt_cfg, dt_min, every;
+  long max_steps;
+  int rc = sl_ini_get_real(r->ini, "time", "end", 1, 0, 0, 1e12, &end, d);
+  if (!rc) rc = sl_ini_get_real(r->ini, "time", "dt", 1, 0, 1e-15, 1e9, &dt_cfg, d);
+  if (!rc) rc = sl_ini_get_real(r->ini, "time", "dt_min", 0, dt_cfg * 1e-6, 0, 1e9, &dt_min, d);
+  if (!rc) rc = sl_ini_get_int(r->ini, "time", "max_steps", 0, 100000000L, 1, 100000000L, &max_steps, d);
+  if (!rc) rc = sl_ini_get_real(r->ini, "output", "every", 0, 0.0, 0.0, 1e12, &every, d);
+  if (rc) return rc;
+  double t = 0.0, h = dt_cfg;
+  long step = 0, steps_here = 0;
+  if (o->restart) {
+    if ((rc = restore(r, o->restart, &t, &h, &step, d))) return rc;
+  } else {
+    r->inventory0 = inventory(c);
+    if ((rc = write_state(r, 0.0, d)) || (rc = write_checkpoint(r, 0.0, h, 0, d))) return rc;
+  }
+  r->res->t_start = t;
+  int next_out = every > 0 ? (int)floor(t / every + 1e-9) + 1 : 0;
+  const double eps_t = 1e-12 * fmax(1.0, end);
+  int steady = 0;
+  const char *limit = "fixed dt";
+  long n_cut = 0;
+  while (t < end - eps_t && !steady && steps_here < max_steps) {
+    if (o->interrupt && *o->interrupt) {
+      rc = sl_diag_set(d, SL_EFAILED, "interrupted at t = %.6g after %ld steps", t, step);
+      break;
+    }
+    double t_stop = end;
+    if (every > 0 && next_out * every < t_stop) t_stop = next_out * every;
+    double hh = h;
+    if (fabs(t + hh - t_stop) > eps_t && (t + hh > t_stop || t + 1.05 * hh > t_stop)) hh = t_stop - t;
+    double c0 = cpu_now();
+    sl_diag ds;
+    int src = tf_step(c, t, hh, &ds);
+    r->res->solve += cpu_now() - c0;
+    r->iterations += c->iterations_trial, r->res->nonlinear_iterations += c->iterations_trial;
+    if (src) {
+      r->res->rejected_steps++, ++n_cut;
+      h = 0.25 * hh;
+      if (h < dt_min) {
+        rc = sl_diag_set(d, SL_EFAILED, "step rejected at t = %.6g down to dt = %.3g < dt_min = %.3g: %s", t, h, dt_min,
+                         ds.msg);
+        break;
+      }
+      continue;
+    }
+    double rate = 0.0;
+    for (int i = 0; i < c->n; ++i) rate = fmax(rate, fabs(c->phi_new[i] - c->phi[i]) / hh);
+    /* accept */
+    double *sw;
+    sw = c->phi, c->phi = c->phi_new, c->phi_new = sw;
+    sw = c->u, c->u = c->u_new, c->u_new = sw;
+    sw = c->uf, c->uf = c->uf_new, c->uf_new = sw;
+    sw = c->p, c->p = c->p_new, c->p_new = sw;
+    r->outflow += c->outflow_trial;
+    r->substeps += c->substeps_trial, ++r->advances;
+    t += hh, ++step, ++steps_here;
+    if (h < dt_cfg) h = fmin(dt_cfg, 2.0 * h), limit = "convergence of the implicit step";
+    if (o->monitor) o->monitor(o->monitor_user, t, hh, step, c->iterations_trial);
+    steady = r->steady_tol > 0.0 && rate < r->steady_tol;
+    int due = every > 0 ? t >= next_out * every - eps_t : 0;
+    if (due || steady || t >= end - eps_t || steps_here >= max_steps) {
+      while (every > 0 && t >= next_out * every - eps_t) ++next_out;
+      if ((rc = write_state(r, t, d)) || (rc = write_checkpoint(r, t, h, step, d))) break;
+    }
+  }
+  r->res->steps = step;
+  r->res->t_reached = t;
+  r->res->t_end = end;
+  r->res->step_limit = n_cut ? limit : "fixed dt";
+  if (rc == SL_EFAILED) { /* keep the last good state */
+    sl_diag d2;
+    if (write_state(r, t, &d2) == 0) write_checkpoint(r, t, h, step, &d2);
+  }
+  if (steady && rc == 0)
+    fprintf(stderr, "sluice: two_fluid: steady at t = %.6g (max |dphi/dt| < %g per s)\n", t, r->steady_tol);
+  return rc;
+}
+
+int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d) {
+  memset(res, 0, sizeof *res);
+  tf_run r = {.ini = ini, .res = res};
+  int geometry = 0;
+  int rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, d);
+  if (!rc && geometry != 0) {
+    const sl_ini_entry *e = sl_ini_find(ini, "scene", "geometry");
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [scene] geometry = %s: the two_fluid model runs 1-D columns "
+                                      "(geometry = line) only; its 2-D form is not built yet",
+                     e->file, e->line, e->value);
+  }
+  if (!rc) rc = sl_scene_mesh(ini, &r.mesh, d);
+  if (!rc) rc = column_from_mesh(&r, d);
+  if (!rc) rc = physics(&r, reg, d);
+  if (!rc) rc = boundaries(&r, d);
+  if (!rc) rc = allocate(&r.c, d);
+  if (!rc) rc = initial_state(&r, d);
+  if (!rc) { /* the initial fluid velocity and a consistent u_s = 0 */
+    tf_column *c = &r.c;
+    double j = tf_mixture_flux(c, 0.0);
+    if (!isfinite(j)) rc = sl_diag_set(d, SL_EBADINPUT, "the inlet velocity is not finite at t = 0");
+    for (int k = 0; k <= c->n && !rc; ++k) {
+      int cell = k == 0 ? 0 : k == c->n ? c->n - 1 : (c->below ? k - 1 : k);
+      c->uf[k] = j / (1.0 - c->phi[cell]);
+    }
+    c->v_ref = fmax(c->v_ref, fabs(j));
+  }
+  if (!rc) rc = open_output(&r, o, d);
+  if (!rc) rc = time_loop(&r, o, d);
+  if (r.out) {
+    sl_diag d2;
+    int crc = sl_output_close(r.out, rc ? &d2 : d);
+    if (!rc) rc = crc;
+  }
+  if (r.advances) {
+    double base = r.inventory0, err = base > 0.0 ? (inventory(&r.c) + r.outflow - base) / base : 0.0;
+    double pmax = 0.0;
+    for (int i = 0; i < r.c.n; ++i) pmax = fmax(pmax, r.c.phi[i]);
+    snprintf(res->coupling_summary, sizeof res->coupling_summary,
+             "two_fluid: %.1f iterations and %.1f transport sub-steps per step, solids conservation error %.1e, "
+             "outflow %.3g m, max phi %.4f (phi_max %.4g)",
+             (double)r.iterations / (double)r.advances, (double)r.substeps / (double)r.advances, err, r.outflow, pmax,
+             r.c.phi_max);
+  }
+  snprintf(res->linear_summary, sizeof res->linear_summary, "tridiagonal, %d faces", r.c.n + 1);
+  release(&r);
+  return rc;
+}

@@ -1,0 +1,58 @@
+/* The two-fluid model (Eulerian-Eulerian, seed 000: Pringle 2001), 1-D
+ * vertical column. Fluid and solids momentum with one pressure p (digest of
+ * seed 000, section 1.2; Gidaspow 1994 model A), incompressible phases:
+ *
+ *   d(phi)/dt + d(phi u_s)/dx = 0,   phi u_s + (1 - phi) u_f = j(t),
+ *   rho_s phi du_s/dt       = -phi dp/dx - dp_s/dx + K (u_f - u_s) + phi rho_s g,
+ *   rho_f (1-phi) du_f/dt   = -(1-phi) dp/dx       - K (u_f - u_s) + (1-phi) rho_f g,
+ *
+ * K from [closure.drag] (architecture.md section 4: F_s = K (u_f - u_s)),
+ * p_s(phi) from [closure.solids_pressure] (none: p_s = 0), the advective
+ * momentum terms dropped as in Pringle's finite-element model ("slow
+ * flows", digest 1.4). In 1-D the mixture continuity fixes the mixture
+ * flux j (the inlet's superficial velocity, 0 in a closed column), so the
+ * fluid flux follows from the solids flux (Pringle's V = c, eq 4.43), and
+ * eliminating dp/dx leaves one equation for u_s:
+ *
+ *   [rho_s phi + rho_f phi^2/eps] du_s/dt = -dp_s/dx + K s/eps + phi (rho_s - rho_f) g
+ *                                           + phi rho_f/eps dj/dt,
+ *   s = u_f - u_s = (j - u_s)/eps,  eps = 1 - phi.
+ *
+ * Its steady homogeneous state is K s = phi eps (rho_s - rho_f) |g|
+ * (digest 2.1.6), U = eps s; at rest dp_s/dx = phi (rho_s - rho_f) g
+ * (digest 4.4). The pressure written is p from the fluid equation.
+ *
+ * Discretisation (core/models/two_fluid_step.c): phi as cell averages, u_s
+ * and u_f at the faces (the mesh vertices); backward Euler, drag implicit
+ * (Newton-linearised in the slip), p_s implicit through its derivative
+ * (Pringle 2001 eq 4.31's Taylor expansion about the latest iterate), the
+ * step iterated to convergence; phi moved conservatively with the new u_s
+ * by bounded upwind sub-steps: 0 <= phi <= phi_max whatever dt.
+ *
+ * Scene sections:
+ *   [scene]   model = two_fluid, geometry = line
+ *   [mesh]    generator = interval (x is the height when gravity is -x)
+ *   [fluid]   density, viscosity
+ *   [solid]   density, diameter, sphericity, phi_max (or porosity_max)
+ *   [flow]    gravity = g_x (default -9.81)
+ *   [closure.drag]             required
+ *   [closure.solids_pressure]  optional
+ *   [initial] phi (or porosity) = expression of x
+ *   [boundary.NAME] type = wall | inlet | outlet; inlet: velocity = the
+ *             superficial fluid velocity entering (expression of t), solids
+ *             held; outlet: pressure (default 0), solids leave if carried
+ *   [two_fluid] iterations, tolerance, cfl, steady_tolerance
+ *   [time]    end, dt, dt_min, max_steps      [output] file, every, fields
+ */
+#ifndef SLUICE_MODELS_TWO_FLUID_H
+#define SLUICE_MODELS_TWO_FLUID_H
+
+#include "core/models/navier_stokes.h"
+
+/* Runs a model = two_fluid scene (geometry = line); the arguments and
+ * returns of sl_ns_run: 0, SL_EBADINPUT (nothing written) or SL_EFAILED
+ * (the last good state saved, the message says where and why).
+ * res->coupling_summary gets the model's one-line summary. */
+int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d);
+
+#endif

@@ -1,0 +1,67 @@
+/* Internals of the 1-D two-fluid model shared by two_fluid.c (scene set-up,
+ * time loop, output) and two_fluid_step.c (one implicit step). */
+#ifndef SLUICE_MODELS_TWO_FLUID_IMPL_H
+#define SLUICE_MODELS_TWO_FLUID_IMPL_H
+
+#include "core/config/expr.h"
+#include "core/plugin/instance.h"
+#include "core/util/diag.h"
+
+enum { TF_MAX_IN = 32 };
+enum { TF_WALL = 0, TF_INLET = 1, TF_OUTLET = 2 };
+
+/* A closure with one varying input or two (phi, and slip for drag), the
+ * others fixed by the scene; one output and its derivatives. */
+typedef struct tf_closure {
+  sl_closure *c;
+  int in_phi, in_slip, out; /* in_slip -1: none */
+  double fixed[TF_MAX_IN];
+  double *buf;
+  int cap;
+} tf_closure;
+
+typedef struct tf_column {
+  /* geometry: cells 0..n-1 upwards in x, face k between cells k-1 and k */
+  int n;
+  double *h, *xc, *xf, *dual; /* [n], [n], [n+1], [n+1] (dual: centre to centre, half cells at the ends) */
+  int below;                  /* 1: the gravity side of face k is cell k-1 (g <= 0); 0: cell k */
+  /* physics */
+  double rho_f, mu_f, rho_s, d_p, sphericity, g, phi_max;
+  double v_ref; /* velocity scale: |j| or the Stokes velocity */
+  tf_closure drag, ps; /* ps.c NULL: no solids pressure */
+  /* boundaries: [0] at x0, [1] at x1 */
+  int bc[2];
+  sl_expr *inlet; /* superficial fluid velocity entering, of t */
+  int inlet_side;
+  double p_out;
+  /* numerics */
+  int max_iterations;
+  double tolerance, cfl;
+  /* state: cells phi, p; faces u (solids), uf (fluid) */
+  double *phi, *u, *uf, *p;
+  /* the step's trial and work arrays */
+  double *phi_new, *u_new, *uf_new, *p_new;
+  double *w, *K, *dK, *ps_v, *ps_d, *phif, *slip, *lo, *di, *up, *rhs, *flux, *alpha, *dpdx;
+  double outflow_trial; /* solids volume per unit area that left during the trial */
+  long substeps_trial;
+  int iterations_trial;
+} tf_column;
+
+/* The mixture flux j (along +x) at time t. */
+double tf_mixture_flux(const tf_column *c, double t);
+
+/* One backward-Euler step from (phi, u) at t over dt into the *_new arrays.
+ * 0, or SL_EFAILED with the reason (no convergence, a closure outside its
+ * validity, a non-finite value): the caller retries smaller. */
+int tf_step(tf_column *c, double t, double dt, sl_diag *d);
+
+/* The bounded conservative transport of phi0 over dt with the face
+ * velocities u into phi (see two_fluid_step.c). */
+int tf_transport(tf_column *c, const double *phi0, const double *u, double dt, double *phi, long *substeps,
+                 double *outflow, sl_diag *d);
+
+/* K and dK/dslip at n faces (phi, slip given); p_s and dp_s/dphi at n cells. */
+int tf_closure_eval(tf_closure *b, int n, const double *phi, const double *slip, double *value, double *dvalue,
+                    sl_diag *d);
+
+#endif

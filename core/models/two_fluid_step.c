@@ -1,0 +1,236 @@
+/* One implicit step of the 1-D two-fluid model (two_fluid.h): the solids
+ * momentum at the faces with implicit drag and solids pressure, iterated
+ * with the bounded transport of phi until both agree.
+ *
+ * Face k lies between cells k-1 and k. Its momentum equation (two_fluid.h)
+ * is written for phi_f = the cell on its gravity side ("below"), or the
+ * inside cell at the ends, so that a fluidised bed under clear fluid is a
+ * steady state cell by cell (a mean of the two cells would let a partly
+ * filled top cell drain into the bed for ever). The equation is multiplied
+ * by the dual length L_k (centre to centre), which makes the implicit
+ * solids-pressure operator column diagonally dominant on any mesh, so the
+ * tridiagonal system is solved without pivoting (Golub & Van Loan 2013,
+ * Matrix Computations, 4th ed., Theorem 3.4.3).
+ *
+ * Iteration k (u^0 = u^n, phi^0 = T(phi^n, u^n)), delta = u - u^k:
+ *   drag:   D(u) = K s / eps, s = (j - u)/eps, linearised by Newton,
+ *           dD/du = -(K + dK/dslip |s|) / eps^2;
+ *   p_s:    P_c = p_s(phi^k_c) + p_s'(phi^k_c) dphi_c(delta),
+ *           dphi_c = -(dt/h_c)(w_{c+1} delta_{c+1} - w_c delta_c), w the
+ *           upwind phi^k: the Taylor expansion of Pringle (2001) eq 4.31
+ *           about the latest iterate, i.e. Newton on the transported phi;
+ *   then phi^(k+1) = T(phi^n, u^(k+1)), until max |delta| <= tol v_ref.
+ * T is first-order upwind, sub-stepped within CFL and limited so that no
+ * cell exceeds phi_max: unconditionally bounded and conservative. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/models/two_fluid_impl.h"
+
+/* Faces with (nearly) no solids still get an equation: that of one particle
+ * in clear fluid (every term is proportional to phi). */
+static const double PHI_FLOOR = 1e-6;
+
+double tf_mixture_flux(const tf_column *c, double t) {
+  if (!c->inlet) return 0.0;
+  double v = sl_expr_eval(c->inlet, &t);
+  return c->inlet_side == 0 ? v : -v;
+}
+
+int tf_closure_eval(tf_closure *b, int n, const double *phi, const double *slip, double *value, double *dvalue,
+                    sl_diag *d) {
+  const sl_closure_desc *c = b->c->desc;
+  int n_in = c->n_in, n_out = c->n_out;
+  int need = n * (n_in + n_out + n_out * n_in);
+  if (need > b->cap) {
+    double *nb = realloc(b->buf, (size_t)need * sizeof *nb);
+    if (!nb) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    b->buf = nb, b->cap = need;
+  }
+  const double *in[TF_MAX_IN];
+  double *outs[TF_MAX_IN] = {0}, *dout[TF_MAX_IN * TF_MAX_IN] = {0}, *w = b->buf;
+  for (int i = 0; i < n_in; ++i) {
+    if (i == b->in_phi) in[i] = phi;
+    else if (i == b->in_slip) in[i] = slip;
+    else {
+      for (int k = 0; k < n; ++k) w[k] = b->fixed[i];
+      in[i] = w, w += n;
+    }
+  }
+  for (int k = 0; k < n_out; ++k)
+    if (k == b->out || !(c->out[k].flags & SL_FIELD_OPTIONAL)) outs[k] = w, w += n;
+  if (dvalue) /* a slot for every differentiable input of every output computed (ABI) */
+    for (int k = 0; k < n_out; ++k)
+      for (int i = 0; i < n_in && outs[k]; ++i)
+        if (c->in[i].flags & SL_FIELD_DIFF) dout[k * n_in + i] = w, w += n;
+  sl_error err;
+  sl_eval_args a = {.Q = n, .in = in, .out = outs, .dout = dvalue ? dout : NULL, .err = &err};
+  int rc = sl_closure_evaluate(b->c, &a);
+  if (rc) {
+    char label[128], where[128] = "";
+    sl_closure_label(c, label, sizeof label);
+    if (err.point >= 0 && err.point < n) {
+      if (b->in_slip >= 0)
+        snprintf(where, sizeof where, " at phi = %g, slip = %g", phi[err.point], slip[err.point]);
+      else
+        snprintf(where, sizeof where, " at phi = %g", phi[err.point]);
+    }
+    return sl_diag_set(d, SL_EFAILED, "closure %s %s%s: %s", label, rc > 0 ? "is outside its validity" : "failed",
+                       where, err.msg);
+  }
+  memcpy(value, outs[b->out], (size_t)n * sizeof *value);
+  if (dvalue) {
+    int wrt = b->in_slip >= 0 ? b->in_slip : b->in_phi;
+    const double *src = dout[b->out * n_in + wrt];
+    if (src) memcpy(dvalue, src, (size_t)n * sizeof *dvalue);
+    else memset(dvalue, 0, (size_t)n * sizeof *dvalue);
+  }
+  return 0;
+}
+
+int tf_transport(tf_column *c, const double *phi0, const double *u, double dt, double *phi, long *substeps,
+                 double *outflow, sl_diag *d) {
+  const int n = c->n;
+  double *F = c->flux, *alpha = c->alpha, rmax = 0.0;
+  for (int i = 0; i < n; ++i) rmax = fmax(rmax, (fmax(u[i + 1], 0.0) + fmax(-u[i], 0.0)) / c->h[i]);
+  double ns = ceil(dt * rmax / c->cfl);
+  if (!(ns <= 1e7))
+    return sl_diag_set(d, SL_EFAILED, "solids transport would need %.3g sub-steps (solids speed %.3g m/s)", ns,
+                       rmax * c->h[0]);
+  long m = ns < 1.0 ? 1 : (long)ns;
+  double ds = dt / (double)m, out = 0.0;
+  memcpy(phi, phi0, (size_t)n * sizeof *phi);
+  for (long s = 0; s < m; ++s) {
+    /* upwind fluxes; solids entering through an end are none (clear fluid) */
+    for (int k = 0; k <= n; ++k)
+      F[k] = u[k] > 0.0 ? (k > 0 ? u[k] * phi[k - 1] : 0.0) : (k < n ? u[k] * phi[k] : 0.0);
+    /* packing limiter: what enters a cell is scaled so that it cannot pass phi_max (what leaves is bounded
+       by the CFL condition, so phi stays >= 0) */
+    for (int i = 0; i < n; ++i) {
+      double in = fmax(F[i], 0.0) + fmax(-F[i + 1], 0.0);
+      alpha[i] = in > 0.0 ? fmin(1.0, fmax(0.0, (c->phi_max - phi[i]) * c->h[i] / (ds * in))) : 1.0;
+    }
+    for (int k = 0; k <= n; ++k) {
+      int to = F[k] > 0.0 ? k : k - 1;
+      if (to >= 0 && to < n) F[k] *= alpha[to];
+    }
+    out += ds * (fmax(F[n], 0.0) - fmin(F[0], 0.0));
+    for (int i = 0; i < n; ++i) {
+      double v = phi[i] - ds / c->h[i] * (F[i + 1] - F[i]);
+      phi[i] = v < 0.0 ? 0.0 : v > c->phi_max ? c->phi_max : v; /* round-off only */
+    }
+  }
+  *substeps += m;
+  *outflow = out;
+  return 0;
+}
+
+/* The face's solids fraction: its gravity-side cell, the inside one at the ends. */
+static double face_phi(const tf_column *c, const double *phi, int k) {
+  int cell = k == 0 ? 0 : k == c->n ? c->n - 1 : (c->below ? k - 1 : k);
+  return fmax(phi[cell], PHI_FLOOR);
+}
+
+/* K and dK/dslip at every face for the velocities u. */
+static int face_drag(tf_column *c, const double *phi, const double *u, double j, sl_diag *d) {
+  for (int k = 0; k <= c->n; ++k) {
+    c->phif[k] = face_phi(c, phi, k);
+    c->slip[k] = fabs(j - u[k]) / (1.0 - c->phif[k]);
+  }
+  int rc = tf_closure_eval(&c->drag, c->n + 1, c->phif, c->slip, c->K, c->dK, d);
+  return rc ? sl_diag_prefix(d, rc, "drag") : 0;
+}
+
+int tf_step(tf_column *c, double t, double dt, sl_diag *d) {
+  const int n = c->n;
+  const double j0 = tf_mixture_flux(c, t), j1 = tf_mixture_flux(c, t + dt), djdt = (j1 - j0) / dt;
+  const double drho = c->rho_s - c->rho_f;
+  const int k_lo = c->bc[0] == TF_OUTLET ? 0 : 1, k_hi = c->bc[1] == TF_OUTLET ? n : n - 1;
+  double *u = c->u_new;
+  memcpy(u, c->u, (size_t)(n + 1) * sizeof *u);
+  c->substeps_trial = 0, c->iterations_trial = 0;
+  int rc = tf_transport(c, c->phi, u, dt, c->phi_new, &c->substeps_trial, &c->outflow_trial, d);
+  if (rc) return rc;
+  int converged = 0;
+  double last = 0.0;
+  for (int it = 1; it <= c->max_iterations && !converged; ++it) {
+    c->iterations_trial = it;
+    if ((rc = face_drag(c, c->phi_new, u, j1, d))) return rc;
+    if (c->ps.c) {
+      if ((rc = tf_closure_eval(&c->ps, n, c->phi_new, NULL, c->ps_v, c->ps_d, d)))
+        return sl_diag_prefix(d, rc, "solids pressure");
+    } else {
+      memset(c->ps_v, 0, (size_t)n * sizeof *c->ps_v), memset(c->ps_d, 0, (size_t)n * sizeof *c->ps_d);
+    }
+    for (int i = 0; i < n; ++i) c->ps_d[i] = fmax(c->ps_d[i], 0.0); /* a softening law would make it unstable */
+    for (int k = 0; k <= n; ++k) {
+      double below = k > 0 ? c->phi_new[k - 1] : 0.0, above = k < n ? c->phi_new[k] : 0.0;
+      c->w[k] = u[k] > 0.0 ? below : u[k] < 0.0 ? above : fmax(below, above);
+    }
+    /* the linearised face equations, times L_k */
+    for (int k = k_lo; k <= k_hi; ++k) {
+      double ph = c->phif[k], eps = 1.0 - ph, L = c->dual[k];
+      double m = ph * c->rho_s + ph * ph * c->rho_f / eps;
+      double s = (j1 - u[k]) / eps;
+      double D = c->K[k] * s / eps;
+      double A = m / dt + (c->K[k] + c->dK[k] * fabs(s)) / (eps * eps);
+      double Pp = k < n ? c->ps_v[k] : 0.0, Pm = k > 0 ? c->ps_v[k - 1] : 0.0;
+      double R = -m * (u[k] - c->u[k]) / dt + D - (Pp - Pm) / L + ph * drho * c->g + ph * c->rho_f * djdt / eps;
+      double diag = L * A, lo = 0.0, up = 0.0;
+      if (k < n) {
+        double cc = c->ps_d[k] * dt / c->h[k];
+        diag += cc * c->w[k], up = -cc * c->w[k + 1];
+      }
+      if (k > 0) {
+        double cc = c->ps_d[k - 1] * dt / c->h[k - 1];
+        diag += cc * c->w[k], lo = -cc * c->w[k - 1];
+      }
+      c->lo[k] = k > k_lo ? lo : 0.0, c->up[k] = k < k_hi ? up : 0.0;
+      c->di[k] = diag, c->rhs[k] = L * R;
+    }
+    /* Thomas: forward elimination, back substitution */
+    for (int k = k_lo + 1; k <= k_hi; ++k) {
+      double f = c->lo[k] / c->di[k - 1];
+      c->di[k] -= f * c->up[k - 1], c->rhs[k] -= f * c->rhs[k - 1];
+    }
+    double dmax = 0.0, umax = 0.0;
+    for (int k = k_hi; k >= k_lo; --k) {
+      double delta = (c->rhs[k] - (k < k_hi ? c->up[k] * c->rhs[k + 1] : 0.0)) / c->di[k];
+      c->rhs[k] = delta;
+    }
+    for (int k = k_lo; k <= k_hi; ++k) {
+      u[k] += c->rhs[k];
+      dmax = fmax(dmax, fabs(c->rhs[k])), umax = fmax(umax, fabs(u[k]));
+    }
+    if (!isfinite(dmax) || !isfinite(umax))
+      return sl_diag_set(d, SL_EFAILED, "the solids momentum gave a non-finite velocity (iteration %d)", it);
+    last = dmax;
+    converged = dmax <= c->tolerance * fmax(c->v_ref, umax);
+    if ((rc = tf_transport(c, c->phi, u, dt, c->phi_new, &c->substeps_trial, &c->outflow_trial, d))) return rc;
+  }
+  if (!converged)
+    return sl_diag_set(d, SL_EFAILED,
+                       "the implicit step did not converge in %d iterations (last velocity correction %.3g m/s, "
+                       "tolerance %.3g)",
+                       c->max_iterations, last, c->tolerance * c->v_ref);
+  /* the fluid velocity and, from the fluid momentum, the pressure gradient at every face */
+  if ((rc = face_drag(c, c->phi_new, u, j1, d))) return rc;
+  for (int k = 0; k <= n; ++k) {
+    double ph = c->phif[k], eps = 1.0 - ph;
+    c->uf_new[k] = (j1 - ph * u[k]) / eps;
+    double s = (j1 - u[k]) / eps;
+    c->dpdx[k] = c->rho_f * c->g - c->K[k] * s / eps - c->rho_f * (c->uf_new[k] - c->uf[k]) / dt;
+  }
+  if (c->bc[0] == TF_OUTLET && c->bc[1] != TF_OUTLET) {
+    c->p_new[0] = c->p_out + 0.5 * c->h[0] * c->dpdx[0];
+    for (int i = 1; i < n; ++i) c->p_new[i] = c->p_new[i - 1] + c->dual[i] * c->dpdx[i];
+  } else { /* from the top outlet, or p = 0 at the top of a closed column */
+    c->p_new[n - 1] = (c->bc[1] == TF_OUTLET ? c->p_out : 0.0) - 0.5 * c->h[n - 1] * c->dpdx[n];
+    for (int i = n - 2; i >= 0; --i) c->p_new[i] = c->p_new[i + 1] - c->dual[i + 1] * c->dpdx[i + 1];
+  }
+  for (int i = 0; i < n; ++i)
+    if (!isfinite(c->p_new[i])) return sl_diag_set(d, SL_EFAILED, "the pressure is not finite in cell %d", i);
+  return 0;
+}
