@@ -47,6 +47,7 @@ typedef struct flow_work {
   double *rho, *mu, *force;
   int frame[MAX_COMP];   /* frame axis of each velocity component */
   double Ke[MAX_ELEM_DOFS * MAX_ELEM_DOFS], be[MAX_ELEM_DOFS];
+  int load_only; /* SL_FLOW_LOAD: the iterate and the viscosity are not needed */
 } flow_work;
 
 static void work_free(flow_work *w) {
@@ -148,7 +149,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
   int c = fv->cell, nc = th->n_comp, nb = th->vel->dofs_per_cell, np = th->pres->dofs_per_cell;
   int dim = th->mesh->dim, nv = nc * nb, n = nv + np, axi = o->axisymmetric;
   const int32_t *vd = th->vel->cell_dofs + (size_t)c * nb;
-  int matrix = lin != SL_FLOW_RESIDUAL, newton = lin == SL_FLOW_NEWTON;
+  int matrix = lin == SL_FLOW_NEWTON || lin == SL_FLOW_PICARD, newton = lin == SL_FLOW_NEWTON;
   if (matrix) memset(w->Ke, 0, (size_t)n * n * sizeof *w->Ke);
   memset(w->be, 0, (size_t)n * sizeof *w->be);
   /* Coriolis 2 Omega x u = C u in the frame (Omega along e_2 planar, along the axis e_1 = z axisymmetric). */
@@ -160,10 +161,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
   basis_vec bv[MAX_VEL];
   for (int q = 0; q < fv->quad.n; ++q) {
     const qp_state *s = &st[q];
-    double wq = fv->JxW[q], r = fv->x[q][0], rq = rho[q], mq = mu[2 * q], dmq = mu[2 * q + 1];
-    sym3 Du = sym_part(s->G);
-    double gam = shear[q];
-    double divu = s->G[0][0] + s->G[1][1] + s->G[2][2];
+    double wq = fv->JxW[q], r = fv->x[q][0], rq = rho[q];
     /* du/dt ~ mass_coef u + history, in the frame. */
     double hist[3] = {0, 0, 0};
     if (o->history)
@@ -179,6 +177,17 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       if (axi) f[0] += w2 * r;
       else f[0] += w2 * (fv->x[q][0] - o->rotation_centre[0]), f[1] += w2 * (fv->x[q][1] - o->rotation_centre[1]);
     }
+    if (lin == SL_FLOW_LOAD) { /* the u-independent part of the momentum residual only */
+      for (int a = 0; a < nc; ++a) {
+        int A = w->frame[a];
+        double g = wq * (rq * hist[A] - f[A]);
+        for (int i = 0; i < nb; ++i) w->be[a * nb + i] -= g * fv->phi[0][q][i];
+      }
+      continue;
+    }
+    double mq = mu[2 * q], dmq = mu[2 * q + 1], gam = shear[q];
+    sym3 Du = sym_part(s->G);
+    double divu = s->G[0][0] + s->G[1][1] + s->G[2][2];
     /* Strong-form momentum terms tested against phi_i e_A: rho (du/dt + G u + C u) - f. */
     double m[3];
     for (int A = 0; A < 3; ++A) {
@@ -265,6 +274,11 @@ static int batch_pass(flow_work *w, const sl_th_space *th, const double *u, cons
   for (int i = 0; i < n && !rc; ++i) {
     size_t at = (size_t)i * nq;
     for (int q = 0; q < nq; ++q) b->cell[at + q] = first + i;
+    if (w->load_only) { /* the points alone, for the coefficients */
+      sl_fe_values_map_points(w->fv, first + i, b->x + at);
+      memset(b->shear_rate + at, 0, (size_t)nq * sizeof *b->shear_rate);
+      continue;
+    }
     if ((rc = sl_fe_values_reinit(w->fv, first + i, d))) break;
     memcpy(b->x + at, w->fv->x, (size_t)nq * sizeof *b->x);
     eval_state(w, th, u, o->axisymmetric, w->state + at, b->shear_rate + at);
@@ -277,7 +291,9 @@ static int batch_pass(flow_work *w, const sl_th_space *th, const double *u, cons
       return sl_diag_set(d, SL_EFAILED, "flow: density %g at (%g, %g) in cell %d is not positive", w->rho[k],
                          view.x[k][0], view.x[k][1], (int)view.cell[k]);
   sl_coef visc = {o->viscosity, o->viscosity_user, 0.0};
-  if (o->viscosity) {
+  if (w->load_only) {
+    for (int k = 0; k < view.n; ++k) w->mu[2 * k] = 1.0, w->mu[2 * k + 1] = 0.0; /* not used */
+  } else if (o->viscosity) {
     if ((rc = sl_asm_coef_eval(&visc, "viscosity", &view, 2, w->mu, d))) return rc;
   } else {
     for (int k = 0; k < view.n; ++k) w->mu[2 * k] = o->viscosity_value, w->mu[2 * k + 1] = 0.0;
@@ -299,11 +315,12 @@ typedef int (*batch_fn)(flow_work *w, const sl_th_space *th, const sl_flow_opts 
 
 /* Runs fn over the mesh, batch by batch (see batch_pass). */
 static int for_each_batch(const sl_th_space *th, const double *u, const sl_flow_opts *o, const sl_system *s,
-                          batch_fn fn, void *user, sl_diag *d) {
+                          int load_only, batch_fn fn, void *user, sl_diag *d) {
   int rc = check_input(s, th, o, d);
   if (rc) return rc;
   flow_work *w = NULL;
   if ((rc = work_create(&w, th, o, d))) return rc;
+  w->load_only = load_only;
   int ncell = th->mesh->n_cells;
   for (int first = 0; first < ncell && !rc; first += SL_ASSEMBLY_BATCH_CELLS) {
     int n = ncell - first < SL_ASSEMBLY_BATCH_CELLS ? ncell - first : SL_ASSEMBLY_BATCH_CELLS;
@@ -324,10 +341,12 @@ static int assemble_batch(flow_work *w, const sl_th_space *th, const sl_flow_opt
   int nq = w->fv->quad.n, rc = 0;
   for (int i = 0; i < n && !rc; ++i) {
     size_t at = (size_t)i * nq;
-    if ((rc = sl_fe_values_reinit(w->fv, first + i, d))) break;
+    rc = w->load_only ? sl_fe_values_reinit_measure(w->fv, first + i, d) : sl_fe_values_reinit(w->fv, first + i, d);
+    if (rc) break;
     element(w, th, o, a->lin, w->state + at, w->batch.shear_rate + at, w->rho + at, w->mu + 2 * at,
             w->force + at * th->n_comp);
-    rc = sl_system_add_element(a->s, first + i, a->lin != SL_FLOW_RESIDUAL ? w->Ke : NULL, w->be, d);
+    int matrix = a->lin == SL_FLOW_NEWTON || a->lin == SL_FLOW_PICARD;
+    rc = sl_system_add_element(a->s, first + i, matrix ? w->Ke : NULL, w->be, d);
   }
   return rc;
 }
@@ -335,7 +354,7 @@ static int assemble_batch(flow_work *w, const sl_th_space *th, const sl_flow_opt
 int sl_assemble_flow(sl_system *s, const sl_th_space *th, const double *u, const sl_flow_opts *o,
                      sl_flow_linearisation lin, sl_diag *d) {
   assemble_ctx a = {s, lin};
-  return for_each_batch(th, u, o, s, assemble_batch, &a, d);
+  return for_each_batch(th, u, o, s, lin == SL_FLOW_LOAD, assemble_batch, &a, d);
 }
 
 int sl_flow_check_geometry(const sl_th_space *th, const sl_flow_opts *o, sl_diag *d) {
@@ -369,5 +388,5 @@ static int diagnostics_batch(flow_work *w, const sl_th_space *th, const sl_flow_
 int sl_flow_cell_diagnostics(const sl_th_space *th, const double *u, const sl_flow_opts *o, double yield_stress,
                              double *shear_rate, double *viscosity, double *yielded, sl_diag *d) {
   diag_ctx c = {yield_stress, shear_rate, viscosity, yielded};
-  return for_each_batch(th, u, o, NULL, diagnostics_batch, &c, d);
+  return for_each_batch(th, u, o, NULL, 0, diagnostics_batch, &c, d);
 }

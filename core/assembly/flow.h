@@ -36,7 +36,10 @@
 typedef enum sl_flow_linearisation {
   SL_FLOW_RESIDUAL = 0, /* b = -R(u) only; the matrix is not touched */
   SL_FLOW_NEWTON,       /* A = dR/du, b = -R(u) */
-  SL_FLOW_PICARD        /* A = the Oseen operator with frozen mu and advecting velocity */
+  SL_FLOW_PICARD,       /* A = the Oseen operator with frozen mu and advecting velocity */
+  SL_FLOW_LOAD          /* b = the part of -R that does not depend on u (the history term, the body force
+                           with the centrifugal one); the matrix is not touched, u is not read, the viscosity
+                           not evaluated. For a problem linear in u with A = dR/du: -R(u) = b - A u */
 } sl_flow_linearisation;
 
 typedef struct sl_flow_opts {

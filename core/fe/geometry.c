@@ -85,7 +85,7 @@ static double jacobian(const sl_fe_values *fv, int c, int q, double J[2][2], dou
   return det;
 }
 
-int sl_fe_values_reinit(sl_fe_values *fv, int c, sl_diag *d) {
+static int reinit(sl_fe_values *fv, int c, int gradients, sl_diag *d) {
   sl_fe_values_map_points(fv, c, fv->x);
   fv->cell = c;
   for (int q = 0; q < fv->quad.n; ++q) {
@@ -100,6 +100,7 @@ int sl_fe_values_reinit(sl_fe_values *fv, int c, sl_diag *d) {
         return sl_diag_set(d, SL_EBADINPUT, "fe values: axisymmetric cell %d reaches r = %g < 0", c, fv->x[q][0]);
       fv->JxW[q] *= fv->x[q][0];
     }
+    if (!gradients) continue;
     /* grad = J^-T dphi_ref: grad_i = sum_j Jinv[j][i] dphi_ref_j */
     for (int s = 0; s < fv->n_spaces; ++s)
       for (int b = 0; b < fv->space[s]->n_basis; ++b) {
@@ -110,3 +111,7 @@ int sl_fe_values_reinit(sl_fe_values *fv, int c, sl_diag *d) {
   }
   return 0;
 }
+
+int sl_fe_values_reinit(sl_fe_values *fv, int c, sl_diag *d) { return reinit(fv, c, 1, d); }
+
+int sl_fe_values_reinit_measure(sl_fe_values *fv, int c, sl_diag *d) { return reinit(fv, c, 0, d); }

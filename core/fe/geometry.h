@@ -57,6 +57,9 @@ void sl_fe_values_destroy(sl_fe_values *fv);
  * SL_EBADINPUT when the Jacobian is not positive at a quadrature point (an
  * inverted or degenerate cell) or, axisymmetric, a point has r < 0. */
 int sl_fe_values_reinit(sl_fe_values *fv, int c, sl_diag *d);
+/* The same without the physical gradients (x, J, detJ, JxW only; grad is
+ * left as it was): for integrals of basis values alone, e.g. a load. */
+int sl_fe_values_reinit_measure(sl_fe_values *fv, int c, sl_diag *d);
 
 /* Physical coordinates of the quadrature points of cell c only (no
  * Jacobians): the cheap pass that gathers points for batched coefficients. */

@@ -63,16 +63,39 @@ static int matrix_current(const sl_flow_problem *p) {
          p->sys.A.values_gen == m->values_gen;
 }
 
+/* The tractions' part of b (they depend on the data only). */
+static int add_tractions(sl_flow_problem *p, sl_diag *d) {
+  int rc = 0;
+  for (int k = 0; k < p->n_tractions && !rc; ++k)
+    rc = sl_assemble_flow_traction(&p->sys, p->th, p->traction[k].boundary, p->traction[k].fn, p->traction[k].user,
+                                   p->opts.axisymmetric, d);
+  return rc;
+}
+
+/* b = -R(u) of a problem linear in u whose operator is in A:
+ * (the u-independent part) - A u; only the load is assembled, not the
+ * element operators. Used after every assembly of such a problem, so that
+ * a step's right-hand side is the same sum whether its matrix was kept or
+ * assembled afresh (a restarted run reproduces the uninterrupted one). */
+static int linear_residual(sl_flow_problem *p, const double *u, double *b, sl_diag *d) {
+  memset(b, 0, (size_t)p->th->n_dofs * sizeof *b);
+  int rc = sl_assemble_flow(&p->sys, p->th, u, &p->opts, SL_FLOW_LOAD, d);
+  if (!rc) rc = add_tractions(p, d);
+  if (rc) return rc;
+  sl_csr_matvec_add(&p->sys.A, -1.0, u, 1.0, b);
+  for (int32_t k = 0; k < p->n_fixed; ++k) b[p->fixed[k]] = 0.0;
+  return 0;
+}
+
 int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_csr *A, double *b, sl_diag *d) {
   sl_flow_problem *p = user;
   static const sl_flow_linearisation lin[] = {SL_FLOW_RESIDUAL, SL_FLOW_NEWTON, SL_FLOW_PICARD};
   if (A != &p->sys.A || b != p->sys.b)
     return sl_diag_set(d, SL_EBADINPUT, "flow: assemble into the problem's own system");
+  if (mode == SL_NL_RESIDUAL && matrix_current(p)) return linear_residual(p, u, b, d);
   if (mode != SL_NL_RESIDUAL) p->matrix.valid = 0;
   int rc = sl_assemble_flow(&p->sys, p->th, u, &p->opts, lin[mode], d);
-  for (int k = 0; k < p->n_tractions && !rc; ++k)
-    rc = sl_assemble_flow_traction(&p->sys, p->th, p->traction[k].boundary, p->traction[k].fn, p->traction[k].user,
-                                   p->opts.axisymmetric, d);
+  if (!rc) rc = add_tractions(p, d);
   if (rc) return rc;
   if (mode == SL_NL_RESIDUAL) {
     for (int32_t k = 0; k < p->n_fixed; ++k) b[p->fixed[k]] = 0.0;
@@ -80,11 +103,10 @@ int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_cs
   }
   if ((rc = sl_csr_set_dirichlet(A, p->n_fixed, p->fixed, NULL, b, 0, d))) return rc;
   matrix_key k;
-  if (constant_matrix_key(&p->opts, &k)) {
-    k.valid = 1, k.pattern_id = A->pattern_id, k.values_gen = A->values_gen;
-    p->matrix = k;
-  }
-  return 0;
+  if (!constant_matrix_key(&p->opts, &k)) return 0;
+  k.valid = 1, k.pattern_id = A->pattern_id, k.values_gen = A->values_gen;
+  p->matrix = k;
+  return linear_residual(p, u, b, d);
 }
 
 int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const sl_newton_opts *o,

@@ -530,21 +530,42 @@ static void bad_input(void) {
   CHECK_MSG(strstr(d.msg, "[initial] phi") && strstr(d.msg, "phi_max = 0.64"), "message: %s", d.msg);
 }
 
-int main(int argc, char **argv) {
-  const char *src = getenv("SLUICE_SOURCE_DIR");
-  snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
-  if (argc > 1 && strcmp(argv[1], "spinup") == 0) { /* its own ctest entry: 140 s, skipped in the sanitizer build */
-    if (getenv("SLUICE_SKIP_LONG")) return 77; /* ctest's SKIP_RETURN_CODE: skipped, not passed */
-    spinup();
-    return sl_test_summary();
-  }
+static void kynch_part(void) {
   richardson_zaki();
   nigam_fan();
   refinement();
+  bad_input();
+}
+
+static void migration(void) {
   migration_couette();
   migration_poiseuille();
-  if (!getenv("SLUICE_SKIP_LONG")) boycott(); /* 12 s; skipped in the sanitizer build */
-  wave_bed();
-  bad_input();
+}
+
+static void boycott_part(void) {
+  if (getenv("SLUICE_SKIP_LONG")) exit(77); /* 12 s; skipped in the sanitizer build (ctest's SKIP_RETURN_CODE) */
+  boycott();
+}
+
+static void spinup_part(void) {
+  if (getenv("SLUICE_SKIP_LONG")) exit(77); /* 140 s; skipped in the sanitizer build */
+  spinup();
+}
+
+/* argv[1] names one part (its own ctest entry, so that the parts run in
+ * parallel); none: all but spinup. */
+int main(int argc, char **argv) {
+  const char *src = getenv("SLUICE_SOURCE_DIR");
+  snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
+  static const struct {
+    const char *name;
+    void (*run)(void);
+  } parts[] = {{"kynch", kynch_part}, {"migration", migration}, {"wave_bed", wave_bed}, {"boycott", boycott_part},
+               {"spinup", spinup_part}};
+  int ran = 0;
+  for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
+    if (argc < 2 ? strcmp(parts[k].name, "spinup") != 0 : strcmp(argv[1], parts[k].name) == 0)
+      parts[k].run(), ++ran;
+  if (!ran) return fprintf(stderr, "unknown part '%s' (kynch, migration, wave_bed, boycott, spinup)\n", argv[1]), 2;
   return sl_test_summary();
 }
