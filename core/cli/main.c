@@ -20,6 +20,8 @@ static const char usage[] =
     "  sample OUT.h5 --field F --line x0,y0:x1,y1 [--n N] [--time T]\n"
     "                                  a field of an output file along a line (CSV);\n"
     "                                  --point x,y for one point, --list for the contents\n"
+    "  bench STUDY.ini [-o DIR]        a work-precision study or a closure comparison:\n"
+    "                                  every run in its own process; CSV and PNG\n"
     "  version                         print the version\n"
     "\n"
     "Each command takes --help. Closures are searched in the folders named by the\n"
@@ -64,7 +66,7 @@ typedef struct command {
 static const command commands[] = {
     {"run", sl_cmd_run},           {"closures", sl_cmd_closures}, {"closure", sl_cmd_closure},
     {"check-closure", sl_cmd_check_closure}, {"version", sl_cmd_version},
-    {"sample", sl_cmd_sample},
+    {"sample", sl_cmd_sample},     {"bench", sl_cmd_bench},
 };
 
 int main(int argc, char **argv) {

@@ -2,7 +2,7 @@
  * `sluice run` and read back from their output files.
  *
  * kynch_settling (1-D batch settling) against the exact Kynch entropy
- * solution (tests/transport/kynch_exact.h: shocks, the contact shock and
+ * solution (core/verify/kynch_exact.h: shocks, the contact shock and
  * fan of non-convex fluxes, the meeting of the fronts):
  *  - Richardson-Zaki with its packing cut-off at phi0 = 0.05, 0.1, 0.2: the
  *    top interface (the written interface height) and the bottom shock fall
@@ -40,7 +40,7 @@
 #include "core/plugin/closure_ini.h"
 #include "scene_runner.h"
 #include "testing.h"
-#include "transport/kynch_exact.h"
+#include "core/verify/kynch_exact.h"
 
 static char configs[4096];
 

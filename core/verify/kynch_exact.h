@@ -26,8 +26,8 @@
  *    integrated by quadrature, until phi = c at t2 (infinite when F'(c) = 0);
  *    then the sediment phi0 H / c high is at rest.
  * Cell averages are exact: over the fan, int phi dz = -t [phi F' - F]. */
-#ifndef SLUICE_TESTS_KYNCH_EXACT_H
-#define SLUICE_TESTS_KYNCH_EXACT_H
+#ifndef SLUICE_VERIFY_KYNCH_EXACT_H
+#define SLUICE_VERIFY_KYNCH_EXACT_H
 
 #include <math.h>
 #include <stdio.h>

@@ -1,0 +1,211 @@
+/* A study's runs in child processes (see runner.h). */
+#define _DEFAULT_SOURCE /* wait4(): the one wait that returns the child's own rusage (BSD, in glibc and musl) */
+#include "core/bench/runner.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/time.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "core/models/mixture.h"
+#include "core/models/two_fluid.h"
+
+const char *sl_bench_status_name(sl_bench_status s) {
+  static const char *const names[] = {"ok", "failed", "bad_input", "crashed", "timeout", "interrupted", "not_run"};
+  return s >= SL_RUN_OK && s <= SL_RUN_NOT_RUN ? names[s] : "unknown";
+}
+
+/* What the child sends back. */
+typedef struct record {
+  int rc;
+  long steps, rejected, nonlinear;
+  double t_reached;
+  char msg[1024];
+} record;
+
+static double monotonic(void) {
+  struct timespec ts;
+  if (clock_gettime(CLOCK_MONOTONIC, &ts)) return NAN;
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static double cpu_now(void) {
+  struct timespec ts;
+  if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts)) return NAN;
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The first line of a message, control characters made blanks. */
+static void one_line(char *dst, size_t n, const char *src) {
+  size_t k = 0;
+  for (; src[k] && src[k] != '\n' && k + 1 < n; ++k) dst[k] = (unsigned char)src[k] < 0x20 ? ' ' : src[k];
+  dst[k] = '\0';
+}
+
+static void write_all(int fd, const void *p, size_t n) {
+  const char *c = p;
+  while (n > 0) {
+    ssize_t w = write(fd, c, n);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return;
+    c += w, n -= (size_t)w;
+  }
+}
+
+int sl_bench_run_here(sl_ini *ini, const sl_registry *reg, const sl_bench_run_opts *o, int result_fd) {
+  record rec;
+  memset(&rec, 0, sizeof rec);
+  sl_diag d = {{0}};
+  sl_ns_result res;
+  memset(&res, 0, sizeof res);
+  int model = 0;
+  double w0 = monotonic(), c0 = cpu_now();
+  int rc = sl_ini_get_choice(ini, "scene", "model", 1, 0, "navier_stokes|mixture|two_fluid", &model, &d);
+  if (!rc) {
+    sl_ns_run_opts ro = {.scene_path = o->scene_path, .output = o->output, .sluice_version = o->sluice_version,
+                         .interrupt = o->interrupt};
+    rc = model == 1   ? sl_mixture_run(ini, reg, &ro, &res, &d)
+         : model == 2 ? sl_two_fluid_run(ini, reg, &ro, &res, &d)
+                      : sl_ns_run(ini, reg, &ro, &res, &d);
+  }
+  if (o->summary && rc != SL_EBADINPUT) o->summary(stderr, &res, monotonic() - w0, cpu_now() - c0);
+  if (rc) fprintf(stderr, "%s\n", d.msg);
+  rec.rc = rc, rec.steps = res.steps, rec.rejected = res.rejected_steps, rec.nonlinear = res.nonlinear_iterations;
+  rec.t_reached = res.t_reached;
+  if (rc) one_line(rec.msg, sizeof rec.msg, d.msg);
+  fflush(stdout), fflush(stderr);
+  if (result_fd >= 0) write_all(result_fd, &rec, sizeof rec);
+  return rc == 0 ? 0 : rc == SL_EBADINPUT ? 2 : 1;
+}
+
+void sl_bench_send_failure(int result_fd, int rc, const char *msg) {
+  record rec;
+  memset(&rec, 0, sizeof rec);
+  rec.rc = rc;
+  rec.t_reached = NAN;
+  one_line(rec.msg, sizeof rec.msg, msg);
+  if (result_fd >= 0) write_all(result_fd, &rec, sizeof rec);
+}
+
+/* In the forked child: the log as stdout and stderr, the pipe as fd 3, then
+ * the run's command. */
+static _Noreturn void child(int fd, const sl_bench_run_opts *o) {
+  int log = open(o->log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (log >= 0) {
+    dup2(log, STDOUT_FILENO), dup2(log, STDERR_FILENO);
+    close(log);
+  }
+  if (fd != SL_BENCH_RESULT_FD) {
+    if (dup2(fd, SL_BENCH_RESULT_FD) < 0) _exit(127);
+    close(fd);
+  }
+  execv(o->argv[0], o->argv);
+  fprintf(stderr, "sluice: cannot run %s: %s\n", o->argv[0], strerror(errno));
+  _exit(127);
+}
+
+int sl_bench_run(const sl_bench_run_opts *o, sl_bench_run_result *r) {
+  memset(r, 0, sizeof *r);
+  r->status = SL_RUN_NOT_RUN;
+  r->cpu = r->wall = r->peak_rss_mb = r->t_reached = NAN;
+  int fd[2];
+  if (pipe(fd)) {
+    snprintf(r->message, sizeof r->message, "pipe: %s", strerror(errno));
+    return -1;
+  }
+  if (fd[1] <= SL_BENCH_RESULT_FD) { /* the child's end must not be one of 0..3, which the child replaces */
+    int moved = fcntl(fd[1], F_DUPFD, SL_BENCH_RESULT_FD + 1);
+    close(fd[1]);
+    fd[1] = moved;
+    if (moved < 0) {
+      snprintf(r->message, sizeof r->message, "fcntl: %s", strerror(errno));
+      close(fd[0]);
+      return -1;
+    }
+  }
+  fflush(NULL); /* nothing buffered is written twice */
+  double w0 = monotonic();
+  pid_t pid = fork();
+  if (pid < 0) {
+    snprintf(r->message, sizeof r->message, "fork: %s", strerror(errno));
+    close(fd[0]), close(fd[1]);
+    return -1;
+  }
+  if (pid == 0) {
+    close(fd[0]);
+    child(fd[1], o);
+  }
+  close(fd[1]);
+  int status = 0, timed_out = 0, forwarded = 0;
+  struct rusage ru;
+  memset(&ru, 0, sizeof ru);
+  long pause_ns = 1000000; /* 1 ms, growing to 20 ms: short runs are not held up */
+  for (;;) {
+    pid_t got = wait4(pid, &status, WNOHANG, &ru);
+    if (got == pid) break;
+    if (got < 0 && errno != EINTR) {
+      snprintf(r->message, sizeof r->message, "wait4: %s", strerror(errno));
+      close(fd[0]);
+      return -1;
+    }
+    if (!timed_out && monotonic() - w0 > o->timeout) {
+      kill(pid, SIGKILL);
+      timed_out = 1;
+    }
+    if (o->interrupt && *o->interrupt && !forwarded) { /* a Ctrl-C of the terminal reached the child too; kill -INT did not */
+      kill(pid, SIGINT);
+      forwarded = 1;
+    }
+    struct timespec ts = {0, pause_ns};
+    nanosleep(&ts, NULL);
+    if (pause_ns < 20000000) pause_ns *= 2;
+  }
+  r->wall = monotonic() - w0;
+  r->cpu = (double)ru.ru_utime.tv_sec + 1e-6 * (double)ru.ru_utime.tv_usec + (double)ru.ru_stime.tv_sec +
+           1e-6 * (double)ru.ru_stime.tv_usec;
+  r->peak_rss_mb = (double)ru.ru_maxrss / 1024.0; /* Linux: kilobytes */
+  record rec;
+  size_t got = 0;
+  while (got < sizeof rec) {
+    ssize_t k = read(fd[0], (char *)&rec + got, sizeof rec - got);
+    if (k < 0 && errno == EINTR) continue;
+    if (k <= 0) break;
+    got += (size_t)k;
+  }
+  close(fd[0]);
+  if (WIFEXITED(status)) r->exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) r->signal_number = WTERMSIG(status);
+  if (timed_out) {
+    r->status = SL_RUN_TIMEOUT;
+    snprintf(r->message, sizeof r->message, "killed after %.0f s, the study's timeout ([study] timeout)", o->timeout);
+  } else if (got != sizeof rec) {
+    r->status = SL_RUN_CRASHED;
+    if (WIFSIGNALED(status))
+      snprintf(r->message, sizeof r->message, "killed by signal %d (%s)", r->signal_number, strsignal(r->signal_number));
+    else snprintf(r->message, sizeof r->message, "exited with status %d without a result", r->exit_code);
+  } else {
+    r->steps = rec.steps, r->rejected_steps = rec.rejected, r->nonlinear_iterations = rec.nonlinear;
+    r->t_reached = rec.t_reached;
+    rec.msg[sizeof rec.msg - 1] = '\0';
+    snprintf(r->message, sizeof r->message, "%s", rec.msg);
+    r->status = rec.rc == 0                          ? SL_RUN_OK
+                : rec.rc == SL_EBADINPUT             ? SL_RUN_BAD_INPUT
+                : o->interrupt && *o->interrupt      ? SL_RUN_INTERRUPTED
+                                                     : SL_RUN_FAILED;
+    int expected = rec.rc == 0 ? 0 : rec.rc == SL_EBADINPUT ? 2 : 1;
+    if (r->signal_number || r->exit_code != expected) { /* e.g. a sanitizer's report at exit */
+      r->status = SL_RUN_CRASHED;
+      snprintf(r->message, sizeof r->message, "%s with status %d after its run (see its log)%s%.900s",
+               r->signal_number ? "killed" : "exited", r->signal_number ? r->signal_number : r->exit_code,
+               rec.msg[0] ? ": " : "", rec.msg);
+    }
+  }
+  return 0;
+}
