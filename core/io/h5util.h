@@ -70,6 +70,8 @@ struct sl_output {
   int n_steps, cap_steps; /* completed steps, for the sidecar */
   sl_out_step *steps;
   int ck_current; /* slot of the last complete checkpoint, -1 for none */
+  long n_datasets; /* fields written, over all steps */
+  double bytes;    /* their values, as stored */
 };
 
 #endif

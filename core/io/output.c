@@ -1,6 +1,7 @@
 /* HDF5 writer and XDMF sidecar. Layout and guarantees: see output.h. */
 #include <errno.h>
 #include <libgen.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -306,6 +307,13 @@ int sl_output_write_field(sl_output *o, const char *name, sl_centring centring, 
   int stored = components == 1 ? 1 : 3;
   char full[256];
   snprintf(full, sizeof full, "/step_%06d/%s", o->next_index, name);
+  /* No NaN or infinity goes into a file: the step stays incomplete, and
+   * readers keep to the complete ones. */
+  for (size_t i = 0; i < (size_t)n * (size_t)components; ++i)
+    if (!isfinite(values[i]))
+      return sl_diag_set(d, SL_EFAILED, "%s: field '%s' at t = %g holds %g (entity %lld, component %d): not written",
+                         o->path, name, o->step_time, values[i], (long long)(i / (size_t)components),
+                         (int)(i % (size_t)components));
 
   const double *buf = values;
   double *pad = NULL;
@@ -334,7 +342,13 @@ int sl_output_write_field(sl_output *o, const char *name, sl_centring centring, 
   f->components = stored;
   f->n = n;
   ++o->n_fields;
+  ++o->n_datasets;
+  o->bytes += (double)n * stored * sizeof(double);
   return 0;
+}
+
+void sl_output_stats(const sl_output *o, long *times, long *datasets, double *bytes) {
+  *times = o->n_steps, *datasets = o->n_datasets, *bytes = o->bytes;
 }
 
 /* One <Grid> of the temporal collection. The mesh DataItems are repeated in

@@ -96,6 +96,10 @@ typedef struct sl_checkpoint {
  * it current: a crash while checkpointing leaves the previous one intact. */
 int sl_output_write_checkpoint(sl_output *out, const sl_checkpoint *ck, sl_diag *d);
 
+/* What has been written so far: complete output times, field datasets and
+ * the bytes of their values. */
+void sl_output_stats(const sl_output *out, long *times, long *datasets, double *bytes);
+
 /* Flushes, writes the sidecar, closes and frees (also after failures). */
 int sl_output_close(sl_output *out, sl_diag *d);
 
@@ -137,6 +141,9 @@ typedef struct sl_output_field {
 /* Field `name` at the step nearest to time t among the steps holding it
  * (the earlier one on a tie). An unknown name gets a did-you-mean. */
 int sl_output_read_field(const char *path, const char *name, double t, sl_output_field *f, sl_diag *d);
+/* Field `name` of the k-th complete step (0-based, in step order, as
+ * sl_output_read_times lists them); SL_EBADINPUT when that step lacks it. */
+int sl_output_read_field_at(const char *path, const char *name, int k, sl_output_field *f, sl_diag *d);
 void sl_output_field_free(sl_output_field *f);
 
 /* A string dataset or attribute, e.g. "/provenance/ini" or

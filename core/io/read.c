@@ -187,6 +187,9 @@ static int unknown_field(const char *path, hid_t f, const step_entry *s, int n, 
   return rc;
 }
 
+static int read_step_field(const char *path, hid_t f, const step_entry *st, const char *name, sl_output_field *fld,
+                           sl_diag *d);
+
 int sl_output_read_field(const char *path, const char *name, double t, sl_output_field *fld, sl_diag *d) {
   memset(fld, 0, sizeof *fld);
   int rc = sl_io_check_name(name, 200, "field", d);
@@ -219,9 +222,43 @@ int sl_output_read_field(const char *path, const char *name, double t, sl_output
     H5Fclose(f);
     return rc;
   }
+  rc = read_step_field(path, f, &s[best], name, fld, d);
+  free(s);
+  H5Fclose(f);
+  return rc;
+}
+
+int sl_output_read_field_at(const char *path, const char *name, int k, sl_output_field *fld, sl_diag *d) {
+  memset(fld, 0, sizeof *fld);
+  int rc = sl_io_check_name(name, 200, "field", d);
+  if (rc) return rc;
+  hid_t f;
+  if ((rc = sl_h5_open_read(path, &f, d))) return rc;
+  step_entry *s = NULL;
+  int n = 0;
+  rc = list_steps(path, f, &s, &n, d);
+  if (!rc && (k < 0 || k >= n))
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: no output step %d (the file has %d complete steps)", path, k, n);
+  if (!rc) {
+    char link[256];
+    snprintf(link, sizeof link, "%s/%s", s[k].name, name);
+    if (H5Lexists(f, link, H5P_DEFAULT) <= 0) {
+      H5Eclear2(H5E_DEFAULT);
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s: output step %d (t = %g) holds no field '%s'", path, k, s[k].time, name);
+    }
+  }
+  if (!rc) rc = read_step_field(path, f, &s[k], name, fld, d);
+  free(s);
+  H5Fclose(f);
+  return rc;
+}
+
+/* The dataset `name` of one step of an open file. */
+static int read_step_field(const char *path, hid_t f, const step_entry *st, const char *name, sl_output_field *fld,
+                           sl_diag *d) {
   char link[256];
-  snprintf(link, sizeof link, "/%s/%s", s[best].name, name);
-  int rank = 0;
+  snprintf(link, sizeof link, "/%s/%s", st->name, name);
+  int rc, rank = 0;
   hsize_t dims[2];
   void *buf = NULL;
   rc = read_array(path, f, link, H5T_NATIVE_DOUBLE, sizeof(double), &rank, dims, &buf, d);
@@ -236,8 +273,8 @@ int sl_output_read_field(const char *path, const char *name, double t, sl_output
     }
   }
   if (!rc) {
-    fld->step = s[best].index;
-    fld->time = s[best].time;
+    fld->step = st->index;
+    fld->time = st->time;
     fld->centring = strcmp(centring, "cell") == 0 ? SL_CENTRE_CELL : SL_CENTRE_NODE;
     fld->components = rank == 1 ? 1 : (int)dims[1];
     fld->n = (int32_t)dims[0];
@@ -245,8 +282,6 @@ int sl_output_read_field(const char *path, const char *name, double t, sl_output
   } else {
     free(buf);
   }
-  free(s);
-  H5Fclose(f);
   return rc;
 }
 

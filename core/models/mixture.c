@@ -102,6 +102,7 @@ typedef struct mixture {
   double *q_acc;               /* [n_faces] the conservative fluxes of the last accepted step */
   double *psi, *node_psi;      /* [n_vertices], [velocity nodes]: the stream function (2-D) */
   sl_stream_graph pg;
+  unsigned fields; /* bit k: field_names[k] is written */
   double inventory0, inflow, trial_inflow;
   double inventory; /* of the current state: the summary needs it after the mesh is gone */
   double book[2]; /* inventory0 and inflow as checkpointed */
@@ -417,9 +418,14 @@ static int periodic_setup(mixture *x, const unsigned char *open, const sl_period
   return rc;
 }
 
+/* The mixture's output fields (after the flow's in [output] fields). */
+enum { F_PHI = 1, F_STREAM = 2 };
+static const char *const field_names[] = {"phi", "stream_function"};
+
 static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, const unsigned char *open,
-                 const sl_periodic_pair *pairs, int n_pairs, sl_diag *d) {
+                 const sl_periodic_pair *pairs, int n_pairs, unsigned fields, sl_diag *d) {
   mixture *x = user;
+  x->fields = fields;
   x->th = th, x->m = th->mesh, x->axi = flow->axisymmetric, x->flow = flow;
   int nc = x->m->n_cells, nf = x->m->n_faces, rc;
   /* body force and its reference magnitude */
@@ -474,7 +480,7 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
   x->w = calloc((size_t)nf, sizeof *x->w);
   x->q_acc = calloc((size_t)nf, sizeof *x->q_acc);
   if (!x->phi || !x->trial || !x->q || !x->w || !x->q_acc) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
-  if (x->m->dim == 2) {
+  if (x->m->dim == 2 && (x->fields & F_STREAM)) {
     x->psi = malloc((size_t)x->m->n_vertices * sizeof *x->psi);
     x->node_psi = malloc((size_t)th->vel->n_nodes * sizeof *x->node_psi);
     if (!x->psi || !x->node_psi || sl_stream_graph_build(&x->pg, x->m))
@@ -543,7 +549,7 @@ static void accept(void *user) {
 
 static int write(void *user, sl_output *out, sl_diag *d) {
   mixture *x = user;
-  int rc = sl_output_write_field(out, "phi", SL_CENTRE_CELL, 1, x->phi, d);
+  int rc = x->fields & F_PHI ? sl_output_write_field(out, "phi", SL_CENTRE_CELL, 1, x->phi, d) : 0;
   if (!rc && x->psi) {
     /* at the velocity nodes: vertices as computed, edge and centre nodes the mean of their cell's vertices
        (exact on edge midpoints for psi linear along the edge) */
@@ -627,6 +633,7 @@ int sl_mixture_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o,
   if (!rc) rc = sl_ini_get_real(ini, "solid", "phi_max", 0, 0.64, 0.01, 1.0, &x.phi_max, d);
   if (rc) return rc;
   x.cpl.user = &x;
+  x.cpl.field_names = field_names, x.cpl.n_fields = (int)(sizeof field_names / sizeof field_names[0]);
   x.cpl.setup = setup, x.cpl.cell_phi = cell_phi, x.cpl.advance = advance, x.cpl.accept = accept;
   x.cpl.write = write, x.cpl.checkpoint = checkpoint, x.cpl.restore = restore, x.cpl.provenance = provenance;
   sl_ns_run_opts oo = *o;

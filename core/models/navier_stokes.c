@@ -24,6 +24,12 @@ static double wall(void) {
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+static double cpu(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 /* ---- expressions: comma lists split at parenthesis depth 0 -------------- */
 
 enum { MAX_COMP = 3 };
@@ -470,8 +476,9 @@ static int traction_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d
 
 /* ---- output ---------------------------------------------------------------- */
 
-enum { F_VELOCITY = 1, F_PRESSURE = 2, F_SHEAR = 4, F_VISCOSITY = 8, F_YIELDED = 16, F_PHI = 32 };
-static const char *const field_names[] = {"velocity", "pressure", "shear_rate", "viscosity", "yielded", "phi"};
+enum { F_VELOCITY = 1, F_PRESSURE = 2, F_SHEAR = 4, F_VISCOSITY = 8, F_YIELDED = 16, N_FLOW_FIELDS = 5 };
+enum { MAX_FIELDS = 16 };
+static const char *const field_names[N_FLOW_FIELDS] = {"velocity", "pressure", "shear_rate", "viscosity", "yielded"};
 
 typedef struct ns_run {
   const sl_ini *ini;
@@ -489,10 +496,14 @@ typedef struct ns_run {
   sl_ns_result *res;
   int datum;
   const sl_ns_coupling *cpl; /* NULL: single-phase */
+  unsigned cpl_fields;       /* the coupled model's fields to write (bit k: cpl->field_names[k]) */
+  /* The residual's round-off (see solve): the largest initial residual of
+   * the run, and whether a solve has already ended there. */
+  double newton_scale[2];
 } ns_run;
 
 static int write_state(ns_run *r, double t, const double *u, sl_diag *d) {
-  double t0 = wall();
+  double t0 = wall(), c0 = cpu();
   const sl_th_space *th = r->th;
   int rc = sl_output_begin_step(r->out, t, d);
   if (!rc && (r->fields & F_VELOCITY)) {
@@ -546,13 +557,14 @@ static int write_state(ns_run *r, double t, const double *u, sl_diag *d) {
   if (!rc && r->cpl) rc = r->cpl->write(r->cpl->user, r->out, d);
   if (!rc) rc = sl_output_end_step(r->out, d);
   r->res->output += wall() - t0;
+  r->res->cpu_output += cpu() - c0;
   return rc;
 }
 
 /* The state to restart from: the BDF history (a steady run passes a
  * history of its one solution). */
 static int write_checkpoint(ns_run *r, const sl_bdf *b, double t, double dt_next, long step, sl_diag *d) {
-  double t0 = wall();
+  double t0 = wall(), c0 = cpu();
   sl_checkpoint_array arr[12];
   int na = 0;
   const char *names[3] = {"u", "u_prev", "u_prev2"};
@@ -563,6 +575,8 @@ static int write_checkpoint(ns_run *r, const sl_bdf *b, double t, double dt_next
   }
   snprintf(arr[na].name, sizeof arr[na].name, "h_past");
   arr[na].n = 2, arr[na].data = b->h_past, ++na;
+  snprintf(arr[na].name, sizeof arr[na].name, "newton_scale"); /* a restart tests convergence as the run did */
+  arr[na].n = 2, arr[na].data = r->newton_scale, ++na;
   if (r->cpl) na += r->cpl->checkpoint(r->cpl->user, arr + na, 12 - na);
   sl_checkpoint ck = {.time = t, .dt = dt_next, .step = step, .n_arrays = na, .arrays = arr};
   ck.n_ints = 2;
@@ -572,16 +586,33 @@ static int write_checkpoint(ns_run *r, const sl_bdf *b, double t, double dt_next
   ck.ints[1] = r->res->rejected_steps;
   int rc = sl_output_write_checkpoint(r->out, &ck, d);
   r->res->output += wall() - t0;
+  r->res->cpu_output += cpu() - c0;
   return rc;
+}
+
+/* [output] fields: the flow's, then the coupled model's. By default the
+ * velocity, the pressure, the viscosity closure's diagnostics when there is
+ * one, and every field of the coupled model. */
+static int output_fields(ns_run *r, sl_diag *d) {
+  const char *names[MAX_FIELDS];
+  int n = 0, n_cpl = r->cpl ? r->cpl->n_fields : 0;
+  if (N_FLOW_FIELDS + n_cpl > MAX_FIELDS)
+    return sl_diag_set(d, SL_EFAILED, "output: more than %d field names", MAX_FIELDS);
+  for (int k = 0; k < N_FLOW_FIELDS; ++k) names[n++] = field_names[k];
+  for (int k = 0; k < n_cpl; ++k) names[n++] = r->cpl->field_names[k];
+  unsigned def = F_VELOCITY | F_PRESSURE | (r->ph.visc ? F_SHEAR | F_VISCOSITY | F_YIELDED : 0);
+  def |= ((1u << n_cpl) - 1u) << N_FLOW_FIELDS;
+  unsigned mask;
+  int rc = sl_scene_output_fields(r->ini, names, n, def, &mask, d);
+  if (rc) return rc;
+  r->fields = (int)(mask & ((1u << N_FLOW_FIELDS) - 1u));
+  r->cpl_fields = mask >> N_FLOW_FIELDS;
+  return 0;
 }
 
 static int open_output(ns_run *r, const sl_ns_run_opts *o, sl_diag *d) {
   int rc = sl_scene_output_path(r->ini, o->output, o->scene_path, r->res->output_path, sizeof r->res->output_path, d);
   if (rc) return rc;
-  /* fields; phi: the mixture model's (always written) */
-  unsigned mask, def = F_VELOCITY | F_PRESSURE | (r->ph.visc ? F_SHEAR | F_VISCOSITY | F_YIELDED : 0);
-  if ((rc = sl_scene_output_fields(r->ini, field_names, r->cpl ? 6 : 5, def, &mask, d))) return rc;
-  r->fields = (int)mask;
   if ((rc = sl_output_open(&r->out, r->res->output_path, d))) return rc;
   const sl_th_space *th = r->th;
   static const char *const topo[] = {[SL_CELL_LINE2] = "Edge_3", [SL_CELL_TRI3] = "Triangle_6",
@@ -620,14 +651,38 @@ static int open_output(ns_run *r, const sl_ns_run_opts *o, sl_diag *d) {
 
 /* ---- solves ---------------------------------------------------------------- */
 
+/* A residual this far below the largest initial residual of the run (its
+ * forcing: the lid, the buoyancy) is at round-off. A flow nearly at rest
+ * under a large load that the pressure carries (a suspension close to
+ * packing) gets there in one iteration, and then no relative test can pass:
+ * the corrections are noise and the predictor's residual, the reference of
+ * the relative residual test, is already tiny. Such a solve is converged.
+ * Ordinary solves pass their own tests first and are not touched; once one
+ * has ended at round-off, the later ones stop there (atol). */
+#define NEWTON_ROUNDOFF 1e-13
+
 static int solve(ns_run *r, double *u, int *iterations, sl_diag *d) {
   sl_newton_stats st;
+  double c0 = cpu();
+  double *scale = &r->newton_scale[0], *engaged = &r->newton_scale[1];
+  r->nopts.atol = *engaged ? NEWTON_ROUNDOFF * *scale : 0.0;
   int rc = sl_flow_problem_solve(&r->prob, u, r->ls, &r->nopts, &st, d);
+  if (isfinite(st.residual0) && st.residual0 > *scale) *scale = st.residual0;
+  if (rc == SL_EFAILED && st.iterations > 0 && isfinite(st.residual) && st.residual <= NEWTON_ROUNDOFF * *scale) {
+    rc = 0; /* u is the last iterate, whose residual st.residual is */
+    *engaged = 1.0;
+    r->res->roundoff_accepted++;
+  } else if (rc == 0 && r->nopts.atol > 0.0 && st.residual <= r->nopts.atol) {
+    r->res->roundoff_accepted++;
+  }
   if (iterations) *iterations = st.iterations;
+  r->res->correction = st.correction;
+  r->res->residual0 = st.residual0, r->res->residual = st.residual;
   r->res->nonlinear_iterations += st.iterations;
   r->res->matrix_assemblies += st.assemblies, r->res->residual_assemblies += st.residuals;
   r->res->assembly += st.t_assembly;
   if (st.picard_iterations) r->res->used_picard = 1;
+  r->res->cpu_flow += cpu() - c0;
   return rc;
 }
 
@@ -649,9 +704,20 @@ static int steady(ns_run *r, sl_ini *ini, const sl_registry *reg, double *u, sl_
   int rc = sl_ini_get_string(ini, "solver", "continuation", 0, "", &key, d);
   if (rc) return rc;
   if (!*key) {
-    rc = solve(r, u, NULL, d);
+    int its = 0;
+    rc = solve(r, u, &its, d);
     r->res->steps = 1;
-    return rc ? sl_diag_prefix(d, rc, "steady solve") : 0;
+    if (rc) return sl_diag_prefix(d, rc, "steady solve");
+    r->res->converged = 1;
+    if (r->nopts.linear)
+      snprintf(r->res->stop_reason, sizeof r->res->stop_reason,
+               "steady state solved: a linear problem, one solve (residual %.2g)", r->res->residual);
+    else
+      snprintf(r->res->stop_reason, sizeof r->res->stop_reason,
+               "steady state converged in %d Newton iteration%s (last relative correction %.2g, tolerance %g; "
+               "residual %.2g from %.2g)",
+               its, its == 1 ? "" : "s", r->res->correction, r->nopts.rtol, r->res->residual, r->res->residual0);
+    return 0;
   }
   /* continuation: section.key from continuation_from to its scene value */
   const sl_ini_entry *ce = sl_ini_find(ini, "solver", "continuation");
@@ -680,9 +746,18 @@ static int steady(ns_run *r, sl_ini *ini, const sl_registry *reg, double *u, sl_
     snprintf(assign, sizeof assign, "%s=%.17g", key, v);
     if ((rc = sl_ini_apply_override(ini, assign, d))) break;
     if ((rc = rebuild_physics(r, reg, d))) break;
-    rc = solve(r, u, NULL, d);
+    int its = 0;
+    rc = solve(r, u, &its, d);
     if (rc) rc = sl_diag_prefix(d, rc, "continuation stage %ld of %ld (%s = %g)", k, steps, key, v);
     r->res->steps++;
+    if (!rc && k == steps) {
+      r->res->converged = 1;
+      snprintf(r->res->stop_reason, sizeof r->res->stop_reason,
+               "steady state converged at %s = %g, the last of %ld continuation stages, in %d Newton iteration%s "
+               "(last relative correction %.2g, tolerance %g; residual %.2g from %.2g)",
+               key, v, steps + 1, its, its == 1 ? "" : "s", r->res->correction, r->nopts.rtol, r->res->residual,
+               r->res->residual0);
+    }
   }
   return rc;
 }
@@ -756,6 +831,8 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     }
     const sl_checkpoint_array *hp = sl_checkpoint_find(ck, "h_past");
     if (hp && hp->n == 2) b.h_past[0] = hp->data[0], b.h_past[1] = hp->data[1];
+    const sl_checkpoint_array *ns = sl_checkpoint_find(ck, "newton_scale");
+    if (ns && ns->n == 2) r->newton_scale[0] = ns->data[0], r->newton_scale[1] = ns->data[1];
     b.n_past = (int)np, b.t = ck->time;
     h = ck->dt, step = (long)ck->step;
     if (ck->n_ints > 1) r->res->rejected_steps = (long)ck->ints[1];
@@ -796,7 +873,9 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     int coupled_failed = 0;
     if (nrc == 0 && err <= 1.0 && r->cpl) {
       for (int32_t i = 0; i < n; ++i) rate[i] = s.mass_coef * trial[i] + hist[i]; /* the BDF du/dt at t + hh */
+      double c0 = cpu();
       coupled_failed = (nrc = r->cpl->advance(r->cpl->user, b.t, hh, trial, rate, &dn)) != 0;
+      r->res->cpu_coupled += cpu() - c0;
     }
     if (nrc != 0 || err > 1.0) {
       r->res->rejected_steps++;
@@ -807,8 +886,12 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
         break;
       }
       if (h < tc->dt_min) {
-        rc = sl_diag_set(d, SL_EFAILED, "step rejected at t = %.6g down to dt = %.3g < dt_min = %.3g: %s", b.t, h,
-                         tc->dt_min, nrc ? dn.msg : "the error estimate stays above the tolerance");
+        double umax = 0.0; /* a velocity growing without bound shows here */
+        for (int32_t i = 0; i < r->th->p_offset; ++i) umax = fmax(umax, fabs(b.past[0][i]));
+        rc = sl_diag_set(d, SL_EFAILED,
+                         "step rejected at t = %.6g down to dt = %.3g < dt_min = %.3g: %s (largest velocity of the last "
+                         "accepted step %.3g)",
+                         b.t, h, tc->dt_min, nrc ? dn.msg : "the error estimate stays above the tolerance", umax);
         break;
       }
       continue;
@@ -830,6 +913,12 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
   }
   r->res->steps = step;
   r->res->t_reached = b.t;
+  if (!rc && b.t >= tc->end - eps_t)
+    snprintf(r->res->stop_reason, sizeof r->res->stop_reason, "reached the end time t = %g", tc->end);
+  else if (!rc)
+    snprintf(r->res->stop_reason, sizeof r->res->stop_reason,
+             "stopped after max_steps = %ld steps at t = %.6g, before the end time %g (checkpoint saved)",
+             tc->max_steps, b.t, tc->end);
   long best = 0;
   for (int k = 0; k < N_LIMITS; ++k)
     if (limit_count[k] > best) best = limit_count[k], r->res->step_limit = limits[k];
@@ -860,6 +949,7 @@ static int initial_velocity(const sl_ini *ini, const sl_th_space *th, double *u,
 
 int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d) {
   memset(res, 0, sizeof *res);
+  double c_setup = cpu();
   ns_run r = {.ini = ini, .res = res, .cpl = o->coupling};
   double *u = NULL;
   sl_checkpoint ck = {0};
@@ -904,6 +994,7 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
   r.prob.opts.omega = omega;
   r.prob.opts.rotation_centre[0] = centre[0], r.prob.opts.rotation_centre[1] = centre[1];
   if ((rc = sl_flow_check_geometry(r.th, &r.prob.opts, d))) goto out;
+  if ((rc = output_fields(&r, d))) goto out;
   if (r.cpl) {
     if (tc.scheme == 0) {
       rc = sl_diag_set(d, SL_EBADINPUT, "[time] scheme = steady: the mixture model is transient (bdf1 or bdf2)");
@@ -919,7 +1010,7 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
       bc_type ty = r.bcs.b[i].type;
       open[i] = ty == BC_OPEN || ty == BC_PRESSURE || ty == BC_TRACTION;
     }
-    rc = r.cpl->setup(r.cpl->user, r.th, &r.prob.opts, open, r.bcs.pairs, r.bcs.n_pairs, d);
+    rc = r.cpl->setup(r.cpl->user, r.th, &r.prob.opts, open, r.bcs.pairs, r.bcs.n_pairs, r.cpl_fields, d);
     free(open);
     if (rc) goto out;
   }
@@ -940,8 +1031,10 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
                              .rtol_residual = 1e-10};
   u = calloc((size_t)r.th->n_dofs, sizeof *u);
   r.work = malloc((size_t)r.th->vel->n_nodes * 3 * sizeof *r.work);
-  r.cellbuf = malloc((size_t)r.mesh->n_cells * 3 * sizeof *r.cellbuf);
-  if (!u || !r.work || !r.cellbuf) {
+  /* the cell diagnostics only when written */
+  int cell_fields = (r.fields & (F_SHEAR | F_VISCOSITY | F_YIELDED)) != 0;
+  if (cell_fields) r.cellbuf = malloc((size_t)r.mesh->n_cells * 3 * sizeof *r.cellbuf);
+  if (!u || !r.work || (cell_fields && !r.cellbuf)) {
     rc = sl_diag_set(d, SL_EFAILED, "out of memory for %d unknowns", (int)r.th->n_dofs);
     goto out;
   }
@@ -960,6 +1053,7 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
     if (r.cpl && (rc = r.cpl->restore(r.cpl->user, &ck, d))) goto out;
   }
   if ((rc = open_output(&r, o, d))) goto out;
+  res->cpu_setup = cpu() - c_setup;
   if (tc.scheme == 0) {
     rc = steady(&r, ini, reg, u, d);
     sl_diag d2;
@@ -977,10 +1071,12 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
 out:
   if (r.ls) {
     const sl_linsolve_stats *st = sl_linsolve_get_stats(r.ls);
+    res->linear = *st;
     res->factorisation = st->t_symbolic + st->t_numeric, res->solve = st->t_solve;
     sl_linsolve_summary(r.ls, res->linear_summary, sizeof res->linear_summary);
   }
   if (r.out) {
+    sl_output_stats(r.out, &res->output_times, &res->output_datasets, &res->output_bytes);
     sl_diag d2;
     int crc = sl_output_close(r.out, rc ? &d2 : d);
     if (!rc) rc = crc;

@@ -28,6 +28,7 @@
 #include "core/fe/dofmap.h"
 #include "core/io/output.h"
 #include "core/plugin/registry.h"
+#include "core/solve/linsolve.h"
 #include "core/util/diag.h"
 
 /* A model riding on the flow: the mixture model's solids fraction. The flow
@@ -39,12 +40,17 @@
 typedef struct sl_ns_coupling {
   void *user;
   double rho_solid;
+  /* The coupled model's output fields, named in [output] fields with the
+   * flow's (all of them by default). */
+  const char *const *field_names;
+  int n_fields;
   /* After the velocity space exists; `flow` stays valid through the run
    * (its viscosity gives the shear rate); open[b] != 0 marks boundaries
    * where the velocity is free (open, pressure, traction); pairs are the
-   * periodic boundary pairs. */
+   * periodic boundary pairs; bit k of `fields` says field_names[k] is to be
+   * written (what is not written need not be computed or allocated). */
   int (*setup)(void *user, const sl_th_space *th, const sl_flow_opts *flow, const unsigned char *open,
-               const sl_periodic_pair *pairs, int n_pairs, sl_diag *d);
+               const sl_periodic_pair *pairs, int n_pairs, unsigned fields, sl_diag *d);
   const double *(*cell_phi)(void *user);                 /* the current cell values */
   /* Into a trial state, from the converged velocity u at t + dt and the
    * integrator's time derivative dudt of it (both combined numbering). */
@@ -73,12 +79,26 @@ typedef struct sl_ns_result {
   long matrix_assemblies, residual_assemblies; /* full (matrix and right-hand side) and right-hand-side-only */
   int used_picard;
   double t_start, t_end, t_reached;
-  /* wall seconds */
+  /* wall seconds (assembly from the nonlinear solver, factorisation and
+   * solve from the linear solver's clocks) */
   double assembly, factorisation, solve, output;
   const char *step_limit;   /* what limited the step most often (static string) or NULL */
   char output_path[4096];
   char linear_summary[256];
   char coupling_summary[256]; /* the coupled model's one line, or "" */
+  /* What was done and skipped (the profile of `sluice run`); models that do
+   * not fill these leave them zero. */
+  sl_linsolve_stats linear;  /* the flow's linear solver: symbolic and numeric factorisations, reuses */
+  int converged;             /* steady: the (last) solve converged */
+  double correction;         /* steady: its last relative Newton correction */
+  double residual0, residual; /* steady: |b|_2 at the start and at the end of that solve */
+  long roundoff_accepted;    /* solves accepted with their residual at round-off (see navier_stokes.c) */
+  char stop_reason[256];     /* why the run ended, one line ("" when it failed: the error says why) */
+  /* CPU seconds: set-up (mesh, spaces, closures, output file), the flow's
+   * solves, the coupled model's steps (the mixture's transport), output */
+  double cpu_setup, cpu_flow, cpu_coupled, cpu_output;
+  long output_times, output_datasets; /* written: output times, datasets (fields) over all of them */
+  double output_bytes;                /* of field data */
 } sl_ns_result;
 
 /* The simulated time span the run will cover (for the progress display). */

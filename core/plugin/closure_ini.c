@@ -20,9 +20,12 @@ static int located(sl_diag *d, int rc, const sl_ini_entry *e) {
   return rc;
 }
 
-int sl_closure_from_ini(const sl_registry *r, const sl_ini *ini, const char *section, sl_closure **out,
-                        sl_diag *d) {
+/* The closure a section names and its validated parameters (*params owned
+ * by the caller). */
+static int resolve(const sl_registry *r, const sl_ini *ini, const char *section, const sl_closure_entry **out,
+                   void **out_params, sl_diag *d) {
   *out = NULL;
+  *out_params = NULL;
   const sl_ini_section *sec = sl_ini_find_section(ini, section);
   if (!sec) return sl_diag_set(d, SL_EBADINPUT, "the scene has no [%s] section", section);
   sl_kind kind;
@@ -46,9 +49,29 @@ int sl_closure_from_ini(const sl_registry *r, const sl_ini *ini, const char *sec
     }
     e->used = 1;
   }
+  *out = entry;
+  *out_params = params;
+  return 0;
+}
+
+int sl_closure_from_ini(const sl_registry *r, const sl_ini *ini, const char *section, sl_closure **out,
+                        sl_diag *d) {
+  *out = NULL;
+  const sl_closure_entry *entry;
+  void *params;
+  int rc = resolve(r, ini, section, &entry, &params, d);
+  if (rc) return rc;
   rc = sl_closure_create(entry, params, out, d);
   if (rc) return located(d, rc, sl_ini_find(ini, section, "model"));
   return 0;
+}
+
+int sl_closure_check_ini(const sl_registry *r, const sl_ini *ini, const char *section, sl_diag *d) {
+  const sl_closure_entry *entry;
+  void *params;
+  int rc = resolve(r, ini, section, &entry, &params, d);
+  sl_params_free(params);
+  return rc;
 }
 
 int sl_plugin_dirs_from_ini(const sl_ini *ini, char ***dirs, int *n, sl_diag *d) {

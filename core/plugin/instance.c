@@ -4,6 +4,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "core/config/ini.h"
 #include "core/plugin/kinds.h"
@@ -213,6 +214,9 @@ int sl_closure_create(const sl_closure_entry *entry, void *params, sl_closure **
   c->desc = entry->desc;
   c->library = entry->library;
   c->params = params;
+  c->timed = entry->library->timing;
+  for (int32_t k = 0; k < entry->library->n_closures; ++k)
+    if (entry->library->closures[k] == entry->desc) c->usage_index = (int)k;
   c->api = (sl_host_api){.struct_size = (uint32_t)sizeof(sl_host_api),
                          .host_version = SL_HOST_VERSION,
                          .dim = 0,
@@ -235,6 +239,7 @@ int sl_closure_create(const sl_closure_entry *entry, void *params, sl_closure **
     c->state = params;
   }
   entry->library->n_in_use++;
+  if (entry->library->usage) entry->library->usage[c->usage_index].instances++;
   *out = c;
   return 0;
 }
@@ -243,6 +248,10 @@ void sl_closure_destroy(sl_closure *c) {
   if (!c) return;
   if (c->desc->destroy) c->desc->destroy(&c->api, c->state);
   if (c->library) c->library->n_in_use--;
+  if (c->library && c->library->usage) {
+    sl_closure_usage *u = &c->library->usage[c->usage_index];
+    u->calls += c->n_calls, u->points += c->n_points, u->seconds += c->seconds;
+  }
   sl_params_free(c->params);
   free(c);
 }
@@ -324,11 +333,24 @@ static int all_finite(const double *restrict o, int32_t Q) {
 }
 #endif
 
-int sl_closure_evaluate(sl_closure *c, const sl_eval_args *a) {
+static double monotonic_seconds(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Inlined into both paths of sl_closure_evaluate: the untimed call costs
+ * what it did before the profile's clock existed. */
+#if defined(__GNUC__)
+#define SL_EVAL_INLINE __attribute__((always_inline)) static inline
+#else
+#define SL_EVAL_INLINE static inline
+#endif
+
+/* The call and the host's scan of its outputs. */
+SL_EVAL_INLINE int evaluate_checked(sl_closure *c, const sl_eval_args *a) {
   a->err->point = -1;
   a->err->msg[0] = '\0';
-  c->n_calls++;
-  c->n_points += (unsigned long long)a->Q;
   const sl_closure_desc *desc = c->desc;
   int rc = desc->evaluate(c->state, a);
   if (rc != 0) {
@@ -349,6 +371,16 @@ int sl_closure_evaluate(sl_closure *c, const sl_eval_args *a) {
     }
   }
   return 0;
+}
+
+int sl_closure_evaluate(sl_closure *c, const sl_eval_args *a) {
+  c->n_calls++;
+  c->n_points += (unsigned long long)a->Q;
+  if (!c->timed) return evaluate_checked(c, a);
+  double t0 = monotonic_seconds();
+  int rc = evaluate_checked(c, a);
+  c->seconds += monotonic_seconds() - t0;
+  return rc;
 }
 
 int sl_closure_input(const sl_closure_desc *desc, const char *name) {

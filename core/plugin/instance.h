@@ -15,6 +15,9 @@ typedef struct sl_closure {
   void *state;  /* from create(), or params when the closure has no create */
   sl_host_api api;
   unsigned long long n_calls, n_points; /* evaluation counters (profile) */
+  double seconds;  /* inside evaluate, when timed */
+  int timed;       /* from the library's timing switch at creation */
+  int usage_index; /* this closure's slot in library->usage */
 } sl_closure;
 
 /* A parameter struct filled with the schema's defaults (64-byte aligned,
@@ -29,12 +32,14 @@ int sl_params_find(const sl_closure_desc *desc, const char *key);
 /* The value of parameter i as text ("4.65", "true", "rowe"). */
 void sl_params_format_value(const sl_closure_desc *desc, const void *params, int i, char *buf, size_t n);
 
-/* Creates the closure; takes ownership of params (also on failure). */
+/* Creates the closure; takes ownership of params (also on failure). Its
+ * counters go into library->usage when it is destroyed. */
 int sl_closure_create(const sl_closure_entry *entry, void *params, sl_closure **out, sl_diag *d);
 void sl_closure_destroy(sl_closure *c);
 
 /* Evaluates one batch. Returns the closure's code: 0, > 0 recoverable (also
- * for a non-finite output, reported as such), < 0 fatal; err names the point. */
+ * for a non-finite output, reported as such), < 0 fatal; err names the point.
+ * Counts the call and its points (and times it when c->timed). */
 int sl_closure_evaluate(sl_closure *c, const sl_eval_args *args);
 
 /* Index of an input or output by name, or -1. */

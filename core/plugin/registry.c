@@ -96,6 +96,7 @@ static void library_free(sl_library *lib) {
   if (!lib) return;
   if (lib->handle) dlclose(lib->handle);
   free(lib->path);
+  free(lib->usage);
   free(lib);
 }
 
@@ -108,11 +109,15 @@ void sl_registry_destroy(sl_registry *r) {
   free(r->entries);
   for (int i = 0; i < r->n_problems; ++i) free(r->problems[i]);
   free(r->problems);
+  for (int i = 0; i < r->n_files; ++i) free(r->files[i]);
+  free(r->files);
+  free(r->file_tried);
   free(r);
 }
 
-/* Opens and validates one library; on success *out owns the handle. */
-static int open_library(const char *path, sl_library **out, sl_diag *d) {
+/* Opens and validates one library; on success *out owns the handle.
+ * *n_dlopen counts the libraries dlopen'ed, refused ones included. */
+static int open_library(const char *path, sl_library **out, long *n_dlopen, sl_diag *d) {
   *out = NULL;
   dlerror();
   void *h = dlopen(path, SL_DLOPEN_FLAGS);
@@ -120,6 +125,7 @@ static int open_library(const char *path, sl_library **out, sl_diag *d) {
     const char *why = dlerror();
     return sl_diag_set(d, SL_EBADINPUT, "%s: cannot load: %s", path, why ? why : "unknown dlopen error");
   }
+  ++*n_dlopen;
   sl_closure_entry_fn entry = NULL;
   void *sym = dlsym(h, SL_CLOSURE_ENTRY_SYMBOL);
   memcpy(&entry, &sym, sizeof entry); /* object-to-function pointer without a cast warning */
@@ -165,7 +171,8 @@ static int open_library(const char *path, sl_library **out, sl_diag *d) {
     }
   }
   sl_library *lib = calloc(1, sizeof *lib);
-  if (!lib || !(lib->path = dup_str(path))) {
+  if (!lib || !(lib->path = dup_str(path)) || !(lib->usage = calloc((size_t)n, sizeof *lib->usage))) {
+    if (lib) free(lib->path);
     free(lib);
     dlclose(h);
     return sl_diag_set(d, SL_EFAILED, "out of memory");
@@ -192,8 +199,9 @@ int sl_registry_add_library(sl_registry *r, const char *path, sl_library **out, 
     }
   }
   sl_library *lib;
-  int rc = open_library(path, &lib, d);
+  int rc = open_library(path, &lib, &r->n_dlopen, d);
   if (rc) return rc;
+  lib->timing = r->timing;
   if (r->n_libraries == r->cap_libraries) {
     int cap = r->cap_libraries ? 2 * r->cap_libraries : 16;
     sl_library **libs = realloc(r->libraries, (size_t)cap * sizeof *libs);
@@ -238,43 +246,138 @@ static int add_problem(sl_registry *r, const char *msg) {
   return 0;
 }
 
-int sl_registry_scan(sl_registry *r, sl_diag *d) {
-  for (int i = 0; i < r->n_dirs; ++i) {
-    DIR *dir = opendir(r->dirs[i]);
-    if (!dir) continue; /* a folder on the path that does not exist is not an error */
-    int n = 0, cap = 0;
-    char **names = NULL;
-    int rc = 0;
-    for (struct dirent *e; (e = readdir(dir)) != NULL;) {
-      if (!has_so_suffix(e->d_name)) continue;
-      if (n == cap) {
-        cap = cap ? 2 * cap : 32;
-        char **nn = realloc(names, (size_t)cap * sizeof *nn);
-        if (!nn) {
-          rc = SL_EFAILED;
-          break;
-        }
-        names = nn;
-      }
-      if (!(names[n] = dup_str(e->d_name))) {
+/* The *.so files of one folder, sorted (a deterministic order); a folder
+ * that does not exist has none. */
+static int list_libraries(const char *dir_path, char ***out, int *n_out) {
+  *out = NULL;
+  *n_out = 0;
+  DIR *dir = opendir(dir_path);
+  if (!dir) return 0; /* a folder on the path that does not exist is not an error */
+  int n = 0, cap = 0, rc = 0;
+  char **names = NULL;
+  for (struct dirent *e; (e = readdir(dir)) != NULL;) {
+    if (!has_so_suffix(e->d_name)) continue;
+    if (n == cap) {
+      cap = cap ? 2 * cap : 32;
+      char **nn = realloc(names, (size_t)cap * sizeof *nn);
+      if (!nn) {
         rc = SL_EFAILED;
         break;
       }
-      n++;
+      names = nn;
     }
-    closedir(dir);
-    if (!rc && n > 1) qsort(names, (size_t)n, sizeof *names, cmp_str); /* deterministic order (names is NULL when empty) */
+    if (!(names[n] = dup_str(e->d_name))) {
+      rc = SL_EFAILED;
+      break;
+    }
+    n++;
+  }
+  closedir(dir);
+  if (!rc && n > 1) qsort(names, (size_t)n, sizeof *names, cmp_str);
+  if (rc) {
+    for (int k = 0; k < n; ++k) free(names[k]);
+    free(names);
+    return rc;
+  }
+  *out = names;
+  *n_out = n;
+  return 0;
+}
+
+/* Loads one file of the search path; a library that fails validation is
+ * kept in r->problems, not an error. */
+static int load_from_path(sl_registry *r, const char *path) {
+  sl_diag why;
+  int rc = sl_registry_add_library(r, path, NULL, &why);
+  if (rc == SL_EBADINPUT) return add_problem(r, why.msg);
+  return rc;
+}
+
+int sl_registry_scan(sl_registry *r, sl_diag *d) {
+  if (r->lazy) { /* an index: load what it has not loaded yet */
+    for (int i = 0; i < r->n_files; ++i) {
+      if (r->file_tried[i]) continue;
+      r->file_tried[i] = 1;
+      if (load_from_path(r, r->files[i])) return sl_diag_set(d, SL_EFAILED, "out of memory while loading %s", r->files[i]);
+    }
+    return 0;
+  }
+  for (int i = 0; i < r->n_dirs; ++i) {
+    char **names;
+    int n, rc = list_libraries(r->dirs[i], &names, &n);
     for (int k = 0; k < n && !rc; ++k) {
       char path[PATH_MAX];
       snprintf(path, sizeof path, "%s/%s", r->dirs[i], names[k]);
-      sl_diag why;
-      int lrc = sl_registry_add_library(r, path, NULL, &why);
-      if (lrc == SL_EBADINPUT) rc = add_problem(r, why.msg);
-      else if (lrc) rc = lrc;
+      rc = load_from_path(r, path);
     }
     for (int k = 0; k < n; ++k) free(names[k]);
     free(names);
     if (rc) return sl_diag_set(d, SL_EFAILED, "out of memory while scanning %s", r->dirs[i]);
+  }
+  return 0;
+}
+
+int sl_registry_index(sl_registry *r, sl_diag *d) {
+  for (int i = 0; i < r->n_dirs; ++i) {
+    char **names;
+    int n, rc = list_libraries(r->dirs[i], &names, &n);
+    if (!rc && n > 0) {
+      char **files = realloc(r->files, (size_t)(r->n_files + n) * sizeof *files);
+      unsigned char *tried = files ? realloc(r->file_tried, (size_t)(r->n_files + n)) : NULL;
+      if (files) r->files = files;
+      if (tried) r->file_tried = tried;
+      if (!files || !tried) rc = SL_EFAILED;
+      for (int k = 0; k < n && !rc; ++k) {
+        size_t len = strlen(r->dirs[i]) + strlen(names[k]) + 2;
+        char *path = malloc(len);
+        if (!path) {
+          rc = SL_EFAILED;
+          break;
+        }
+        snprintf(path, len, "%s/%s", r->dirs[i], names[k]);
+        r->files[r->n_files] = path;
+        r->file_tried[r->n_files++] = 0;
+      }
+    }
+    for (int k = 0; k < n; ++k) free(names[k]);
+    free(names);
+    if (rc) return sl_diag_set(d, SL_EFAILED, "out of memory while listing %s", r->dirs[i]);
+  }
+  r->lazy = 1;
+  return 0;
+}
+
+static const char *base_name(const char *path) {
+  const char *slash = strrchr(path, '/');
+  return slash ? slash + 1 : path;
+}
+
+/* Does a file name follow the built-in naming <kind>_<name>.so? */
+static int conventional_name(const char *base) {
+  int n;
+  const char *const *kinds = sl_kind_names(&n);
+  for (int k = 0; k < n; ++k) {
+    size_t len = strlen(kinds[k]);
+    if (strncmp(base, kinds[k], len) == 0 && base[len] == '_' && strlen(base + len + 1) > 3) return 1;
+  }
+  return 0;
+}
+
+/* Opens the files of an index that may provide (kind, name): the one named
+ * <kind>_<name>.so and every library whose name says nothing; with
+ * `library`, only the files it names. */
+static int load_candidates(sl_registry *r, sl_kind kind, const char *name, const char *library, sl_diag *d) {
+  char want[512];
+  snprintf(want, sizeof want, "%s_%s.so", sl_kind_name(kind), name);
+  for (int i = 0; i < r->n_files; ++i) {
+    if (r->file_tried[i]) continue;
+    const char *base = base_name(r->files[i]);
+    int candidate;
+    if (library) candidate = strchr(library, '/') ? same_file(r->files[i], library) : strcmp(base, library) == 0;
+    else candidate = strcmp(base, want) == 0 || !conventional_name(base);
+    if (!candidate) continue;
+    r->file_tried[i] = 1;
+    if (load_from_path(r, r->files[i])) return sl_diag_set(d, SL_EFAILED, "out of memory while loading %s", r->files[i]);
   }
   return 0;
 }
@@ -287,8 +390,32 @@ static int library_matches(const sl_library *lib, const char *library) {
   return strcmp(base, library) == 0;
 }
 
+static int find_loaded(const sl_registry *r, sl_kind kind, const char *name, const char *library,
+                       const sl_closure_entry **entry, sl_diag *d);
+
 int sl_registry_find(const sl_registry *r, sl_kind kind, const char *name, const char *library,
                      const sl_closure_entry **entry, sl_diag *d) {
+  if (!r->lazy) return find_loaded(r, kind, name, library, entry, d);
+  /* The index loads what the look-up needs: the registry is a cache behind
+   * its const interface (registry.h). */
+  sl_registry *cache = (sl_registry *)r;
+  int rc = load_candidates(cache, kind, name, library, d);
+  if (rc) return rc;
+  sl_diag quiet;
+  if (find_loaded(r, kind, name, library, entry, &quiet) == 0) return 0;
+  /* Not where its name says: the rest of the path, then the full answer
+   * (an ambiguity, or a did-you-mean over everything). */
+  if ((rc = sl_registry_scan(cache, d))) return rc;
+  if ((rc = find_loaded(r, kind, name, library, entry, d)) == 0) return 0;
+  char want[512]; /* a library named for it that could not be used: say why */
+  snprintf(want, sizeof want, "/%s_%s.so:", sl_kind_name(kind), name);
+  for (int i = 0; i < r->n_problems; ++i)
+    if (strstr(r->problems[i], want)) return sl_diag_prefix(d, rc, "%s; and", r->problems[i]);
+  return rc;
+}
+
+static int find_loaded(const sl_registry *r, sl_kind kind, const char *name, const char *library,
+                       const sl_closure_entry **entry, sl_diag *d) {
   *entry = NULL;
   const sl_closure_entry *first = NULL;
   int n_match = 0;
@@ -327,4 +454,13 @@ int sl_registry_libraries_in_use(const sl_registry *r) {
   int n = 0;
   for (int i = 0; i < r->n_libraries; ++i) n += r->libraries[i]->n_in_use > 0;
   return n;
+}
+
+void sl_registry_set_timing(sl_registry *r, int on) {
+  r->timing = on != 0;
+  for (int i = 0; i < r->n_libraries; ++i) r->libraries[i]->timing = r->timing;
+}
+
+int sl_registry_files_on_path(const sl_registry *r) {
+  return r->lazy ? r->n_files : r->n_libraries + r->n_problems;
 }
