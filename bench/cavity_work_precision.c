@@ -53,6 +53,7 @@
 #include "core/config/scene_schema.h"
 #include "core/io/sample.h"
 #include "core/models/navier_stokes.h"
+#include "bench_machine.h"
 #include "svg_plot.h"
 
 enum { MAX_N = 16, MAX_SET = 8, MAX_SOLVERS = 4 };
@@ -292,32 +293,6 @@ static int best_of(const bench_opts *bo, const char *solver, int n, int transien
     if (again.wall < r->wall) *r = again;
   }
   return 0;
-}
-
-/* ---- the machine ------------------------------------------------------- */
-
-static void machine(char *buf, size_t len) {
-  char model[256] = "unknown CPU", line[512];
-  FILE *f = fopen("/proc/cpuinfo", "r");
-  if (f) {
-    while (fgets(line, sizeof line, f))
-      if (!strncmp(line, "model name", 10)) {
-        const char *c = strchr(line, ':');
-        if (c) {
-          snprintf(model, sizeof model, "%s", c + 1 + (c[1] == ' '));
-          model[strcspn(model, "\n")] = 0;
-        }
-        break;
-      }
-    fclose(f);
-  }
-  double load = NAN;
-  f = fopen("/proc/loadavg", "r");
-  if (f) {
-    if (fscanf(f, "%lf", &load) != 1) load = NAN;
-    fclose(f);
-  }
-  snprintf(buf, len, "%s, %ld cores, load %.2f at start", model, sysconf(_SC_NPROCESSORS_ONLN), load);
 }
 
 /* ---- output ------------------------------------------------------------ */
@@ -576,7 +551,7 @@ int main(int argc, char **argv) {
       int s = t.ns[b];
       t.ns[b] = t.ns[b - 1], t.ns[b - 1] = s;
     }
-  machine(t.machine, sizeof t.machine);
+  bench_machine_describe(t.machine, sizeof t.machine);
 
   int failures = 0;
   for (int s = 0; s < t.nsolv; ++s)

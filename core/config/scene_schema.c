@@ -92,6 +92,12 @@ static const sl_key_spec two_fluid_keys[] = {
     {"cfl", SL_KEY_REAL, 0, 1e-3, 1.0, NULL, "two_fluid: fraction of the stable sub-step of the solids transport"},
     {"steady_tolerance", SL_KEY_REAL, 0, 0.0, 1.0, NULL,
      "two_fluid: stop when max |dphi/dt| falls below this, s^-1 (0: run to [time] end)"},
+    {"diffusivity", SL_KEY_REAL, 0, 0.0, 1e3, NULL,
+     "two_fluid: particle diffusivity D, the extra solids flux -D dphi/dx, m^2 s^-1 (default 0)"},
+    {"order", SL_KEY_INT, 0, 1, 2, NULL, "two_fluid: solids transport, 1: upwind, 2: MUSCL (limited, Heun sub-steps)"},
+    {"limiter", SL_KEY_CHOICE, 0, 0, 0, "minmod|mc", "two_fluid: the slope limiter of order 2"},
+    {"case", SL_KEY_INT, 0, 0, 1000000, NULL,
+     "two_fluid: a number the [initial] and inlet expressions read as `case` (several variants in one scene)"},
 };
 static const sl_key_spec plugins_keys[] = {
     {"path", SL_KEY_LIST, 0, 0, 0, NULL, "folders searched first for closure libraries"},

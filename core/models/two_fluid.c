@@ -15,6 +15,7 @@
 #include "core/plugin/kinds.h"
 
 enum { F_PHI = 1, F_US = 2, F_UF = 4, F_P = 8 };
+enum { TF_MAX_LEVELS = 8 };
 static const char *const field_names[] = {"phi", "velocity_solid", "velocity_fluid", "pressure"};
 
 typedef struct tf_run {
@@ -31,6 +32,9 @@ typedef struct tf_run {
   double steady_tol;
   long substeps, iterations, advances;
   char params[2][1024];
+  char inlet_where[400]; /* file:line: [section] key of the inlet's value */
+  double level[TF_MAX_LEVELS]; /* [output] interface */
+  int n_levels;
 } tf_run;
 
 static double cpu_now(void) { return (double)clock() / CLOCKS_PER_SEC; }
@@ -108,26 +112,41 @@ static int boundaries(tf_run *r, sl_diag *d) {
   for (int side = 0; side < 2; ++side) {
     char sec[300];
     snprintf(sec, sizeof sec, "boundary.%s", names[side]);
-    static const char *const keys[] = {"type", "velocity", "pressure"};
-    if (sl_ini_find_section(r->ini, sec) && (rc = sl_ini_check_keys(r->ini, sec, keys, 3, d))) return rc;
+    static const char *const keys[] = {"type", "velocity", "porosity", "pressure"};
+    if (sl_ini_find_section(r->ini, sec) && (rc = sl_ini_check_keys(r->ini, sec, keys, 4, d))) return rc;
     if ((rc = sl_ini_get_choice(r->ini, sec, "type", 0, TF_WALL, "wall|inlet|outlet", &c->bc[side], d))) return rc;
     const sl_ini_entry *ve = sl_ini_find(r->ini, sec, "velocity"), *pe = sl_ini_find(r->ini, sec, "pressure");
-    if (ve && c->bc[side] != TF_INLET)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] velocity: only an inlet takes a velocity", ve->file, ve->line,
-                         sec);
+    const sl_ini_entry *ne = sl_ini_find(r->ini, sec, "porosity");
+    if ((ve || ne) && c->bc[side] != TF_INLET)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] %s: only an inlet takes a %s", ve ? ve->file : ne->file,
+                         ve ? ve->line : ne->line, sec, ve ? "velocity" : "porosity", ve ? "velocity" : "porosity");
     if (pe && c->bc[side] != TF_OUTLET)
       return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] pressure: only an outlet takes a pressure", pe->file, pe->line,
                          sec);
     if (c->bc[side] == TF_INLET) {
       if (c->inlet_side >= 0)
         return sl_diag_set(d, SL_EBADINPUT, "[%s]: a second inlet (1-D: one inlet and one outlet at most)", sec);
-      if (!ve)
-        return sl_diag_set(d, SL_EBADINPUT, "[%s] velocity: an inlet needs the superficial fluid velocity entering, "
-                                            "m/s (an expression of t)", sec);
-      static const char *const vars[] = {"t"};
-      if ((rc = sl_expr_compile(ve->value, vars, 1, &c->inlet, d)))
-        return sl_diag_prefix(d, rc, "%s:%d: [%s] velocity", ve->file, ve->line, sec);
+      if (!ve == !ne) {
+        const sl_ini_section *where = sl_ini_find_section(r->ini, sec);
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: an inlet takes either velocity (the superficial fluid "
+                                            "velocity entering, m/s) or porosity (that of the homogeneous bed the "
+                                            "inflow holds at rest), an expression of t and case%s",
+                           where ? where->file : "(scene)", where ? where->line : 0, sec, ve ? "; not both" : "");
+      }
+      if (ne && side != (c->below ? 0 : 1))
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] porosity: a bed is held by an inflow from below; this "
+                                            "inlet is at the top (give its velocity instead)", ne->file, ne->line,
+                           sec);
+      if (ne && c->rho_s <= c->rho_f)
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] porosity: particles no denser than the fluid (%g <= %g "
+                                            "kg/m3) are not held by an upward flow (give the velocity instead)",
+                           ne->file, ne->line, sec, c->rho_s, c->rho_f);
+      static const char *const vars[] = {"t", "case"};
+      const sl_ini_entry *e = ve ? ve : ne;
+      if ((rc = sl_expr_compile(e->value, vars, 2, ve ? &c->inlet : &c->inlet_porosity, d)))
+        return sl_diag_prefix(d, rc, "%s:%d: [%s] %s", e->file, e->line, sec, e->key);
       c->inlet_side = side;
+      snprintf(r->inlet_where, sizeof r->inlet_where, "%s:%d: [%s] %s", e->file, e->line, sec, e->key);
     }
     if (c->bc[side] == TF_OUTLET) {
       ++n_out;
@@ -227,6 +246,16 @@ static int physics(tf_run *r, const sl_registry *reg, sl_diag *d) {
   if ((rc = sl_ini_get_real(ini, "two_fluid", "tolerance", 0, 1e-9, 1e-15, 1e-2, &c->tolerance, d))) return rc;
   if ((rc = sl_ini_get_real(ini, "two_fluid", "cfl", 0, 0.9, 1e-3, 1.0, &c->cfl, d))) return rc;
   if ((rc = sl_ini_get_real(ini, "two_fluid", "steady_tolerance", 0, 0.0, 0.0, 1.0, &r->steady_tol, d))) return rc;
+  if ((rc = sl_ini_get_real(ini, "two_fluid", "diffusivity", 0, 0.0, 0.0, 1e3, &c->diffusivity, d))) return rc;
+  long order;
+  if ((rc = sl_ini_get_int(ini, "two_fluid", "order", 0, 1, 1, 2, &order, d))) return rc;
+  c->order = (int)order;
+  if ((rc = sl_ini_get_choice(ini, "two_fluid", "limiter", 0, TF_LIMITER_MINMOD, "minmod|mc", &c->limiter, d)))
+    return rc;
+  long case_index;
+  if ((rc = sl_ini_get_int(ini, "two_fluid", "case", 0, 0, 0, 1000000, &case_index, d))) return rc;
+  c->case_index = (double)case_index;
+  c->eq_porosity[0] = c->eq_porosity[1] = NAN;
   if (!sl_ini_find_section(ini, "closure.drag"))
     return sl_diag_set(d, SL_EBADINPUT, "[closure.drag]: the two_fluid model needs a drag closure (e.g. model = "
                                         "wen_yu); `sluice closures` lists them");
@@ -257,12 +286,12 @@ static int initial_state(tf_run *r, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "[initial] phi (or porosity): the two_fluid model needs the initial solids "
                                         "fraction");
   const sl_ini_entry *use = e ? e : en;
-  static const char *const vars[] = {"x", "y"};
+  static const char *const vars[] = {"x", "y", "case"};
   sl_expr *ex;
-  int rc = sl_expr_compile(use->value, vars, 2, &ex, d);
+  int rc = sl_expr_compile(use->value, vars, 3, &ex, d);
   if (rc) return sl_diag_prefix(d, rc, "%s:%d: [initial] %s", use->file, use->line, use->key);
   for (int i = 0; i < c->n && !rc; ++i) {
-    double xy[2] = {c->xc[i], 0.0}, v = sl_expr_eval(ex, xy), phi = e ? v : 1.0 - v;
+    double xy[3] = {c->xc[i], 0.0, c->case_index}, v = sl_expr_eval(ex, xy), phi = e ? v : 1.0 - v;
     if (!(phi >= 0.0 && phi <= c->phi_max))
       rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s = %g at x = %g: allowed %s = %g", use->file, use->line,
                        use->key, v, c->xc[i], e ? "0 <= phi <= phi_max" : "1 - phi_max <= porosity <= 1, phi_max",
@@ -275,7 +304,7 @@ static int initial_state(tf_run *r, sl_diag *d) {
 
 static int allocate(tf_column *c, sl_diag *d) {
   size_t n = (size_t)c->n, f = n + 1;
-  double **cells[] = {&c->phi, &c->p, &c->phi_new, &c->p_new, &c->ps_v, &c->ps_d, &c->alpha};
+  double **cells[] = {&c->phi, &c->p, &c->phi_new, &c->p_new, &c->ps_v, &c->ps_d, &c->alpha, &c->slope, &c->stage};
   double **faces[] = {&c->u,  &c->uf,   &c->u_new, &c->uf_new, &c->w,  &c->K,   &c->dK,   &c->phif,
                       &c->slip, &c->lo, &c->di,    &c->up,     &c->rhs, &c->flux, &c->dpdx};
   for (size_t i = 0; i < sizeof cells / sizeof cells[0]; ++i)
@@ -287,7 +316,7 @@ static int allocate(tf_column *c, sl_diag *d) {
 
 static void release(tf_run *r) {
   tf_column *c = &r->c;
-  double *all[] = {c->h,     c->xc,  c->xf,    c->dual,   c->phi,   c->p,    c->phi_new, c->p_new, c->ps_v,
+  double *all[] = {c->slope, c->stage, c->h, c->xc, c->xf, c->dual, c->phi, c->p, c->phi_new, c->p_new, c->ps_v,
                    c->ps_d,  c->alpha, c->u,   c->uf,     c->u_new, c->uf_new, c->w,     c->K,       c->dK,
                    c->phif,  c->slip, c->lo,   c->di,     c->up,    c->rhs,  c->flux,  c->dpdx,    c->drag.buf,
                    c->ps.buf, r->node};
@@ -295,6 +324,7 @@ static void release(tf_run *r) {
   sl_closure_destroy(c->drag.c);
   sl_closure_destroy(c->ps.c);
   sl_expr_free(c->inlet);
+  sl_expr_free(c->inlet_porosity);
   free(r->face_vertex), free(r->cell_of);
   sl_mesh_destroy(r->mesh);
 }
@@ -309,6 +339,18 @@ static double inventory(const tf_column *c) {
 
 static int open_output(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
   unsigned mask;
+  const sl_ini_entry *le = sl_ini_find(r->ini, "output", "interface");
+  if (le) {
+    int rc = sl_ini_get_real_list(r->ini, "output", "interface", 0, r->level, TF_MAX_LEVELS, &r->n_levels, d);
+    if (rc) return rc;
+    for (int k = 0; k < r->n_levels; ++k)
+      if (!(r->level[k] > 0.0 && r->level[k] <= r->c.phi_max))
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] interface = %g: a level of phi, allowed 0 < level <= "
+                                            "phi_max = %g", le->file, le->line, r->level[k], r->c.phi_max);
+    if (r->n_levels > 0 && r->c.g == 0.0)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] interface: heights are measured against gravity, and the "
+                                          "scene has none", le->file, le->line);
+  }
   int rc = sl_scene_output_path(r->ini, o->output, o->scene_path, r->res->output_path, sizeof r->res->output_path, d);
   if (!rc) rc = sl_scene_output_fields(r->ini, field_names, 4, F_PHI | F_US | F_UF | F_P, &mask, d);
   if (rc) return rc;
@@ -343,6 +385,22 @@ static int open_output(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
   return rc;
 }
 
+/* The height (along -g) where phi first reaches `level` coming down from the
+ * top, linear between cell centres (the same measure as the mixture model's
+ * interface_height): the top of a bed or of a settling suspension. NAN when
+ * phi stays below the level everywhere. */
+static double interface_height(const tf_column *c, double level) {
+  const double up = c->below ? 1.0 : -1.0;
+  double h_above = NAN, p_above = NAN;
+  for (int k = 0; k < c->n; ++k) {
+    int i = c->below ? c->n - 1 - k : k;
+    double p = c->phi[i], h = up * c->xc[i];
+    if (p >= level) return isnan(p_above) ? h : h + (h_above - h) * (p - level) / (p - p_above);
+    h_above = h, p_above = p;
+  }
+  return NAN;
+}
+
 /* Cell arrays in the mesh's cell order, face arrays at the mesh's vertices. */
 static int write_state(tf_run *r, double t, sl_diag *d) {
   double t0 = cpu_now();
@@ -367,7 +425,16 @@ static int write_state(tf_run *r, double t, sl_diag *d) {
   if (!rc)
     rc = sl_output_write_scalar(r->out, "solids_conservation_error",
                                 r->inventory0 > 0.0 ? (inv + r->outflow - r->inventory0) / r->inventory0 : 0.0, d);
-  if (!rc) rc = sl_output_write_scalar(r->out, "mixture_flux", tf_mixture_flux(c, t), d);
+  double j = 0.0;
+  if (!rc) rc = tf_mixture_flux(c, t, &j, d);
+  if (!rc) rc = sl_output_write_scalar(r->out, "mixture_flux", j, d);
+  for (int k = 0; k < r->n_levels && !rc; ++k) {
+    char name[64];
+    snprintf(name, sizeof name, "interface_height_%d", k);
+    rc = sl_output_write_scalar(r->out, name, interface_height(c, r->level[k]), d);
+    snprintf(name, sizeof name, "interface_level_%d", k);
+    if (!rc) rc = sl_output_write_scalar(r->out, name, r->level[k], d);
+  }
   if (!rc) rc = sl_output_end_step(r->out, d);
   r->res->output += cpu_now() - t0;
   return rc;
@@ -446,6 +513,10 @@ static int time_loop(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
     int src = tf_step(c, t, hh, &ds);
     r->res->solve += cpu_now() - c0;
     r->iterations += c->iterations_trial, r->res->nonlinear_iterations += c->iterations_trial;
+    if (src && c->fatal) {
+      rc = sl_diag_set(d, SL_EFAILED, "at t = %.6g: %s", t, ds.msg);
+      break;
+    }
     if (src) {
       r->res->rejected_steps++, ++n_cut;
       h = 0.25 * hh;
@@ -508,8 +579,8 @@ int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *
   if (!rc) rc = initial_state(&r, d);
   if (!rc) { /* the initial fluid velocity and a consistent u_s = 0 */
     tf_column *c = &r.c;
-    double j = tf_mixture_flux(c, 0.0);
-    if (!isfinite(j)) rc = sl_diag_set(d, SL_EBADINPUT, "the inlet velocity is not finite at t = 0");
+    double j = 0.0;
+    if (tf_mixture_flux(c, 0.0, &j, d)) rc = sl_diag_prefix(d, SL_EBADINPUT, "%s", r.inlet_where);
     for (int k = 0; k <= c->n && !rc; ++k) {
       int cell = k == 0 ? 0 : k == c->n ? c->n - 1 : (c->below ? k - 1 : k);
       c->uf[k] = j / (1.0 - c->phi[cell]);

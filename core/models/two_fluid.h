@@ -27,7 +27,13 @@
  * (Newton-linearised in the slip), p_s implicit through its derivative
  * (Pringle 2001 eq 4.31's Taylor expansion about the latest iterate), the
  * step iterated to convergence; phi moved conservatively with the new u_s
- * by bounded upwind sub-steps: 0 <= phi <= phi_max whatever dt.
+ * by bounded upwind (or limited second-order) sub-steps: 0 <= phi <= phi_max
+ * whatever dt. An optional particle diffusivity D adds -D dphi/dx to the
+ * solids flux: the diffusion term of Pringle's generic conservation law
+ * (thesis eq 2.11), which his model drops (he puts D at "order 1e-4 m^2/s",
+ * digest 1.2). Without it the homogeneous bed of this model is unstable
+ * (Jackson 1963, Trans. Instn Chem. Engrs 41:13) wherever no solids pressure
+ * holds it, and fine meshes resolve the growing waves.
  *
  * Scene sections:
  *   [scene]   model = two_fluid, geometry = line
@@ -37,12 +43,18 @@
  *   [flow]    gravity = g_x (default -9.81)
  *   [closure.drag]             required
  *   [closure.solids_pressure]  optional
- *   [initial] phi (or porosity) = expression of x
+ *   [initial] phi (or porosity) = expression of x, y and case
  *   [boundary.NAME] type = wall | inlet | outlet; inlet: velocity = the
- *             superficial fluid velocity entering (expression of t), solids
+ *             superficial fluid velocity entering, or porosity = that of a
+ *             homogeneous bed the inflow holds at rest (the drag's
+ *             equilibrium; a bottom inlet), expressions of t and case; solids
  *             held; outlet: pressure (default 0), solids leave if carried
- *   [two_fluid] iterations, tolerance, cfl, steady_tolerance
- *   [time]    end, dt, dt_min, max_steps      [output] file, every, fields
+ *   [two_fluid] iterations, tolerance, cfl, steady_tolerance, diffusivity,
+ *             order (1 upwind, 2 MUSCL), limiter, case (a number the
+ *             expressions read)
+ *   [time]    end, dt, dt_min, max_steps
+ *   [output]  file, every, fields, interface (levels of phi whose heights
+ *             are written as interface_height_K)
  */
 #ifndef SLUICE_MODELS_TWO_FLUID_H
 #define SLUICE_MODELS_TWO_FLUID_H

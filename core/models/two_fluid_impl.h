@@ -9,6 +9,7 @@
 
 enum { TF_MAX_IN = 32 };
 enum { TF_WALL = 0, TF_INLET = 1, TF_OUTLET = 2 };
+enum { TF_LIMITER_MINMOD = 0, TF_LIMITER_MC = 1 };
 
 /* A closure with one varying input or two (phi, and slip for drag), the
  * others fixed by the scene; one output and its derivatives. */
@@ -31,24 +32,39 @@ typedef struct tf_column {
   tf_closure drag, ps; /* ps.c NULL: no solids pressure */
   /* boundaries: [0] at x0, [1] at x1 */
   int bc[2];
-  sl_expr *inlet; /* superficial fluid velocity entering, of t */
+  sl_expr *inlet;          /* superficial fluid velocity entering, of (t, case) */
+  sl_expr *inlet_porosity; /* or the porosity of a bed the inflow holds in equilibrium, of (t, case) */
   int inlet_side;
+  double case_index;       /* [two_fluid] case, a variable of the scene's expressions */
+  double eq_porosity[2], eq_velocity[2]; /* the last two equilibria found (a step alternates between two) */
+  int eq_next;
   double p_out;
   /* numerics */
   int max_iterations;
   double tolerance, cfl;
+  double diffusivity; /* particle diffusivity D: the extra solids flux -D dphi/dx, m^2/s */
+  int order, limiter; /* transport: 1 upwind, 2 MUSCL with TF_LIMITER_* */
   /* state: cells phi, p; faces u (solids), uf (fluid) */
   double *phi, *u, *uf, *p;
   /* the step's trial and work arrays */
   double *phi_new, *u_new, *uf_new, *p_new;
-  double *w, *K, *dK, *ps_v, *ps_d, *phif, *slip, *lo, *di, *up, *rhs, *flux, *alpha, *dpdx;
+  double *w, *K, *dK, *ps_v, *ps_d, *phif, *slip, *lo, *di, *up, *rhs, *flux, *alpha, *dpdx, *slope, *stage;
   double outflow_trial; /* solids volume per unit area that left during the trial */
+  int fatal;            /* the trial failed for a reason a smaller step cannot cure (the inlet's value) */
   long substeps_trial;
   int iterations_trial;
 } tf_column;
 
-/* The mixture flux j (along +x) at time t. */
-double tf_mixture_flux(const tf_column *c, double t);
+/* The mixture flux j (along +x) at time t: the inlet's velocity, or the
+ * equilibrium velocity of its porosity (tf_equilibrium_velocity). 0, or
+ * SL_EFAILED (a porosity outside (1 - phi_max, 1], a non-finite value, the
+ * drag closure failing) with d set. */
+int tf_mixture_flux(tf_column *c, double t, double *j, sl_diag *d);
+
+/* The superficial velocity U that holds a homogeneous bed of the given
+ * porosity at rest: the drag carries the buoyant weight,
+ * K(phi, s) s = phi (1 - phi) (rho_s - rho_f) |g|, U = (1 - phi) s. */
+int tf_equilibrium_velocity(tf_column *c, double porosity, double *U, sl_diag *d);
 
 /* One backward-Euler step from (phi, u) at t over dt into the *_new arrays.
  * 0, or SL_EFAILED with the reason (no convergence, a closure outside its
