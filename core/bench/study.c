@@ -23,18 +23,6 @@ static int at_entry(sl_diag *d, const sl_ini_entry *e, const char *section, cons
   return sl_diag_set(d, SL_EBADINPUT, "%s:%d:%d: [%s] %s: %s", e->file, e->line, e->col, section, e->key, why);
 }
 
-/* A path relative to the folder of `base` (a file), unless absolute. */
-static char *relative_to(const char *base, const char *path) {
-  const char *slash = strrchr(base, '/');
-  if (path[0] == '/' || !slash) return dup_str(path, strlen(path));
-  size_t nb = (size_t)(slash - base) + 1, np = strlen(path);
-  char *p = malloc(nb + np + 1);
-  if (!p) return NULL;
-  memcpy(p, base, nb);
-  memcpy(p + nb, path, np + 1);
-  return p;
-}
-
 /* Splits a sweep's value into the runs' values: on '|' when it holds one
  * (the runs' values may then hold commas), else on ','. Blanks around each
  * value are dropped; an empty value is an error. */
@@ -368,7 +356,7 @@ static int read_measure(sl_study *s, sl_diag *d) {
     if (m->scalar && (rc = refuse(ini, "time", "the reference file's first column gives the times", d))) return rc;
     if (!m->scalar && !m->has_line)
       return refuse(ini, "reference", "the reference's positions are along a line: give line = x0,y0:x1,y1 (or x0:x1)", d);
-    if (!(m->reference = relative_to(s->path, ref))) return oom(d);
+    if (!(m->reference = sl_ini_path_relative(s->path, ref))) return oom(d);
     if ((rc = read_reference(m, sl_ini_find(ini, "measure", "reference"), d))) return rc;
   }
   if (m->has_norm && one_number)
@@ -412,7 +400,7 @@ int sl_study_load(const char *path, sl_study **out, sl_diag *d) {
   const char *scene;
   if ((rc = sl_ini_get_string(s->ini, "study", "scene", 1, NULL, &scene, d))) goto fail;
   s->scene_entry = sl_ini_find(s->ini, "study", "scene");
-  if (!(s->scene = relative_to(s->scene_entry->file, scene))) {
+  if (!(s->scene = sl_ini_path_relative(s->scene_entry->file, scene))) {
     rc = oom(d);
     goto fail;
   }

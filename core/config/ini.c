@@ -478,8 +478,7 @@ static int parse_value(parse_ctx *c, const char *file, int lineno, const char *l
   return *out ? 0 : oom(c->d);
 }
 
-/* The directory part of `file` followed by `rel`, unless rel is absolute. */
-static char *include_path(const char *file, const char *rel) {
+char *sl_ini_path_relative(const char *file, const char *rel) {
   const char *slash = strrchr(file, '/');
   if (rel[0] == '/' || !slash) return dup_range(rel, strlen(rel));
   size_t dlen = (size_t)(slash - file) + 1, rlen = strlen(rel);
@@ -505,7 +504,7 @@ static void chain_text(const parse_ctx *c, const char *last, char *buf, size_t s
 static int do_include(parse_ctx *c, const char *file, int lineno, int vcol, const char *value) {
   char chain[1200];
   if (value[0] == '\0') return err_at(c->d, file, lineno, vcol, "include needs a file name");
-  char *path = include_path(file, value);
+  char *path = sl_ini_path_relative(file, value);
   if (!path) return oom(c->d);
   int rc;
   if (c->depth >= INI_MAX_DEPTH) {

@@ -84,6 +84,11 @@ int sl_ini_check_sections(const sl_ini *ini, const char *const *known, int n_kno
 /* Unknown keys in one section, with a did-you-mean among `known`. */
 int sl_ini_check_keys(const sl_ini *ini, const char *section, const char *const *known, int n_known, sl_diag *d);
 
+/* A path named in the INI file `file`: relative to that file's folder
+ * unless absolute (includes, mesh files, a study's scene). Malloc'd; NULL
+ * when out of memory. */
+char *sl_ini_path_relative(const char *file, const char *rel);
+
 /* The resolved configuration (includes flattened, overrides applied) as INI
  * text, in section order. */
 int sl_ini_write(const sl_ini *ini, FILE *f);

@@ -103,13 +103,11 @@ int sl_scene_mesh(const sl_ini *ini, sl_mesh **out, sl_diag *d) {
       const char *file;
       if ((rc = sl_ini_get_string(ini, "mesh", "file", 1, "", &file, d))) return rc;
       const sl_ini_entry *e = sl_ini_find(ini, "mesh", "file");
-      char path[4096];
-      const char *slash = strrchr(e->file, '/');
-      if (file[0] != '/' && slash)
-        snprintf(path, sizeof path, "%.*s/%s", (int)(slash - e->file), e->file, file);
-      else
-        snprintf(path, sizeof path, "%s", file);
-      return sl_mesh_read_gmsh(path, out, d);
+      char *path = sl_ini_path_relative(e->file, file);
+      if (!path) return sl_diag_set(d, SL_EFAILED, "mesh: out of memory");
+      rc = sl_mesh_read_gmsh(path, out, d);
+      free(path);
+      return rc;
     }
   }
 }
