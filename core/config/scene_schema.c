@@ -18,6 +18,7 @@ static const sl_key_spec solid_keys[] = {
     {"phi_max", SL_KEY_REAL, 0, 0.01, 1.0, NULL, "maximum packing fraction"},
     {"sphericity", SL_KEY_REAL, 0, 0.01, 1.0, NULL, "particle sphericity"},
     {"porosity_max", SL_KEY_REAL, 0, 0.0, 0.99, NULL, "alternative to phi_max: 1 - phi_max"},
+    {"viscosity", SL_KEY_REAL, 0, 0.0, 1e7, NULL, "two_fluid shear layer: a constant solids viscosity, Pa s"},
 };
 static const sl_key_spec time_keys[] = {
     {"end", SL_KEY_REAL, 0, 0.0, 1e12, NULL, "end time, s"},
@@ -98,6 +99,14 @@ static const sl_key_spec two_fluid_keys[] = {
     {"limiter", SL_KEY_CHOICE, 0, 0, 0, "minmod|mc", "two_fluid: the slope limiter of order 2"},
     {"case", SL_KEY_INT, 0, 0, 1000000, NULL,
      "two_fluid: a number the [initial] and inlet expressions read as `case` (several variants in one scene)"},
+    {"motion", SL_KEY_CHOICE, 0, 0, 0, "column|shear",
+     "two_fluid: column (the phases move along the line) or shear (across it, between two walls; phi held)"},
+    {"cross_section", SL_KEY_CHOICE, 0, 0, 0, "planar|annular",
+     "two_fluid shear layer: a planar gap, or coaxial cylinders with x the radius"},
+    {"granular_temperature", SL_KEY_CHOICE, 0, 0, 0, "transport|algebraic",
+     "two_fluid shear layer with [closure.granular]: theta's transport equation or its local balance"},
+    {"interphase_dissipation", SL_KEY_BOOL, 0, 0, 0, NULL,
+     "two_fluid shear layer: the sink -3 K theta of granular energy by the drag (default true)"},
 };
 static const sl_key_spec plugins_keys[] = {
     {"path", SL_KEY_LIST, 0, 0, 0, NULL, "folders searched first for closure libraries"},

@@ -111,3 +111,37 @@ int sl_scene_mesh(const sl_ini *ini, sl_mesh **out, sl_diag *d) {
     }
   }
 }
+
+int sl_scene_line_chain(const sl_mesh *m, int *vertex, int *cell, sl_diag *d) {
+  if (m->dim != 1) return sl_diag_set(d, SL_EBADINPUT, "the mesh is %d-D; a 1-D mesh (geometry = line) is needed", m->dim);
+  int n = m->n_cells;
+  /* 1-D cells run towards increasing x: start at the vertex that begins a cell and ends none */
+  int *next = malloc((size_t)m->n_vertices * sizeof *next), *cell_at = malloc((size_t)m->n_vertices * sizeof *cell_at);
+  int *ends = calloc((size_t)m->n_vertices, sizeof *ends);
+  if (!next || !cell_at || !ends) {
+    free(next), free(cell_at), free(ends);
+    return sl_diag_set(d, SL_EFAILED, "mesh: out of memory");
+  }
+  for (int v = 0; v < m->n_vertices; ++v) next[v] = -1;
+  for (int e = 0; e < n; ++e) {
+    int a = m->cell_vertices[2 * e], b = m->cell_vertices[2 * e + 1];
+    next[a] = b, cell_at[a] = e, ends[b] = 1;
+  }
+  int v = -1, ok = 1;
+  for (int k = 0; k < m->n_vertices; ++k)
+    if (next[k] >= 0 && !ends[k]) v = k;
+  for (int i = 0; i < n && ok; ++i) {
+    if (v < 0 || next[v] < 0) ok = 0;
+    else vertex[i] = v, cell[i] = cell_at[v], v = next[v];
+  }
+  if (ok) vertex[n] = v;
+  free(next), free(cell_at), free(ends);
+  if (!ok || v < 0) return sl_diag_set(d, SL_EBADINPUT, "the 1-D mesh is not a single chain of cells");
+  return 0;
+}
+
+const char *sl_scene_line_end_name(const sl_mesh *m, int vertex) {
+  for (int f = 0; f < m->n_faces; ++f)
+    if (m->face_vertices[2 * f] == vertex && m->face_tag[f] >= 0) return m->boundary_names[m->face_tag[f]];
+  return NULL;
+}

@@ -16,4 +16,13 @@
 
 int sl_scene_mesh(const sl_ini *ini, sl_mesh **out, sl_diag *d);
 
+/* A 1-D mesh as one chain of cells in order of increasing x: vertex[k]
+ * (k = 0..n) is the k-th vertex along the chain and cell[i] (i = 0..n-1)
+ * the mesh cell between vertex[i] and vertex[i+1]. SL_EBADINPUT when the
+ * mesh is not 1-D or not a single chain. */
+int sl_scene_line_chain(const sl_mesh *m, int *vertex, int *cell, sl_diag *d);
+
+/* The name of the tagged boundary at a 1-D mesh's vertex, or NULL. */
+const char *sl_scene_line_end_name(const sl_mesh *m, int vertex);
+
 #endif

@@ -10,6 +10,7 @@
 
 #include "core/models/scene_mesh.h"
 #include "core/models/scene_output.h"
+#include "core/models/shear_layer.h"
 #include "core/models/two_fluid_impl.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
@@ -52,28 +53,8 @@ static int column_from_mesh(tf_run *r, sl_diag *d) {
   r->cell_of = malloc((size_t)n * sizeof *r->cell_of);
   r->face_vertex = malloc((size_t)(n + 1) * sizeof *r->face_vertex);
   if (!r->cell_of || !r->face_vertex) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-  /* cells in order of increasing x: start at the vertex that begins a cell and ends none */
-  int *next = malloc((size_t)m->n_vertices * sizeof *next), *cell_at = malloc((size_t)m->n_vertices * sizeof *cell_at);
-  int *ends = calloc((size_t)m->n_vertices, sizeof *ends);
-  if (!next || !cell_at || !ends) {
-    free(next), free(cell_at), free(ends);
-    return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-  }
-  for (int v = 0; v < m->n_vertices; ++v) next[v] = -1;
-  for (int e = 0; e < n; ++e) {
-    int a = m->cell_vertices[2 * e], b = m->cell_vertices[2 * e + 1]; /* 1-D cells run towards increasing x */
-    next[a] = b, cell_at[a] = e, ends[b] = 1;
-  }
-  int v = -1, ok = 1;
-  for (int k = 0; k < m->n_vertices; ++k)
-    if (next[k] >= 0 && !ends[k]) v = k;
-  for (int i = 0; i < n && ok; ++i) {
-    if (v < 0 || next[v] < 0) ok = 0;
-    else r->face_vertex[i] = v, r->cell_of[i] = cell_at[v], v = next[v];
-  }
-  if (ok) r->face_vertex[n] = v;
-  free(next), free(cell_at), free(ends);
-  if (!ok || v < 0) return sl_diag_set(d, SL_EBADINPUT, "two_fluid: the 1-D mesh is not a single chain of cells");
+  int rc = sl_scene_line_chain(m, r->face_vertex, r->cell_of, d);
+  if (rc) return sl_diag_prefix(d, rc, "two_fluid");
   c->h = malloc((size_t)n * sizeof *c->h), c->xc = malloc((size_t)n * sizeof *c->xc);
   c->xf = malloc((size_t)(n + 1) * sizeof *c->xf), c->dual = malloc((size_t)(n + 1) * sizeof *c->dual);
   if (!c->h || !c->xc || !c->xf || !c->dual) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
@@ -84,16 +65,10 @@ static int column_from_mesh(tf_run *r, sl_diag *d) {
   return 0;
 }
 
-/* The boundary names of the two ends, from the mesh's tagged faces. */
-static const char *end_name(const sl_mesh *m, int vertex) {
-  for (int f = 0; f < m->n_faces; ++f)
-    if (m->face_vertices[2 * f] == vertex && m->face_tag[f] >= 0) return m->boundary_names[m->face_tag[f]];
-  return NULL;
-}
-
 static int boundaries(tf_run *r, sl_diag *d) {
   tf_column *c = &r->c;
-  const char *names[2] = {end_name(r->mesh, r->face_vertex[0]), end_name(r->mesh, r->face_vertex[c->n])};
+  const char *names[2] = {sl_scene_line_end_name(r->mesh, r->face_vertex[0]),
+                         sl_scene_line_end_name(r->mesh, r->face_vertex[c->n])};
   if (!names[0] || !names[1]) return sl_diag_set(d, SL_EBADINPUT, "two_fluid: the column's ends carry no boundary tag");
   /* every [boundary.X] must name an end */
   for (int s = 0; s < r->ini->n_sections; ++s) {
@@ -561,10 +536,31 @@ static int time_loop(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
 }
 
 int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d) {
+  int motion = 0;
+  int rc = sl_ini_get_choice(ini, "two_fluid", "motion", 0, 0, "column|shear", &motion, d);
+  if (rc) return rc;
+  if (motion == 1) {
+    int geometry = 0;
+    if ((rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, d))) return rc;
+    if (geometry != 0) {
+      const sl_ini_entry *e = sl_ini_find(ini, "scene", "geometry");
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [scene] geometry = %s: the shear layer (motion = shear) is 1-D "
+                                          "(geometry = line; cross_section = annular for coaxial cylinders)",
+                         e->file, e->line, e->value);
+    }
+    return sl_shear_layer_run(ini, reg, o, res, d);
+  }
+  static const char *const shear_only[] = {"cross_section", "granular_temperature", "interphase_dissipation"};
+  for (size_t k = 0; k < sizeof shear_only / sizeof shear_only[0]; ++k) {
+    const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", shear_only[k]);
+    if (e)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: a key of the shear layer (motion = shear)", e->file,
+                         e->line, e->key);
+  }
   memset(res, 0, sizeof *res);
   tf_run r = {.ini = ini, .res = res};
   int geometry = 0;
-  int rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, d);
+  rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, d);
   if (!rc && geometry != 0) {
     const sl_ini_entry *e = sl_ini_find(ini, "scene", "geometry");
     rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [scene] geometry = %s: the two_fluid model runs 1-D columns "

@@ -28,7 +28,8 @@
  * (the settling front still falls at the hindered-settling speed), a bed
  * packing up to phi_max with no solids pressure at large steps, and beds
  * blown out of the column: bounded, conservative, no NaN; a NaN inflow stops
- * the run at once. Bad input exits 2 with the location. */
+ * the run at once. A run continued from its checkpoint ends bit for bit
+ * where the uninterrupted one does. Bad input exits 2 with the location. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -803,6 +804,28 @@ static void blow_out(void) {
   bounded_and_conserved(out, "NaN inflow", &left);
 }
 
+/* A column run continued from its checkpoint ends bit for bit where the
+ * uninterrupted run does (phi, both velocities, the pressure). */
+static void restart(void) {
+  const char *full[] = {"time.end=2", "time.dt=0.05", "output.every=1", NULL};
+  const char *half[] = {"time.end=1", "time.dt=0.05", "output.every=1", NULL};
+  if (run_ok("fluidization_step", NULL, NULL, full, "tf_full.h5") ||
+      run_ok("fluidization_step", NULL, NULL, half, "tf_half.h5"))
+    return;
+  sl_diag d = {{0}};
+  scene_request q = {.configs = configs, .scene = "fluidization_step", .sets = full, .out = "tf_cont.h5",
+                     .restart = "tf_half.h5"};
+  int rc = scene_run(&q, sl_two_fluid_run, NULL, &d);
+  CHECK_MSG(rc == 0, "restart: %s", d.msg);
+  const char *fields[4] = {"phi", "velocity_solid", "velocity_fluid", "pressure"};
+  for (int f = 0; f < 4 && rc == 0; ++f) {
+    int n = 0, m = 0;
+    double *a = field_at("tf_full.h5", fields[f], 2.0, &n, NULL), *b = field_at("tf_cont.h5", fields[f], 2.0, &m, NULL);
+    CHECK_MSG(a && b && n == m && memcmp(a, b, (size_t)n * sizeof *a) == 0, "restart: %s differs", fields[f]);
+    free(a), free(b);
+  }
+}
+
 static void bad_input(void) {
   sl_diag d = {{0}};
   const char *sets[] = {"scene.geometry=planar", NULL};
@@ -852,6 +875,7 @@ int main(void) {
   stiff_fine_particles();
   packing();
   blow_out();
+  restart();
   bad_input();
   return sl_test_summary();
 }

@@ -1,0 +1,968 @@
+/* The two-fluid shear layer (see shear_layer.h): the scene, one implicit
+ * step, the time loop and the output. */
+#include "core/models/shear_layer.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "core/config/expr.h"
+#include "core/models/scene_mesh.h"
+#include "core/models/scene_output.h"
+#include "core/plugin/closure_ini.h"
+#include "core/plugin/kinds.h"
+#include "core/plugin/point_eval.h"
+
+enum { SOLIDS_NO_SLIP = 0, SOLIDS_FREE_SLIP = 1, SOLIDS_WALL_STRESS = 2 };
+enum { F_PHI = 1, F_UF = 2, F_US = 4, F_THETA = 8 };
+static const char *const field_names[] = {"phi", "velocity_fluid", "velocity_solid", "theta"};
+
+/* The quantities the layer offers its closures, by input name. */
+enum { Q_PHI, Q_SLIP, Q_THETA, Q_RHO_F, Q_MU_F, Q_RHO_S, Q_D_P, Q_SPHERICITY, Q_GRAVITY, Q_SLIP_WALL, Q_WALL_DISTANCE,
+       Q_N };
+static const char *const quantity_names[Q_N] = {"phi",     "slip",       "theta",    "rho_f",
+                                                "mu_f",    "rho_s",      "d_p",      "sphericity",
+                                                "gravity", "slip_wall", "wall_distance"};
+
+#define SH_PI 3.14159265358979323846
+#define THETA_FLOOR 1e-12 /* m^2/s^2: the kinetic closures' lowest valid theta */
+
+typedef struct sh_wall {
+  const char *name;
+  int node, inner;     /* the wall's vertex and the next one inwards */
+  int solids;          /* SOLIDS_* */
+  int wall_function;   /* the wall closure reads wall_distance: slip at `inner` */
+  sl_expr *speed;      /* of t */
+  double u;            /* the wall's speed now */
+  double area;         /* r_w^2 (annular, per radian) or 1: torque or force per unit stress */
+  double theta_area;   /* r_w or 1: energy per unit flux */
+  /* reported at the last accepted state */
+  double tau_f, tau_s, slip, bagnold;
+} sh_wall;
+
+typedef struct sh_layer {
+  sl_ini *ini;
+  sl_ns_result *res;
+  sl_mesh *mesh;
+  int *vertex, *cell_of; /* [n+1], [n] */
+  int n, annular;
+  /* geometry: x [n+1]; per cell: h, W (volume), gm (momentum conductance), gt (conduction); per node: V, a, s */
+  double *x, *h, *W, *gm, *gt, *V, *a, *s;
+  double rho_f, mu_f, rho_s, d_p, sphericity, phi_max, gravity, mu_s_const;
+  double *phi, *phin;              /* cells, nodes (held) */
+  double *uf, *us, *th;            /* state at the nodes */
+  double *uf1, *us1, *th1;         /* the step's iterate */
+  double *K, *dK, *slip, *muc, *kapc, *thc, *prod, *gam, *dgam, *work; /* work arrays */
+  double *blk;                     /* 2x2 blocks: lower, diagonal, upper (12 per node) and rhs (2 per node) */
+  double *qv[Q_N];                 /* per-point values of constant quantities */
+  sl_closure *drag_c, *gran_c, *wall_c;
+  sl_point_closure drag, gran, wall;
+  sh_wall wall_at[2];
+  int granular, algebraic, exchange;
+  int max_iterations;
+  double tolerance, steady_tol, v_ref;
+  long iterations, advances;
+  sl_output *out;
+  int fields;
+  double *node_out, *cell_out;
+  char params[3][1024];
+} sh_layer;
+
+static double cpu_now(void) { return (double)clock() / CLOCKS_PER_SEC; }
+
+/* ---- closures at points ----------------------------------------------------------- */
+
+/* Input arrays for Q points: the constants, then the given varying ones. */
+static void point_values(sh_layer *L, const double *v[Q_N], const double *phi, const double *slip,
+                         const double *theta) {
+  for (int k = 0; k < Q_N; ++k) v[k] = L->qv[k];
+  if (phi) v[Q_PHI] = phi;
+  if (slip) v[Q_SLIP] = slip;
+  if (theta) v[Q_THETA] = theta;
+}
+
+/* K and dK/dslip at the nodes for the iterate's slip. */
+static int eval_drag(sh_layer *L, sl_diag *d) {
+  int N = L->n + 1;
+  for (int k = 0; k < N; ++k) L->slip[k] = fabs(L->uf1[k] - L->us1[k]);
+  const double *v[Q_N];
+  point_values(L, v, L->phin, L->slip, NULL);
+  sl_point_request rq = {"K", L->K, L->dK, "slip"};
+  return sl_point_eval(&L->drag, N, v, &rq, 1, d);
+}
+
+/* The solids viscosity in the cells (theta the mean of the cell's nodes). */
+static int eval_solids_viscosity(sh_layer *L, sl_diag *d) {
+  if (!L->granular) {
+    for (int i = 0; i < L->n; ++i) L->muc[i] = L->mu_s_const;
+    return 0;
+  }
+  for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th1[i] + L->th1[i + 1]), THETA_FLOOR);
+  const double *v[Q_N];
+  point_values(L, v, L->phi, NULL, L->thc);
+  sl_point_request rq[2] = {{"mu_s", L->muc, NULL, NULL}, {"kappa", L->kapc, NULL, NULL}};
+  int rc = sl_point_eval(&L->gran, L->n, v, rq, L->algebraic ? 1 : 2, d);
+  for (int i = 0; i < L->n && !rc; ++i) L->muc[i] += L->mu_s_const;
+  return rc;
+}
+
+/* The wall closure at wall w for the iterate: tau (magnitude), dtau/dslip,
+ * and the energy flux q into the layer with dq/dtheta (0 without). */
+static int eval_wall(sh_layer *L, sh_wall *w, double *tau, double *dtau, double *q, double *dq, double *bn,
+                     sl_diag *d) {
+  int ref = w->wall_function ? w->inner : w->node;
+  double sl = fabs(L->us1[ref] - w->u), dist = fabs(L->x[w->inner] - L->x[w->node]);
+  double phi = L->phin[ref], th = fmax(L->th1[w->node], THETA_FLOOR);
+  double one[Q_N];
+  const double *v[Q_N];
+  for (int k = 0; k < Q_N; ++k) one[k] = L->qv[k][0], v[k] = &one[k];
+  one[Q_PHI] = phi, one[Q_THETA] = th, one[Q_SLIP_WALL] = sl, one[Q_WALL_DISTANCE] = dist, one[Q_SLIP] = sl;
+  sl_point_request rq[3] = {{"tau_w", tau, dtau, "slip_wall"}, {"theta_flux", q, dq, "theta"},
+                            {"bagnold_number", bn, NULL, NULL}};
+  int n_rq = 1;
+  *q = *dq = 0.0, *bn = NAN;
+  if (sl_point_has_output(&L->wall, "theta_flux")) n_rq = 2;
+  int rc = sl_point_eval(&L->wall, 1, v, rq, n_rq, d);
+  if (!rc && sl_point_has_output(&L->wall, "bagnold_number")) rc = sl_point_eval(&L->wall, 1, v, rq + 2, 1, d);
+  if (rc) return sl_diag_prefix(d, rc, "wall '%s'", w->name);
+  return 0;
+}
+
+/* ---- the velocity system: 2x2 block-tridiagonal ------------------------------------ */
+
+/* Block k: lower[4] (the couplings to node k-1), diag[4], upper[4], rhs[2];
+ * unknown order (fluid, solids), rows the same. */
+#define LOWER(L, k) ((L)->blk + 14 * (k))
+#define DIAG(L, k) ((L)->blk + 14 * (k) + 4)
+#define UPPER(L, k) ((L)->blk + 14 * (k) + 8)
+#define RHS(L, k) ((L)->blk + 14 * (k) + 12)
+
+static int solve2(const double *A, const double *b, double *x) {
+  double det = A[0] * A[3] - A[1] * A[2];
+  if (!(fabs(det) > 0.0) || !isfinite(det)) return -1;
+  x[0] = (A[3] * b[0] - A[1] * b[1]) / det;
+  x[1] = (A[0] * b[1] - A[2] * b[0]) / det;
+  return 0;
+}
+
+/* C = A^-1 B for 2x2 blocks. */
+static int solve2_block(const double *A, const double *B, double *C) {
+  double c0[2], c1[2], b0[2] = {B[0], B[2]}, b1[2] = {B[1], B[3]};
+  if (solve2(A, b0, c0) || solve2(A, b1, c1)) return -1;
+  C[0] = c0[0], C[1] = c1[0], C[2] = c0[1], C[3] = c1[1];
+  return 0;
+}
+
+/* Block Thomas elimination (no pivoting: the blocks are diagonally
+ * dominant M-matrices for positive drag and viscosities). Solution in the
+ * rhs slots. */
+static int block_thomas(sh_layer *L) {
+  int N = L->n + 1;
+  for (int k = 1; k < N; ++k) {
+    double G[4], g[2], *Lk = LOWER(L, k), *D = DIAG(L, k), *r = RHS(L, k);
+    if (solve2_block(DIAG(L, k - 1), UPPER(L, k - 1), G) || solve2(DIAG(L, k - 1), RHS(L, k - 1), g)) return -1;
+    D[0] -= Lk[0] * G[0] + Lk[1] * G[2], D[1] -= Lk[0] * G[1] + Lk[1] * G[3];
+    D[2] -= Lk[2] * G[0] + Lk[3] * G[2], D[3] -= Lk[2] * G[1] + Lk[3] * G[3];
+    r[0] -= Lk[0] * g[0] + Lk[1] * g[1], r[1] -= Lk[2] * g[0] + Lk[3] * g[1];
+  }
+  double x[2];
+  if (solve2(DIAG(L, N - 1), RHS(L, N - 1), x)) return -1;
+  RHS(L, N - 1)[0] = x[0], RHS(L, N - 1)[1] = x[1];
+  for (int k = N - 2; k >= 0; --k) {
+    double *U = UPPER(L, k), *r = RHS(L, k), *xn = RHS(L, k + 1);
+    double b[2] = {r[0] - U[0] * xn[0] - U[1] * xn[1], r[1] - U[2] * xn[0] - U[3] * xn[1]};
+    if (solve2(DIAG(L, k), b, x)) return -1;
+    r[0] = x[0], r[1] = x[1];
+  }
+  return 0;
+}
+
+/* The cell stress flux G_i = c_i (a_i+1 u_i+1 - a_i u_i): the shear stress
+ * times r^2 (annular) of cell i, c_i = mu_i gm_i. */
+static double cell_flux(const sh_layer *L, int i, double mu, const double *u) {
+  return mu * L->gm[i] * (L->a[i + 1] * u[i + 1] - L->a[i] * u[i]);
+}
+
+/* Residual rows of phase p (0 fluid, 1 solids) at node k without wall terms
+ * and Dirichlet conditions, and their Jacobian entries. mu[i] the phase's
+ * cell viscosity; old the phase's velocity at the start of the step. */
+static double phase_row(sh_layer *L, int p, int k, const double *mu, const double *u, const double *old, double rho,
+                        double frac, double dt, double drag) {
+  double *Lo = LOWER(L, k), *D = DIAG(L, k), *U = UPPER(L, k);
+  double mass = rho * frac * L->V[k] / dt;
+  double r = mass * (u[k] - old[k]) + (p == 0 ? 1.0 : -1.0) * L->V[k] * drag;
+  D[3 * p] += mass;
+  if (k < L->n) {
+    double c = mu[k] * L->gm[k] / L->s[k];
+    r -= cell_flux(L, k, mu[k], u) / L->s[k];
+    D[3 * p] += c * L->a[k], U[3 * p] -= c * L->a[k + 1];
+  }
+  if (k > 0) {
+    double c = mu[k - 1] * L->gm[k - 1] / L->s[k];
+    r += cell_flux(L, k - 1, mu[k - 1], u) / L->s[k];
+    D[3 * p] += c * L->a[k], Lo[3 * p] -= c * L->a[k - 1];
+  }
+  return r;
+}
+
+/* One Newton update of (u_f, u_s) at fixed viscosities. dmax: the largest
+ * change. */
+static int velocity_update(sh_layer *L, double dt, double *dmax, sl_diag *d) {
+  int N = L->n + 1, rc = eval_drag(L, d);
+  if (rc) return rc;
+  memset(L->blk, 0, (size_t)N * 14 * sizeof(double));
+  double *muf = L->work; /* [n] fluid viscosity (1 - phi) mu_f */
+  for (int i = 0; i < L->n; ++i) muf[i] = (1.0 - L->phi[i]) * L->mu_f;
+  for (int k = 0; k < N; ++k) {
+    double w = L->uf1[k] - L->us1[k], drag = L->K[k] * w;
+    double kn = L->K[k] + L->dK[k] * fabs(w); /* d(K(|w|) w)/dw */
+    double rf = phase_row(L, 0, k, muf, L->uf1, L->uf, L->rho_f, 1.0 - L->phin[k], dt, drag);
+    double rs = phase_row(L, 1, k, L->muc, L->us1, L->us, L->rho_s, L->phin[k], dt, drag);
+    double *D = DIAG(L, k);
+    D[0] += L->V[k] * kn, D[1] -= L->V[k] * kn;
+    D[2] -= L->V[k] * kn, D[3] += L->V[k] * kn;
+    RHS(L, k)[0] = -rf, RHS(L, k)[1] = -rs;
+  }
+  for (int side = 0; side < 2; ++side) {
+    sh_wall *w = &L->wall_at[side];
+    int k = w->node, j = w->inner;
+    /* the fluid sticks to the wall */
+    double *D = DIAG(L, k), *Lo = LOWER(L, k), *Up = UPPER(L, k);
+    D[0] = 1.0, D[1] = 0.0, Lo[0] = Lo[1] = Up[0] = Up[1] = 0.0;
+    RHS(L, k)[0] = w->u - L->uf1[k];
+    if (w->solids == SOLIDS_NO_SLIP) {
+      D[2] = 0.0, D[3] = 1.0, Lo[2] = Lo[3] = Up[2] = Up[3] = 0.0;
+      RHS(L, k)[1] = w->u - L->us1[k];
+    } else if (w->solids == SOLIDS_WALL_STRESS) {
+      double tau, dtau, q, dq, bn;
+      if ((rc = eval_wall(L, w, &tau, &dtau, &q, &dq, &bn, d))) return rc;
+      int ref = w->wall_function ? j : k;
+      double slip = L->us1[ref] - w->u, sg = slip > 0 ? 1.0 : slip < 0 ? -1.0 : 0.0;
+      double f = w->area / L->s[k]; /* the wall's stress in this row's units */
+      if (w->wall_function) {
+        /* the inner node's control volume reaches the wall: add the wall
+         * node's solids row to it, then tie the wall node's solids to it */
+        double *Dj = DIAG(L, j), *back = j > k ? LOWER(L, j) : UPPER(L, j);
+        double scale = L->s[k] / L->s[j];
+        back[2] += scale * D[2], back[3] += scale * D[3];
+        double *offk = j > k ? Up : Lo, *other = j > k ? Lo : Up;
+        Dj[2] += scale * offk[2], Dj[3] += scale * offk[3];
+        RHS(L, j)[1] += scale * RHS(L, k)[1];
+        double fj = w->area / L->s[j];
+        RHS(L, j)[1] -= fj * tau * sg;
+        Dj[3] += fj * dtau;
+        D[2] = 0.0, D[3] = 1.0, offk[2] = 0.0, offk[3] = -1.0, other[2] = other[3] = 0.0;
+        RHS(L, k)[1] = L->us1[j] - L->us1[k];
+      } else {
+        RHS(L, k)[1] -= f * tau * sg;
+        D[3] += f * dtau;
+      }
+    }
+  }
+  if (block_thomas(L)) return sl_diag_set(d, SL_EFAILED, "the velocity system is singular (no drag, no viscosity?)");
+  double m = 0.0;
+  for (int k = 0; k < N; ++k) {
+    double df = RHS(L, k)[0], ds = RHS(L, k)[1];
+    if (!isfinite(df) || !isfinite(ds)) return sl_diag_set(d, SL_EFAILED, "non-finite velocity at x = %g", L->x[k]);
+    L->uf1[k] += df, L->us1[k] += ds;
+    m = fmax(m, fmax(fabs(df), fabs(ds)));
+  }
+  *dmax = m;
+  return 0;
+}
+
+/* ---- the granular temperature ------------------------------------------------------ */
+
+/* Production of granular energy per node by the kinetic part of the
+ * solids viscosity (cell production G^2/(mu g), exact for Couette flow,
+ * shared half and half). A constant [solid] viscosity stands for stresses
+ * transmitted through the fluid (Bagnold's macro-viscous regime), which
+ * heat the fluid, not the particles' fluctuations. */
+static void production(sh_layer *L) {
+  for (int k = 0; k <= L->n; ++k) L->prod[k] = 0.0;
+  for (int i = 0; i < L->n; ++i) {
+    double du = L->a[i + 1] * L->us1[i + 1] - L->a[i] * L->us1[i];
+    double p = (L->muc[i] - L->mu_s_const) * L->gm[i] * du * du; /* the kinetic part only */
+    L->prod[i] += 0.5 * p, L->prod[i + 1] += 0.5 * p;
+  }
+}
+
+/* Algebraic theta: mu_s0 gdot^2 sqrt(theta) = gamma0 theta^1.5 + 3 K theta
+ * at each node, mu_s = mu_s0 sqrt(theta), gamma = gamma0 theta^1.5 (the
+ * kinetic closures; checked at set-up): a quadratic in sqrt(theta). */
+static int theta_algebraic(sh_layer *L, double *dmax, sl_diag *d) {
+  int N = L->n + 1;
+  double *one = L->work, *mu0 = L->gam, *g0 = L->dgam;
+  for (int k = 0; k < N; ++k) one[k] = 1.0;
+  const double *v[Q_N];
+  point_values(L, v, L->phin, NULL, one);
+  sl_point_request rq[2] = {{"mu_s", mu0, NULL, NULL}, {"gamma", g0, NULL, NULL}};
+  int rc = sl_point_eval(&L->gran, N, v, rq, 2, d);
+  if (rc) return rc;
+  /* shear rate squared at the nodes: the cells' production per unit viscosity over the node volume */
+  for (int k = 0; k < N; ++k) L->prod[k] = 0.0;
+  for (int i = 0; i < L->n; ++i) {
+    double du = L->a[i + 1] * L->us1[i + 1] - L->a[i] * L->us1[i], p = L->gm[i] * du * du;
+    L->prod[i] += 0.5 * p, L->prod[i + 1] += 0.5 * p;
+  }
+  double m = 0.0;
+  for (int k = 0; k < N; ++k) {
+    double A = mu0[k] * L->prod[k] / L->V[k], B = g0[k], C = L->exchange ? 3.0 * L->K[k] : 0.0, th;
+    if (B > 0.0) {
+      double sq = (-C + sqrt(C * C + 4.0 * A * B)) / (2.0 * B);
+      th = sq * sq;
+    } else th = THETA_FLOOR;
+    th = fmax(th, THETA_FLOOR);
+    m = fmax(m, fabs(th - L->th1[k]));
+    L->th1[k] = th;
+  }
+  *dmax = m;
+  return 0;
+}
+
+/* theta from its transport equation at the iterate's velocities: backward
+ * Euler, conduction with kappa of the last iterate, the dissipation and
+ * the wall's energy flux linearised about the last iterate. */
+static int theta_transport(sh_layer *L, double dt, double *dmax, sl_diag *d) {
+  int N = L->n + 1;
+  production(L);
+  const double *v[Q_N];
+  for (int k = 0; k < N; ++k) L->th1[k] = fmax(L->th1[k], THETA_FLOOR);
+  point_values(L, v, L->phin, NULL, L->th1);
+  sl_point_request rq = {"gamma", L->gam, L->dgam, "theta"};
+  int rc = sl_point_eval(&L->gran, N, v, &rq, 1, d);
+  if (rc) return rc;
+  double *lo = L->blk, *di = lo + N, *up = di + N, *rhs = up + N; /* the block storage is free here */
+  for (int k = 0; k < N; ++k) {
+    double cap = 1.5 * L->rho_s * L->phin[k] * L->V[k] / dt, X = L->exchange ? 3.0 * L->K[k] : 0.0;
+    double g1 = fmax(L->dgam[k], 0.0);
+    di[k] = cap + L->V[k] * (g1 + X);
+    rhs[k] = cap * L->th[k] + L->prod[k] + L->V[k] * (g1 * L->th1[k] - L->gam[k]);
+    lo[k] = up[k] = 0.0;
+    if (k < L->n) {
+      double c = L->kapc[k] * L->gt[k];
+      di[k] += c, up[k] = -c;
+    }
+    if (k > 0) {
+      double c = L->kapc[k - 1] * L->gt[k - 1];
+      di[k] += c, lo[k] = -c;
+    }
+  }
+  for (int side = 0; side < 2; ++side) {
+    sh_wall *w = &L->wall_at[side];
+    if (w->solids != SOLIDS_WALL_STRESS || !sl_point_has_output(&L->wall, "theta_flux")) continue;
+    double tau, dtau, q, dq, bn;
+    if ((rc = eval_wall(L, w, &tau, &dtau, &q, &dq, &bn, d))) return rc;
+    int k = w->node;
+    if (dq <= 0.0) /* a sink that grows with theta: implicit */
+      di[k] -= w->theta_area * dq, rhs[k] += w->theta_area * (q - dq * L->th1[k]);
+    else
+      rhs[k] += w->theta_area * q;
+  }
+  /* Thomas */
+  for (int k = 1; k < N; ++k) {
+    double m = lo[k] / di[k - 1];
+    di[k] -= m * up[k - 1], rhs[k] -= m * rhs[k - 1];
+  }
+  double m = 0.0, next = 0.0;
+  for (int k = N - 1; k >= 0; --k) {
+    double th = (rhs[k] - (k < N - 1 ? up[k] * next : 0.0)) / di[k];
+    if (!isfinite(th)) return sl_diag_set(d, SL_EFAILED, "non-finite granular temperature at x = %g", L->x[k]);
+    next = th;
+    th = fmax(th, THETA_FLOOR);
+    m = fmax(m, fabs(th - L->th1[k]));
+    L->th1[k] = th;
+  }
+  *dmax = m;
+  return 0;
+}
+
+/* ---- one step ---------------------------------------------------------------------- */
+
+static int layer_step(sh_layer *L, double t, double dt, int *iterations, sl_diag *d) {
+  int N = L->n + 1;
+  memcpy(L->uf1, L->uf, (size_t)N * sizeof(double));
+  memcpy(L->us1, L->us, (size_t)N * sizeof(double));
+  memcpy(L->th1, L->th, (size_t)N * sizeof(double));
+  for (int side = 0; side < 2; ++side) {
+    double tv = t + dt;
+    L->wall_at[side].u = sl_expr_eval(L->wall_at[side].speed, &tv);
+    if (!isfinite(L->wall_at[side].u))
+      return sl_diag_set(d, SL_EFAILED, "wall '%s': its velocity is not finite at t = %g", L->wall_at[side].name, tv);
+  }
+  double v_scale = L->v_ref;
+  for (int side = 0; side < 2; ++side) v_scale = fmax(v_scale, fabs(L->wall_at[side].u));
+  for (int it = 1; it <= L->max_iterations; ++it) {
+    double du = 0.0, dth = 0.0;
+    int rc = eval_solids_viscosity(L, d);
+    if (!rc) rc = velocity_update(L, dt, &du, d);
+    if (!rc && L->granular) rc = L->algebraic ? theta_algebraic(L, &dth, d) : theta_transport(L, dt, &dth, d);
+    if (rc) return rc;
+    double th_scale = THETA_FLOOR;
+    for (int k = 0; k < N; ++k) th_scale = fmax(th_scale, L->th1[k]);
+    *iterations = it;
+    if (du <= L->tolerance * v_scale && dth <= L->tolerance * th_scale) return 0;
+  }
+  return sl_diag_set(d, SL_EFAILED, "the implicit step did not converge in %d iterations ([two_fluid] iterations)",
+                     L->max_iterations);
+}
+
+/* ---- wall stresses of the accepted state ------------------------------------------- */
+
+/* The stress each phase exerts on wall w along +u: the reaction of the
+ * wall node's row (its storage, drag and the flux from inside), or the wall
+ * closure's stress. dt: the step that led to the state (0 at t = 0: no
+ * storage term). */
+static int wall_report(sh_layer *L, sh_wall *w, const double *uf_old, const double *us_old, double dt, sl_diag *d) {
+  int k = w->node, i = w->inner > k ? k : k - 1; /* the wall cell */
+  double sign_in = w->inner > k ? 1.0 : -1.0;    /* flux from inside enters the wall node with this sign */
+  double wv = L->uf1[k] - L->us1[k], drag = L->K[k] * wv;
+  double store_f = dt > 0 ? L->rho_f * (1.0 - L->phin[k]) * L->V[k] * (L->uf1[k] - uf_old[k]) / dt : 0.0;
+  double muf = (1.0 - L->phi[i]) * L->mu_f;
+  /* force of the wall on the fluid (row units times s_k) */
+  double on_fluid = L->s[k] * (store_f + L->V[k] * drag) - sign_in * cell_flux(L, i, muf, L->uf1);
+  w->tau_f = -on_fluid / w->area;
+  w->slip = 0.0, w->bagnold = NAN, w->tau_s = 0.0;
+  if (w->solids == SOLIDS_NO_SLIP) {
+    double store_s = dt > 0 ? L->rho_s * L->phin[k] * L->V[k] * (L->us1[k] - us_old[k]) / dt : 0.0;
+    double on_solids = L->s[k] * (store_s - L->V[k] * drag) - sign_in * cell_flux(L, i, L->muc[i], L->us1);
+    w->tau_s = -on_solids / w->area;
+  } else if (w->solids == SOLIDS_WALL_STRESS) {
+    double tau, dtau, q, dq, bn;
+    int rc = eval_wall(L, w, &tau, &dtau, &q, &dq, &bn, d);
+    if (rc) return rc;
+    int ref = w->wall_function ? w->inner : k;
+    w->slip = L->us1[ref] - w->u;
+    w->tau_s = w->slip > 0 ? tau : w->slip < 0 ? -tau : 0.0;
+    w->bagnold = bn;
+  } else {
+    w->slip = L->us1[k] - w->u;
+  }
+  return 0;
+}
+
+/* ---- set-up ------------------------------------------------------------------------ */
+
+static int geometry(sh_layer *L, sl_diag *d) {
+  sl_mesh *m = L->mesh;
+  int n = L->n = m->n_cells;
+  L->vertex = malloc((size_t)(n + 1) * sizeof *L->vertex), L->cell_of = malloc((size_t)n * sizeof *L->cell_of);
+  if (!L->vertex || !L->cell_of) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+  int rc = sl_scene_line_chain(m, L->vertex, L->cell_of, d);
+  if (rc) return sl_diag_prefix(d, rc, "two_fluid (motion = shear)");
+  size_t N = (size_t)n + 1;
+  double **nodes[] = {&L->x, &L->V, &L->a, &L->s, &L->phin, &L->uf, &L->us, &L->th, &L->uf1, &L->us1, &L->th1,
+                      &L->K, &L->dK, &L->slip, &L->prod, &L->gam, &L->dgam, &L->work, &L->node_out};
+  double **cells[] = {&L->h, &L->W, &L->gm, &L->gt, &L->phi, &L->muc, &L->kapc, &L->thc, &L->cell_out};
+  for (size_t k = 0; k < sizeof nodes / sizeof nodes[0]; ++k)
+    if (!(*nodes[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+  for (size_t k = 0; k < sizeof cells / sizeof cells[0]; ++k)
+    if (!(*cells[k] = calloc((size_t)n, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+  for (int k = 0; k < Q_N; ++k)
+    if (!(L->qv[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+  if (!(L->blk = calloc(N * 14, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+  for (size_t k = 0; k < N; ++k) L->x[k] = m->xy[2 * L->vertex[k]];
+  if (L->annular && !(L->x[0] > 0.0)) {
+    const sl_ini_entry *e = sl_ini_find(L->ini, "two_fluid", "cross_section");
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] cross_section = annular: x is the radius and must be > 0 "
+                                        "(the mesh starts at x = %g)", e->file, e->line, L->x[0]);
+  }
+  for (int i = 0; i < n; ++i) {
+    double x0 = L->x[i], x1 = L->x[i + 1], xm = 0.5 * (x0 + x1);
+    L->h[i] = x1 - x0;
+    if (L->annular) {
+      L->W[i] = 0.5 * (x1 * x1 - x0 * x0);
+      L->gm[i] = 2.0 / (1.0 / (x0 * x0) - 1.0 / (x1 * x1)); /* r^2 tau = 2 mu d(u/r) / d(r^-2) */
+      L->gt[i] = 1.0 / log(x1 / x0);                         /* r kappa dtheta/dr = kappa dtheta / d(ln r) */
+      L->V[i] += 0.5 * (xm * xm - x0 * x0), L->V[i + 1] += 0.5 * (x1 * x1 - xm * xm);
+    } else {
+      L->W[i] = L->h[i], L->gm[i] = L->gt[i] = 1.0 / L->h[i];
+      L->V[i] += 0.5 * L->h[i], L->V[i + 1] += 0.5 * L->h[i];
+    }
+  }
+  for (size_t k = 0; k < N; ++k) L->a[k] = L->annular ? 1.0 / L->x[k] : 1.0, L->s[k] = L->annular ? L->x[k] : 1.0;
+  return 0;
+}
+
+static int physics(sh_layer *L, const sl_registry *reg, sl_diag *d) {
+  sl_ini *ini = L->ini;
+  int rc = sl_ini_get_real(ini, "fluid", "density", 0, 1000.0, 1e-3, 1e5, &L->rho_f, d);
+  if (!rc) rc = sl_ini_get_real(ini, "fluid", "viscosity", 0, 1e-3, 1e-7, 1e7, &L->mu_f, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "density", 1, 0, 1e-3, 1e5, &L->rho_s, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "diameter", 1, 0, 1e-9, 1.0, &L->d_p, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "sphericity", 0, 1.0, 0.01, 1.0, &L->sphericity, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "phi_max", 0, 0.63, 0.01, 0.99, &L->phi_max, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "viscosity", 0, 0.0, 0.0, 1e7, &L->mu_s_const, d);
+  if (rc) return rc;
+  double gl[3] = {0, 0, 0};
+  int ng = 0;
+  if ((rc = sl_ini_get_real_list(ini, "flow", "gravity", 0, gl, 3, &ng, d))) return rc;
+  L->gravity = ng ? sqrt(gl[0] * gl[0] + gl[1] * gl[1] + gl[2] * gl[2]) : 9.81;
+  long it;
+  if ((rc = sl_ini_get_int(ini, "two_fluid", "iterations", 0, 50, 1, 1000, &it, d))) return rc;
+  L->max_iterations = (int)it;
+  if ((rc = sl_ini_get_real(ini, "two_fluid", "tolerance", 0, 1e-9, 1e-15, 1e-2, &L->tolerance, d))) return rc;
+  if ((rc = sl_ini_get_real(ini, "two_fluid", "steady_tolerance", 0, 0.0, 0.0, 1.0, &L->steady_tol, d))) return rc;
+  if ((rc = sl_ini_get_choice(ini, "two_fluid", "granular_temperature", 0, 0, "transport|algebraic", &L->algebraic,
+                              d)))
+    return rc;
+  if ((rc = sl_ini_get_bool(ini, "two_fluid", "interphase_dissipation", 0, 1, &L->exchange, d))) return rc;
+  static const char *const column_only[] = {"cfl", "diffusivity", "order", "limiter", "case"};
+  for (size_t k = 0; k < sizeof column_only / sizeof column_only[0]; ++k) {
+    const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", column_only[k]);
+    if (e)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: a key of the column (motion = column); the shear "
+                                          "layer holds phi and moves nothing across the line", e->file, e->line,
+                         e->key);
+  }
+  /* closures */
+  if (!sl_ini_find_section(ini, "closure.drag"))
+    return sl_diag_set(d, SL_EBADINPUT, "[closure.drag]: the two_fluid model needs a drag closure (e.g. model = "
+                                        "wen_yu); `sluice closures` lists them");
+  for (int s = 0; s < ini->n_sections; ++s) {
+    const char *name = ini->sections[s].name;
+    if (strncmp(name, "closure.", 8) == 0 && strcmp(name, "closure.drag") != 0 &&
+        strcmp(name, "closure.granular") != 0 && strcmp(name, "closure.wall_stress") != 0)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the two_fluid shear layer uses [closure.drag], "
+                                          "[closure.granular] and [closure.wall_stress]", ini->sections[s].file,
+                         ini->sections[s].line, name);
+  }
+  const char *model = "the two_fluid shear layer";
+  if ((rc = sl_closure_from_ini(reg, ini, "closure.drag", &L->drag_c, d))) return rc;
+  if ((rc = sl_point_bind(&L->drag, L->drag_c, quantity_names, Q_N, "closure.drag", model, d))) return rc;
+  if (!sl_point_has_output(&L->drag, "K") || !sl_point_has_input(&L->drag, "slip"))
+    return sl_diag_set(d, SL_EBADINPUT, "[closure.drag]: the closure gives no K of slip");
+  L->granular = sl_ini_find_section(ini, "closure.granular") != NULL;
+  const sl_ini_entry *gt = sl_ini_find(ini, "two_fluid", "granular_temperature");
+  if (!L->granular && gt)
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature: needs [closure.granular] (a "
+                                        "kinetic theory, e.g. model = lun)", gt->file, gt->line);
+  if (L->granular) {
+    if ((rc = sl_closure_from_ini(reg, ini, "closure.granular", &L->gran_c, d))) return rc;
+    if ((rc = sl_point_bind(&L->gran, L->gran_c, quantity_names, Q_N, "closure.granular", model, d))) return rc;
+    static const char *const need[] = {"mu_s", "kappa", "gamma"};
+    for (int k = 0; k < 3; ++k)
+      if (!sl_point_has_output(&L->gran, need[k]))
+        return sl_diag_set(d, SL_EBADINPUT, "[closure.granular]: the shear layer needs mu_s, kappa and gamma of "
+                                            "(phi, theta); this closure gives no %s", need[k]);
+  }
+  if (sl_ini_find_section(ini, "closure.wall_stress")) {
+    if ((rc = sl_closure_from_ini(reg, ini, "closure.wall_stress", &L->wall_c, d))) return rc;
+    if ((rc = sl_point_bind(&L->wall, L->wall_c, quantity_names, Q_N, "closure.wall_stress", model, d))) return rc;
+  }
+  for (int k = 0; k <= L->n; ++k) {
+    L->qv[Q_RHO_F][k] = L->rho_f, L->qv[Q_MU_F][k] = L->mu_f, L->qv[Q_RHO_S][k] = L->rho_s;
+    L->qv[Q_D_P][k] = L->d_p, L->qv[Q_SPHERICITY][k] = L->sphericity, L->qv[Q_GRAVITY][k] = L->gravity;
+  }
+  return 0;
+}
+
+/* The kinetic scaling the algebraic theta relies on: mu_s ~ sqrt(theta),
+ * gamma ~ theta^1.5 at fixed phi. */
+static int check_kinetic_scaling(sh_layer *L, sl_diag *d) {
+  double th[2] = {1.0, 4.0}, ph[2], mu[2], g[2];
+  ph[0] = ph[1] = fmin(0.5 * L->phi_max, 0.3);
+  const double *v[Q_N];
+  point_values(L, v, ph, NULL, th);
+  sl_point_request rq[2] = {{"mu_s", mu, NULL, NULL}, {"gamma", g, NULL, NULL}};
+  int rc = sl_point_eval(&L->gran, 2, v, rq, 2, d);
+  if (rc) return rc;
+  if (fabs(mu[1] / mu[0] - 2.0) > 1e-9 || fabs(g[1] / g[0] - 8.0) > 1e-9) {
+    const sl_ini_entry *e = sl_ini_find(L->ini, "two_fluid", "granular_temperature");
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature = algebraic needs a kinetic closure "
+                                        "(mu_s ~ theta^0.5, gamma ~ theta^1.5); [closure.granular] is not one (use "
+                                        "transport)", e->file, e->line);
+  }
+  return 0;
+}
+
+static int walls(sh_layer *L, sl_diag *d) {
+  const char *names[2] = {sl_scene_line_end_name(L->mesh, L->vertex[0]),
+                          sl_scene_line_end_name(L->mesh, L->vertex[L->n])};
+  if (!names[0] || !names[1])
+    return sl_diag_set(d, SL_EBADINPUT, "two_fluid shear layer: the line's ends carry no boundary tag");
+  for (int s = 0; s < L->ini->n_sections; ++s) {
+    const sl_ini_section *sec = &L->ini->sections[s];
+    if (strncmp(sec->name, "boundary.", 9) != 0) continue;
+    const char *b = sec->name + 9;
+    if (strcmp(b, names[0]) != 0 && strcmp(b, names[1]) != 0) {
+      const char *sug = sl_suggest(b, names, 2);
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the mesh has no boundary '%s'%s%s%s (its ends: %s, %s)",
+                         sec->file, sec->line, sec->name, b, sug ? "; did you mean '" : "", sug ? sug : "",
+                         sug ? "'?" : "", names[0], names[1]);
+    }
+  }
+  int rc, any_stress = 0;
+  for (int side = 0; side < 2; ++side) {
+    sh_wall *w = &L->wall_at[side];
+    char sec[300];
+    snprintf(sec, sizeof sec, "boundary.%s", names[side]);
+    w->name = names[side];
+    w->node = side == 0 ? 0 : L->n;
+    w->inner = side == 0 ? 1 : L->n - 1;
+    w->area = L->annular ? L->x[w->node] * L->x[w->node] : 1.0;
+    w->theta_area = L->annular ? L->x[w->node] : 1.0;
+    static const char *const keys[] = {"type", "velocity", "solids"};
+    if (sl_ini_find_section(L->ini, sec) && (rc = sl_ini_check_keys(L->ini, sec, keys, 3, d))) return rc;
+    int type;
+    if ((rc = sl_ini_get_choice(L->ini, sec, "type", 0, 0, "wall", &type, d))) return rc;
+    if ((rc = sl_ini_get_choice(L->ini, sec, "solids", 0, SOLIDS_NO_SLIP, "no_slip|free_slip|wall_stress",
+                                &w->solids, d)))
+      return rc;
+    const sl_ini_entry *ve = sl_ini_find(L->ini, sec, "velocity");
+    static const char *const vars[] = {"t"};
+    if ((rc = sl_expr_compile(ve ? ve->value : "0", vars, 1, &w->speed, d)))
+      return sl_diag_prefix(d, rc, "%s:%d: [%s] velocity", ve->file, ve->line, sec);
+    if (w->solids == SOLIDS_WALL_STRESS) {
+      any_stress = 1;
+      if (!L->wall_c) {
+        const sl_ini_entry *e = sl_ini_find(L->ini, sec, "solids");
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] solids = wall_stress needs [closure.wall_stress] (e.g. "
+                                            "model = bagnold or johnson_jackson)", e->file, e->line, sec);
+      }
+      w->wall_function = sl_point_has_input(&L->wall, "wall_distance");
+      if (w->wall_function && L->n < 2)
+        return sl_diag_set(d, SL_EBADINPUT, "[%s]: a wall function needs at least two cells", sec);
+    }
+  }
+  if (L->wall_c && !any_stress)
+    return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: no wall uses it (set solids = wall_stress in a "
+                                        "[boundary.NAME])");
+  if (L->wall_c && L->wall_at[0].wall_function && L->n < 3)
+    return sl_diag_set(d, SL_EBADINPUT, "two_fluid shear layer: wall functions at both walls need at least 3 cells");
+  return 0;
+}
+
+static int initial_state(sh_layer *L, sl_diag *d) {
+  static const char *const vars[] = {"x"};
+  static const char *const keys[] = {"phi", "theta", "velocity_fluid", "velocity_solid"};
+  int rc = sl_ini_check_keys(L->ini, "initial", keys, 4, d);
+  if (rc) return rc;
+  const sl_ini_entry *pe = sl_ini_find(L->ini, "initial", "phi");
+  if (!pe) return sl_diag_set(d, SL_EBADINPUT, "[initial] phi: the shear layer needs the solids fraction (held)");
+  const sl_ini_entry *te = sl_ini_find(L->ini, "initial", "theta");
+  if (te && !L->granular)
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] theta: needs [closure.granular]", te->file, te->line);
+  const sl_ini_entry *es[4] = {pe, te, sl_ini_find(L->ini, "initial", "velocity_fluid"),
+                               sl_ini_find(L->ini, "initial", "velocity_solid")};
+  const char *defaults[4] = {"0", "1e-6", "0", "0"};
+  for (int f = 0; f < 4 && !rc; ++f) {
+    sl_expr *ex;
+    if ((rc = sl_expr_compile(es[f] ? es[f]->value : defaults[f], vars, 1, &ex, d)))
+      return sl_diag_prefix(d, rc, "%s:%d: [initial] %s", es[f]->file, es[f]->line, es[f]->key);
+    if (f == 0) {
+      for (int i = 0; i < L->n && !rc; ++i) {
+        double xc = 0.5 * (L->x[i] + L->x[i + 1]), v = sl_expr_eval(ex, &xc);
+        if (!(v > 0.0 && v <= L->phi_max))
+          rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] phi = %g at x = %g: allowed 0 < phi <= phi_max = %g",
+                           pe->file, pe->line, v, xc, L->phi_max);
+        L->phi[i] = v;
+      }
+    } else {
+      double *dst = f == 1 ? L->th : f == 2 ? L->uf : L->us;
+      for (int k = 0; k <= L->n && !rc; ++k) {
+        double v = sl_expr_eval(ex, &L->x[k]);
+        if (!isfinite(v) || (f == 1 && !(v > 0.0)))
+          rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s = %g at x = %g: allowed %s", es[f]->file,
+                           es[f]->line, es[f]->key, v, L->x[k], f == 1 ? "theta > 0" : "a finite value");
+        dst[k] = v;
+      }
+    }
+    sl_expr_free(ex);
+  }
+  if (rc) return rc;
+  /* phi at the nodes: the volume-weighted mean of the node's half cells */
+  for (int k = 0; k <= L->n; ++k) {
+    double num = 0.0, den = 0.0;
+    for (int i = k - 1; i <= k; ++i) {
+      if (i < 0 || i >= L->n) continue;
+      double half = L->annular ? 0.5 * fabs(L->x[k] * L->x[k] - pow(0.5 * (L->x[i] + L->x[i + 1]), 2)) : 0.5 * L->h[i];
+      num += half * L->phi[i], den += half;
+    }
+    L->phin[k] = num / den;
+  }
+  if (!L->granular)
+    for (int k = 0; k <= L->n; ++k) L->th[k] = 0.0;
+  for (int side = 0; side < 2; ++side) {
+    double t0 = 0.0;
+    sh_wall *w = &L->wall_at[side];
+    w->u = sl_expr_eval(w->speed, &t0);
+    L->v_ref = fmax(L->v_ref, fabs(w->u));
+  }
+  /* the scale of the velocity test: the walls, else the initial velocities */
+  for (int k = 0; k <= L->n; ++k) L->v_ref = fmax(L->v_ref, fmax(fabs(L->uf[k]), fabs(L->us[k])));
+  if (L->v_ref == 0.0) L->v_ref = 1e-12;
+  return 0;
+}
+
+/* ---- output ------------------------------------------------------------------------ */
+
+static int open_output(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
+  unsigned mask;
+  int rc = sl_scene_output_path(L->ini, o->output, o->scene_path, L->res->output_path, sizeof L->res->output_path, d);
+  if (!rc)
+    rc = sl_scene_output_fields(L->ini, field_names, 4, F_PHI | F_UF | F_US | (L->granular ? F_THETA : 0u), &mask, d);
+  if (rc) return rc;
+  if ((mask & F_THETA) && !L->granular) {
+    const sl_ini_entry *e = sl_ini_find(L->ini, "output", "fields");
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] fields: theta needs [closure.granular]", e->file, e->line);
+  }
+  L->fields = (int)mask;
+  if ((rc = sl_output_open(&L->out, L->res->output_path, d))) return rc;
+  const sl_mesh *m = L->mesh;
+  int32_t *cells = malloc((size_t)m->n_cells * 2 * sizeof *cells);
+  double *coords = malloc((size_t)m->n_vertices * sizeof *coords);
+  if (!cells || !coords) {
+    free(cells), free(coords);
+    return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+  }
+  for (int v = 0; v < m->n_vertices; ++v) coords[v] = m->xy[2 * v];
+  for (int e = 0; e < 2 * m->n_cells; ++e) cells[e] = m->cell_vertices[e];
+  rc = sl_output_write_mesh(L->out, 1, m->n_vertices, coords, m->n_cells, 2, cells, "Polyline", d);
+  free(cells), free(coords);
+  if (rc) return rc;
+  char *ini_text = sl_ini_to_string(L->ini);
+  sl_provenance_closure pc[3];
+  sl_provenance pv = {.sluice_version = o->sluice_version ? o->sluice_version : "unknown", .ini_text = ini_text,
+                      .closures = pc};
+  const sl_closure *cl[3] = {L->drag_c, L->gran_c, L->wall_c};
+  const char *roles[3] = {"closure.drag", "closure.granular", "closure.wall_stress"};
+  for (int k = 0; k < 3; ++k) {
+    if (!cl[k]) continue;
+    size_t at = 0;
+    L->params[k][0] = '\0';
+    for (int j = 0; j < cl[k]->desc->n_params && at < sizeof L->params[k]; ++j) {
+      char v[64];
+      sl_params_format_value(cl[k]->desc, cl[k]->params, j, v, sizeof v);
+      at += (size_t)snprintf(L->params[k] + at, sizeof L->params[k] - at, "%s = %s\n", cl[k]->desc->params[j].name, v);
+    }
+    pc[pv.n_closures++] = (sl_provenance_closure){roles[k], sl_kind_name(cl[k]->desc->kind), cl[k]->desc->name,
+                                                  cl[k]->desc->version, cl[k]->library->path, L->params[k]};
+  }
+  rc = sl_output_write_provenance(L->out, &pv, d);
+  free(ini_text);
+  return rc;
+}
+
+static int write_state(sh_layer *L, double t, sl_diag *d) {
+  double t0 = cpu_now();
+  int rc = sl_output_begin_step(L->out, t, d);
+  if (!rc && (L->fields & F_PHI)) {
+    for (int i = 0; i < L->n; ++i) L->cell_out[L->cell_of[i]] = L->phi[i];
+    rc = sl_output_write_field(L->out, "phi", SL_CENTRE_CELL, 1, L->cell_out, d);
+  }
+  const double *nf[3] = {L->uf, L->us, L->th};
+  const int flag[3] = {F_UF, F_US, F_THETA};
+  for (int f = 0; f < 3 && !rc; ++f) {
+    if (!(L->fields & flag[f])) continue;
+    for (int k = 0; k <= L->n; ++k) L->node_out[L->vertex[k]] = nf[f][k];
+    rc = sl_output_write_field(L->out, field_names[f + 1], SL_CENTRE_NODE, 1, L->node_out, d);
+  }
+  for (int side = 0; side < 2 && !rc; ++side) {
+    const sh_wall *w = &L->wall_at[side];
+    char name[300];
+    snprintf(name, sizeof name, "wall_shear_stress_fluid_%s", w->name);
+    rc = sl_output_write_scalar(L->out, name, w->tau_f, d);
+    snprintf(name, sizeof name, "wall_shear_stress_solid_%s", w->name);
+    if (!rc) rc = sl_output_write_scalar(L->out, name, w->tau_s, d);
+    snprintf(name, sizeof name, "wall_slip_%s", w->name);
+    if (!rc) rc = sl_output_write_scalar(L->out, name, w->slip, d);
+    if (!rc && L->annular) {
+      snprintf(name, sizeof name, "torque_%s", w->name);
+      rc = sl_output_write_scalar(L->out, name, 2.0 * SH_PI * w->area * (w->tau_f + w->tau_s), d);
+    }
+    if (!rc && w->solids == SOLIDS_WALL_STRESS && sl_point_has_output(&L->wall, "bagnold_number")) {
+      snprintf(name, sizeof name, "bagnold_number_%s", w->name);
+      rc = sl_output_write_scalar(L->out, name, w->bagnold, d);
+    }
+  }
+  if (!rc) rc = sl_output_end_step(L->out, d);
+  L->res->output += cpu_now() - t0;
+  return rc;
+}
+
+static int write_checkpoint(sh_layer *L, double t, double dt, long step, sl_diag *d) {
+  int N = L->n + 1;
+  sl_checkpoint_array a[3] = {{"velocity_fluid", N, L->uf}, {"velocity_solid", N, L->us}, {"theta", N, L->th}};
+  sl_checkpoint ck = {.time = t, .dt = dt, .step = step, .n_arrays = 3, .arrays = a};
+  ck.n_ints = 1;
+  snprintf(ck.int_names[0], SL_CHECKPOINT_NAME_MAX, "rejected");
+  ck.ints[0] = L->res->rejected_steps;
+  return sl_output_write_checkpoint(L->out, &ck, d);
+}
+
+static int restore(sh_layer *L, const char *path, double *t, double *dt, long *step, sl_diag *d) {
+  sl_checkpoint ck;
+  int rc = sl_checkpoint_read(path, &ck, d);
+  if (rc) return rc;
+  const char *names[3] = {"velocity_fluid", "velocity_solid", "theta"};
+  double *dst[3] = {L->uf, L->us, L->th};
+  for (int k = 0; k < 3 && !rc; ++k) {
+    const sl_checkpoint_array *a = sl_checkpoint_find(&ck, names[k]);
+    if (!a || a->n != L->n + 1)
+      rc = sl_diag_set(d, SL_EBADINPUT, "restart: %s holds no shear-layer '%s' of %d values", path, names[k], L->n + 1);
+    else memcpy(dst[k], a->data, (size_t)a->n * sizeof(double));
+  }
+  *t = ck.time, *dt = ck.dt, *step = (long)ck.step;
+  if (!rc && ck.n_ints > 0) L->res->rejected_steps = (long)ck.ints[0];
+  sl_checkpoint_free(&ck);
+  return rc;
+}
+
+/* The reported wall quantities of the state in (uf, us, th). */
+static int report_walls(sh_layer *L, const double *uf_old, const double *us_old, double dt, sl_diag *d) {
+  int N = L->n + 1;
+  memcpy(L->uf1, L->uf, (size_t)N * sizeof(double));
+  memcpy(L->us1, L->us, (size_t)N * sizeof(double));
+  memcpy(L->th1, L->th, (size_t)N * sizeof(double));
+  int rc = eval_solids_viscosity(L, d);
+  if (!rc) rc = eval_drag(L, d);
+  for (int side = 0; side < 2 && !rc; ++side) rc = wall_report(L, &L->wall_at[side], uf_old, us_old, dt, d);
+  return rc;
+}
+
+/* ---- the time loop ----------------------------------------------------------------- */
+
+static int time_loop(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
+  double end, dt_cfg, dt_min, every;
+  long max_steps;
+  int rc = sl_ini_get_real(L->ini, "time", "end", 1, 0, 0, 1e12, &end, d);
+  if (!rc) rc = sl_ini_get_real(L->ini, "time", "dt", 1, 0, 1e-15, 1e9, &dt_cfg, d);
+  if (!rc) rc = sl_ini_get_real(L->ini, "time", "dt_min", 0, dt_cfg * 1e-6, 0, 1e9, &dt_min, d);
+  if (!rc) rc = sl_ini_get_int(L->ini, "time", "max_steps", 0, 100000000L, 1, 100000000L, &max_steps, d);
+  if (!rc) rc = sl_ini_get_real(L->ini, "output", "every", 0, 0.0, 0.0, 1e12, &every, d);
+  if (rc) return rc;
+  int N = L->n + 1;
+  double *uf_old = malloc((size_t)N * sizeof *uf_old), *us_old = malloc((size_t)N * sizeof *us_old);
+  if (!uf_old || !us_old) {
+    free(uf_old), free(us_old);
+    return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+  }
+  double t = 0.0, h = dt_cfg;
+  long step = 0, steps_here = 0;
+  if (o->restart) rc = restore(L, o->restart, &t, &h, &step, d);
+  if (!rc) rc = report_walls(L, L->uf, L->us, 0.0, d);
+  if (!rc && !o->restart && !(rc = write_state(L, 0.0, d))) rc = write_checkpoint(L, 0.0, h, 0, d);
+  if (rc) {
+    free(uf_old), free(us_old);
+    return rc;
+  }
+  L->res->t_start = t;
+  int next_out = every > 0 ? (int)floor(t / every + 1e-9) + 1 : 0;
+  const double eps_t = 1e-12 * fmax(1.0, end);
+  int steady = 0;
+  long n_cut = 0;
+  while (t < end - eps_t && !steady && steps_here < max_steps) {
+    if (o->interrupt && *o->interrupt) {
+      rc = sl_diag_set(d, SL_EFAILED, "interrupted at t = %.6g after %ld steps", t, step);
+      break;
+    }
+    double t_stop = end;
+    if (every > 0 && next_out * every < t_stop) t_stop = next_out * every;
+    double hh = h;
+    if (fabs(t + hh - t_stop) > eps_t && (t + hh > t_stop || t + 1.05 * hh > t_stop)) hh = t_stop - t;
+    double c0 = cpu_now();
+    sl_diag ds;
+    int its = 0, src = layer_step(L, t, hh, &its, &ds);
+    L->res->solve += cpu_now() - c0;
+    L->iterations += its, L->res->nonlinear_iterations += its;
+    if (src) {
+      L->res->rejected_steps++, ++n_cut;
+      h = 0.25 * hh;
+      if (h < dt_min) {
+        rc = sl_diag_set(d, SL_EFAILED, "step rejected at t = %.6g down to dt = %.3g < dt_min = %.3g: %s", t, h, dt_min,
+                         ds.msg);
+        break;
+      }
+      continue;
+    }
+    double rate_u = 0.0, rate_t = 0.0, th_max = THETA_FLOOR;
+    for (int k = 0; k < N; ++k) {
+      rate_u = fmax(rate_u, fmax(fabs(L->uf1[k] - L->uf[k]), fabs(L->us1[k] - L->us[k])));
+      rate_t = fmax(rate_t, fabs(L->th1[k] - L->th[k]));
+      th_max = fmax(th_max, L->th1[k]);
+    }
+    double v_scale = L->v_ref;
+    for (int side = 0; side < 2; ++side) v_scale = fmax(v_scale, fabs(L->wall_at[side].u));
+    rate_u /= hh * v_scale, rate_t /= hh * th_max;
+    memcpy(uf_old, L->uf, (size_t)N * sizeof(double));
+    memcpy(us_old, L->us, (size_t)N * sizeof(double));
+    memcpy(L->uf, L->uf1, (size_t)N * sizeof(double));
+    memcpy(L->us, L->us1, (size_t)N * sizeof(double));
+    memcpy(L->th, L->th1, (size_t)N * sizeof(double));
+    ++L->advances;
+    t += hh, ++step, ++steps_here;
+    if (h < dt_cfg) h = fmin(dt_cfg, 2.0 * h);
+    if (o->monitor) o->monitor(o->monitor_user, t, hh, step, its);
+    steady = L->steady_tol > 0.0 && rate_u < L->steady_tol && (!L->granular || rate_t < L->steady_tol);
+    int due = every > 0 ? t >= next_out * every - eps_t : 0;
+    if (due || steady || t >= end - eps_t || steps_here >= max_steps) {
+      while (every > 0 && t >= next_out * every - eps_t) ++next_out;
+      if ((rc = report_walls(L, uf_old, us_old, hh, d))) break;
+      if ((rc = write_state(L, t, d)) || (rc = write_checkpoint(L, t, h, step, d))) break;
+    }
+  }
+  free(uf_old), free(us_old);
+  L->res->steps = step;
+  L->res->t_reached = t;
+  L->res->t_end = end;
+  L->res->step_limit = n_cut ? "convergence of the implicit step" : "fixed dt";
+  if (rc == SL_EFAILED) { /* keep the last good state */
+    sl_diag d2;
+    if (write_state(L, t, &d2) == 0) write_checkpoint(L, t, h, step, &d2);
+  }
+  if (steady && rc == 0) {
+    fprintf(stderr, "sluice: two_fluid: steady at t = %.6g (relative rates below %g per s)\n", t, L->steady_tol);
+    snprintf(L->res->stop_reason, sizeof L->res->stop_reason, "steady at t = %.6g", t);
+  }
+  return rc;
+}
+
+static void release(sh_layer *L) {
+  double *all[] = {L->x,  L->h,   L->W,    L->gm,  L->gt,   L->V,    L->a,   L->s,    L->phi,   L->phin,
+                   L->uf, L->us,  L->th,   L->uf1, L->us1,  L->th1,  L->K,   L->dK,   L->slip,  L->muc,
+                   L->kapc, L->thc, L->prod, L->gam, L->dgam, L->work, L->blk, L->node_out, L->cell_out};
+  for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
+  for (int k = 0; k < Q_N; ++k) free(L->qv[k]);
+  sl_point_release(&L->drag), sl_point_release(&L->gran), sl_point_release(&L->wall);
+  sl_closure_destroy(L->drag_c), sl_closure_destroy(L->gran_c), sl_closure_destroy(L->wall_c);
+  for (int side = 0; side < 2; ++side) sl_expr_free(L->wall_at[side].speed);
+  free(L->vertex), free(L->cell_of);
+  sl_mesh_destroy(L->mesh);
+}
+
+int sl_shear_layer_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d) {
+  memset(res, 0, sizeof *res);
+  sh_layer L = {.ini = ini, .res = res};
+  double c0 = cpu_now();
+  int rc = sl_ini_get_choice(ini, "two_fluid", "cross_section", 0, 0, "planar|annular", &L.annular, d);
+  if (!rc) rc = sl_scene_mesh(ini, &L.mesh, d);
+  if (!rc) rc = geometry(&L, d);
+  if (!rc) rc = physics(&L, reg, d);
+  if (!rc && L.granular && L.algebraic) rc = check_kinetic_scaling(&L, d);
+  if (!rc) rc = walls(&L, d);
+  if (!rc) rc = initial_state(&L, d);
+  if (!rc) rc = open_output(&L, o, d);
+  res->cpu_setup = cpu_now() - c0;
+  if (!rc) rc = time_loop(&L, o, d);
+  if (L.out) {
+    sl_diag d2;
+    int crc = sl_output_close(L.out, rc ? &d2 : d);
+    if (!rc) rc = crc;
+  }
+  if (L.advances) {
+    double thm = 0.0;
+    for (int k = 0; k <= L.n; ++k) thm = fmax(thm, L.th[k]);
+    snprintf(res->coupling_summary, sizeof res->coupling_summary,
+             "two_fluid shear layer (%s): %.1f iterations per step; solids wall stresses %.4g Pa (%s), %.4g Pa "
+             "(%s); max theta %.3g m2/s2",
+             L.annular ? "annular" : "planar", (double)L.iterations / (double)L.advances, L.wall_at[0].tau_s,
+             L.wall_at[0].name ? L.wall_at[0].name : "-", L.wall_at[1].tau_s,
+             L.wall_at[1].name ? L.wall_at[1].name : "-", thm);
+  }
+  snprintf(res->linear_summary, sizeof res->linear_summary, "2x2 block-tridiagonal, %d nodes", L.n + 1);
+  release(&L);
+  return rc;
+}

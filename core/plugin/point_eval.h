@@ -1,0 +1,61 @@
+/* A closure evaluated at a batch of points whose inputs the host supplies by
+ * name: the binding maps each of the closure's inputs to one of the host's
+ * named quantities (a per-point array), once; an evaluation fills the
+ * outputs asked for and, optionally, their derivatives with respect to one
+ * input. A model that feeds several closures of different kinds from the
+ * same fields (phi, theta, slip, ...) binds each once and calls it per batch.
+ *
+ *   static const char *const names[] = {"phi", "theta", "rho_s", "d_p"};
+ *   sl_point_closure pc;
+ *   sl_point_bind(&pc, closure, names, 4, "closure.granular", "the shear layer", d);
+ *   const double *values[4] = {phi, theta, rho_s, d_p};      // each [Q]
+ *   sl_point_request rq[1] = {{"mu_s", mu, dmu_dtheta, "theta"}};
+ *   sl_point_eval(&pc, Q, values, rq, 1, d);
+ */
+#ifndef SLUICE_PLUGIN_POINT_EVAL_H
+#define SLUICE_PLUGIN_POINT_EVAL_H
+
+#include "core/plugin/instance.h"
+#include "core/util/diag.h"
+
+enum { SL_POINT_MAX_IN = 32 };
+
+typedef struct sl_point_closure {
+  sl_closure *c;           /* not owned */
+  int source[SL_POINT_MAX_IN]; /* the host quantity of each closure input */
+  const char *const *names;    /* the host's quantity names (the binding's) */
+  int n_names;
+  double *buf;
+  size_t cap;
+} sl_point_closure;
+
+/* One output wanted: its values (n points), and optionally its derivative
+ * with respect to the input `wrt` (NULL: none). The derivative is 0 where
+ * the closure does not differentiate that input. */
+typedef struct sl_point_request {
+  const char *output;
+  double *values;
+  double *derivative;
+  const char *wrt;
+} sl_point_request;
+
+/* Binds c's inputs to the host's quantities by name. SL_EBADINPUT names the
+ * closure, the section and the missing input, and lists what `model`
+ * provides. */
+int sl_point_bind(sl_point_closure *pc, sl_closure *c, const char *const *names, int n_names, const char *section,
+                  const char *model, sl_diag *d);
+
+/* 1 when the closure gives the output `name`. */
+int sl_point_has_output(const sl_point_closure *pc, const char *name);
+/* 1 when the closure has the input `name`. */
+int sl_point_has_input(const sl_point_closure *pc, const char *name);
+
+/* Evaluates Q points; values[k] is the host quantity k at every point (the
+ * order of the binding's names). SL_EFAILED with the closure's message and
+ * the offending point's inputs when it fails or leaves its validity. */
+int sl_point_eval(sl_point_closure *pc, int Q, const double *const *values, const sl_point_request *rq, int n_rq,
+                  sl_diag *d);
+
+void sl_point_release(sl_point_closure *pc);
+
+#endif
