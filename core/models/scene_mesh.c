@@ -140,8 +140,26 @@ int sl_scene_line_chain(const sl_mesh *m, int *vertex, int *cell, sl_diag *d) {
   return 0;
 }
 
-const char *sl_scene_line_end_name(const sl_mesh *m, int vertex) {
+static const char *line_end_name(const sl_mesh *m, int vertex) {
   for (int f = 0; f < m->n_faces; ++f)
     if (m->face_vertices[2 * f] == vertex && m->face_tag[f] >= 0) return m->boundary_names[m->face_tag[f]];
   return NULL;
+}
+
+int sl_scene_line_ends(const sl_ini *ini, const sl_mesh *m, int first, int last, const char *model,
+                       const char *names[2], sl_diag *d) {
+  names[0] = line_end_name(m, first), names[1] = line_end_name(m, last);
+  if (!names[0] || !names[1]) return sl_diag_set(d, SL_EBADINPUT, "%s: the line's ends carry no boundary tag", model);
+  for (int s = 0; s < ini->n_sections; ++s) {
+    const sl_ini_section *sec = &ini->sections[s];
+    if (strncmp(sec->name, "boundary.", 9) != 0) continue;
+    const char *b = sec->name + 9;
+    if (strcmp(b, names[0]) != 0 && strcmp(b, names[1]) != 0) {
+      const char *sug = sl_suggest(b, names, 2);
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the mesh has no boundary '%s'%s%s%s (its ends: %s, %s)",
+                         sec->file, sec->line, sec->name, b, sug ? "; did you mean '" : "", sug ? sug : "",
+                         sug ? "'?" : "", names[0], names[1]);
+    }
+  }
+  return 0;
 }

@@ -22,7 +22,11 @@ int sl_scene_mesh(const sl_ini *ini, sl_mesh **out, sl_diag *d);
  * mesh is not 1-D or not a single chain. */
 int sl_scene_line_chain(const sl_mesh *m, int *vertex, int *cell, sl_diag *d);
 
-/* The name of the tagged boundary at a 1-D mesh's vertex, or NULL. */
-const char *sl_scene_line_end_name(const sl_mesh *m, int vertex);
+/* The boundary names of a 1-D chain's two ends (vertices first and last),
+ * checking that every [boundary.NAME] of the scene names one of them (else
+ * SL_EBADINPUT with file:line and a "did you mean"). model names the model
+ * in the message when an end carries no tag. */
+int sl_scene_line_ends(const sl_ini *ini, const sl_mesh *m, int first, int last, const char *model,
+                       const char *names[2], sl_diag *d);
 
 #endif

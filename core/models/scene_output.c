@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "core/plugin/kinds.h"
 #include "core/util/diag.h"
 
 int sl_scene_output_path(const sl_ini *ini, const char *override, const char *scene_path, char *path, size_t cap,
@@ -54,4 +55,16 @@ int sl_scene_output_fields(const sl_ini *ini, const char *const *names, int n_na
     p = q;
   }
   return 0;
+}
+
+sl_provenance_closure sl_scene_closure_provenance(const sl_closure *cl, const char *role, char *buf, size_t len) {
+  const sl_closure_desc *c = cl->desc;
+  size_t at = 0;
+  if (len) buf[0] = '\0';
+  for (int k = 0; k < c->n_params && at < len; ++k) {
+    char v[64];
+    sl_params_format_value(c, cl->params, k, v, sizeof v);
+    at += (size_t)snprintf(buf + at, len - at, "%s = %s\n", c->params[k].name, v);
+  }
+  return (sl_provenance_closure){role, sl_kind_name(c->kind), c->name, c->version, cl->library->path, buf};
 }

@@ -7,6 +7,8 @@
 #include <stddef.h>
 
 #include "core/config/ini.h"
+#include "core/io/output.h"
+#include "core/plugin/instance.h"
 
 /* override: -o (NULL: none); scene_path: the scene file (NULL: "sluice").
  * Writes the path into path[cap]. Returns 0 or the error of reading
@@ -19,5 +21,10 @@ int sl_scene_output_path(const sl_ini *ini, const char *override, const char *sc
  * file:line, a suggestion and the known names. */
 int sl_scene_output_fields(const sl_ini *ini, const char *const *names, int n_names, unsigned default_mask,
                            unsigned *mask, sl_diag *d);
+
+/* The provenance record of a closure in use under [role]: its kind, name,
+ * version, library and parameters, the parameters written into buf[len]
+ * as "key = value" lines (buf must live until the record is written). */
+sl_provenance_closure sl_scene_closure_provenance(const sl_closure *cl, const char *role, char *buf, size_t len);
 
 #endif

@@ -579,22 +579,10 @@ static int check_kinetic_scaling(sh_layer *L, sl_diag *d) {
 }
 
 static int walls(sh_layer *L, sl_diag *d) {
-  const char *names[2] = {sl_scene_line_end_name(L->mesh, L->vertex[0]),
-                          sl_scene_line_end_name(L->mesh, L->vertex[L->n])};
-  if (!names[0] || !names[1])
-    return sl_diag_set(d, SL_EBADINPUT, "two_fluid shear layer: the line's ends carry no boundary tag");
-  for (int s = 0; s < L->ini->n_sections; ++s) {
-    const sl_ini_section *sec = &L->ini->sections[s];
-    if (strncmp(sec->name, "boundary.", 9) != 0) continue;
-    const char *b = sec->name + 9;
-    if (strcmp(b, names[0]) != 0 && strcmp(b, names[1]) != 0) {
-      const char *sug = sl_suggest(b, names, 2);
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the mesh has no boundary '%s'%s%s%s (its ends: %s, %s)",
-                         sec->file, sec->line, sec->name, b, sug ? "; did you mean '" : "", sug ? sug : "",
-                         sug ? "'?" : "", names[0], names[1]);
-    }
-  }
-  int rc, any_stress = 0;
+  const char *names[2];
+  int rc = sl_scene_line_ends(L->ini, L->mesh, L->vertex[0], L->vertex[L->n], "two_fluid shear layer", names, d);
+  if (rc) return rc;
+  int any_stress = 0;
   for (int side = 0; side < 2; ++side) {
     sh_wall *w = &L->wall_at[side];
     char sec[300];
@@ -729,18 +717,8 @@ static int open_output(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
                       .closures = pc};
   const sl_closure *cl[3] = {L->drag_c, L->gran_c, L->wall_c};
   const char *roles[3] = {"closure.drag", "closure.granular", "closure.wall_stress"};
-  for (int k = 0; k < 3; ++k) {
-    if (!cl[k]) continue;
-    size_t at = 0;
-    L->params[k][0] = '\0';
-    for (int j = 0; j < cl[k]->desc->n_params && at < sizeof L->params[k]; ++j) {
-      char v[64];
-      sl_params_format_value(cl[k]->desc, cl[k]->params, j, v, sizeof v);
-      at += (size_t)snprintf(L->params[k] + at, sizeof L->params[k] - at, "%s = %s\n", cl[k]->desc->params[j].name, v);
-    }
-    pc[pv.n_closures++] = (sl_provenance_closure){roles[k], sl_kind_name(cl[k]->desc->kind), cl[k]->desc->name,
-                                                  cl[k]->desc->version, cl[k]->library->path, L->params[k]};
-  }
+  for (int k = 0; k < 3; ++k)
+    if (cl[k]) pc[pv.n_closures++] = sl_scene_closure_provenance(cl[k], roles[k], L->params[k], sizeof L->params[k]);
   rc = sl_output_write_provenance(L->out, &pv, d);
   free(ini_text);
   return rc;

@@ -67,22 +67,10 @@ static int column_from_mesh(tf_run *r, sl_diag *d) {
 
 static int boundaries(tf_run *r, sl_diag *d) {
   tf_column *c = &r->c;
-  const char *names[2] = {sl_scene_line_end_name(r->mesh, r->face_vertex[0]),
-                         sl_scene_line_end_name(r->mesh, r->face_vertex[c->n])};
-  if (!names[0] || !names[1]) return sl_diag_set(d, SL_EBADINPUT, "two_fluid: the column's ends carry no boundary tag");
-  /* every [boundary.X] must name an end */
-  for (int s = 0; s < r->ini->n_sections; ++s) {
-    const sl_ini_section *sec = &r->ini->sections[s];
-    if (strncmp(sec->name, "boundary.", 9) != 0) continue;
-    const char *b = sec->name + 9;
-    if (strcmp(b, names[0]) != 0 && strcmp(b, names[1]) != 0) {
-      const char *sug = sl_suggest(b, names, 2);
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the mesh has no boundary '%s'%s%s%s (its ends: %s, %s)",
-                         sec->file, sec->line, sec->name, b, sug ? "; did you mean '" : "", sug ? sug : "",
-                         sug ? "'?" : "", names[0], names[1]);
-    }
-  }
-  int rc, n_out = 0;
+  const char *names[2];
+  int rc = sl_scene_line_ends(r->ini, r->mesh, r->face_vertex[0], r->face_vertex[c->n], "two_fluid", names, d);
+  if (rc) return rc;
+  int n_out = 0;
   c->inlet_side = -1;
   for (int side = 0; side < 2; ++side) {
     char sec[300];
@@ -172,16 +160,6 @@ static int bind_closure(tf_run *r, const sl_registry *reg, const char *section, 
     b->fixed[i] = v;
   }
   return 0;
-}
-
-static void closure_params(const sl_closure *cl, char *buf, size_t len) {
-  size_t at = 0;
-  buf[0] = '\0';
-  for (int k = 0; k < cl->desc->n_params && at < len; ++k) {
-    char v[64];
-    sl_params_format_value(cl->desc, cl->params, k, v, sizeof v);
-    at += (size_t)snprintf(buf + at, len - at, "%s = %s\n", cl->desc->params[k].name, v);
-  }
 }
 
 /* ---- scene ---------------------------------------------------------------------- */
@@ -349,12 +327,8 @@ static int open_output(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
                       .closures = pc};
   const sl_closure *cl[2] = {r->c.drag.c, r->c.ps.c};
   const char *roles[2] = {"closure.drag", "closure.solids_pressure"};
-  for (int k = 0; k < 2; ++k) {
-    if (!cl[k]) continue;
-    closure_params(cl[k], r->params[k], sizeof r->params[k]);
-    pc[pv.n_closures++] = (sl_provenance_closure){roles[k], sl_kind_name(cl[k]->desc->kind), cl[k]->desc->name,
-                                                  cl[k]->desc->version, cl[k]->library->path, r->params[k]};
-  }
+  for (int k = 0; k < 2; ++k)
+    if (cl[k]) pc[pv.n_closures++] = sl_scene_closure_provenance(cl[k], roles[k], r->params[k], sizeof r->params[k]);
   rc = sl_output_write_provenance(r->out, &pv, d);
   free(ini_text);
   return rc;
