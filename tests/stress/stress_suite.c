@@ -2,7 +2,7 @@
  * limits (particle diameter 1 um to 10 mm, density ratio 1.01 to 10, phi0
  * up to phi_max - 1e-3, Bingham number up to 1e4, time steps from small to
  * ten times the explicit stability limit) through the mixture,
- * navier_stokes and two_fluid models. Every case must either run to its end
+ * navier_stokes and two_fluid models (the column and the shear layer). Every case must either run to its end
  * (or to its steady state) with every value of every output field finite
  * and phi in [0, phi_max], or stop cleanly: SL_EFAILED, a message saying
  * why, and the last good state (output and checkpoint, at the time reached)
@@ -120,6 +120,19 @@ static const stress_case cases[] = {
     {"settled_dt_10x", "settled_bed", "dt = 25 s = 10 h/u_t", 0.64, REDUCED, {"time.dt=25", NULL}},
     {"settled_dt_small", "settled_bed", "dt = 0.1 s, t = 50 s", 0.64, REDUCED,
      {"time.dt=0.1", "time.end=50", "output.every=10", NULL}},
+    /* ---- two-fluid shear layer: Bagnold's cell at U = 4 m/s (grain-inertia) ---- */
+    {"shear_d1um", "shear_cell", "d = 1 um (tau_p = 5.6e-8 s), dt = 1 s", 0.63, REDUCED,
+     {"solid.diameter=1e-6", "boundary.right.velocity=4", NULL}},
+    {"shear_d10mm", "shear_cell", "d = 10 mm (as wide as the gap: beyond a continuum), dt = 1 s", 0.63, REDUCED,
+     {"solid.diameter=1e-2", "boundary.right.velocity=4", NULL}},
+    {"shear_rho1.01", "shear_cell", "rho_s/rho_f = 1.01", 0.63, REDUCED,
+     {"solid.density=1010", "boundary.right.velocity=4", NULL}},
+    {"shear_rho10", "shear_cell", "rho_s/rho_f = 10", 0.63, REDUCED,
+     {"solid.density=10000", "boundary.right.velocity=4", NULL}},
+    {"shear_phi0.629", "shear_cell", "phi = 0.629 = phi_max - 1e-3", 0.63, REDUCED,
+     {"initial.phi=0.629", "boundary.right.velocity=4", NULL}},
+    {"shear_dt_large", "shear_cell", "dt = 100 s (viscous time of the gap 100 s, of a cell 0.06 s)", 0.63, REDUCED,
+     {"time.dt=100", "boundary.right.velocity=4", NULL}},
 };
 enum { N_CASES = (int)(sizeof cases / sizeof cases[0]) };
 
