@@ -891,10 +891,16 @@ static int time_loop(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
     sl_diag d2;
     if (write_state(L, t, &d2) == 0) write_checkpoint(L, t, h, step, &d2);
   }
-  if (steady && rc == 0) {
-    fprintf(stderr, "sluice: two_fluid: steady at t = %.6g (relative rates below %g per s)\n", t, L->steady_tol);
-    snprintf(L->res->stop_reason, sizeof L->res->stop_reason, "steady at t = %.6g", t);
-  }
+  if (!rc && steady)
+    snprintf(L->res->stop_reason, sizeof L->res->stop_reason,
+             "steady at t = %.6g (velocities and theta change by less than %g of their scales per s)", t,
+             L->steady_tol);
+  else if (!rc && t >= end - eps_t)
+    snprintf(L->res->stop_reason, sizeof L->res->stop_reason, "reached the end time t = %g", end);
+  else if (!rc)
+    snprintf(L->res->stop_reason, sizeof L->res->stop_reason,
+             "stopped after max_steps = %ld steps at t = %.6g, before the end time %g (checkpoint saved)", max_steps,
+             t, end);
   return rc;
 }
 
@@ -925,7 +931,9 @@ int sl_shear_layer_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts
   if (!rc) rc = open_output(&L, o, d);
   res->cpu_setup = cpu_now() - c0;
   if (!rc) rc = time_loop(&L, o, d);
+  res->cpu_flow = res->solve, res->cpu_output = res->output; /* profile phases */
   if (L.out) {
+    sl_output_stats(L.out, &res->output_times, &res->output_datasets, &res->output_bytes);
     sl_diag d2;
     int crc = sl_output_close(L.out, rc ? &d2 : d);
     if (!rc) rc = crc;

@@ -500,12 +500,19 @@ static int time_loop(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
   r->res->t_reached = t;
   r->res->t_end = end;
   r->res->step_limit = n_cut ? limit : "fixed dt";
+  if (!rc && steady)
+    snprintf(r->res->stop_reason, sizeof r->res->stop_reason, "steady at t = %.6g (max |dphi/dt| < %g per s)", t,
+             r->steady_tol);
+  else if (!rc && t >= end - eps_t)
+    snprintf(r->res->stop_reason, sizeof r->res->stop_reason, "reached the end time t = %g", end);
+  else if (!rc)
+    snprintf(r->res->stop_reason, sizeof r->res->stop_reason,
+             "stopped after max_steps = %ld steps at t = %.6g, before the end time %g (checkpoint saved)", max_steps,
+             t, end);
   if (rc == SL_EFAILED) { /* keep the last good state */
     sl_diag d2;
     if (write_state(r, t, &d2) == 0) write_checkpoint(r, t, h, step, &d2);
   }
-  if (steady && rc == 0)
-    fprintf(stderr, "sluice: two_fluid: steady at t = %.6g (max |dphi/dt| < %g per s)\n", t, r->steady_tol);
   return rc;
 }
 
@@ -533,6 +540,7 @@ int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *
   }
   memset(res, 0, sizeof *res);
   tf_run r = {.ini = ini, .res = res};
+  double c0 = cpu_now();
   int geometry = 0;
   rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, d);
   if (!rc && geometry != 0) {
@@ -558,8 +566,13 @@ int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *
     c->v_ref = fmax(c->v_ref, fabs(j));
   }
   if (!rc) rc = open_output(&r, o, d);
+  res->cpu_setup = cpu_now() - c0;
   if (!rc) rc = time_loop(&r, o, d);
+  /* profile phases: the implicit steps less their transport, the transport, the output */
+  res->cpu_coupled = r.c.transport_cpu, res->cpu_flow = fmax(res->solve - r.c.transport_cpu, 0.0);
+  res->cpu_output = res->output;
   if (r.out) {
+    sl_output_stats(r.out, &res->output_times, &res->output_datasets, &res->output_bytes);
     sl_diag d2;
     int crc = sl_output_close(r.out, rc ? &d2 : d);
     if (!rc) rc = crc;

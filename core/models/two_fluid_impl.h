@@ -52,6 +52,7 @@ typedef struct tf_column {
   double outflow_trial; /* solids volume per unit area that left during the trial */
   int fatal;            /* the trial failed for a reason a smaller step cannot cure (the inlet's value) */
   long substeps_trial;
+  double transport_cpu; /* CPU seconds in tf_transport over the run (profile) */
   int iterations_trial;
 } tf_column;
 
