@@ -893,7 +893,7 @@ static int time_loop(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
   }
   if (!rc && steady)
     snprintf(L->res->stop_reason, sizeof L->res->stop_reason,
-             "steady at t = %.6g (velocities and theta change by less than %g of their scales per s)", t,
+             "steady at t = %.6g (relative rates below %g per s)", t,
              L->steady_tol);
   else if (!rc && t >= end - eps_t)
     snprintf(L->res->stop_reason, sizeof L->res->stop_reason, "reached the end time t = %g", end);

@@ -486,6 +486,7 @@ static int time_loop(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
     sw = c->p, c->p = c->p_new, c->p_new = sw;
     r->outflow += c->outflow_trial;
     r->substeps += c->substeps_trial, ++r->advances;
+    c->accepted_substeps = c->last_substeps;
     t += hh, ++step, ++steps_here;
     if (h < dt_cfg) h = fmin(dt_cfg, 2.0 * h), limit = "convergence of the implicit step";
     if (o->monitor) o->monitor(o->monitor_user, t, hh, step, c->iterations_trial);
@@ -501,7 +502,7 @@ static int time_loop(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
   r->res->t_end = end;
   r->res->step_limit = n_cut ? limit : "fixed dt";
   if (!rc && steady)
-    snprintf(r->res->stop_reason, sizeof r->res->stop_reason, "steady at t = %.6g (max |dphi/dt| < %g per s)", t,
+    snprintf(r->res->stop_reason, sizeof r->res->stop_reason, "steady at t = %.6g (largest dphi/dt below %g per s)", t,
              r->steady_tol);
   else if (!rc && t >= end - eps_t)
     snprintf(r->res->stop_reason, sizeof r->res->stop_reason, "reached the end time t = %g", end);

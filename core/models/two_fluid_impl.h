@@ -53,6 +53,8 @@ typedef struct tf_column {
   int fatal;            /* the trial failed for a reason a smaller step cannot cure (the inlet's value) */
   long substeps_trial;
   double transport_cpu; /* CPU seconds in tf_transport over the run (profile) */
+  long last_substeps;     /* of the last transport call */
+  long accepted_substeps; /* of the last accepted step's transport (0: none yet) */
   int iterations_trial;
 } tf_column;
 

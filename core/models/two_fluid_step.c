@@ -217,7 +217,16 @@ static int transport_run(tf_column *c, const double *phi0, const double *u, doub
   if (!(ns <= 1e7))
     return sl_diag_set(d, SL_EFAILED, "solids transport would need %.3g sub-steps (solids speed %.3g m/s)", ns,
                        rmax * c->h[0]);
+  /* An iterate far from the last accepted step's speeds (a Newton iterate
+   * overshooting at a long step) would spend its sub-steps on a state that
+   * is thrown away: refuse it, and the step is retried smaller. */
+  double cap = fmax(1e3, 50.0 * (double)c->accepted_substeps);
+  if (c->accepted_substeps > 0 && ns > cap)
+    return sl_diag_set(d, SL_EFAILED, "solids transport of this iterate would need %.3g sub-steps, more than 50 "
+                                      "times the last step's %ld (solids speed %.3g m/s)", ns, c->accepted_substeps,
+                       rmax * c->h[0]);
   long m = ns < 1.0 ? 1 : (long)ns;
+  c->last_substeps = m;
   double ds = dt / (double)m, out = 0.0;
   memcpy(phi, phi0, (size_t)n * sizeof *phi);
   for (long s = 0; s < m; ++s) {
