@@ -54,8 +54,9 @@ typedef struct sh_layer {
   double *phi, *phin;              /* cells, nodes (held) */
   double *uf, *us, *th;            /* state at the nodes */
   double *uf1, *us1, *th1;         /* the step's iterate */
-  double *K, *dK, *slip, *muc, *kapc, *thc, *prod, *gam, *dgam, *work; /* work arrays */
-  double *blk;                     /* 2x2 blocks: lower, diagonal, upper (12 per node) and rhs (2 per node) */
+  double *K, *dK, *slip, *muc, *muk, *dmuc, *kapc, *thc, *prod, *gam, *dgam, *work; /* work arrays */
+  double *blk;                     /* per node: lower, diagonal, upper 3x3 blocks and the rhs (STRIDE) */
+  int b;                           /* block size: 2 (u_f, u_s) or 3 (and theta, transported) */
   double *qv[Q_N];                 /* per-point values of constant quantities */
   sl_closure *drag_c, *gran_c, *wall_c;
   sl_point_closure drag, gran, wall;
@@ -96,22 +97,23 @@ static int eval_drag(sh_layer *L, sl_diag *d) {
 /* The solids viscosity in the cells (theta the mean of the cell's nodes). */
 static int eval_solids_viscosity(sh_layer *L, sl_diag *d) {
   if (!L->granular) {
-    for (int i = 0; i < L->n; ++i) L->muc[i] = L->mu_s_const;
+    for (int i = 0; i < L->n; ++i) L->muc[i] = L->mu_s_const, L->muk[i] = L->dmuc[i] = 0.0;
     return 0;
   }
   for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th1[i] + L->th1[i + 1]), THETA_FLOOR);
   const double *v[Q_N];
   point_values(L, v, L->phi, NULL, L->thc);
-  sl_point_request rq[2] = {{"mu_s", L->muc, NULL, NULL}, {"kappa", L->kapc, NULL, NULL}};
+  sl_point_request rq[2] = {{"mu_s", L->muk, L->dmuc, "theta"}, {"kappa", L->kapc, NULL, NULL}};
   int rc = sl_point_eval(&L->gran, L->n, v, rq, L->algebraic ? 1 : 2, d);
-  for (int i = 0; i < L->n && !rc; ++i) L->muc[i] += L->mu_s_const;
+  for (int i = 0; i < L->n && !rc; ++i) L->muc[i] = L->mu_s_const + L->muk[i];
   return rc;
 }
 
-/* The wall closure at wall w for the iterate: tau (magnitude), dtau/dslip,
- * and the energy flux q into the layer with dq/dtheta (0 without). */
-static int eval_wall(sh_layer *L, sh_wall *w, double *tau, double *dtau, double *q, double *dq, double *bn,
-                     sl_diag *d) {
+/* The wall closure at wall w for the iterate: tau (magnitude) with its
+ * derivatives in the slip and theta, and the energy flux q into the layer
+ * with dq/dtheta (0 without). */
+static int eval_wall(sh_layer *L, sh_wall *w, double *tau, double *dtau, double *dtau_th, double *q, double *dq,
+                     double *bn, sl_diag *d) {
   int ref = w->wall_function ? w->inner : w->node;
   double sl = fabs(L->us1[ref] - w->u), dist = fabs(L->x[w->inner] - L->x[w->node]);
   double phi = L->phin[ref], th = fmax(L->th1[w->node], THETA_FLOOR);
@@ -119,64 +121,92 @@ static int eval_wall(sh_layer *L, sh_wall *w, double *tau, double *dtau, double 
   const double *v[Q_N];
   for (int k = 0; k < Q_N; ++k) one[k] = L->qv[k][0], v[k] = &one[k];
   one[Q_PHI] = phi, one[Q_THETA] = th, one[Q_SLIP_WALL] = sl, one[Q_WALL_DISTANCE] = dist, one[Q_SLIP] = sl;
-  sl_point_request rq[3] = {{"tau_w", tau, dtau, "slip_wall"}, {"theta_flux", q, dq, "theta"},
-                            {"bagnold_number", bn, NULL, NULL}};
-  int n_rq = 1;
-  *q = *dq = 0.0, *bn = NAN;
-  if (sl_point_has_output(&L->wall, "theta_flux")) n_rq = 2;
-  int rc = sl_point_eval(&L->wall, 1, v, rq, n_rq, d);
-  if (!rc && sl_point_has_output(&L->wall, "bagnold_number")) rc = sl_point_eval(&L->wall, 1, v, rq + 2, 1, d);
+  sl_point_request rq[4] = {{"tau_w", tau, dtau, "slip_wall"}, {"tau_w", dtau_th, dtau_th, "theta"},
+                            {"theta_flux", q, dq, "theta"}, {"bagnold_number", bn, NULL, NULL}};
+  *q = *dq = *dtau_th = 0.0, *bn = NAN;
+  int rc = sl_point_eval(&L->wall, 1, v, rq, 1, d);
+  double tau_again;
+  rq[1].values = &tau_again;
+  if (!rc && sl_point_has_input(&L->wall, "theta")) rc = sl_point_eval(&L->wall, 1, v, rq + 1, 1, d);
+  if (!rc && sl_point_has_output(&L->wall, "theta_flux")) rc = sl_point_eval(&L->wall, 1, v, rq + 2, 1, d);
+  if (!rc && sl_point_has_output(&L->wall, "bagnold_number")) rc = sl_point_eval(&L->wall, 1, v, rq + 3, 1, d);
   if (rc) return sl_diag_prefix(d, rc, "wall '%s'", w->name);
   return 0;
 }
 
-/* ---- the velocity system: 2x2 block-tridiagonal ------------------------------------ */
+/* ---- the coupled system: block-tridiagonal, 2x2 (u_f, u_s) or 3x3 (and theta) ------ */
 
-/* Block k: lower[4] (the couplings to node k-1), diag[4], upper[4], rhs[2];
- * unknown order (fluid, solids), rows the same. */
-#define LOWER(L, k) ((L)->blk + 14 * (k))
-#define DIAG(L, k) ((L)->blk + 14 * (k) + 4)
-#define UPPER(L, k) ((L)->blk + 14 * (k) + 8)
-#define RHS(L, k) ((L)->blk + 14 * (k) + 12)
+/* Block k: lower (the couplings to node k-1), diagonal, upper, each 3x3
+ * row-major with entry (row, column) at [3 row + column] whatever the block
+ * size b in use, and the right-hand side. Rows and columns: F, S, T. */
+enum { F = 0, S = 1, T = 2, STRIDE = 30 };
+#define LOWER(L, k) ((L)->blk + STRIDE * (k))
+#define DIAG(L, k) ((L)->blk + STRIDE * (k) + 9)
+#define UPPER(L, k) ((L)->blk + STRIDE * (k) + 18)
+#define RHS(L, k) ((L)->blk + STRIDE * (k) + 27)
 
-static int solve2(const double *A, const double *b, double *x) {
-  double det = A[0] * A[3] - A[1] * A[2];
-  if (!(fabs(det) > 0.0) || !isfinite(det)) return -1;
-  x[0] = (A[3] * b[0] - A[1] * b[1]) / det;
-  x[1] = (A[0] * b[1] - A[2] * b[0]) / det;
+/* X = A^-1 X for a b x b block A and m columns of X (3 x 3 layout), by
+ * Gaussian elimination with partial pivoting on a copy of A. */
+static int block_solve(int b, const double *A, double *X, int m) {
+  double a[9];
+  memcpy(a, A, sizeof a);
+  for (int c = 0; c < b; ++c) {
+    int p = c;
+    for (int r = c + 1; r < b; ++r)
+      if (fabs(a[3 * r + c]) > fabs(a[3 * p + c])) p = r;
+    if (!(fabs(a[3 * p + c]) > 0.0) || !isfinite(a[3 * p + c])) return -1;
+    if (p != c)
+      for (int j = 0; j < 3; ++j) {
+        double t = a[3 * c + j];
+        a[3 * c + j] = a[3 * p + j], a[3 * p + j] = t;
+        if (j < m) t = X[3 * c + j], X[3 * c + j] = X[3 * p + j], X[3 * p + j] = t;
+      }
+    for (int r = c + 1; r < b; ++r) {
+      double f = a[3 * r + c] / a[3 * c + c];
+      for (int j = c; j < b; ++j) a[3 * r + j] -= f * a[3 * c + j];
+      for (int j = 0; j < m; ++j) X[3 * r + j] -= f * X[3 * c + j];
+    }
+  }
+  for (int c = b - 1; c >= 0; --c)
+    for (int j = 0; j < m; ++j) {
+      double s = X[3 * c + j];
+      for (int k = c + 1; k < b; ++k) s -= a[3 * c + k] * X[3 * k + j];
+      X[3 * c + j] = s / a[3 * c + c];
+    }
   return 0;
 }
 
-/* C = A^-1 B for 2x2 blocks. */
-static int solve2_block(const double *A, const double *B, double *C) {
-  double c0[2], c1[2], b0[2] = {B[0], B[2]}, b1[2] = {B[1], B[3]};
-  if (solve2(A, b0, c0) || solve2(A, b1, c1)) return -1;
-  C[0] = c0[0], C[1] = c1[0], C[2] = c0[1], C[3] = c1[1];
-  return 0;
-}
-
-/* Block Thomas elimination (no pivoting: the blocks are diagonally
- * dominant M-matrices for positive drag and viscosities). Solution in the
- * rhs slots. */
+/* Block Thomas elimination; the solution replaces the right-hand sides. */
 static int block_thomas(sh_layer *L) {
-  int N = L->n + 1;
+  const int N = L->n + 1, b = L->b;
   for (int k = 1; k < N; ++k) {
-    double G[4], g[2], *Lk = LOWER(L, k), *D = DIAG(L, k), *r = RHS(L, k);
-    if (solve2_block(DIAG(L, k - 1), UPPER(L, k - 1), G) || solve2(DIAG(L, k - 1), RHS(L, k - 1), g)) return -1;
-    D[0] -= Lk[0] * G[0] + Lk[1] * G[2], D[1] -= Lk[0] * G[1] + Lk[1] * G[3];
-    D[2] -= Lk[2] * G[0] + Lk[3] * G[2], D[3] -= Lk[2] * G[1] + Lk[3] * G[3];
-    r[0] -= Lk[0] * g[0] + Lk[1] * g[1], r[1] -= Lk[2] * g[0] + Lk[3] * g[1];
+    double G[9], g[9] = {0};
+    memcpy(G, UPPER(L, k - 1), sizeof G);
+    for (int r = 0; r < b; ++r) g[3 * r] = RHS(L, k - 1)[r];
+    if (block_solve(b, DIAG(L, k - 1), G, b) || block_solve(b, DIAG(L, k - 1), g, 1)) return -1;
+    double *Lk = LOWER(L, k), *D = DIAG(L, k), *rk = RHS(L, k);
+    for (int r = 0; r < b; ++r) {
+      for (int c = 0; c < b; ++c)
+        for (int j = 0; j < b; ++j) D[3 * r + c] -= Lk[3 * r + j] * G[3 * j + c];
+      for (int j = 0; j < b; ++j) rk[r] -= Lk[3 * r + j] * g[3 * j];
+    }
   }
-  double x[2];
-  if (solve2(DIAG(L, N - 1), RHS(L, N - 1), x)) return -1;
-  RHS(L, N - 1)[0] = x[0], RHS(L, N - 1)[1] = x[1];
-  for (int k = N - 2; k >= 0; --k) {
-    double *U = UPPER(L, k), *r = RHS(L, k), *xn = RHS(L, k + 1);
-    double b[2] = {r[0] - U[0] * xn[0] - U[1] * xn[1], r[1] - U[2] * xn[0] - U[3] * xn[1]};
-    if (solve2(DIAG(L, k), b, x)) return -1;
-    r[0] = x[0], r[1] = x[1];
+  for (int k = N - 1; k >= 0; --k) {
+    double x[9] = {0};
+    for (int r = 0; r < b; ++r) {
+      x[3 * r] = RHS(L, k)[r];
+      if (k < N - 1)
+        for (int j = 0; j < b; ++j) x[3 * r] -= UPPER(L, k)[3 * r + j] * RHS(L, k + 1)[j];
+    }
+    if (block_solve(b, DIAG(L, k), x, 1)) return -1;
+    for (int r = 0; r < b; ++r) RHS(L, k)[r] = x[3 * r];
   }
   return 0;
+}
+
+/* The block holding the coupling of node k's rows to node j's unknowns. */
+static double *block_of(sh_layer *L, int k, int j) {
+  return j == k ? DIAG(L, k) : j > k ? UPPER(L, k) : LOWER(L, k);
 }
 
 /* The cell stress flux G_i = c_i (a_i+1 u_i+1 - a_i u_i): the shear stress
@@ -185,109 +215,147 @@ static double cell_flux(const sh_layer *L, int i, double mu, const double *u) {
   return mu * L->gm[i] * (L->a[i + 1] * u[i + 1] - L->a[i] * u[i]);
 }
 
-/* Residual rows of phase p (0 fluid, 1 solids) at node k without wall terms
- * and Dirichlet conditions, and their Jacobian entries. mu[i] the phase's
- * cell viscosity; old the phase's velocity at the start of the step. */
-static double phase_row(sh_layer *L, int p, int k, const double *mu, const double *u, const double *old, double rho,
-                        double frac, double dt, double drag) {
-  double *Lo = LOWER(L, k), *D = DIAG(L, k), *U = UPPER(L, k);
-  double mass = rho * frac * L->V[k] / dt;
-  double r = mass * (u[k] - old[k]) + (p == 0 ? 1.0 : -1.0) * L->V[k] * drag;
-  D[3 * p] += mass;
-  if (k < L->n) {
-    double c = mu[k] * L->gm[k] / L->s[k];
-    r -= cell_flux(L, k, mu[k], u) / L->s[k];
-    D[3 * p] += c * L->a[k], U[3 * p] -= c * L->a[k + 1];
-  }
-  if (k > 0) {
-    double c = mu[k - 1] * L->gm[k - 1] / L->s[k];
-    r += cell_flux(L, k - 1, mu[k - 1], u) / L->s[k];
-    D[3 * p] += c * L->a[k], Lo[3 * p] -= c * L->a[k - 1];
+/* Residual row of phase p (F or S) at node k without walls, with its
+ * Jacobian entries: storage, the viscous fluxes of the two cells (and, for
+ * the solids, their derivative in theta through mu_s), the drag. */
+static double phase_row(sh_layer *L, int p, int k, const double *mu, const double *dmu, const double *u,
+                        const double *old, double rho, double frac, double dt, double drag) {
+  double *D = DIAG(L, k), mass = rho * frac * L->V[k] / dt;
+  double r = mass * (u[k] - old[k]) + (p == F ? 1.0 : -1.0) * L->V[k] * drag;
+  D[3 * p + p] += mass;
+  for (int side = 0; side < 2; ++side) {
+    int i = side == 0 ? k : k - 1; /* the cell to the right, to the left */
+    if (i < 0 || i >= L->n) continue;
+    double sgn = side == 0 ? -1.0 : 1.0; /* -G_k + G_k-1 */
+    double c = mu[i] * L->gm[i] / L->s[k], G = cell_flux(L, i, mu[i], u);
+    r += sgn * G / L->s[k];
+    double *Bi = block_of(L, k, i), *Bi1 = block_of(L, k, i + 1);
+    Bi[3 * p + p] -= sgn * c * L->a[i];
+    Bi1[3 * p + p] += sgn * c * L->a[i + 1];
+    if (dmu && L->b == 3) { /* G_i depends on theta_i and theta_i+1 through mu_s(theta_c) */
+      double dG = 0.5 * dmu[i] * L->gm[i] * (L->a[i + 1] * u[i + 1] - L->a[i] * u[i]) / L->s[k];
+      Bi[3 * p + T] += sgn * dG, Bi1[3 * p + T] += sgn * dG;
+    }
   }
   return r;
 }
 
-/* One Newton update of (u_f, u_s) at fixed viscosities. dmax: the largest
- * change. */
-static int velocity_update(sh_layer *L, double dt, double *dmax, sl_diag *d) {
-  int N = L->n + 1, rc = eval_drag(L, d);
+/* The granular-energy row of node k (transport form) and its Jacobian:
+ * storage, conduction (kappa of the iterate), production by the kinetic
+ * viscosity, dissipation, the drag's sink (K of the iterate). The
+ * production enters the Jacobian through u_s only: its theta derivative,
+ * mu_s'(theta) gdot^2 ~ theta^-1/2, is negative on the diagonal and unbounded
+ * as theta -> 0, and Newton with it falls to theta = 0; without it the
+ * diagonal stays positive (storage, conduction, dissipation, sink) and the
+ * theta part converges linearly, by a factor of about 3 per iteration at
+ * equilibrium (production/dissipation derivatives 1/2 : 3/2). */
+static double theta_row(sh_layer *L, int k, double dt) {
+  double *D = DIAG(L, k);
+  double cap = 1.5 * L->rho_s * L->phin[k] * L->V[k] / dt, X = L->exchange ? 3.0 * L->K[k] : 0.0;
+  double r = cap * (L->th1[k] - L->th[k]) + L->V[k] * (L->gam[k] + X * L->th1[k]);
+  D[3 * T + T] += cap + L->V[k] * (L->dgam[k] + X);
+  for (int side = 0; side < 2; ++side) {
+    int i = side == 0 ? k : k - 1, nb = side == 0 ? k + 1 : k - 1;
+    if (i < 0 || i >= L->n) continue;
+    double c = L->kapc[i] * L->gt[i];
+    r += c * (L->th1[k] - L->th1[nb]);
+    D[3 * T + T] += c, block_of(L, k, nb)[3 * T + T] -= c;
+    /* half of cell i's production mu_k gm du^2 */
+    double du = L->a[i + 1] * L->us1[i + 1] - L->a[i] * L->us1[i];
+    r -= 0.5 * L->muk[i] * L->gm[i] * du * du;
+    double dp = L->muk[i] * L->gm[i] * du; /* d(half production)/d(du) */
+    block_of(L, k, i + 1)[3 * T + S] -= dp * L->a[i + 1];
+    block_of(L, k, i)[3 * T + S] += dp * L->a[i];
+  }
+  return r;
+}
+
+/* One Newton update of (u_f, u_s[, theta]). du, dth: the largest changes. */
+static int newton_update(sh_layer *L, double dt, double *du, double *dth, sl_diag *d) {
+  const int N = L->n + 1, b = L->b;
+  int rc = eval_drag(L, d);
+  if (!rc && b == 3) {
+    const double *v[Q_N];
+    for (int k = 0; k < N; ++k) L->th1[k] = fmax(L->th1[k], THETA_FLOOR);
+    point_values(L, v, L->phin, NULL, L->th1);
+    sl_point_request rq = {"gamma", L->gam, L->dgam, "theta"};
+    rc = sl_point_eval(&L->gran, N, v, &rq, 1, d);
+  }
   if (rc) return rc;
-  memset(L->blk, 0, (size_t)N * 14 * sizeof(double));
+  memset(L->blk, 0, (size_t)N * STRIDE * sizeof(double));
   double *muf = L->work; /* [n] fluid viscosity (1 - phi) mu_f */
   for (int i = 0; i < L->n; ++i) muf[i] = (1.0 - L->phi[i]) * L->mu_f;
   for (int k = 0; k < N; ++k) {
     double w = L->uf1[k] - L->us1[k], drag = L->K[k] * w;
     double kn = L->K[k] + L->dK[k] * fabs(w); /* d(K(|w|) w)/dw */
-    double rf = phase_row(L, 0, k, muf, L->uf1, L->uf, L->rho_f, 1.0 - L->phin[k], dt, drag);
-    double rs = phase_row(L, 1, k, L->muc, L->us1, L->us, L->rho_s, L->phin[k], dt, drag);
+    double rf = phase_row(L, F, k, muf, NULL, L->uf1, L->uf, L->rho_f, 1.0 - L->phin[k], dt, drag);
+    double rs = phase_row(L, S, k, L->muc, L->dmuc, L->us1, L->us, L->rho_s, L->phin[k], dt, drag);
     double *D = DIAG(L, k);
-    D[0] += L->V[k] * kn, D[1] -= L->V[k] * kn;
-    D[2] -= L->V[k] * kn, D[3] += L->V[k] * kn;
-    RHS(L, k)[0] = -rf, RHS(L, k)[1] = -rs;
+    D[3 * F + F] += L->V[k] * kn, D[3 * F + S] -= L->V[k] * kn;
+    D[3 * S + F] -= L->V[k] * kn, D[3 * S + S] += L->V[k] * kn;
+    RHS(L, k)[F] = -rf, RHS(L, k)[S] = -rs;
+    if (b == 3) RHS(L, k)[T] = -theta_row(L, k, dt);
   }
   for (int side = 0; side < 2; ++side) {
     sh_wall *w = &L->wall_at[side];
     int k = w->node, j = w->inner;
-    /* the fluid sticks to the wall */
     double *D = DIAG(L, k), *Lo = LOWER(L, k), *Up = UPPER(L, k);
-    D[0] = 1.0, D[1] = 0.0, Lo[0] = Lo[1] = Up[0] = Up[1] = 0.0;
-    RHS(L, k)[0] = w->u - L->uf1[k];
+    /* the fluid sticks to the wall */
+    for (int c = 0; c < 3; ++c) D[3 * F + c] = Lo[3 * F + c] = Up[3 * F + c] = 0.0;
+    D[3 * F + F] = 1.0, RHS(L, k)[F] = w->u - L->uf1[k];
     if (w->solids == SOLIDS_NO_SLIP) {
-      D[2] = 0.0, D[3] = 1.0, Lo[2] = Lo[3] = Up[2] = Up[3] = 0.0;
-      RHS(L, k)[1] = w->u - L->us1[k];
+      for (int c = 0; c < 3; ++c) D[3 * S + c] = Lo[3 * S + c] = Up[3 * S + c] = 0.0;
+      D[3 * S + S] = 1.0, RHS(L, k)[S] = w->u - L->us1[k];
     } else if (w->solids == SOLIDS_WALL_STRESS) {
-      double tau, dtau, q, dq, bn;
-      if ((rc = eval_wall(L, w, &tau, &dtau, &q, &dq, &bn, d))) return rc;
+      double tau, dtau, dtau_th, q, dq, bn;
+      if ((rc = eval_wall(L, w, &tau, &dtau, &dtau_th, &q, &dq, &bn, d))) return rc;
       int ref = w->wall_function ? j : k;
       double slip = L->us1[ref] - w->u, sg = slip > 0 ? 1.0 : slip < 0 ? -1.0 : 0.0;
-      double f = w->area / L->s[k]; /* the wall's stress in this row's units */
       if (w->wall_function) {
         /* the inner node's control volume reaches the wall: add the wall
          * node's solids row to it, then tie the wall node's solids to it */
-        double *Dj = DIAG(L, j), *back = j > k ? LOWER(L, j) : UPPER(L, j);
-        double scale = L->s[k] / L->s[j];
-        back[2] += scale * D[2], back[3] += scale * D[3];
-        double *offk = j > k ? Up : Lo, *other = j > k ? Lo : Up;
-        Dj[2] += scale * offk[2], Dj[3] += scale * offk[3];
-        RHS(L, j)[1] += scale * RHS(L, k)[1];
+        double scale = L->s[k] / L->s[j], *to_k = block_of(L, j, k), *to_j = DIAG(L, j), *off = block_of(L, k, j);
+        for (int c = 0; c < 3; ++c) to_k[3 * S + c] += scale * D[3 * S + c], to_j[3 * S + c] += scale * off[3 * S + c];
+        RHS(L, j)[S] += scale * RHS(L, k)[S];
         double fj = w->area / L->s[j];
-        RHS(L, j)[1] -= fj * tau * sg;
-        Dj[3] += fj * dtau;
-        D[2] = 0.0, D[3] = 1.0, offk[2] = 0.0, offk[3] = -1.0, other[2] = other[3] = 0.0;
-        RHS(L, k)[1] = L->us1[j] - L->us1[k];
+        RHS(L, j)[S] -= fj * tau * sg;
+        to_j[3 * S + S] += fj * dtau;
+        to_k[3 * S + T] += fj * dtau_th * sg;
+        for (int c = 0; c < 3; ++c) D[3 * S + c] = Lo[3 * S + c] = Up[3 * S + c] = 0.0;
+        D[3 * S + S] = 1.0, off[3 * S + S] = -1.0, RHS(L, k)[S] = L->us1[j] - L->us1[k];
       } else {
-        RHS(L, k)[1] -= f * tau * sg;
-        D[3] += f * dtau;
+        double f = w->area / L->s[k]; /* the wall's stress in this row's units */
+        RHS(L, k)[S] -= f * tau * sg;
+        D[3 * S + S] += f * dtau, D[3 * S + T] += f * dtau_th * sg;
+      }
+      if (b == 3 && sl_point_has_output(&L->wall, "theta_flux")) {
+        /* energy into the layer through the wall; its theta derivative only
+         * where it is a sink (for Johnson & Jackson the slip's heating goes
+         * as theta^1/2, whose derivative is unbounded at theta = 0) */
+        RHS(L, k)[T] += w->theta_area * q;
+        if (dq < 0.0) D[3 * T + T] -= w->theta_area * dq;
       }
     }
   }
-  if (block_thomas(L)) return sl_diag_set(d, SL_EFAILED, "the velocity system is singular (no drag, no viscosity?)");
-  double m = 0.0;
+  if (block_thomas(L)) return sl_diag_set(d, SL_EFAILED, "the shear layer's system is singular (no drag, no viscosity?)");
+  double mu = 0.0, mt = 0.0;
   for (int k = 0; k < N; ++k) {
-    double df = RHS(L, k)[0], ds = RHS(L, k)[1];
-    if (!isfinite(df) || !isfinite(ds)) return sl_diag_set(d, SL_EFAILED, "non-finite velocity at x = %g", L->x[k]);
-    L->uf1[k] += df, L->us1[k] += ds;
-    m = fmax(m, fmax(fabs(df), fabs(ds)));
+    double *x = RHS(L, k);
+    for (int r = 0; r < b; ++r)
+      if (!isfinite(x[r])) return sl_diag_set(d, SL_EFAILED, "non-finite update at x = %g", L->x[k]);
+    L->uf1[k] += x[F], L->us1[k] += x[S];
+    mu = fmax(mu, fmax(fabs(x[F]), fabs(x[S])));
+    if (b == 3) { /* theta stays positive: at most a fivefold fall per iteration */
+      double th = fmax(L->th1[k] + x[T], fmax(0.2 * L->th1[k], THETA_FLOOR));
+      mt = fmax(mt, fabs(th - L->th1[k]));
+      L->th1[k] = th;
+    }
   }
-  *dmax = m;
+  *du = mu, *dth = mt;
   return 0;
 }
 
-/* ---- the granular temperature ------------------------------------------------------ */
-
-/* Production of granular energy per node by the kinetic part of the
- * solids viscosity (cell production G^2/(mu g), exact for Couette flow,
- * shared half and half). A constant [solid] viscosity stands for stresses
- * transmitted through the fluid (Bagnold's macro-viscous regime), which
- * heat the fluid, not the particles' fluctuations. */
-static void production(sh_layer *L) {
-  for (int k = 0; k <= L->n; ++k) L->prod[k] = 0.0;
-  for (int i = 0; i < L->n; ++i) {
-    double du = L->a[i + 1] * L->us1[i + 1] - L->a[i] * L->us1[i];
-    double p = (L->muc[i] - L->mu_s_const) * L->gm[i] * du * du; /* the kinetic part only */
-    L->prod[i] += 0.5 * p, L->prod[i + 1] += 0.5 * p;
-  }
-}
+/* ---- the granular temperature, algebraic ------------------------------------------- */
 
 /* Algebraic theta: mu_s0 gdot^2 sqrt(theta) = gamma0 theta^1.5 + 3 K theta
  * at each node, mu_s = mu_s0 sqrt(theta), gamma = gamma0 theta^1.5 (the
@@ -322,63 +390,6 @@ static int theta_algebraic(sh_layer *L, double *dmax, sl_diag *d) {
   return 0;
 }
 
-/* theta from its transport equation at the iterate's velocities: backward
- * Euler, conduction with kappa of the last iterate, the dissipation and
- * the wall's energy flux linearised about the last iterate. */
-static int theta_transport(sh_layer *L, double dt, double *dmax, sl_diag *d) {
-  int N = L->n + 1;
-  production(L);
-  const double *v[Q_N];
-  for (int k = 0; k < N; ++k) L->th1[k] = fmax(L->th1[k], THETA_FLOOR);
-  point_values(L, v, L->phin, NULL, L->th1);
-  sl_point_request rq = {"gamma", L->gam, L->dgam, "theta"};
-  int rc = sl_point_eval(&L->gran, N, v, &rq, 1, d);
-  if (rc) return rc;
-  double *lo = L->blk, *di = lo + N, *up = di + N, *rhs = up + N; /* the block storage is free here */
-  for (int k = 0; k < N; ++k) {
-    double cap = 1.5 * L->rho_s * L->phin[k] * L->V[k] / dt, X = L->exchange ? 3.0 * L->K[k] : 0.0;
-    double g1 = fmax(L->dgam[k], 0.0);
-    di[k] = cap + L->V[k] * (g1 + X);
-    rhs[k] = cap * L->th[k] + L->prod[k] + L->V[k] * (g1 * L->th1[k] - L->gam[k]);
-    lo[k] = up[k] = 0.0;
-    if (k < L->n) {
-      double c = L->kapc[k] * L->gt[k];
-      di[k] += c, up[k] = -c;
-    }
-    if (k > 0) {
-      double c = L->kapc[k - 1] * L->gt[k - 1];
-      di[k] += c, lo[k] = -c;
-    }
-  }
-  for (int side = 0; side < 2; ++side) {
-    sh_wall *w = &L->wall_at[side];
-    if (w->solids != SOLIDS_WALL_STRESS || !sl_point_has_output(&L->wall, "theta_flux")) continue;
-    double tau, dtau, q, dq, bn;
-    if ((rc = eval_wall(L, w, &tau, &dtau, &q, &dq, &bn, d))) return rc;
-    int k = w->node;
-    if (dq <= 0.0) /* a sink that grows with theta: implicit */
-      di[k] -= w->theta_area * dq, rhs[k] += w->theta_area * (q - dq * L->th1[k]);
-    else
-      rhs[k] += w->theta_area * q;
-  }
-  /* Thomas */
-  for (int k = 1; k < N; ++k) {
-    double m = lo[k] / di[k - 1];
-    di[k] -= m * up[k - 1], rhs[k] -= m * rhs[k - 1];
-  }
-  double m = 0.0, next = 0.0;
-  for (int k = N - 1; k >= 0; --k) {
-    double th = (rhs[k] - (k < N - 1 ? up[k] * next : 0.0)) / di[k];
-    if (!isfinite(th)) return sl_diag_set(d, SL_EFAILED, "non-finite granular temperature at x = %g", L->x[k]);
-    next = th;
-    th = fmax(th, THETA_FLOOR);
-    m = fmax(m, fabs(th - L->th1[k]));
-    L->th1[k] = th;
-  }
-  *dmax = m;
-  return 0;
-}
-
 /* ---- one step ---------------------------------------------------------------------- */
 
 static int layer_step(sh_layer *L, double t, double dt, int *iterations, sl_diag *d) {
@@ -397,8 +408,8 @@ static int layer_step(sh_layer *L, double t, double dt, int *iterations, sl_diag
   for (int it = 1; it <= L->max_iterations; ++it) {
     double du = 0.0, dth = 0.0;
     int rc = eval_solids_viscosity(L, d);
-    if (!rc) rc = velocity_update(L, dt, &du, d);
-    if (!rc && L->granular) rc = L->algebraic ? theta_algebraic(L, &dth, d) : theta_transport(L, dt, &dth, d);
+    if (!rc) rc = newton_update(L, dt, &du, &dth, d);
+    if (!rc && L->granular && L->algebraic) rc = theta_algebraic(L, &dth, d);
     if (rc) return rc;
     double th_scale = THETA_FLOOR;
     for (int k = 0; k < N; ++k) th_scale = fmax(th_scale, L->th1[k]);
@@ -431,7 +442,8 @@ static int wall_report(sh_layer *L, sh_wall *w, const double *uf_old, const doub
     w->tau_s = -on_solids / w->area;
   } else if (w->solids == SOLIDS_WALL_STRESS) {
     double tau, dtau, q, dq, bn;
-    int rc = eval_wall(L, w, &tau, &dtau, &q, &dq, &bn, d);
+    double dtau_th;
+    int rc = eval_wall(L, w, &tau, &dtau, &dtau_th, &q, &dq, &bn, d);
     if (rc) return rc;
     int ref = w->wall_function ? w->inner : k;
     w->slip = L->us1[ref] - w->u;
@@ -455,14 +467,14 @@ static int geometry(sh_layer *L, sl_diag *d) {
   size_t N = (size_t)n + 1;
   double **nodes[] = {&L->x, &L->V, &L->a, &L->s, &L->phin, &L->uf, &L->us, &L->th, &L->uf1, &L->us1, &L->th1,
                       &L->K, &L->dK, &L->slip, &L->prod, &L->gam, &L->dgam, &L->work, &L->node_out};
-  double **cells[] = {&L->h, &L->W, &L->gm, &L->gt, &L->phi, &L->muc, &L->kapc, &L->thc, &L->cell_out};
+  double **cells[] = {&L->h, &L->W, &L->gm, &L->gt, &L->phi, &L->muc, &L->muk, &L->dmuc, &L->kapc, &L->thc, &L->cell_out};
   for (size_t k = 0; k < sizeof nodes / sizeof nodes[0]; ++k)
     if (!(*nodes[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
   for (size_t k = 0; k < sizeof cells / sizeof cells[0]; ++k)
     if (!(*cells[k] = calloc((size_t)n, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
   for (int k = 0; k < Q_N; ++k)
     if (!(L->qv[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
-  if (!(L->blk = calloc(N * 14, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+  if (!(L->blk = calloc(N * 30, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
   for (size_t k = 0; k < N; ++k) L->x[k] = m->xy[2 * L->vertex[k]];
   if (L->annular && !(L->x[0] > 0.0)) {
     const sl_ini_entry *e = sl_ini_find(L->ini, "two_fluid", "cross_section");
@@ -907,7 +919,7 @@ static int time_loop(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
 static void release(sh_layer *L) {
   double *all[] = {L->x,  L->h,   L->W,    L->gm,  L->gt,   L->V,    L->a,   L->s,    L->phi,   L->phin,
                    L->uf, L->us,  L->th,   L->uf1, L->us1,  L->th1,  L->K,   L->dK,   L->slip,  L->muc,
-                   L->kapc, L->thc, L->prod, L->gam, L->dgam, L->work, L->blk, L->node_out, L->cell_out};
+                   L->muk, L->dmuc, L->kapc, L->thc, L->prod, L->gam, L->dgam, L->work, L->blk, L->node_out, L->cell_out};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   for (int k = 0; k < Q_N; ++k) free(L->qv[k]);
   sl_point_release(&L->drag), sl_point_release(&L->gran), sl_point_release(&L->wall);
@@ -926,6 +938,7 @@ int sl_shear_layer_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts
   if (!rc) rc = geometry(&L, d);
   if (!rc) rc = physics(&L, reg, d);
   if (!rc && L.granular && L.algebraic) rc = check_kinetic_scaling(&L, d);
+  L.b = L.granular && !L.algebraic ? 3 : 2;
   if (!rc) rc = walls(&L, d);
   if (!rc) rc = initial_state(&L, d);
   if (!rc) rc = open_output(&L, o, d);

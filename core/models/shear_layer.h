@@ -46,10 +46,12 @@
  * annular cell stress uses the exact conductance of the Couette profile,
  * r^2 tau = 2 mu (u/r|_i+1 - u/r|_i) / (r_i^-2 - r_i+1^-2), and the cell's
  * viscous production G^2/(mu g), exact for Couette flow in both geometries.
- * Backward Euler; within a step the velocities are solved by Newton in the
- * drag and the wall stress (a 2x2 block-tridiagonal system), then theta
- * with the dissipation linearised about the last iterate (which keeps
- * theta positive), repeated to convergence.
+ * Backward Euler; within a step u_f, u_s and theta are solved together by
+ * Newton (a 3x3 block-tridiagonal system; 2x2 without a transported theta)
+ * in the drag, the wall stress, the solids viscosity's theta dependence,
+ * the production's shear and the dissipation; kappa, the drag's sink and
+ * the production's own theta dependence are taken from the last iterate,
+ * which keeps the theta rows diagonally dominant and theta positive.
  *
  * Output: cell field phi, node fields velocity_fluid, velocity_solid, theta;
  * with each output time, per wall NAME, the scalars
