@@ -21,10 +21,11 @@ static const char *const field_names[] = {"phi", "velocity_fluid", "velocity_sol
 
 /* The quantities the layer offers its closures, by input name. */
 enum { Q_PHI, Q_SLIP, Q_THETA, Q_RHO_F, Q_MU_F, Q_RHO_S, Q_D_P, Q_SPHERICITY, Q_GRAVITY, Q_SLIP_WALL, Q_WALL_DISTANCE,
-       Q_N };
+       Q_SHEAR_RATE, Q_DENSITY, Q_N };
 static const char *const quantity_names[Q_N] = {"phi",     "slip",       "theta",    "rho_f",
                                                 "mu_f",    "rho_s",      "d_p",      "sphericity",
-                                                "gravity", "slip_wall", "wall_distance"};
+                                                "gravity", "slip_wall", "wall_distance", "shear_rate",
+                                                "density"};
 
 #define SH_PI 3.14159265358979323846
 #define THETA_FLOOR 1e-12 /* m^2/s^2: the kinetic closures' lowest valid theta */
@@ -55,11 +56,12 @@ typedef struct sh_layer {
   double *uf, *us, *th;            /* state at the nodes */
   double *uf1, *us1, *th1;         /* the step's iterate */
   double *K, *dK, *slip, *muc, *muk, *dmuc, *kapc, *thc, *prod, *gam, *dgam, *work; /* work arrays */
+  double *gdc, *rhoc, *mumc; /* cells: solids shear rate, mixture density, mixture viscosity */
   double *blk;                     /* per node: lower, diagonal, upper 3x3 blocks and the rhs (STRIDE) */
   int b;                           /* block size: 2 (u_f, u_s) or 3 (and theta, transported) */
   double *qv[Q_N];                 /* per-point values of constant quantities */
-  sl_closure *drag_c, *gran_c, *wall_c;
-  sl_point_closure drag, gran, wall;
+  sl_closure *drag_c, *gran_c, *wall_c, *visc_c;
+  sl_point_closure drag, gran, wall, visc;
   sh_wall wall_at[2];
   int granular, algebraic, exchange;
   int max_iterations;
@@ -68,7 +70,7 @@ typedef struct sh_layer {
   sl_output *out;
   int fields;
   double *node_out, *cell_out;
-  char params[3][1024];
+  char params[4][1024];
 } sh_layer;
 
 static double cpu_now(void) { return (double)clock() / CLOCKS_PER_SEC; }
@@ -95,17 +97,39 @@ static int eval_drag(sh_layer *L, sl_diag *d) {
 }
 
 /* The solids viscosity in the cells (theta the mean of the cell's nodes). */
+/* The solids phase's viscosity in each cell (its stress is mu_s times the
+ * shear rate, as for the kinetic theory's phase viscosity): [solid]
+ * viscosity, plus the part of the suspension viscosity mu_m of
+ * [closure.viscosity] the fluid's (1 - phi) mu_f leaves, so that the two
+ * phases moving together carry mu_m (the mapping n mu_f + (1 - n) mu_s =
+ * mu_m the digest of seed 000, section 2.3, suggests for what Pringle 2001
+ * leaves unstated, with (1 - n) mu_s the phase's share), 0 where mu_m falls
+ * below (1 - phi) mu_f; plus the kinetic theory's. mu_m is evaluated at the
+ * solids shear rate of the iterate. */
 static int eval_solids_viscosity(sh_layer *L, sl_diag *d) {
-  if (!L->granular) {
-    for (int i = 0; i < L->n; ++i) L->muc[i] = L->mu_s_const, L->muk[i] = L->dmuc[i] = 0.0;
-    return 0;
+  int rc = 0;
+  for (int i = 0; i < L->n; ++i) {
+    double du = L->a[i + 1] * L->us1[i + 1] - L->a[i] * L->us1[i];
+    L->gdc[i] = sqrt(L->gm[i] * du * du / L->W[i]); /* the cell's root-mean-square shear rate */
+    L->muc[i] = L->mu_s_const, L->muk[i] = L->dmuc[i] = 0.0;
   }
+  if (L->visc_c) {
+    const double *v[Q_N];
+    point_values(L, v, L->phi, NULL, NULL);
+    v[Q_SHEAR_RATE] = L->gdc, v[Q_DENSITY] = L->rhoc;
+    sl_point_request rq = {"viscosity", L->mumc, NULL, NULL};
+    if ((rc = sl_point_eval(&L->visc, L->n, v, &rq, 1, d))) return rc;
+    for (int i = 0; i < L->n; ++i)
+      L->muc[i] += fmax(L->mumc[i] - (1.0 - L->phi[i]) * L->mu_f, 0.0);
+  }
+  if (!L->granular) return 0;
   for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th1[i] + L->th1[i + 1]), THETA_FLOOR);
   const double *v[Q_N];
   point_values(L, v, L->phi, NULL, L->thc);
+  v[Q_SHEAR_RATE] = L->gdc, v[Q_DENSITY] = L->rhoc;
   sl_point_request rq[2] = {{"mu_s", L->muk, L->dmuc, "theta"}, {"kappa", L->kapc, NULL, NULL}};
-  int rc = sl_point_eval(&L->gran, L->n, v, rq, L->algebraic ? 1 : 2, d);
-  for (int i = 0; i < L->n && !rc; ++i) L->muc[i] = L->mu_s_const + L->muk[i];
+  rc = sl_point_eval(&L->gran, L->n, v, rq, L->algebraic ? 1 : 2, d);
+  for (int i = 0; i < L->n && !rc; ++i) L->muc[i] += L->muk[i];
   return rc;
 }
 
@@ -467,7 +491,8 @@ static int geometry(sh_layer *L, sl_diag *d) {
   size_t N = (size_t)n + 1;
   double **nodes[] = {&L->x, &L->V, &L->a, &L->s, &L->phin, &L->uf, &L->us, &L->th, &L->uf1, &L->us1, &L->th1,
                       &L->K, &L->dK, &L->slip, &L->prod, &L->gam, &L->dgam, &L->work, &L->node_out};
-  double **cells[] = {&L->h, &L->W, &L->gm, &L->gt, &L->phi, &L->muc, &L->muk, &L->dmuc, &L->kapc, &L->thc, &L->cell_out};
+  double **cells[] = {&L->h, &L->W, &L->gm, &L->gt, &L->phi, &L->muc, &L->muk, &L->dmuc, &L->kapc, &L->thc, &L->cell_out,
+                      &L->gdc, &L->rhoc, &L->mumc};
   for (size_t k = 0; k < sizeof nodes / sizeof nodes[0]; ++k)
     if (!(*nodes[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
   for (size_t k = 0; k < sizeof cells / sizeof cells[0]; ++k)
@@ -536,14 +561,18 @@ static int physics(sh_layer *L, const sl_registry *reg, sl_diag *d) {
   for (int s = 0; s < ini->n_sections; ++s) {
     const char *name = ini->sections[s].name;
     if (strncmp(name, "closure.", 8) == 0 && strcmp(name, "closure.drag") != 0 &&
-        strcmp(name, "closure.granular") != 0 && strcmp(name, "closure.wall_stress") != 0)
+        strcmp(name, "closure.granular") != 0 && strcmp(name, "closure.wall_stress") != 0 &&
+        strcmp(name, "closure.viscosity") != 0)
       return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the two_fluid shear layer uses [closure.drag], "
-                                          "[closure.granular] and [closure.wall_stress]", ini->sections[s].file,
+                                          "[closure.viscosity], [closure.granular] and [closure.wall_stress]",
+                         ini->sections[s].file,
                          ini->sections[s].line, name);
   }
   const char *model = "the two_fluid shear layer";
   if ((rc = sl_closure_from_ini(reg, ini, "closure.drag", &L->drag_c, d))) return rc;
   if ((rc = sl_point_bind(&L->drag, L->drag_c, quantity_names, Q_N, "closure.drag", model, d))) return rc;
+  if (sl_point_has_input(&L->drag, "shear_rate"))
+    return sl_diag_set(d, SL_EBADINPUT, "[closure.drag]: the shear layer gives a drag closure no shear_rate");
   if (!sl_point_has_output(&L->drag, "K") || !sl_point_has_input(&L->drag, "slip"))
     return sl_diag_set(d, SL_EBADINPUT, "[closure.drag]: the closure gives no K of slip");
   L->granular = sl_ini_find_section(ini, "closure.granular") != NULL;
@@ -560,9 +589,18 @@ static int physics(sh_layer *L, const sl_registry *reg, sl_diag *d) {
         return sl_diag_set(d, SL_EBADINPUT, "[closure.granular]: the shear layer needs mu_s, kappa and gamma of "
                                             "(phi, theta); this closure gives no %s", need[k]);
   }
+  if (sl_ini_find_section(ini, "closure.viscosity")) {
+    if ((rc = sl_closure_from_ini(reg, ini, "closure.viscosity", &L->visc_c, d))) return rc;
+    if ((rc = sl_point_bind(&L->visc, L->visc_c, quantity_names, Q_N, "closure.viscosity", model, d))) return rc;
+    if (!sl_point_has_output(&L->visc, "viscosity"))
+      return sl_diag_set(d, SL_EBADINPUT, "[closure.viscosity]: the closure gives no viscosity");
+  }
   if (sl_ini_find_section(ini, "closure.wall_stress")) {
     if ((rc = sl_closure_from_ini(reg, ini, "closure.wall_stress", &L->wall_c, d))) return rc;
     if ((rc = sl_point_bind(&L->wall, L->wall_c, quantity_names, Q_N, "closure.wall_stress", model, d))) return rc;
+    if (sl_point_has_input(&L->wall, "shear_rate"))
+      return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: the shear layer gives a wall closure no shear_rate "
+                                          "(its slip_wall and wall_distance give the wall's shear rate)");
   }
   for (int k = 0; k <= L->n; ++k) {
     L->qv[Q_RHO_F][k] = L->rho_f, L->qv[Q_MU_F][k] = L->mu_f, L->qv[Q_RHO_S][k] = L->rho_s;
@@ -683,6 +721,8 @@ static int initial_state(sh_layer *L, sl_diag *d) {
     }
     L->phin[k] = num / den;
   }
+  for (int i = 0; i < L->n; ++i) L->rhoc[i] = L->rho_f * (1.0 - L->phi[i]) + L->rho_s * L->phi[i];
+  for (int k = 0; k <= L->n; ++k) L->qv[Q_DENSITY][k] = L->rho_f * (1.0 - L->phin[k]) + L->rho_s * L->phin[k];
   if (!L->granular)
     for (int k = 0; k <= L->n; ++k) L->th[k] = 0.0;
   for (int side = 0; side < 2; ++side) {
@@ -724,12 +764,12 @@ static int open_output(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
   free(cells), free(coords);
   if (rc) return rc;
   char *ini_text = sl_ini_to_string(L->ini);
-  sl_provenance_closure pc[3];
+  sl_provenance_closure pc[4];
   sl_provenance pv = {.sluice_version = o->sluice_version ? o->sluice_version : "unknown", .ini_text = ini_text,
                       .closures = pc};
-  const sl_closure *cl[3] = {L->drag_c, L->gran_c, L->wall_c};
-  const char *roles[3] = {"closure.drag", "closure.granular", "closure.wall_stress"};
-  for (int k = 0; k < 3; ++k)
+  const sl_closure *cl[4] = {L->drag_c, L->gran_c, L->wall_c, L->visc_c};
+  const char *roles[4] = {"closure.drag", "closure.granular", "closure.wall_stress", "closure.viscosity"};
+  for (int k = 0; k < 4; ++k)
     if (cl[k]) pc[pv.n_closures++] = sl_scene_closure_provenance(cl[k], roles[k], L->params[k], sizeof L->params[k]);
   rc = sl_output_write_provenance(L->out, &pv, d);
   free(ini_text);
@@ -919,11 +959,12 @@ static int time_loop(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
 static void release(sh_layer *L) {
   double *all[] = {L->x,  L->h,   L->W,    L->gm,  L->gt,   L->V,    L->a,   L->s,    L->phi,   L->phin,
                    L->uf, L->us,  L->th,   L->uf1, L->us1,  L->th1,  L->K,   L->dK,   L->slip,  L->muc,
-                   L->muk, L->dmuc, L->kapc, L->thc, L->prod, L->gam, L->dgam, L->work, L->blk, L->node_out, L->cell_out};
+                   L->muk, L->dmuc, L->kapc, L->thc, L->gdc, L->rhoc, L->mumc, L->prod, L->gam, L->dgam, L->work, L->blk, L->node_out, L->cell_out};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   for (int k = 0; k < Q_N; ++k) free(L->qv[k]);
-  sl_point_release(&L->drag), sl_point_release(&L->gran), sl_point_release(&L->wall);
+  sl_point_release(&L->drag), sl_point_release(&L->gran), sl_point_release(&L->wall), sl_point_release(&L->visc);
   sl_closure_destroy(L->drag_c), sl_closure_destroy(L->gran_c), sl_closure_destroy(L->wall_c);
+  sl_closure_destroy(L->visc_c);
   for (int side = 0; side < 2; ++side) sl_expr_free(L->wall_at[side].speed);
   free(L->vertex), free(L->cell_of);
   sl_mesh_destroy(L->mesh);

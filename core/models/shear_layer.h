@@ -12,11 +12,14 @@
  * tau = mu r d(u/r)/dr (annular):
  *   rho_f (1-phi) du_f/dt = (1/r^m) d(r^m tau_f)/dx - K (u_f - u_s),  mu = (1-phi) mu_f
  *   rho_s phi     du_s/dt = (1/r^m) d(r^m tau_s)/dx + K (u_f - u_s),  mu = mu_s
- * (m = 0 planar, 2 annular), K from [closure.drag]. mu_s is [solid]
- * viscosity (a constant, default 0: stresses carried through the fluid,
- * such as Bagnold's macro-viscous one) plus, with [closure.granular], the
- * kinetic theory's viscosity, whose production heats the particles: the
- * granular energy balance (Krampa 2009 eq
+ * (m = 0 planar, 2 annular), K from [closure.drag]. mu_s, the solids
+ * phase's viscosity, is the sum of [solid] viscosity (a constant, default 0:
+ * stresses carried through the fluid, such as Bagnold's macro-viscous one),
+ * the part mu_m - (1 - phi) mu_f of a suspension viscosity mu_m from
+ * [closure.viscosity] (Krieger-Dougherty, Pringle's granular fit, ...; at
+ * the solids shear rate) and, with [closure.granular], the kinetic
+ * theory's, whose production alone heats the particles: the granular
+ * energy balance (Krampa 2009 eq
  * 5.10 in the standard form its digest gives, section 2.5: the printed
  * production and dissipation signs are inverted)
  *   (3/2) rho_s phi dtheta/dt = (1/r^n) d(r^n kappa dtheta/dx)/dx + mu_s gdot^2 - gamma - 3 K theta

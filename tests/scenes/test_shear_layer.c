@@ -203,6 +203,38 @@ static void annular_couette(void) {
   CHECK_CLOSE(scalar("couette.h5", "torque_right", INFINITY), 4.0 * PI * (muf + mus) * B, 1e-10);
 }
 
+/* The solids' share of a suspension viscosity: Krieger & Dougherty (1959)
+ * mu_m = mu_f (1 - phi/phi_m)^(-[eta] phi_m), phi_m = 0.68, [eta] = 2.5:
+ * the fluid carries (1 - phi) mu_f, the solids phase mu_m - (1 - phi) mu_f. */
+static const char couette_kd_text[] =
+    "[scene]\nmodel = two_fluid\ngeometry = line\n"
+    "[mesh]\ngenerator = interval\nx = 0.05, 0.06\ncells = 5\n"
+    "[fluid]\ndensity = 1000\nviscosity = 1e-3\n"
+    "[solid]\ndensity = 1000\ndiameter = 1e-3\n"
+    "[closure.drag]\nmodel = wen_yu\n"
+    "[closure.viscosity]\nmodel = krieger_dougherty\n"
+    "[two_fluid]\nmotion = shear\ncross_section = annular\ntolerance = 1e-13\n"
+    "[initial]\nphi = 0.45\n"
+    "[boundary.left]\ntype = wall\nvelocity = 0\n"
+    "[boundary.right]\ntype = wall\nvelocity = 0.3\n"
+    "[time]\nend = 1e4\ndt = 1e3\n";
+
+static void couette_viscosity_closure(void) {
+  sl_diag d = {{0}};
+  int rc = run_text("couette_kd", couette_kd_text, NULL, "couette_kd.h5", NULL, &d);
+  CHECK_MSG(rc == 0, "%s", d.msg);
+  if (rc) return;
+  const double ri = 0.05, ro = 0.06, U = 0.3, A = U * ro / (ro * ro - ri * ri), B = -A * ri * ri, phi = 0.45;
+  double mum = 1e-3 * pow(1.0 - phi / 0.68, -2.5 * 0.68), mus = mum - (1.0 - phi) * 1e-3;
+  double ts = scalar("couette_kd.h5", "wall_shear_stress_solid_left", INFINITY);
+  double tf = scalar("couette_kd.h5", "wall_shear_stress_fluid_left", INFINITY);
+  printf("annular Couette, Krieger-Dougherty at phi = 0.45: mu_m = %.6g Pa s, solids phase mu_s = %.6g Pa s; wall "
+         "stresses fluid %.6g, solids %.6g Pa\n", mum, mus, tf, ts);
+  CHECK_CLOSE(ts, -2.0 * mus * B / (ri * ri), 1e-10);
+  CHECK_CLOSE(tf, -2.0 * (1.0 - phi) * 1e-3 * B / (ri * ri), 1e-10);
+  CHECK_CLOSE(tf + ts, -2.0 * mum * B / (ri * ri), 1e-10);
+}
+
 /* ---- shear_cell: Bagnold's regimes ------------------------------------------------ */
 
 typedef struct cell_result {
@@ -329,6 +361,7 @@ int main(void) {
   snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
   ktgf_shear();
   annular_couette();
+  couette_viscosity_closure();
   shear_cell();
   johnson_jackson_walls();
   restart();
