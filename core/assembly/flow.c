@@ -133,6 +133,19 @@ static void eval_state(const flow_work *w, const sl_th_space *th, const double *
   }
 }
 
+/* T : grad(phi e_A) for the symmetric T (sym3 order) and the basis function
+ * phi with gradient dphi at radius r: its gradient tensor has the row A
+ * (grad phi) and, axisymmetric, the hoop entries (theta, theta) = phi / r
+ * for A = r and (r, theta) = -phi / r for A = theta (see flow.h). */
+static double stress_contraction(const sym3 *T, int A, double phi, const double *dphi, int dim, int axi, double r) {
+  static const int at[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+  double s = 0.0;
+  for (int j = 0; j < dim; ++j) s += T->v[at[A][j]] * dphi[j];
+  if (axi && A == 0) s += T->v[2] * phi / r;
+  if (axi && A == 2) s -= T->v[4] * phi / r;
+  return s;
+}
+
 /* One trial/test function phi_i e_a at a quadrature point. */
 typedef struct basis_vec {
   sym3 D;      /* D(phi e_a) */
@@ -176,6 +189,16 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       double w2 = rq * o->omega * o->omega;
       if (axi) f[0] += w2 * r;
       else f[0] += w2 * (fv->x[q][0] - o->rotation_centre[0]), f[1] += w2 * (fv->x[q][1] - o->rotation_centre[1]);
+    }
+    if (o->extra_stress) { /* -div T, weakly + int T : grad(v); T interpolated in the pressure space */
+      sym3 T = {{0}};
+      const int32_t *pd = th->pres->cell_dofs + (size_t)c * np;
+      for (int k = 0; k < np; ++k)
+        for (int e = 0; e < 6; ++e) T.v[e] += o->extra_stress[6 * (size_t)pd[k] + e] * fv->phi[1][q][k];
+      for (int a = 0; a < nc; ++a)
+        for (int i = 0; i < nb; ++i)
+          w->be[a * nb + i] +=
+              wq * stress_contraction(&T, w->frame[a], fv->phi[0][q][i], fv->grad[0][q][i], dim, axi, r);
     }
     if (lin == SL_FLOW_LOAD) { /* the u-independent part of the momentum residual only */
       for (int a = 0; a < nc; ++a) {
@@ -341,7 +364,9 @@ static int assemble_batch(flow_work *w, const sl_th_space *th, const sl_flow_opt
   int nq = w->fv->quad.n, rc = 0;
   for (int i = 0; i < n && !rc; ++i) {
     size_t at = (size_t)i * nq;
-    rc = w->load_only ? sl_fe_values_reinit_measure(w->fv, first + i, d) : sl_fe_values_reinit(w->fv, first + i, d);
+    /* the load pass needs the basis gradients for the extra stress only */
+    rc = w->load_only && !o->extra_stress ? sl_fe_values_reinit_measure(w->fv, first + i, d)
+                                          : sl_fe_values_reinit(w->fv, first + i, d);
     if (rc) break;
     element(w, th, o, a->lin, w->state + at, w->batch.shear_rate + at, w->rho + at, w->mu + 2 * at,
             w->force + at * th->n_comp);

@@ -2,10 +2,11 @@
  * pairs: the residual and its Jacobian (Newton) or its Oseen/Picard
  * linearisation, for
  *
- *   rho (du/dt + (u.grad)u + 2 Omega x u) - div(2 mu(gamma) D(u)) + grad p = f,
+ *   rho (du/dt + (u.grad)u + 2 Omega x u) - div(2 mu(gamma) D(u)) + grad p = f - div T,
  *   div u = 0,             gamma = sqrt(2 D(u):D(u)) (the shear rate),
  *
- * in 2-D planar, axisymmetric (r, z) and 1-D geometry.
+ * with T an optional given stress (the mixture model's relative-flux
+ * stress), in 2-D planar, axisymmetric (r, z) and 1-D geometry.
  *
  * Velocity components (th->n_comp): the dim in-plane ones, plus optionally
  * one normal to the plane (n_comp == dim + 1): in a planar scene the
@@ -38,8 +39,9 @@ typedef enum sl_flow_linearisation {
   SL_FLOW_NEWTON,       /* A = dR/du, b = -R(u) */
   SL_FLOW_PICARD,       /* A = the Oseen operator with frozen mu and advecting velocity */
   SL_FLOW_LOAD          /* b = the part of -R that does not depend on u (the history term, the body force
-                           with the centrifugal one); the matrix is not touched, u is not read, the viscosity
-                           not evaluated. For a problem linear in u with A = dR/du: -R(u) = b - A u */
+                           with the centrifugal one, the extra stress); the matrix is not touched, u is not
+                           read, the viscosity not evaluated. For a problem linear in u with A = dR/du:
+                           -R(u) = b - A u */
 } sl_flow_linearisation;
 
 typedef struct sl_flow_opts {
@@ -54,6 +56,12 @@ typedef struct sl_flow_opts {
   double rotation_centre[2];
   sl_qp_fn body_force;   /* f (N m^-3), n_comp per point in the velocity's components; NULL: none */
   void *body_force_user;
+  /* A given symmetric stress T (Pa) in the momentum as -div T, weakly b += int T : grad(v) (natural form: a
+   * traction boundary prescribes (sigma - T) n); right-hand side only. Given in the pressure space (continuous,
+   * order 1), 6 values per pressure dof: the entries 00, 11, 22, 01, 02, 12 in the frame (e_0, e_1, e_2)
+   * (axisymmetric: r, z, theta). There the pressure can balance it exactly: a T = -p I + const of that space
+   * leaves the velocity at rest. NULL: none. */
+  const double *extra_stress;
   double mass_coef;      /* 0: steady */
   const double *history; /* combined numbering (velocity part read); NULL: zero */
   int quad_degree;       /* 0: 5 planar (exact for the Q2 convective term on affine cells), 7 axisymmetric */

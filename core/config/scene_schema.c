@@ -85,6 +85,8 @@ static const sl_key_spec mixture_keys[] = {
      "the acceleration the settling closure is evaluated at, m s^-2 (default |g|, else the frame's largest "
      "centrifugal one, else 1)"},
     {"diffusivity", SL_KEY_REAL, 0, 0.0, 1e6, NULL, "particle diffusivity eps: the flux -eps grad(phi), m^2 s^-1"},
+    {"relative_flux_stress", SL_KEY_BOOL, 0, 0, 0, NULL,
+     "the momentum carries the stress rho_f j_R j_R / (phi (1 - phi)) of the settling flux (Nigam 1999 eq 2.16)"},
 };
 static const sl_key_spec two_fluid_keys[] = {
     {"iterations", SL_KEY_INT, 0, 1, 1000, NULL, "two_fluid: most iterations of one implicit step before it is retried smaller"},

@@ -93,7 +93,12 @@ typedef struct mixture {
   double g[2], g_ref, omega, centre[2];
   settling st;
   int slip_acceleration; /* [mixture]: the slip follows g - Dj/Dt */
-  double *acc;           /* [2 n_cells] Dj/Dt (+ Coriolis) at the cell points */
+  double *acc;           /* [2 n_cells] Dj/Dt (+ Coriolis) at the cell points (zero before the first step) */
+  int relative_flux_stress; /* [mixture]: the momentum carries -div(rho_f j_R j_R / (phi (1 - phi))) */
+  double *cell_stress;      /* [3 n_cells] its entries 00, 11, 01 per cell of the trial state */
+  double *settle_speed;     /* [n_cells] u_settle(phi) of the cells (scratch) */
+  double *node_stress;      /* [6 pressure dofs] of the current state: the flow's extra stress */
+  double *node_weight;      /* [pressure dofs] 1 / the cell volume around the node */
   double *b_face;        /* [2 n_faces] the body-force direction per face */
   sl_transport_opts topts;
   sl_transport *tr;
@@ -242,6 +247,86 @@ static void set_flux_floor(mixture *x) {
   double wmax = 0.0;
   for (int f = 0; f < x->m->n_faces; ++f) wmax = fmax(wmax, fabs(x->w[f]));
   x->flux_floor = wmax * sl_transport_table(x->tr)->F_absmax;
+}
+
+/* ---- the stress of the relative motion -------------------------------------- */
+
+/* Nigam (1999) eq 2.16 (in 2.19 and 2.31): the mixture momentum carries
+ * -div[rho_f j_R j_R / (phi (1 - phi))] (dimensional; digest of seed 002,
+ * sections 1.3 and 1.6), the momentum flux of the two phases' motion
+ * relative to the volume-averaged j. With the settling flux j_R = phi
+ * u_settle(phi) b of the transport (b the slip direction relative to
+ * g_ref at the cell point: the body force, minus Dj/Dt with
+ * slip_acceleration, as of the step that gave phi), per cell
+ *
+ *   T = rho_f phi u_settle(phi)^2 / (1 - phi) b b   (= rho_f phi (1 - phi) v_R v_R, v_R = u_settle b / (1 - phi)),
+ *
+ * finite at phi = 0, zero at phi_max where u_settle vanishes (and taken as
+ * zero at phi = 1). The migration and diffusion fluxes are not part of it.
+ * Entries 00, 11, 01 per cell into cell_stress. */
+static int stress_of(mixture *x, const double *phi_cells, sl_diag *d) {
+  int nc = x->m->n_cells;
+  const double *var[MAX_IN] = {0};
+  var[x->st.in_phi] = phi_cells;
+  int rc = bound_eval(&x->st.b, nc, var, x->st.out_u, x->settle_speed, 0, NULL, d);
+  if (rc) return sl_diag_prefix(d, rc, "relative-flux stress");
+  const double *xc = sl_transport_cell_points(x->tr);
+  for (int c = 0; c < nc; ++c) {
+    double b[2], phi = phi_cells[c], us = x->settle_speed[c];
+    body_direction(x, xc + 2 * c, b);
+    if (x->slip_acceleration) b[0] -= x->acc[2 * c] / x->g_ref, b[1] -= x->acc[2 * c + 1] / x->g_ref;
+    double tau = phi < 1.0 ? x->rho_f * phi * us * us / (1.0 - phi) : 0.0;
+    double *T = x->cell_stress + 3 * (size_t)c;
+    T[0] = tau * b[0] * b[0], T[1] = tau * b[1] * b[1], T[2] = tau * b[0] * b[1];
+  }
+  return 0;
+}
+
+/* The flow takes the stress in its pressure space (continuous, order 1;
+ * sl_flow_opts extra_stress): at each pressure node the volume-weighted mean
+ * of cell_stress over the cells around it. Continuous, the stress of a
+ * column at rest is then balanced by the pressure alone, as the buoyancy of
+ * the cells' phi is; cell values would put point loads on the faces, which a
+ * continuous pressure cannot balance (the velocity would oscillate about
+ * every jump of phi). */
+static void node_stress_of(mixture *x) {
+  const sl_dofmap *pm = x->th->pres;
+  const double *vol = sl_transport_volumes(x->tr);
+  int np = pm->dofs_per_cell;
+  memset(x->node_stress, 0, (size_t)6 * pm->n_dofs * sizeof *x->node_stress);
+  for (int c = 0; c < x->m->n_cells; ++c)
+    for (int k = 0; k < np; ++k) {
+      double *T = x->node_stress + 6 * (size_t)pm->cell_dofs[(size_t)c * np + k];
+      const double *Tc = x->cell_stress + 3 * (size_t)c;
+      T[0] += vol[c] * Tc[0], T[1] += vol[c] * Tc[1], T[3] += vol[c] * Tc[2];
+    }
+  for (int32_t i = 0; i < pm->n_dofs; ++i)
+    for (int e = 0; e < 6; ++e) x->node_stress[6 * (size_t)i + e] *= x->node_weight[i];
+}
+
+/* The node weights of node_stress_of (1 / the volume around each pressure
+ * node), the buffers, and the stress of the initial state. */
+static int stress_setup(mixture *x, sl_diag *d) {
+  if (!x->st.b.c)
+    return sl_diag_set(d, SL_EBADINPUT, "[mixture] relative_flux_stress = true needs the relative flux of a "
+                                        "[closure.hindered_settling]; the scene has none");
+  const sl_dofmap *pm = x->th->pres;
+  int nc = x->m->n_cells, np = pm->dofs_per_cell;
+  x->cell_stress = malloc((size_t)3 * nc * sizeof *x->cell_stress);
+  x->settle_speed = malloc((size_t)nc * sizeof *x->settle_speed);
+  x->node_stress = malloc((size_t)6 * pm->n_dofs * sizeof *x->node_stress);
+  x->node_weight = calloc((size_t)pm->n_dofs, sizeof *x->node_weight);
+  if (!x->cell_stress || !x->settle_speed || !x->node_stress || !x->node_weight)
+    return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+  const double *vol = sl_transport_volumes(x->tr);
+  for (int c = 0; c < nc; ++c)
+    for (int k = 0; k < np; ++k) x->node_weight[pm->cell_dofs[(size_t)c * np + k]] += vol[c];
+  for (int32_t i = 0; i < pm->n_dofs; ++i) x->node_weight[i] = x->node_weight[i] > 0.0 ? 1.0 / x->node_weight[i] : 0.0;
+  int rc = stress_of(x, x->phi, d);
+  if (rc) return rc;
+  node_stress_of(x);
+  x->cpl.extra_stress = x->node_stress;
+  return 0;
 }
 
 /* ---- diagnostics -------------------------------------------------------------- */
@@ -487,7 +572,7 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
       return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
   }
   if (x->slip_acceleration) {
-    x->acc = malloc((size_t)2 * nc * sizeof *x->acc);
+    x->acc = calloc((size_t)2 * nc, sizeof *x->acc);
     x->b_face = malloc((size_t)2 * nf * sizeof *x->b_face);
     if (!x->acc || !x->b_face) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
   }
@@ -498,6 +583,7 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
   if ((rc = migration_setup(x, d))) return rc;
   if ((rc = initial_phi(x, d))) return rc;
   x->inventory = x->inventory0 = sl_transport_mass(x->tr, x->phi);
+  if (x->relative_flux_stress && (rc = stress_setup(x, d))) return rc;
   /* interface levels */
   const sl_ini_entry *le = sl_ini_find(x->ini, "output", "interface");
   if (le) {
@@ -534,7 +620,7 @@ static int advance(void *user, double t, double dt, const double *u, const doubl
   x->trial_substeps = st.n_substeps, x->trial_fallbacks = st.n_fallbacks;
   x->trial_inflow = st.boundary_inflow;
   x->max_div = fmax(x->max_div, st.max_divergence);
-  return 0;
+  return x->relative_flux_stress ? stress_of(x, x->trial, d) : 0;
 }
 
 static void accept(void *user) {
@@ -545,6 +631,7 @@ static void accept(void *user) {
   x->inventory = sl_transport_mass(x->tr, x->phi);
   x->substeps += x->trial_substeps, x->fallbacks += x->trial_fallbacks, ++x->advances;
   x->max_raw_div = fmax(x->max_raw_div, x->trial_raw_div);
+  if (x->relative_flux_stress) node_stress_of(x);
 }
 
 static int write(void *user, sl_output *out, sl_diag *d) {
@@ -595,7 +682,11 @@ static int checkpoint(void *user, sl_checkpoint_array *a, int max) {
   x->book[0] = x->inventory0, x->book[1] = x->inflow;
   snprintf(a[1].name, sizeof a[1].name, "solids_book");
   a[1].n = 2, a[1].data = x->book;
-  return 2;
+  if (!x->relative_flux_stress || max < 3) return 2;
+  /* it holds the slip direction of the last step, which phi alone does not give */
+  snprintf(a[2].name, sizeof a[2].name, "relative_flux_stress");
+  a[2].n = 6 * (int64_t)x->th->pres->n_dofs, a[2].data = x->node_stress;
+  return 3;
 }
 
 static int restore(void *user, const sl_checkpoint *ck, sl_diag *d) {
@@ -606,7 +697,15 @@ static int restore(void *user, const sl_checkpoint *ck, sl_diag *d) {
   memcpy(x->phi, p->data, (size_t)p->n * sizeof *x->phi);
   x->inventory0 = b->data[0], x->inflow = b->data[1];
   x->inventory = sl_transport_mass(x->tr, x->phi);
-  return 0;
+  if (!x->relative_flux_stress) return 0;
+  const sl_checkpoint_array *s = sl_checkpoint_find(ck, "relative_flux_stress");
+  if (s && s->n == 6 * (int64_t)x->th->pres->n_dofs) {
+    memcpy(x->node_stress, s->data, (size_t)s->n * sizeof *x->node_stress);
+    return 0;
+  }
+  int rc = stress_of(x, x->phi, d); /* saved without it: from phi */
+  if (!rc) node_stress_of(x);
+  return rc;
 }
 
 static int provenance(void *user, sl_provenance_closure *pc, int max, char *buf, size_t len) {
@@ -636,6 +735,7 @@ int sl_mixture_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o,
   x.cpl.field_names = field_names, x.cpl.n_fields = (int)(sizeof field_names / sizeof field_names[0]);
   x.cpl.setup = setup, x.cpl.cell_phi = cell_phi, x.cpl.advance = advance, x.cpl.accept = accept;
   x.cpl.write = write, x.cpl.checkpoint = checkpoint, x.cpl.restore = restore, x.cpl.provenance = provenance;
+  if ((rc = sl_ini_get_bool(ini, "mixture", "relative_flux_stress", 0, 0, &x.relative_flux_stress, d))) return rc;
   sl_ns_run_opts oo = *o;
   oo.coupling = &x.cpl;
   rc = sl_ns_run(ini, reg, &oo, res, d);
@@ -650,6 +750,7 @@ int sl_mixture_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o,
   sl_transport_destroy(x.tr);
   sl_face_flux_destroy(x.ff);
   free(x.phi), free(x.trial), free(x.q), free(x.w), free(x.q_acc), free(x.acc), free(x.b_face), free(x.psi), free(x.node_psi);
+  free(x.cell_stress), free(x.settle_speed), free(x.node_stress), free(x.node_weight);
   sl_stream_graph_free(&x.pg);
   free(x.st.b.buf);
   sl_closure_destroy(x.st.b.c);

@@ -10,11 +10,13 @@
  * phi, shear_rate, density, mu_f), u_settle from
  * [closure.hindered_settling] along b, the body force per unit mass
  * relative to its magnitude g_ref: gravity, plus the centrifugal
- * acceleration in a rotating frame ([flow] rotation). Dropped against Nigam
- * (2.31): the j_R j_R stress and the epsilon-acceleration terms (his
- * conclusion: no effect seen in his simulations), and in j_R the
- * acceleration dj/dt + j.grad j (small when the particle relaxation time
- * is short against the flow's).
+ * acceleration in a rotating frame ([flow] rotation), minus Dj/Dt with
+ * [mixture] slip_acceleration (Nigam eq 2.25). Optional ([mixture]
+ * relative_flux_stress): the stress of the relative motion,
+ * -div[rho_f j_R j_R / (phi (1 - phi))] on the right of the momentum
+ * (Nigam eq 2.16). Dropped against Nigam (2.31): the epsilon-acceleration
+ * terms (his conclusion, for them and the j_R j_R stress: no effect seen in
+ * his simulations).
  *
  * Time splitting: every step solves the flow with phi frozen at t_n, then
  * moves phi from t_n to t_n + dt by the finite-volume transport
@@ -25,6 +27,8 @@
  * Scene sections beyond navier_stokes.h's:
  *   [solid]      density, diameter, phi_max, sphericity
  *   [closure.hindered_settling]   the settling law (none: no settling)
+ *   [mixture]    slip_acceleration, reference_acceleration, diffusivity,
+ *                relative_flux_stress
  *   [initial]    phi = expression of x, y (cell centroids)
  *   [boundary.N] phi = the solids fraction of inflow on open boundaries
  *   [transport]  order = 1|2, limiter = mc|minmod, cfl

@@ -264,6 +264,7 @@ static void physics_opts(physics *ph, sl_flow_opts *o) {
   o->viscosity_value = ph->viscosity;
   o->body_force = ph->has_force ? force_fn : NULL;
   o->body_force_user = ph;
+  o->extra_stress = ph->cpl ? ph->cpl->extra_stress : NULL;
 }
 
 /* ---- boundary conditions ------------------------------------------------- */
@@ -1013,6 +1014,7 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
     rc = r.cpl->setup(r.cpl->user, r.th, &r.prob.opts, open, r.bcs.pairs, r.bcs.n_pairs, r.cpl_fields, d);
     free(open);
     if (rc) goto out;
+    r.prob.opts.extra_stress = r.cpl->extra_stress; /* allocated by the set-up */
   }
   r.datum = !r.bcs.has_natural;
   for (int i = 0; i < r.bcs.n; ++i)

@@ -52,6 +52,10 @@ typedef struct sl_ns_coupling {
   int (*setup)(void *user, const sl_th_space *th, const sl_flow_opts *flow, const unsigned char *open,
                const sl_periodic_pair *pairs, int n_pairs, unsigned fields, sl_diag *d);
   const double *(*cell_phi)(void *user);                 /* the current cell values */
+  /* An extra stress T of the coupled model in the flow's momentum, -div T,
+   * in the pressure space (sl_flow_opts extra_stress); set by setup and
+   * kept current by the coupling through the run; NULL: none. */
+  const double *extra_stress;
   /* Into a trial state, from the converged velocity u at t + dt and the
    * integrator's time derivative dudt of it (both combined numbering). */
   int (*advance)(void *user, double t, double dt, const double *u, const double *dudt, sl_diag *d);
