@@ -14,6 +14,7 @@
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/point_eval.h"
+#include "core/time/fixed_step.h"
 
 enum { SOLIDS_NO_SLIP = 0, SOLIDS_FREE_SLIP = 1, SOLIDS_WALL_STRESS = 2 };
 enum { F_PHI = 1, F_UF = 2, F_US = 4, F_THETA = 8 };
@@ -55,6 +56,7 @@ typedef struct sh_layer {
   double *phi, *phin;              /* cells, nodes (held) */
   double *uf, *us, *th;            /* state at the nodes */
   double *uf1, *us1, *th1;         /* the step's iterate */
+  double *uf_old, *us_old, dt_last; /* the state before the last accepted step, and that step */
   double *K, *dK, *slip, *muc, *muk, *dmuc, *kapc, *thc, *prod, *gam, *dgam, *work; /* work arrays */
   double *gdc, *rhoc, *mumc; /* cells: solids shear rate, mixture density, mixture viscosity */
   double *blk;                     /* per node: lower, diagonal, upper 3x3 blocks and the rhs (STRIDE) */
@@ -361,7 +363,8 @@ static int newton_update(sh_layer *L, double dt, double *du, double *dth, sl_dia
       }
     }
   }
-  if (block_thomas(L)) return sl_diag_set(d, SL_EFAILED, "the shear layer's system is singular (no drag, no viscosity?)");
+  if (block_thomas(L))
+    return sl_diag_set(d, SL_EFAILED, "the shear layer's system is singular (no drag, no viscosity?)");
   double mu = 0.0, mt = 0.0;
   for (int k = 0; k < N; ++k) {
     double *x = RHS(L, k);
@@ -489,14 +492,16 @@ static int geometry(sh_layer *L, sl_diag *d) {
   int rc = sl_scene_line_chain(m, L->vertex, L->cell_of, d);
   if (rc) return sl_diag_prefix(d, rc, "two_fluid (motion = shear)");
   size_t N = (size_t)n + 1;
-  double **nodes[] = {&L->x, &L->V, &L->a, &L->s, &L->phin, &L->uf, &L->us, &L->th, &L->uf1, &L->us1, &L->th1,
-                      &L->K, &L->dK, &L->slip, &L->prod, &L->gam, &L->dgam, &L->work, &L->node_out};
-  double **cells[] = {&L->h, &L->W, &L->gm, &L->gt, &L->phi, &L->muc, &L->muk, &L->dmuc, &L->kapc, &L->thc, &L->cell_out,
-                      &L->gdc, &L->rhoc, &L->mumc};
+  double **nodes[] = {&L->uf_old, &L->us_old, &L->x,    &L->V,  &L->a,   &L->s,    &L->phin,
+                      &L->uf,     &L->us,     &L->th,   &L->uf1, &L->us1, &L->th1,  &L->K,
+                      &L->dK,     &L->slip,   &L->prod, &L->gam, &L->dgam, &L->work, &L->node_out};
+  double **cells[] = {&L->h,    &L->W,   &L->gm,  &L->gt,       &L->phi, &L->muc,  &L->muk,
+                      &L->dmuc, &L->kapc, &L->thc, &L->cell_out, &L->gdc, &L->rhoc, &L->mumc};
   for (size_t k = 0; k < sizeof nodes / sizeof nodes[0]; ++k)
     if (!(*nodes[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
   for (size_t k = 0; k < sizeof cells / sizeof cells[0]; ++k)
-    if (!(*cells[k] = calloc((size_t)n, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+    if (!(*cells[k] = calloc((size_t)n, sizeof(double))))
+      return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
   for (int k = 0; k < Q_N; ++k)
     if (!(L->qv[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
   if (!(L->blk = calloc(N * 30, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
@@ -853,113 +858,62 @@ static int report_walls(sh_layer *L, const double *uf_old, const double *us_old,
   return rc;
 }
 
-/* ---- the time loop ----------------------------------------------------------------- */
+/* ---- the time loop (core/time/fixed_step) ------------------------------------------------ */
 
-static int time_loop(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
-  double end, dt_cfg, dt_min, every;
-  long max_steps;
-  int rc = sl_ini_get_real(L->ini, "time", "end", 1, 0, 0, 1e12, &end, d);
-  if (!rc) rc = sl_ini_get_real(L->ini, "time", "dt", 1, 0, 1e-15, 1e9, &dt_cfg, d);
-  if (!rc) rc = sl_ini_get_real(L->ini, "time", "dt_min", 0, dt_cfg * 1e-6, 0, 1e9, &dt_min, d);
-  if (!rc) rc = sl_ini_get_int(L->ini, "time", "max_steps", 0, 100000000L, 1, 100000000L, &max_steps, d);
-  if (!rc) rc = sl_ini_get_real(L->ini, "output", "every", 0, 0.0, 0.0, 1e12, &every, d);
-  if (rc) return rc;
-  int N = L->n + 1;
-  double *uf_old = malloc((size_t)N * sizeof *uf_old), *us_old = malloc((size_t)N * sizeof *us_old);
-  if (!uf_old || !us_old) {
-    free(uf_old), free(us_old);
-    return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
-  }
-  double t = 0.0, h = dt_cfg;
-  long step = 0, steps_here = 0;
-  if (o->restart) rc = restore(L, o->restart, &t, &h, &step, d);
-  if (!rc) rc = report_walls(L, L->uf, L->us, 0.0, d);
-  if (!rc && !o->restart && !(rc = write_state(L, 0.0, d))) rc = write_checkpoint(L, 0.0, h, 0, d);
-  if (rc) {
-    free(uf_old), free(us_old);
-    return rc;
-  }
-  L->res->t_start = t;
-  int next_out = every > 0 ? (int)floor(t / every + 1e-9) + 1 : 0;
-  const double eps_t = 1e-12 * fmax(1.0, end);
-  int steady = 0;
-  long n_cut = 0;
-  while (t < end - eps_t && !steady && steps_here < max_steps) {
-    if (o->interrupt && *o->interrupt) {
-      rc = sl_diag_set(d, SL_EFAILED, "interrupted at t = %.6g after %ld steps", t, step);
-      break;
-    }
-    double t_stop = end;
-    if (every > 0 && next_out * every < t_stop) t_stop = next_out * every;
-    double hh = h;
-    if (fabs(t + hh - t_stop) > eps_t && (t + hh > t_stop || t + 1.05 * hh > t_stop)) hh = t_stop - t;
-    double c0 = cpu_now();
-    sl_diag ds;
-    int its = 0, src = layer_step(L, t, hh, &its, &ds);
-    L->res->solve += cpu_now() - c0;
-    L->iterations += its, L->res->nonlinear_iterations += its;
-    if (src) {
-      L->res->rejected_steps++, ++n_cut;
-      h = 0.25 * hh;
-      if (h < dt_min) {
-        rc = sl_diag_set(d, SL_EFAILED, "step rejected at t = %.6g down to dt = %.3g < dt_min = %.3g: %s", t, h, dt_min,
-                         ds.msg);
-        break;
-      }
-      continue;
-    }
-    double rate_u = 0.0, rate_t = 0.0, th_max = THETA_FLOOR;
-    for (int k = 0; k < N; ++k) {
-      rate_u = fmax(rate_u, fmax(fabs(L->uf1[k] - L->uf[k]), fabs(L->us1[k] - L->us[k])));
-      rate_t = fmax(rate_t, fabs(L->th1[k] - L->th[k]));
-      th_max = fmax(th_max, L->th1[k]);
-    }
-    double v_scale = L->v_ref;
-    for (int side = 0; side < 2; ++side) v_scale = fmax(v_scale, fabs(L->wall_at[side].u));
-    rate_u /= hh * v_scale, rate_t /= hh * th_max;
-    memcpy(uf_old, L->uf, (size_t)N * sizeof(double));
-    memcpy(us_old, L->us, (size_t)N * sizeof(double));
-    memcpy(L->uf, L->uf1, (size_t)N * sizeof(double));
-    memcpy(L->us, L->us1, (size_t)N * sizeof(double));
-    memcpy(L->th, L->th1, (size_t)N * sizeof(double));
-    ++L->advances;
-    t += hh, ++step, ++steps_here;
-    if (h < dt_cfg) h = fmin(dt_cfg, 2.0 * h);
-    if (o->monitor) o->monitor(o->monitor_user, t, hh, step, its);
-    steady = L->steady_tol > 0.0 && rate_u < L->steady_tol && (!L->granular || rate_t < L->steady_tol);
-    int due = every > 0 ? t >= next_out * every - eps_t : 0;
-    if (due || steady || t >= end - eps_t || steps_here >= max_steps) {
-      while (every > 0 && t >= next_out * every - eps_t) ++next_out;
-      if ((rc = report_walls(L, uf_old, us_old, hh, d))) break;
-      if ((rc = write_state(L, t, d)) || (rc = write_checkpoint(L, t, h, step, d))) break;
-    }
-  }
-  free(uf_old), free(us_old);
-  L->res->steps = step;
-  L->res->t_reached = t;
-  L->res->t_end = end;
-  L->res->step_limit = n_cut ? "convergence of the implicit step" : "fixed dt";
-  if (rc == SL_EFAILED) { /* keep the last good state */
-    sl_diag d2;
-    if (write_state(L, t, &d2) == 0) write_checkpoint(L, t, h, step, &d2);
-  }
-  if (!rc && steady)
-    snprintf(L->res->stop_reason, sizeof L->res->stop_reason,
-             "steady at t = %.6g (relative rates below %g per s)", t,
-             L->steady_tol);
-  else if (!rc && t >= end - eps_t)
-    snprintf(L->res->stop_reason, sizeof L->res->stop_reason, "reached the end time t = %g", end);
-  else if (!rc)
-    snprintf(L->res->stop_reason, sizeof L->res->stop_reason,
-             "stopped after max_steps = %ld steps at t = %.6g, before the end time %g (checkpoint saved)", max_steps,
-             t, end);
+static int layer_trial(void *user, double t, double dt, int *iterations, int *fatal, sl_diag *d) {
+  sh_layer *L = user;
+  *fatal = 0;
+  int rc = layer_step(L, t, dt, iterations, d);
+  L->iterations += *iterations;
   return rc;
 }
 
+static void layer_accept(void *user, double dt, int *steady) {
+  sh_layer *L = user;
+  const int N = L->n + 1;
+  double rate_u = 0.0, rate_t = 0.0, th_max = THETA_FLOOR, v_scale = L->v_ref;
+  for (int k = 0; k < N; ++k) {
+    rate_u = fmax(rate_u, fmax(fabs(L->uf1[k] - L->uf[k]), fabs(L->us1[k] - L->us[k])));
+    rate_t = fmax(rate_t, fabs(L->th1[k] - L->th[k]));
+    th_max = fmax(th_max, L->th1[k]);
+  }
+  for (int side = 0; side < 2; ++side) v_scale = fmax(v_scale, fabs(L->wall_at[side].u));
+  rate_u /= dt * v_scale, rate_t /= dt * th_max;
+  memcpy(L->uf_old, L->uf, (size_t)N * sizeof(double));
+  memcpy(L->us_old, L->us, (size_t)N * sizeof(double));
+  memcpy(L->uf, L->uf1, (size_t)N * sizeof(double));
+  memcpy(L->us, L->us1, (size_t)N * sizeof(double));
+  memcpy(L->th, L->th1, (size_t)N * sizeof(double));
+  L->dt_last = dt;
+  ++L->advances;
+  *steady = L->steady_tol > 0.0 && rate_u < L->steady_tol && (!L->granular || rate_t < L->steady_tol);
+}
+
+static int layer_write(void *user, double t, double dt_next, long step, sl_diag *d) {
+  sh_layer *L = user;
+  int rc = report_walls(L, L->uf_old, L->us_old, L->dt_last, d);
+  if (!rc) rc = write_state(L, t, d);
+  return rc ? rc : write_checkpoint(L, t, dt_next, step, d);
+}
+
+static int layer_restore(void *user, const char *path, double *t, double *dt, long *step, sl_diag *d) {
+  return restore(user, path, t, dt, step, d);
+}
+
+static int time_loop(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
+  char steady_text[96];
+  snprintf(steady_text, sizeof steady_text, "(relative rates below %g per s)", L->steady_tol);
+  sl_fixed_step_model m = {.user = L, .step = layer_trial, .accept = layer_accept, .write = layer_write,
+                           .restore = layer_restore, .steady_text = steady_text};
+  L->dt_last = 0.0; /* no storage term in the wall reactions of the starting state */
+  return sl_fixed_step_run(L->ini, &m, o, L->res, d);
+}
+
 static void release(sh_layer *L) {
-  double *all[] = {L->x,  L->h,   L->W,    L->gm,  L->gt,   L->V,    L->a,   L->s,    L->phi,   L->phin,
-                   L->uf, L->us,  L->th,   L->uf1, L->us1,  L->th1,  L->K,   L->dK,   L->slip,  L->muc,
-                   L->muk, L->dmuc, L->kapc, L->thc, L->gdc, L->rhoc, L->mumc, L->prod, L->gam, L->dgam, L->work, L->blk, L->node_out, L->cell_out};
+  double *all[] = {L->uf_old, L->us_old, L->x,    L->h,    L->W,    L->gm,   L->gt,   L->V,     L->a,
+                   L->s,      L->phi,    L->phin, L->uf,   L->us,   L->th,   L->uf1,  L->us1,   L->th1,
+                   L->K,      L->dK,     L->slip, L->muc,  L->muk,  L->dmuc, L->kapc, L->thc,   L->gdc,
+                   L->rhoc,   L->mumc,   L->prod, L->gam,  L->dgam, L->work, L->blk,  L->node_out, L->cell_out};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   for (int k = 0; k < Q_N; ++k) free(L->qv[k]);
   sl_point_release(&L->drag), sl_point_release(&L->gran), sl_point_release(&L->wall), sl_point_release(&L->visc);

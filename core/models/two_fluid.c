@@ -14,6 +14,7 @@
 #include "core/models/two_fluid_impl.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
+#include "core/time/fixed_step.h"
 
 enum { F_PHI = 1, F_US = 2, F_UF = 4, F_P = 8 };
 enum { TF_MAX_LEVELS = 8 };
@@ -422,99 +423,49 @@ static int restore(tf_run *r, const char *path, double *t, double *dt, long *ste
   return rc;
 }
 
-/* ---- the time loop ------------------------------------------------------------------ */
+/* ---- the time loop (core/time/fixed_step) ------------------------------------------------ */
+
+static int column_step(void *user, double t, double dt, int *iterations, int *fatal, sl_diag *d) {
+  tf_run *r = user;
+  int rc = tf_step(&r->c, t, dt, d);
+  *iterations = r->c.iterations_trial, *fatal = r->c.fatal;
+  r->iterations += r->c.iterations_trial;
+  return rc;
+}
+
+static void column_accept(void *user, double dt, int *steady) {
+  tf_run *r = user;
+  tf_column *c = &r->c;
+  double rate = 0.0;
+  for (int i = 0; i < c->n; ++i) rate = fmax(rate, fabs(c->phi_new[i] - c->phi[i]) / dt);
+  double *sw;
+  sw = c->phi, c->phi = c->phi_new, c->phi_new = sw;
+  sw = c->u, c->u = c->u_new, c->u_new = sw;
+  sw = c->uf, c->uf = c->uf_new, c->uf_new = sw;
+  sw = c->p, c->p = c->p_new, c->p_new = sw;
+  r->outflow += c->outflow_trial;
+  r->substeps += c->substeps_trial, ++r->advances;
+  c->accepted_substeps = c->last_substeps;
+  *steady = r->steady_tol > 0.0 && rate < r->steady_tol;
+}
+
+static int column_write(void *user, double t, double dt_next, long step, sl_diag *d) {
+  tf_run *r = user;
+  int rc = write_state(r, t, d);
+  return rc ? rc : write_checkpoint(r, t, dt_next, step, d);
+}
+
+static int column_restore(void *user, const char *path, double *t, double *dt, long *step, sl_diag *d) {
+  return restore(user, path, t, dt, step, d);
+}
 
 static int time_loop(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
-  tf_column *c = &r->c;
-  double end, dt_cfg, dt_min, every;
-  long max_steps;
-  int rc = sl_ini_get_real(r->ini, "time", "end", 1, 0, 0, 1e12, &end, d);
-  if (!rc) rc = sl_ini_get_real(r->ini, "time", "dt", 1, 0, 1e-15, 1e9, &dt_cfg, d);
-  if (!rc) rc = sl_ini_get_real(r->ini, "time", "dt_min", 0, dt_cfg * 1e-6, 0, 1e9, &dt_min, d);
-  if (!rc) rc = sl_ini_get_int(r->ini, "time", "max_steps", 0, 100000000L, 1, 100000000L, &max_steps, d);
-  if (!rc) rc = sl_ini_get_real(r->ini, "output", "every", 0, 0.0, 0.0, 1e12, &every, d);
-  if (rc) return rc;
-  double t = 0.0, h = dt_cfg;
-  long step = 0, steps_here = 0;
-  if (o->restart) {
-    if ((rc = restore(r, o->restart, &t, &h, &step, d))) return rc;
-  } else {
-    r->inventory0 = inventory(c);
-    if ((rc = write_state(r, 0.0, d)) || (rc = write_checkpoint(r, 0.0, h, 0, d))) return rc;
-  }
-  r->res->t_start = t;
-  int next_out = every > 0 ? (int)floor(t / every + 1e-9) + 1 : 0;
-  const double eps_t = 1e-12 * fmax(1.0, end);
-  int steady = 0;
-  const char *limit = "fixed dt";
-  long n_cut = 0;
-  while (t < end - eps_t && !steady && steps_here < max_steps) {
-    if (o->interrupt && *o->interrupt) {
-      rc = sl_diag_set(d, SL_EFAILED, "interrupted at t = %.6g after %ld steps", t, step);
-      break;
-    }
-    double t_stop = end;
-    if (every > 0 && next_out * every < t_stop) t_stop = next_out * every;
-    double hh = h;
-    if (fabs(t + hh - t_stop) > eps_t && (t + hh > t_stop || t + 1.05 * hh > t_stop)) hh = t_stop - t;
-    double c0 = cpu_now();
-    sl_diag ds;
-    int src = tf_step(c, t, hh, &ds);
-    r->res->solve += cpu_now() - c0;
-    r->iterations += c->iterations_trial, r->res->nonlinear_iterations += c->iterations_trial;
-    if (src && c->fatal) {
-      rc = sl_diag_set(d, SL_EFAILED, "at t = %.6g: %s", t, ds.msg);
-      break;
-    }
-    if (src) {
-      r->res->rejected_steps++, ++n_cut;
-      h = 0.25 * hh;
-      if (h < dt_min) {
-        rc = sl_diag_set(d, SL_EFAILED, "step rejected at t = %.6g down to dt = %.3g < dt_min = %.3g: %s", t, h, dt_min,
-                         ds.msg);
-        break;
-      }
-      continue;
-    }
-    double rate = 0.0;
-    for (int i = 0; i < c->n; ++i) rate = fmax(rate, fabs(c->phi_new[i] - c->phi[i]) / hh);
-    /* accept */
-    double *sw;
-    sw = c->phi, c->phi = c->phi_new, c->phi_new = sw;
-    sw = c->u, c->u = c->u_new, c->u_new = sw;
-    sw = c->uf, c->uf = c->uf_new, c->uf_new = sw;
-    sw = c->p, c->p = c->p_new, c->p_new = sw;
-    r->outflow += c->outflow_trial;
-    r->substeps += c->substeps_trial, ++r->advances;
-    c->accepted_substeps = c->last_substeps;
-    t += hh, ++step, ++steps_here;
-    if (h < dt_cfg) h = fmin(dt_cfg, 2.0 * h), limit = "convergence of the implicit step";
-    if (o->monitor) o->monitor(o->monitor_user, t, hh, step, c->iterations_trial);
-    steady = r->steady_tol > 0.0 && rate < r->steady_tol;
-    int due = every > 0 ? t >= next_out * every - eps_t : 0;
-    if (due || steady || t >= end - eps_t || steps_here >= max_steps) {
-      while (every > 0 && t >= next_out * every - eps_t) ++next_out;
-      if ((rc = write_state(r, t, d)) || (rc = write_checkpoint(r, t, h, step, d))) break;
-    }
-  }
-  r->res->steps = step;
-  r->res->t_reached = t;
-  r->res->t_end = end;
-  r->res->step_limit = n_cut ? limit : "fixed dt";
-  if (!rc && steady)
-    snprintf(r->res->stop_reason, sizeof r->res->stop_reason, "steady at t = %.6g (largest dphi/dt below %g per s)", t,
-             r->steady_tol);
-  else if (!rc && t >= end - eps_t)
-    snprintf(r->res->stop_reason, sizeof r->res->stop_reason, "reached the end time t = %g", end);
-  else if (!rc)
-    snprintf(r->res->stop_reason, sizeof r->res->stop_reason,
-             "stopped after max_steps = %ld steps at t = %.6g, before the end time %g (checkpoint saved)", max_steps,
-             t, end);
-  if (rc == SL_EFAILED) { /* keep the last good state */
-    sl_diag d2;
-    if (write_state(r, t, &d2) == 0) write_checkpoint(r, t, h, step, &d2);
-  }
-  return rc;
+  char steady_text[96];
+  snprintf(steady_text, sizeof steady_text, "(largest dphi/dt below %g per s)", r->steady_tol);
+  sl_fixed_step_model m = {.user = r, .step = column_step, .accept = column_accept, .write = column_write,
+                           .restore = column_restore, .steady_text = steady_text};
+  r->inventory0 = inventory(&r->c); /* a restart reads it from the checkpoint */
+  return sl_fixed_step_run(r->ini, &m, o, r->res, d);
 }
 
 int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d) {
