@@ -9,15 +9,17 @@
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/instance.h"
 #include "core/verify/bingham_exact.h"
+#include "core/verify/fluidized_bed_exact.h"
 #include "core/verify/kynch_exact.h"
 
-typedef enum { EXACT_KYNCH, EXACT_BINGHAM } exact_kind;
+typedef enum { EXACT_KYNCH, EXACT_BINGHAM, EXACT_FLUIDIZED_BED } exact_kind;
 
 struct sl_bench_exact {
   exact_kind kind;
   double x0, x1;
   kynch k;
   bingham_channel b;
+  double bed_phi; /* fluidized_bed: the equilibrium solids fraction, 1 - porosity */
   char description[512];
 };
 
@@ -256,6 +258,146 @@ static int bingham_create(sl_bench_exact *e, const sl_ini *ini, const sl_registr
   return 0;
 }
 
+/* ---- fluidised bed ------------------------------------------------------------ */
+
+enum { DRAG_MAX_FIELDS = 32 };
+
+/* The scene's drag closure with its inputs other than phi and slip bound as
+ * the two_fluid model binds them (core/models/two_fluid.c). */
+typedef struct drag_binding {
+  sl_closure *c;
+  int in_phi, in_slip, out_K;
+  double fixed[DRAG_MAX_FIELDS];
+  double failed_phi, failed_slip; /* where the closure refused, NaN: it did not */
+  char failure[400];
+} drag_binding;
+
+/* fb_drag_fn (core/verify/fluidized_bed_exact.h): K at one point. */
+static int drag_at(void *user, double phi, double slip, double *K) {
+  drag_binding *b = user;
+  const sl_closure_desc *desc = b->c->desc;
+  double in_values[DRAG_MAX_FIELDS], out_values[DRAG_MAX_FIELDS];
+  const double *in[DRAG_MAX_FIELDS];
+  double *out[DRAG_MAX_FIELDS];
+  for (int i = 0; i < desc->n_in; ++i) {
+    in_values[i] = i == b->in_phi ? phi : i == b->in_slip ? slip : b->fixed[i];
+    in[i] = &in_values[i];
+  }
+  for (int k = 0; k < desc->n_out; ++k) out[k] = &out_values[k];
+  sl_error err;
+  sl_eval_args a = {.Q = 1, .in = in, .out = out, .dout = NULL, .err = &err};
+  if (sl_closure_evaluate(b->c, &a)) {
+    b->failed_phi = phi, b->failed_slip = slip;
+    snprintf(b->failure, sizeof b->failure, "%s", err.msg);
+    return -1;
+  }
+  *K = out_values[b->out_K];
+  return 0;
+}
+
+/* The two_fluid model's defaults: fluid 1000 kg/m3 and 1e-3 Pa s, sphericity 1, phi_max 0.64 (or 1 -
+ * porosity_max), gravity -9.81 along x. */
+static int bed_physics(const sl_ini *ini, double *rho_f, double *mu_f, double *rho_s, double *d_p, double *sphericity,
+                       double *phi_max, double *g, sl_diag *d) {
+  int rc = sl_ini_get_real(ini, "fluid", "density", 0, 1000.0, 1e-3, 1e5, rho_f, d);
+  if (!rc) rc = sl_ini_get_real(ini, "fluid", "viscosity", 0, 1e-3, 1e-7, 1e7, mu_f, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "density", 1, 0, 1e-3, 1e5, rho_s, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "diameter", 1, 0, 1e-9, 1.0, d_p, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "sphericity", 0, 1.0, 0.01, 1.0, sphericity, d);
+  if (!rc) rc = sl_ini_get_real(ini, "solid", "phi_max", 0, 0.64, 0.01, 0.99, phi_max, d);
+  if (rc) return rc;
+  if (sl_ini_find(ini, "solid", "porosity_max")) {
+    double n_min;
+    if ((rc = sl_ini_get_real(ini, "solid", "porosity_max", 0, 0.36, 0.01, 0.99, &n_min, d))) return rc;
+    *phi_max = 1.0 - n_min;
+  }
+  double gl[3] = {-9.81, 0, 0};
+  int ng = 0;
+  if ((rc = sl_ini_get_real_list(ini, "flow", "gravity", 0, gl, 3, &ng, d))) return rc;
+  *g = gl[0];
+  return 0;
+}
+
+/* The inlet: [boundary.left] type = inlet with a constant velocity U > 0, the other end an outlet. */
+static int bed_inlet(const sl_ini *ini, double *U, sl_diag *d) {
+  const sl_ini_entry *left = sl_ini_find(ini, "boundary.left", "type");
+  const sl_ini_entry *right = sl_ini_find(ini, "boundary.right", "type");
+  if (!left || strcmp(left->value, "inlet"))
+    return refuse(d, "fluidized_bed", "needs the fluid to enter at the bottom: [boundary.left] type = inlet");
+  if (!right || strcmp(right->value, "outlet"))
+    return refuse(d, "fluidized_bed", "needs an outlet at the top: [boundary.right] type = outlet");
+  if (sl_ini_find(ini, "boundary.left", "porosity"))
+    return refuse(d, "fluidized_bed", "the inlet gives the bed's porosity itself ([boundary.left] porosity); give its "
+                                      "superficial velocity instead");
+  const sl_ini_entry *v = sl_ini_find(ini, "boundary.left", "velocity");
+  if (!v || sl_parse_real(v->value, U) || !(*U > 0.0))
+    return refuse(d, "fluidized_bed", "needs a constant inflow: [boundary.left] velocity = a number above 0 (m/s)");
+  return 0;
+}
+
+static int fluidized_bed_create(sl_bench_exact *e, const sl_ini *ini, const sl_registry *reg, sl_diag *d) {
+  const char *name = "fluidized_bed", *model;
+  int rc = column(name, ini, &e->x0, &e->x1, d);
+  if (!rc) rc = get_text(ini, "scene", "model", "", &model, d);
+  if (rc) return rc;
+  if (strcmp(model, "two_fluid")) return refuse(d, name, "needs a two-fluid scene ([scene] model = two_fluid)");
+  double rho_f, mu_f, rho_s, d_p, sphericity, phi_max, g, U;
+  if ((rc = bed_physics(ini, &rho_f, &mu_f, &rho_s, &d_p, &sphericity, &phi_max, &g, d))) return rc;
+  if (!(g < 0.0)) return refuse(d, name, "needs gravity along -x ([flow] gravity < 0): the inlet at the bottom, x0");
+  if (!(rho_s > rho_f)) return refuse(d, name, "needs particles denser than the fluid");
+  if ((rc = bed_inlet(ini, &U, d))) return rc;
+  if (!sl_ini_find_section(ini, "closure.drag")) return refuse(d, name, "needs a [closure.drag]");
+  drag_binding b;
+  memset(&b, 0, sizeof b);
+  b.failed_phi = b.failed_slip = NAN;
+  if ((rc = sl_closure_from_ini(reg, ini, "closure.drag", &b.c, d))) return rc;
+  const sl_closure_desc *desc = b.c->desc;
+  b.in_phi = sl_closure_input(desc, "phi"), b.in_slip = sl_closure_input(desc, "slip");
+  b.out_K = sl_closure_output(desc, "K");
+  if (b.in_phi < 0 || b.in_slip < 0 || b.out_K < 0 || desc->n_in > DRAG_MAX_FIELDS || desc->n_out > DRAG_MAX_FIELDS)
+    rc = refuse(d, name, "the drag closure does not map phi and slip to K");
+  for (int i = 0; i < desc->n_in && !rc; ++i) {
+    const char *in = desc->in[i].name;
+    if (i == b.in_phi || i == b.in_slip) continue;
+    if (!strcmp(in, "rho_f")) b.fixed[i] = rho_f;
+    else if (!strcmp(in, "mu_f")) b.fixed[i] = mu_f;
+    else if (!strcmp(in, "rho_s")) b.fixed[i] = rho_s;
+    else if (!strcmp(in, "d_p")) b.fixed[i] = d_p;
+    else if (!strcmp(in, "sphericity")) b.fixed[i] = sphericity;
+    else if (!strcmp(in, "gravity")) b.fixed[i] = fabs(g);
+    else {
+      char why[200];
+      snprintf(why, sizeof why, "the drag closure needs the input '%s'", in);
+      rc = refuse(d, name, why);
+    }
+  }
+  fb_bed bed = {.rho_f = rho_f, .rho_s = rho_s, .g = fabs(g), .U = U, .phi_max = phi_max};
+  double porosity = NAN;
+  fb_status st = rc ? FB_OK : fb_equilibrium_porosity(&bed, drag_at, &b, &porosity);
+  char label[128], why[800];
+  sl_closure_label(desc, label, sizeof label);
+  sl_closure_destroy(b.c);
+  if (rc) return rc;
+  if (st == FB_DRAG_FAILED) {
+    snprintf(why, sizeof why, "the drag closure %s refused phi = %g, slip = %g m/s: %s", label, b.failed_phi,
+             b.failed_slip, b.failure);
+    return refuse(d, name, why);
+  }
+  if (st == FB_PACKED || st == FB_BLOWN_OUT) {
+    snprintf(why, sizeof why, "no fluidised bed: U = %g m/s is %s with the drag closure %s", U,
+             st == FB_PACKED ? "below the minimum fluidisation velocity (the bed stays packed at phi_max)"
+                             : "above the terminal velocity (the bed is blown out)",
+             label);
+    return refuse(d, name, why);
+  }
+  e->bed_phi = 1.0 - porosity;
+  snprintf(e->description, sizeof e->description,
+           "equilibrium porosity of the fluidised bed: %.10f (phi = %.10f) at U = %g m/s with the drag closure %s; "
+           "compared in the cells below the top of the bed at rest",
+           porosity, e->bed_phi, U, label);
+  return 0;
+}
+
 /* ---- interface ---------------------------------------------------------------- */
 
 int sl_bench_exact_create(const char *name, const sl_ini *ini, const sl_registry *reg, sl_bench_exact **out,
@@ -266,7 +408,8 @@ int sl_bench_exact_create(const char *name, const sl_ini *ini, const sl_registry
   int rc;
   if (!strcmp(name, "kynch")) e->kind = EXACT_KYNCH, rc = kynch_create(e, ini, reg, d);
   else if (!strcmp(name, "bingham")) e->kind = EXACT_BINGHAM, rc = bingham_create(e, ini, reg, d);
-  else rc = sl_diag_set(d, SL_EBADINPUT, "no exact solution '%s' (known: kynch, bingham)", name);
+  else if (!strcmp(name, "fluidized_bed")) e->kind = EXACT_FLUIDIZED_BED, rc = fluidized_bed_create(e, ini, reg, d);
+  else rc = sl_diag_set(d, SL_EBADINPUT, "no exact solution '%s' (known: kynch, bingham, fluidized_bed)", name);
   if (rc) {
     free(e);
     return rc;
@@ -279,11 +422,27 @@ void sl_bench_exact_free(sl_bench_exact *e) { free(e); }
 
 const char *sl_bench_exact_describe(const sl_bench_exact *e) { return e->description; }
 
-int sl_bench_exact_cell_averages(const sl_bench_exact *e) { return e->kind == EXACT_KYNCH; }
+int sl_bench_exact_cell_averages(const sl_bench_exact *e) {
+  return e->kind == EXACT_KYNCH || e->kind == EXACT_FLUIDIZED_BED;
+}
 
 void sl_bench_exact_domain(const sl_bench_exact *e, double *x0, double *x1) { *x0 = e->x0, *x1 = e->x1; }
 
+void sl_bench_exact_compared_span(const sl_bench_exact *e, int n, const double *xa, const double *xb,
+                                  const double *v, double *lo, double *hi) {
+  *lo = e->x0, *hi = e->x1;
+  if (e->kind != EXACT_FLUIDIZED_BED) return;
+  /* the bed at rest holds the run's solids at bed_phi: its top is the inventory over bed_phi above x0 */
+  double inventory = 0.0;
+  for (int c = 0; c < n; ++c) inventory += v[c] * (xb[c] - xa[c]);
+  *hi = e->x0 + fmin(inventory / e->bed_phi, e->x1 - e->x0);
+}
+
 void sl_bench_exact_values(const sl_bench_exact *e, double t, int n, const double *x, double *v) {
+  if (e->kind == EXACT_FLUIDIZED_BED) { /* steady and uniform */
+    for (int i = 0; i < n; ++i) v[i] = e->bed_phi;
+    return;
+  }
   if (e->kind == EXACT_BINGHAM) {
     for (int i = 0; i < n; ++i) v[i] = bingham_channel_velocity(&e->b, x[i]);
     return;
@@ -293,6 +452,10 @@ void sl_bench_exact_values(const sl_bench_exact *e, double t, int n, const doubl
 }
 
 void sl_bench_exact_averages(const sl_bench_exact *e, double t, int n, const double *xa, const double *xb, double *v) {
+  if (e->kind == EXACT_FLUIDIZED_BED) {
+    for (int i = 0; i < n; ++i) v[i] = e->bed_phi;
+    return;
+  }
   if (e->kind == EXACT_BINGHAM) { /* compared at points, not this way; Simpson's rule for completeness */
     for (int i = 0; i < n; ++i) {
       double m = 0.5 * (xa[i] + xb[i]), x[3] = {xa[i], m, xb[i]}, w[3];

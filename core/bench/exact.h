@@ -11,6 +11,17 @@
  *           Yarusso 1983; core/verify/bingham_exact.h): the axial (third)
  *           velocity component; the scene's plastic viscosity and yield
  *           stress, the driving force from [flow] body_force and gravity.
+ *  fluidized_bed  the homogeneous liquid-fluidised bed at rest (Richardson &
+ *           Zaki 1954; core/verify/fluidized_bed_exact.h): a 1-D two_fluid
+ *           column fed at the bottom ([boundary.left] an inlet of constant
+ *           velocity U, [boundary.right] an outlet) holds its solids at the
+ *           porosity where the scene's own drag closure (evaluated through
+ *           the plugin, its inputs bound as the two_fluid model binds them)
+ *           carries their buoyant weight. The solids pressure and particle
+ *           diffusivity do not act on a uniform bed. phi is compared cell by
+ *           cell over the bed at rest: the cells wholly below its top, at the
+ *           height that holds the run's solids inventory at the equilibrium
+ *           phi (the cell the top cuts is left out).
  *
  * A scene outside what a solution covers is refused with the reason. */
 #ifndef SLUICE_BENCH_EXACT_H
@@ -31,6 +42,13 @@ const char *sl_bench_exact_describe(const sl_bench_exact *e);
 int sl_bench_exact_cell_averages(const sl_bench_exact *e);
 /* The 1-D domain [x0, x1] of the solution. */
 void sl_bench_exact_domain(const sl_bench_exact *e, double *x0, double *x1);
+
+/* The part [lo, hi] of the domain compared, given a run's cell values v
+ * over the cells [xa[c], xb[c]] (n cells, the whole column): the domain
+ * itself, or for fluidized_bed the bed at rest that holds the run's solids
+ * inventory (sum of v h) at the equilibrium phi. */
+void sl_bench_exact_compared_span(const sl_bench_exact *e, int n, const double *xa, const double *xb,
+                                  const double *v, double *lo, double *hi);
 
 /* Point values at x[0..n-1] at time t. */
 void sl_bench_exact_values(const sl_bench_exact *e, double t, int n, const double *x, double *v);

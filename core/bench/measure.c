@@ -188,7 +188,9 @@ static int measure_field(const sl_study *st, const sl_bench_exact *exact, const 
   return rc;
 }
 
-/* Cell averages of phi against the exact ones, over every cell of the column. */
+/* Cell averages of phi against the exact ones, over the cells of the part
+ * of the column the exact solution compares (sl_bench_exact_compared_span:
+ * the whole column, or a fluidised bed below its top). */
 static int measure_cells(const sl_study *st, const sl_bench_exact *exact, const char *h5, sl_bench_measured *m,
                          sl_diag *d) {
   const sl_study_measure *sm = &st->m;
@@ -204,25 +206,38 @@ static int measure_cells(const sl_study *st, const sl_bench_exact *exact, const 
   rc = check_time(sm, f.time, sm->name, d);
   if (!rc && (f.centring != SL_CENTRE_CELL || f.n != mesh.n_cells || mesh.dim != 1 || f.components != 1))
     rc = sl_diag_set(d, SL_EBADINPUT, "measure: '%s' is not a scalar cell field of a 1-D mesh", sm->name);
-  int n = f.n;
-  double *xa = NULL, *xb = NULL, x0, x1;
-  if (!rc && !(rc = alloc_profile(m, n, 1, d))) {
+  int n = rc ? 0 : (int)f.n;
+  double *xa = NULL, *xb = NULL, x0 = 0.0, x1 = 0.0, lo = 0.0, hi = 0.0;
+  if (!rc) {
     xa = malloc((size_t)n * sizeof *xa), xb = malloc((size_t)n * sizeof *xb);
     if (!xa || !xb) rc = oom(d);
   }
+  for (int c = 0; c < n && !rc; ++c) {
+    double a = INFINITY, b = -INFINITY;
+    for (int k = 0; k < mesh.nodes_per_cell; ++k) {
+      double x = mesh.coords[3 * (size_t)mesh.cells[(size_t)c * (size_t)mesh.nodes_per_cell + (size_t)k]];
+      a = fmin(a, x), b = fmax(b, x);
+    }
+    xa[c] = a, xb[c] = b;
+  }
+  int used = 0;
   if (!rc) {
     sl_bench_exact_domain(exact, &x0, &x1);
-    m->line[0] = x0, m->line[2] = x1;
-    for (int c = 0; c < n; ++c) {
-      double lo = INFINITY, hi = -INFINITY;
-      for (int k = 0; k < mesh.nodes_per_cell; ++k) {
-        double x = mesh.coords[3 * (size_t)mesh.cells[(size_t)c * (size_t)mesh.nodes_per_cell + (size_t)k]];
-        lo = fmin(lo, x), hi = fmax(hi, x);
-      }
-      xa[c] = lo, xb[c] = hi;
-      m->s[c] = 0.5 * (lo + hi) - x0, m->w[c] = (hi - lo) / (x1 - x0), m->v[c] = f.values[c];
-    }
-    sl_bench_exact_averages(exact, m->time, n, xa, xb, m->ref);
+    sl_bench_exact_compared_span(exact, n, xa, xb, f.values, &lo, &hi);
+    const double slack = 1e-12 * (x1 - x0);
+    for (int c = 0; c < n; ++c) /* the cells inside [lo, hi], moved to the front */
+      if (xa[c] >= lo - slack && xb[c] <= hi + slack)
+        xa[used] = xa[c], xb[used] = xb[c], f.values[used++] = f.values[c];
+    if (used == 0)
+      rc = sl_diag_set(d, SL_EFAILED, "measure: no whole cell of the mesh lies in the part compared, %g to %g", lo, hi);
+  }
+  if (!rc && !(rc = alloc_profile(m, used, 1, d))) {
+    m->line[0] = lo, m->line[2] = hi;
+    double length = 0.0;
+    for (int c = 0; c < used; ++c) length += xb[c] - xa[c];
+    for (int c = 0; c < used; ++c)
+      m->s[c] = 0.5 * (xa[c] + xb[c]) - x0, m->w[c] = (xb[c] - xa[c]) / length, m->v[c] = f.values[c];
+    sl_bench_exact_averages(exact, m->time, used, xa, xb, m->ref);
   }
   free(xa), free(xb);
   sl_output_field_free(&f);

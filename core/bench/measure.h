@@ -5,6 +5,7 @@
  *    maximum along the line (refined by golden-section search between the
  *    samples);
  *  - with exact = kynch, the cell averages of phi over the whole column;
+ *    with exact = fluidized_bed, phi in the cells of the bed at rest;
  *  - an output scalar at one output time, or at each time of a reference.
  * The result is one number or a profile: positions (arc length from the
  * line's start, or times), quadrature weights that sum to 1 (trapezoidal

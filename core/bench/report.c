@@ -106,9 +106,12 @@ void sl_bench_describe_measure(const sl_bench_table *t, char *buf, size_t len) {
   if (sm->has_time) snprintf(when, sizeof when, " at t = %g", sm->time);
   else if (!(sm->scalar && sm->against == SL_AGAINST_REFERENCE)) snprintf(when, sizeof when, " at the last output");
   int one_number = sm->scalar ? sm->against != SL_AGAINST_REFERENCE : sm->reduce != SL_REDUCE_NONE;
-  const char *over = sm->against == SL_AGAINST_EXACT && !strcmp(sm->exact, "kynch") ? "cell averages, whole column"
-                     : sm->scalar                                                    ? "over the reference's times"
-                                                                                     : where;
+  int exact_kynch = sm->against == SL_AGAINST_EXACT && !strcmp(sm->exact, "kynch");
+  int exact_bed = sm->against == SL_AGAINST_EXACT && !strcmp(sm->exact, "fluidized_bed");
+  const char *over = exact_kynch  ? "cell averages, whole column"
+                     : exact_bed  ? "cells of the bed below its top"
+                     : sm->scalar ? "over the reference's times"
+                                  : where;
   char profile[1024];
   if (one_number) snprintf(profile, sizeof profile, "%s%s", q, when);
   else snprintf(profile, sizeof profile, "%s error of %s (%s)%s", norm_name(sm->norm), q, over, when);

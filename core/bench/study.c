@@ -281,22 +281,28 @@ static int read_measure(sl_study *s, sl_diag *d) {
     m->against = (sl_study_against)(SL_AGAINST_EXACT + k);
   }
   if (m->against == SL_AGAINST_EXACT) {
+    enum { KYNCH, BINGHAM, FLUIDIZED_BED };
+    static const char *const exact_names[] = {"kynch", "bingham", "fluidized_bed"};
+    static const char *const exact_fields[] = {"the cell averages of phi", "velocity component 2, the axial velocity",
+                                               "phi in the cells of the bed below its top"};
     int which = 0;
-    if ((rc = sl_ini_get_choice(ini, "measure", "exact", 1, 0, "kynch|bingham", &which, d))) return rc;
-    m->exact = which ? "bingham" : "kynch";
+    if ((rc = sl_ini_get_choice(ini, "measure", "exact", 1, 0, "kynch|bingham|fluidized_bed", &which, d))) return rc;
+    m->exact = exact_names[which];
     static const char *const fixed_by_exact[] = {"field", "scalar", "component", "reduce"};
     char why[200];
     for (int k = 0; k < 4; ++k) {
-      snprintf(why, sizeof why, "exact = %s measures its own field (%s); drop '%s'", m->exact,
-               which ? "velocity component 2, the axial velocity" : "the cell averages of phi", fixed_by_exact[k]);
+      snprintf(why, sizeof why, "exact = %s measures its own field (%s); drop '%s'", m->exact, exact_fields[which],
+               fixed_by_exact[k]);
       if ((rc = refuse(ini, fixed_by_exact[k], why, d))) return rc;
     }
-    if (!which && (rc = refuse(ini, "line", "exact = kynch compares the cell averages over the whole column; drop 'line'", d)))
-      return rc;
-    if (!which && (rc = refuse(ini, "n", "exact = kynch compares the cell averages over the whole column; drop 'n'", d)))
-      return rc;
-    m->name = which ? "velocity" : "phi";
-    m->component = which ? 2 : 0;
+    static const char *const by_cells[] = {"line", "n"};
+    for (int k = 0; k < 2 && which != BINGHAM; ++k) {
+      snprintf(why, sizeof why, "exact = %s compares %s%s; drop '%s'", m->exact, exact_fields[which],
+               which == KYNCH ? " over the whole column" : "", by_cells[k]);
+      if ((rc = refuse(ini, by_cells[k], why, d))) return rc;
+    }
+    m->name = which == BINGHAM ? "velocity" : "phi";
+    m->component = which == BINGHAM ? 2 : 0;
   } else {
     const sl_ini_entry *f = sl_ini_find(ini, "measure", "field"), *sc = sl_ini_find(ini, "measure", "scalar");
     if (f && sc)

@@ -50,7 +50,7 @@ typedef struct sl_study_measure {
   int n;          /* points along the line */
   sl_study_reduce reduce;
   sl_study_against against;
-  const char *exact; /* kynch | bingham */
+  const char *exact; /* kynch | bingham | fluidized_bed */
   char *reference;   /* the CSV's path, resolved against the study file */
   int n_ref;
   double *ref_x, *ref_v; /* positions s along the line (field) or times t (scalar), values */

@@ -6,6 +6,9 @@
  *    tolerance without going under dt_min) is recorded and the study goes on;
  *  - a closure comparison (two drag laws on the fluidised bed): the
  *    profiles side by side, the bed at its drag law's equilibrium;
+ *  - the fluidised bed against its equilibrium porosity (exact =
+ *    fluidized_bed) at two steady tolerances: the exact porosity
+ *    (U/u_t)^(1/n) announced, errors below the tolerance that fall with it;
  *  - the other measures: the cavity's centreline minimum against a value
  *    (the same number bench/cavity_work_precision recorded), the Kynch
  *    interface height against a reference file of the exact top shock over
@@ -282,6 +285,42 @@ static void drag_comparison(void) {
   free(rgb);
 }
 
+/* The fluidised bed run to steady at two tolerances on max |dphi/dt|,
+ * measured against the equilibrium porosity of its drag
+ * (richardson_zaki_consistent: (U/u_t)^(1/4.65) = 0.6421852193 at U = 10
+ * mm/s, u_t = 78.4 mm/s from Stokes' law) over the bed below its top. The
+ * discrete steady state is that equilibrium, so the error is what the
+ * stopping test leaves: below the tolerance, and falling with it. */
+static void fluidized_bed_study(void) {
+  char text[8192];
+  snprintf(text, sizeof text,
+           "[study]\nscene = %s/fluidized_bed.ini\n[set.mesh]\ncells = 50\n"
+           "[points.two_fluid]\nsteady_tolerance = 1e-3, 1e-7\n[measure]\nexact = fluidized_bed\nnorm = l1\n",
+           configs);
+  write_file("bed.ini", text);
+  const char *args[] = {"bench", "bed.ini", "-o", "bed_out", NULL};
+  int rc = sluice(args);
+  CHECK_MSG(rc == 0, "exit status %d:\n%s", rc, output);
+  const double u_t = (2600.0 - 998.2) * 9.81 * 3e-4 * 3e-4 / (18.0 * 1.002e-3), porosity = pow(0.010 / u_t, 1.0 / 4.65);
+  char expect[128];
+  snprintf(expect, sizeof expect, "equilibrium porosity of the fluidised bed: %.10f", porosity);
+  CHECK_CONTAINS(output, expect);
+  csv c;
+  if (read_csv("bed_out/bed.csv", &c)) return;
+  CHECK(c.rows == 2);
+  const double tolerance[2] = {1e-3, 1e-7};
+  for (int r = 0; r < c.rows && r < 2; ++r) {
+    double e = num(&c, r, "error");
+    printf("fluidized_bed study, 50 cells, steady_tolerance %g: L1 porosity error %.3g, steady at t = %g s\n",
+           tolerance[r], e, num(&c, r, "time"));
+    CHECK(!strcmp(c.cell[r][col(&c, "status")], "ok"));
+    CHECK_MSG(e >= 0.0 && e < tolerance[r], "steady_tolerance %g: porosity error %.3g", tolerance[r], e);
+    CHECK_MSG(num(&c, r, "time") < 599.0, "steady_tolerance %g: not steady by the end", tolerance[r]);
+  }
+  CHECK_MSG(num(&c, 1, "error") < 1e-3 * num(&c, 0, "error"), "the error fell from %.3g to %.3g only",
+            num(&c, 0, "error"), num(&c, 1, "error"));
+}
+
 /* The minimum of u on x = 1/2 of the Stokes cavity against u*: on 8 x 8
  * cells bench/cavity_work_precision (its own run and golden-section search,
  * bench/results/cavity_work_precision.csv) found -0.2084992238. */
@@ -395,6 +434,10 @@ static void bad_studies(void) {
             "needs a 1-D scene");
   snprintf(body, sizeof body, "%s[measure]\nexact = kinch\n", kynch_study_head);
   bad_study("bad_exact_name", body, "bad_exact_name.ini:4:", "did you mean 'kynch'?");
+  bad_study("bad_bed_line", "[study]\nscene = %s/fluidized_bed.ini\n[measure]\nexact = fluidized_bed\nline = 0:0.5\n",
+            "bad_bed_line.ini:5:", "the cells of the bed below its top; drop 'line'");
+  bad_study("bad_bed_scene", "[study]\nscene = %s/kynch_settling.ini\n[measure]\nexact = fluidized_bed\n",
+            "bad_bed_scene.ini:4:", "needs a two-fluid scene");
   snprintf(body, sizeof body, "%s[variants]\nnames = a, b\n[variants.transport]\norder = 1, 2, 2\n[measure]\nexact = kynch\n",
            kynch_study_head);
   bad_study("bad_names", body, "bad_names.ini:4:", "2 names for 3 values");
@@ -420,7 +463,7 @@ static void help(void) {
 /* The studies shipped in configs/bench/ stay valid as the scenes change. */
 static void shipped_studies(void) {
   static const char *const names[] = {"kynch_settling", "cavity_stokes", "bingham_channel", "fluidized_bed_drag",
-                                      "migration_couette_viscosity"};
+                                      "migration_couette_viscosity", "fluidized_bed"};
   for (size_t k = 0; k < sizeof names / sizeof names[0]; ++k) {
     char path[4200];
     snprintf(path, sizeof path, "%s/bench/%s.ini", configs, names[k]);
@@ -444,6 +487,7 @@ int main(void) {
   kynch_study();
   failing_run();
   drag_comparison();
+  fluidized_bed_study();
   cavity_value();
   kynch_reference();
   kynch_finest();

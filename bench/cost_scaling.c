@@ -1,0 +1,461 @@
+/* How the cost of each phase of a run grows with the number of cells: the
+ * scenes of configs/ at increasing mesh sizes, each run in-process (the
+ * engine `sluice run` uses) in a child process of its own, and per phase the
+ * time of one operation:
+ *
+ *   assembly        the assembly's wall time over the assemblies done
+ *                   (matrix and right-hand side, or right-hand side only);
+ *   factorisation   the numeric factorisations' wall time over their number
+ *                   (the one symbolic analysis of a run is left out);
+ *   solve           the back-substitutions' wall time over their number;
+ *   transport       the solids transport's CPU time (face fluxes and the
+ *                   finite-volume update of phi) over its sub-steps.
+ *
+ * Each phase's time is the fastest of --repeat R runs (default 3). The growth
+ * exponent p of time ~ cells^p is the least-squares slope of log time
+ * against log cells over the sizes run; the exponents between successive
+ * sizes are written too.
+ *
+ * The scenes (every size the same steps, so that the counts match):
+ *   cavity_stokes    steady Stokes, Q2/Q1 on n x n cells, n = 16..128: one
+ *                    assembly, factorisation and solve;
+ *   kynch_settling   1-D mixture (MUSCL transport), 250..4000 cells, 100
+ *                    steps of 0.004 s: short enough for one transport
+ *                    sub-step a step on every mesh (CFL);
+ *   boycott          2-D mixture (Navier-Stokes at Re 1000 and MUSCL
+ *                    transport), 12 x 16 .. 48 x 64 cells, 10 steps of 1e-3 s.
+ *
+ *   bench_cost_scaling [SOURCE_DIR] [--repeat R] [--csv PATH] [--svg PATH]
+ *                      [--max-cells N] [--scene NAME]...
+ *
+ * CSV on stdout (and in --csv PATH) with '#' lines for the machine and the
+ * fitted exponents; progress on stderr; --svg PATH writes time per operation
+ * against cells, one panel per scene (svg_plot.h). --max-cells N leaves out
+ * the larger meshes; --scene NAME runs only the scenes named. The exit status
+ * is 1 when a run failed. */
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "core/config/scene_schema.h"
+#include "core/models/mixture.h"
+#include "core/models/navier_stokes.h"
+#include "bench_machine.h"
+#include "svg_plot.h"
+
+enum { MAX_SIZES = 8, MAX_SETS = 6, N_PHASES = 4, N_SCENES = 3 };
+enum { PHASE_ASSEMBLY, PHASE_FACTORISATION, PHASE_SOLVE, PHASE_TRANSPORT };
+
+static const char *const phase_names[N_PHASES] = {"assembly", "factorisation", "solve", "transport"};
+
+typedef struct scene_spec {
+  const char *name;
+  const char *what;             /* for the CSV */
+  const char *title;            /* of its panel */
+  const char *sets[MAX_SETS];   /* overrides of every run, NULL-terminated */
+  int n_sizes;
+  int nx[MAX_SIZES], ny[MAX_SIZES]; /* ny 0: a 1-D mesh */
+  int has_transport;
+} scene_spec;
+
+static const scene_spec scenes[N_SCENES] = {
+    {"cavity_stokes", "steady Stokes cavity, Q2/Q1", "cavity_stokes: 2-D Stokes, steady", {NULL}, 4,
+     {16, 32, 64, 128}, {16, 32, 64, 128}, 0},
+    {"kynch_settling",
+     "1-D batch settling, mixture model, MUSCL, 100 steps",
+     "kynch_settling: 1-D mixture, 100 steps",
+     {"time.end=0.4", "time.dt=0.004", "output.every=0.4", NULL},
+     5,
+     {250, 500, 1000, 2000, 4000},
+     {0},
+     1},
+    {"boycott",
+     "2-D Boycott settling, mixture model, 10 steps",
+     "boycott: 2-D mixture, 10 steps",
+     {"time.end=0.01", "time.dt=1e-3", "time.adaptive=false", "output.every=0.01", NULL},
+     3,
+     {12, 24, 48},
+     {16, 32, 64},
+     1},
+};
+
+typedef struct run_result {
+  int ok;
+  char err[2100];
+  double cpu, wall;                                   /* of the run, s */
+  double assembly, symbolic, numeric, solve, transport; /* totals, s */
+  long assemblies, symbolics, numerics, solves, substeps, steps;
+} run_result;
+
+static double clock_s(clockid_t id) {
+  struct timespec ts;
+  if (clock_gettime(id, &ts)) return NAN;
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static long cells_of(const scene_spec *s, int k) { return s->ny[k] ? (long)s->nx[k] * s->ny[k] : s->nx[k]; }
+
+static void mesh_text(const scene_spec *s, int k, char *buf, size_t len) {
+  if (s->ny[k]) snprintf(buf, len, "%d x %d", s->nx[k], s->ny[k]);
+  else snprintf(buf, len, "%d", s->nx[k]);
+}
+
+/* ---- one run, in the child ---------------------------------------------------------- */
+
+static int run(const char *src, const scene_spec *s, int k, run_result *r) {
+  memset(r, 0, sizeof *r);
+  char path[4096], file[128], set[96];
+  snprintf(path, sizeof path, "%s/configs/%s.ini", src, s->name);
+  snprintf(file, sizeof file, "/tmp/sluice_bench_cost_%ld.h5", (long)getpid());
+  if (s->ny[k]) snprintf(set, sizeof set, "mesh.cells=%d,%d", s->nx[k], s->ny[k]);
+  else snprintf(set, sizeof set, "mesh.cells=%d", s->nx[k]);
+  sl_diag d = {{0}};
+  sl_ini *ini = NULL;
+  sl_registry *reg = NULL;
+  int model = 0;
+  int rc = sl_ini_parse_file(path, &ini, &d);
+  if (!rc) rc = sl_ini_apply_override(ini, set, &d);
+  for (int j = 0; s->sets[j] && !rc; ++j) rc = sl_ini_apply_override(ini, s->sets[j], &d);
+  if (!rc) rc = sl_scene_validate(ini, &d);
+  if (!rc) rc = sl_ini_get_choice(ini, "scene", "model", 1, 0, "navier_stokes|mixture", &model, &d);
+  if (!rc) rc = sl_registry_create(&reg, NULL, 0, &d);
+  if (!rc) rc = sl_registry_scan(reg, &d);
+  sl_ns_result res;
+  memset(&res, 0, sizeof res);
+  sl_ns_run_opts o = {.scene_path = path, .output = file, .sluice_version = "bench"};
+  if (!rc) {
+    double c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID), w0 = clock_s(CLOCK_MONOTONIC);
+    rc = model == 1 ? sl_mixture_run(ini, reg, &o, &res, &d) : sl_ns_run(ini, reg, &o, &res, &d);
+    r->cpu = clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0, r->wall = clock_s(CLOCK_MONOTONIC) - w0;
+  }
+  if (!rc) {
+    r->assembly = res.assembly, r->assemblies = res.matrix_assemblies + res.residual_assemblies;
+    r->symbolic = res.linear.t_symbolic, r->symbolics = res.linear.n_symbolic;
+    r->numeric = res.linear.t_numeric, r->numerics = res.linear.n_numeric;
+    r->solve = res.linear.t_solve, r->solves = res.linear.n_solves;
+    r->transport = res.cpu_coupled, r->steps = res.steps;
+    /* the mixture's summary: "solids: N transport sub-steps (...)" (core/models/mixture.c) */
+    const char *sub = strstr(res.coupling_summary, "solids: ");
+    if (s->has_transport && (!sub || sscanf(sub, "solids: %ld transport sub-steps", &r->substeps) != 1))
+      rc = sl_diag_set(&d, SL_EFAILED, "no transport sub-step count in '%s'", res.coupling_summary);
+  }
+  if (rc) snprintf(r->err, sizeof r->err, "%s", d.msg);
+  r->ok = !rc;
+  remove(file);
+  snprintf(file + strlen(file) - 3, 5, ".xmf"); /* the XDMF sidecar */
+  remove(file);
+  sl_registry_destroy(reg);
+  sl_ini_free(ini);
+  return rc;
+}
+
+/* One run in a child process (its memory and clocks its own); the result comes back through a pipe. */
+static int run_child(const char *src, const scene_spec *s, int k, run_result *r) {
+  memset(r, 0, sizeof *r);
+  int fd[2];
+  if (pipe(fd)) {
+    snprintf(r->err, sizeof r->err, "pipe: %s", strerror(errno));
+    return -1;
+  }
+  fflush(NULL);
+  pid_t pid = fork();
+  if (pid < 0) {
+    snprintf(r->err, sizeof r->err, "fork: %s", strerror(errno));
+    close(fd[0]), close(fd[1]);
+    return -1;
+  }
+  if (pid == 0) {
+    close(fd[0]);
+    run_result mine;
+    run(src, s, k, &mine);
+    const char *p = (const char *)&mine;
+    size_t left = sizeof mine;
+    while (left > 0) {
+      ssize_t w = write(fd[1], p, left);
+      if (w < 0 && errno == EINTR) continue;
+      if (w <= 0) _exit(2);
+      p += w, left -= (size_t)w;
+    }
+    close(fd[1]);
+    _exit(mine.ok ? 0 : 1);
+  }
+  close(fd[1]);
+  char *p = (char *)r;
+  size_t got = 0;
+  while (got < sizeof *r) {
+    ssize_t n = read(fd[0], p + got, sizeof *r - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += (size_t)n;
+  }
+  close(fd[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) {
+      snprintf(r->err, sizeof r->err, "waitpid: %s", strerror(errno));
+      return -1;
+    }
+  if (got != sizeof *r) {
+    memset(r, 0, sizeof *r);
+    if (WIFSIGNALED(status))
+      snprintf(r->err, sizeof r->err, "the child was killed by signal %d%s", WTERMSIG(status),
+               WTERMSIG(status) == SIGKILL ? " (out of memory?)" : "");
+    else snprintf(r->err, sizeof r->err, "the child exited with status %d without a result", WEXITSTATUS(status));
+    return -1;
+  }
+  return r->ok ? 0 : -1;
+}
+
+/* ---- the table ------------------------------------------------------------------------ */
+
+typedef struct point {
+  int ok;
+  long cells, steps, assemblies, numerics, solves, substeps;
+  double cpu;                /* the fastest run's CPU time */
+  double per_op[N_PHASES];   /* each phase's fastest time per operation (NaN: not in this scene) */
+  double symbolic;           /* the fastest symbolic analysis, s */
+} point;
+
+/* Time per operation of each phase of one run. */
+static void per_operation(const run_result *r, int has_transport, double out[N_PHASES]) {
+  out[PHASE_ASSEMBLY] = r->assemblies > 0 ? r->assembly / (double)r->assemblies : NAN;
+  out[PHASE_FACTORISATION] = r->numerics > 0 ? r->numeric / (double)r->numerics : NAN;
+  out[PHASE_SOLVE] = r->solves > 0 ? r->solve / (double)r->solves : NAN;
+  out[PHASE_TRANSPORT] = has_transport && r->substeps > 0 ? r->transport / (double)r->substeps : NAN;
+}
+
+/* R runs of one size: per phase the fastest. The counts must agree between repeats. */
+static int measure(const char *src, const scene_spec *s, int k, int repeat, point *pt, char *err, size_t len) {
+  memset(pt, 0, sizeof *pt);
+  for (int q = 0; q < N_PHASES; ++q) pt->per_op[q] = NAN;
+  pt->cells = cells_of(s, k), pt->cpu = pt->symbolic = INFINITY;
+  for (int i = 0; i < repeat; ++i) {
+    run_result r;
+    if (run_child(src, s, k, &r)) {
+      snprintf(err, len, "%s", r.err);
+      return -1;
+    }
+    double op[N_PHASES];
+    per_operation(&r, s->has_transport, op);
+    for (int q = 0; q < N_PHASES; ++q)
+      if (isfinite(op[q])) pt->per_op[q] = isfinite(pt->per_op[q]) ? fmin(pt->per_op[q], op[q]) : op[q];
+    if (r.symbolics > 0) pt->symbolic = fmin(pt->symbolic, r.symbolic / (double)r.symbolics);
+    pt->cpu = fmin(pt->cpu, r.cpu);
+    pt->steps = r.steps, pt->assemblies = r.assemblies, pt->numerics = r.numerics, pt->solves = r.solves;
+    pt->substeps = r.substeps;
+  }
+  pt->ok = 1;
+  return 0;
+}
+
+/* Least-squares slope of log y against log x over the points where both are positive; NaN below two. */
+static double fit_exponent(int n, const long *x, const double *y) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int m = 0;
+  for (int i = 0; i < n; ++i) {
+    if (!(x[i] > 0) || !(y[i] > 0) || !isfinite(y[i])) continue;
+    double lx = log((double)x[i]), ly = log(y[i]);
+    sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly, ++m;
+  }
+  if (m < 2) return NAN;
+  double den = m * sxx - sx * sx;
+  return den > 0 ? (m * sxy - sx * sy) / den : NAN;
+}
+
+typedef struct scene_table {
+  const scene_spec *spec;
+  int n; /* sizes run */
+  point pts[MAX_SIZES];
+  double p[N_PHASES]; /* fitted exponents */
+} scene_table;
+
+static void fit_scene(scene_table *t) {
+  long x[MAX_SIZES];
+  double y[MAX_SIZES];
+  for (int q = 0; q < N_PHASES; ++q) {
+    int m = 0;
+    for (int k = 0; k < t->n; ++k)
+      if (t->pts[k].ok) x[m] = t->pts[k].cells, y[m++] = t->pts[k].per_op[q];
+    t->p[q] = fit_exponent(m, x, y);
+  }
+}
+
+static void write_csv(FILE *f, const scene_table *tables, int n_tables, const char *machine, int repeat) {
+  fprintf(f, "# bench_cost_scaling: time per operation of each phase against the number of cells\n");
+  fprintf(f, "# machine: %s\n", machine);
+  fprintf(f, "# each phase's fastest of %d runs; assembly, factorisation (numeric) and solve are wall time per "
+             "operation, transport CPU time per transport sub-step\n", repeat);
+  for (int i = 0; i < n_tables; ++i) {
+    const scene_table *t = &tables[i];
+    fprintf(f, "# %s (%s): fitted p in time ~ cells^p:", t->spec->name, t->spec->what);
+    int fitted = 0;
+    for (int q = 0; q < N_PHASES; ++q) fitted |= isfinite(t->p[q]);
+    if (!fitted) {
+      fprintf(f, " none (fewer than two sizes measured)\n");
+      continue;
+    }
+    for (int q = 0; q < N_PHASES; ++q)
+      if (isfinite(t->p[q])) fprintf(f, " %s %.3f", phase_names[q], t->p[q]);
+    fprintf(f, "; between sizes:");
+    for (int q = 0; q < N_PHASES; ++q) {
+      if (!isfinite(t->p[q])) continue;
+      fprintf(f, " %s", phase_names[q]);
+      for (int k = 1; k < t->n; ++k) {
+        const point *a = &t->pts[k - 1], *b = &t->pts[k];
+        if (a->ok && b->ok && a->per_op[q] > 0 && b->per_op[q] > 0)
+          fprintf(f, " %.2f", log(b->per_op[q] / a->per_op[q]) / log((double)b->cells / (double)a->cells));
+      }
+    }
+    fputc('\n', f);
+  }
+  fprintf(f, "scene,mesh,cells,steps,assemblies,factorisations,solves,transport_substeps,cpu_s,assembly_s,"
+             "factorisation_s,solve_s,transport_s,symbolic_s,status\n");
+  for (int i = 0; i < n_tables; ++i) {
+    const scene_table *t = &tables[i];
+    for (int k = 0; k < t->n; ++k) {
+      const point *pt = &t->pts[k];
+      char mesh[64];
+      mesh_text(t->spec, k, mesh, sizeof mesh);
+      fprintf(f, "%s,%s,%ld,", t->spec->name, mesh, pt->cells);
+      if (!pt->ok) {
+        fprintf(f, ",,,,,,,,,,,failed\n"); /* the 11 columns from steps to symbolic_s empty, then the status */
+        continue;
+      }
+      fprintf(f, "%ld,%ld,%ld,%ld,%ld,%.4g", pt->steps, pt->assemblies, pt->numerics, pt->solves, pt->substeps,
+              pt->cpu);
+      for (int q = 0; q < N_PHASES; ++q) {
+        if (isfinite(pt->per_op[q])) fprintf(f, ",%.4e", pt->per_op[q]);
+        else fputc(',', f);
+      }
+      if (isfinite(pt->symbolic)) fprintf(f, ",%.4e,ok\n", pt->symbolic);
+      else fprintf(f, ",,ok\n");
+    }
+  }
+}
+
+static int write_svg(const char *path, const scene_table *tables, int n_tables, const char *machine, int repeat) {
+  static const char *const colours[N_PHASES] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e"};
+  static const svgp_marker markers[N_PHASES] = {SVGP_CIRCLE, SVGP_SQUARE, SVGP_TRIANGLE, SVGP_DIAMOND};
+  svgp_series series[N_SCENES][N_PHASES + 1];
+  svgp_panel panels[N_SCENES];
+  double x[N_SCENES][MAX_SIZES], y[N_SCENES][N_PHASES][MAX_SIZES], guide_x[N_SCENES][2], guide_y[N_SCENES][2];
+  char names[N_SCENES][N_PHASES][64];
+  int np = 0;
+  for (int i = 0; i < n_tables && np < N_SCENES; ++i) {
+    const scene_table *t = &tables[i];
+    int ns = 0;
+    for (int k = 0; k < t->n; ++k) x[np][k] = (double)t->pts[k].cells;
+    for (int q = 0; q < N_PHASES; ++q) {
+      int any = 0;
+      for (int k = 0; k < t->n; ++k) {
+        y[np][q][k] = t->pts[k].ok ? t->pts[k].per_op[q] : NAN;
+        any |= y[np][q][k] > 0.0;
+      }
+      if (!any) continue;
+      if (isfinite(t->p[q])) snprintf(names[np][q], sizeof names[np][q], "%s, p = %.2f", phase_names[q], t->p[q]);
+      else snprintf(names[np][q], sizeof names[np][q], "%s", phase_names[q]);
+      series[np][ns++] = (svgp_series){.name = names[np][q], .n = t->n, .x = x[np], .y = y[np][q],
+                                       .colour = colours[q], .marker = markers[q]};
+    }
+    /* a slope-1 guide from the first assembly point across the sizes */
+    if (t->n >= 2 && isfinite(y[np][PHASE_ASSEMBLY][0]) && isfinite(t->p[PHASE_ASSEMBLY])) {
+      guide_x[np][0] = x[np][0], guide_x[np][1] = x[np][t->n - 1];
+      guide_y[np][0] = y[np][PHASE_ASSEMBLY][0], guide_y[np][1] = guide_y[np][0] * guide_x[np][1] / guide_x[np][0];
+      series[np][ns++] = (svgp_series){.name = "cells^1", .n = 2, .x = guide_x[np], .y = guide_y[np],
+                                       .colour = "#7f7f7f", .marker = SVGP_CIRCLE, .dashed = 1};
+    }
+    if (ns == 0) continue; /* no run of this scene succeeded */
+    panels[np] = (svgp_panel){.title = t->spec->title, .xlabel = "cells", .ylabel = "seconds per operation",
+                              .n_series = ns, .series = series[np], .legend = SVGP_TOP_LEFT};
+    ++np;
+  }
+  char note[1024];
+  snprintf(note, sizeof note,
+           "Each phase's fastest of %d runs: assembly, numeric factorisation and back-substitution wall time per "
+           "operation, transport CPU time per sub-step.\np: least-squares slope of log time against log cells. "
+           "Machine: %s.",
+           repeat, machine);
+  svgp_figure fig = {.title = "Cost per operation against cells (bench_cost_scaling)", .note = note,
+                     .n_panels = np, .panels = panels, .columns = np, .panel_width = 440, .panel_height = 380};
+  return svgp_write(path, &fig);
+}
+
+/* ---- main ----------------------------------------------------------------------------- */
+
+static int usage(void) {
+  fprintf(stderr, "usage: bench_cost_scaling [SOURCE_DIR] [--repeat R] [--csv PATH] [--svg PATH] [--max-cells N] "
+                  "[--scene NAME]...\n");
+  return 2;
+}
+
+int main(int argc, char **argv) {
+  const char *src = ".", *csv = NULL, *svg = NULL;
+  const char *only[N_SCENES];
+  int n_only = 0, repeat = 3;
+  long max_cells = 0;
+  for (int i = 1; i < argc; ++i) {
+    if (!strcmp(argv[i], "--repeat") && i + 1 < argc) repeat = atoi(argv[++i]);
+    else if (!strcmp(argv[i], "--csv") && i + 1 < argc) csv = argv[++i];
+    else if (!strcmp(argv[i], "--svg") && i + 1 < argc) svg = argv[++i];
+    else if (!strcmp(argv[i], "--max-cells") && i + 1 < argc) max_cells = atol(argv[++i]);
+    else if (!strcmp(argv[i], "--scene") && i + 1 < argc && n_only < N_SCENES) only[n_only++] = argv[++i];
+    else if (argv[i][0] == '-') return usage();
+    else src = argv[i];
+  }
+  if (repeat < 1) return usage();
+  char machine[512];
+  bench_machine_describe(machine, sizeof machine);
+  scene_table tables[N_SCENES];
+  int n_tables = 0, failed = 0;
+  for (int i = 0; i < N_SCENES; ++i) {
+    int wanted = n_only == 0;
+    for (int j = 0; j < n_only; ++j) wanted |= !strcmp(only[j], scenes[i].name);
+    if (!wanted) continue;
+    scene_table *t = &tables[n_tables++];
+    memset(t, 0, sizeof *t);
+    t->spec = &scenes[i];
+    for (int k = 0; k < scenes[i].n_sizes; ++k) {
+      if (max_cells > 0 && cells_of(&scenes[i], k) > max_cells) break;
+      char mesh[64], err[2200];
+      mesh_text(&scenes[i], k, mesh, sizeof mesh);
+      fprintf(stderr, "%s, %s cells: ", scenes[i].name, mesh);
+      point *pt = &t->pts[t->n++];
+      if (measure(src, &scenes[i], k, repeat, pt, err, sizeof err)) {
+        fprintf(stderr, "failed: %s\n", err);
+        failed = 1;
+        continue;
+      }
+      fprintf(stderr, "CPU %.3g s; per operation: assembly %.3g s, factorisation %.3g s, solve %.3g s", pt->cpu,
+              pt->per_op[PHASE_ASSEMBLY], pt->per_op[PHASE_FACTORISATION], pt->per_op[PHASE_SOLVE]);
+      if (scenes[i].has_transport) fprintf(stderr, ", transport %.3g s (%ld sub-steps)", pt->per_op[PHASE_TRANSPORT],
+                                           pt->substeps);
+      fputc('\n', stderr);
+    }
+    fit_scene(t);
+  }
+  write_csv(stdout, tables, n_tables, machine, repeat);
+  if (csv) {
+    FILE *f = fopen(csv, "w");
+    if (!f) {
+      fprintf(stderr, "%s: %s\n", csv, strerror(errno));
+      return 1;
+    }
+    write_csv(f, tables, n_tables, machine, repeat);
+    if (fclose(f)) {
+      fprintf(stderr, "%s: write failed\n", csv);
+      return 1;
+    }
+  }
+  if (svg && write_svg(svg, tables, n_tables, machine, repeat)) {
+    fprintf(stderr, "%s: %s\n", svg, strerror(errno));
+    return 1;
+  }
+  return failed;
+}
