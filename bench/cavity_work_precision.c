@@ -40,19 +40,18 @@
  * split versus unknowns. The exit status is 1 when any run failed. */
 #include <errno.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
 #include <sys/types.h>
-#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "core/config/scene_schema.h"
 #include "core/io/sample.h"
 #include "core/models/navier_stokes.h"
+#include "bench_child.h"
 #include "bench_machine.h"
 #include "svg_plot.h"
 
@@ -223,58 +222,23 @@ static int run(const bench_opts *bo, const char *solver, int n, int transient, r
   return rc;
 }
 
-/* Runs one mesh in a child process; its result comes back through a pipe. */
+typedef struct child_args {
+  const bench_opts *bo;
+  const char *solver;
+  int n, transient;
+} child_args;
+
+static void child_run(void *arg, void *result) {
+  const child_args *a = arg;
+  run(a->bo, a->solver, a->n, a->transient, result);
+}
+
+/* Runs one mesh in a child process (its memory and clocks its own). */
 static int run_child(const bench_opts *bo, const char *solver, int n, int transient, run_result *r) {
-  memset(r, 0, sizeof *r);
-  int fd[2];
-  if (pipe(fd)) {
-    snprintf(r->err, sizeof r->err, "pipe: %s", strerror(errno));
-    return -1;
-  }
-  fflush(NULL);
-  pid_t pid = fork();
-  if (pid < 0) {
-    snprintf(r->err, sizeof r->err, "fork: %s", strerror(errno));
-    close(fd[0]), close(fd[1]);
-    return -1;
-  }
-  if (pid == 0) {
-    close(fd[0]);
-    run_result mine;
-    run(bo, solver, n, transient, &mine);
-    const char *p = (const char *)&mine;
-    size_t left = sizeof mine;
-    while (left > 0) {
-      ssize_t w = write(fd[1], p, left);
-      if (w < 0 && errno == EINTR) continue;
-      if (w <= 0) _exit(2);
-      p += w, left -= (size_t)w;
-    }
-    close(fd[1]);
-    _exit(mine.ok ? 0 : 1);
-  }
-  close(fd[1]);
-  char *p = (char *)r;
-  size_t got = 0;
-  while (got < sizeof *r) {
-    ssize_t k = read(fd[0], p + got, sizeof *r - got);
-    if (k < 0 && errno == EINTR) continue;
-    if (k <= 0) break;
-    got += (size_t)k;
-  }
-  close(fd[0]);
-  int status;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) {
-      snprintf(r->err, sizeof r->err, "waitpid: %s", strerror(errno));
-      return -1;
-    }
-  if (got != sizeof *r) {
-    memset(r, 0, sizeof *r);
-    if (WIFSIGNALED(status))
-      snprintf(r->err, sizeof r->err, "the child was killed by signal %d%s", WTERMSIG(status),
-               WTERMSIG(status) == SIGKILL ? " (out of memory?)" : "");
-    else snprintf(r->err, sizeof r->err, "the child exited with status %d without a result", WEXITSTATUS(status));
+  child_args a = {bo, solver, n, transient};
+  char why[sizeof r->err];
+  if (bench_in_child(child_run, &a, r, sizeof *r, why, sizeof why)) {
+    snprintf(r->err, sizeof r->err, "%s", why);
     return -1;
   }
   return r->ok ? 0 : -1;

@@ -35,18 +35,17 @@
  * is 1 when a run failed. */
 #include <errno.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/types.h>
-#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "core/config/scene_schema.h"
 #include "core/models/mixture.h"
 #include "core/models/navier_stokes.h"
+#include "bench_child.h"
 #include "bench_machine.h"
 #include "svg_plot.h"
 
@@ -156,58 +155,23 @@ static int run(const char *src, const scene_spec *s, int k, run_result *r) {
   return rc;
 }
 
-/* One run in a child process (its memory and clocks its own); the result comes back through a pipe. */
+typedef struct child_args {
+  const char *src;
+  const scene_spec *s;
+  int k;
+} child_args;
+
+static void child_run(void *arg, void *result) {
+  const child_args *a = arg;
+  run(a->src, a->s, a->k, result);
+}
+
+/* One run in a child process (its memory and clocks its own). */
 static int run_child(const char *src, const scene_spec *s, int k, run_result *r) {
-  memset(r, 0, sizeof *r);
-  int fd[2];
-  if (pipe(fd)) {
-    snprintf(r->err, sizeof r->err, "pipe: %s", strerror(errno));
-    return -1;
-  }
-  fflush(NULL);
-  pid_t pid = fork();
-  if (pid < 0) {
-    snprintf(r->err, sizeof r->err, "fork: %s", strerror(errno));
-    close(fd[0]), close(fd[1]);
-    return -1;
-  }
-  if (pid == 0) {
-    close(fd[0]);
-    run_result mine;
-    run(src, s, k, &mine);
-    const char *p = (const char *)&mine;
-    size_t left = sizeof mine;
-    while (left > 0) {
-      ssize_t w = write(fd[1], p, left);
-      if (w < 0 && errno == EINTR) continue;
-      if (w <= 0) _exit(2);
-      p += w, left -= (size_t)w;
-    }
-    close(fd[1]);
-    _exit(mine.ok ? 0 : 1);
-  }
-  close(fd[1]);
-  char *p = (char *)r;
-  size_t got = 0;
-  while (got < sizeof *r) {
-    ssize_t n = read(fd[0], p + got, sizeof *r - got);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    got += (size_t)n;
-  }
-  close(fd[0]);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) {
-      snprintf(r->err, sizeof r->err, "waitpid: %s", strerror(errno));
-      return -1;
-    }
-  if (got != sizeof *r) {
-    memset(r, 0, sizeof *r);
-    if (WIFSIGNALED(status))
-      snprintf(r->err, sizeof r->err, "the child was killed by signal %d%s", WTERMSIG(status),
-               WTERMSIG(status) == SIGKILL ? " (out of memory?)" : "");
-    else snprintf(r->err, sizeof r->err, "the child exited with status %d without a result", WEXITSTATUS(status));
+  child_args a = {src, s, k};
+  char why[sizeof r->err];
+  if (bench_in_child(child_run, &a, r, sizeof *r, why, sizeof why)) {
+    snprintf(r->err, sizeof r->err, "%s", why);
     return -1;
   }
   return r->ok ? 0 : -1;

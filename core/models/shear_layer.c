@@ -147,15 +147,16 @@ static int eval_wall(sh_layer *L, sh_wall *w, double *tau, double *dtau, double 
   const double *v[Q_N];
   for (int k = 0; k < Q_N; ++k) one[k] = L->qv[k][0], v[k] = &one[k];
   one[Q_PHI] = phi, one[Q_THETA] = th, one[Q_SLIP_WALL] = sl, one[Q_WALL_DISTANCE] = dist, one[Q_SLIP] = sl;
-  sl_point_request rq[4] = {{"tau_w", tau, dtau, "slip_wall"}, {"tau_w", dtau_th, dtau_th, "theta"},
-                            {"theta_flux", q, dq, "theta"}, {"bagnold_number", bn, NULL, NULL}};
-  *q = *dq = *dtau_th = 0.0, *bn = NAN;
-  int rc = sl_point_eval(&L->wall, 1, v, rq, 1, d);
+  /* one closure call: tau_w with its slip and theta derivatives (0 when it
+   * has no theta input), and the optional outputs the closure gives */
   double tau_again;
-  rq[1].values = &tau_again;
-  if (!rc && sl_point_has_input(&L->wall, "theta")) rc = sl_point_eval(&L->wall, 1, v, rq + 1, 1, d);
-  if (!rc && sl_point_has_output(&L->wall, "theta_flux")) rc = sl_point_eval(&L->wall, 1, v, rq + 2, 1, d);
-  if (!rc && sl_point_has_output(&L->wall, "bagnold_number")) rc = sl_point_eval(&L->wall, 1, v, rq + 3, 1, d);
+  sl_point_request rq[4] = {{"tau_w", tau, dtau, "slip_wall"}, {"tau_w", &tau_again, dtau_th, "theta"}};
+  int n_rq = 2;
+  *q = *dq = 0.0, *bn = NAN;
+  if (sl_point_has_output(&L->wall, "theta_flux")) rq[n_rq++] = (sl_point_request){"theta_flux", q, dq, "theta"};
+  if (sl_point_has_output(&L->wall, "bagnold_number"))
+    rq[n_rq++] = (sl_point_request){"bagnold_number", bn, NULL, NULL};
+  int rc = sl_point_eval(&L->wall, 1, v, rq, n_rq, d);
   if (rc) return sl_diag_prefix(d, rc, "wall '%s'", w->name);
   return 0;
 }

@@ -31,7 +31,9 @@ typedef struct sl_point_closure {
 
 /* One output wanted: its values (n points), and optionally its derivative
  * with respect to the input `wrt` (NULL: none). The derivative is 0 where
- * the closure does not differentiate that input. */
+ * the closure does not differentiate that input (or has no such input).
+ * The same output may be asked twice with different `wrt`: one call to the
+ * closure serves every request. */
 typedef struct sl_point_request {
   const char *output;
   double *values;
