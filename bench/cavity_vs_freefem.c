@@ -1,24 +1,45 @@
-/* The Stokes cavity against FreeFEM: error of the centreline minimum against
+/* The Stokes cavity against FreeFEM: error of the centreline profile against
  * CPU time for sluice (Q2/Q1, read from the CSV of
- * bench_cavity_work_precision) and for FreeFEM (P2/P1 on the same number of
- * unknowns, bench/freefem/cavity_stokes.edp, run here), on one plot.
+ * bench_cavity_work_precision --profile-ref) and for FreeFEM (P2/P1 on the
+ * same number of unknowns, bench/freefem/cavity_stokes.edp, run here), on
+ * one plot.
  *
  * FreeFEM is for comparison only, not a dependency (Debian: freefem++). Each
  * FreeFEM run is its own process; its CPU time is the script's clock() from
  * the mesh to the solution (FreeFEM's start-up and the sampling excluded,
  * as sluice's cpu_s excludes process start-up), its peak memory the child's
- * ru_maxrss. The error of both is |min u - u*| against the same u*.
+ * ru_maxrss.
  *
- *   bench_cavity_vs_freefem SOURCE_DIR [--sluice-csv PATH] [--reference U*]
- *       [--repeat R] [--csv PATH] [--svg PATH] [n ...]   (default n: 8 16 32 64 128)
+ * The error is that of u(1/2, y_k) against a reference profile u_ref(y_k) at
+ * the points of the reference file (`sluice sample` CSV, columns y and
+ * velocity_0; default bench/freefem/cavity_centreline_ref.csv, how it was
+ * made is in its header): the max-norm over the points and the L2 norm over
+ * 0 <= y <= 1 (trapezoid rule over the points). FreeFEM samples the very
+ * points the reference file lists (passed to the script in a points file);
+ * sluice's CSV must come from the same reference file. |min u - u*| (u* =
+ * -0.207755897 by default) is kept as a secondary column: below about 1e-6
+ * the computed minimum crosses u* and that error is not monotone in n.
  *
- * The sluice CSV defaults to SOURCE_DIR/bench/results/cavity_work_precision.csv;
- * u* to -0.207755897 (the README's Richardson extrapolation of n = 64, 128,
- * 256). CSV on stdout (and in --csv PATH): code, solver, n, unknowns, min_u,
- * error, cpu_s, peak_rss_mb; then, for each FreeFEM run, the cheapest sluice
- * run at least as accurate. Exit status 1 when a run failed, 2 on bad usage. */
-#define _DEFAULT_SOURCE /* wait4 */
+ *   bench_cavity_vs_freefem SOURCE_DIR [--sluice-csv PATH] [--sluice-bench EXE]
+ *       [--profile-ref FILE] [--reference U*] [--repeat R] [--csv PATH]
+ *       [--svg PATH] [n ...]                  (default n: 8 16 32 64 128)
+ *
+ * The sluice CSV defaults to SOURCE_DIR/bench/results/cavity_vs_freefem.sluice.csv.
+ * With --sluice-bench EXE (bench_cavity_work_precision) the sluice runs are
+ * made here instead and the CSV is written, not read: R rounds, each running
+ * every mesh once in sluice (both solvers) and then in FreeFEM, each code
+ * keeping its least CPU time per mesh. On a machine shared with other jobs
+ * the load drifts over minutes; interleaving gives both codes the same
+ * drift, where running one code's meshes after the other's does not.
+ * CSV on stdout (and in --csv PATH): code, solver, n, unknowns, err_max,
+ * err_l2, min_u, min_err, cpu_s, peak_rss_mb; then, for each FreeFEM run and
+ * each sluice solver, the CPU time sluice needs for the same error, by
+ * linear interpolation of log(cpu) against log(error) between the two sluice
+ * meshes whose errors bracket FreeFEM's. Exit status 1 when a run failed, 2
+ * on bad usage. */
+#define _DEFAULT_SOURCE /* wait4, getloadavg */
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,19 +49,23 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "centreline_profile.h"
 #include "svg_plot.h"
 
-enum { MAX_RUNS = 64, MAX_N = 16 };
+enum { MAX_RUNS = 64, MAX_N = 16, MAX_SOLVERS = 3 };
 
 typedef struct point {
   char code[16], solver[16];
   int n;
   long unknowns;
-  double umin, error, cpu, mb;
+  double umin, min_err, err_max, err_l2, cpu, mb;
+  char raw[1024]; /* sluice: its line of the work-precision CSV */
 } point;
 
-/* Runs FreeFem++ on the script for n cells per side (fastest of repeat). */
-static int run_freefem(const char *script, int n, int repeat, point *p) {
+/* Runs FreeFem++ on the script for n cells per side (fastest of repeat),
+ * sampling u at the points of `points` (the reference's y). */
+static int run_freefem(const char *script, const char *points, const centreline_profile *ref, int n, int repeat, point *p) {
+  static double u[CENTRELINE_MAX_POINTS];
   memset(p, 0, sizeof *p);
   snprintf(p->code, sizeof p->code, "freefem"), snprintf(p->solver, sizeof p->solver, "umfpack");
   p->n = n, p->cpu = INFINITY;
@@ -54,33 +79,38 @@ static int run_freefem(const char *script, int n, int repeat, point *p) {
       snprintf(arg, sizeof arg, "%d", n);
       dup2(fd[1], STDOUT_FILENO);
       close(fd[0]), close(fd[1]);
-      execlp("FreeFem++", "FreeFem++", "-nw", "-v", "0", script, arg, (char *)NULL);
+      execlp("FreeFem++", "FreeFem++", "-nw", "-v", "0", script, arg, points, (char *)NULL);
       fprintf(stderr, "FreeFem++: %s (Debian: apt-get install freefem++)\n", strerror(errno));
       _exit(127);
     }
     close(fd[1]);
     FILE *f = fdopen(fd[0], "r");
     char line[512];
-    int got = 0;
+    int got = 0, n_u = 0;
     double umin = NAN, cpu = NAN;
     long unknowns = 0;
-    int nn = 0;
-    while (f && fgets(line, sizeof line, f))
+    int nn = 0, i;
+    double v;
+    while (f && fgets(line, sizeof line, f)) {
       if (sscanf(line, "RESULT %d %ld %lf %lf", &nn, &unknowns, &umin, &cpu) == 4) got = 1;
+      else if (sscanf(line, "P %d %lf", &i, &v) == 2 && i == n_u && n_u < ref->n) u[n_u++] = v;
+    }
     if (f) fclose(f);
     else close(fd[0]);
     int status;
     struct rusage ru;
     if (wait4(pid, &status, 0, &ru) < 0) return fprintf(stderr, "wait4: %s\n", strerror(errno)), -1;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !got) {
-      fprintf(stderr, "FreeFem++ %s %d failed (status %d)\n", script, n, status);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !got || n_u != ref->n) {
+      fprintf(stderr, "FreeFem++ %s %d failed (status %d, %d of %d profile points)\n", script, n, status, n_u, ref->n);
       return -1;
     }
     p->unknowns = unknowns, p->umin = umin;
+    centreline_profile_error(ref, u, &p->err_max, &p->err_l2);
     if (cpu < p->cpu) p->cpu = cpu;
     double mb = ru.ru_maxrss / 1024.0;
     if (mb > p->mb) p->mb = mb;
   }
+  if (!isfinite(p->err_max) || !isfinite(p->err_l2)) return fprintf(stderr, "FreeFEM n = %d: NaN in profile\n", n), -1;
   return 0;
 }
 
@@ -108,23 +138,36 @@ static void field(const char *line, int k, char *buf, size_t cap) {
   snprintf(buf, cap, "%.*s", (int)(w < cap ? w : cap - 1), s);
 }
 
-/* The steady runs of bench_cavity_work_precision's CSV. */
-static int read_sluice(const char *path, point *pts, int max) {
+/* The steady runs of bench_cavity_work_precision's CSV (made with
+ * --profile-ref); its "# machine:" line into machine, and the number of
+ * profile points of its "# profile reference:" line into *n_prof. */
+static int read_sluice(const char *path, point *pts, int max, char *machine, size_t cap, int *n_prof, char *pre,
+                       size_t pre_cap) {
   FILE *f = fopen(path, "r");
-  if (!f) return fprintf(stderr, "%s: %s (run bench_cavity_work_precision --csv first)\n", path, strerror(errno)), -1;
+  if (!f) return fprintf(stderr, "%s: %s (run bench_cavity_work_precision --profile-ref FILE --csv first)\n", path,
+                         strerror(errno)), -1;
+  enum { NC = 8 };
   char line[4096], header[4096] = "";
-  int n = 0, c[5] = {-1, -1, -1, -1, -1};
-  static const char *const names[5] = {"solver", "n", "unknowns", "umin", "cpu_s"};
-  int c_mb = -1;
+  int n = 0, c[NC];
+  static const char *const names[NC] = {"solver", "n",           "unknowns",     "umin",
+                                        "cpu_s",  "peak_rss_mb", "prof_max_err", "prof_l2_err"};
+  *n_prof = 0;
+  if (pre) pre[0] = '\0';
   while (fgets(line, sizeof line, f)) {
-    if (line[0] == '#') continue;
+    if (pre && (line[0] == '#' || !header[0]) && strlen(pre) + strlen(line) < pre_cap) strcat(pre, line);
+    if (line[0] == '#') {
+      if (!strncmp(line, "# machine: ", 11)) snprintf(machine, cap, "%.*s", (int)strcspn(line + 11, "\n"), line + 11);
+      const char *r = strstr(line, "# profile reference: ");
+      if (r && (r = strstr(r, ", ")) != NULL) *n_prof = atoi(r + 2);
+      continue;
+    }
     if (!header[0]) {
       snprintf(header, sizeof header, "%s", line);
-      for (int k = 0; k < 5; ++k) c[k] = column(header, names[k]);
-      c_mb = column(header, "peak_rss_mb");
-      if (c[0] < 0 || c[1] < 0 || c[2] < 0 || c[3] < 0 || c[4] < 0) {
+      int bad = 0;
+      for (int k = 0; k < NC; ++k) bad |= (c[k] = column(header, names[k])) < 0;
+      if (bad) {
         fclose(f);
-        return fprintf(stderr, "%s: not a bench_cavity_work_precision CSV\n", path), -1;
+        return fprintf(stderr, "%s: not a bench_cavity_work_precision CSV with profile errors\n", path), -1;
       }
       continue;
     }
@@ -133,32 +176,96 @@ static int read_sluice(const char *path, point *pts, int max) {
     char buf[64];
     memset(p, 0, sizeof *p);
     snprintf(p->code, sizeof p->code, "sluice");
+    size_t len = strlen(line);
+    if (len >= sizeof p->raw) {
+      fclose(f);
+      return fprintf(stderr, "%s: a line longer than %zu characters\n", path, sizeof p->raw - 1), -1;
+    }
+    memcpy(p->raw, line, len + 1);
     field(line, c[0], p->solver, sizeof p->solver);
     field(line, c[1], buf, sizeof buf), p->n = atoi(buf);
     field(line, c[2], buf, sizeof buf), p->unknowns = atol(buf);
-    field(line, c[3], buf, sizeof buf), p->umin = strtod(buf, NULL);
+    field(line, c[3], buf, sizeof buf), p->umin = buf[0] ? strtod(buf, NULL) : NAN;
     field(line, c[4], buf, sizeof buf), p->cpu = strtod(buf, NULL);
-    if (c_mb >= 0) field(line, c_mb, buf, sizeof buf), p->mb = strtod(buf, NULL);
-    if (p->n > 0 && isfinite(p->umin) && p->cpu > 0) ++n; /* a failed run has no time */
+    field(line, c[5], buf, sizeof buf), p->mb = strtod(buf, NULL);
+    field(line, c[6], buf, sizeof buf), p->err_max = buf[0] ? strtod(buf, NULL) : NAN;
+    field(line, c[7], buf, sizeof buf), p->err_l2 = buf[0] ? strtod(buf, NULL) : NAN;
+    /* a failed run has no time; a run without a reference profile no profile error */
+    if (p->n > 0 && isfinite(p->umin) && p->cpu > 0 && isfinite(p->err_max) && isfinite(p->err_l2)) ++n;
   }
   fclose(f);
   return n;
 }
 
+/* Runs the sluice bench (bench_cavity_work_precision) for one mesh, both
+ * solvers, one repeat, its CSV into csv. */
+static int run_sluice_bench(const char *exe, const char *src, const char *prof, double ref, int n, const char *csv) {
+  char nbuf[32], rbuf[64];
+  snprintf(nbuf, sizeof nbuf, "%d", n), snprintf(rbuf, sizeof rbuf, "%.17g", ref);
+  pid_t pid = fork();
+  if (pid < 0) return fprintf(stderr, "fork: %s\n", strerror(errno)), -1;
+  if (pid == 0) {
+    int null = open("/dev/null", O_WRONLY); /* its CSV goes to the file; stderr shows progress */
+    if (null >= 0) dup2(null, STDOUT_FILENO), close(null);
+    execl(exe, exe, src, "--solvers", "umfpack,klu", "--repeat", "1", "--steps", "0", "--reference", rbuf,
+          "--profile-ref", prof, "--csv", csv, nbuf, (char *)NULL);
+    fprintf(stderr, "%s: %s\n", exe, strerror(errno));
+    _exit(127);
+  }
+  int status;
+  if (waitpid(pid, &status, 0) < 0) return fprintf(stderr, "waitpid: %s\n", strerror(errno)), -1;
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    return fprintf(stderr, "%s n = %d failed (status %d)\n", exe, n, status), -1;
+  return 0;
+}
+
+typedef enum reach { REACH_INTERP, REACH_COARSEST, REACH_NOT } reach;
+
+typedef struct reach_result {
+  reach how;
+  double cpu; /* REACH_INTERP: interpolated; REACH_COARSEST: the coarsest run's (an upper bound) */
+  int n_lo, n_hi;
+} reach_result;
+
+/* The CPU time sluice (runs idx[0..m), ascending n) needs for error e: the
+ * first pair of successive meshes whose errors bracket e, log(cpu) linear in
+ * log(error) between them. measure 0: max-norm, 1: L2. */
+static reach_result time_to_reach(const point *pts, const int *idx, int m, double e, int measure) {
+  reach_result r = {REACH_NOT, NAN, 0, 0};
+#define ERR(j) (measure ? pts[idx[j]].err_l2 : pts[idx[j]].err_max)
+  if (m > 0 && ERR(0) <= e) {
+    r.how = REACH_COARSEST, r.cpu = pts[idx[0]].cpu, r.n_lo = r.n_hi = pts[idx[0]].n;
+    return r;
+  }
+  for (int j = 0; j + 1 < m; ++j) {
+    double e0 = ERR(j), e1 = ERR(j + 1);
+    if (!(e0 > e && e1 <= e)) continue;
+    const point *a = &pts[idx[j]], *b = &pts[idx[j + 1]];
+    double s = (log(e) - log(e0)) / (log(e1) - log(e0));
+    r.how = REACH_INTERP, r.cpu = exp(log(a->cpu) + s * (log(b->cpu) - log(a->cpu)));
+    r.n_lo = a->n, r.n_hi = b->n;
+    return r;
+  }
+#undef ERR
+  return r;
+}
+
 static void usage(void) {
-  fputs("usage: bench_cavity_vs_freefem SOURCE_DIR [--sluice-csv PATH] [--reference U*] [--repeat R]\n"
-        "                              [--csv PATH] [--svg PATH] [n ...]\n",
+  fputs("usage: bench_cavity_vs_freefem SOURCE_DIR [--sluice-csv PATH] [--sluice-bench EXE] [--profile-ref FILE]\n"
+        "                              [--reference U*] [--repeat R] [--csv PATH] [--svg PATH] [n ...]\n",
         stderr);
 }
 
 int main(int argc, char **argv) {
-  const char *src = NULL, *sluice_csv = NULL, *csv = NULL, *svg = NULL;
+  const char *src = NULL, *sluice_csv = NULL, *csv = NULL, *svg = NULL, *prof_path = NULL, *sluice_bench = NULL;
   double ref = -0.207755897;
   int repeat = 1, ns[MAX_N], n_ns = 0;
   for (int i = 1; i < argc; ++i) {
     const char *a = argv[i];
     int more = i + 1 < argc;
     if (strcmp(a, "--sluice-csv") == 0 && more) sluice_csv = argv[++i];
+    else if (strcmp(a, "--profile-ref") == 0 && more) prof_path = argv[++i];
+    else if (strcmp(a, "--sluice-bench") == 0 && more) sluice_bench = argv[++i];
     else if (strcmp(a, "--reference") == 0 && more) ref = strtod(argv[++i], NULL);
     else if (strcmp(a, "--repeat") == 0 && more) repeat = atoi(argv[++i]);
     else if (strcmp(a, "--csv") == 0 && more) csv = argv[++i];
@@ -173,58 +280,174 @@ int main(int argc, char **argv) {
     static const int def[] = {8, 16, 32, 64, 128};
     for (n_ns = 0; n_ns < 5; ++n_ns) ns[n_ns] = def[n_ns];
   }
-  char script[4096], sluice_default[4096];
+  char script[4096], sluice_default[4096], prof_default[4096], points[64];
   snprintf(script, sizeof script, "%s/bench/freefem/cavity_stokes.edp", src);
-  snprintf(sluice_default, sizeof sluice_default, "%s/bench/results/cavity_work_precision.csv", src);
-  point pts[MAX_RUNS];
-  int np = read_sluice(sluice_csv ? sluice_csv : sluice_default, pts, MAX_RUNS - MAX_N);
-  if (np < 0) return 1;
-  int failed = 0, first_ff = np;
-  for (int k = 0; k < n_ns; ++k) {
-    fprintf(stderr, "freefem, n = %d ...", ns[k]);
-    if (run_freefem(script, ns[k], repeat, &pts[np])) {
-      failed = 1;
-      continue;
+  snprintf(sluice_default, sizeof sluice_default, "%s/bench/results/cavity_vs_freefem.sluice.csv", src);
+  snprintf(prof_default, sizeof prof_default, "%s/bench/freefem/cavity_centreline_ref.csv", src);
+  if (!prof_path) prof_path = prof_default;
+  static centreline_profile pr;
+  if (centreline_profile_read(prof_path, &pr)) return 2;
+
+  static point pts[MAX_RUNS], ff[MAX_N], tmp[8];
+  static char pre[16384];
+  char machine[512] = "not recorded in the sluice CSV", tmp_csv[64];
+  int n_prof_sluice = 0, np = 0, failed = 0;
+  if (!sluice_csv) sluice_csv = sluice_default;
+  snprintf(points, sizeof points, "/tmp/sluice_ff_points_%ld.txt", (long)getpid());
+  snprintf(tmp_csv, sizeof tmp_csv, "/tmp/sluice_ff_sluice_%ld.csv", (long)getpid());
+  if (!sluice_bench) {
+    np = read_sluice(sluice_csv, pts, MAX_RUNS - MAX_N, machine, sizeof machine, &n_prof_sluice, NULL, 0);
+    if (np < 0) return 1;
+    if (n_prof_sluice != pr.n) {
+      fprintf(stderr, "%s: profile errors over %d points, the reference %s has %d: not the same points\n", sluice_csv,
+              n_prof_sluice, prof_path, pr.n);
+      return 2;
     }
-    fprintf(stderr, " %.3g s CPU, %.0f MB\n", pts[np].cpu, pts[np].mb);
-    ++np;
   }
-  for (int i = 0; i < np; ++i) pts[i].error = fabs(pts[i].umin - ref);
+
+  /* The points for FreeFEM: the reference's y, printed to round-trip. */
+  FILE *pf = fopen(points, "w");
+  if (!pf) return fprintf(stderr, "%s: %s\n", points, strerror(errno)), 1;
+  fprintf(pf, "%d\n", pr.n);
+  for (int k = 0; k < pr.n; ++k) fprintf(pf, "%.17g\n", pr.y[k]);
+  if (fclose(pf)) return fprintf(stderr, "%s: write failed\n", points), 1;
+
+  /* Without --sluice-bench: the sluice CSV as given, then R FreeFEM runs per
+   * mesh. With it: R rounds, each running every mesh once in both codes,
+   * sluice then FreeFEM, so that both see the same load drift on a shared
+   * machine; each keeps its least CPU time over the rounds. */
+  double load[2][1] = {{NAN}, {NAN}};
+  if (getloadavg(load[0], 1) != 1) load[0][0] = NAN;
+  int ok_ff[MAX_N] = {0};
+  int rounds = sluice_bench ? repeat : 1, per_run = sluice_bench ? 1 : repeat;
+  double load_lo = load[0][0], load_hi = load[0][0];
+  for (int r = 0; r < rounds && !failed; ++r)
+    for (int k = 0; k < n_ns && !failed; ++k) {
+      double now;
+      if (getloadavg(&now, 1) == 1) load_lo = fmin(load_lo, now), load_hi = fmax(load_hi, now);
+      if (sluice_bench) {
+        fprintf(stderr, "round %d: sluice, n = %d ...", r + 1, ns[k]);
+        int m = -1;
+        if (!run_sluice_bench(sluice_bench, src, prof_path, ref, ns[k], tmp_csv))
+          m = read_sluice(tmp_csv, tmp, 8, machine, sizeof machine, &n_prof_sluice, r == 0 && k == 0 ? pre : NULL,
+                          sizeof pre);
+        remove(tmp_csv);
+        if (m <= 0 || n_prof_sluice != pr.n) {
+          failed = 1;
+          break;
+        }
+        for (int j = 0; j < m; ++j) {
+          int i = 0;
+          while (i < np && !(pts[i].n == tmp[j].n && !strcmp(pts[i].solver, tmp[j].solver))) ++i;
+          if (i == np) pts[np++] = tmp[j];
+          else if (tmp[j].cpu < pts[i].cpu) pts[i] = tmp[j];
+          fprintf(stderr, " %s %.3g s", tmp[j].solver, tmp[j].cpu);
+        }
+        fputc('\n', stderr);
+      }
+      fprintf(stderr, "round %d: freefem, n = %d ...", r + 1, ns[k]);
+      point one;
+      if (run_freefem(script, points, &pr, ns[k], per_run, &one)) {
+        failed = 1;
+        break;
+      }
+      fprintf(stderr, " %.3g s CPU, %.0f MB, error %.3g (max) %.3g (L2)\n", one.cpu, one.mb, one.err_max, one.err_l2);
+      if (!ok_ff[k] || one.cpu < ff[k].cpu) {
+        double mb = ok_ff[k] ? fmax(ff[k].mb, one.mb) : one.mb;
+        ff[k] = one, ff[k].mb = mb;
+      } else ff[k].mb = fmax(ff[k].mb, one.mb);
+      ok_ff[k] = 1;
+    }
+  if (getloadavg(load[1], 1) != 1) load[1][0] = NAN;
+  load_lo = fmin(load_lo, load[1][0]), load_hi = fmax(load_hi, load[1][0]);
+  remove(points);
+  if (failed) return 1;
+  if (sluice_bench && strstr(machine, ", load")) *strstr(machine, ", load") = '\0'; /* the last round's: the range is given */
+  if (sluice_bench) { /* the merged sluice runs, as the work-precision CSV */
+    FILE *sf = fopen(sluice_csv, "w");
+    if (!sf) return fprintf(stderr, "%s: %s\n", sluice_csv, strerror(errno)), 1;
+    fprintf(sf, "# fastest of %d rounds interleaved with FreeFEM's runs (bench_cavity_vs_freefem --sluice-bench), "
+                "one bench_cavity_work_precision run per mesh and round; the lines below are from its first run\n",
+            repeat);
+    fputs(pre, sf);
+    for (int i = 0; i < np; ++i) fputs(pts[i].raw, sf);
+    if (fclose(sf)) return fprintf(stderr, "%s: write failed\n", sluice_csv), 1;
+  }
+  int first_ff = np;
+  for (int k = 0; k < n_ns; ++k) pts[np++] = ff[k];
+  for (int i = 0; i < np; ++i) pts[i].min_err = fabs(pts[i].umin - ref);
+
+  /* sluice's runs per solver, ascending n */
+  char solvers[MAX_SOLVERS][16];
+  int idx[MAX_SOLVERS][MAX_RUNS], m[MAX_SOLVERS] = {0}, n_solv = 0;
+  for (int i = 0; i < first_ff; ++i) {
+    int s = 0;
+    while (s < n_solv && strcmp(solvers[s], pts[i].solver)) ++s;
+    if (s == n_solv) {
+      if (n_solv == MAX_SOLVERS) continue;
+      snprintf(solvers[n_solv++], sizeof solvers[0], "%s", pts[i].solver);
+    }
+    int j = m[s]++;
+    idx[s][j] = i;
+    for (; j > 0 && pts[idx[s][j - 1]].n > pts[idx[s][j]].n; --j) {
+      int t = idx[s][j];
+      idx[s][j] = idx[s][j - 1], idx[s][j - 1] = t;
+    }
+  }
 
   FILE *out[2] = {stdout, csv ? fopen(csv, "w") : NULL};
   if (csv && !out[1]) fprintf(stderr, "%s: %s\n", csv, strerror(errno)), failed = 1;
   for (int o = 0; o < 2; ++o) {
     FILE *f = out[o];
     if (!f) continue;
-    fprintf(f, "# Stokes cavity, min u on x = 1/2 against u* = %.9f; sluice Q2/Q1, FreeFEM P2/P1\n", ref);
-    fprintf(f, "code,solver,n,unknowns,min_u,error,cpu_s,peak_rss_mb\n");
+    fprintf(f, "# Stokes cavity, u(1/2, y) against the reference profile %s (%d points); sluice Q2/Q1, FreeFEM P2/P1\n",
+            prof_path, pr.n);
+    fprintf(f, "# err_max = max_k |u(1/2, y_k) - u_ref(y_k)|, err_l2 = its L2 norm over 0 <= y <= 1 (trapezoid "
+               "rule over the points); min_err = |min u - u*|, u* = %.9f (secondary: not monotone in n below 1e-6)\n",
+            ref);
+    if (sluice_bench)
+      fprintf(f, "# machine: %s; 1-min load average %.2f-%.2f over the runs (sampled before each mesh)\n", machine,
+              load_lo, load_hi);
+    else
+      fprintf(f, "# machine (sluice runs, %s): %s; FreeFEM runs: load %.2f at start, %.2f at end\n", sluice_csv,
+              machine, load[0][0], load[1][0]);
+    fprintf(f, "# cpu_s: fastest of %d %s; sluice: process CPU time of sl_ns_run; FreeFEM: clock() from the mesh "
+               "to the solution\n",
+            repeat, sluice_bench ? "interleaved rounds (sluice, then FreeFEM, mesh by mesh)" : "repeats");
+    fprintf(f, "code,solver,n,unknowns,err_max,err_l2,min_u,min_err,cpu_s,peak_rss_mb\n");
     for (int i = 0; i < np; ++i)
-      fprintf(f, "%s,%s,%d,%ld,%.12f,%.3e,%.4g,%.1f\n", pts[i].code, pts[i].solver, pts[i].n, pts[i].unknowns,
-              pts[i].umin, pts[i].error, pts[i].cpu, pts[i].mb);
-    /* At equal accuracy: the cheapest sluice run with an error no larger than FreeFEM's. */
-    for (int i = first_ff; i < np; ++i) {
-      int best = -1;
-      for (int j = 0; j < first_ff; ++j)
-        if (pts[j].error <= pts[i].error && (best < 0 || pts[j].cpu < pts[best].cpu)) best = j;
-      if (best >= 0)
-        fprintf(f, "# FreeFEM n = %d: error %.2e in %.3g s; sluice %s n = %d: %.2e in %.3g s (%.2fx the time)\n",
-                pts[i].n, pts[i].error, pts[i].cpu, pts[best].solver, pts[best].n, pts[best].error, pts[best].cpu,
-                pts[best].cpu / pts[i].cpu);
-      else
-        fprintf(f, "# FreeFEM n = %d: error %.2e in %.3g s; no sluice run that accurate\n", pts[i].n, pts[i].error,
+      fprintf(f, "%s,%s,%d,%ld,%.4e,%.4e,%.12f,%.3e,%.4g,%.1f\n", pts[i].code, pts[i].solver, pts[i].n,
+              pts[i].unknowns, pts[i].err_max, pts[i].err_l2, pts[i].umin, pts[i].min_err, pts[i].cpu, pts[i].mb);
+    /* At equal accuracy: sluice's CPU time for FreeFEM's error, interpolated log-log between its meshes. */
+    for (int measure = 0; measure < 2; ++measure)
+      for (int i = first_ff; i < np; ++i) {
+        double e = measure ? pts[i].err_l2 : pts[i].err_max;
+        fprintf(f, "# equal %s error: FreeFEM n = %d: %.3e in %.4g s", measure ? "L2" : "max-norm", pts[i].n, e,
                 pts[i].cpu);
-    }
+        for (int s = 0; s < n_solv; ++s) {
+          reach_result r = time_to_reach(pts, idx[s], m[s], e, measure);
+          if (r.how == REACH_INTERP)
+            fprintf(f, "; sluice %s %.4g s (interpolated between n = %d and %d), %.2fx", solvers[s], r.cpu, r.n_lo,
+                    r.n_hi, r.cpu / pts[i].cpu);
+          else if (r.how == REACH_COARSEST)
+            fprintf(f, "; sluice %s at most %.4g s (its coarsest run, n = %d, is already as accurate), <= %.2fx",
+                    solvers[s], r.cpu, r.n_lo, r.cpu / pts[i].cpu);
+          else fprintf(f, "; sluice %s: no run that accurate", solvers[s]);
+        }
+        fputc('\n', f);
+      }
   }
   if (out[1] && fclose(out[1])) failed = 1;
 
   if (svg) {
     /* One series per code and solver, in mesh order. */
-    enum { MAX_SERIES = 4 };
-    static double x[MAX_SERIES][MAX_RUNS], y[MAX_SERIES][MAX_RUNS], u[MAX_SERIES][MAX_RUNS], m[MAX_SERIES][MAX_RUNS];
+    enum { MAX_SERIES = 4, NP = 4 };
+    static double x[MAX_SERIES][MAX_RUNS], y[NP][MAX_SERIES][MAX_RUNS], u[MAX_SERIES][MAX_RUNS];
     static char names[MAX_SERIES][48], lab[MAX_SERIES][MAX_RUNS][16];
     static const char *labels[MAX_SERIES][MAX_RUNS];
-    svgp_series err[MAX_SERIES], mem[MAX_SERIES];
-    int ns_ = 0;
+    static const char *const colour[MAX_SERIES] = {"#1f77b4", "#2ca02c", "#d62728", "#9467bd"};
+    svgp_series ser[NP][MAX_SERIES];
+    int ns_ = 0, n_in[MAX_SERIES] = {0};
     for (int i = 0; i < np; ++i) {
       char name[48];
       snprintf(name, sizeof name, "%s %s", strcmp(pts[i].code, "sluice") ? "FreeFEM P2/P1," : "sluice Q2/Q1,",
@@ -234,29 +457,46 @@ int main(int argc, char **argv) {
       if (s == ns_) {
         if (ns_ == MAX_SERIES) continue;
         snprintf(names[ns_++], sizeof names[0], "%s", name);
-        err[s] = (svgp_series){.name = names[s], .marker = (svgp_marker)s, .dashed = s == 2};
-        err[s].x = x[s], err[s].y = y[s], err[s].labels = labels[s];
       }
-      int k = err[s].n++;
-      x[s][k] = pts[i].cpu, y[s][k] = pts[i].error, u[s][k] = (double)pts[i].unknowns, m[s][k] = pts[i].mb;
+      int k = n_in[s]++;
+      x[s][k] = pts[i].cpu, u[s][k] = (double)pts[i].unknowns;
+      y[0][s][k] = pts[i].err_max, y[1][s][k] = pts[i].err_l2, y[2][s][k] = pts[i].min_err, y[3][s][k] = pts[i].mb;
       snprintf(lab[s][k], sizeof lab[s][k], "%d", pts[i].n);
       labels[s][k] = lab[s][k];
     }
-    for (int s = 0; s < ns_; ++s) {
-      mem[s] = err[s];
-      mem[s].x = u[s], mem[s].y = m[s], mem[s].labels = NULL;
-    }
-    svgp_panel panels[2] = {
-        {.title = "error against CPU time", .xlabel = "CPU s", .ylabel = "|min u - u*|", .n_series = ns_,
-         .series = err, .legend = SVGP_TOP_RIGHT},
-        {.title = "peak memory", .xlabel = "unknowns", .ylabel = "MB", .n_series = ns_, .series = mem,
+    for (int q = 0; q < NP; ++q)
+      for (int s = 0; s < ns_; ++s) {
+        int is_ff = strncmp(names[s], "FreeFEM", 7) == 0, is_umf = strstr(names[s], "umfpack") && !is_ff;
+        ser[q][s] = (svgp_series){.name = names[s], .n = n_in[s], .x = q == 3 ? u[s] : x[s], .y = y[q][s],
+                                  .labels = q < 3 && !is_umf ? labels[s] : NULL, .colour = colour[s],
+                                  .marker = (svgp_marker)s, .dashed = is_umf};
+      }
+    svgp_panel panels[NP] = {
+        {.title = "max-norm error of u(1/2, y) against CPU time", .xlabel = "CPU s",
+         .ylabel = "max |u(1/2, y_k) - u_ref(y_k)|", .n_series = ns_, .series = ser[0], .legend = SVGP_TOP_RIGHT},
+        {.title = "L2 error of u(1/2, y) against CPU time", .xlabel = "CPU s", .ylabel = "|| u(1/2, .) - u_ref ||_L2",
+         .n_series = ns_, .series = ser[1], .legend = SVGP_TOP_RIGHT},
+        {.title = "old measure: centreline minimum (not monotone)", .xlabel = "CPU s", .ylabel = "|min u - u*|",
+         .n_series = ns_, .series = ser[2], .legend = SVGP_BOTTOM_LEFT},
+        {.title = "peak memory", .xlabel = "unknowns", .ylabel = "MB", .n_series = ns_, .series = ser[3],
          .legend = SVGP_TOP_LEFT},
     };
-    svgp_figure fig = {.title = "Stokes cavity: sluice and FreeFEM",
-                       .note = "labels: cells per side; sluice's CPU from bench_cavity_work_precision, FreeFEM's "
-                               "from mesh to solution",
-                       .n_panels = 2,
-                       .panels = panels};
+    char note[8192];
+    snprintf(note, sizeof note,
+             "labels: cells per side. Reference u_ref: %d points of %s.\nCPU: fastest of %d %s; sluice's "
+             "from bench_cavity_work_precision (process CPU of the solve), FreeFEM's from mesh to solution.\n%s; "
+             "%s %.2f-%.2f.",
+             pr.n, strrchr(prof_path, '/') ? strrchr(prof_path, '/') + 1 : prof_path, repeat,
+             sluice_bench ? "interleaved rounds" : "repeats", machine,
+             sluice_bench ? "load over the runs" : "FreeFEM runs at load",
+             sluice_bench ? load_lo : load[0][0], sluice_bench ? load_hi : load[1][0]);
+    svgp_figure fig = {.title = "Stokes cavity: sluice Q2/Q1 and FreeFEM P2/P1",
+                       .note = note,
+                       .n_panels = NP,
+                       .panels = panels,
+                       .columns = 2,
+                       .panel_width = 480,
+                       .panel_height = 360};
     if (svgp_write(svg, &fig)) fprintf(stderr, "%s: %s\n", svg, strerror(errno)), failed = 1;
   }
   return failed;
