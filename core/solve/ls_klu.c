@@ -1,8 +1,18 @@
-/* KLU backend: LU with BTF + AMD ordering, and klu_refactor, which reuses the
- * previous pivot order and is much cheaper than a fresh factorisation. As in
- * SUNDIALS' sunlinsol_klu, a refactorisation whose condition estimate has
- * degraded is thrown away and redone from scratch. */
+/* KLU backend: LU with BTF and a fill-reducing ordering, and klu_refactor,
+ * which reuses the previous pivot order and is much cheaper than a fresh
+ * factorisation. As in SUNDIALS' sunlinsol_klu, a refactorisation whose
+ * condition estimate has degraded is thrown away and redone from scratch.
+ *
+ * Ordering: AMD (KLU's default) below KLU_METIS_MIN_UNKNOWNS, METIS nested
+ * dissection of the pattern of A + A^T (through CHOLMOD) from there up.
+ * Nested dissection suits the 2-D meshes the solver sees (George 1973, SIAM
+ * J. Numer. Anal. 10:345: O(n log n) fill on a grid). Measured on the Stokes
+ * cavity's Q2/Q1 saddle point (bench_cavity_work_precision, CPU of the whole
+ * steady solve): equal at 21 k unknowns, -6 % at 37.5 k, -36 % at 84 k and
+ * -35 % at 149 k (24.9 s -> 16.2 s); at 2.5 k-9.5 k the METIS call costs more
+ * than it saves. Should METIS fail (a CHOLMOD built without it), AMD. */
 #include <float.h>
+#include <cholmod.h>
 #include <klu.h>
 #include <math.h>
 #include <stdlib.h>
@@ -36,6 +46,31 @@ static int klu_fail(const klu_state *s, const char *stage, int32_t n, sl_diag *d
                      s->c.status, stage, (int)n, (int)n);
 }
 
+enum { KLU_METIS_MIN_UNKNOWNS = 30000 };
+
+/* KLU's user ordering (klu_common.user_order): METIS_NodeND on the pattern of
+ * the block plus its transpose. Returns 0 on failure, else 1. */
+static int metis_order(int n, int *Ap, int *Ai, int *Perm, klu_common *kc) {
+  (void)kc;
+  cholmod_common cc;
+  if (!cholmod_start(&cc)) return 0;
+  cc.print = 0; /* failures fall back to AMD quietly */
+  cholmod_sparse A = {.nrow = (size_t)n, .ncol = (size_t)n, .nzmax = (size_t)Ap[n], .p = Ap, .i = Ai,
+                      .stype = 0, .itype = CHOLMOD_INT, .xtype = CHOLMOD_PATTERN, .dtype = CHOLMOD_DOUBLE,
+                      .sorted = 0, .packed = 1};
+  cholmod_sparse *At = cholmod_transpose(&A, 0, &cc);
+  cholmod_sparse *S = At ? cholmod_add(&A, At, NULL, NULL, 0, 0, &cc) : NULL;
+  int ok = 0;
+  if (S) {
+    S->stype = 1; /* symmetric: METIS reads the upper part */
+    ok = cholmod_metis(S, NULL, 0, 1, Perm, &cc);
+  }
+  cholmod_free_sparse(&At, &cc);
+  cholmod_free_sparse(&S, &cc);
+  cholmod_finish(&cc);
+  return ok ? 1 : 0;
+}
+
 static int klu_create_(void **backend, sl_diag *d) {
   klu_state *s = calloc(1, sizeof *s);
   if (!s) return sl_diag_set(d, SL_EFAILED, "klu: out of memory");
@@ -59,7 +94,13 @@ static void klu_drop(klu_state *s) {
 static int klu_symbolic_(void *backend, const sl_csr *A, sl_diag *d) {
   klu_state *s = backend;
   klu_drop(s);
+  s->c.ordering = A->n_rows >= KLU_METIS_MIN_UNKNOWNS ? 3 : 0;
+  s->c.user_order = metis_order;
   s->sym = klu_analyze(A->n_rows, AP(A), AI(A), &s->c);
+  if (!s->sym && s->c.ordering == 3) { /* METIS failed: AMD */
+    s->c.ordering = 0;
+    s->sym = klu_analyze(A->n_rows, AP(A), AI(A), &s->c);
+  }
   if (!s->sym) return klu_fail(s, "symbolic analysis", A->n_rows, d);
   return 0;
 }
