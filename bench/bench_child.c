@@ -65,3 +65,13 @@ int bench_in_child(void (*fn)(void *arg, void *result), void *arg, void *result,
   }
   return 0;
 }
+
+void bench_remove_output(const char *path) {
+  char xmf[4096];
+  size_t len = strlen(path);
+  remove(path);
+  if (len < 3 || len >= sizeof xmf || strcmp(path + len - 3, ".h5") != 0) return;
+  memcpy(xmf, path, len - 3);
+  memcpy(xmf + len - 3, ".xmf", 5);
+  remove(xmf);
+}

@@ -11,4 +11,7 @@
  * signal, an exit without a result) and result zeroed. */
 int bench_in_child(void (*fn)(void *arg, void *result), void *arg, void *result, size_t size, char *why, size_t len);
 
+/* Removes a run's output file (path ends in ".h5") and its XDMF sidecar. */
+void bench_remove_output(const char *path);
+
 #endif

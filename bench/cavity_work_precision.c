@@ -112,7 +112,6 @@ static int profile_error(const char *file, const bench_opts *bo, double *emax, d
   return rc ? -1 : 0;
 }
 
-
 static double clock_s(clockid_t id) {
   struct timespec ts;
   clock_gettime(id, &ts);
@@ -247,9 +246,7 @@ static int run(const bench_opts *bo, const char *solver, int n, int transient, r
     rc = sl_diag_set(&d, SL_EFAILED, "sampling the centreline profile of %s failed", file);
   if (rc) snprintf(r->err, sizeof r->err, "%s", d.msg);
   r->ok = !rc;
-  remove(file);
-  snprintf(file + strlen(file) - 3, 5, ".xmf"); /* the XDMF sidecar */
-  remove(file);
+  bench_remove_output(file);
   sl_registry_destroy(reg);
   sl_ini_free(ini);
   return rc;

@@ -147,9 +147,7 @@ static int run(const char *src, const scene_spec *s, int k, run_result *r) {
   }
   if (rc) snprintf(r->err, sizeof r->err, "%s", d.msg);
   r->ok = !rc;
-  remove(file);
-  snprintf(file + strlen(file) - 3, 5, ".xmf"); /* the XDMF sidecar */
-  remove(file);
+  bench_remove_output(file);
   sl_registry_destroy(reg);
   sl_ini_free(ini);
   return rc;

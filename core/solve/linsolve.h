@@ -25,6 +25,7 @@ typedef struct sl_linsolve_stats {
   long n_solves;
   double t_symbolic, t_numeric, t_solve; /* wall-clock seconds */
   double rcond;                          /* last reciprocal condition estimate (backend's own, crude) */
+  const char *ordering; /* the last fill-reducing ordering, where the backend says ("amd", "metis"), else NULL */
 } sl_linsolve_stats;
 
 /* A backend. Every function returns 0 or an SL_E* code with d set. The

@@ -137,6 +137,7 @@ static int klu_numeric_(void *backend, const sl_csr *A, sl_linsolve_stats *st, s
     rc = klu_fresh_factor(s, A, d);
     if (rc) return rc;
   }
+  st->ordering = s->sym->ordering == 3 ? "metis" : "amd";
   if (!klu_rcond(s->sym, s->num, &s->c)) return klu_fail(s, "condition estimate", A->n_rows, d);
   st->rcond = s->c.rcond;
   if (!(s->c.rcond >= DBL_EPSILON)) {
