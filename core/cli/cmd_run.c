@@ -214,18 +214,12 @@ int sl_cmd_run(int argc, char **argv) {
   int model = 0;
   if ((rc = sl_ini_get_choice(ini, "scene", "model", !print_config, 0, "navier_stokes|mixture|two_fluid", &model, &d)))
     goto fail;
-  int two_d = 0; /* two_fluid: only 1-D columns run (geometry = line, the default for this model) */
-  if (model == 2) {
-    int geometry = 0;
-    if ((rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, &d))) goto fail;
-    two_d = geometry != 0;
-  }
   /* Every closure section is checked here (bad input: exit 2, nothing
    * written); a run leaves creating them to the model, once. */
   for (int s = 0; s < ini->n_sections; ++s) {
     const char *name = ini->sections[s].name;
     if (strncmp(name, "closure.", 8) != 0) continue;
-    if (!(check_only || two_d) || print_config) {
+    if (!check_only || print_config) {
       if ((rc = sl_closure_check_ini(reg, ini, name, &d))) goto fail;
       continue;
     }
@@ -240,18 +234,11 @@ int sl_cmd_run(int argc, char **argv) {
     if (sl_ini_write(ini, stdout)) rc = sl_diag_set(&d, SL_EFAILED, "cannot write the configuration");
     goto fail;
   }
-  if (check_only || two_d) {
+  if (check_only) {
     printf("%s: scene valid; %d closure%s resolved\n", scene, n_closures, n_closures == 1 ? "" : "s");
     for (int i = 0; i < n_closures; ++i) {
       const sl_closure_desc *c = closures[i]->desc;
       printf("  %-18s %-24s %s (%s)\n", sl_kind_name(c->kind), c->name, c->version, closures[i]->library->path);
-    }
-    if (!check_only) {
-      const sl_ini_entry *e = sl_ini_find(ini, "scene", "geometry");
-      rc = sl_diag_set(&d, SL_EBADINPUT,
-                       "%s:%d: [scene] geometry = %s: the 2-D two_fluid model is not built yet (1-D columns, geometry "
-                       "= line, run): nothing was simulated, no output written",
-                       e->file, e->line, e->value);
     }
     goto fail;
   }

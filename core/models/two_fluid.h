@@ -67,4 +67,8 @@
  * res->coupling_summary gets the model's one-line summary. */
 int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d);
 
+/* The same for geometry = planar | axisymmetric (two_fluid_plane.c). */
+int sl_two_fluid_plane_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res,
+                           sl_diag *d);
+
 #endif

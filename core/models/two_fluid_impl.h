@@ -4,6 +4,8 @@
 #define SLUICE_MODELS_TWO_FLUID_IMPL_H
 
 #include "core/config/expr.h"
+#include "core/config/ini.h"
+#include "core/plugin/registry.h"
 #include "core/plugin/instance.h"
 #include "core/util/diag.h"
 
@@ -78,6 +80,14 @@ int tf_step(tf_column *c, double t, double dt, sl_diag *d);
  * velocities u into phi (see two_fluid_step.c). */
 int tf_transport(tf_column *c, const double *phi0, const double *u, double dt, double *phi, long *substeps,
                  double *outflow, sl_diag *d);
+
+/* Reads the scene's physics into c (two_fluid_scene.c): [fluid], [solid],
+ * [flow] gravity (dim components; 2-D: into gravity[], default (0, -9.81),
+ * and c->g = -|g|), the [two_fluid] numerical keys, and binds
+ * [closure.drag] and the optional [closure.solids_pressure] to the model's
+ * inputs. 0 or SL_EBADINPUT with file:line. */
+int tf_scene_physics(sl_ini *ini, const sl_registry *reg, int dim, tf_column *c, double gravity[2],
+                     double *steady_tol, sl_diag *d);
 
 /* K and dK/dslip at n faces (phi, slip given); p_s and dp_s/dphi at n cells. */
 int tf_closure_eval(tf_closure *b, int n, const double *phi, const double *slip, double *value, double *dvalue,

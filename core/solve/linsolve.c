@@ -72,6 +72,23 @@ void sl_linsolve_destroy(sl_linsolve *ls) {
   free(ls);
 }
 
+int sl_linsolve_set_ordering(sl_linsolve *ls, const char *name, sl_diag *d) {
+  static const char *const names[] = {"auto", "amd", "colamd", "metis"};
+  int o = -1;
+  for (int i = 0; i < 4; ++i)
+    if (strcmp(name, names[i]) == 0) o = i;
+  if (o < 0) {
+    const char *hint = sl_suggest(name, names, 4);
+    return sl_diag_set(d, SL_EBADINPUT, "unknown ordering '%s'%s%s%s; known: auto, amd, colamd, metis", name,
+                       hint ? " (did you mean '" : "", hint ? hint : "", hint ? "'?)" : "");
+  }
+  if (!ls->ops->set_ordering)
+    return sl_diag_set(d, SL_EBADINPUT, "the %s solver chooses its own ordering (only klu takes one)", ls->ops->name);
+  int rc = ls->ops->set_ordering(ls->backend, o, d);
+  if (!rc) ls->have_symbolic = ls->have_numeric = 0; /* analysed again at the next factorisation */
+  return rc;
+}
+
 void sl_linsolve_values_changed(sl_linsolve *ls) { ls->force_numeric = 1; }
 const char *sl_linsolve_name(const sl_linsolve *ls) { return ls->ops->name; }
 const char *sl_linsolve_description(const sl_linsolve *ls) { return ls->ops->description; }

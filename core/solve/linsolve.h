@@ -42,7 +42,18 @@ typedef struct sl_linsolve_ops {
   /* x = A^-1 b with the last numeric factorisation; x and b do not overlap. */
   int (*solve)(void *backend, const sl_csr *A, const double *b, double *x, sl_diag *d);
   void (*destroy)(void *backend);
+  /* Optional: the fill-reducing ordering of later symbolic analyses
+   * (SL_ORDERING_*); NULL when the backend chooses its own. */
+  int (*set_ordering)(void *backend, int ordering, sl_diag *d);
 } sl_linsolve_ops;
+
+/* Fill-reducing orderings a backend may be told to use. AUTO is the
+ * backend's default (KLU: AMD below 30 000 unknowns, METIS above). COLAMD
+ * orders the columns for LU with partial pivoting (Davis et al. 2004, ACM
+ * TOMS 30(3)); it suits matrices whose zero diagonal forces off-diagonal
+ * pivots (a saddle point with its pressure rows), where a symmetric ordering
+ * of A + A^T predicts the fill badly. */
+enum { SL_ORDERING_AUTO = 0, SL_ORDERING_AMD, SL_ORDERING_COLAMD, SL_ORDERING_METIS };
 
 extern const sl_linsolve_ops sl_linsolve_umfpack_ops;
 extern const sl_linsolve_ops sl_linsolve_klu_ops;
@@ -70,6 +81,11 @@ int sl_linsolve_solve(sl_linsolve *ls, const sl_csr *A, const double *b, double 
 /* Force a numeric factorisation at the next solve (values written without
  * sl_csr_touch). */
 void sl_linsolve_values_changed(sl_linsolve *ls);
+
+/* The ordering by name ("auto" | "amd" | "colamd" | "metis"), for the next
+ * symbolic analysis. SL_EBADINPUT for an unknown name (with a did-you-mean)
+ * or a backend that takes no ordering (umfpack, cholmod). */
+int sl_linsolve_set_ordering(sl_linsolve *ls, const char *name, sl_diag *d);
 
 const char *sl_linsolve_name(const sl_linsolve *ls);
 /* e.g. "UMFPACK V5.7.9 (Oct 20, 2019): multifrontal LU, ..." for provenance. */

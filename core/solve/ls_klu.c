@@ -28,6 +28,7 @@ typedef struct klu_state {
   klu_common c;
   klu_symbolic *sym;
   klu_numeric *num;
+  int ordering; /* SL_ORDERING_* */
 } klu_state;
 
 static const char *klu_status_text(int s) {
@@ -94,7 +95,13 @@ static void klu_drop(klu_state *s) {
 static int klu_symbolic_(void *backend, const sl_csr *A, sl_diag *d) {
   klu_state *s = backend;
   klu_drop(s);
-  s->c.ordering = A->n_rows >= KLU_METIS_MIN_UNKNOWNS ? 3 : 0;
+  /* KLU's codes: 0 AMD, 1 COLAMD, 3 the user's (METIS) */
+  switch (s->ordering) {
+  case SL_ORDERING_AMD: s->c.ordering = 0; break;
+  case SL_ORDERING_COLAMD: s->c.ordering = 1; break;
+  case SL_ORDERING_METIS: s->c.ordering = 3; break;
+  default: s->c.ordering = A->n_rows >= KLU_METIS_MIN_UNKNOWNS ? 3 : 0;
+  }
   s->c.user_order = metis_order;
   s->sym = klu_analyze(A->n_rows, AP(A), AI(A), &s->c);
   if (!s->sym && s->c.ordering == 3) { /* METIS failed: AMD */
@@ -137,7 +144,7 @@ static int klu_numeric_(void *backend, const sl_csr *A, sl_linsolve_stats *st, s
     rc = klu_fresh_factor(s, A, d);
     if (rc) return rc;
   }
-  st->ordering = s->sym->ordering == 3 ? "metis" : "amd";
+  st->ordering = s->sym->ordering == 3 ? "metis" : s->sym->ordering == 1 ? "colamd" : "amd";
   if (!klu_rcond(s->sym, s->num, &s->c)) return klu_fail(s, "condition estimate", A->n_rows, d);
   st->rcond = s->c.rcond;
   if (!(s->c.rcond >= DBL_EPSILON)) {
@@ -166,6 +173,12 @@ static void klu_destroy_(void *backend) {
   free(s);
 }
 
+static int klu_set_ordering_(void *backend, int ordering, sl_diag *d) {
+  (void)d;
+  ((klu_state *)backend)->ordering = ordering;
+  return 0;
+}
+
 const sl_linsolve_ops sl_linsolve_klu_ops = {
     .name = "klu",
     .description = "KLU " STR(KLU_MAIN_VERSION) "." STR(KLU_SUB_VERSION) "." STR(
@@ -175,4 +188,5 @@ const sl_linsolve_ops sl_linsolve_klu_ops = {
     .numeric = klu_numeric_,
     .solve = klu_solve_,
     .destroy = klu_destroy_,
+    .set_ordering = klu_set_ordering_,
 };

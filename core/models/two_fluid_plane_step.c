@@ -1,0 +1,530 @@
+/* One implicit step of the 2-D two-fluid model on the staggered grid
+ * (two_fluid_plane_impl.h). The equations are those of the 1-D column
+ * (two_fluid.h) with the pressure kept as an unknown, per unit volume:
+ *
+ *   phi rho_s du_s/dt = -phi grad p - grad P_s + F + phi rho_s g + div(phi mu_s grad u_s)
+ *   eps rho_f du_f/dt = -eps grad p - F + eps rho_f g + div(eps mu_f grad u_f)
+ *   div(phi u_s + eps u_f) = 0,      eps = 1 - phi,
+ *   dphi/dt + div(phi u_s) = 0,
+ *
+ * F = K(phi, |s|) s the drag on the solids, s = u_f - u_s (Pringle 2001;
+ * digest of seed 000, 2.1.6), in the Stokes regime (no convective terms,
+ * as the column) and with the Laplacian form of the viscous stresses.
+ *
+ * Each face carries the normal components of both momentum equations,
+ * written with phi_f of the cell on its gravity side (the mean of its two
+ * cells for faces along gravity's normal) and multiplied by its dual volume
+ * A_f L_f; each cell the continuity of the mixture's volume flux. Iteration
+ * k (phi^0 = T(phi^n, u_s^n)), as in the column:
+ *   drag  Newton-linearised in the normal slip, the tangential slip (the
+ *         mean of the four nearest transverse faces) of the iterate;
+ *   P_s   P_s(phi^k) + P_s'(phi^k) dphi(delta u_s), dphi_c = -(dt/V_c)
+ *         sum_f sigma A_f w_f delta u_s,f with w the upwind phi^k (Pringle
+ *         2001 eq 4.31, Newton on the transported phi);
+ *   then one sparse solve for (u_s, u_f, p) and phi^(k+1) = T(phi^n, u_s),
+ * until the velocities change by less than tolerance x the velocity scale.
+ * T is the column's bounded transport: first-order upwind face fluxes,
+ * sub-stepped within the CFL limit, what enters a cell scaled so that it
+ * cannot pass phi_max. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "core/models/two_fluid_plane_impl.h"
+
+/* Nearly empty faces still get a solids equation: that of one particle in
+ * clear fluid (every term of it is proportional to phi). */
+static const double PHI_FLOOR = 1e-6;
+/* After this many iterations the face phi of drag and momentum is that of the
+ * step's start (as in the column, for drag laws with a jump in phi). */
+enum { FREEZE_PHI_AFTER = 8 };
+
+static double cpu_now(void) { return (double)clock() / CLOCKS_PER_SEC; }
+
+/* ---- geometry --------------------------------------------------------------- */
+
+static int face_dir(const tfp_model *m, int f) { return f >= m->nfx; }
+
+/* The four faces of cell c (west, east, south, north) and the sign of the
+ * outward normal along each face's axis. */
+static void cell_faces(const tfp_model *m, int c, int f[4]) {
+  int i = c % m->nx, j = c / m->nx;
+  f[0] = i + (m->nx + 1) * j, f[1] = f[0] + 1;
+  f[2] = m->nfx + i + m->nx * j, f[3] = f[2] + m->nx;
+}
+static const double SIGMA[4] = {-1.0, 1.0, -1.0, 1.0};
+
+int tfp_setup(tfp_model *m, sl_diag *d) {
+  const sl_tensor_grid *g = &m->grid;
+  const int nx = g->nx, ny = g->ny;
+  m->nx = nx, m->ny = ny, m->nc = nx * ny, m->nfx = (nx + 1) * ny, m->nf = m->nfx + nx * (ny + 1);
+  const size_t nc = (size_t)m->nc, nf = (size_t)m->nf;
+  struct { double **p; size_t n; } a[] = {
+      {&m->xc, nx}, {&m->yc, ny}, {&m->hx, nx}, {&m->hy, ny}, {&m->vol, nc}, {&m->area, nf}, {&m->dist, nf},
+      {&m->phi, nc}, {&m->p, nc}, {&m->uf, nf}, {&m->us, nf}, {&m->phi_new, nc}, {&m->p_new, nc},
+      {&m->uf_new, nf}, {&m->us_new, nf}, {&m->phf, nf}, {&m->w, nf}, {&m->K, nf}, {&m->dK, nf}, {&m->slip, nf},
+      {&m->sn, nf}, {&m->ps, nc}, {&m->dps, nc}, {&m->flux, nf}, {&m->alpha, nc}, {&m->inflow, nc},
+      {&m->x, 2 * nf + nc}, {&m->rhs, 2 * nf + nc}};
+  for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
+    if (!(*a[k].p = calloc(a[k].n, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  int **ia[] = {&m->lo, &m->hi, &m->ftype, &m->fbound, &m->us_row, &m->uf_row};
+  for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k)
+    if (!(*ia[k] = calloc(nf, sizeof(int)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  if (!(m->tan_noslip = calloc(4 * nf, sizeof(int)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  for (int i = 0; i < nx; ++i) m->hx[i] = g->xf[i + 1] - g->xf[i], m->xc[i] = 0.5 * (g->xf[i] + g->xf[i + 1]);
+  for (int j = 0; j < ny; ++j) m->hy[j] = g->yf[j + 1] - g->yf[j], m->yc[j] = 0.5 * (g->yf[j] + g->yf[j + 1]);
+  for (int c = 0; c < m->nc; ++c) {
+    int i = c % nx, j = c / nx;
+    m->vol[c] = m->hx[i] * m->hy[j] * (m->axi ? m->xc[i] : 1.0);
+  }
+  for (int f = 0; f < m->nf; ++f) {
+    int side = -1, k = 0;
+    if (f < m->nfx) {
+      int i = f % (nx + 1), j = f / (nx + 1);
+      m->lo[f] = i > 0 ? i - 1 + nx * j : -1, m->hi[f] = i < nx ? i + nx * j : -1;
+      m->area[f] = m->hy[j] * (m->axi ? g->xf[i] : 1.0);
+      m->dist[f] = i == 0 ? 0.5 * m->hx[0] : i == nx ? 0.5 * m->hx[nx - 1] : m->xc[i] - m->xc[i - 1];
+      if (i == 0 || i == nx) side = i == 0 ? SL_SIDE_LEFT : SL_SIDE_RIGHT, k = j;
+    } else {
+      int i = (f - m->nfx) % nx, j = (f - m->nfx) / nx;
+      m->lo[f] = j > 0 ? i + nx * (j - 1) : -1, m->hi[f] = j < ny ? i + nx * j : -1;
+      m->area[f] = m->hx[i] * (m->axi ? m->xc[i] : 1.0);
+      m->dist[f] = j == 0 ? 0.5 * m->hy[0] : j == ny ? 0.5 * m->hy[ny - 1] : m->yc[j] - m->yc[j - 1];
+      if (j == 0 || j == ny) side = j == 0 ? SL_SIDE_BOTTOM : SL_SIDE_TOP, k = i;
+    }
+    m->fbound[f] = side >= 0 ? g->side_tag[side][k] : -1;
+    if (side < 0) m->ftype[f] = TFP_FACE_INTERIOR;
+    else if (m->area[f] == 0.0) m->ftype[f] = TFP_FACE_CLOSED; /* on the axis */
+    else {
+      int t = m->b[m->fbound[f]].type;
+      m->ftype[f] = t == TFP_INLET ? TFP_FACE_INLET : t == TFP_OUTLET ? TFP_FACE_OUTLET : TFP_FACE_CLOSED;
+    }
+  }
+  /* the tangential conditions: a face touching a side at one of its ends (x-faces: bottom, top; y-faces:
+     left, right) takes the side faces that meet there; no-slip when one of them holds the phase */
+  for (int f = 0; f < m->nf; ++f) {
+    int dir = face_dir(m, f), along = dir == 0 ? f % (nx + 1) : (f - m->nfx) / nx;
+    int across = dir == 0 ? f / (nx + 1) : (f - m->nfx) % nx, n_along = dir == 0 ? nx : ny;
+    int n_across = dir == 0 ? ny : nx;
+    for (int end = 0; end < 2; ++end) {
+      if (across != (end == 0 ? 0 : n_across - 1)) continue;
+      int side = dir == 0 ? (end == 0 ? SL_SIDE_BOTTOM : SL_SIDE_TOP) : (end == 0 ? SL_SIDE_LEFT : SL_SIDE_RIGHT);
+      for (int s = along - 1; s <= along; ++s) {
+        if (s < 0 || s >= n_along) continue;
+        const tfp_boundary *b = &m->b[g->side_tag[side][s]];
+        int fluid = b->type == TFP_WALL || b->type == TFP_INLET;
+        int solids = (b->type == TFP_WALL && !b->solids_slip) || b->type == TFP_INLET;
+        m->tan_noslip[4 * f + 2 * 0 + end] |= fluid;
+        m->tan_noslip[4 * f + 2 * 1 + end] |= solids;
+      }
+    }
+  }
+  int n = 0;
+  for (int f = 0; f < m->nf; ++f) {
+    int active = m->ftype[f] == TFP_FACE_INTERIOR || m->ftype[f] == TFP_FACE_OUTLET;
+    m->us_row[f] = active ? n++ : -1;
+    m->uf_row[f] = active ? n++ : -1;
+  }
+  m->n_vel = n, m->n_unknowns = n + m->nc;
+  return 0;
+}
+
+void tfp_free(tfp_model *m) {
+  double *all[] = {m->xc,  m->yc,  m->hx,     m->hy,     m->vol,    m->area,  m->dist,  m->phi,  m->p,
+                   m->uf,  m->us,  m->phi_new, m->p_new, m->uf_new, m->us_new, m->phf,  m->w,    m->K,
+                   m->dK,  m->slip, m->sn,    m->ps,     m->dps,    m->flux,  m->alpha, m->inflow, m->x,
+                   m->rhs, m->tval};
+  for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
+  int *ia[] = {m->lo, m->hi, m->ftype, m->fbound, m->us_row, m->uf_row, m->tan_noslip, m->trow, m->tcol, m->tpos};
+  for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k) free(ia[k]);
+  sl_csr_free(&m->A);
+  sl_linsolve_destroy(m->ls);
+  sl_tensor_grid_free(&m->grid);
+}
+
+double tfp_inventory(const tfp_model *m, const double *phi) {
+  double s = 0.0;
+  for (int c = 0; c < m->nc; ++c) s += phi[c] * m->vol[c];
+  return s;
+}
+
+/* The inlet faces' superficial velocity (along +x or +y) is eps u_f with u_s
+ * = 0; u_f takes eps of the inside cell. */
+int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
+  for (int f = 0; f < m->nf; ++f) {
+    if (m->ftype[f] == TFP_FACE_CLOSED) m->uf[f] = m->us[f] = 0.0;
+    if (m->ftype[f] != TFP_FACE_INLET) continue;
+    int dir = face_dir(m, f), inside = m->lo[f] >= 0 ? m->lo[f] : m->hi[f];
+    double x = dir == 0 ? m->grid.xf[f % (m->nx + 1)] : m->xc[(f - m->nfx) % m->nx];
+    double y = dir == 0 ? m->yc[f / (m->nx + 1)] : m->grid.yf[(f - m->nfx) / m->nx];
+    double v[4] = {x, y, t, m->c.case_index};
+    double U = sl_expr_eval(m->b[m->fbound[f]].velocity, v);
+    if (!isfinite(U))
+      return sl_diag_set(d, SL_EFAILED, "the inlet velocity is not a finite number (%g) at (%g, %g), t = %g", U, x, y,
+                         t);
+    double inward = m->lo[f] < 0 ? 1.0 : -1.0;
+    m->us[f] = 0.0;
+    m->uf[f] = inward * U / (1.0 - phi[inside]);
+  }
+  m->t_bc = t;
+  return 0;
+}
+
+/* ---- transport ----------------------------------------------------------------- */
+
+/* One forward-Euler stage over ds of the upwind solids fluxes of us (plus
+ * the particle diffusivity), with the packing limiter. */
+static void transport_stage(tfp_model *m, const double *us, double *phi, double ds, double *out) {
+  const double phi_max = m->c.phi_max, D = m->c.diffusivity;
+  double *F = m->flux, *alpha = m->alpha, *in = m->inflow;
+  memset(in, 0, (size_t)m->nc * sizeof *in);
+  for (int f = 0; f < m->nf; ++f) {
+    int lo = m->lo[f], hi = m->hi[f];
+    double q = m->area[f] * us[f];
+    /* nothing enters from outside (clear fluid at an outlet; held solids at an inlet) */
+    F[f] = q > 0.0 ? (lo >= 0 ? q * phi[lo] : 0.0) : (hi >= 0 ? q * phi[hi] : 0.0);
+    if (D > 0.0 && lo >= 0 && hi >= 0) F[f] -= D * m->area[f] * (phi[hi] - phi[lo]) / m->dist[f];
+    if (F[f] > 0.0 && hi >= 0) in[hi] += F[f];
+    else if (F[f] < 0.0 && lo >= 0) in[lo] -= F[f];
+  }
+  for (int c = 0; c < m->nc; ++c)
+    alpha[c] = in[c] > 0.0 ? fmin(1.0, fmax(0.0, (phi_max - phi[c]) * m->vol[c] / (ds * in[c]))) : 1.0;
+  for (int f = 0; f < m->nf; ++f) {
+    int lo = m->lo[f], hi = m->hi[f];
+    if (F[f] > 0.0 && hi >= 0) F[f] *= alpha[hi];
+    else if (F[f] < 0.0 && lo >= 0) F[f] *= alpha[lo];
+    if (hi < 0) *out += ds * F[f];
+    if (lo < 0) *out -= ds * F[f];
+  }
+  for (int f = 0; f < m->nf; ++f) {
+    if (m->lo[f] >= 0) phi[m->lo[f]] -= ds / m->vol[m->lo[f]] * F[f];
+    if (m->hi[f] >= 0) phi[m->hi[f]] += ds / m->vol[m->hi[f]] * F[f];
+  }
+  for (int c = 0; c < m->nc; ++c) phi[c] = phi[c] < 0.0 ? 0.0 : phi[c] > phi_max ? phi_max : phi[c]; /* round-off */
+}
+
+static int transport(tfp_model *m, const double *us, double dt, double *phi, double *outflow, sl_diag *d) {
+  double t0 = cpu_now();
+  double *rate = m->inflow, rmax = 0.0;
+  memset(rate, 0, (size_t)m->nc * sizeof *rate);
+  for (int f = 0; f < m->nf; ++f) {
+    int lo = m->lo[f], hi = m->hi[f];
+    double q = m->area[f] * us[f];
+    double Df = m->c.diffusivity > 0.0 && lo >= 0 && hi >= 0 ? m->c.diffusivity * m->area[f] / m->dist[f] : 0.0;
+    if (lo >= 0) rate[lo] += fmax(q, 0.0) + Df;
+    if (hi >= 0) rate[hi] += fmax(-q, 0.0) + Df;
+  }
+  for (int c = 0; c < m->nc; ++c) rmax = fmax(rmax, rate[c] / m->vol[c]);
+  double ns = ceil(dt * rmax / m->c.cfl);
+  if (!(ns <= 1e7)) return sl_diag_set(d, SL_EFAILED, "solids transport would need %.3g sub-steps", ns);
+  /* an iterate far from the last accepted step's speeds is refused (the step is retried smaller) */
+  double cap = fmax(1e3, 50.0 * (double)m->accepted_substeps);
+  if (m->accepted_substeps > 0 && ns > cap)
+    return sl_diag_set(d, SL_EFAILED, "solids transport of this iterate would need %.3g sub-steps, more than 50 "
+                                      "times the last step's %ld", ns, m->accepted_substeps);
+  long n = ns < 1.0 ? 1 : (long)ns;
+  double ds = dt / (double)n, out = 0.0;
+  memcpy(phi, m->phi, (size_t)m->nc * sizeof *phi);
+  for (long s = 0; s < n; ++s) transport_stage(m, us, phi, ds, &out);
+  m->last_substeps = n;
+  m->substeps_trial += n;
+  *outflow = out;
+  m->transport_cpu += cpu_now() - t0;
+  return 0;
+}
+
+/* ---- the linear system ------------------------------------------------------------ */
+
+static int add(tfp_model *m, int row, int col, double v) {
+  if (row < 0 || col < 0) return 0;
+  if (m->n_trip == m->cap_trip) {
+    int cap = m->cap_trip ? 2 * m->cap_trip : 1024;
+    int32_t *r = realloc(m->trow, (size_t)cap * sizeof *r);
+    if (r) m->trow = r;
+    int32_t *c = realloc(m->tcol, (size_t)cap * sizeof *c);
+    if (c) m->tcol = c;
+    double *x = realloc(m->tval, (size_t)cap * sizeof *x);
+    if (x) m->tval = x;
+    if (!r || !c || !x) return -1;
+    m->cap_trip = cap;
+  }
+  m->trow[m->n_trip] = row, m->tcol[m->n_trip] = col, m->tval[m->n_trip] = v, ++m->n_trip;
+  return 0;
+}
+
+/* The face's phi in its momentum equations and its continuity flux: the
+ * cell on gravity's side of it, the mean of its two cells when gravity runs
+ * along it, the inside cell at the boundary. */
+static double face_phi(const tfp_model *m, const double *phi, int f) {
+  int lo = m->lo[f], hi = m->hi[f];
+  double v;
+  if (lo < 0 || hi < 0) v = phi[lo < 0 ? hi : lo];
+  else {
+    double gd = m->g[face_dir(m, f)];
+    v = gd < 0.0 ? phi[lo] : gd > 0.0 ? phi[hi] : 0.5 * (phi[lo] + phi[hi]);
+  }
+  return fmax(v, PHI_FLOOR);
+}
+
+/* The phase's viscosity at a cell (phase 0 fluid: eps mu_f; 1 solids: phi mu_s). */
+static double phase_mu(const tfp_model *m, int phase, const double *phi, int c) {
+  return phase == 0 ? (1.0 - phi[c]) * m->c.mu_f : phi[c] * m->mu_s;
+}
+
+/* -div(mu grad u) of the phase's normal velocity at face f, times the dual
+ * volume (the Laplacian of the face-velocity grid, five points; the
+ * axisymmetric hoop term mu u_r / r^2 for x-faces), added to row. */
+static int viscous(tfp_model *m, int phase, int f, int row, const double *phi) {
+  const int nx = m->nx, ny = m->ny, dir = face_dir(m, f);
+  const int *rows = phase ? m->us_row : m->uf_row;
+  const double *u = phase ? m->us : m->uf;
+  const double *xf = m->grid.xf;
+  int i, j;
+  if (dir == 0) i = f % (nx + 1), j = f / (nx + 1);
+  else i = (f - m->nfx) % nx, j = (f - m->nfx) / nx;
+  int rc = 0;
+  /* along the normal: through the cells lo and hi to the next face of the same family */
+  for (int side = 0; side < 2; ++side) {
+    int c = side ? m->hi[f] : m->lo[f];
+    if (c < 0) continue; /* an outlet: zero normal gradient */
+    int ci = c % nx, cj = c / nx;
+    int nb = dir == 0 ? (side ? f + 1 : f - 1) : (side ? f + nx : f - nx);
+    double across = dir == 0 ? m->hy[cj] * (m->axi ? m->xc[ci] : 1.0) : m->hx[ci] * (m->axi ? m->xc[ci] : 1.0);
+    double h = dir == 0 ? m->hx[ci] : m->hy[cj];
+    double k = phase_mu(m, phase, phi, c) * across / h;
+    rc |= add(m, row, row, k);
+    if (rows[nb] >= 0) rc |= add(m, row, rows[nb], -k);
+    else m->rhs[row] += k * u[nb];
+  }
+  /* across: to the faces of the same family in the neighbouring rows (x-faces) or columns (y-faces) */
+  int n_across = dir == 0 ? ny : nx, a = dir == 0 ? j : i;
+  for (int end = 0; end < 2; ++end) {
+    int to = end ? a + 1 : a - 1;
+    /* the corner's radius and the dual length of the face */
+    double r_corner = dir == 0 ? xf[i] : xf[end ? i + 1 : i];
+    double across = m->dist[f] * (m->axi ? r_corner : 1.0);
+    /* the viscosity at the corner: the mean of the cells around it */
+    double mu = 0.0;
+    int nmu = 0;
+    for (int s = 0; s < 2; ++s) {
+      int c = s ? m->hi[f] : m->lo[f];
+      if (c < 0) continue;
+      mu += phase_mu(m, phase, phi, c), ++nmu;
+      if (to >= 0 && to < n_across) mu += phase_mu(m, phase, phi, dir == 0 ? c + (end ? nx : -nx) : c + (end ? 1 : -1)), ++nmu;
+    }
+    mu /= nmu;
+    if (to < 0 || to >= n_across) {
+      if (!m->tan_noslip[4 * f + 2 * phase + end]) continue; /* free slip: no stress */
+      double h = dir == 0 ? m->hy[j] : m->hx[i];
+      rc |= add(m, row, row, mu * across / (0.5 * h)); /* the wall at half a cell, velocity 0 */
+      continue;
+    }
+    int nb = dir == 0 ? f + (end ? nx + 1 : -(nx + 1)) : f + (end ? 1 : -1);
+    double gap = dir == 0 ? m->yc[to] - m->yc[a] : m->xc[to] - m->xc[a];
+    double k = mu * across / fabs(gap);
+    rc |= add(m, row, row, k);
+    if (rows[nb] >= 0) rc |= add(m, row, rows[nb], -k);
+    else m->rhs[row] += k * u[nb];
+  }
+  if (dir == 0 && m->axi) { /* mu u_r / r^2 over the dual volume */
+    double mu = 0.0;
+    int nmu = 0;
+    if (m->lo[f] >= 0) mu += phase_mu(m, phase, phi, m->lo[f]), ++nmu;
+    if (m->hi[f] >= 0) mu += phase_mu(m, phase, phi, m->hi[f]), ++nmu;
+    rc |= add(m, row, row, mu / nmu * m->area[f] * m->dist[f] / (xf[i] * xf[i]));
+  }
+  return rc;
+}
+
+/* Drag and solids pressure at the iterate: K, dK/d|s| and the normal slip at
+ * every face, P_s and dP_s/dphi in the cells. */
+static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_diag *d) {
+  const int nx = m->nx;
+  for (int f = 0; f < m->nf; ++f) {
+    m->phf[f] = face_phi(m, phi_drag, f);
+    /* the transverse slip: the mean over the faces of the other family around f */
+    double st = 0.0;
+    int n = 0;
+    for (int s = 0; s < 2; ++s) {
+      int c = s ? m->hi[f] : m->lo[f];
+      if (c < 0) continue;
+      int cf[4];
+      cell_faces(m, c, cf);
+      int a = face_dir(m, f) == 0 ? 2 : 0;
+      st += (m->uf_new[cf[a]] - m->us_new[cf[a]]) + (m->uf_new[cf[a + 1]] - m->us_new[cf[a + 1]]), n += 2;
+    }
+    (void)nx;
+    m->sn[f] = m->uf_new[f] - m->us_new[f];
+    st /= n;
+    m->slip[f] = hypot(m->sn[f], st);
+  }
+  int rc = tf_closure_eval(&m->c.drag, m->nf, m->phf, m->slip, m->K, m->dK, d);
+  if (rc) return sl_diag_prefix(d, rc, "drag");
+  for (int f = 0; f < m->nf; ++f)
+    if (!isfinite(m->K[f]) || m->K[f] < 0.0 || !isfinite(m->dK[f]))
+      return sl_diag_set(d, SL_EFAILED, "[closure.drag] gave K = %g (dK/dslip = %g) at face %d, phi = %g, slip %g m/s",
+                         m->K[f], m->dK[f], f, m->phf[f], m->slip[f]);
+  if (m->c.ps.c) {
+    if ((rc = tf_closure_eval(&m->c.ps, m->nc, phi, NULL, m->ps, m->dps, d)))
+      return sl_diag_prefix(d, rc, "solids pressure");
+  } else {
+    memset(m->ps, 0, (size_t)m->nc * sizeof *m->ps), memset(m->dps, 0, (size_t)m->nc * sizeof *m->dps);
+  }
+  for (int c = 0; c < m->nc; ++c) m->dps[c] = fmax(m->dps[c], 0.0); /* a softening law would be unstable */
+  for (int f = 0; f < m->nf; ++f) { /* the transport's upwind phi of the iterate */
+    double lo = m->lo[f] >= 0 ? phi[m->lo[f]] : 0.0, hi = m->hi[f] >= 0 ? phi[m->hi[f]] : 0.0;
+    m->w[f] = m->us_new[f] > 0.0 ? lo : m->us_new[f] < 0.0 ? hi : fmax(lo, hi);
+  }
+  return 0;
+}
+
+/* The linearised system at the iterate (us_new, uf_new, phi) into triplets and rhs. */
+static int assemble(tfp_model *m, double dt, int closed, sl_diag *d) {
+  const double rho_s = m->c.rho_s, rho_f = m->c.rho_f;
+  const int P = m->n_vel;
+  int rc = 0;
+  m->n_trip = 0;
+  memset(m->rhs, 0, (size_t)m->n_unknowns * sizeof *m->rhs);
+  for (int f = 0; f < m->nf; ++f) {
+    int rs = m->us_row[f], rf = m->uf_row[f];
+    if (rs < 0) continue;
+    const int lo = m->lo[f], hi = m->hi[f], dir = face_dir(m, f);
+    const double ph = m->phf[f], eps = 1.0 - ph, A = m->area[f], V = A * m->dist[f], gd = m->g[dir];
+    const double K = m->K[f], s = m->sn[f];
+    double Keff = K + (m->slip[f] > 0.0 ? m->dK[f] * s * s / m->slip[f] : 0.0);
+    Keff = fmax(Keff, 0.0);
+    const double p_out = (lo < 0 || hi < 0) ? m->b[m->fbound[f]].pressure : 0.0;
+    /* solids */
+    rc |= add(m, rs, rs, V * (ph * rho_s / dt + Keff));
+    rc |= add(m, rs, rf, -V * Keff);
+    m->rhs[rs] += V * (ph * rho_s * m->us[f] / dt + ph * rho_s * gd - (Keff - K) * s);
+    /* fluid */
+    rc |= add(m, rf, rf, V * (eps * rho_f / dt + Keff));
+    rc |= add(m, rf, rs, -V * Keff);
+    m->rhs[rf] += V * (eps * rho_f * m->uf[f] / dt + eps * rho_f * gd + (Keff - K) * s);
+    /* the pressure gradient, A (p_hi - p_lo), p_out outside */
+    for (int side = 0; side < 2; ++side) {
+      int c = side ? hi : lo;
+      double sg = side ? 1.0 : -1.0;
+      if (c >= 0) rc |= add(m, rs, P + c, sg * A * ph), rc |= add(m, rf, P + c, sg * A * eps);
+      else m->rhs[rs] -= sg * A * ph * p_out, m->rhs[rf] -= sg * A * eps * p_out;
+    }
+    /* the solids pressure gradient, linearised in the solids velocities of both cells' faces (P_s = 0 outside) */
+    for (int side = 0; side < 2; ++side) {
+      int c = side ? hi : lo;
+      if (c < 0) continue;
+      double sg = side ? 1.0 : -1.0;
+      m->rhs[rs] -= sg * A * m->ps[c];
+      int cf[4];
+      cell_faces(m, c, cf);
+      for (int k = 0; k < 4; ++k) {
+        int gface = cf[k];
+        if (m->us_row[gface] < 0) continue;
+        double coef = sg * A * m->dps[c] * (-(dt / m->vol[c]) * SIGMA[k] * m->area[gface] * m->w[gface]);
+        rc |= add(m, rs, m->us_row[gface], coef);
+        m->rhs[rs] += coef * m->us_new[gface];
+      }
+    }
+    rc |= viscous(m, 0, f, rf, m->phi_new);
+    if (m->mu_s > 0.0) rc |= viscous(m, 1, f, rs, m->phi_new);
+  }
+  /* continuity: the mixture's volume flux out of each cell; in a closed vessel cell 0 holds the datum p = 0 */
+  for (int c = 0; c < m->nc; ++c) {
+    int row = P + c;
+    if (closed && c == 0) {
+      rc |= add(m, row, row, 1.0);
+      continue;
+    }
+    rc |= add(m, row, row, 0.0);
+    int cf[4];
+    cell_faces(m, c, cf);
+    for (int k = 0; k < 4; ++k) {
+      int f = cf[k];
+      double A = SIGMA[k] * m->area[f], ph = m->phf[f];
+      if (m->us_row[f] >= 0) {
+        rc |= add(m, row, m->us_row[f], A * ph);
+        rc |= add(m, row, m->uf_row[f], A * (1.0 - ph));
+      } else if (m->ftype[f] == TFP_FACE_INLET) { /* eps u_f of the inside cell: the given superficial velocity */
+        int in = m->lo[f] >= 0 ? m->lo[f] : m->hi[f];
+        m->rhs[row] -= A * (1.0 - m->phi[in]) * m->uf[f];
+      }
+    }
+  }
+  if (rc) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  return 0;
+}
+
+/* The CSR matrix of the triplets: the pattern once (again should the
+ * triplet sequence change), then the values through the stored positions. */
+static int to_csr(tfp_model *m, sl_diag *d) {
+  int rc = 0;
+  if (!m->pattern_built || m->A.nnz == 0 || m->n_trip != m->pattern_built) {
+    int32_t *iota = malloc((size_t)(m->n_trip + 1) * sizeof *iota);
+    int32_t *pos = realloc(m->tpos, (size_t)m->n_trip * sizeof *pos);
+    if (pos) m->tpos = pos;
+    if (!iota || !pos) {
+      free(iota);
+      return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    }
+    for (int k = 0; k <= m->n_trip; ++k) iota[k] = k;
+    sl_csr_free(&m->A);
+    rc = sl_csr_build(&m->A, m->n_unknowns, m->n_unknowns, m->n_trip, iota, m->trow, iota, m->tcol, d);
+    free(iota);
+    if (rc) return rc;
+    for (int k = 0; k < m->n_trip; ++k) m->tpos[k] = sl_csr_find(&m->A, m->trow[k], m->tcol[k]);
+    m->pattern_built = m->n_trip;
+  }
+  sl_csr_zero(&m->A);
+  for (int k = 0; k < m->n_trip; ++k) m->A.values[m->tpos[k]] += m->tval[k];
+  sl_csr_touch(&m->A);
+  return 0;
+}
+
+/* ---- one step ------------------------------------------------------------------------ */
+
+int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
+  const int nf = m->nf, nc = m->nc;
+  int closed = 1;
+  for (int f = 0; f < nf; ++f) closed = closed && m->ftype[f] != TFP_FACE_OUTLET;
+  int rc = tfp_boundary_values(m, t + dt, m->phi, d);
+  if (rc) return rc;
+  memcpy(m->us_new, m->us, (size_t)nf * sizeof *m->us);
+  memcpy(m->uf_new, m->uf, (size_t)nf * sizeof *m->uf);
+  memcpy(m->p_new, m->p, (size_t)nc * sizeof *m->p);
+  m->substeps_trial = 0, m->iterations_trial = 0;
+  double out = 0.0, change = 0.0, umax = 0.0;
+  if ((rc = transport(m, m->us_new, dt, m->phi_new, &out, d))) return rc;
+  for (int it = 1; it <= m->c.max_iterations; ++it) {
+    m->iterations_trial = it;
+    if ((rc = closures(m, it > FREEZE_PHI_AFTER ? m->phi : m->phi_new, m->phi_new, d))) return rc;
+    if ((rc = assemble(m, dt, closed, d)) || (rc = to_csr(m, d))) return rc;
+    if ((rc = sl_linsolve_solve(m->ls, &m->A, m->rhs, m->x, d))) return sl_diag_prefix(d, rc, "the coupled solve");
+    change = 0.0, umax = 0.0;
+    for (int f = 0; f < nf; ++f) {
+      if (m->us_row[f] < 0) continue;
+      double us = m->x[m->us_row[f]], uf = m->x[m->uf_row[f]];
+      change = fmax(change, fmax(fabs(us - m->us_new[f]), fabs(uf - m->uf_new[f])));
+      umax = fmax(umax, fmax(fabs(us), fabs(uf)));
+      m->us_new[f] = us, m->uf_new[f] = uf;
+    }
+    for (int c = 0; c < nc; ++c) m->p_new[c] = m->x[m->n_vel + c];
+    if (!isfinite(change) || !isfinite(umax))
+      return sl_diag_set(d, SL_EFAILED, "the coupled solve gave a non-finite velocity (iteration %d)", it);
+    if ((rc = transport(m, m->us_new, dt, m->phi_new, &out, d))) return rc;
+    if (change <= m->c.tolerance * fmax(m->c.v_ref, umax)) {
+      m->outflow_trial = out;
+      /* the inlet's u_f with the new phi of its cell */
+      for (int f = 0; f < nf; ++f)
+        if (m->ftype[f] == TFP_FACE_INLET) {
+          int in = m->lo[f] >= 0 ? m->lo[f] : m->hi[f];
+          m->uf_new[f] = m->uf[f] * (1.0 - m->phi[in]) / (1.0 - m->phi_new[in]);
+        }
+      return 0;
+    }
+  }
+  return sl_diag_set(d, SL_EFAILED, "the implicit step did not converge in %d iterations (last velocity change "
+                                    "%.3g m/s, tolerance %.3g)", m->c.max_iterations, change,
+                     m->c.tolerance * fmax(m->c.v_ref, umax));
+}
