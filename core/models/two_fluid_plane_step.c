@@ -341,7 +341,6 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi) {
 /* Drag and solids pressure at the iterate: K, dK/d|s| and the normal slip at
  * every face, P_s and dP_s/dphi in the cells. */
 static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_diag *d) {
-  const int nx = m->nx;
   for (int f = 0; f < m->nf; ++f) {
     m->phf[f] = face_phi(m, phi_drag, f);
     /* the transverse slip: the mean over the faces of the other family around f */
@@ -355,7 +354,6 @@ static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_
       int a = face_dir(m, f) == 0 ? 2 : 0;
       st += (m->uf_new[cf[a]] - m->us_new[cf[a]]) + (m->uf_new[cf[a + 1]] - m->us_new[cf[a + 1]]), n += 2;
     }
-    (void)nx;
     m->sn[f] = m->uf_new[f] - m->us_new[f];
     st /= n;
     m->slip[f] = hypot(m->sn[f], st);
