@@ -55,11 +55,13 @@ typedef struct tfp_model {
   int *us_row, *uf_row;
   int n_vel, n_unknowns;
   /* the step's work arrays */
-  double *phf, *w, *K, *dK, *slip, *sn, *ps, *dps, *flux, *alpha, *inflow, *x, *rhs;
+  double *phf, *phg, *w, *K, *dK, *slip, *sn, *ps, *dps, *flux, *alpha, *inflow, *x, *rhs;
   double t_bc; /* the time of the boundary values in uf (inlet) */
   /* the linear system: triplets, their CSR positions */
   int n_trip, cap_trip;
   int32_t *trow, *tcol, *tpos;
+  int32_t *prow, *pcol; /* the triplet sequence the pattern was built from */
+  int phi_frozen;       /* this iteration takes the face phi from the step's start */
   double *tval;
   sl_csr A;
   int pattern_built;

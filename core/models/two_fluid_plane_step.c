@@ -40,6 +40,10 @@ static const double PHI_FLOOR = 1e-6;
 /* After this many iterations the face phi of drag and momentum is that of the
  * step's start (as in the column, for drag laws with a jump in phi). */
 enum { FREEZE_PHI_AFTER = 8 };
+/* The weight's phi (phi_g) stays implicit, Newton-coupled to the transport, for longer: a stratified
+ * suspension overturns when its weight lags (N dt > 1), but a bed blown out at many cells a step can leave
+ * the iteration without a fixed point, and after this many iterations it too takes the step's start. */
+enum { FREEZE_WEIGHT_AFTER = 20 };
 
 static double cpu_now(void) { return (double)clock() / CLOCKS_PER_SEC; }
 
@@ -64,7 +68,7 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
   struct { double **p; size_t n; } a[] = {
       {&m->xc, nx}, {&m->yc, ny}, {&m->hx, nx}, {&m->hy, ny}, {&m->vol, nc}, {&m->area, nf}, {&m->dist, nf},
       {&m->phi, nc}, {&m->p, nc}, {&m->uf, nf}, {&m->us, nf}, {&m->phi_new, nc}, {&m->p_new, nc},
-      {&m->uf_new, nf}, {&m->us_new, nf}, {&m->phf, nf}, {&m->w, nf}, {&m->K, nf}, {&m->dK, nf}, {&m->slip, nf},
+      {&m->uf_new, nf}, {&m->us_new, nf}, {&m->phf, nf}, {&m->phg, nf}, {&m->w, nf}, {&m->K, nf}, {&m->dK, nf}, {&m->slip, nf},
       {&m->sn, nf}, {&m->ps, nc}, {&m->dps, nc}, {&m->flux, nf}, {&m->alpha, nc}, {&m->inflow, nc},
       {&m->x, 2 * nf + nc}, {&m->rhs, 2 * nf + nc}};
   for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
@@ -133,11 +137,11 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
 
 void tfp_free(tfp_model *m) {
   double *all[] = {m->xc,  m->yc,  m->hx,     m->hy,     m->vol,    m->area,  m->dist,  m->phi,  m->p,
-                   m->uf,  m->us,  m->phi_new, m->p_new, m->uf_new, m->us_new, m->phf,  m->w,    m->K,
+                   m->uf,  m->us,  m->phi_new, m->p_new, m->uf_new, m->us_new, m->phf, m->phg,  m->w,    m->K,
                    m->dK,  m->slip, m->sn,    m->ps,     m->dps,    m->flux,  m->alpha, m->inflow, m->x,
                    m->rhs, m->tval};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
-  int *ia[] = {m->lo, m->hi, m->ftype, m->fbound, m->us_row, m->uf_row, m->tan_noslip, m->trow, m->tcol, m->tpos};
+  int *ia[] = {m->lo, m->hi, m->ftype, m->fbound, m->us_row, m->uf_row, m->tan_noslip, m->trow, m->tcol, m->tpos, m->prow, m->pcol};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k) free(ia[k]);
   sl_csr_free(&m->A);
   sl_linsolve_destroy(m->ls);
@@ -343,6 +347,7 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi) {
 static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_diag *d) {
   for (int f = 0; f < m->nf; ++f) {
     m->phf[f] = face_phi(m, phi_drag, f);
+    m->phg[f] = face_phi(m, m->phi_frozen ? m->phi : phi, f);
     /* the transverse slip: the mean over the faces of the other family around f */
     double st = 0.0;
     int n = 0;
@@ -394,20 +399,68 @@ static int assemble(tfp_model *m, double dt, int closed, sl_diag *d) {
     double Keff = K + (m->slip[f] > 0.0 ? m->dK[f] * s * s / m->slip[f] : 0.0);
     Keff = fmax(Keff, 0.0);
     const double p_out = (lo < 0 || hi < 0) ? m->b[m->fbound[f]].pressure : 0.0;
+    /* the weight and the pressure gradient share the iterate's phi_g (never frozen) */
+    const double pg = m->phg[f], eg = 1.0 - pg;
     /* solids */
     rc |= add(m, rs, rs, V * (ph * rho_s / dt + Keff));
     rc |= add(m, rs, rf, -V * Keff);
-    m->rhs[rs] += V * (ph * rho_s * m->us[f] / dt + ph * rho_s * gd - (Keff - K) * s);
+    m->rhs[rs] += V * (ph * rho_s * m->us[f] / dt + pg * rho_s * gd - (Keff - K) * s);
     /* fluid */
     rc |= add(m, rf, rf, V * (eps * rho_f / dt + Keff));
     rc |= add(m, rf, rs, -V * Keff);
-    m->rhs[rf] += V * (eps * rho_f * m->uf[f] / dt + eps * rho_f * gd + (Keff - K) * s);
+    m->rhs[rf] += V * (eps * rho_f * m->uf[f] / dt + eg * rho_f * gd + (Keff - K) * s);
     /* the pressure gradient, A (p_hi - p_lo), p_out outside */
     for (int side = 0; side < 2; ++side) {
       int c = side ? hi : lo;
       double sg = side ? 1.0 : -1.0;
-      if (c >= 0) rc |= add(m, rs, P + c, sg * A * ph), rc |= add(m, rf, P + c, sg * A * eps);
-      else m->rhs[rs] -= sg * A * ph * p_out, m->rhs[rf] -= sg * A * eps * p_out;
+      if (c >= 0) rc |= add(m, rs, P + c, sg * A * pg), rc |= add(m, rf, P + c, sg * A * eg);
+      else m->rhs[rs] -= sg * A * pg * p_out, m->rhs[rf] -= sg * A * eg * p_out;
+    }
+    /* Newton in phi_g: its change with the solids velocities, dphi_c = -(dt/V_c) sum sigma A w delta u_s of the
+       cell(s) it is read from, moves weight against the pressure gradient between the phases: + (rho_s g -
+       dp/dn) on the solids, - (rho_f g - dp/dn) on the fluid. Without it the weight lags the transport, and
+       a stratified suspension (the smeared top of a settling one) overturns once N dt exceeds about 1, N the
+       buoyancy frequency. */
+    { /* emitted for every face (zero where phi_g is floored), so that the pattern stays the same */
+      double gradp = lo >= 0 && hi >= 0 ? (m->p_new[hi] - m->p_new[lo]) / m->dist[f]
+                     : lo < 0           ? (m->p_new[hi] - p_out) / m->dist[f]
+                                        : (p_out - m->p_new[lo]) / m->dist[f];
+      double Ss = pg > PHI_FLOOR ? V * (rho_s * gd - gradp) : 0.0, Sf = pg > PHI_FLOOR ? -V * (rho_f * gd - gradp) : 0.0;
+      int src[2] = {-1, -1};
+      double wt[2] = {1.0, 0.0};
+      if (lo < 0 || hi < 0) src[0] = lo < 0 ? hi : lo;
+      else if (gd != 0.0) src[0] = gd < 0.0 ? lo : hi;
+      else src[0] = lo, src[1] = hi, wt[0] = wt[1] = 0.5;
+      int cols[8], nc = 0;
+      double dphi[8];
+      for (int q = 0; q < 2; ++q) {
+        int c = src[q];
+        if (c < 0) continue;
+        int cf[4];
+        cell_faces(m, c, cf);
+        /* one Euler step's dphi over-predicts the sub-stepped transport beyond a Courant number of 1 (a bed
+           blown out at 0.5 m/s): the derivative is scaled back steeply by it */
+        double courant = 0.0;
+        for (int k = 0; k < 4; ++k) courant += 0.5 * dt * fabs(m->area[cf[k]] * m->us_new[cf[k]]) / m->vol[c];
+        double damp = pow(fmax(1.0, courant), -4.0);
+        for (int k = 0; k < 4; ++k)
+          if (m->us_row[cf[k]] >= 0)
+            cols[nc] = cf[k], dphi[nc++] = damp * wt[q] * (-(dt / m->vol[c]) * SIGMA[k] * m->area[cf[k]] * m->w[cf[k]]);
+      }
+      /* Dilute faces: the weight's sensitivity, drho g per unit phi, does not fall with phi as the row's inertia
+         and drag do, and would take the row over (a bed blown out leaves such faces): the term is kept to half
+         the row's diagonal. */
+      double big = 0.0, diag = V * (ph * rho_s / dt + Keff), scale = 1.0;
+      for (int q = 0; q < nc; ++q) big = fmax(big, fabs(Ss * dphi[q]));
+      if (big > 0.5 * diag) scale = 0.5 * diag / big;
+      if (m->phi_frozen) scale = 0.0; /* phi_g is the step's start: nothing to linearise */
+      for (int q = 0; q < nc; ++q) {
+        double ds = scale * dphi[q];
+        rc |= add(m, rs, m->us_row[cols[q]], -Ss * ds);
+        rc |= add(m, rf, m->us_row[cols[q]], -Sf * ds);
+        m->rhs[rs] -= Ss * ds * m->us_new[cols[q]];
+        m->rhs[rf] -= Sf * ds * m->us_new[cols[q]];
+      }
     }
     /* the solids pressure gradient, linearised in the solids velocities of both cells' faces (P_s = 0 outside) */
     for (int side = 0; side < 2; ++side) {
@@ -458,7 +511,11 @@ static int assemble(tfp_model *m, double dt, int closed, sl_diag *d) {
  * triplet sequence change), then the values through the stored positions. */
 static int to_csr(tfp_model *m, sl_diag *d) {
   int rc = 0;
-  if (!m->pattern_built || m->A.nnz == 0 || m->n_trip != m->pattern_built) {
+  /* the same triplet sequence as the pattern's (the assembly emits a fixed stencil; checked, not assumed) */
+  int same = m->pattern_built && m->A.nnz > 0 && m->n_trip == m->pattern_built &&
+             memcmp(m->prow, m->trow, (size_t)m->n_trip * sizeof *m->trow) == 0 &&
+             memcmp(m->pcol, m->tcol, (size_t)m->n_trip * sizeof *m->tcol) == 0;
+  if (!same) {
     int32_t *iota = malloc((size_t)(m->n_trip + 1) * sizeof *iota);
     int32_t *pos = realloc(m->tpos, (size_t)m->n_trip * sizeof *pos);
     if (pos) m->tpos = pos;
@@ -472,6 +529,13 @@ static int to_csr(tfp_model *m, sl_diag *d) {
     free(iota);
     if (rc) return rc;
     for (int k = 0; k < m->n_trip; ++k) m->tpos[k] = sl_csr_find(&m->A, m->trow[k], m->tcol[k]);
+    int32_t *pr = realloc(m->prow, (size_t)m->n_trip * sizeof *pr);
+    if (pr) m->prow = pr;
+    int32_t *pc = realloc(m->pcol, (size_t)m->n_trip * sizeof *pc);
+    if (pc) m->pcol = pc;
+    if (!pr || !pc) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    memcpy(m->prow, m->trow, (size_t)m->n_trip * sizeof *pr);
+    memcpy(m->pcol, m->tcol, (size_t)m->n_trip * sizeof *pc);
     m->pattern_built = m->n_trip;
   }
   sl_csr_zero(&m->A);
@@ -496,6 +560,7 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
   if ((rc = transport(m, m->us_new, dt, m->phi_new, &out, d))) return rc;
   for (int it = 1; it <= m->c.max_iterations; ++it) {
     m->iterations_trial = it;
+    m->phi_frozen = it > FREEZE_WEIGHT_AFTER;
     if ((rc = closures(m, it > FREEZE_PHI_AFTER ? m->phi : m->phi_new, m->phi_new, d))) return rc;
     if ((rc = assemble(m, dt, closed, d)) || (rc = to_csr(m, d))) return rc;
     if ((rc = sl_linsolve_solve(m->ls, &m->A, m->rhs, m->x, d))) return sl_diag_prefix(d, rc, "the coupled solve");
