@@ -217,17 +217,7 @@ static int open_output(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
   rc = sl_output_write_mesh(r->out, 1, m->n_vertices, r->node, m->n_cells, 2, cells, "Polyline", d);
   free(cells);
   if (rc) return rc;
-  char *ini_text = sl_ini_to_string(r->ini);
-  sl_provenance_closure pc[2];
-  sl_provenance pv = {.sluice_version = o->sluice_version ? o->sluice_version : "unknown", .ini_text = ini_text,
-                      .closures = pc};
-  const sl_closure *cl[2] = {r->c.drag.c, r->c.ps.c};
-  const char *roles[2] = {"closure.drag", "closure.solids_pressure"};
-  for (int k = 0; k < 2; ++k)
-    if (cl[k]) pc[pv.n_closures++] = sl_scene_closure_provenance(cl[k], roles[k], r->params[k], sizeof r->params[k]);
-  rc = sl_output_write_provenance(r->out, &pv, d);
-  free(ini_text);
-  return rc;
+  return tf_write_provenance(r->out, r->ini, o, &r->c, r->params, d);
 }
 
 /* The height (along -g) where phi first reaches `level` coming down from the
@@ -285,36 +275,21 @@ static int write_state(tf_run *r, double t, sl_diag *d) {
   return rc;
 }
 
+static tf_state column_state(tf_run *r) {
+  return (tf_state){.phi = r->c.phi, .us = r->c.u, .uf = r->c.uf, .p = r->c.p, .n_cells = r->c.n,
+                    .n_faces = r->c.n + 1, .inventory0 = r->inventory0, .outflow = r->outflow,
+                    .rejected = r->res->rejected_steps};
+}
+
 static int write_checkpoint(tf_run *r, double t, double dt, long step, sl_diag *d) {
-  double book[2] = {r->inventory0, r->outflow};
-  sl_checkpoint_array a[5] = {{"phi", r->c.n, r->c.phi}, {"velocity_solid", r->c.n + 1, r->c.u},
-                              {"velocity_fluid", r->c.n + 1, r->c.uf}, {"pressure", r->c.n, r->c.p},
-                              {"solids_book", 2, book}};
-  sl_checkpoint ck = {.time = t, .dt = dt, .step = step, .n_arrays = 5, .arrays = a};
-  ck.n_ints = 1;
-  snprintf(ck.int_names[0], SL_CHECKPOINT_NAME_MAX, "rejected");
-  ck.ints[0] = r->res->rejected_steps;
-  return sl_output_write_checkpoint(r->out, &ck, d);
+  tf_state st = column_state(r);
+  return tf_checkpoint_write(r->out, &st, t, dt, step, d);
 }
 
 static int restore(tf_run *r, const char *path, double *t, double *dt, long *step, sl_diag *d) {
-  sl_checkpoint ck;
-  int rc = sl_checkpoint_read(path, &ck, d);
-  if (rc) return rc;
-  const char *names[5] = {"phi", "velocity_solid", "velocity_fluid", "pressure", "solids_book"};
-  double *dst[4] = {r->c.phi, r->c.u, r->c.uf, r->c.p};
-  int64_t len[5] = {r->c.n, r->c.n + 1, r->c.n + 1, r->c.n, 2};
-  for (int k = 0; k < 5 && !rc; ++k) {
-    const sl_checkpoint_array *a = sl_checkpoint_find(&ck, names[k]);
-    if (!a || a->n != len[k])
-      rc = sl_diag_set(d, SL_EBADINPUT, "restart: %s holds no two_fluid '%s' of %lld values", path, names[k],
-                       (long long)len[k]);
-    else if (k < 4) memcpy(dst[k], a->data, (size_t)a->n * sizeof(double));
-    else r->inventory0 = a->data[0], r->outflow = a->data[1];
-  }
-  *t = ck.time, *dt = ck.dt, *step = (long)ck.step;
-  if (!rc && ck.n_ints > 0) r->res->rejected_steps = (long)ck.ints[0];
-  sl_checkpoint_free(&ck);
+  tf_state st = column_state(r);
+  int rc = tf_checkpoint_restore(path, "two_fluid", &st, t, dt, step, d);
+  r->inventory0 = st.inventory0, r->outflow = st.outflow, r->res->rejected_steps = st.rejected;
   return rc;
 }
 

@@ -5,6 +5,8 @@
 
 #include "core/config/expr.h"
 #include "core/config/ini.h"
+#include "core/io/output.h"
+#include "core/models/navier_stokes.h"
 #include "core/plugin/registry.h"
 #include "core/plugin/instance.h"
 #include "core/util/diag.h"
@@ -88,6 +90,26 @@ int tf_transport(tf_column *c, const double *phi0, const double *u, double dt, d
  * inputs. 0 or SL_EBADINPUT with file:line. */
 int tf_scene_physics(sl_ini *ini, const sl_registry *reg, int dim, tf_column *c, double gravity[2],
                      double *steady_tol, sl_diag *d);
+
+/* A run's state as its checkpoint holds it: phi and p in n_cells cells, the
+ * solids and fluid velocities on n_faces faces, the solids bookkeeping and
+ * the count of rejected steps (two_fluid_io.c). */
+typedef struct tf_state {
+  double *phi, *us, *uf, *p;
+  int64_t n_cells, n_faces;
+  double inventory0, outflow;
+  long rejected;
+} tf_state;
+
+int tf_checkpoint_write(sl_output *out, const tf_state *s, double t, double dt, long step, sl_diag *d);
+/* Reads a checkpoint into s's arrays (their lengths must match: SL_EBADINPUT
+ * naming the array and the model otherwise) and its bookkeeping. */
+int tf_checkpoint_restore(const char *path, const char *model, tf_state *s, double *t, double *dt, long *step,
+                          sl_diag *d);
+/* The scene and the drag and solids-pressure closures (params: their
+ * parameter text, kept alive until the output closes). */
+int tf_write_provenance(sl_output *out, const sl_ini *ini, const sl_ns_run_opts *o, const tf_column *c,
+                        char params[2][1024], sl_diag *d);
 
 /* K and dK/dslip at n faces (phi, slip given); p_s and dp_s/dphi at n cells. */
 int tf_closure_eval(tf_closure *b, int n, const double *phi, const double *slip, double *value, double *dvalue,

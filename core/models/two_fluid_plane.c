@@ -157,17 +157,7 @@ static int open_output(tfp_run *r, const sl_ns_run_opts *o, sl_diag *d) {
   rc = sl_output_write_mesh(r->out, 2, m->n_vertices, m->xy, m->n_cells, m->nv_per_cell, cells, "Quadrilateral", d);
   free(cells);
   if (rc) return rc;
-  char *ini_text = sl_ini_to_string(r->ini);
-  sl_provenance_closure pc[2];
-  sl_provenance pv = {.sluice_version = o->sluice_version ? o->sluice_version : "unknown", .ini_text = ini_text,
-                      .closures = pc};
-  const sl_closure *cl[2] = {r->m.c.drag.c, r->m.c.ps.c};
-  const char *roles[2] = {"closure.drag", "closure.solids_pressure"};
-  for (int k = 0; k < 2; ++k)
-    if (cl[k]) pc[pv.n_closures++] = sl_scene_closure_provenance(cl[k], roles[k], r->params[k], sizeof r->params[k]);
-  rc = sl_output_write_provenance(r->out, &pv, d);
-  free(ini_text);
-  return rc;
+  return tf_write_provenance(r->out, r->ini, o, &r->m.c, r->params, d);
 }
 
 /* A grid-ordered cell field into mesh cell order (components 1 or 2). */
@@ -215,38 +205,22 @@ static int write_state(tfp_run *r, double t, sl_diag *d) {
   return rc;
 }
 
-static int write_checkpoint(tfp_run *r, double t, double dt, long step_no, sl_diag *d) {
+static tf_state plane_state(tfp_run *r) {
   tfp_model *m = &r->m;
-  double book[2] = {r->inventory0, r->outflow};
-  sl_checkpoint_array a[5] = {{"phi", m->nc, m->phi}, {"pressure", m->nc, m->p}, {"velocity_solid", m->nf, m->us},
-                              {"velocity_fluid", m->nf, m->uf}, {"solids_book", 2, book}};
-  sl_checkpoint ck = {.time = t, .dt = dt, .step = step_no, .n_arrays = 5, .arrays = a};
-  ck.n_ints = 1;
-  snprintf(ck.int_names[0], SL_CHECKPOINT_NAME_MAX, "rejected");
-  ck.ints[0] = r->res->rejected_steps;
-  return sl_output_write_checkpoint(r->out, &ck, d);
+  return (tf_state){.phi = m->phi, .us = m->us, .uf = m->uf, .p = m->p, .n_cells = m->nc, .n_faces = m->nf,
+                    .inventory0 = r->inventory0, .outflow = r->outflow, .rejected = r->res->rejected_steps};
+}
+
+static int write_checkpoint(tfp_run *r, double t, double dt, long step_no, sl_diag *d) {
+  tf_state st = plane_state(r);
+  return tf_checkpoint_write(r->out, &st, t, dt, step_no, d);
 }
 
 static int plane_restore(void *user, const char *path, double *t, double *dt, long *step_no, sl_diag *d) {
   tfp_run *r = user;
-  tfp_model *m = &r->m;
-  sl_checkpoint ck;
-  int rc = sl_checkpoint_read(path, &ck, d);
-  if (rc) return rc;
-  const char *names[5] = {"phi", "pressure", "velocity_solid", "velocity_fluid", "solids_book"};
-  int64_t len[5] = {m->nc, m->nc, m->nf, m->nf, 2};
-  double *dst[4] = {m->phi, m->p, m->us, m->uf};
-  for (int k = 0; k < 5 && !rc; ++k) {
-    const sl_checkpoint_array *a = sl_checkpoint_find(&ck, names[k]);
-    if (!a || a->n != len[k])
-      rc = sl_diag_set(d, SL_EBADINPUT, "restart: %s holds no 2-D two_fluid '%s' of %lld values (the same grid)",
-                       path, names[k], (long long)len[k]);
-    else if (k < 4) memcpy(dst[k], a->data, (size_t)a->n * sizeof(double));
-    else r->inventory0 = a->data[0], r->outflow = a->data[1];
-  }
-  *t = ck.time, *dt = ck.dt, *step_no = (long)ck.step;
-  if (!rc && ck.n_ints > 0) r->res->rejected_steps = (long)ck.ints[0];
-  sl_checkpoint_free(&ck);
+  tf_state st = plane_state(r);
+  int rc = tf_checkpoint_restore(path, "2-D two_fluid (the same grid)", &st, t, dt, step_no, d);
+  r->inventory0 = st.inventory0, r->outflow = st.outflow, r->res->rejected_steps = st.rejected;
   return rc;
 }
 

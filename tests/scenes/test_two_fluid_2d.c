@@ -28,6 +28,7 @@
 
 #include "core/io/output.h"
 #include "core/models/two_fluid.h"
+#include "scene_fields.h"
 #include "scene_runner.h"
 #include "testing.h"
 
@@ -35,29 +36,6 @@ static char configs[4096], local[4096];
 static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): shorter runs */
 
 SCENE_RUNNERS(sl_two_fluid_run)
-
-static double *field_at(const char *file, const char *name, double t, int *n, double *t_found) {
-  sl_output_field f;
-  sl_diag d = {{0}};
-  if (sl_output_read_field(file, name, t, &f, &d)) {
-    CHECK_MSG(0, "%s: %s: %s", file, name, d.msg);
-    return NULL;
-  }
-  double *v = malloc((size_t)(f.n * f.components) * sizeof *v);
-  if (v) memcpy(v, f.values, (size_t)(f.n * f.components) * sizeof *v);
-  *n = (int)f.n;
-  if (t_found) *t_found = f.time;
-  sl_output_field_free(&f);
-  return v;
-}
-
-static double scalar(const char *file, const char *name, double t) {
-  sl_diag d = {{0}};
-  double v = NAN, tf;
-  int rc = sl_output_read_scalar(file, name, t, &v, &tf, &d);
-  CHECK_MSG(rc == 0, "%s: %s: %s", file, name, d.msg);
-  return v;
-}
 
 /* ---- one column against the 1-D model ------------------------------------------ */
 
