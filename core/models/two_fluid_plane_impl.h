@@ -54,9 +54,9 @@ typedef struct tfp_model {
   /* unknown numbering: us_row[f], uf_row[f] (-1: given), p at n_vel + c */
   int *us_row, *uf_row;
   int n_vel, n_unknowns;
+  int closed; /* no outlet: the pressure takes its datum in cell 0 */
   /* the step's work arrays */
   double *phf, *phg, *w, *K, *dK, *slip, *sn, *ps, *dps, *flux, *alpha, *inflow, *x, *rhs;
-  double t_bc; /* the time of the boundary values in uf (inlet) */
   /* the linear system: triplets, their CSR positions */
   int n_trip, cap_trip;
   int32_t *trow, *tcol, *tpos;

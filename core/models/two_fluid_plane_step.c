@@ -125,6 +125,8 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
       }
     }
   }
+  m->closed = 1;
+  for (int f = 0; f < m->nf; ++f) m->closed = m->closed && m->ftype[f] != TFP_FACE_OUTLET;
   int n = 0;
   for (int f = 0; f < m->nf; ++f) {
     int active = m->ftype[f] == TFP_FACE_INTERIOR || m->ftype[f] == TFP_FACE_OUTLET;
@@ -172,7 +174,6 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
     m->us[f] = 0.0;
     m->uf[f] = inward * U / (1.0 - phi[inside]);
   }
-  m->t_bc = t;
   return 0;
 }
 
@@ -384,7 +385,7 @@ static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_
 }
 
 /* The linearised system at the iterate (us_new, uf_new, phi) into triplets and rhs. */
-static int assemble(tfp_model *m, double dt, int closed, sl_diag *d) {
+static int assemble(tfp_model *m, double dt, sl_diag *d) {
   const double rho_s = m->c.rho_s, rho_f = m->c.rho_f;
   const int P = m->n_vel;
   int rc = 0;
@@ -484,7 +485,7 @@ static int assemble(tfp_model *m, double dt, int closed, sl_diag *d) {
   /* continuity: the mixture's volume flux out of each cell; in a closed vessel cell 0 holds the datum p = 0 */
   for (int c = 0; c < m->nc; ++c) {
     int row = P + c;
-    if (closed && c == 0) {
+    if (m->closed && c == 0) {
       rc |= add(m, row, row, 1.0);
       continue;
     }
@@ -548,8 +549,6 @@ static int to_csr(tfp_model *m, sl_diag *d) {
 
 int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
   const int nf = m->nf, nc = m->nc;
-  int closed = 1;
-  for (int f = 0; f < nf; ++f) closed = closed && m->ftype[f] != TFP_FACE_OUTLET;
   int rc = tfp_boundary_values(m, t + dt, m->phi, d);
   if (rc) return rc;
   memcpy(m->us_new, m->us, (size_t)nf * sizeof *m->us);
@@ -562,7 +561,7 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
     m->iterations_trial = it;
     m->phi_frozen = it > FREEZE_WEIGHT_AFTER;
     if ((rc = closures(m, it > FREEZE_PHI_AFTER ? m->phi : m->phi_new, m->phi_new, d))) return rc;
-    if ((rc = assemble(m, dt, closed, d)) || (rc = to_csr(m, d))) return rc;
+    if ((rc = assemble(m, dt, d)) || (rc = to_csr(m, d))) return rc;
     if ((rc = sl_linsolve_solve(m->ls, &m->A, m->rhs, m->x, d))) return sl_diag_prefix(d, rc, "the coupled solve");
     change = 0.0, umax = 0.0;
     for (int f = 0; f < nf; ++f) {
