@@ -85,6 +85,11 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d);
  * arrays. 0, or SL_EFAILED with the reason (the caller retries smaller). */
 int tfp_step(tfp_model *m, double t, double dt, sl_diag *d);
 
+/* phi = T(phi^n, us) over dt (two_fluid_plane_transport.c): the solids
+ * leaving through the boundary are added to *outflow. 0, or SL_EFAILED when
+ * the sub-steps needed are too many (the caller retries smaller). */
+int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double *outflow, sl_diag *d);
+
 /* The solids volume (per radian when axisymmetric) in the domain. */
 double tfp_inventory(const tfp_model *m, const double *phi);
 
