@@ -353,19 +353,21 @@ int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *
     }
     return sl_shear_layer_run(ini, reg, o, res, d);
   }
-  static const char *const shear_only[] = {"cross_section", "granular_temperature", "interphase_dissipation"};
-  for (size_t k = 0; k < sizeof shear_only / sizeof shear_only[0]; ++k) {
-    const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", shear_only[k]);
+  int geometry = 0;
+  rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, d);
+  if (rc) return rc;
+  /* the column has no solids stress; the 2-D model takes its granular keys */
+  static const char *const not_column[] = {"cross_section", "granular_temperature", "interphase_dissipation"};
+  for (size_t k = 0; k < (geometry != 0 ? 1 : sizeof not_column / sizeof not_column[0]); ++k) {
+    const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", not_column[k]);
     if (e)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: a key of the shear layer (motion = shear)", e->file,
-                         e->line, e->key);
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: a key of the shear layer (motion = shear)%s",
+                         e->file, e->line, e->key, k ? " or a 2-D scene with [closure.granular]" : "");
   }
+  if (geometry != 0) return sl_two_fluid_plane_run(ini, reg, o, res, d);
   memset(res, 0, sizeof *res);
   tf_run r = {.ini = ini, .res = res};
   double c0 = cpu_now();
-  int geometry = 0;
-  rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, d);
-  if (!rc && geometry != 0) return sl_two_fluid_plane_run(ini, reg, o, res, d);
   if (!rc) rc = sl_scene_mesh(ini, &r.mesh, d);
   if (!rc) rc = column_from_mesh(&r, d);
   if (!rc) rc = tf_scene_physics(r.ini, reg, 1, &r.c, NULL, &r.steady_tol, d);

@@ -4,15 +4,30 @@
  * rectangle and annulus generators, graded or not).
  *
  * Boundaries ([boundary.NAME] type):
- *   wall    u.n = 0 for both phases; the fluid no-slip, the solids
- *           solids = no_slip (default) | free_slip
+ *   wall    u.n = 0 for both phases; along it the fluid sticks to the
+ *           wall's speed `velocity` (an expression of x, y, t and case,
+ *           along +x for a bottom or top wall, +y for a left or right one;
+ *           default 0); the solids
+ *           solids = no_slip (default) | free_slip | wall_stress
+ *           (the last: the stress of [closure.wall_stress] against their
+ *           slip, two_fluid_plane_solids.c)
  *   slip    u.n = 0, both phases free-slip
  *   axis    the symmetry axis of an axisymmetric scene (r = 0)
  *   inlet   velocity = the superficial fluid velocity entering (m/s, along
  *           the inward normal), an expression of x, y, t and case; the
  *           solids are held (u_s = 0); tangential velocities 0
  *   outlet  pressure (default 0); velocities free (zero normal gradient),
- *           solids leave where they are carried out */
+ *           solids leave where they are carried out
+ *   periodic both opposite sides (left and right, or bottom and top; an
+ *           axisymmetric scene: bottom and top only) are this type: what
+ *           leaves one enters the other; no mean pressure gradient along it
+ *
+ * Output: cell fields phi, velocity_solid, velocity_fluid, pressure,
+ * solids_pressure, theta (with [closure.granular]); scalars
+ * solids_inventory, solids_conservation_error and, per wall NAME,
+ * wall_shear_stress_fluid_NAME and wall_shear_stress_solid_NAME (the mean
+ * stress each phase exerts on the wall along its positive direction) and
+ * wall_slip_NAME (the mean solids slip there). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,8 +41,9 @@
 #include "core/models/two_fluid_plane_impl.h"
 #include "core/time/fixed_step.h"
 
-enum { F_PHI = 1, F_US = 2, F_UF = 4, F_P = 8, F_PS = 16 };
-static const char *const field_names[] = {"phi", "velocity_solid", "velocity_fluid", "pressure", "solids_pressure"};
+enum { F_PHI = 1, F_US = 2, F_UF = 4, F_P = 8, F_PS = 16, F_THETA = 32 };
+static const char *const field_names[] = {"phi",      "velocity_solid",  "velocity_fluid",
+                                          "pressure", "solids_pressure", "theta"};
 
 typedef struct tfp_run {
   sl_ini *ini;
@@ -65,22 +81,29 @@ static int boundaries(tfp_run *r, sl_diag *d) {
     int rc = 0;
     if (sl_ini_find_section(r->ini, sec) && (rc = sl_ini_check_keys(r->ini, sec, keys, 4, d))) return rc;
     tfp_boundary *b = &r->b[k];
-    if ((rc = sl_ini_get_choice(r->ini, sec, "type", 0, TFP_WALL, "wall|slip|axis|inlet|outlet", &b->type, d)))
+    if ((rc = sl_ini_get_choice(r->ini, sec, "type", 0, TFP_WALL, "wall|slip|axis|inlet|outlet|periodic", &b->type,
+                                d)))
       return rc;
     const sl_ini_entry *ve = sl_ini_find(r->ini, sec, "velocity"), *pe = sl_ini_find(r->ini, sec, "pressure");
     const sl_ini_entry *se = sl_ini_find(r->ini, sec, "solids");
-    if (ve && b->type != TFP_INLET)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] velocity: only an inlet takes a velocity", ve->file, ve->line,
-                         sec);
+    if (ve && b->type != TFP_INLET && b->type != TFP_WALL)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] velocity: only an inlet (the inflow) or a wall (its speed "
+                                          "along itself) takes a velocity", ve->file, ve->line, sec);
     if (pe && b->type != TFP_OUTLET)
       return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] pressure: only an outlet takes a pressure", pe->file,
                          pe->line, sec);
     if (se && b->type != TFP_WALL)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] solids: only a wall takes it (no_slip | free_slip)", se->file,
-                         se->line, sec);
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] solids: only a wall takes it (no_slip | free_slip | "
+                                          "wall_stress)", se->file, se->line, sec);
     if (b->type == TFP_WALL &&
-        (rc = sl_ini_get_choice(r->ini, sec, "solids", 0, 0, "no_slip|free_slip", &b->solids_slip, d)))
+        (rc = sl_ini_get_choice(r->ini, sec, "solids", 0, TFP_SOLIDS_NO_SLIP, "no_slip|free_slip|wall_stress",
+                                &b->solids, d)))
       return rc;
+    if (b->type == TFP_WALL && ve) {
+      static const char *const vars[] = {"x", "y", "t", "case"};
+      if ((rc = sl_expr_compile(ve->value, vars, 4, &b->velocity, d)))
+        return sl_diag_prefix(d, rc, "%s:%d: [%s] velocity", ve->file, ve->line, sec);
+    }
     if (b->type == TFP_AXIS && !r->m.axi)
       return sl_diag_set(d, SL_EBADINPUT, "[%s] type = axis: only an axisymmetric scene has an axis", sec);
     if (b->type == TFP_INLET) {
@@ -97,6 +120,25 @@ static int boundaries(tfp_run *r, sl_diag *d) {
       r->has_outlet = 1;
     }
   }
+  /* periodic sides come in opposite pairs, each wholly periodic */
+  const sl_tensor_grid *gp = &r->m.grid;
+  for (int dir = 0; dir < 2; ++dir) {
+    int n = dir == 0 ? gp->ny : gp->nx, count[2] = {0, 0};
+    for (int side = 0; side < 2; ++side)
+      for (int k = 0; k < n; ++k) count[side] += r->b[gp->side_tag[2 * dir + side][k]].type == TFP_PERIODIC;
+    if (count[0] == 0 && count[1] == 0) continue;
+    static const char *const pair[2] = {"left and right", "bottom and top"};
+    if (count[0] != n || count[1] != n)
+      return sl_diag_set(d, SL_EBADINPUT, "type = periodic: the %s sides must both be periodic, wholly (%d of %d and "
+                                          "%d of %d faces are)", pair[dir], count[0], n, count[1], n);
+    if (dir == 0 && r->m.axi)
+      return sl_diag_set(d, SL_EBADINPUT, "type = periodic: an axisymmetric scene is periodic along its axis only "
+                                          "(bottom and top)");
+    if ((dir == 0 ? gp->nx : gp->ny) < 2)
+      return sl_diag_set(d, SL_EBADINPUT, "type = periodic: the %s sides need at least 2 cells between them",
+                         pair[dir]);
+    r->m.periodic[dir] = 1;
+  }
   if (r->has_inlet && !r->has_outlet)
     return sl_diag_set(d, SL_EBADINPUT, "two_fluid: an inlet needs an outlet (type = outlet) for the flow to leave");
   /* an axisymmetric grid that reaches r = 0 has its axis there; an axis elsewhere is refused */
@@ -105,6 +147,7 @@ static int boundaries(tfp_run *r, sl_diag *d) {
     for (int k = 0; k < (side < 2 ? g->ny : g->nx); ++k) {
       int tag = g->side_tag[side][k];
       int on_axis = r->m.axi && side == SL_SIDE_LEFT && g->xf[0] == 0.0;
+      if (r->b[tag].type == TFP_PERIODIC && !on_axis) continue;
       if (on_axis != (r->b[tag].type == TFP_AXIS))
         return sl_diag_set(d, SL_EBADINPUT, "[boundary.%s] type%s: %s", mesh->boundary_names[tag],
                            on_axis ? "" : " = axis",
@@ -144,9 +187,9 @@ static int initial_state(tfp_run *r, sl_diag *d) {
 
 static int open_output(tfp_run *r, const sl_ns_run_opts *o, sl_diag *d) {
   unsigned mask;
-  unsigned all = F_PHI | F_US | F_UF | F_P | (r->m.c.ps.c ? F_PS : 0);
+  unsigned all = F_PHI | F_US | F_UF | F_P | (r->m.c.ps.c ? F_PS : 0) | (r->m.s.granular ? F_THETA : 0);
   int rc = sl_scene_output_path(r->ini, o->output, o->scene_path, r->res->output_path, sizeof r->res->output_path, d);
-  if (!rc) rc = sl_scene_output_fields(r->ini, field_names, 5, all, &mask, d);
+  if (!rc) rc = sl_scene_output_fields(r->ini, field_names, 6, all, &mask, d);
   if (rc) return rc;
   r->fields = (int)mask;
   if ((rc = sl_output_open(&r->out, r->res->output_path, d))) return rc;
@@ -194,6 +237,17 @@ static int write_state(tfp_run *r, double t, sl_diag *d) {
   if (!rc && (r->fields & F_PS) && m->c.ps.c) {
     if ((rc = tf_closure_eval(&m->c.ps, m->nc, m->phi, NULL, vx, NULL, d)) == 0)
       rc = sl_output_write_field(r->out, "solids_pressure", SL_CENTRE_CELL, 1, to_mesh_order(r, vx, NULL), d);
+  }
+  if (!rc && (r->fields & F_THETA) && m->s.granular)
+    rc = sl_output_write_field(r->out, "theta", SL_CENTRE_CELL, 1, to_mesh_order(r, m->s.theta, NULL), d);
+  for (int b = 0; b < m->n_b && !rc; ++b) {
+    if (r->b[b].type != TFP_WALL) continue;
+    static const char *const what[3] = {"wall_shear_stress_fluid", "wall_shear_stress_solid", "wall_slip"};
+    for (int k = 0; k < 3 && !rc; ++k) {
+      char name[300];
+      snprintf(name, sizeof name, "%s_%s", what[k], r->mesh->boundary_names[b]);
+      rc = sl_output_write_scalar(r->out, name, m->wall_stats[4 * b + k], d);
+    }
   }
   double inv = tfp_inventory(m, m->phi);
   if (!rc) rc = sl_output_write_scalar(r->out, "solids_inventory", inv, d);
@@ -243,6 +297,7 @@ static void plane_accept(void *user, double dt, int *steady) {
   sw = m->p, m->p = m->p_new, m->p_new = sw;
   sw = m->us, m->us = m->us_new, m->us_new = sw;
   sw = m->uf, m->uf = m->uf_new, m->uf_new = sw;
+  if (m->s.granular) memcpy(m->s.theta, m->s.theta_new, (size_t)m->nc * sizeof *m->s.theta);
   r->outflow += m->outflow_trial;
   r->substeps += m->substeps_trial, ++r->advances;
   m->accepted_substeps = m->last_substeps;
@@ -288,10 +343,11 @@ int sl_two_fluid_plane_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_
   if (!rc && (rc = sl_tensor_grid_from_mesh(r.mesh, &r.m.grid, d)))
     rc = sl_diag_prefix(d, rc, "[mesh] (the 2-D two_fluid model's staggered grid)");
   if (!rc) rc = tf_scene_physics(ini, reg, 2, &r.m.c, r.m.g, &r.steady_tol, d);
-  if (!rc) rc = sl_ini_get_real(ini, "solid", "viscosity", 0, 0.0, 0.0, 1e7, &r.m.mu_s, d);
   if (!rc) rc = boundaries(&r, d);
   r.m.b = r.b;
+  if (!rc) r.m.n_b = r.mesh->n_boundaries;
   if (!rc) rc = tfp_setup(&r.m, d);
+  if (!rc) rc = tfp_solids_bind(&r.m, ini, reg, d);
   if (!rc && !(r.cellbuf = calloc(2 * (size_t)r.m.nc, sizeof *r.cellbuf)))
     rc = sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
   if (!rc) rc = initial_state(&r, d);

@@ -18,27 +18,60 @@
 
 #include "core/mesh/tensor_grid.h"
 #include "core/models/two_fluid_impl.h"
+#include "core/plugin/point_eval.h"
 #include "core/solve/linsolve.h"
 
-enum { TFP_WALL = 0, TFP_SLIP, TFP_AXIS, TFP_INLET, TFP_OUTLET };
+enum { TFP_WALL = 0, TFP_SLIP, TFP_AXIS, TFP_INLET, TFP_OUTLET, TFP_PERIODIC };
 /* what a face's normal velocities are */
-enum { TFP_FACE_INTERIOR = 0, TFP_FACE_CLOSED, TFP_FACE_INLET, TFP_FACE_OUTLET };
+enum { TFP_FACE_INTERIOR = 0, TFP_FACE_CLOSED, TFP_FACE_INLET, TFP_FACE_OUTLET, TFP_FACE_IMAGE };
+/* TFP_FACE_IMAGE: along a periodic direction the last face of each row (i =
+ * nx, or j = ny) is the first one seen from the other end; it shares that
+ * face's unknowns, cells (lo, hi) and values, and carries no equation or
+ * flux of its own. */
+
+enum { TFP_SOLIDS_NO_SLIP = 0, TFP_SOLIDS_FREE_SLIP, TFP_SOLIDS_WALL_STRESS };
 
 typedef struct tfp_boundary {
   int type;
-  int solids_slip;   /* wall: the solids slip freely along it */
-  sl_expr *velocity; /* inlet: superficial fluid velocity entering, of (x, y, t, case) */
+  int solids;        /* wall: TFP_SOLIDS_* */
+  sl_expr *velocity; /* inlet: superficial fluid velocity entering; wall: its own speed along the side (+x along
+                        the bottom and top, +y along the left and right); of (x, y, t, case) (NULL: 0) */
   double pressure;   /* outlet */
 } tfp_boundary;
+
+/* The quantities the 2-D model offers its solids-stress closures, by input name. */
+enum { TFP_Q_PHI, TFP_Q_SLIP, TFP_Q_THETA, TFP_Q_RHO_F, TFP_Q_MU_F, TFP_Q_RHO_S, TFP_Q_D_P, TFP_Q_SPHERICITY,
+       TFP_Q_GRAVITY, TFP_Q_SLIP_WALL, TFP_Q_WALL_DISTANCE, TFP_Q_SHEAR_RATE, TFP_Q_DENSITY, TFP_Q_N };
+
+/* The solids phase's stress (two_fluid_plane_solids.c): its viscosity in the
+ * cells from [solid] viscosity, [closure.viscosity] and [closure.granular]
+ * (with the granular temperature theta in the cells), and the wall stress
+ * of [closure.wall_stress]. */
+typedef struct tfp_solids {
+  sl_closure *visc_c, *gran_c, *wall_c; /* NULL: not in the scene */
+  sl_point_closure visc, gran, wall;
+  int granular, algebraic, exchange, wall_function;
+  double mu_const;            /* [solid] viscosity */
+  double *qv[TFP_Q_N];        /* [nc] the constant quantities, per point */
+  double *mu, *gdot, *rho, *mum, *mu_k, *kap, *gam, *dgam, *Kc, *one; /* [nc]; kap, gam, dgam scratch */
+  double *theta, *theta_new;  /* [nc]: the accepted state, the iterate */
+  double *shear;              /* [(nx + 1)(ny + 1)]: du/dy + dv/dx of the solids at the grid's corners */
+  int any; /* the solids carry a stress (a viscosity at all) */
+} tfp_solids;
 
 typedef struct tfp_model {
   sl_tensor_grid grid;
   int nx, ny, nc, nfx, nf;
   int axi;
+  int periodic[2]; /* periodic along x, along y */
   double g[2];
-  double mu_s; /* [solid] viscosity: the solids stress is phi mu_s grad u_s */
+  tfp_solids s;
   tf_column c; /* the physics, the closures and the numerical keys (its column geometry is unused) */
-  const tfp_boundary *b; /* [n_boundaries] */
+  const tfp_boundary *b; /* [n_b] */
+  int n_b;
+  /* per boundary b, of the last converged step (walls): [4 b] the fluid's and [4 b + 1] the solids' mean shear
+     stress on it, [4 b + 2] the mean solids slip, [4 b + 3] the length (or area per radian) averaged over */
+  double *wall_stats;
   /* geometry */
   double *xc, *yc, *hx, *hy;      /* cell centres and sizes along x [nx], y [ny] */
   double *vol;                    /* [nc] (axisymmetric: r dr dz, without 2 pi) */
@@ -46,8 +79,11 @@ typedef struct tfp_model {
                                      the boundary) */
   int *lo, *hi;                   /* [nf] */
   int *ftype, *fbound;            /* [nf]: TFP_FACE_*, the boundary index of a boundary face (-1 inside) */
-  int *tan_noslip;                /* [2 nf]: per phase (fluid 0, solids 1), 1 when the boundary along which the
-                                     face's velocity runs holds it (no-slip), 0 free */
+  int *tan_noslip;                /* [4 nf]: per phase (fluid 0, solids 1) and end (minus 0, plus 1) of the face
+                                     across its family, 1 when a boundary there holds the phase (no-slip) */
+  int *end_wall;                  /* [2 nf]: per end, the wall (boundary index) along which the face runs, -1 none */
+  double *end_u;                  /* [2 nf]: that wall's speed along the face's direction */
+  double *end_us;                 /* [2 nf]: the solids velocity at that wall (its slip under a wall stress) */
   /* state: cells phi, p, P_s; faces the fluid and solids velocities (boundary faces hold their values) */
   double *phi, *p, *uf, *us;
   double *phi_new, *p_new, *uf_new, *us_new;
@@ -73,12 +109,23 @@ typedef struct tfp_model {
   char where[256]; /* where the last failure happened */
 } tfp_model;
 
+/* The neighbour of cell c along dir (0: x, 1: y) on its minus (side 0) or
+ * plus (side 1) side, wrapping along a periodic direction; -1 outside. */
+static inline int tfp_neighbour(const tfp_model *m, int c, int dir, int side) {
+  int i = c % m->nx, j = c / m->nx, n = dir == 0 ? m->nx : m->ny, k = (dir == 0 ? i : j) + (side ? 1 : -1);
+  if (k < 0 || k >= n) {
+    if (!m->periodic[dir]) return -1;
+    k = (k + n) % n;
+  }
+  return dir == 0 ? k + m->nx * j : i + m->nx * k;
+}
+
 /* The grid geometry, face types and unknown numbering from the grid and the
  * boundaries. 0 or SL_EFAILED (memory). */
 int tfp_setup(tfp_model *m, sl_diag *d);
 void tfp_free(tfp_model *m);
 
-/* The inlet faces' fluid velocities at t (with the inside cells' phi). */
+/* The inlet faces' fluid velocities at t (with the inside cells' phi), the walls' speeds. */
 int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d);
 
 /* One backward-Euler step from the state at t over dt into the *_new
@@ -89,6 +136,22 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d);
  * leaving through the boundary are added to *outflow. 0, or SL_EFAILED when
  * the sub-steps needed are too many (the caller retries smaller). */
 int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double *outflow, sl_diag *d);
+
+/* The solids stress closures of the scene bound, the keys read
+ * ([two_fluid] granular_temperature, interphase_dissipation); after
+ * tfp_setup. 0, SL_EBADINPUT or SL_EFAILED. */
+int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *d);
+void tfp_solids_free(tfp_solids *s);
+
+/* The solids viscosity of every cell at the iterate (us, phi, theta_new),
+ * with the algebraic theta first when so chosen. */
+int tfp_solids_viscosity(tfp_model *m, const double *us, const double *phi, sl_diag *d);
+
+/* The wall's resistance to the solids at face f's end `end` (a wall with
+ * solids = wall_stress), per unit wall area, as R0 + dR (u - u0) in the
+ * face velocity u near u0 = us[f]; mu the solids viscosity of the half cell
+ * next to the wall, h its width. Updates end_us. */
+int tfp_solids_wall(tfp_model *m, int f, int end, double mu, double h, double *R0, double *dR, sl_diag *d);
 
 /* The solids volume (per radian when axisymmetric) in the domain. */
 double tfp_inventory(const tfp_model *m, const double *phi);

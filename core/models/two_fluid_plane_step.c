@@ -2,14 +2,15 @@
  * (two_fluid_plane_impl.h). The equations are those of the 1-D column
  * (two_fluid.h) with the pressure kept as an unknown, per unit volume:
  *
- *   phi rho_s du_s/dt = -phi grad p - grad P_s + F + phi rho_s g + div(phi mu_s grad u_s)
+ *   phi rho_s du_s/dt = -phi grad p - grad P_s + F + phi rho_s g + div(mu_s grad u_s)
  *   eps rho_f du_f/dt = -eps grad p - F + eps rho_f g + div(eps mu_f grad u_f)
  *   div(phi u_s + eps u_f) = 0,      eps = 1 - phi,
  *   dphi/dt + div(phi u_s) = 0,
  *
  * F = K(phi, |s|) s the drag on the solids, s = u_f - u_s (Pringle 2001;
  * digest of seed 000, 2.1.6), in the Stokes regime (no convective terms,
- * as the column) and with the Laplacian form of the viscous stresses.
+ * as the column) and with the Laplacian form of the viscous stresses; mu_s
+ * the solids phase's viscosity (two_fluid_plane_solids.c).
  *
  * Each face carries the normal components of both momentum equations,
  * written with phi_f of the cell on its gravity side (the mean of its two
@@ -73,7 +74,9 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
   int **ia[] = {&m->lo, &m->hi, &m->ftype, &m->fbound, &m->us_row, &m->uf_row};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k)
     if (!(*ia[k] = calloc(nf, sizeof(int)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-  if (!(m->tan_noslip = calloc(4 * nf, sizeof(int)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  if (!(m->wall_stats = calloc(4 * (size_t)m->n_b, sizeof(double))) || !(m->tan_noslip = calloc(4 * nf, sizeof(int))) || !(m->end_wall = calloc(2 * nf, sizeof(int))) ||
+      !(m->end_u = calloc(2 * nf, sizeof(double))) || !(m->end_us = calloc(2 * nf, sizeof(double))))
+    return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
   for (int i = 0; i < nx; ++i) m->hx[i] = g->xf[i + 1] - g->xf[i], m->xc[i] = 0.5 * (g->xf[i] + g->xf[i + 1]);
   for (int j = 0; j < ny; ++j) m->hy[j] = g->yf[j + 1] - g->yf[j], m->yc[j] = 0.5 * (g->yf[j] + g->yf[j + 1]);
   for (int c = 0; c < m->nc; ++c) {
@@ -81,22 +84,29 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
     m->vol[c] = m->hx[i] * m->hy[j] * (m->axi ? m->xc[i] : 1.0);
   }
   for (int f = 0; f < m->nf; ++f) {
-    int side = -1, k = 0;
+    int side = -1, k = 0, image = 0;
     if (f < m->nfx) {
       int i = f % (nx + 1), j = f / (nx + 1);
       m->lo[f] = i > 0 ? i - 1 + nx * j : -1, m->hi[f] = i < nx ? i + nx * j : -1;
       m->area[f] = m->hy[j] * (m->axi ? g->xf[i] : 1.0);
       m->dist[f] = i == 0 ? 0.5 * m->hx[0] : i == nx ? 0.5 * m->hx[nx - 1] : m->xc[i] - m->xc[i - 1];
-      if (i == 0 || i == nx) side = i == 0 ? SL_SIDE_LEFT : SL_SIDE_RIGHT, k = j;
+      if (m->periodic[0] && (i == 0 || i == nx)) { /* between the last cell of the row and the first */
+        m->lo[f] = nx - 1 + nx * j, m->hi[f] = nx * j, m->dist[f] = 0.5 * (m->hx[0] + m->hx[nx - 1]);
+        image = i == nx;
+      } else if (i == 0 || i == nx) side = i == 0 ? SL_SIDE_LEFT : SL_SIDE_RIGHT, k = j;
     } else {
       int i = (f - m->nfx) % nx, j = (f - m->nfx) / nx;
       m->lo[f] = j > 0 ? i + nx * (j - 1) : -1, m->hi[f] = j < ny ? i + nx * j : -1;
       m->area[f] = m->hx[i] * (m->axi ? m->xc[i] : 1.0);
       m->dist[f] = j == 0 ? 0.5 * m->hy[0] : j == ny ? 0.5 * m->hy[ny - 1] : m->yc[j] - m->yc[j - 1];
-      if (j == 0 || j == ny) side = j == 0 ? SL_SIDE_BOTTOM : SL_SIDE_TOP, k = i;
+      if (m->periodic[1] && (j == 0 || j == ny)) {
+        m->lo[f] = i + nx * (ny - 1), m->hi[f] = i, m->dist[f] = 0.5 * (m->hy[0] + m->hy[ny - 1]);
+        image = j == ny;
+      } else if (j == 0 || j == ny) side = j == 0 ? SL_SIDE_BOTTOM : SL_SIDE_TOP, k = i;
     }
     m->fbound[f] = side >= 0 ? g->side_tag[side][k] : -1;
-    if (side < 0) m->ftype[f] = TFP_FACE_INTERIOR;
+    if (image) m->ftype[f] = TFP_FACE_IMAGE;
+    else if (side < 0) m->ftype[f] = TFP_FACE_INTERIOR;
     else if (m->area[f] == 0.0) m->ftype[f] = TFP_FACE_CLOSED; /* on the axis */
     else {
       int t = m->b[m->fbound[f]].type;
@@ -104,21 +114,26 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
     }
   }
   /* the tangential conditions: a face touching a side at one of its ends (x-faces: bottom, top; y-faces:
-     left, right) takes the side faces that meet there; no-slip when one of them holds the phase */
+     left, right) takes the side faces that meet there; no-slip when one of them holds the phase; a wall there
+     gives its speed and, for the solids, its stress */
+  for (int f = 0; f < 2 * m->nf; ++f) m->end_wall[f] = -1;
   for (int f = 0; f < m->nf; ++f) {
     int dir = face_dir(m, f), along = dir == 0 ? f % (nx + 1) : (f - m->nfx) / nx;
     int across = dir == 0 ? f / (nx + 1) : (f - m->nfx) % nx, n_along = dir == 0 ? nx : ny;
     int n_across = dir == 0 ? ny : nx;
+    if (m->periodic[1 - dir]) continue; /* no side across the face's family */
     for (int end = 0; end < 2; ++end) {
       if (across != (end == 0 ? 0 : n_across - 1)) continue;
       int side = dir == 0 ? (end == 0 ? SL_SIDE_BOTTOM : SL_SIDE_TOP) : (end == 0 ? SL_SIDE_LEFT : SL_SIDE_RIGHT);
       for (int s = along - 1; s <= along; ++s) {
         if (s < 0 || s >= n_along) continue;
-        const tfp_boundary *b = &m->b[g->side_tag[side][s]];
+        int tag = g->side_tag[side][s];
+        const tfp_boundary *b = &m->b[tag];
         int fluid = b->type == TFP_WALL || b->type == TFP_INLET;
-        int solids = (b->type == TFP_WALL && !b->solids_slip) || b->type == TFP_INLET;
+        int solids = (b->type == TFP_WALL && b->solids == TFP_SOLIDS_NO_SLIP) || b->type == TFP_INLET;
         m->tan_noslip[4 * f + 2 * 0 + end] |= fluid;
         m->tan_noslip[4 * f + 2 * 1 + end] |= solids;
+        if (b->type == TFP_WALL && m->end_wall[2 * f + end] < 0) m->end_wall[2 * f + end] = tag;
       }
     }
   }
@@ -126,6 +141,11 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
   for (int f = 0; f < m->nf; ++f) m->closed = m->closed && m->ftype[f] != TFP_FACE_OUTLET;
   int n = 0;
   for (int f = 0; f < m->nf; ++f) {
+    if (m->ftype[f] == TFP_FACE_IMAGE) { /* the first face of its row or column: already numbered */
+      int first = f < m->nfx ? f - nx : f - nx * ny;
+      m->us_row[f] = m->us_row[first], m->uf_row[f] = m->uf_row[first];
+      continue;
+    }
     int active = m->ftype[f] == TFP_FACE_INTERIOR || m->ftype[f] == TFP_FACE_OUTLET;
     m->us_row[f] = active ? n++ : -1;
     m->uf_row[f] = active ? n++ : -1;
@@ -138,13 +158,14 @@ void tfp_free(tfp_model *m) {
   double *all[] = {m->xc,  m->yc,  m->hx,     m->hy,     m->vol,    m->area,  m->dist,  m->phi,  m->p,
                    m->uf,  m->us,  m->phi_new, m->p_new, m->uf_new, m->us_new, m->phf, m->phg,  m->w,    m->K,
                    m->dK,  m->slip, m->sn,    m->ps,     m->dps,    m->flux,  m->alpha, m->inflow, m->x,
-                   m->rhs, m->tval};
+                   m->rhs, m->tval, m->end_u, m->end_us, m->wall_stats};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
-  int *ia[] = {m->lo, m->hi, m->ftype, m->fbound, m->us_row, m->uf_row, m->tan_noslip, m->trow, m->tcol, m->tpos, m->prow, m->pcol};
+  int *ia[] = {m->lo, m->hi, m->ftype, m->fbound, m->us_row, m->uf_row, m->tan_noslip, m->end_wall, m->trow, m->tcol, m->tpos, m->prow, m->pcol};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k) free(ia[k]);
   sl_csr_free(&m->A);
   sl_linsolve_destroy(m->ls);
   sl_tensor_grid_free(&m->grid);
+  tfp_solids_free(&m->s);
 }
 
 double tfp_inventory(const tfp_model *m, const double *phi) {
@@ -154,14 +175,30 @@ double tfp_inventory(const tfp_model *m, const double *phi) {
 }
 
 /* The inlet faces' superficial velocity (along +x or +y) is eps u_f with u_s
- * = 0; u_f takes eps of the inside cell. */
+ * = 0; u_f takes eps of the inside cell. The walls' own speeds at the ends
+ * of the faces that run along them. */
 int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
+  const double *xf = m->grid.xf, *yf = m->grid.yf;
   for (int f = 0; f < m->nf; ++f) {
+    int dir = face_dir(m, f);
+    for (int end = 0; end < 2; ++end) {
+      int b = m->end_wall[2 * f + end];
+      if (b < 0) continue;
+      double x = dir == 0 ? xf[f % (m->nx + 1)] : xf[end ? m->nx : 0];
+      double y = dir == 0 ? yf[end ? m->ny : 0] : yf[(f - m->nfx) / m->nx];
+      double v[4] = {x, y, t, m->c.case_index};
+      double U = m->b[b].velocity ? sl_expr_eval(m->b[b].velocity, v) : 0.0;
+      if (!isfinite(U))
+        return sl_diag_set(d, SL_EFAILED, "a wall's velocity is not a finite number (%g) at (%g, %g), t = %g", U, x,
+                           y, t);
+      m->end_u[2 * f + end] = U;
+      if (m->b[b].solids == TFP_SOLIDS_NO_SLIP) m->end_us[2 * f + end] = U;
+    }
     if (m->ftype[f] == TFP_FACE_CLOSED) m->uf[f] = m->us[f] = 0.0;
     if (m->ftype[f] != TFP_FACE_INLET) continue;
-    int dir = face_dir(m, f), inside = m->lo[f] >= 0 ? m->lo[f] : m->hi[f];
-    double x = dir == 0 ? m->grid.xf[f % (m->nx + 1)] : m->xc[(f - m->nfx) % m->nx];
-    double y = dir == 0 ? m->yc[f / (m->nx + 1)] : m->grid.yf[(f - m->nfx) / m->nx];
+    int inside = m->lo[f] >= 0 ? m->lo[f] : m->hi[f];
+    double x = dir == 0 ? xf[f % (m->nx + 1)] : m->xc[(f - m->nfx) % m->nx];
+    double y = dir == 0 ? m->yc[f / (m->nx + 1)] : yf[(f - m->nfx) / m->nx];
     double v[4] = {x, y, t, m->c.case_index};
     double U = sl_expr_eval(m->b[m->fbound[f]].velocity, v);
     if (!isfinite(U))
@@ -207,15 +244,17 @@ static double face_phi(const tfp_model *m, const double *phi, int f) {
   return fmax(v, PHI_FLOOR);
 }
 
-/* The phase's viscosity at a cell (phase 0 fluid: eps mu_f; 1 solids: phi mu_s). */
+/* The phase's viscosity at a cell (phase 0 fluid: eps mu_f; 1 solids: that of tfp_solids_viscosity). */
 static double phase_mu(const tfp_model *m, int phase, const double *phi, int c) {
-  return phase == 0 ? (1.0 - phi[c]) * m->c.mu_f : phi[c] * m->mu_s;
+  return phase == 0 ? (1.0 - phi[c]) * m->c.mu_f : m->s.mu[c];
 }
 
 /* -div(mu grad u) of the phase's normal velocity at face f, times the dual
  * volume (the Laplacian of the face-velocity grid, five points; the
- * axisymmetric hoop term mu u_r / r^2 for x-faces), added to row. */
-static int viscous(tfp_model *m, int phase, int f, int row, const double *phi) {
+ * axisymmetric hoop term mu u_r / r^2 for x-faces), added to row. Along a
+ * wall the phase sticks to the wall's speed, slips freely, or (solids) feels
+ * the wall closure's stress. */
+static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, sl_diag *d) {
   const int nx = m->nx, ny = m->ny, dir = face_dir(m, f);
   const int *rows = phase ? m->us_row : m->uf_row;
   const double *u = phase ? m->us : m->uf;
@@ -224,12 +263,13 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi) {
   if (dir == 0) i = f % (nx + 1), j = f / (nx + 1);
   else i = (f - m->nfx) % nx, j = (f - m->nfx) / nx;
   int rc = 0;
-  /* along the normal: through the cells lo and hi to the next face of the same family */
+  /* along the normal: through the cells lo and hi to their far faces of the same family */
   for (int side = 0; side < 2; ++side) {
     int c = side ? m->hi[f] : m->lo[f];
     if (c < 0) continue; /* an outlet: zero normal gradient */
-    int ci = c % nx, cj = c / nx;
-    int nb = dir == 0 ? (side ? f + 1 : f - 1) : (side ? f + nx : f - nx);
+    int ci = c % nx, cj = c / nx, cf[4];
+    cell_faces(m, c, cf);
+    int nb = cf[2 * dir + side];
     double across = dir == 0 ? m->hy[cj] * (m->axi ? m->xc[ci] : 1.0) : m->hx[ci] * (m->axi ? m->xc[ci] : 1.0);
     double h = dir == 0 ? m->hx[ci] : m->hy[cj];
     double k = phase_mu(m, phase, phi, c) * across / h;
@@ -239,8 +279,11 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi) {
   }
   /* across: to the faces of the same family in the neighbouring rows (x-faces) or columns (y-faces) */
   int n_across = dir == 0 ? ny : nx, a = dir == 0 ? j : i;
+  const double *hs = dir == 0 ? m->hy : m->hx;
   for (int end = 0; end < 2; ++end) {
     int to = end ? a + 1 : a - 1;
+    int wall = to < 0 || to >= n_across;
+    if (wall && m->periodic[1 - dir]) to = (to + n_across) % n_across, wall = 0;
     /* the corner's radius and the dual length of the face */
     double r_corner = dir == 0 ? xf[i] : xf[end ? i + 1 : i];
     double across = m->dist[f] * (m->axi ? r_corner : 1.0);
@@ -251,18 +294,30 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi) {
       int c = s ? m->hi[f] : m->lo[f];
       if (c < 0) continue;
       mu += phase_mu(m, phase, phi, c), ++nmu;
-      if (to >= 0 && to < n_across) mu += phase_mu(m, phase, phi, dir == 0 ? c + (end ? nx : -nx) : c + (end ? 1 : -1)), ++nmu;
+      int cn = tfp_neighbour(m, c, 1 - dir, end);
+      if (cn >= 0) mu += phase_mu(m, phase, phi, cn), ++nmu;
     }
     mu /= nmu;
-    if (to < 0 || to >= n_across) {
-      if (!m->tan_noslip[4 * f + 2 * phase + end]) continue; /* free slip: no stress */
-      double h = dir == 0 ? m->hy[j] : m->hx[i];
-      rc |= add(m, row, row, mu * across / (0.5 * h)); /* the wall at half a cell, velocity 0 */
-      continue;
+    if (wall) {
+      double h = hs[a];
+      int e = 2 * f + end;
+      if (m->tan_noslip[4 * f + 2 * phase + end]) { /* the wall at half a cell, moving at its speed */
+        double k = mu * across / (0.5 * h);
+        rc |= add(m, row, row, k);
+        m->rhs[row] += k * m->end_u[e];
+      } else if (phase == 1 && m->end_wall[e] >= 0 && m->b[m->end_wall[e]].solids == TFP_SOLIDS_WALL_STRESS) {
+        double R0, dR;
+        int wrc = tfp_solids_wall(m, f, end, mu, h, &R0, &dR, d);
+        if (wrc) return wrc;
+        rc |= add(m, row, row, across * dR);
+        m->rhs[row] += across * (dR * m->us_new[f] - R0);
+      }
+      continue; /* free slip: no stress */
     }
-    int nb = dir == 0 ? f + (end ? nx + 1 : -(nx + 1)) : f + (end ? 1 : -1);
-    double gap = dir == 0 ? m->yc[to] - m->yc[a] : m->xc[to] - m->xc[a];
-    double k = mu * across / fabs(gap);
+    int nb = dir == 0 ? i + (nx + 1) * to : m->nfx + to + nx * j;
+    const double *cs = dir == 0 ? m->yc : m->xc; /* the centres' distance, half cells across a periodic seam */
+    double gap = to == a + (end ? 1 : -1) ? fabs(cs[to] - cs[a]) : 0.5 * (hs[a] + hs[to]);
+    double k = mu * across / gap;
     rc |= add(m, row, row, k);
     if (rows[nb] >= 0) rc |= add(m, row, rows[nb], -k);
     else m->rhs[row] += k * u[nb];
@@ -274,7 +329,8 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi) {
     if (m->hi[f] >= 0) mu += phase_mu(m, phase, phi, m->hi[f]), ++nmu;
     rc |= add(m, row, row, mu / nmu * m->area[f] * m->dist[f] / (xf[i] * xf[i]));
   }
-  return rc;
+  if (rc) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  return 0;
 }
 
 /* Drag and solids pressure at the iterate: K, dK/d|s| and the normal slip at
@@ -327,7 +383,7 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
   memset(m->rhs, 0, (size_t)m->n_unknowns * sizeof *m->rhs);
   for (int f = 0; f < m->nf; ++f) {
     int rs = m->us_row[f], rf = m->uf_row[f];
-    if (rs < 0) continue;
+    if (rs < 0 || m->ftype[f] == TFP_FACE_IMAGE) continue;
     const int lo = m->lo[f], hi = m->hi[f], dir = face_dir(m, f);
     const double ph = m->phf[f], eps = 1.0 - ph, A = m->area[f], V = A * m->dist[f], gd = m->g[dir];
     const double K = m->K[f], s = m->sn[f];
@@ -413,8 +469,9 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
         m->rhs[rs] += coef * m->us_new[gface];
       }
     }
-    rc |= viscous(m, 0, f, rf, m->phi_new);
-    if (m->mu_s > 0.0) rc |= viscous(m, 1, f, rs, m->phi_new);
+    if (rc) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    if ((rc = viscous(m, 0, f, rf, m->phi_new, d))) return rc;
+    if (m->s.any && (rc = viscous(m, 1, f, rs, m->phi_new, d))) return rc;
   }
   /* continuity: the mixture's volume flux out of each cell; in a closed vessel cell 0 holds the datum p = 0 */
   for (int c = 0; c < m->nc; ++c) {
@@ -479,6 +536,42 @@ static int to_csr(tfp_model *m, sl_diag *d) {
   return 0;
 }
 
+/* The mean shear stress of each phase on every wall and the solids slip
+ * there, at the converged iterate: the stress the phase exerts on the wall
+ * along the wall's positive direction. */
+static int wall_stresses(tfp_model *m, sl_diag *d) {
+  memset(m->wall_stats, 0, 4 * (size_t)m->n_b * sizeof *m->wall_stats);
+  for (int f = 0; f < m->nf; ++f)
+    for (int end = 0; end < 2; ++end) {
+      int e = 2 * f + end, b = m->end_wall[e];
+      if (b < 0 || m->ftype[f] != TFP_FACE_INTERIOR) continue;
+      int dir = face_dir(m, f), a = dir == 0 ? f / (m->nx + 1) : (f - m->nfx) % m->nx;
+      double h = dir == 0 ? m->hy[a] : m->hx[a];
+      double r = m->axi ? (dir == 0 ? m->grid.xf[f % (m->nx + 1)] : m->grid.xf[end ? m->nx : 0]) : 1.0;
+      double len = m->dist[f] * r, U = m->end_u[e], muf = 0.0, mus = 0.0;
+      int n = 0;
+      for (int s = 0; s < 2; ++s) {
+        int c = s ? m->hi[f] : m->lo[f];
+        if (c >= 0) muf += (1.0 - m->phi_new[c]) * m->c.mu_f, mus += m->s.mu[c], ++n;
+      }
+      muf /= n, mus /= n;
+      double tf = muf * (m->uf_new[f] - U) / (0.5 * h), ts = 0.0, slip = 0.0;
+      if (m->b[b].solids == TFP_SOLIDS_NO_SLIP) ts = mus * (m->us_new[f] - U) / (0.5 * h);
+      else if (m->b[b].solids == TFP_SOLIDS_WALL_STRESS) {
+        double R0, dR;
+        int rc = tfp_solids_wall(m, f, end, mus, h, &R0, &dR, d);
+        if (rc) return rc;
+        ts = R0, slip = m->end_us[e] - U;
+      } else slip = m->us_new[f] - U;
+      m->wall_stats[4 * b] += len * tf, m->wall_stats[4 * b + 1] += len * ts;
+      m->wall_stats[4 * b + 2] += len * slip, m->wall_stats[4 * b + 3] += len;
+    }
+  for (int b = 0; b < m->n_b; ++b)
+    if (m->wall_stats[4 * b + 3] > 0.0)
+      for (int k = 0; k < 3; ++k) m->wall_stats[4 * b + k] /= m->wall_stats[4 * b + 3];
+  return 0;
+}
+
 /* ---- one step ------------------------------------------------------------------------ */
 
 int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
@@ -495,6 +588,7 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
     m->iterations_trial = it;
     m->phi_frozen = it > FREEZE_WEIGHT_AFTER;
     if ((rc = closures(m, it > FREEZE_PHI_AFTER ? m->phi : m->phi_new, m->phi_new, d))) return rc;
+    if ((rc = tfp_solids_viscosity(m, m->us_new, m->phi_new, d))) return rc;
     if ((rc = assemble(m, dt, d)) || (rc = to_csr(m, d))) return rc;
     if ((rc = sl_linsolve_solve(m->ls, &m->A, m->rhs, m->x, d))) return sl_diag_prefix(d, rc, "the coupled solve");
     change = 0.0, umax = 0.0;
@@ -511,6 +605,7 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
     if ((rc = tfp_transport(m, m->us_new, dt, m->phi_new, &out, d))) return rc;
     if (change <= m->c.tolerance * fmax(m->c.v_ref, umax)) {
       m->outflow_trial = out;
+      if ((rc = wall_stresses(m, d))) return rc;
       /* the inlet's u_f with the new phi of its cell */
       for (int f = 0; f < nf; ++f)
         if (m->ftype[f] == TFP_FACE_INLET) {

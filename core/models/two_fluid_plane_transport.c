@@ -22,6 +22,10 @@ static void transport_stage(tfp_model *m, const double *us, double *phi, double 
   for (int f = 0; f < m->nf; ++f) {
     int lo = m->lo[f], hi = m->hi[f];
     double q = m->area[f] * us[f];
+    if (m->ftype[f] == TFP_FACE_IMAGE) { /* a periodic seam's second copy: its first carries the flux */
+      F[f] = 0.0;
+      continue;
+    }
     /* nothing enters from outside (clear fluid at an outlet; held solids at an inlet) */
     F[f] = q > 0.0 ? (lo >= 0 ? q * phi[lo] : 0.0) : (hi >= 0 ? q * phi[hi] : 0.0);
     if (D > 0.0 && lo >= 0 && hi >= 0) F[f] -= D * m->area[f] * (phi[hi] - phi[lo]) / m->dist[f];
@@ -51,6 +55,7 @@ int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double
   for (int f = 0; f < m->nf; ++f) {
     int lo = m->lo[f], hi = m->hi[f];
     double q = m->area[f] * us[f];
+    if (m->ftype[f] == TFP_FACE_IMAGE) continue;
     double Df = m->c.diffusivity > 0.0 && lo >= 0 && hi >= 0 ? m->c.diffusivity * m->area[f] / m->dist[f] : 0.0;
     if (lo >= 0) rate[lo] += fmax(q, 0.0) + Df;
     if (hi >= 0) rate[hi] += fmax(-q, 0.0) + Df;

@@ -102,11 +102,19 @@ int tf_scene_physics(sl_ini *ini, const sl_registry *reg, int dim, tf_column *c,
     return rc;
   for (int s = 0; s < ini->n_sections; ++s) {
     const char *name = ini->sections[s].name;
-    if (strncmp(name, "closure.", 8) == 0 && strcmp(name, "closure.drag") != 0 &&
-        strcmp(name, "closure.solids_pressure") != 0)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the two_fluid model (motion = column) uses [closure.drag] "
-                                          "and [closure.solids_pressure] only", ini->sections[s].file,
-                         ini->sections[s].line, name);
+    if (strncmp(name, "closure.", 8) != 0 || strcmp(name, "closure.drag") == 0 ||
+        strcmp(name, "closure.solids_pressure") == 0)
+      continue;
+    /* the 2-D model's solids stress (two_fluid_plane_solids.c binds them) */
+    if (dim == 2 && (strcmp(name, "closure.viscosity") == 0 || strcmp(name, "closure.granular") == 0 ||
+                     strcmp(name, "closure.wall_stress") == 0))
+      continue;
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the two_fluid model (motion = column) uses %s",
+                       ini->sections[s].file, ini->sections[s].line, name,
+                       dim == 1 ? "[closure.drag] and [closure.solids_pressure] only (a solids stress needs a 2-D "
+                                  "scene or the shear layer, motion = shear)"
+                                : "[closure.drag], [closure.solids_pressure], [closure.viscosity], "
+                                  "[closure.granular] and [closure.wall_stress]");
   }
   /* the velocity scale of the convergence test: the Stokes velocity of one particle, or the through-flow */
   double d_eff = c->sphericity * c->d_p;

@@ -25,6 +25,7 @@
 
 #include "core/io/output.h"
 #include "core/models/two_fluid.h"
+#include "kinetic_reference.h"
 #include "scene_runner.h"
 #include "testing.h"
 
@@ -67,31 +68,6 @@ static int run_text(const char *name, const char *text, const char *const *sets,
   fclose(f);
   scene_request q = {.configs = ".", .scene = name, .sets = sets, .out = out, .restart = restart};
   return scene_run(&q, sl_two_fluid_run, NULL, d);
-}
-
-/* ---- Lun et al. (1984) at theta = 1, from their formulas (lun.c's comment) ---- */
-
-typedef struct kt_point {
-  double phi, rho_s, d, e, phi_max;
-} kt_point;
-
-static double g0_lun_savage(const kt_point *p) { return pow(1.0 - p->phi / p->phi_max, -2.5 * p->phi_max); }
-
-static double mu0_lun(const kt_point *p) {
-  double eta = 0.5 * (1.0 + p->e), g0 = g0_lun_savage(p), X = p->phi * g0;
-  return 5.0 * sqrt(PI) / 96.0 * p->rho_s * p->d *
-         ((1.0 + 1.6 * eta * X) * (1.0 + 1.6 * eta * (3.0 * eta - 2.0) * X) / (eta * (2.0 - eta) * g0) +
-          768.0 / (25.0 * PI) * eta * p->phi * X);
-}
-
-static double gamma0_lun(const kt_point *p) {
-  return 12.0 * (1.0 - p->e * p->e) * g0_lun_savage(p) * p->rho_s * p->phi * p->phi / (p->d * sqrt(PI));
-}
-
-/* Wen & Yu (1966) as written by Gidaspow (1994) at zero slip: the Stokes
- * limit of C_D = 24/Re (1 + 0.15 Re^0.687), Re = eps rho_f d s / mu. */
-static double k_wen_yu_zero_slip(double phi, double mu, double d) {
-  return 18.0 * mu * phi * pow(1.0 - phi, -2.65) / (d * d);
 }
 
 /* ---- ktgf_shear ------------------------------------------------------------------ */

@@ -1,0 +1,363 @@
+/* The solids phase's stress in the 2-D two-fluid model
+ * (two_fluid_plane_impl.h): its viscosity in the cells and the wall
+ * closure's stress along walls with solids = wall_stress.
+ *
+ * mu_s, the solids phase's viscosity (its stress mu_s grad u_s, as the
+ * fluid's is (1 - phi) mu_f grad u_f), is the sum, as in the shear layer
+ * (shear_layer.h), of
+ *   [solid] viscosity, a constant (default 0);
+ *   the part mu_m - (1 - phi) mu_f of a suspension viscosity mu_m of
+ *     [closure.viscosity] that the fluid's share leaves (0 where mu_m falls
+ *     below it), at the solids shear rate and the mixture density;
+ *   the kinetic theory's mu_s(phi, theta) of [closure.granular], with the
+ *     granular temperature theta of the cells from its algebraic balance
+ *     (`[two_fluid] granular_temperature = algebraic`):
+ *       mu_s(theta) gdot^2 = gamma(theta) + 3 K theta
+ *     (van Wachem et al. 2001; the drag's sink -3 K theta as in Gidaspow
+ *     1994, chapter 9; off with interphase_dissipation = false), a quadratic
+ *     in sqrt(theta) for a kinetic closure (mu_s ~ theta^1/2, gamma ~
+ *     theta^3/2, checked at set-up).
+ * gdot is the solids' shear rate sqrt(2 S':S'), S' the deviator of the
+ * strain rate: S_xx, S_yy (and S_thth = u_r / r axisymmetric) at the cell
+ * from its faces, S_xy from du/dy + dv/dx at the grid's corners (the mean of
+ * the squares of its four), the velocity at a wall that of the wall (no
+ * slip), the solids' own there (free slip: no shear) or their slip under the
+ * wall stress.
+ *
+ * The wall closure sets the tangential stress tau_w(slip) the wall exerts on
+ * the solids against their slip. A wall function (a closure with a
+ * wall_distance input: Bagnold, Bartosik) reads the slip of the face next
+ * to the wall, half a cell from it. Otherwise (Johnson & Jackson, Navier
+ * slip) the slip is that at the wall itself, found so that the half cell
+ * between face and wall carries the same stress: mu_s (u - u_w) / (h/2) =
+ * tau_w(u_w - U), by Newton; the face then feels R(u) = tau_w with dR/du =
+ * k tau' / (k + tau'), k = mu_s / (h/2). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/models/two_fluid_plane_impl.h"
+#include "core/plugin/closure_ini.h"
+
+static const char *const quantity_names[TFP_Q_N] = {"phi",        "slip",          "theta",      "rho_f",
+                                                    "mu_f",       "rho_s",         "d_p",        "sphericity",
+                                                    "gravity",    "slip_wall",     "wall_distance", "shear_rate",
+                                                    "density"};
+#define THETA_FLOOR 1e-12 /* m^2/s^2: the kinetic closures' lowest valid theta */
+
+void tfp_solids_free(tfp_solids *s) {
+  double *all[] = {s->mu, s->gdot, s->rho, s->mum, s->mu_k, s->kap, s->gam, s->dgam, s->Kc, s->one, s->theta,
+                   s->theta_new, s->shear};
+  for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
+  for (int k = 0; k < TFP_Q_N; ++k) free(s->qv[k]);
+  sl_closure_destroy(s->visc_c);
+  sl_closure_destroy(s->gran_c);
+  sl_closure_destroy(s->wall_c);
+  free(s->visc.buf), free(s->gran.buf), free(s->wall.buf);
+}
+
+/* Input arrays for the cells: the constants, then the given varying ones. */
+static void cell_values(tfp_solids *s, const double *v[TFP_Q_N], const double *phi, const double *theta) {
+  for (int k = 0; k < TFP_Q_N; ++k) v[k] = s->qv[k];
+  v[TFP_Q_PHI] = phi, v[TFP_Q_SHEAR_RATE] = s->gdot, v[TFP_Q_DENSITY] = s->rho;
+  if (theta) v[TFP_Q_THETA] = theta;
+}
+
+/* The kinetic scaling the algebraic theta relies on: mu_s ~ sqrt(theta),
+ * gamma ~ theta^1.5 at fixed phi. */
+static int check_kinetic_scaling(tfp_model *m, sl_ini *ini, sl_diag *d) {
+  tfp_solids *s = &m->s;
+  double th[2] = {1.0, 4.0}, ph[2], mu[2], g[2], one[TFP_Q_N];
+  ph[0] = ph[1] = fmin(0.5 * m->c.phi_max, 0.3);
+  const double *v[TFP_Q_N];
+  for (int k = 0; k < TFP_Q_N; ++k) one[k] = s->qv[k][0];
+  double pair[TFP_Q_N][2];
+  for (int k = 0; k < TFP_Q_N; ++k) pair[k][0] = pair[k][1] = one[k], v[k] = pair[k];
+  v[TFP_Q_PHI] = ph, v[TFP_Q_THETA] = th;
+  sl_point_request rq[2] = {{"mu_s", mu, NULL, NULL}, {"gamma", g, NULL, NULL}};
+  int rc = sl_point_eval(&s->gran, 2, v, rq, 2, d);
+  if (rc) return rc;
+  if (fabs(mu[1] / mu[0] - 2.0) > 1e-9 || fabs(g[1] / g[0] - 8.0) > 1e-9) {
+    const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", "granular_temperature");
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature = algebraic needs a kinetic closure "
+                                        "(mu_s ~ theta^0.5, gamma ~ theta^1.5); [closure.granular] is not one",
+                       e ? e->file : "", e ? e->line : 0);
+  }
+  return 0;
+}
+
+int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *d) {
+  tfp_solids *s = &m->s;
+  const size_t nc = (size_t)m->nc;
+  double **a[] = {&s->mu, &s->gdot, &s->rho, &s->mum, &s->mu_k, &s->kap, &s->gam, &s->dgam, &s->Kc, &s->one,
+                  &s->theta, &s->theta_new};
+  for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
+    if (!(*a[k] = calloc(nc, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  for (int k = 0; k < TFP_Q_N; ++k)
+    if (!(s->qv[k] = calloc(nc, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  if (!(s->shear = calloc((size_t)(m->nx + 1) * (size_t)(m->ny + 1), sizeof(double))))
+    return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  for (size_t c = 0; c < nc; ++c) {
+    s->qv[TFP_Q_RHO_F][c] = m->c.rho_f, s->qv[TFP_Q_MU_F][c] = m->c.mu_f, s->qv[TFP_Q_RHO_S][c] = m->c.rho_s;
+    s->qv[TFP_Q_D_P][c] = m->c.d_p, s->qv[TFP_Q_SPHERICITY][c] = m->c.sphericity;
+    s->qv[TFP_Q_GRAVITY][c] = fabs(m->c.g), s->one[c] = 1.0;
+  }
+  int rc = sl_ini_get_real(ini, "solid", "viscosity", 0, 0.0, 0.0, 1e7, &s->mu_const, d);
+  if (rc) return rc;
+  const char *model = "the 2-D two_fluid model";
+  if (sl_ini_find_section(ini, "closure.viscosity")) {
+    if ((rc = sl_closure_from_ini(reg, ini, "closure.viscosity", &s->visc_c, d))) return rc;
+    if ((rc = sl_point_bind(&s->visc, s->visc_c, quantity_names, TFP_Q_N, "closure.viscosity", model, d))) return rc;
+    if (!sl_point_has_output(&s->visc, "viscosity"))
+      return sl_diag_set(d, SL_EBADINPUT, "[closure.viscosity]: the closure gives no viscosity");
+  }
+  s->granular = sl_ini_find_section(ini, "closure.granular") != NULL;
+  const sl_ini_entry *gt = sl_ini_find(ini, "two_fluid", "granular_temperature");
+  if (!s->granular && gt)
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature: needs [closure.granular] (a "
+                                        "kinetic theory, e.g. model = lun)", gt->file, gt->line);
+  if (s->granular) {
+    if ((rc = sl_ini_get_choice(ini, "two_fluid", "granular_temperature", 0, 1, "transport|algebraic", &s->algebraic,
+                                d)))
+      return rc;
+    if (!s->algebraic)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature = transport: the 2-D model "
+                                          "solves the algebraic balance only (granular_temperature = algebraic); the "
+                                          "transported theta is in the shear layer (motion = shear)",
+                         gt->file, gt->line);
+    if ((rc = sl_ini_get_bool(ini, "two_fluid", "interphase_dissipation", 0, 1, &s->exchange, d))) return rc;
+    if ((rc = sl_closure_from_ini(reg, ini, "closure.granular", &s->gran_c, d))) return rc;
+    if ((rc = sl_point_bind(&s->gran, s->gran_c, quantity_names, TFP_Q_N, "closure.granular", model, d))) return rc;
+    static const char *const need[] = {"mu_s", "gamma"};
+    for (int k = 0; k < 2; ++k)
+      if (!sl_point_has_output(&s->gran, need[k]))
+        return sl_diag_set(d, SL_EBADINPUT, "[closure.granular]: the 2-D model needs mu_s and gamma of (phi, "
+                                            "theta); this closure gives no %s", need[k]);
+    if ((rc = check_kinetic_scaling(m, ini, d))) return rc;
+  } else {
+    const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", "interphase_dissipation");
+    if (e)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] interphase_dissipation: needs [closure.granular]",
+                         e->file, e->line);
+  }
+  int any_stress = 0;
+  for (int f = 0; f < 2 * m->nf; ++f)
+    any_stress |= m->end_wall[f] >= 0 && m->b[m->end_wall[f]].solids == TFP_SOLIDS_WALL_STRESS;
+  if (sl_ini_find_section(ini, "closure.wall_stress")) {
+    if ((rc = sl_closure_from_ini(reg, ini, "closure.wall_stress", &s->wall_c, d))) return rc;
+    if ((rc = sl_point_bind(&s->wall, s->wall_c, quantity_names, TFP_Q_N, "closure.wall_stress", model, d))) return rc;
+    if (!sl_point_has_output(&s->wall, "tau_w"))
+      return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: the closure gives no tau_w");
+    if (sl_point_has_input(&s->wall, "shear_rate"))
+      return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: the 2-D model gives a wall closure no shear_rate "
+                                          "(its slip_wall and wall_distance give the wall's shear rate)");
+    s->wall_function = sl_point_has_input(&s->wall, "wall_distance");
+    if (!any_stress)
+      return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: no wall uses it (set solids = wall_stress in a "
+                                          "[boundary.NAME] of type wall)");
+  } else if (any_stress) {
+    return sl_diag_set(d, SL_EBADINPUT, "solids = wall_stress needs [closure.wall_stress] (e.g. model = bagnold or "
+                                        "johnson_jackson)");
+  }
+  s->any = s->mu_const > 0.0 || s->visc_c || s->granular || any_stress;
+  for (size_t c = 0; c < nc; ++c) s->theta[c] = s->theta_new[c] = THETA_FLOOR;
+  return 0;
+}
+
+/* The solids velocity along the wall at face f's end: the wall's (no
+ * slip), their slip under a wall stress, or the face's own (free slip: no
+ * shear). */
+static double wall_solids(const tfp_model *m, int f, int end, double u_face) {
+  int e = 2 * f + end, b = m->end_wall[e];
+  if (m->tan_noslip[4 * f + 2 + end] || (b >= 0 && m->b[b].solids == TFP_SOLIDS_WALL_STRESS)) return m->end_us[e];
+  return u_face;
+}
+
+/* du/dy + dv/dx of the solids at every corner of the grid. */
+static void corner_shear(tfp_model *m, const double *us) {
+  const int nx = m->nx, ny = m->ny;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      double g = 0.0;
+      /* du/dy from the x-faces (i, j-1) and (i, j) */
+      {
+        int below = j - 1, above = j, fa, fb;
+        if (m->periodic[1]) below = (below + ny) % ny, above = above % ny;
+        double ua, ub, gap;
+        if (below >= 0 && above < ny) {
+          fa = i + (nx + 1) * above, fb = i + (nx + 1) * below;
+          ua = us[fa], ub = us[fb], gap = 0.5 * (m->hy[above] + m->hy[below]);
+        } else if (below < 0) { /* the bottom */
+          fa = i + (nx + 1) * above;
+          ua = us[fa], ub = wall_solids(m, fa, 0, ua);
+          gap = 0.5 * m->hy[above];
+        } else { /* the top */
+          fb = i + (nx + 1) * below;
+          ub = us[fb], ua = wall_solids(m, fb, 1, ub);
+          gap = 0.5 * m->hy[below];
+        }
+        g += (ua - ub) / gap;
+      }
+      /* dv/dx from the y-faces (i-1, j) and (i, j) */
+      {
+        int left = i - 1, right = i, fa, fb;
+        if (m->periodic[0]) left = (left + nx) % nx, right = right % nx;
+        double ua, ub, gap;
+        if (left >= 0 && right < nx) {
+          fa = m->nfx + right + nx * j, fb = m->nfx + left + nx * j;
+          ua = us[fa], ub = us[fb], gap = 0.5 * (m->hx[right] + m->hx[left]);
+        } else if (left < 0) {
+          fa = m->nfx + right + nx * j;
+          ua = us[fa], ub = wall_solids(m, fa, 0, ua);
+          gap = 0.5 * m->hx[right];
+        } else {
+          fb = m->nfx + left + nx * j;
+          ub = us[fb], ua = wall_solids(m, fb, 1, ub);
+          gap = 0.5 * m->hx[left];
+        }
+        g += (ua - ub) / gap;
+      }
+      m->s.shear[i + (nx + 1) * j] = g;
+    }
+}
+
+/* The solids shear rate of every cell, sqrt(2 S':S'). */
+static void shear_rate(tfp_model *m, const double *us) {
+  const int nx = m->nx;
+  corner_shear(m, us);
+  for (int c = 0; c < m->nc; ++c) {
+    int i = c % nx, j = c / nx, cf[4];
+    int fw = i + (nx + 1) * j, fs = m->nfx + i + nx * j;
+    cf[0] = fw, cf[1] = fw + 1, cf[2] = fs, cf[3] = fs + nx;
+    double sxx = (us[cf[1]] - us[cf[0]]) / m->hx[i], syy = (us[cf[3]] - us[cf[2]]) / m->hy[j];
+    double stt = m->axi ? 0.5 * (us[cf[0]] + us[cf[1]]) / m->xc[i] : 0.0;
+    if (m->axi) sxx = (m->grid.xf[i + 1] * us[cf[1]] - m->grid.xf[i] * us[cf[0]]) / (m->xc[i] * m->hx[i]) - stt;
+    double sxy2 = 0.0; /* the mean square of S_xy = (du/dy + dv/dx)/2 over the four corners */
+    for (int q = 0; q < 4; ++q) {
+      double g = m->s.shear[(i + (q & 1)) + (nx + 1) * (j + (q >> 1))];
+      sxy2 += 0.25 * 0.25 * g * g;
+    }
+    double tr = sxx + syy + stt;
+    double ss = sxx * sxx + syy * syy + stt * stt + 2.0 * sxy2 - tr * tr / 3.0;
+    m->s.gdot[c] = sqrt(fmax(2.0 * ss, 0.0));
+  }
+}
+
+/* The algebraic theta of every cell: mu_s0 gdot^2 sqrt(theta) = gamma0
+ * theta^1.5 + 3 K theta with mu_s = mu_s0 sqrt(theta), gamma = gamma0
+ * theta^1.5, K the mean of the cell's four faces. */
+static int theta_algebraic(tfp_model *m, const double *phi, sl_diag *d) {
+  tfp_solids *s = &m->s;
+  const double *v[TFP_Q_N];
+  cell_values(s, v, phi, s->one);
+  sl_point_request rq[2] = {{"mu_s", s->mu_k, NULL, NULL}, {"gamma", s->gam, NULL, NULL}};
+  int rc = sl_point_eval(&s->gran, m->nc, v, rq, 2, d);
+  if (rc) return sl_diag_prefix(d, rc, "[closure.granular]");
+  for (int c = 0; c < m->nc; ++c) {
+    int i = c % m->nx, j = c / m->nx, fw = i + (m->nx + 1) * j, fs = m->nfx + i + m->nx * j;
+    double K = 0.25 * (m->K[fw] + m->K[fw + 1] + m->K[fs] + m->K[fs + m->nx]);
+    double A = s->mu_k[c] * s->gdot[c] * s->gdot[c], B = s->gam[c], C = s->exchange ? 3.0 * K : 0.0, th;
+    s->kap[c] = 0.0;
+    if (B > 0.0) {
+      double root = sqrt(C * C + 4.0 * A * B), sq = (-C + root) / (2.0 * B);
+      th = sq * sq;
+      if (sq > 0.0) s->kap[c] = 2.0 * A / (sq * root); /* d ln sqrt(theta) / d ln gdot: 1 without the sink, to 2 */
+    } else th = THETA_FLOOR;
+    s->theta_new[c] = fmax(th, THETA_FLOOR);
+  }
+  return 0;
+}
+
+int tfp_solids_viscosity(tfp_model *m, const double *us, const double *phi, sl_diag *d) {
+  tfp_solids *s = &m->s;
+  int rc = 0;
+  if (!s->any) return 0;
+  shear_rate(m, us);
+  memcpy(s->dgam, s->mu, (size_t)m->nc * sizeof *s->mu); /* the last iterate's */
+  for (int c = 0; c < m->nc; ++c) {
+    s->rho[c] = (1.0 - phi[c]) * m->c.rho_f + phi[c] * m->c.rho_s;
+    s->mu[c] = s->mu_const;
+  }
+  if (s->visc_c) {
+    const double *v[TFP_Q_N];
+    cell_values(s, v, phi, s->theta_new);
+    sl_point_request rq = {"viscosity", s->mum, NULL, NULL};
+    if ((rc = sl_point_eval(&s->visc, m->nc, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.viscosity]");
+    for (int c = 0; c < m->nc; ++c) s->mu[c] += fmax(s->mum[c] - (1.0 - phi[c]) * m->c.mu_f, 0.0);
+  }
+  if (s->granular) {
+    if ((rc = theta_algebraic(m, phi, d))) return rc;
+    const double *v[TFP_Q_N];
+    cell_values(s, v, phi, s->theta_new);
+    sl_point_request rq = {"mu_s", s->mu_k, NULL, NULL};
+    if ((rc = sl_point_eval(&s->gran, m->nc, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
+    for (int c = 0; c < m->nc; ++c) {
+      /* mu_s grows with the shear rate as gdot^n (n = 1 to 2), so that lagged from the last iterate it would
+         overshoot (the stress mu gdot of a sheared layer: ln gdot -> -n ln gdot, divergent for n >= 1): the
+         new viscosity is taken at the geometric weight 1/(1 + n) against the last, the fixed point of a power
+         law in one iteration (Newton in ln gdot) */
+      double mu_new = s->mu[c] + s->mu_k[c], n = s->kap[c] * s->mu_k[c] / mu_new, prev = s->dgam[c];
+      s->mu[c] = prev > 0.0 && mu_new > 0.0 ? exp(log(prev) + (log(mu_new) - log(prev)) / (1.0 + n)) : mu_new;
+    }
+  }
+  for (int c = 0; c < m->nc; ++c)
+    if (!isfinite(s->mu[c]) || s->mu[c] < 0.0)
+      return sl_diag_set(d, SL_EFAILED, "the solids viscosity is %g in cell (%d, %d) (phi %g, shear rate %g 1/s)",
+                         s->mu[c], c % m->nx, c / m->nx, phi[c], s->gdot[c]);
+  return 0;
+}
+
+/* tau_w and d tau_w / d slip at one point. */
+static int wall_tau(tfp_model *m, int c, double phi, double slip, double dist, double *tau, double *dtau,
+                    sl_diag *d) {
+  tfp_solids *s = &m->s;
+  double one[TFP_Q_N];
+  const double *v[TFP_Q_N];
+  for (int k = 0; k < TFP_Q_N; ++k) one[k] = s->qv[k][0], v[k] = &one[k];
+  one[TFP_Q_PHI] = phi, one[TFP_Q_THETA] = fmax(s->theta_new[c], THETA_FLOOR), one[TFP_Q_SLIP_WALL] = slip;
+  one[TFP_Q_SLIP] = slip, one[TFP_Q_WALL_DISTANCE] = dist, one[TFP_Q_SHEAR_RATE] = s->gdot[c];
+  one[TFP_Q_DENSITY] = s->rho[c];
+  sl_point_request rq = {"tau_w", tau, dtau, "slip_wall"};
+  return sl_point_eval(&s->wall, 1, v, &rq, 1, d);
+}
+
+int tfp_solids_wall(tfp_model *m, int f, int end, double mu, double h, double *R0, double *dR, sl_diag *d) {
+  int e = 2 * f + end, c = m->lo[f] >= 0 ? m->lo[f] : m->hi[f];
+  double U = m->end_u[e], u = m->us_new[f], phi = m->phf[f], tau, dtau;
+  int rc;
+  if (m->s.wall_function || mu <= 0.0) { /* the slip of the face, half a cell from the wall */
+    double sl = u - U, sg = sl > 0.0 ? 1.0 : sl < 0.0 ? -1.0 : 0.0;
+    if ((rc = wall_tau(m, c, phi, fabs(sl), 0.5 * h, &tau, &dtau, d))) goto failed;
+    *R0 = tau * sg, *dR = fmax(dtau, 0.0);
+    m->end_us[e] = u;
+    return 0;
+  }
+  /* the slip at the wall: k (u - u_w) = tau_w(u_w - U) sign, by Newton from the last one */
+  double k = mu / (0.5 * h), uw = m->end_us[e];
+  if (!isfinite(uw) || (uw - U) * (u - U) < 0.0 || fabs(uw - U) > fabs(u - U)) uw = U + 0.5 * (u - U);
+  for (int it = 0; it < 50; ++it) {
+    double sl = uw - U, sg = sl > 0.0 ? 1.0 : sl < 0.0 ? -1.0 : 0.0;
+    if ((rc = wall_tau(m, c, phi, fabs(sl), 0.5 * h, &tau, &dtau, d))) goto failed;
+    double g = k * (u - uw) - tau * sg, dg = -k - fmax(dtau, 0.0);
+    double next = uw - g / dg;
+    /* between the wall's speed and the face's: the stress has the slip's sign and is below k |u - U| */
+    double lo = fmin(U, u), hi = fmax(U, u);
+    next = fmin(fmax(next, lo), hi);
+    double change = fabs(next - uw);
+    uw = next;
+    if (change <= 1e-14 * fmax(fabs(u - U), 1e-300)) break;
+  }
+  {
+    double sl = uw - U, sg = sl > 0.0 ? 1.0 : sl < 0.0 ? -1.0 : 0.0;
+    if ((rc = wall_tau(m, c, phi, fabs(sl), 0.5 * h, &tau, &dtau, d))) goto failed;
+    m->end_us[e] = uw;
+    *R0 = tau * sg;
+    dtau = fmax(dtau, 0.0);
+    *dR = k * dtau / (k + dtau);
+  }
+  return 0;
+failed:
+  return sl_diag_prefix(d, rc, "[closure.wall_stress] at (%g, %g)",
+                        f < m->nfx ? m->grid.xf[f % (m->nx + 1)] : m->xc[(f - m->nfx) % m->nx],
+                        f < m->nfx ? m->yc[f / (m->nx + 1)] : m->grid.yf[(f - m->nfx) / m->nx]);
+}
