@@ -52,10 +52,15 @@ typedef struct tfp_solids {
   sl_point_closure visc, gran, wall;
   int granular, algebraic, exchange, wall_function;
   double mu_const;            /* [solid] viscosity */
-  double *qv[TFP_Q_N];        /* [nc] the constant quantities, per point */
-  double *mu, *gdot, *rho, *mum, *mu_k, *kap, *gam, *dgam, *Kc, *one; /* [nc]; kap, gam, dgam scratch */
-  double *theta, *theta_new;  /* [nc]: the accepted state, the iterate */
-  double *shear;              /* [(nx + 1)(ny + 1)]: du/dy + dv/dx of the solids at the grid's corners */
+  double *qv[TFP_Q_N];        /* the constant quantities, per point (corners: more than cells) */
+  /* cells [nc]: the viscosity, its tangent mu_s + gdot dmu_s/dgdot (Newton in the shear rate), the shear rate,
+     the mixture density, the drag coefficient (the mean of the faces), the normal part 2 S':S' - 2 S_xy^2 of
+     gdot^2; theta of the accepted state and of the iterate */
+  double *mu, *mu_t, *gdot, *rho, *Kc, *normal, *theta, *theta_new;
+  /* the grid's corners [(nx + 1)(ny + 1)], where the shear stresses act: du/dy + dv/dx of the solids, the
+     means of the cells around, the shear rate, theta, the viscosity and its tangent */
+  double *shear, *phi_k, *rho_k, *K_k, *gdot_k, *theta_k, *mu_k_corner, *mu_tk;
+  double *mum, *mu_k, *kap, *gam, *one; /* per-point scratch (corners' size) */
   int any; /* the solids carry a stress (a viscosity at all) */
 } tfp_solids;
 
@@ -98,6 +103,7 @@ typedef struct tfp_model {
   int32_t *trow, *tcol, *tpos;
   int32_t *prow, *pcol; /* the triplet sequence the pattern was built from */
   int phi_frozen;       /* this iteration takes the face phi from the step's start */
+  int sink_frozen;      /* this iteration keeps the drag coefficient of the granular sink 3 K theta */
   double *tval;
   sl_csr A;
   int pattern_built;

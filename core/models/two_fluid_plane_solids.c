@@ -17,6 +17,16 @@
  *     1994, chapter 9; off with interphase_dissipation = false), a quadratic
  *     in sqrt(theta) for a kinetic closure (mu_s ~ theta^1/2, gamma ~
  *     theta^3/2, checked at set-up).
+ * mu_s is evaluated in the cells (for the normal stresses, and theta's
+ * output) and at the grid's corners, where the shear stresses act, at the
+ * corner's own shear rate (phi, the density and the normal strain the
+ * means of its cells). The iteration's matrix takes the tangent viscosity
+ * mu_s + gdot dmu_s/dgdot (Newton in the shear rate; the lagged mu_s alone
+ * diverges once mu_s grows as gdot or faster, as the kinetic one does), the
+ * right-hand side the difference at the iterate; with the corner's own
+ * shear rate the tangent of a shear stress is exact (from the cells' mean
+ * of four corners it mismatched the stress's dependence on its neighbours
+ * and Newton fell to a linear rate of 0.45-0.6).
  * gdot is the solids' shear rate sqrt(2 S':S'), S' the deviator of the
  * strain rate: S_xx, S_yy (and S_thth = u_r / r axisymmetric) at the cell
  * from its faces, S_xy from du/dy + dv/dx at the grid's corners (the mean of
@@ -46,21 +56,15 @@ static const char *const quantity_names[TFP_Q_N] = {"phi",        "slip",       
 #define THETA_FLOOR 1e-12 /* m^2/s^2: the kinetic closures' lowest valid theta */
 
 void tfp_solids_free(tfp_solids *s) {
-  double *all[] = {s->mu, s->gdot, s->rho, s->mum, s->mu_k, s->kap, s->gam, s->dgam, s->Kc, s->one, s->theta,
-                   s->theta_new, s->shear};
+  double *all[] = {s->mu,    s->mu_t,  s->gdot, s->rho,    s->Kc,      s->theta,       s->theta_new,
+                   s->normal, s->mum,  s->mu_k, s->kap,    s->gam,     s->one,         s->shear,
+                   s->phi_k, s->rho_k, s->K_k,  s->gdot_k, s->theta_k, s->mu_k_corner, s->mu_tk};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   for (int k = 0; k < TFP_Q_N; ++k) free(s->qv[k]);
   sl_closure_destroy(s->visc_c);
   sl_closure_destroy(s->gran_c);
   sl_closure_destroy(s->wall_c);
   free(s->visc.buf), free(s->gran.buf), free(s->wall.buf);
-}
-
-/* Input arrays for the cells: the constants, then the given varying ones. */
-static void cell_values(tfp_solids *s, const double *v[TFP_Q_N], const double *phi, const double *theta) {
-  for (int k = 0; k < TFP_Q_N; ++k) v[k] = s->qv[k];
-  v[TFP_Q_PHI] = phi, v[TFP_Q_SHEAR_RATE] = s->gdot, v[TFP_Q_DENSITY] = s->rho;
-  if (theta) v[TFP_Q_THETA] = theta;
 }
 
 /* The kinetic scaling the algebraic theta relies on: mu_s ~ sqrt(theta),
@@ -88,16 +92,15 @@ static int check_kinetic_scaling(tfp_model *m, sl_ini *ini, sl_diag *d) {
 
 int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *d) {
   tfp_solids *s = &m->s;
-  const size_t nc = (size_t)m->nc;
-  double **a[] = {&s->mu, &s->gdot, &s->rho, &s->mum, &s->mu_k, &s->kap, &s->gam, &s->dgam, &s->Kc, &s->one,
-                  &s->theta, &s->theta_new};
+  const size_t nc = (size_t)m->nc, nk = (size_t)(m->nx + 1) * (size_t)(m->ny + 1); /* nk > nc */
+  double **a[] = {&s->mu,    &s->mu_t,  &s->gdot,  &s->rho,   &s->Kc,    &s->theta,   &s->theta_new,
+                  &s->normal, &s->mum,  &s->mu_k,  &s->kap,   &s->gam,   &s->one,     &s->shear,
+                  &s->phi_k, &s->rho_k, &s->K_k,   &s->gdot_k, &s->theta_k, &s->mu_k_corner, &s->mu_tk};
   for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
-    if (!(*a[k] = calloc(nc, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    if (!(*a[k] = calloc(nk, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
   for (int k = 0; k < TFP_Q_N; ++k)
-    if (!(s->qv[k] = calloc(nc, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-  if (!(s->shear = calloc((size_t)(m->nx + 1) * (size_t)(m->ny + 1), sizeof(double))))
-    return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-  for (size_t c = 0; c < nc; ++c) {
+    if (!(s->qv[k] = calloc(nk, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  for (size_t c = 0; c < nk; ++c) {
     s->qv[TFP_Q_RHO_F][c] = m->c.rho_f, s->qv[TFP_Q_MU_F][c] = m->c.mu_f, s->qv[TFP_Q_RHO_S][c] = m->c.rho_s;
     s->qv[TFP_Q_D_P][c] = m->c.d_p, s->qv[TFP_Q_SPHERICITY][c] = m->c.sphericity;
     s->qv[TFP_Q_GRAVITY][c] = fabs(m->c.g), s->one[c] = 1.0;
@@ -161,6 +164,7 @@ int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *
   }
   s->any = s->mu_const > 0.0 || s->visc_c || s->granular || any_stress;
   for (size_t c = 0; c < nc; ++c) s->theta[c] = s->theta_new[c] = THETA_FLOOR;
+  for (size_t k = 0; k < nk; ++k) s->theta_k[k] = THETA_FLOOR;
   return 0;
 }
 
@@ -238,72 +242,102 @@ static void shear_rate(tfp_model *m, const double *us) {
       sxy2 += 0.25 * 0.25 * g * g;
     }
     double tr = sxx + syy + stt;
-    double ss = sxx * sxx + syy * syy + stt * stt + 2.0 * sxy2 - tr * tr / 3.0;
-    m->s.gdot[c] = sqrt(fmax(2.0 * ss, 0.0));
+    m->s.normal[c] = 2.0 * (sxx * sxx + syy * syy + stt * stt - tr * tr / 3.0);
+    m->s.gdot[c] = sqrt(fmax(m->s.normal[c] + 4.0 * sxy2, 0.0));
   }
 }
 
-/* The algebraic theta of every cell: mu_s0 gdot^2 sqrt(theta) = gamma0
- * theta^1.5 + 3 K theta with mu_s = mu_s0 sqrt(theta), gamma = gamma0
- * theta^1.5, K the mean of the cell's four faces. */
-static int theta_algebraic(tfp_model *m, const double *phi, sl_diag *d) {
+/* The cells around corner (i, j) of the grid (wrapping along a periodic
+ * direction), their number. */
+static int corner_cells(const tfp_model *m, int i, int j, int cells[4]) {
+  int n = 0;
+  for (int dj = -1; dj <= 0; ++dj)
+    for (int di = -1; di <= 0; ++di) {
+      int ci = i + di, cj = j + dj;
+      if (m->periodic[0]) ci = (ci + m->nx) % m->nx;
+      if (m->periodic[1]) cj = (cj + m->ny) % m->ny;
+      if (ci >= 0 && ci < m->nx && cj >= 0 && cj < m->ny) cells[n++] = ci + m->nx * cj;
+    }
+  return n;
+}
+
+/* mu_s and its tangent mu_s + gdot dmu_s/dgdot at N points from phi, the
+ * shear rate, the mixture density and the drag coefficient there, with the
+ * algebraic theta of the kinetic theory: mu_s0 gdot^2 sqrt(theta) = gamma0
+ * theta^1.5 + 3 K theta (mu_s = mu_s0 sqrt(theta), gamma = gamma0
+ * theta^1.5). The viscosity closure's own shear dependence is lagged (a
+ * shear-thinning law converges so). */
+static int solids_mu_points(tfp_model *m, int N, const double *phi, const double *gdot, const double *rho,
+                            const double *K, double *theta, double *mu, double *mu_t, sl_diag *d) {
   tfp_solids *s = &m->s;
   const double *v[TFP_Q_N];
-  cell_values(s, v, phi, s->one);
-  sl_point_request rq[2] = {{"mu_s", s->mu_k, NULL, NULL}, {"gamma", s->gam, NULL, NULL}};
-  int rc = sl_point_eval(&s->gran, m->nc, v, rq, 2, d);
-  if (rc) return sl_diag_prefix(d, rc, "[closure.granular]");
-  for (int c = 0; c < m->nc; ++c) {
-    int i = c % m->nx, j = c / m->nx, fw = i + (m->nx + 1) * j, fs = m->nfx + i + m->nx * j;
-    double K = 0.25 * (m->K[fw] + m->K[fw + 1] + m->K[fs] + m->K[fs + m->nx]);
-    double A = s->mu_k[c] * s->gdot[c] * s->gdot[c], B = s->gam[c], C = s->exchange ? 3.0 * K : 0.0, th;
-    s->kap[c] = 0.0;
-    if (B > 0.0) {
-      double root = sqrt(C * C + 4.0 * A * B), sq = (-C + root) / (2.0 * B);
-      th = sq * sq;
-      if (sq > 0.0) s->kap[c] = 2.0 * A / (sq * root); /* d ln sqrt(theta) / d ln gdot: 1 without the sink, to 2 */
-    } else th = THETA_FLOOR;
-    s->theta_new[c] = fmax(th, THETA_FLOOR);
+  int rc;
+  for (int k = 0; k < TFP_Q_N; ++k) v[k] = s->qv[k];
+  v[TFP_Q_PHI] = phi, v[TFP_Q_SHEAR_RATE] = gdot, v[TFP_Q_DENSITY] = rho, v[TFP_Q_THETA] = theta;
+  for (int q = 0; q < N; ++q) mu[q] = s->mu_const;
+  if (s->granular) {
+    v[TFP_Q_THETA] = s->one;
+    sl_point_request rq[2] = {{"mu_s", s->mu_k, NULL, NULL}, {"gamma", s->gam, NULL, NULL}};
+    if ((rc = sl_point_eval(&s->gran, N, v, rq, 2, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
+    v[TFP_Q_THETA] = theta;
+    for (int q = 0; q < N; ++q) {
+      double A = s->mu_k[q] * gdot[q] * gdot[q], B = s->gam[q], C = s->exchange ? 3.0 * K[q] : 0.0, sq = 0.0;
+      s->kap[q] = 0.0; /* d ln sqrt(theta) / d ln gdot: 1 without the sink, up to 2 with it */
+      if (B > 0.0) {
+        double root = sqrt(C * C + 4.0 * A * B);
+        sq = (-C + root) / (2.0 * B);
+        if (sq > 0.0) s->kap[q] = 2.0 * A / (sq * root);
+      }
+      theta[q] = fmax(sq * sq, THETA_FLOOR);
+      s->mu_k[q] *= sqrt(theta[q]);
+    }
+  }
+  if (s->visc_c) {
+    sl_point_request rq = {"viscosity", s->mum, NULL, NULL};
+    if ((rc = sl_point_eval(&s->visc, N, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.viscosity]");
+    for (int q = 0; q < N; ++q) mu[q] += fmax(s->mum[q] - (1.0 - phi[q]) * m->c.mu_f, 0.0);
+  }
+  /* the stress mu_s(gdot) gdot grows as mu_s + gdot dmu_s/dgdot, the kinetic part as (1 + n) mu_k */
+  for (int q = 0; q < N; ++q) {
+    double mk = s->granular ? s->mu_k[q] : 0.0;
+    mu_t[q] = mu[q] + (1.0 + s->kap[q]) * mk;
+    mu[q] += mk;
+    if (!isfinite(mu[q]) || mu[q] < 0.0)
+      return sl_diag_set(d, SL_EFAILED, "the solids viscosity is %g (phi %g, shear rate %g 1/s)", mu[q], phi[q],
+                         gdot[q]);
   }
   return 0;
 }
 
 int tfp_solids_viscosity(tfp_model *m, const double *us, const double *phi, sl_diag *d) {
   tfp_solids *s = &m->s;
-  int rc = 0;
   if (!s->any) return 0;
+  const int nx = m->nx, ny = m->ny, nk = (nx + 1) * (ny + 1);
   shear_rate(m, us);
-  memcpy(s->dgam, s->mu, (size_t)m->nc * sizeof *s->mu); /* the last iterate's */
   for (int c = 0; c < m->nc; ++c) {
+    int i = c % nx, j = c / nx, fw = i + (nx + 1) * j, fs = m->nfx + i + nx * j;
     s->rho[c] = (1.0 - phi[c]) * m->c.rho_f + phi[c] * m->c.rho_s;
-    s->mu[c] = s->mu_const;
+    /* the sink's K, once the iteration is close: a drag law of |slip| (Wen & Yu's Re^0.687) is not smooth at
+       the zero slip of a sheared suspension, and its round-off kept the iteration from converging */
+    if (!m->sink_frozen) s->Kc[c] = 0.25 * (m->K[fw] + m->K[fw + 1] + m->K[fs] + m->K[fs + nx]);
   }
-  if (s->visc_c) {
-    const double *v[TFP_Q_N];
-    cell_values(s, v, phi, s->theta_new);
-    sl_point_request rq = {"viscosity", s->mum, NULL, NULL};
-    if ((rc = sl_point_eval(&s->visc, m->nc, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.viscosity]");
-    for (int c = 0; c < m->nc; ++c) s->mu[c] += fmax(s->mum[c] - (1.0 - phi[c]) * m->c.mu_f, 0.0);
-  }
-  if (s->granular) {
-    if ((rc = theta_algebraic(m, phi, d))) return rc;
-    const double *v[TFP_Q_N];
-    cell_values(s, v, phi, s->theta_new);
-    sl_point_request rq = {"mu_s", s->mu_k, NULL, NULL};
-    if ((rc = sl_point_eval(&s->gran, m->nc, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
-    for (int c = 0; c < m->nc; ++c) {
-      /* mu_s grows with the shear rate as gdot^n (n = 1 to 2), so that lagged from the last iterate it would
-         overshoot (the stress mu gdot of a sheared layer: ln gdot -> -n ln gdot, divergent for n >= 1): the
-         new viscosity is taken at the geometric weight 1/(1 + n) against the last, the fixed point of a power
-         law in one iteration (Newton in ln gdot) */
-      double mu_new = s->mu[c] + s->mu_k[c], n = s->kap[c] * s->mu_k[c] / mu_new, prev = s->dgam[c];
-      s->mu[c] = prev > 0.0 && mu_new > 0.0 ? exp(log(prev) + (log(mu_new) - log(prev)) / (1.0 + n)) : mu_new;
+  /* the corners, where the shear stresses act: the means of their cells, their own shear */
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      int k = i + (nx + 1) * j, cells[4], n = corner_cells(m, i, j, cells);
+      double ph = 0.0, rho = 0.0, K = 0.0, nrm = 0.0, sh = s->shear[k];
+      for (int q = 0; q < n; ++q) {
+        int c = cells[q];
+        ph += phi[c] / n, rho += s->rho[c] / n, K += s->Kc[c] / n, nrm += s->normal[c] / n;
+      }
+      s->phi_k[k] = ph, s->rho_k[k] = rho, s->gdot_k[k] = sqrt(fmax(sh * sh + nrm, 0.0));
+      if (!m->sink_frozen) s->K_k[k] = K;
     }
-  }
-  for (int c = 0; c < m->nc; ++c)
-    if (!isfinite(s->mu[c]) || s->mu[c] < 0.0)
-      return sl_diag_set(d, SL_EFAILED, "the solids viscosity is %g in cell (%d, %d) (phi %g, shear rate %g 1/s)",
-                         s->mu[c], c % m->nx, c / m->nx, phi[c], s->gdot[c]);
+  int rc = solids_mu_points(m, m->nc, phi, s->gdot, s->rho, s->Kc, s->theta_new, s->mu, s->mu_t, d);
+  if (rc) return sl_diag_prefix(d, rc, "cells");
+  if ((rc = solids_mu_points(m, nk, s->phi_k, s->gdot_k, s->rho_k, s->K_k, s->theta_k, s->mu_k_corner,
+                             s->mu_tk, d)))
+    return sl_diag_prefix(d, rc, "grid corners");
   return 0;
 }
 

@@ -244,9 +244,23 @@ static double face_phi(const tfp_model *m, const double *phi, int f) {
   return fmax(v, PHI_FLOOR);
 }
 
-/* The phase's viscosity at a cell (phase 0 fluid: eps mu_f; 1 solids: that of tfp_solids_viscosity). */
+/* The phase's viscosity at a cell (phase 0 fluid: eps mu_f; 1 solids: that of tfp_solids_viscosity), and its
+ * tangent (the solids' stress grows faster than mu_s with the shear rate). */
 static double phase_mu(const tfp_model *m, int phase, const double *phi, int c) {
   return phase == 0 ? (1.0 - phi[c]) * m->c.mu_f : m->s.mu[c];
+}
+static double phase_mu_t(const tfp_model *m, int phase, const double *phi, int c) {
+  return phase == 0 ? (1.0 - phi[c]) * m->c.mu_f : m->s.mu_t[c];
+}
+
+/* A viscous flux k (u_row - u_nb) into row, Newton-linearised with the tangent kt at the iterate un (u_nb
+ * given when nb has no row: `fixed`). */
+static int flux_term(tfp_model *m, int row, int nb_row, double fixed, double k, double kt, double u0, double unb0) {
+  int rc = add(m, row, row, kt);
+  if (nb_row >= 0) rc |= add(m, row, nb_row, -kt);
+  else m->rhs[row] += kt * fixed, unb0 = fixed;
+  m->rhs[row] += (kt - k) * (u0 - unb0);
+  return rc;
 }
 
 /* -div(mu grad u) of the phase's normal velocity at face f, times the dual
@@ -257,7 +271,7 @@ static double phase_mu(const tfp_model *m, int phase, const double *phi, int c) 
 static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, sl_diag *d) {
   const int nx = m->nx, ny = m->ny, dir = face_dir(m, f);
   const int *rows = phase ? m->us_row : m->uf_row;
-  const double *u = phase ? m->us : m->uf;
+  const double *u = phase ? m->us : m->uf, *un = phase ? m->us_new : m->uf_new;
   const double *xf = m->grid.xf;
   int i, j;
   if (dir == 0) i = f % (nx + 1), j = f / (nx + 1);
@@ -272,10 +286,8 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, s
     int nb = cf[2 * dir + side];
     double across = dir == 0 ? m->hy[cj] * (m->axi ? m->xc[ci] : 1.0) : m->hx[ci] * (m->axi ? m->xc[ci] : 1.0);
     double h = dir == 0 ? m->hx[ci] : m->hy[cj];
-    double k = phase_mu(m, phase, phi, c) * across / h;
-    rc |= add(m, row, row, k);
-    if (rows[nb] >= 0) rc |= add(m, row, rows[nb], -k);
-    else m->rhs[row] += k * u[nb];
+    double k = phase_mu(m, phase, phi, c) * across / h, kt = phase_mu_t(m, phase, phi, c) * across / h;
+    rc |= flux_term(m, row, rows[nb], u[nb], k, kt, un[f], un[nb]);
   }
   /* across: to the faces of the same family in the neighbouring rows (x-faces) or columns (y-faces) */
   int n_across = dir == 0 ? ny : nx, a = dir == 0 ? j : i;
@@ -288,23 +300,26 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, s
     double r_corner = dir == 0 ? xf[i] : xf[end ? i + 1 : i];
     double across = m->dist[f] * (m->axi ? r_corner : 1.0);
     /* the viscosity at the corner: the mean of the cells around it */
-    double mu = 0.0;
-    int nmu = 0;
-    for (int s = 0; s < 2; ++s) {
-      int c = s ? m->hi[f] : m->lo[f];
-      if (c < 0) continue;
-      mu += phase_mu(m, phase, phi, c), ++nmu;
-      int cn = tfp_neighbour(m, c, 1 - dir, end);
-      if (cn >= 0) mu += phase_mu(m, phase, phi, cn), ++nmu;
+    double mu = 0.0, mut = 0.0;
+    if (phase == 1) { /* the solids' viscosity at the corner's own shear rate */
+      int k = dir == 0 ? i + (nx + 1) * (j + end) : (i + end) + (nx + 1) * j;
+      mu = m->s.mu_k_corner[k], mut = m->s.mu_tk[k];
+    } else { /* the fluid's: the mean of the cells around the corner */
+      int nmu = 0;
+      for (int s = 0; s < 2; ++s) {
+        int c = s ? m->hi[f] : m->lo[f];
+        if (c < 0) continue;
+        mu += phase_mu(m, phase, phi, c), ++nmu;
+        int cn = tfp_neighbour(m, c, 1 - dir, end);
+        if (cn >= 0) mu += phase_mu(m, phase, phi, cn), ++nmu;
+      }
+      mu /= nmu, mut = mu;
     }
-    mu /= nmu;
     if (wall) {
       double h = hs[a];
       int e = 2 * f + end;
       if (m->tan_noslip[4 * f + 2 * phase + end]) { /* the wall at half a cell, moving at its speed */
-        double k = mu * across / (0.5 * h);
-        rc |= add(m, row, row, k);
-        m->rhs[row] += k * m->end_u[e];
+        rc |= flux_term(m, row, -1, m->end_u[e], mu * across / (0.5 * h), mut * across / (0.5 * h), un[f], 0.0);
       } else if (phase == 1 && m->end_wall[e] >= 0 && m->b[m->end_wall[e]].solids == TFP_SOLIDS_WALL_STRESS) {
         double R0, dR;
         int wrc = tfp_solids_wall(m, f, end, mu, h, &R0, &dR, d);
@@ -317,10 +332,7 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, s
     int nb = dir == 0 ? i + (nx + 1) * to : m->nfx + to + nx * j;
     const double *cs = dir == 0 ? m->yc : m->xc; /* the centres' distance, half cells across a periodic seam */
     double gap = to == a + (end ? 1 : -1) ? fabs(cs[to] - cs[a]) : 0.5 * (hs[a] + hs[to]);
-    double k = mu * across / gap;
-    rc |= add(m, row, row, k);
-    if (rows[nb] >= 0) rc |= add(m, row, rows[nb], -k);
-    else m->rhs[row] += k * u[nb];
+    rc |= flux_term(m, row, rows[nb], u[nb], mu * across / gap, mut * across / gap, un[f], un[nb]);
   }
   if (dir == 0 && m->axi) { /* mu u_r / r^2 over the dual volume */
     double mu = 0.0;
@@ -587,6 +599,7 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
   for (int it = 1; it <= m->c.max_iterations; ++it) {
     m->iterations_trial = it;
     m->phi_frozen = it > FREEZE_WEIGHT_AFTER;
+    m->sink_frozen = it > FREEZE_PHI_AFTER;
     if ((rc = closures(m, it > FREEZE_PHI_AFTER ? m->phi : m->phi_new, m->phi_new, d))) return rc;
     if ((rc = tfp_solids_viscosity(m, m->us_new, m->phi_new, d))) return rc;
     if ((rc = assemble(m, dt, d)) || (rc = to_csr(m, d))) return rc;
