@@ -217,7 +217,7 @@ static int open_output(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
   rc = sl_output_write_mesh(r->out, 1, m->n_vertices, r->node, m->n_cells, 2, cells, "Polyline", d);
   free(cells);
   if (rc) return rc;
-  return tf_write_provenance(r->out, r->ini, o, &r->c, r->params, d);
+  return tf_write_provenance(r->out, r->ini, o, &r->c, NULL, NULL, 0, r->params, d);
 }
 
 /* The height (along -g) where phi first reaches `level` coming down from the

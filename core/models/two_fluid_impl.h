@@ -106,10 +106,14 @@ int tf_checkpoint_write(sl_output *out, const tf_state *s, double t, double dt, 
  * naming the array and the model otherwise) and its bookkeeping. */
 int tf_checkpoint_restore(const char *path, const char *model, tf_state *s, double *t, double *dt, long *step,
                           sl_diag *d);
-/* The scene and the drag and solids-pressure closures (params: their
- * parameter text, kept alive until the output closes). */
+/* The scene, the drag and solids-pressure closures and up to
+ * TF_MAX_EXTRA_CLOSURES more with their roles (NULL entries skipped);
+ * params[2 + n_extra]: their parameter text, kept alive until the output
+ * closes. */
+enum { TF_MAX_EXTRA_CLOSURES = 3 };
 int tf_write_provenance(sl_output *out, const sl_ini *ini, const sl_ns_run_opts *o, const tf_column *c,
-                        char params[2][1024], sl_diag *d);
+                        const sl_closure *const *extra, const char *const *extra_roles, int n_extra,
+                        char params[][1024], sl_diag *d);
 
 /* K and dK/dslip at n faces (phi, slip given); p_s and dp_s/dphi at n cells. */
 int tf_closure_eval(tf_closure *b, int n, const double *phi, const double *slip, double *value, double *dvalue,

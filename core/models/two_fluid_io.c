@@ -43,14 +43,16 @@ int tf_checkpoint_restore(const char *path, const char *model, tf_state *s, doub
 }
 
 int tf_write_provenance(sl_output *out, const sl_ini *ini, const sl_ns_run_opts *o, const tf_column *c,
-                        char params[2][1024], sl_diag *d) {
+                        const sl_closure *const *extra, const char *const *extra_roles, int n_extra,
+                        char params[][1024], sl_diag *d) {
   char *ini_text = sl_ini_to_string(ini);
-  sl_provenance_closure pc[2];
+  sl_provenance_closure pc[2 + TF_MAX_EXTRA_CLOSURES];
   sl_provenance pv = {.sluice_version = o->sluice_version ? o->sluice_version : "unknown", .ini_text = ini_text,
                       .closures = pc};
-  const sl_closure *cl[2] = {c->drag.c, c->ps.c};
-  const char *roles[2] = {"closure.drag", "closure.solids_pressure"};
-  for (int k = 0; k < 2; ++k)
+  const sl_closure *cl[2 + TF_MAX_EXTRA_CLOSURES] = {c->drag.c, c->ps.c};
+  const char *roles[2 + TF_MAX_EXTRA_CLOSURES] = {"closure.drag", "closure.solids_pressure"};
+  for (int k = 0; k < n_extra && k < TF_MAX_EXTRA_CLOSURES; ++k) cl[2 + k] = extra[k], roles[2 + k] = extra_roles[k];
+  for (int k = 0; k < 2 + n_extra && k < 2 + TF_MAX_EXTRA_CLOSURES; ++k)
     if (cl[k]) pc[pv.n_closures++] = sl_scene_closure_provenance(cl[k], roles[k], params[k], sizeof params[k]);
   int rc = sl_output_write_provenance(out, &pv, d);
   free(ini_text);

@@ -27,7 +27,8 @@
  * solids_inventory, solids_conservation_error and, per wall NAME,
  * wall_shear_stress_fluid_NAME and wall_shear_stress_solid_NAME (the mean
  * stress each phase exerts on the wall along its positive direction) and
- * wall_slip_NAME (the mean solids slip there). */
+ * wall_slip_NAME (the mean solids slip there), and bagnold_number_NAME
+ * where the wall closure gives it. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -57,7 +58,7 @@ typedef struct tfp_run {
   sl_output *out;
   int fields;
   double *cellbuf; /* [2 n_cells] output scratch in mesh cell order */
-  char params[2][1024];
+  char params[5][1024];
 } tfp_run;
 
 static double cpu_now(void) { return (double)clock() / CLOCKS_PER_SEC; }
@@ -200,7 +201,9 @@ static int open_output(tfp_run *r, const sl_ns_run_opts *o, sl_diag *d) {
   rc = sl_output_write_mesh(r->out, 2, m->n_vertices, m->xy, m->n_cells, m->nv_per_cell, cells, "Quadrilateral", d);
   free(cells);
   if (rc) return rc;
-  return tf_write_provenance(r->out, r->ini, o, &r->m.c, r->params, d);
+  const sl_closure *extra[3] = {r->m.s.visc_c, r->m.s.gran_c, r->m.s.wall_c};
+  static const char *const roles[3] = {"closure.viscosity", "closure.granular", "closure.wall_stress"};
+  return tf_write_provenance(r->out, r->ini, o, &r->m.c, extra, roles, 3, r->params, d);
 }
 
 /* A grid-ordered cell field into mesh cell order (components 1 or 2). */
@@ -242,11 +245,14 @@ static int write_state(tfp_run *r, double t, sl_diag *d) {
     rc = sl_output_write_field(r->out, "theta", SL_CENTRE_CELL, 1, to_mesh_order(r, m->s.theta, NULL), d);
   for (int b = 0; b < m->n_b && !rc; ++b) {
     if (r->b[b].type != TFP_WALL) continue;
-    static const char *const what[3] = {"wall_shear_stress_fluid", "wall_shear_stress_solid", "wall_slip"};
-    for (int k = 0; k < 3 && !rc; ++k) {
+    static const char *const what[4] = {"wall_shear_stress_fluid", "wall_shear_stress_solid", "wall_slip",
+                                        "bagnold_number"};
+    for (int k = 0; k < 4 && !rc; ++k) {
+      if (k == 3 && !(r->b[b].solids == TFP_SOLIDS_WALL_STRESS && sl_point_has_output(&m->s.wall, "bagnold_number")))
+        continue;
       char name[300];
       snprintf(name, sizeof name, "%s_%s", what[k], r->mesh->boundary_names[b]);
-      rc = sl_output_write_scalar(r->out, name, m->wall_stats[4 * b + k], d);
+      rc = sl_output_write_scalar(r->out, name, m->wall_stats[5 * b + k], d);
     }
   }
   double inv = tfp_inventory(m, m->phi);

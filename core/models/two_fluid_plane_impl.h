@@ -61,6 +61,7 @@ typedef struct tfp_solids {
      means of the cells around, the shear rate, theta, the viscosity and its tangent */
   double *shear, *phi_k, *rho_k, *K_k, *gdot_k, *theta_k, *mu_k_corner, *mu_tk;
   double *mum, *mu_k, *kap, *gam, *one; /* per-point scratch (corners' size) */
+  double last_bagnold; /* the Bagnold number of the last wall-closure call (NAN: the closure gives none) */
   int any; /* the solids carry a stress (a viscosity at all) */
 } tfp_solids;
 
@@ -74,8 +75,9 @@ typedef struct tfp_model {
   tf_column c; /* the physics, the closures and the numerical keys (its column geometry is unused) */
   const tfp_boundary *b; /* [n_b] */
   int n_b;
-  /* per boundary b, of the last converged step (walls): [4 b] the fluid's and [4 b + 1] the solids' mean shear
-     stress on it, [4 b + 2] the mean solids slip, [4 b + 3] the length (or area per radian) averaged over */
+  /* per boundary b, of the last converged step (walls): [5 b] the fluid's and [5 b + 1] the solids' mean shear
+     stress on it, [5 b + 2] the mean solids slip, [5 b + 3] the mean Bagnold number of the wall closure (NAN:
+     none), [5 b + 4] the length (or area per radian) averaged over */
   double *wall_stats;
   /* geometry */
   double *xc, *yc, *hx, *hy;      /* cell centres and sizes along x [nx], y [ny] */

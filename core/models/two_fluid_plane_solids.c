@@ -351,8 +351,9 @@ static int wall_tau(tfp_model *m, int c, double phi, double slip, double dist, d
   one[TFP_Q_PHI] = phi, one[TFP_Q_THETA] = fmax(s->theta_new[c], THETA_FLOOR), one[TFP_Q_SLIP_WALL] = slip;
   one[TFP_Q_SLIP] = slip, one[TFP_Q_WALL_DISTANCE] = dist, one[TFP_Q_SHEAR_RATE] = s->gdot[c];
   one[TFP_Q_DENSITY] = s->rho[c];
-  sl_point_request rq = {"tau_w", tau, dtau, "slip_wall"};
-  return sl_point_eval(&s->wall, 1, v, &rq, 1, d);
+  sl_point_request rq[2] = {{"tau_w", tau, dtau, "slip_wall"}, {"bagnold_number", &s->last_bagnold, NULL, NULL}};
+  s->last_bagnold = NAN;
+  return sl_point_eval(&s->wall, 1, v, rq, sl_point_has_output(&s->wall, "bagnold_number") ? 2 : 1, d);
 }
 
 int tfp_solids_wall(tfp_model *m, int f, int end, double mu, double h, double *R0, double *dR, sl_diag *d) {

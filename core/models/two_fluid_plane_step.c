@@ -74,7 +74,7 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
   int **ia[] = {&m->lo, &m->hi, &m->ftype, &m->fbound, &m->us_row, &m->uf_row};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k)
     if (!(*ia[k] = calloc(nf, sizeof(int)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-  if (!(m->wall_stats = calloc(4 * (size_t)m->n_b, sizeof(double))) || !(m->tan_noslip = calloc(4 * nf, sizeof(int))) || !(m->end_wall = calloc(2 * nf, sizeof(int))) ||
+  if (!(m->wall_stats = calloc(5 * (size_t)m->n_b, sizeof(double))) || !(m->tan_noslip = calloc(4 * nf, sizeof(int))) || !(m->end_wall = calloc(2 * nf, sizeof(int))) ||
       !(m->end_u = calloc(2 * nf, sizeof(double))) || !(m->end_us = calloc(2 * nf, sizeof(double))))
     return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
   for (int i = 0; i < nx; ++i) m->hx[i] = g->xf[i + 1] - g->xf[i], m->xc[i] = 0.5 * (g->xf[i] + g->xf[i + 1]);
@@ -552,7 +552,8 @@ static int to_csr(tfp_model *m, sl_diag *d) {
  * there, at the converged iterate: the stress the phase exerts on the wall
  * along the wall's positive direction. */
 static int wall_stresses(tfp_model *m, sl_diag *d) {
-  memset(m->wall_stats, 0, 4 * (size_t)m->n_b * sizeof *m->wall_stats);
+  double *w = m->wall_stats;
+  memset(w, 0, 5 * (size_t)m->n_b * sizeof *w);
   for (int f = 0; f < m->nf; ++f)
     for (int end = 0; end < 2; ++end) {
       int e = 2 * f + end, b = m->end_wall[e];
@@ -560,7 +561,7 @@ static int wall_stresses(tfp_model *m, sl_diag *d) {
       int dir = face_dir(m, f), a = dir == 0 ? f / (m->nx + 1) : (f - m->nfx) % m->nx;
       double h = dir == 0 ? m->hy[a] : m->hx[a];
       double r = m->axi ? (dir == 0 ? m->grid.xf[f % (m->nx + 1)] : m->grid.xf[end ? m->nx : 0]) : 1.0;
-      double len = m->dist[f] * r, U = m->end_u[e], muf = 0.0, mus = 0.0;
+      double len = m->dist[f] * r, U = m->end_u[e], muf = 0.0, mus = 0.0, bn = NAN;
       int n = 0;
       for (int s = 0; s < 2; ++s) {
         int c = s ? m->hi[f] : m->lo[f];
@@ -573,14 +574,14 @@ static int wall_stresses(tfp_model *m, sl_diag *d) {
         double R0, dR;
         int rc = tfp_solids_wall(m, f, end, mus, h, &R0, &dR, d);
         if (rc) return rc;
-        ts = R0, slip = m->end_us[e] - U;
+        ts = R0, slip = m->end_us[e] - U, bn = m->s.last_bagnold;
       } else slip = m->us_new[f] - U;
-      m->wall_stats[4 * b] += len * tf, m->wall_stats[4 * b + 1] += len * ts;
-      m->wall_stats[4 * b + 2] += len * slip, m->wall_stats[4 * b + 3] += len;
+      w[5 * b] += len * tf, w[5 * b + 1] += len * ts, w[5 * b + 2] += len * slip, w[5 * b + 3] += len * bn;
+      w[5 * b + 4] += len;
     }
   for (int b = 0; b < m->n_b; ++b)
-    if (m->wall_stats[4 * b + 3] > 0.0)
-      for (int k = 0; k < 3; ++k) m->wall_stats[4 * b + k] /= m->wall_stats[4 * b + 3];
+    if (w[5 * b + 4] > 0.0)
+      for (int k = 0; k < 4; ++k) w[5 * b + k] /= w[5 * b + 4];
   return 0;
 }
 
