@@ -336,13 +336,6 @@ int sl_two_fluid_plane_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_
   const char *linear = "klu";
   int rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, d);
   r.m.axi = geometry == 2;
-  static const char *const refused[] = {"order", "limiter"};
-  for (size_t k = 0; k < 2 && !rc; ++k) {
-    const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", refused[k]);
-    if (e)
-      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: the 2-D two_fluid model moves phi by first-order "
-                                        "upwind only (remove the key)", e->file, e->line, e->key);
-  }
   if (!rc) rc = sl_scene_mesh(ini, &r.mesh, d);
   if (!rc && r.mesh->dim != 2)
     rc = sl_diag_set(d, SL_EBADINPUT, "[scene] geometry = %s needs a 2-D mesh", r.m.axi ? "axisymmetric" : "planar");

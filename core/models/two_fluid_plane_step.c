@@ -24,9 +24,10 @@
  *         2001 eq 4.31, Newton on the transported phi);
  *   then one sparse solve for (u_s, u_f, p) and phi^(k+1) = T(phi^n, u_s),
  * until the velocities change by less than tolerance x the velocity scale.
- * T is the column's bounded transport (two_fluid_plane_transport.c): upwind face fluxes,
- * sub-stepped within the CFL limit, what enters a cell scaled so that it
- * cannot pass phi_max. */
+ * T is the column's bounded transport (two_fluid_plane_transport.c): upwind
+ * or MUSCL face fluxes, sub-stepped within the CFL limit, what enters a cell
+ * scaled so that it cannot pass phi_max (the Newton terms' w stays the
+ * first-order upwind phi: it only shapes the Jacobian). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,11 +1,15 @@
 /* The solids-fraction transport of the 2-D two-fluid model on the staggered
  * grid (two_fluid_plane_impl.h): T(phi^n, u_s) of one step, the column's
- * bounded scheme (two_fluid_step.c) in two dimensions. First-order upwind
- * face fluxes of the face solids velocities, plus the particle diffusivity
- * -D grad phi; sub-stepped within the CFL limit; what enters a cell scaled so
- * that it cannot pass phi_max. Solids never enter from outside (clear fluid
- * at an outlet, held solids at an inlet). */
+ * bounded scheme (two_fluid_step.c) in two dimensions. Face fluxes of the
+ * face solids velocities with the upwind cell's phi (order 1) or its limited
+ * linear reconstruction along the face's normal (order 2: MUSCL, van Leer
+ * 1979, in Heun's two stages), plus the particle diffusivity -D grad phi;
+ * sub-stepped within the CFL limit (halved at order 2); what enters a cell
+ * scaled so that it cannot pass phi_max. Solids never enter from outside
+ * (clear fluid at an outlet, held solids at an inlet). The image faces of a
+ * periodic row carry nothing: the row's first face carries its flux. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -13,25 +17,91 @@
 
 static double cpu_now(void) { return (double)clock() / CLOCKS_PER_SEC; }
 
-/* One forward-Euler stage over ds of the upwind solids fluxes of us (plus
- * the particle diffusivity), with the packing limiter. */
-static void transport_stage(tfp_model *m, const double *us, double *phi, double ds, double *out) {
-  const double phi_max = m->c.phi_max, D = m->c.diffusivity;
-  double *F = m->flux, *alpha = m->alpha, *in = m->inflow;
-  memset(in, 0, (size_t)m->nc * sizeof *in);
-  for (int f = 0; f < m->nf; ++f) {
-    int lo = m->lo[f], hi = m->hi[f];
-    double q = m->area[f] * us[f];
-    if (m->ftype[f] == TFP_FACE_IMAGE) { /* a periodic seam's second copy: its first carries the flux */
-      F[f] = 0.0;
+/* Order 2's work for one call of tfp_transport: the geometry of the
+ * reconstruction once, then per stage the limited half increments. */
+typedef struct muscl {
+  int *nb;      /* [4 nc]: cell c's neighbour along dir on side s at 4 c + 2 dir + s (c itself outside) */
+  double *g;    /* [6 nc]: its factors gl, gr, gc along dir at 6 c + 3 dir (0 next to the boundary) */
+  double *half; /* [2 nc]: half the limited increment across cell c along dir at 2 c + dir */
+  double *stage; /* [nc]: Heun's intermediate stage */
+} muscl;
+
+/* The limited linear reconstruction phi_c + s (x - x_c) of a cell of size h
+ * puts phi_c -+ delta on its two faces along x, delta = s h / 2. With the
+ * differences dl = phi_c - phi_l, dr = phi_r - phi_c to the neighbours at
+ * their actual centre distances (h + h_l) / 2, (h + h_r) / 2:
+ *   minmod (Roe 1986): s = minmod(dl / dm, dr / dp), delta = minmod(gl dl, gr dr);
+ *   monotonised central (van Leer 1977): s = minmod(central difference, 2 dl / h, 2 dr / h),
+ *     delta = minmod(gc (dl + dr), dl, dr);
+ * gl = h / (h + h_l), gr = h / (h + h_r), gc = h / (2 h + h_l + h_r) (Sweby 1984; LeVeque 2002, Finite Volume
+ * Methods, section 6.12). On a uniform grid that is the column's slope (two_fluid_step.c); on a graded one the
+ * MC bound 2 dphi / h with the cell's own size keeps each face value between the cell's phi and its neighbour's
+ * (the uniform grid's 2 dphi / dx would not), hence within [0, phi_max] and [0, 2 phi_c]. Next to the boundary
+ * the slope is 0 (first order there, and nothing enters through a wall), as in the column's end cells. */
+static int muscl_setup(const tfp_model *m, muscl *w) {
+  const int nc = m->nc;
+  w->nb = malloc(4 * (size_t)nc * sizeof *w->nb);
+  w->g = malloc(9 * (size_t)nc * sizeof *w->g);
+  if (!w->nb || !w->g) return -1;
+  w->half = w->g + 6 * nc, w->stage = w->g + 8 * nc;
+  for (int c = 0; c < nc; ++c)
+    for (int dir = 0; dir < 2; ++dir) {
+      int l = tfp_neighbour(m, c, dir, 0), r = tfp_neighbour(m, c, dir, 1);
+      const double *size = dir == 0 ? m->hx : m->hy;
+      int at = dir == 0 ? c % m->nx : c / m->nx; /* the cell's index along dir */
+      double *g = w->g + 6 * c + 3 * dir;
+      w->nb[4 * c + 2 * dir] = l < 0 ? c : l, w->nb[4 * c + 2 * dir + 1] = r < 0 ? c : r;
+      if (l < 0 || r < 0) {
+        g[0] = g[1] = g[2] = 0.0;
+        continue;
+      }
+      double h = size[at], hl = size[dir == 0 ? l % m->nx : l / m->nx], hr = size[dir == 0 ? r % m->nx : r / m->nx];
+      g[0] = h / (h + hl), g[1] = h / (h + hr), g[2] = h / (2.0 * h + hl + hr);
+    }
+  return 0;
+}
+
+static void muscl_free(muscl *w) { free(w->nb), free(w->g); }
+
+/* The limited half increments of phi in every cell along x and y. */
+static void muscl_increments(const tfp_model *m, const muscl *w, const double *phi) {
+  const int mc = m->c.limiter == TF_LIMITER_MC;
+  for (int k = 0; k < 2 * m->nc; ++k) { /* k = 2 c + dir */
+    int c = k >> 1;
+    const double *g = w->g + 3 * k;
+    double dl = phi[c] - phi[w->nb[2 * k]], dr = phi[w->nb[2 * k + 1]] - phi[c], a;
+    if (dl * dr <= 0.0) { /* an extremum, or the boundary (its neighbour is the cell itself) */
+      w->half[k] = 0.0;
       continue;
     }
+    if (mc) a = fmin(fabs(g[2] * (dl + dr)), fmin(fabs(dl), fabs(dr)));
+    else a = fmin(fabs(g[0] * dl), fabs(g[1] * dr));
+    w->half[k] = copysign(a, dl);
+  }
+}
+
+/* One forward-Euler stage over ds from phi into next (next may be phi) of
+ * the upwind solids fluxes of us (order 2: with the reconstruction of w)
+ * plus the particle diffusivity, with the packing limiter. */
+static void transport_stage(tfp_model *m, const double *us, const double *phi, double ds, double *next,
+                            const muscl *w, double *out) {
+  const double phi_max = m->c.phi_max, D = m->c.diffusivity;
+  double *F = m->flux, *alpha = m->alpha, *in = m->inflow;
+  if (w) muscl_increments(m, w, phi);
+  memset(in, 0, (size_t)m->nc * sizeof *in);
+  for (int f = 0; f < m->nf; ++f) {
+    F[f] = 0.0;
+    if (m->ftype[f] == TFP_FACE_IMAGE) continue;
+    int lo = m->lo[f], hi = m->hi[f], dir = f >= m->nfx;
+    double q = m->area[f] * us[f];
     /* nothing enters from outside (clear fluid at an outlet; held solids at an inlet) */
-    F[f] = q > 0.0 ? (lo >= 0 ? q * phi[lo] : 0.0) : (hi >= 0 ? q * phi[hi] : 0.0);
+    if (q > 0.0 && lo >= 0) F[f] = q * (w ? phi[lo] + w->half[2 * lo + dir] : phi[lo]);
+    else if (q < 0.0 && hi >= 0) F[f] = q * (w ? phi[hi] - w->half[2 * hi + dir] : phi[hi]);
     if (D > 0.0 && lo >= 0 && hi >= 0) F[f] -= D * m->area[f] * (phi[hi] - phi[lo]) / m->dist[f];
     if (F[f] > 0.0 && hi >= 0) in[hi] += F[f];
     else if (F[f] < 0.0 && lo >= 0) in[lo] -= F[f];
   }
+  /* what leaves a cell is bounded by the CFL condition (phi stays >= 0); what enters is scaled here */
   for (int c = 0; c < m->nc; ++c)
     alpha[c] = in[c] > 0.0 ? fmin(1.0, fmax(0.0, (phi_max - phi[c]) * m->vol[c] / (ds * in[c]))) : 1.0;
   for (int f = 0; f < m->nf; ++f) {
@@ -41,11 +111,13 @@ static void transport_stage(tfp_model *m, const double *us, double *phi, double 
     if (hi < 0) *out += ds * F[f];
     if (lo < 0) *out -= ds * F[f];
   }
+  if (next != phi) memcpy(next, phi, (size_t)m->nc * sizeof *next);
   for (int f = 0; f < m->nf; ++f) {
-    if (m->lo[f] >= 0) phi[m->lo[f]] -= ds / m->vol[m->lo[f]] * F[f];
-    if (m->hi[f] >= 0) phi[m->hi[f]] += ds / m->vol[m->hi[f]] * F[f];
+    if (m->lo[f] >= 0) next[m->lo[f]] -= ds / m->vol[m->lo[f]] * F[f];
+    if (m->hi[f] >= 0) next[m->hi[f]] += ds / m->vol[m->hi[f]] * F[f];
   }
-  for (int c = 0; c < m->nc; ++c) phi[c] = phi[c] < 0.0 ? 0.0 : phi[c] > phi_max ? phi_max : phi[c]; /* round-off */
+  for (int c = 0; c < m->nc; ++c) /* round-off only */
+    next[c] = next[c] < 0.0 ? 0.0 : next[c] > phi_max ? phi_max : next[c];
 }
 
 int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double *outflow, sl_diag *d) {
@@ -53,15 +125,18 @@ int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double
   double *rate = m->inflow, rmax = 0.0;
   memset(rate, 0, (size_t)m->nc * sizeof *rate);
   for (int f = 0; f < m->nf; ++f) {
+    if (m->ftype[f] == TFP_FACE_IMAGE) continue;
     int lo = m->lo[f], hi = m->hi[f];
     double q = m->area[f] * us[f];
-    if (m->ftype[f] == TFP_FACE_IMAGE) continue;
     double Df = m->c.diffusivity > 0.0 && lo >= 0 && hi >= 0 ? m->c.diffusivity * m->area[f] / m->dist[f] : 0.0;
     if (lo >= 0) rate[lo] += fmax(q, 0.0) + Df;
     if (hi >= 0) rate[hi] += fmax(-q, 0.0) + Df;
   }
   for (int c = 0; c < m->nc; ++c) rmax = fmax(rmax, rate[c] / m->vol[c]);
-  double ns = ceil(dt * rmax / m->c.cfl);
+  /* a limited second-order stage is positive at half the first-order step (a face value may be up to twice the
+     cell's mean) */
+  const int order2 = m->c.order == 2;
+  double ns = ceil(dt * rmax / (order2 ? 0.5 * m->c.cfl : m->c.cfl));
   if (!(ns <= 1e7)) return sl_diag_set(d, SL_EFAILED, "solids transport would need %.3g sub-steps", ns);
   /* an iterate far from the last accepted step's speeds is refused (the step is retried smaller) */
   double cap = fmax(1e3, 50.0 * (double)m->accepted_substeps);
@@ -70,12 +145,29 @@ int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double
                                       "times the last step's %ld", ns, m->accepted_substeps);
   long n = ns < 1.0 ? 1 : (long)ns;
   double ds = dt / (double)n, out = 0.0;
+  muscl w = {0};
+  if (order2 && muscl_setup(m, &w)) {
+    muscl_free(&w);
+    return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  }
   memcpy(phi, m->phi, (size_t)m->nc * sizeof *phi);
-  for (long s = 0; s < n; ++s) transport_stage(m, us, phi, ds, &out);
+  for (long s = 0; s < n; ++s) {
+    if (!order2) {
+      transport_stage(m, us, phi, ds, phi, NULL, &out);
+      continue;
+    }
+    /* Heun's method, the two-stage strong-stability-preserving Runge-Kutta scheme (Shu & Osher 1988, eq 2.15):
+       the mean of the start and two Euler stages, so bounds and conservation carry over */
+    double o1 = 0.0, o2 = 0.0;
+    transport_stage(m, us, phi, ds, w.stage, &w, &o1);
+    transport_stage(m, us, w.stage, ds, w.stage, &w, &o2);
+    for (int c = 0; c < m->nc; ++c) phi[c] = 0.5 * (phi[c] + w.stage[c]);
+    out += 0.5 * (o1 + o2);
+  }
+  muscl_free(&w);
   m->last_substeps = n;
   m->substeps_trial += n;
   *outflow = out;
   m->transport_cpu += cpu_now() - t0;
   return 0;
 }
-

@@ -269,7 +269,6 @@ static void bad_input(void) {
       {{"scene.geometry=axisymmetric", NULL}, "the boundary at r = 0 of an axisymmetric scene is its axis"},
       {{"boundary.right.type=axis", NULL}, "only an axisymmetric scene has an axis"},
       {{"boundary.top.type=wall", NULL}, "an inlet needs an outlet"},
-      {{"two_fluid.order=2", NULL}, "first-order upwind only"},
       {{"solver.ordering=colamdd", NULL}, "did you mean 'colamd'"},
   };
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
