@@ -885,3 +885,29 @@ int sl_expr_uses(const sl_expr *e, int var) {
 }
 
 void sl_expr_free(sl_expr *e) { free(e); }
+
+int sl_expr_compile_list(const char *text, const char *const *vars, int n_vars, int max, sl_expr **out, int *n,
+                         sl_diag *d) {
+  *n = 0;
+  const char *p = text;
+  while (*p) {
+    const char *q = p;
+    int depth = 0;
+    while (*q && !(*q == ',' && depth == 0)) depth += (*q == '(') - (*q == ')'), ++q;
+    int rc = 0;
+    if (*n == max) rc = sl_diag_set(d, SL_EBADINPUT, "more than %d components", max);
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%.*s", (int)(q - p), p);
+    sl_diag d2;
+    if (!rc && sl_expr_compile(buf, vars, n_vars, &out[*n], &d2))
+      rc = sl_diag_set(d, SL_EBADINPUT, "component %d ('%s'): %s", *n + 1, buf, d2.msg);
+    if (rc) {
+      for (int i = 0; i < *n; ++i) sl_expr_free(out[i]), out[i] = NULL;
+      *n = 0;
+      return rc;
+    }
+    ++*n;
+    p = *q ? q + 1 : q;
+  }
+  return 0;
+}

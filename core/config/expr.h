@@ -60,4 +60,11 @@ int sl_expr_uses(const sl_expr *e, int var);
 
 void sl_expr_free(sl_expr *e);
 
+/* Compiles a comma list "a, b, c" (commas inside parentheses belong to
+ * their expression, as in min(a, b)) into out[0..*n), at most max of them.
+ * On error nothing is left allocated and SL_EBADINPUT names the component
+ * ("component 2 ('...'): ...") for the caller to prefix. */
+int sl_expr_compile_list(const char *text, const char *const *vars, int n_vars, int max, sl_expr **out, int *n,
+                         sl_diag *d);
+
 #endif

@@ -54,27 +54,8 @@ static int expr_vec_get(const sl_ini *ini, const char *section, const char *key,
   int rc = sl_ini_get_string(ini, section, key, 0, "", &text, d);
   if (rc || !*text) return rc;
   const sl_ini_entry *e = sl_ini_find(ini, section, key);
-  const char *p = text;
-  while (*p) {
-    const char *q = p;
-    int depth = 0;
-    while (*q && !(*q == ',' && depth == 0)) depth += (*q == '(') - (*q == ')'), ++q;
-    if (v->n == max) {
-      expr_vec_free(v);
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] %s: more than %d components", e->file, e->line, section, key,
-                         max);
-    }
-    char buf[4096];
-    snprintf(buf, sizeof buf, "%.*s", (int)(q - p), p);
-    sl_diag d2;
-    if (sl_expr_compile(buf, expr_vars, allow_t ? 3 : 2, &v->e[v->n], &d2)) {
-      expr_vec_free(v);
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] %s, component %d ('%s'): %s", e->file, e->line, section, key,
-                         v->n + 1, buf, d2.msg);
-    }
-    v->n++;
-    p = *q ? q + 1 : q;
-  }
+  if ((rc = sl_expr_compile_list(text, expr_vars, allow_t ? 3 : 2, max, v->e, &v->n, d)))
+    return sl_diag_prefix(d, rc, "%s:%d: [%s] %s", e->file, e->line, section, key);
   return 0;
 }
 

@@ -159,6 +159,9 @@ static int boundaries(tfp_run *r, sl_diag *d) {
 }
 
 static int initial_state(tfp_run *r, sl_diag *d) {
+  static const char *const keys_all[] = {"phi", "porosity", "velocity_fluid", "velocity_solid"};
+  int rc0 = sl_ini_check_keys(r->ini, "initial", keys_all, 4, d);
+  if (rc0) return rc0;
   const sl_ini_entry *e = sl_ini_find(r->ini, "initial", "phi"), *en = sl_ini_find(r->ini, "initial", "porosity");
   if (e && en)
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] porosity and phi both given: set one", en->file, en->line);
@@ -181,7 +184,34 @@ static int initial_state(tfp_run *r, sl_diag *d) {
     m->phi[c] = phi;
   }
   sl_expr_free(ex);
-  return rc;
+  if (rc) return rc;
+  /* the phases' velocities (default at rest): each face takes its normal component at its centre */
+  static const char *const keys[2] = {"velocity_fluid", "velocity_solid"};
+  for (int phase = 0; phase < 2; ++phase) {
+    const sl_ini_entry *ve = sl_ini_find(r->ini, "initial", keys[phase]);
+    if (!ve) continue;
+    sl_expr *comp[2] = {NULL, NULL};
+    int n = 0;
+    if ((rc = sl_expr_compile_list(ve->value, vars, 3, 2, comp, &n, d)))
+      return sl_diag_prefix(d, rc, "%s:%d: [initial] %s", ve->file, ve->line, ve->key);
+    if (n != 2) {
+      for (int k = 0; k < n; ++k) sl_expr_free(comp[k]);
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s: two components (along x, along y), expressions of "
+                                          "x, y and case; %d given", ve->file, ve->line, ve->key, n);
+    }
+    double *u = phase ? m->us : m->uf;
+    for (int f = 0; f < m->nf; ++f) {
+      int dir = f >= m->nfx, i = dir ? (f - m->nfx) % m->nx : f % (m->nx + 1);
+      int j = dir ? (f - m->nfx) / m->nx : f / (m->nx + 1);
+      double xy[3] = {dir ? m->xc[i] : m->grid.xf[i], dir ? m->grid.yf[j] : m->yc[j], m->c.case_index};
+      u[f] = sl_expr_eval(comp[dir], xy);
+      if (!isfinite(u[f])) rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s is not finite at (%g, %g)",
+                                            ve->file, ve->line, ve->key, xy[0], xy[1]);
+    }
+    sl_expr_free(comp[0]), sl_expr_free(comp[1]);
+    if (rc) return rc;
+  }
+  return 0;
 }
 
 /* ---- output, checkpoint, restart --------------------------------------------------- */

@@ -16,7 +16,8 @@
  * = mu0 gdot^2 / gamma0 everywhere (with the drag's sink 3 K theta the
  * root of gamma0 s^2 + 3 K s - mu0 gdot^2 = 0, s = sqrt(theta), K of
  * Stokes or of Wen & Yu at zero slip), the walls' stresses of
- * the two viscosities.
+ * the two viscosities; started on that profile ([initial] velocities),
+ * there after one step.
  *
  * bagnold_shear: shear_cell's suspension in a planar gap with Bagnold's
  * wall stress at both walls: the solids wall stress grows as the wall's
@@ -197,6 +198,18 @@ static void kinetic_shear(void) {
     CHECK_CLOSE(scalar("kinetic_shear.h5", "wall_shear_stress_fluid_bottom", INFINITY), (1.0 - p.phi) * mu_f * G,
                 cases[k].rtol);
   }
+  /* started on the Couette profile ([initial] velocities): at the balance after one step */
+  const char *start[] = {"initial.velocity_fluid=100*y, 0", "initial.velocity_solid=100*y, 0", "time.end=10",
+                         "output.every=10", "two_fluid.interphase_dissipation=false", NULL};
+  if (run_ok("two_fluid_2d/kinetic_shear", NULL, NULL, start, "kinetic_start.h5")) return;
+  double theta_eq = mu0 * G * G / gam0;
+  int n = 0;
+  double *th = field_at("kinetic_start.h5", "theta", 10.0, &n, NULL), worst = 0.0;
+  for (int q = 0; th && q < n; ++q) worst = fmax(worst, fabs(th[q] - theta_eq) / theta_eq);
+  free(th);
+  printf("kinetic_shear from the Couette profile: theta within %.2e of the balance after one step\n", worst);
+  CHECK_MSG(n > 0 && worst < 1e-8, "one step from the Couette profile: theta %.2e from the balance", worst);
+  CHECK_CLOSE(scalar("kinetic_start.h5", "wall_shear_stress_solid_bottom", 10.0), mu0 * sqrt(theta_eq) * G, 1e-7);
 }
 
 /* ---- Bagnold's wall stress ------------------------------------------------------------- */
@@ -245,6 +258,9 @@ static void bad_input(void) {
       {"two_fluid_2d/kinetic_shear", "two_fluid.granular_temperature=transport", "algebraic balance only"},
       {"two_fluid_2d/kinetic_shear", "boundary.top.solids=wall_stress", "needs [closure.wall_stress]"},
       {"two_fluid_2d/couette_slip", "boundary.left.velocity=1", "only an inlet"},
+      {"two_fluid_2d/couette_slip", "initial.velocity_fluid=1", "two components"},
+      {"two_fluid_2d/couette_slip", "initial.velocity_solid=1, sinn(x)", "did you mean"},
+      {"two_fluid_2d/couette_slip", "initial.theta=1", "theta"},
   };
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
     const char *sets[] = {cases[k].set, NULL};
