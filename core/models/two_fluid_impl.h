@@ -96,6 +96,7 @@ int tf_scene_physics(sl_ini *ini, const sl_registry *reg, int dim, tf_column *c,
  * the count of rejected steps (two_fluid_io.c). */
 typedef struct tf_state {
   double *phi, *us, *uf, *p;
+  double *theta; /* [n_cells] a transported granular temperature, or NULL */
   int64_t n_cells, n_faces;
   double inventory0, outflow;
   long rejected;

@@ -14,7 +14,8 @@ int tf_checkpoint_write(sl_output *out, const tf_state *s, double t, double dt, 
   sl_checkpoint_array a[5] = {{"phi", s->n_cells, s->phi}, {"velocity_solid", s->n_faces, s->us},
                               {"velocity_fluid", s->n_faces, s->uf}, {"pressure", s->n_cells, s->p},
                               {"solids_book", 2, book}}; /* the names of STATE_NAMES */
-  sl_checkpoint ck = {.time = t, .dt = dt, .step = step, .n_arrays = 5, .arrays = a};
+  sl_checkpoint_array a6[6] = {a[0], a[1], a[2], a[3], a[4], {"theta", s->n_cells, s->theta}};
+  sl_checkpoint ck = {.time = t, .dt = dt, .step = step, .n_arrays = s->theta ? 6 : 5, .arrays = s->theta ? a6 : a};
   ck.n_ints = 1;
   snprintf(ck.int_names[0], SL_CHECKPOINT_NAME_MAX, "rejected");
   ck.ints[0] = s->rejected;
@@ -35,6 +36,13 @@ int tf_checkpoint_restore(const char *path, const char *model, tf_state *s, doub
                        (long long)len[k]);
     else if (k < 4) memcpy(dst[k], a->data, (size_t)a->n * sizeof(double));
     else s->inventory0 = a->data[0], s->outflow = a->data[1];
+  }
+  if (!rc && s->theta) {
+    const sl_checkpoint_array *a = sl_checkpoint_find(&ck, "theta");
+    if (!a || a->n != s->n_cells)
+      rc = sl_diag_set(d, SL_EBADINPUT, "restart: %s holds no %s 'theta' of %lld values", path, model,
+                       (long long)s->n_cells);
+    else memcpy(s->theta, a->data, (size_t)a->n * sizeof(double));
   }
   *t = ck.time, *dt = ck.dt, *step = (long)ck.step;
   if (!rc && ck.n_ints > 0) s->rejected = (long)ck.ints[0];

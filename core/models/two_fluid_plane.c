@@ -159,9 +159,31 @@ static int boundaries(tfp_run *r, sl_diag *d) {
 }
 
 static int initial_state(tfp_run *r, sl_diag *d) {
-  static const char *const keys_all[] = {"phi", "porosity", "velocity_fluid", "velocity_solid"};
-  int rc0 = sl_ini_check_keys(r->ini, "initial", keys_all, 4, d);
+  static const char *const keys_all[] = {"phi", "porosity", "velocity_fluid", "velocity_solid", "theta"};
+  int rc0 = sl_ini_check_keys(r->ini, "initial", keys_all, 5, d);
   if (rc0) return rc0;
+  const sl_ini_entry *te = sl_ini_find(r->ini, "initial", "theta");
+  if (te && !(r->m.s.granular && !r->m.s.algebraic))
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] theta: only a transported granular temperature takes it "
+                                        "([closure.granular] with [two_fluid] granular_temperature = transport)",
+                       te->file, te->line);
+  if (te) { /* theta in the cells, m^2/s^2 (default 1e-6) */
+    static const char *const tvars[] = {"x", "y", "case"};
+    sl_expr *tx;
+    int trc = sl_expr_compile(te->value, tvars, 3, &tx, d);
+    if (trc) return sl_diag_prefix(d, trc, "%s:%d: [initial] theta", te->file, te->line);
+    for (int c = 0; c < r->m.nc && !trc; ++c) {
+      double xy[3] = {r->m.xc[c % r->m.nx], r->m.yc[c / r->m.nx], r->m.c.case_index}, th = sl_expr_eval(tx, xy);
+      if (!(th > 0.0 && th < 1e4))
+        trc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] theta = %g at (%g, %g): allowed 0 < theta < 1e4 m^2/s^2",
+                          te->file, te->line, th, xy[0], xy[1]);
+      r->m.s.theta[c] = r->m.s.theta_new[c] = th;
+    }
+    sl_expr_free(tx);
+    if (trc) return trc;
+  } else if (r->m.s.granular && !r->m.s.algebraic) {
+    for (int c = 0; c < r->m.nc; ++c) r->m.s.theta[c] = r->m.s.theta_new[c] = 1e-6;
+  }
   const sl_ini_entry *e = sl_ini_find(r->ini, "initial", "phi"), *en = sl_ini_find(r->ini, "initial", "porosity");
   if (e && en)
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] porosity and phi both given: set one", en->file, en->line);
@@ -298,6 +320,7 @@ static int write_state(tfp_run *r, double t, sl_diag *d) {
 static tf_state plane_state(tfp_run *r) {
   tfp_model *m = &r->m;
   return (tf_state){.phi = m->phi, .us = m->us, .uf = m->uf, .p = m->p, .n_cells = m->nc, .n_faces = m->nf,
+                    .theta = m->s.granular && !m->s.algebraic ? m->s.theta : NULL,
                     .inventory0 = r->inventory0, .outflow = r->outflow, .rejected = r->res->rejected_steps};
 }
 
@@ -310,6 +333,7 @@ static int plane_restore(void *user, const char *path, double *t, double *dt, lo
   tfp_run *r = user;
   tf_state st = plane_state(r);
   int rc = tf_checkpoint_restore(path, "2-D two_fluid (the same grid)", &st, t, dt, step_no, d);
+  if (!rc && st.theta) memcpy(r->m.s.theta_new, r->m.s.theta, (size_t)r->m.nc * sizeof *r->m.s.theta);
   r->inventory0 = st.inventory0, r->outflow = st.outflow, r->res->rejected_steps = st.rejected;
   return rc;
 }

@@ -60,7 +60,11 @@ typedef struct tfp_solids {
   /* the grid's corners [(nx + 1)(ny + 1)], where the shear stresses act: du/dy + dv/dx of the solids, the
      means of the cells around, the shear rate, theta, the viscosity and its tangent */
   double *shear, *phi_k, *rho_k, *K_k, *gdot_k, *theta_k, *mu_k_corner, *mu_tk;
-  double *mum, *mu_k, *kap, *gam, *one; /* per-point scratch (corners' size) */
+  double *mum, *mu_k, *kap, *gam, *dgam, *one; /* per-point scratch (corners' size) */
+  /* the transported theta's system: its matrix, solver, the last iterate's theta, right-hand side, solution */
+  sl_csr th_A;
+  sl_linsolve *th_ls;
+  double *th_old, *th_rhs, *th_x;
   double last_bagnold; /* the Bagnold number of the last wall-closure call (NAN: the closure gives none) */
   int any; /* the solids carry a stress (a viscosity at all) */
 } tfp_solids;
@@ -154,6 +158,11 @@ void tfp_solids_free(tfp_solids *s);
 /* The solids viscosity of every cell at the iterate (us, phi, theta_new),
  * with the algebraic theta first when so chosen. */
 int tfp_solids_viscosity(tfp_model *m, const double *us, const double *phi, sl_diag *d);
+
+/* One solve of the transported granular temperature of the iterate
+ * (theta_new), from the accepted theta over dt; *change its largest change.
+ * Only with granular_temperature = transport. */
+int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d);
 
 /* The wall's resistance to the solids at face f's end `end` (a wall with
  * solids = wall_stress), per unit wall area, as R0 + dR (u - u0) in the

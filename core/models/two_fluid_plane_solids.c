@@ -16,7 +16,8 @@
  *     (van Wachem et al. 2001; the drag's sink -3 K theta as in Gidaspow
  *     1994, chapter 9; off with interphase_dissipation = false), a quadratic
  *     in sqrt(theta) for a kinetic closure (mu_s ~ theta^1/2, gamma ~
- *     theta^3/2, checked at set-up).
+ *     theta^3/2, checked at set-up); or, with `granular_temperature =
+ *     transport`, the theta of its transport equation (tfp_theta_solve).
  * mu_s is evaluated in the cells (for the normal stresses, and theta's
  * output) and at the grid's corners, where the shear stresses act, at the
  * corner's own shear rate (phi, the density and the normal strain the
@@ -48,6 +49,7 @@
 
 #include "core/models/two_fluid_plane_impl.h"
 #include "core/plugin/closure_ini.h"
+#include "core/solve/linsolve.h"
 
 static const char *const quantity_names[TFP_Q_N] = {"phi",        "slip",          "theta",      "rho_f",
                                                     "mu_f",       "rho_s",         "d_p",        "sphericity",
@@ -58,7 +60,10 @@ static const char *const quantity_names[TFP_Q_N] = {"phi",        "slip",       
 void tfp_solids_free(tfp_solids *s) {
   double *all[] = {s->mu,    s->mu_t,  s->gdot, s->rho,    s->Kc,      s->theta,       s->theta_new,
                    s->normal, s->mum,  s->mu_k, s->kap,    s->gam,     s->one,         s->shear,
-                   s->phi_k, s->rho_k, s->K_k,  s->gdot_k, s->theta_k, s->mu_k_corner, s->mu_tk};
+                   s->phi_k, s->rho_k, s->K_k,  s->gdot_k, s->theta_k, s->mu_k_corner, s->mu_tk,
+                   s->dgam,  s->th_old, s->th_rhs, s->th_x};
+  sl_csr_free(&s->th_A);
+  sl_linsolve_destroy(s->th_ls);
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   for (int k = 0; k < TFP_Q_N; ++k) free(s->qv[k]);
   sl_closure_destroy(s->visc_c);
@@ -95,7 +100,8 @@ int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *
   const size_t nc = (size_t)m->nc, nk = (size_t)(m->nx + 1) * (size_t)(m->ny + 1); /* nk > nc */
   double **a[] = {&s->mu,    &s->mu_t,  &s->gdot,  &s->rho,   &s->Kc,    &s->theta,   &s->theta_new,
                   &s->normal, &s->mum,  &s->mu_k,  &s->kap,   &s->gam,   &s->one,     &s->shear,
-                  &s->phi_k, &s->rho_k, &s->K_k,   &s->gdot_k, &s->theta_k, &s->mu_k_corner, &s->mu_tk};
+                  &s->phi_k, &s->rho_k, &s->K_k,   &s->gdot_k, &s->theta_k, &s->mu_k_corner, &s->mu_tk,
+                  &s->dgam,  &s->th_old, &s->th_rhs, &s->th_x};
   for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
     if (!(*a[k] = calloc(nk, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
   for (int k = 0; k < TFP_Q_N; ++k)
@@ -123,20 +129,16 @@ int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *
     if ((rc = sl_ini_get_choice(ini, "two_fluid", "granular_temperature", 0, 1, "transport|algebraic", &s->algebraic,
                                 d)))
       return rc;
-    if (!s->algebraic)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature = transport: the 2-D model "
-                                          "solves the algebraic balance only (granular_temperature = algebraic); the "
-                                          "transported theta is in the shear layer (motion = shear)",
-                         gt->file, gt->line);
     if ((rc = sl_ini_get_bool(ini, "two_fluid", "interphase_dissipation", 0, 1, &s->exchange, d))) return rc;
     if ((rc = sl_closure_from_ini(reg, ini, "closure.granular", &s->gran_c, d))) return rc;
     if ((rc = sl_point_bind(&s->gran, s->gran_c, quantity_names, TFP_Q_N, "closure.granular", model, d))) return rc;
-    static const char *const need[] = {"mu_s", "gamma"};
-    for (int k = 0; k < 2; ++k)
+    static const char *const need[] = {"mu_s", "gamma", "kappa"};
+    for (int k = 0; k < (s->algebraic ? 2 : 3); ++k)
       if (!sl_point_has_output(&s->gran, need[k]))
-        return sl_diag_set(d, SL_EBADINPUT, "[closure.granular]: the 2-D model needs mu_s and gamma of (phi, "
-                                            "theta); this closure gives no %s", need[k]);
-    if ((rc = check_kinetic_scaling(m, ini, d))) return rc;
+        return sl_diag_set(d, SL_EBADINPUT, "[closure.granular]: the 2-D model needs mu_s, gamma%s of (phi, "
+                                            "theta); this closure gives no %s", s->algebraic ? "" : " and kappa",
+                           need[k]);
+    if (s->algebraic && (rc = check_kinetic_scaling(m, ini, d))) return rc;
   } else {
     const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", "interphase_dissipation");
     if (e)
@@ -275,7 +277,11 @@ static int solids_mu_points(tfp_model *m, int N, const double *phi, const double
   for (int k = 0; k < TFP_Q_N; ++k) v[k] = s->qv[k];
   v[TFP_Q_PHI] = phi, v[TFP_Q_SHEAR_RATE] = gdot, v[TFP_Q_DENSITY] = rho, v[TFP_Q_THETA] = theta;
   for (int q = 0; q < N; ++q) mu[q] = s->mu_const;
-  if (s->granular) {
+  if (s->granular && !s->algebraic) { /* theta given: the kinetic viscosity at it, no shear dependence of its own */
+    sl_point_request rq = {"mu_s", s->mu_k, NULL, NULL};
+    for (int q = 0; q < N; ++q) s->kap[q] = 0.0;
+    if ((rc = sl_point_eval(&s->gran, N, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
+  } else if (s->granular) {
     v[TFP_Q_THETA] = s->one;
     sl_point_request rq[2] = {{"mu_s", s->mu_k, NULL, NULL}, {"gamma", s->gam, NULL, NULL}};
     if ((rc = sl_point_eval(&s->gran, N, v, rq, 2, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
@@ -332,12 +338,85 @@ int tfp_solids_viscosity(tfp_model *m, const double *us, const double *phi, sl_d
       }
       s->phi_k[k] = ph, s->rho_k[k] = rho, s->gdot_k[k] = sqrt(fmax(sh * sh + nrm, 0.0));
       if (!m->sink_frozen) s->K_k[k] = K;
+      if (s->granular && !s->algebraic) { /* a transported theta: the mean of the cells' */
+        double th = 0.0;
+        for (int q = 0; q < n; ++q) th += s->theta_new[cells[q]] / n;
+        s->theta_k[k] = th;
+      }
     }
   int rc = solids_mu_points(m, m->nc, phi, s->gdot, s->rho, s->Kc, s->theta_new, s->mu, s->mu_t, d);
   if (rc) return sl_diag_prefix(d, rc, "cells");
   if ((rc = solids_mu_points(m, nk, s->phi_k, s->gdot_k, s->rho_k, s->K_k, s->theta_k, s->mu_k_corner,
                              s->mu_tk, d)))
     return sl_diag_prefix(d, rc, "grid corners");
+  return 0;
+}
+
+/* The transported granular temperature (`granular_temperature = transport`)
+ * of the iterate, cell by cell, as the shear layer's (shear_layer.h; Krampa
+ * 2009 eq 5.10 in the standard form of its digest, section 2.5):
+ *   (3/2) rho_s phi dtheta/dt = div(kappa grad theta) + mu_k gdot^2 - gamma - 3 K theta,
+ * mu_k the kinetic viscosity, backward Euler. Newton in the dissipation
+ * gamma(theta); kappa, mu_k (whose theta derivative, negative on the
+ * diagonal and unbounded at theta = 0, would take Newton to theta = 0) and K
+ * from the last iterate; the shear rate of the velocities just solved. The
+ * walls are adiabatic; there is no convection of theta (the model's
+ * momentum has none either). *change: the largest change of theta. */
+int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
+  tfp_solids *s = &m->s;
+  const int nc = m->nc;
+  int rc;
+  if (!s->th_ls) { /* the pattern: each cell with its four neighbours */
+    int32_t *pairs = malloc(4 * (size_t)nc * sizeof *pairs);
+    if (!pairs) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    for (int c = 0; c < nc; ++c)
+      for (int dir = 0; dir < 2; ++dir) pairs[4 * c + 2 * dir] = c, pairs[4 * c + 2 * dir + 1] = tfp_neighbour(m, c, dir, 1);
+    rc = sl_csr_build_uniform(&s->th_A, nc, 2 * nc, 2, pairs, d);
+    free(pairs);
+    if (!rc) rc = sl_linsolve_create(&s->th_ls, "klu", d);
+    if (rc) return sl_diag_prefix(d, rc, "the granular temperature's system");
+  }
+  shear_rate(m, m->us_new);
+  for (int c = 0; c < nc; ++c) s->th_old[c] = fmax(s->theta_new[c], THETA_FLOOR);
+  const double *v[TFP_Q_N];
+  for (int k = 0; k < TFP_Q_N; ++k) v[k] = s->qv[k];
+  v[TFP_Q_PHI] = m->phi_new, v[TFP_Q_THETA] = s->th_old, v[TFP_Q_SHEAR_RATE] = s->gdot, v[TFP_Q_DENSITY] = s->rho;
+  sl_point_request rq[3] = {{"mu_s", s->mu_k, NULL, NULL}, {"kappa", s->kap, NULL, NULL},
+                            {"gamma", s->gam, s->dgam, "theta"}};
+  if ((rc = sl_point_eval(&s->gran, nc, v, rq, 3, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
+  sl_csr *A = &s->th_A;
+  sl_csr_zero(A);
+  for (int c = 0; c < nc; ++c) {
+    double V = m->vol[c], ph = fmax(m->phi_new[c], 1e-6), cap = 1.5 * m->c.rho_s * ph * V / dt;
+    double X = s->exchange ? 3.0 * s->Kc[c] : 0.0, dg = fmax(s->dgam[c], 0.0);
+    double diag = cap + V * (dg + X);
+    s->th_rhs[c] = cap * s->theta[c] + V * (s->mu_k[c] * s->gdot[c] * s->gdot[c] - s->gam[c] + dg * s->th_old[c]);
+    int cf[4], i = c % m->nx, j = c / m->nx;
+    cf[0] = i + (m->nx + 1) * j, cf[1] = cf[0] + 1, cf[2] = m->nfx + i + m->nx * j, cf[3] = cf[2] + m->nx;
+    for (int dir = 0; dir < 2; ++dir)
+      for (int side = 0; side < 2; ++side) {
+        int nb = tfp_neighbour(m, c, dir, side), f = cf[2 * dir + side];
+        if (nb < 0 || nb == c) continue;
+        double k = 0.5 * (s->kap[c] + s->kap[nb]) * m->area[f] / m->dist[f];
+        diag += k;
+        A->values[sl_csr_find(A, c, nb)] -= k;
+      }
+    A->values[sl_csr_find(A, c, c)] += diag;
+  }
+  sl_csr_touch(A);
+  if ((rc = sl_linsolve_solve(s->th_ls, A, s->th_rhs, s->th_x, d)))
+    return sl_diag_prefix(d, rc, "the granular temperature's solve");
+  double ch = 0.0;
+  for (int c = 0; c < nc; ++c) {
+    if (!isfinite(s->th_x[c]))
+      return sl_diag_set(d, SL_EFAILED, "the granular temperature is not finite in cell (%d, %d)", c % m->nx,
+                         c / m->nx);
+    /* theta stays positive: at most a fivefold fall per iteration */
+    double th = fmax(s->th_x[c], fmax(0.2 * s->th_old[c], THETA_FLOOR));
+    ch = fmax(ch, fabs(th - s->th_old[c]));
+    s->theta_new[c] = th;
+  }
+  *change = ch;
   return 0;
 }
 

@@ -595,6 +595,7 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
   memcpy(m->us_new, m->us, (size_t)nf * sizeof *m->us);
   memcpy(m->uf_new, m->uf, (size_t)nf * sizeof *m->uf);
   memcpy(m->p_new, m->p, (size_t)nc * sizeof *m->p);
+  if (m->s.granular && !m->s.algebraic) memcpy(m->s.theta_new, m->s.theta, (size_t)nc * sizeof *m->s.theta);
   m->substeps_trial = 0, m->iterations_trial = 0;
   double out = 0.0, change = 0.0, umax = 0.0;
   if ((rc = tfp_transport(m, m->us_new, dt, m->phi_new, &out, d))) return rc;
@@ -618,7 +619,12 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
     if (!isfinite(change) || !isfinite(umax))
       return sl_diag_set(d, SL_EFAILED, "the coupled solve gave a non-finite velocity (iteration %d)", it);
     if ((rc = tfp_transport(m, m->us_new, dt, m->phi_new, &out, d))) return rc;
-    if (change <= m->c.tolerance * fmax(m->c.v_ref, umax)) {
+    double dth = 0.0, th_scale = 0.0;
+    if (m->s.granular && !m->s.algebraic) {
+      if ((rc = tfp_theta_solve(m, dt, &dth, d))) return rc;
+      for (int c = 0; c < nc; ++c) th_scale = fmax(th_scale, m->s.theta_new[c]);
+    }
+    if (change <= m->c.tolerance * fmax(m->c.v_ref, umax) && dth <= m->c.tolerance * th_scale) {
       m->outflow_trial = out;
       if ((rc = wall_stresses(m, d))) return rc;
       /* the inlet's u_f with the new phi of its cell */
