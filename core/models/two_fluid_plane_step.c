@@ -562,13 +562,16 @@ static int wall_stresses(tfp_model *m, sl_diag *d) {
       int dir = face_dir(m, f), a = dir == 0 ? f / (m->nx + 1) : (f - m->nfx) % m->nx;
       double h = dir == 0 ? m->hy[a] : m->hx[a];
       double r = m->axi ? (dir == 0 ? m->grid.xf[f % (m->nx + 1)] : m->grid.xf[end ? m->nx : 0]) : 1.0;
-      double len = m->dist[f] * r, U = m->end_u[e], muf = 0.0, mus = 0.0, bn = NAN;
+      double len = m->dist[f] * r, U = m->end_u[e], muf = 0.0, bn = NAN;
       int n = 0;
       for (int s = 0; s < 2; ++s) {
         int c = s ? m->hi[f] : m->lo[f];
-        if (c >= 0) muf += (1.0 - m->phi_new[c]) * m->c.mu_f, mus += m->s.mu[c], ++n;
+        if (c >= 0) muf += (1.0 - m->phi_new[c]) * m->c.mu_f, ++n;
       }
-      muf /= n, mus /= n;
+      muf /= n;
+      /* the solids' viscosity of the wall corner, as the momentum equation took it */
+      int i = dir == 0 ? f % (m->nx + 1) : (f - m->nfx) % m->nx, j = dir == 0 ? f / (m->nx + 1) : (f - m->nfx) / m->nx;
+      double mus = m->s.mu_k_corner[dir == 0 ? i + (m->nx + 1) * (j + end) : (i + end) + (m->nx + 1) * j];
       double tf = muf * (m->uf_new[f] - U) / (0.5 * h), ts = 0.0, slip = 0.0;
       if (m->b[b].solids == TFP_SOLIDS_NO_SLIP) ts = mus * (m->us_new[f] - U) / (0.5 * h);
       else if (m->b[b].solids == TFP_SOLIDS_WALL_STRESS) {
