@@ -132,6 +132,14 @@ static inline int tfp_neighbour(const tfp_model *m, int c, int dir, int side) {
   return dir == 0 ? k + m->nx * j : i + m->nx * k;
 }
 
+/* The face whose unknowns and values face f shares: f itself, or for an
+ * image face the first face of its periodic row (x-faces) or column
+ * (y-faces). */
+static inline int tfp_primary(const tfp_model *m, int f) {
+  if (m->ftype[f] != TFP_FACE_IMAGE) return f;
+  return f < m->nfx ? f - m->nx : f - m->nx * m->ny;
+}
+
 /* The grid geometry, face types and unknown numbering from the grid and the
  * boundaries. 0 or SL_EFAILED (memory). */
 int tfp_setup(tfp_model *m, sl_diag *d);

@@ -174,6 +174,7 @@ int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *
  * slip), their slip under a wall stress, or the face's own (free slip: no
  * shear). */
 static double wall_solids(const tfp_model *m, int f, int end, double u_face) {
+  f = tfp_primary(m, f); /* an image face's wall state is its first face's */
   int e = 2 * f + end, b = m->end_wall[e];
   if (m->tan_noslip[4 * f + 2 + end] || (b >= 0 && m->b[b].solids == TFP_SOLIDS_WALL_STRESS)) return m->end_us[e];
   return u_face;
@@ -421,27 +422,35 @@ int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
 }
 
 /* tau_w and d tau_w / d slip at one point. */
-static int wall_tau(tfp_model *m, int c, double phi, double slip, double dist, double *tau, double *dtau,
+/* tau_w and d tau_w / d slip at face f, phi given; theta, the shear rate and
+ * the density the means of the face's two cells (one cell's would bias the
+ * wall along the face's direction). */
+static int wall_tau(tfp_model *m, int f, double phi, double slip, double dist, double *tau, double *dtau,
                     sl_diag *d) {
   tfp_solids *s = &m->s;
-  double one[TFP_Q_N];
+  double one[TFP_Q_N], th = 0.0, gd = 0.0, rho = 0.0;
+  int n = 0;
+  for (int side = 0; side < 2; ++side) {
+    int c = side ? m->hi[f] : m->lo[f];
+    if (c >= 0) th += s->theta_new[c], gd += s->gdot[c], rho += s->rho[c], ++n;
+  }
   const double *v[TFP_Q_N];
   for (int k = 0; k < TFP_Q_N; ++k) one[k] = s->qv[k][0], v[k] = &one[k];
-  one[TFP_Q_PHI] = phi, one[TFP_Q_THETA] = fmax(s->theta_new[c], THETA_FLOOR), one[TFP_Q_SLIP_WALL] = slip;
-  one[TFP_Q_SLIP] = slip, one[TFP_Q_WALL_DISTANCE] = dist, one[TFP_Q_SHEAR_RATE] = s->gdot[c];
-  one[TFP_Q_DENSITY] = s->rho[c];
+  one[TFP_Q_PHI] = phi, one[TFP_Q_THETA] = fmax(th / n, THETA_FLOOR), one[TFP_Q_SLIP_WALL] = slip;
+  one[TFP_Q_SLIP] = slip, one[TFP_Q_WALL_DISTANCE] = dist, one[TFP_Q_SHEAR_RATE] = gd / n;
+  one[TFP_Q_DENSITY] = rho / n;
   sl_point_request rq[2] = {{"tau_w", tau, dtau, "slip_wall"}, {"bagnold_number", &s->last_bagnold, NULL, NULL}};
   s->last_bagnold = NAN;
   return sl_point_eval(&s->wall, 1, v, rq, sl_point_has_output(&s->wall, "bagnold_number") ? 2 : 1, d);
 }
 
 int tfp_solids_wall(tfp_model *m, int f, int end, double mu, double h, double *R0, double *dR, sl_diag *d) {
-  int e = 2 * f + end, c = m->lo[f] >= 0 ? m->lo[f] : m->hi[f];
+  int e = 2 * f + end;
   double U = m->end_u[e], u = m->us_new[f], phi = m->phf[f], tau, dtau;
   int rc;
   if (m->s.wall_function || mu <= 0.0) { /* the slip of the face, half a cell from the wall */
     double sl = u - U, sg = sl > 0.0 ? 1.0 : sl < 0.0 ? -1.0 : 0.0;
-    if ((rc = wall_tau(m, c, phi, fabs(sl), 0.5 * h, &tau, &dtau, d))) goto failed;
+    if ((rc = wall_tau(m, f, phi, fabs(sl), 0.5 * h, &tau, &dtau, d))) goto failed;
     *R0 = tau * sg, *dR = fmax(dtau, 0.0);
     m->end_us[e] = u;
     return 0;
@@ -451,7 +460,7 @@ int tfp_solids_wall(tfp_model *m, int f, int end, double mu, double h, double *R
   if (!isfinite(uw) || (uw - U) * (u - U) < 0.0 || fabs(uw - U) > fabs(u - U)) uw = U + 0.5 * (u - U);
   for (int it = 0; it < 50; ++it) {
     double sl = uw - U, sg = sl > 0.0 ? 1.0 : sl < 0.0 ? -1.0 : 0.0;
-    if ((rc = wall_tau(m, c, phi, fabs(sl), 0.5 * h, &tau, &dtau, d))) goto failed;
+    if ((rc = wall_tau(m, f, phi, fabs(sl), 0.5 * h, &tau, &dtau, d))) goto failed;
     double g = k * (u - uw) - tau * sg, dg = -k - fmax(dtau, 0.0);
     double next = uw - g / dg;
     /* between the wall's speed and the face's: the stress has the slip's sign and is below k |u - U| */
@@ -463,7 +472,7 @@ int tfp_solids_wall(tfp_model *m, int f, int end, double mu, double h, double *R
   }
   {
     double sl = uw - U, sg = sl > 0.0 ? 1.0 : sl < 0.0 ? -1.0 : 0.0;
-    if ((rc = wall_tau(m, c, phi, fabs(sl), 0.5 * h, &tau, &dtau, d))) goto failed;
+    if ((rc = wall_tau(m, f, phi, fabs(sl), 0.5 * h, &tau, &dtau, d))) goto failed;
     m->end_us[e] = uw;
     *R0 = tau * sg;
     dtau = fmax(dtau, 0.0);
