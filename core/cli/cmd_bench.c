@@ -121,11 +121,6 @@ static int check_runs(bench *b, sl_diag *d) {
       if ((rc = sl_ini_get_choice(ini, "scene", "geometry", 0, model == 2 ? 0 : 1, "line|planar|axisymmetric",
                                   &geometry, d)))
         break;
-      if (model == 2 && geometry != 0) {
-        rc = sl_diag_set(d, SL_EBADINPUT, "%s: a 2-D two_fluid scene: that engine is not built yet (1-D columns)",
-                         s->scene);
-        break;
-      }
       const sl_study_measure *sm = &s->m;
       const sl_ini_section *ms = sm->where;
       if (sm->has_line && (sm->line_dim == 1) != (geometry == 0)) {

@@ -1,7 +1,5 @@
 /* sluice run SCENE.ini: parse and validate a scene, resolve its closures,
- * and run it (models navier_stokes, mixture and, on 1-D columns,
- * two_fluid; a 2-D two_fluid scene is validated and `run` says that it is
- * not built yet). */
+ * and run it (models navier_stokes, mixture and two_fluid). */
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -38,8 +36,8 @@ static const char run_usage[] =
     "forces it off/on); the run ends with a one-line summary. Ctrl-C stops after\n"
     "the current step and saves it. Exit status: 0 done, 1 the run failed (the\n"
     "last good state is saved), 2 bad input.\n"
-    "Models: navier_stokes, mixture and two_fluid (1-D columns, geometry = line;\n"
-    "a 2-D two_fluid scene is validated only: that engine is not built yet).";
+    "Models: navier_stokes, mixture and two_fluid (1-D columns and shear layers,\n"
+    "geometry = line; 2-D, geometry = planar | axisymmetric).";
 
 static volatile sig_atomic_t interrupted;
 static void on_sigint(int sig) {

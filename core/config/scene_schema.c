@@ -110,6 +110,12 @@ static const sl_key_spec two_fluid_keys[] = {
      "two_fluid shear layer with [closure.granular]: theta's transport equation or its local balance"},
     {"interphase_dissipation", SL_KEY_BOOL, 0, 0, 0, NULL,
      "two_fluid shear layer: the sink -3 K theta of granular energy by the drag (default true)"},
+    {"acceleration", SL_KEY_CHOICE, 0, 0, 0, "none|anderson",
+     "two_fluid 2-D: Anderson acceleration of the step's iteration (default anderson with [closure.granular], "
+     "else none)"},
+    {"kinetic_pressure", SL_KEY_BOOL, 0, 0, 0, NULL,
+     "two_fluid 2-D: the kinetic theory's p_s(phi, theta) joins the solids pressure (default true with a "
+     "transported theta when [closure.granular] gives p_s)"},
 };
 static const sl_key_spec plugins_keys[] = {
     {"path", SL_KEY_LIST, 0, 0, 0, NULL, "folders searched first for closure libraries"},

@@ -47,8 +47,8 @@ static int column_from_mesh(tf_run *r, sl_diag *d) {
   const sl_mesh *m = r->mesh;
   tf_column *c = &r->c;
   if (m->dim != 1)
-    return sl_diag_set(d, SL_EBADINPUT, "[scene] model = two_fluid runs on 1-D meshes only (geometry = line): the "
-                                        "2-D two-fluid model is not built yet");
+    return sl_diag_set(d, SL_EBADINPUT, "[scene] model = two_fluid, geometry = line: the mesh must be 1-D (a 2-D "
+                                        "mesh takes geometry = planar or axisymmetric)");
   int n = m->n_cells;
   c->n = n;
   r->cell_of = malloc((size_t)n * sizeof *r->cell_of);
@@ -351,18 +351,28 @@ int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *
                                           "(geometry = line; cross_section = annular for coaxial cylinders)",
                          e->file, e->line, e->value);
     }
+    static const char *const plane_only[] = {"kinetic_pressure", "acceleration"};
+    for (int k = 0; k < 2; ++k) {
+      const sl_ini_entry *kp = sl_ini_find(ini, "two_fluid", plane_only[k]);
+      if (kp)
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: a key of the 2-D model (not of the shear layer)",
+                           kp->file, kp->line, kp->key);
+    }
     return sl_shear_layer_run(ini, reg, o, res, d);
   }
   int geometry = 0;
   rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, d);
   if (rc) return rc;
   /* the column has no solids stress; the 2-D model takes its granular keys */
-  static const char *const not_column[] = {"cross_section", "granular_temperature", "interphase_dissipation"};
+  static const char *const not_column[] = {"cross_section", "granular_temperature", "interphase_dissipation",
+                                           "kinetic_pressure", "acceleration"};
+  static const char *const owner[] = {"the shear layer (motion = shear)",
+                                      "the shear layer (motion = shear) or a 2-D scene with [closure.granular]",
+                                      "the shear layer (motion = shear) or a 2-D scene with [closure.granular]",
+                                      "a 2-D scene with [closure.granular]", "a 2-D scene"};
   for (size_t k = 0; k < (geometry != 0 ? 1 : sizeof not_column / sizeof not_column[0]); ++k) {
     const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", not_column[k]);
-    if (e)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: a key of the shear layer (motion = shear)%s",
-                         e->file, e->line, e->key, k ? " or a 2-D scene with [closure.granular]" : "");
+    if (e) return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: a key of %s", e->file, e->line, e->key, owner[k]);
   }
   if (geometry != 0) return sl_two_fluid_plane_run(ini, reg, o, res, d);
   memset(res, 0, sizeof *res);

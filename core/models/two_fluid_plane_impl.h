@@ -19,6 +19,7 @@
 #include "core/mesh/tensor_grid.h"
 #include "core/models/two_fluid_impl.h"
 #include "core/plugin/point_eval.h"
+#include "core/solve/anderson.h"
 #include "core/solve/linsolve.h"
 
 enum { TFP_WALL = 0, TFP_SLIP, TFP_AXIS, TFP_INLET, TFP_OUTLET, TFP_PERIODIC };
@@ -51,6 +52,7 @@ typedef struct tfp_solids {
   sl_closure *visc_c, *gran_c, *wall_c; /* NULL: not in the scene */
   sl_point_closure visc, gran, wall;
   int granular, algebraic, exchange, wall_function;
+  int kinetic_pressure; /* the granular closure's p_s joins the solids pressure */
   double mu_const;            /* [solid] viscosity */
   double *qv[TFP_Q_N];        /* the constant quantities, per point (corners: more than cells) */
   /* cells [nc]: the viscosity, its tangent mu_s + gdot dmu_s/dgdot (Newton in the shear rate), the shear rate,
@@ -114,6 +116,11 @@ typedef struct tfp_model {
   sl_csr A;
   int pattern_built;
   sl_linsolve *ls;
+  /* Anderson acceleration of the segregated iteration (velocities, then the transported theta): its state,
+     the iterate x and the map's value g over [us (nf), uf (nf), theta (nc)], their scales */
+  int accelerate;
+  sl_anderson acc;
+  double *acc_x, *acc_g, *acc_scale;
   /* counters of the trial step */
   double outflow_trial, transport_cpu;
   long substeps_trial, accepted_substeps, last_substeps;
@@ -171,6 +178,10 @@ int tfp_solids_viscosity(tfp_model *m, const double *us, const double *phi, sl_d
  * (theta_new), from the accepted theta over dt; *change its largest change.
  * Only with granular_temperature = transport. */
 int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d);
+
+/* Adds the kinetic theory's solids pressure (kinetic and collisional, at
+ * the cells' theta of the iterate) and its phi derivative to ps, dps. */
+int tfp_solids_pressure(tfp_model *m, const double *phi, double *ps, double *dps, sl_diag *d);
 
 /* The wall's resistance to the solids at face f's end `end` (a wall with
  * solids = wall_stress), per unit wall area, as R0 + dR (u - u0) in the

@@ -73,7 +73,7 @@ void tfp_solids_free(tfp_solids *s) {
 }
 
 /* The kinetic scaling the algebraic theta relies on: mu_s ~ sqrt(theta),
- * gamma ~ theta^1.5 at fixed phi. */
+ * gamma ~ theta^1.5 (and p_s ~ theta, when it is used) at fixed phi. */
 static int check_kinetic_scaling(tfp_model *m, sl_ini *ini, sl_diag *d) {
   tfp_solids *s = &m->s;
   double th[2] = {1.0, 4.0}, ph[2], mu[2], g[2], one[TFP_Q_N];
@@ -83,14 +83,15 @@ static int check_kinetic_scaling(tfp_model *m, sl_ini *ini, sl_diag *d) {
   double pair[TFP_Q_N][2];
   for (int k = 0; k < TFP_Q_N; ++k) pair[k][0] = pair[k][1] = one[k], v[k] = pair[k];
   v[TFP_Q_PHI] = ph, v[TFP_Q_THETA] = th;
-  sl_point_request rq[2] = {{"mu_s", mu, NULL, NULL}, {"gamma", g, NULL, NULL}};
-  int rc = sl_point_eval(&s->gran, 2, v, rq, 2, d);
+  double ps[2] = {1.0, 4.0};
+  sl_point_request rq[3] = {{"mu_s", mu, NULL, NULL}, {"gamma", g, NULL, NULL}, {"p_s", ps, NULL, NULL}};
+  int rc = sl_point_eval(&s->gran, 2, v, rq, s->kinetic_pressure ? 3 : 2, d);
   if (rc) return rc;
-  if (fabs(mu[1] / mu[0] - 2.0) > 1e-9 || fabs(g[1] / g[0] - 8.0) > 1e-9) {
+  if (fabs(mu[1] / mu[0] - 2.0) > 1e-9 || fabs(g[1] / g[0] - 8.0) > 1e-9 || fabs(ps[1] / ps[0] - 4.0) > 1e-9) {
     const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", "granular_temperature");
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature = algebraic needs a kinetic closure "
-                                        "(mu_s ~ theta^0.5, gamma ~ theta^1.5); [closure.granular] is not one",
-                       e ? e->file : "", e ? e->line : 0);
+                                        "(mu_s ~ theta^0.5, gamma ~ theta^1.5%s); [closure.granular] is not one",
+                       e ? e->file : "", e ? e->line : 0, s->kinetic_pressure ? ", p_s ~ theta" : "");
   }
   return 0;
 }
@@ -138,13 +139,31 @@ int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *
         return sl_diag_set(d, SL_EBADINPUT, "[closure.granular]: the 2-D model needs mu_s, gamma%s of (phi, "
                                             "theta); this closure gives no %s", s->algebraic ? "" : " and kappa",
                            need[k]);
+    /* the kinetic pressure by default with a transported theta only: the algebraic theta follows the shear rate
+       at once, as (gdot d)^2, and from an impulsive start (kinetic_shear, bagnold_shear) its pressure in the
+       walls' cells kept the iteration from converging at any time step */
+    int has_ps = sl_point_has_output(&s->gran, "p_s");
+    if ((rc = sl_ini_get_bool(ini, "two_fluid", "kinetic_pressure", 0, has_ps && !s->algebraic, &s->kinetic_pressure,
+                              d)))
+      return rc;
+    if (s->kinetic_pressure && !has_ps) {
+      const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", "kinetic_pressure");
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] kinetic_pressure = true: [closure.granular] gives no p_s",
+                         e->file, e->line);
+    }
     if (s->algebraic && (rc = check_kinetic_scaling(m, ini, d))) return rc;
   } else {
-    const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", "interphase_dissipation");
-    if (e)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] interphase_dissipation: needs [closure.granular]",
-                         e->file, e->line);
+    static const char *const keys[] = {"interphase_dissipation", "kinetic_pressure"};
+    for (int k = 0; k < 2; ++k) {
+      const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", keys[k]);
+      if (e)
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: needs [closure.granular]", e->file, e->line,
+                           keys[k]);
+    }
   }
+  /* Anderson acceleration: the default with a kinetic theory (see tfp_step) */
+  if ((rc = sl_ini_get_choice(ini, "two_fluid", "acceleration", 0, s->granular, "none|anderson", &m->accelerate, d)))
+    return rc;
   int any_stress = 0;
   for (int f = 0; f < 2 * m->nf; ++f)
     any_stress |= m->end_wall[f] >= 0 && m->b[m->end_wall[f]].solids == TFP_SOLIDS_WALL_STRESS;
@@ -418,6 +437,26 @@ int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
     s->theta_new[c] = th;
   }
   *change = ch;
+  return 0;
+}
+
+int tfp_solids_pressure(tfp_model *m, const double *phi, double *ps, double *dps, sl_diag *d) {
+  tfp_solids *s = &m->s;
+  if (!s->granular || !s->kinetic_pressure) return 0;
+  const double *v[TFP_Q_N];
+  for (int k = 0; k < TFP_Q_N; ++k) v[k] = s->qv[k];
+  for (int c = 0; c < m->nc; ++c) s->th_old[c] = fmax(s->theta_new[c], THETA_FLOOR);
+  /* the algebraic theta of an iterate may leave the closure's range (a wall started impulsively shears its
+     cell at U / (h/2)): p_s ~ theta is evaluated at theta = 1 and scaled (checked at set-up) */
+  v[TFP_Q_PHI] = phi, v[TFP_Q_THETA] = s->algebraic ? s->one : s->th_old;
+  v[TFP_Q_SHEAR_RATE] = s->gdot, v[TFP_Q_DENSITY] = s->rho;
+  sl_point_request rq = {"p_s", s->mum, s->gam, "phi"};
+  int rc = sl_point_eval(&s->gran, m->nc, v, &rq, 1, d);
+  if (rc) return sl_diag_prefix(d, rc, "[closure.granular] p_s");
+  for (int c = 0; c < m->nc; ++c) {
+    double scale = s->algebraic ? s->th_old[c] : 1.0;
+    ps[c] += scale * s->mum[c], dps[c] += scale * s->gam[c];
+  }
   return 0;
 }
 

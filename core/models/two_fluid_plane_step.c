@@ -45,6 +45,8 @@ enum { FREEZE_PHI_AFTER = 8 };
  * suspension overturns when its weight lags (N dt > 1), but a bed blown out at many cells a step can leave
  * the iteration without a fixed point, and after this many iterations it too takes the step's start. */
 enum { FREEZE_WEIGHT_AFTER = 20 };
+/* Differences kept by the Anderson acceleration of the iteration (see acceleration_start). */
+enum { ANDERSON_DEPTH = 5 };
 
 /* ---- geometry --------------------------------------------------------------- */
 
@@ -159,7 +161,7 @@ void tfp_free(tfp_model *m) {
   double *all[] = {m->xc,  m->yc,  m->hx,     m->hy,     m->vol,    m->area,  m->dist,  m->phi,  m->p,
                    m->uf,  m->us,  m->phi_new, m->p_new, m->uf_new, m->us_new, m->phf, m->phg,  m->w,    m->K,
                    m->dK,  m->slip, m->sn,    m->ps,     m->dps,    m->flux,  m->alpha, m->inflow, m->x,
-                   m->rhs, m->tval, m->end_u, m->end_us, m->wall_stats};
+                   m->rhs, m->tval, m->end_u, m->end_us, m->wall_stats, m->acc_x, m->acc_g, m->acc_scale};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   int *ia[] = {m->lo, m->hi, m->ftype, m->fbound, m->us_row, m->uf_row, m->tan_noslip, m->end_wall, m->trow, m->tcol, m->tpos, m->prow, m->pcol};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k) free(ia[k]);
@@ -167,6 +169,7 @@ void tfp_free(tfp_model *m) {
   sl_linsolve_destroy(m->ls);
   sl_tensor_grid_free(&m->grid);
   tfp_solids_free(&m->s);
+  if (m->acc.n) sl_anderson_free(&m->acc);
 }
 
 double tfp_inventory(const tfp_model *m, const double *phi) {
@@ -379,6 +382,7 @@ static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_
   } else {
     memset(m->ps, 0, (size_t)m->nc * sizeof *m->ps), memset(m->dps, 0, (size_t)m->nc * sizeof *m->dps);
   }
+  if ((rc = tfp_solids_pressure(m, phi, m->ps, m->dps, d))) return rc; /* the kinetic theory's, added */
   for (int c = 0; c < m->nc; ++c) m->dps[c] = fmax(m->dps[c], 0.0); /* a softening law would be unstable */
   for (int f = 0; f < m->nf; ++f) { /* the transport's upwind phi of the iterate */
     double lo = m->lo[f] >= 0 ? phi[m->lo[f]] : 0.0, hi = m->hi[f] >= 0 ? phi[m->hi[f]] : 0.0;
@@ -591,6 +595,65 @@ static int wall_stresses(tfp_model *m, sl_diag *d) {
 
 /* ---- one step ------------------------------------------------------------------------ */
 
+/* Anderson acceleration of the iteration (`[two_fluid] acceleration`,
+ * default anderson with a kinetic theory). Parts of the step are lagged
+ * by one iteration: a transported theta is solved after the velocities,
+ * holding them; the wall's slip under a wall stress is found in the
+ * assembly from the last iterate's viscosity; an algebraic theta follows
+ * the last shear rate. That iteration converged linearly at best (Johnson
+ * & Jackson's planar shear with the transported theta: a rate of 0.7, theta
+ * oscillating, 52 iterations a step and half the steps rejected) or fell
+ * into a cycle (the same with the algebraic theta, and Navier slip with
+ * Lun's theory: no step from rest). The map iterate -> next iterate is
+ * accelerated over all it carries from one iteration to the next, [us, uf,
+ * theta, the walls' slip velocities, phi], each scaled by its magnitude;
+ * phi so accelerated is an affine combination of transported fields (its
+ * inventory kept), and a converged step ends on the map's own value. */
+static int acceleration_start(tfp_model *m, sl_diag *d) {
+  const int n = 4 * m->nf + 2 * m->nc;
+  if (!m->acc.n) {
+    int rc = sl_anderson_init(&m->acc, n, ANDERSON_DEPTH, d);
+    if (rc) return rc;
+    m->acc_x = malloc((size_t)n * sizeof *m->acc_x), m->acc_g = malloc((size_t)n * sizeof *m->acc_g);
+    m->acc_scale = malloc((size_t)n * sizeof *m->acc_scale);
+    if (!m->acc_x || !m->acc_g || !m->acc_scale) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  }
+  sl_anderson_reset(&m->acc);
+  return 0;
+}
+
+static void pack(const tfp_model *m, double *v) {
+  const size_t nf = (size_t)m->nf;
+  memcpy(v, m->us_new, nf * sizeof *v), memcpy(v + nf, m->uf_new, nf * sizeof *v);
+  memcpy(v + 2 * nf, m->s.theta_new, (size_t)m->nc * sizeof *v);
+  memcpy(v + 2 * nf + (size_t)m->nc, m->end_us, 2 * nf * sizeof *v);
+  memcpy(v + 4 * nf + (size_t)m->nc, m->phi_new, (size_t)m->nc * sizeof *v);
+}
+
+/* The iterate the map starts from; a new map (the iteration's frozen
+ * coefficients change at FREEZE_*_AFTER) starts a new history. */
+static void acceleration_save(tfp_model *m, int it) {
+  if (it == FREEZE_PHI_AFTER + 1 || it == FREEZE_WEIGHT_AFTER + 1) sl_anderson_reset(&m->acc);
+  pack(m, m->acc_x);
+}
+
+static void acceleration_apply(tfp_model *m, double v_scale, double th_scale) {
+  const int nf = m->nf, nc = m->nc;
+  pack(m, m->acc_g);
+  for (int k = 0; k < 2 * nf; ++k) m->acc_scale[k] = v_scale;
+  for (int c = 0; c < nc; ++c) m->acc_scale[2 * nf + c] = th_scale > 0.0 ? th_scale : 1.0;
+  for (int k = 0; k < 2 * nf; ++k) m->acc_scale[2 * nf + nc + k] = v_scale;
+  for (int c = 0; c < nc; ++c) m->acc_scale[4 * nf + nc + c] = m->c.phi_max;
+  sl_anderson_apply(&m->acc, m->acc_x, m->acc_g, m->acc_scale);
+  for (int f = 0; f < nf; ++f)
+    if (m->us_row[f] >= 0) m->us_new[f] = m->acc_g[f], m->uf_new[f] = m->acc_g[nf + f];
+  /* theta stays positive: at most a fivefold fall from the map's value */
+  for (int c = 0; c < nc; ++c) m->s.theta_new[c] = fmax(m->acc_g[2 * nf + c], 0.2 * m->s.theta_new[c]);
+  memcpy(m->end_us, m->acc_g + 2 * nf + nc, 2 * (size_t)nf * sizeof *m->end_us);
+  /* phi is an affine combination of the transport's (so conserved); the next iteration's transport bounds it */
+  for (int c = 0; c < nc; ++c) m->phi_new[c] = fmin(fmax(m->acc_g[4 * nf + nc + c], 0.0), m->c.phi_max);
+}
+
 int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
   const int nf = m->nf, nc = m->nc;
   int rc = tfp_boundary_values(m, t + dt, m->phi, d);
@@ -602,8 +665,11 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
   m->substeps_trial = 0, m->iterations_trial = 0;
   double out = 0.0, change = 0.0, umax = 0.0;
   if ((rc = tfp_transport(m, m->us_new, dt, m->phi_new, &out, d))) return rc;
+  const int accelerate = m->accelerate;
+  if (accelerate && (rc = acceleration_start(m, d))) return rc;
   for (int it = 1; it <= m->c.max_iterations; ++it) {
     m->iterations_trial = it;
+    if (accelerate) acceleration_save(m, it);
     m->phi_frozen = it > FREEZE_WEIGHT_AFTER;
     m->sink_frozen = it > FREEZE_PHI_AFTER;
     if ((rc = closures(m, it > FREEZE_PHI_AFTER ? m->phi : m->phi_new, m->phi_new, d))) return rc;
@@ -627,7 +693,11 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
       if ((rc = tfp_theta_solve(m, dt, &dth, d))) return rc;
       for (int c = 0; c < nc; ++c) th_scale = fmax(th_scale, m->s.theta_new[c]);
     }
-    if (change <= m->c.tolerance * fmax(m->c.v_ref, umax) && dth <= m->c.tolerance * th_scale) {
+    int converged = change <= m->c.tolerance * fmax(m->c.v_ref, umax) && dth <= m->c.tolerance * th_scale;
+    if (!converged && accelerate) {
+      acceleration_apply(m, fmax(m->c.v_ref, umax), th_scale);
+    }
+    if (converged) {
       m->outflow_trial = out;
       if ((rc = wall_stresses(m, d))) return rc;
       /* the inlet's u_f with the new phi of its cell */
