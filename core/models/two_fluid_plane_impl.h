@@ -53,6 +53,7 @@ typedef struct tfp_solids {
   sl_point_closure visc, gran, wall;
   int granular, algebraic, exchange, wall_function;
   int kinetic_pressure; /* the granular closure's p_s joins the solids pressure */
+  int wall_energy;      /* the wall closure's theta_flux enters the transported theta through the walls */
   double mu_const;            /* [solid] viscosity */
   double *qv[TFP_Q_N];        /* the constant quantities, per point (corners: more than cells) */
   /* cells [nc]: the viscosity, its tangent mu_s + gdot dmu_s/dgdot (Newton in the shear rate), the shear rate,

@@ -176,6 +176,7 @@ int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *
       return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: the 2-D model gives a wall closure no shear_rate "
                                           "(its slip_wall and wall_distance give the wall's shear rate)");
     s->wall_function = sl_point_has_input(&s->wall, "wall_distance");
+    s->wall_energy = s->granular && !s->algebraic && sl_point_has_output(&s->wall, "theta_flux");
     if (!any_stress)
       return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: no wall uses it (set solids = wall_stress in a "
                                           "[boundary.NAME] of type wall)");
@@ -372,6 +373,45 @@ int tfp_solids_viscosity(tfp_model *m, const double *us, const double *phi, sl_d
   return 0;
 }
 
+/* The granular energy entering cell c through the walls with solids =
+ * wall_stress on its sides (cf its four faces), per the wall closure's
+ * theta_flux q(phi, theta, slip) (Johnson & Jackson 1987: the slip's
+ * heating less the inelastic wall collisions' loss), added to the cell's
+ * equation as rhs += A (q - q' theta_old), diag -= A q' with q' = dq/dtheta
+ * only where it is a sink (the heating's theta^1/2 has an unbounded
+ * derivative at theta = 0), as the shear layer does. The slip is that at
+ * the wall of the two faces along it (their mean flux), phi and theta the
+ * cell's. */
+static int wall_energy(tfp_model *m, int c, const int cf[4], double *rhs, double *diag, sl_diag *d) {
+  tfp_solids *s = &m->s;
+  for (int dir = 0; dir < 2; ++dir)
+    for (int side = 0; side < 2; ++side) {
+      if (tfp_neighbour(m, c, dir, side) >= 0) continue;
+      double q_sum = 0.0, dq_sum = 0.0;
+      int n = 0;
+      for (int t = 0; t < 2; ++t) { /* the faces along the wall: x-faces along a bottom or top, y-faces along a side */
+        int ft = tfp_primary(m, cf[2 * (1 - dir) + t]), e = 2 * ft + side, b = m->end_wall[e];
+        if (b < 0 || m->b[b].solids != TFP_SOLIDS_WALL_STRESS) continue;
+        double one[TFP_Q_N], q, dq;
+        const double *v[TFP_Q_N];
+        for (int k = 0; k < TFP_Q_N; ++k) one[k] = s->qv[k][0], v[k] = &one[k];
+        one[TFP_Q_PHI] = m->phi_new[c], one[TFP_Q_THETA] = s->th_old[c];
+        one[TFP_Q_SLIP_WALL] = one[TFP_Q_SLIP] = fabs(m->end_us[e] - m->end_u[e]);
+        one[TFP_Q_WALL_DISTANCE] = 0.5 * (dir ? m->hy[c / m->nx] : m->hx[c % m->nx]);
+        one[TFP_Q_SHEAR_RATE] = s->gdot[c], one[TFP_Q_DENSITY] = s->rho[c];
+        sl_point_request rq = {"theta_flux", &q, &dq, "theta"};
+        int rc = sl_point_eval(&s->wall, 1, v, &rq, 1, d);
+        if (rc) return sl_diag_prefix(d, rc, "[closure.wall_stress] theta_flux in cell (%d, %d)", c % m->nx, c / m->nx);
+        q_sum += q, dq_sum += fmin(dq, 0.0), ++n;
+      }
+      if (!n) continue;
+      double A = m->area[cf[2 * dir + side]] / n;
+      *rhs += A * (q_sum - dq_sum * s->th_old[c]);
+      *diag -= A * dq_sum;
+    }
+  return 0;
+}
+
 /* The transported granular temperature (`granular_temperature = transport`)
  * of the iterate, cell by cell, as the shear layer's (shear_layer.h; Krampa
  * 2009 eq 5.10 in the standard form of its digest, section 2.5):
@@ -380,8 +420,10 @@ int tfp_solids_viscosity(tfp_model *m, const double *us, const double *phi, sl_d
  * gamma(theta); kappa, mu_k (whose theta derivative, negative on the
  * diagonal and unbounded at theta = 0, would take Newton to theta = 0) and K
  * from the last iterate; the shear rate of the velocities just solved. The
- * walls are adiabatic; there is no convection of theta (the model's
- * momentum has none either). *change: the largest change of theta. */
+ * walls with solids = wall_stress pass the wall closure's theta_flux
+ * (wall_energy), the others are adiabatic; there is no convection of theta
+ * (the model's momentum has none either). *change: the largest change of
+ * theta. */
 int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
   tfp_solids *s = &m->s;
   const int nc = m->nc;
@@ -421,6 +463,7 @@ int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
         diag += k;
         A->values[sl_csr_find(A, c, nb)] -= k;
       }
+    if (s->wall_energy && (rc = wall_energy(m, c, cf, &s->th_rhs[c], &diag, d))) return rc;
     A->values[sl_csr_find(A, c, c)] += diag;
   }
   sl_csr_touch(A);
