@@ -375,6 +375,14 @@ int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *
     if (e) return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: a key of %s", e->file, e->line, e->key, owner[k]);
   }
   if (geometry != 0) return sl_two_fluid_plane_run(ini, reg, o, res, d);
+  int convection = 0;
+  if ((rc = sl_ini_get_bool(ini, "flow", "convection", 0, 0, &convection, d))) return rc;
+  if (convection) {
+    const sl_ini_entry *cv = sl_ini_find(ini, "flow", "convection");
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [flow] convection: the 1-D column has no convective acceleration "
+                                        "(the 2-D model takes it: geometry = planar or axisymmetric)",
+                       cv->file, cv->line);
+  }
   memset(res, 0, sizeof *res);
   tf_run r = {.ini = ini, .res = res};
   double c0 = cpu_now();

@@ -401,6 +401,8 @@ int sl_two_fluid_plane_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_
   if (!rc) r.m.n_b = r.mesh->n_boundaries;
   if (!rc) rc = tfp_setup(&r.m, d);
   if (!rc) rc = tfp_solids_bind(&r.m, ini, reg, d);
+  /* the phases' convective acceleration, off by default as in the 1-D column (which has none) */
+  if (!rc) rc = sl_ini_get_bool(ini, "flow", "convection", 0, 0, &r.m.convection, d);
   if (!rc && !(r.cellbuf = calloc(2 * (size_t)r.m.nc, sizeof *r.cellbuf)))
     rc = sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
   if (!rc) rc = initial_state(&r, d);

@@ -77,6 +77,7 @@ typedef struct tfp_model {
   int nx, ny, nc, nfx, nf;
   int axi;
   int periodic[2]; /* periodic along x, along y */
+  int convection;  /* [flow] convection: the phases' rho alpha (u . grad) u */
   double g[2];
   tfp_solids s;
   tf_column c; /* the physics, the closures and the numerical keys (its column geometry is unused) */

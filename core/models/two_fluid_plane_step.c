@@ -349,6 +349,106 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, s
   return 0;
 }
 
+/* rho alpha (a . grad) u of the phase's normal velocity u at face f, times
+ * its dual volume (rho_alpha_V), added to row: the advective form, a the
+ * phase's velocity of the last iterate (Picard), its tangential component
+ * the mean of the four faces of the other family around f; differences
+ * between the neighbouring faces of f's family (one-sided at an outlet), a
+ * wall's velocity half a cell off (its speed where the phase sticks, the
+ * solids' slip velocity under a wall stress, f's own where the phase slips
+ * freely). Axisymmetric, without swirl, the form is the same. The fluid's
+ * differences are central (second order); the solids' are upwind: their
+ * velocity jumps at a bed's surface, and central differences there
+ * oscillated, lifted solids into the freeboard and blew fluidized_bed_2d's
+ * first step up (solids at 400 m/s by its 9th iteration). */
+/* The weights of a b du/ds at a point between neighbours at distances h[0]
+ * behind and h[1] ahead: central, or upwind (the neighbour the flow comes
+ * from); w[0], w[1] the neighbours', w[2] the point's own. */
+static void difference_weights(double ab, const double h[2], int upwind, double w[3]) {
+  if (!upwind) w[0] = -ab / (h[0] + h[1]), w[1] = -w[0], w[2] = 0.0;
+  else if (ab >= 0.0) w[0] = -ab / h[0], w[1] = 0.0, w[2] = ab / h[0];
+  else w[0] = 0.0, w[1] = ab / h[1], w[2] = -ab / h[1];
+}
+
+static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_V, int upwind) {
+  const int nx = m->nx, ny = m->ny, dir = face_dir(m, f);
+  const int *rows = phase ? m->us_row : m->uf_row;
+  const double *un = phase ? m->us_new : m->uf_new;
+  const int lo = m->lo[f], hi = m->hi[f];
+  int rc = 0;
+  /* an entry coef u_g of face g: its unknown, or its given value */
+  #define TERM(g, coef) ((rows[g] >= 0) ? add(m, row, rows[g], (coef)) : (m->rhs[row] -= (coef) * un[g], 0))
+  /* along the normal: the same family's faces beyond the cells lo and hi */
+  {
+    int nb[2] = {-1, -1};
+    double h[2] = {0.0, 0.0};
+    for (int side = 0; side < 2; ++side) {
+      int c = side ? hi : lo;
+      if (c < 0) continue;
+      int cf[4];
+      cell_faces(m, c, cf);
+      nb[side] = cf[2 * dir + side], h[side] = dir == 0 ? m->hx[c % nx] : m->hy[c / nx];
+    }
+    double an = un[f];
+    if (nb[0] >= 0 && nb[1] >= 0) {
+      double w[3];
+      difference_weights(rho_alpha_V * an, h, upwind, w);
+      rc |= TERM(nb[0], w[0]), rc |= TERM(nb[1], w[1]), rc |= add(m, row, row, w[2]);
+    } else { /* an outlet: one-sided, into the vessel */
+      int in = nb[0] >= 0 ? 0 : 1;
+      double k = rho_alpha_V * an / h[in] * (in ? 1.0 : -1.0);
+      rc |= TERM(nb[in], k), rc |= add(m, row, row, -k);
+    }
+  }
+  /* across: the tangential velocity, and the same family's faces in the neighbouring rows (x-faces) or columns */
+  {
+    double at = 0.0;
+    int nt = 0;
+    for (int side = 0; side < 2; ++side) {
+      int c = side ? hi : lo;
+      if (c < 0) continue;
+      int cf[4];
+      cell_faces(m, c, cf);
+      at += un[cf[2 * (1 - dir)]] + un[cf[2 * (1 - dir) + 1]], nt += 2;
+    }
+    at /= nt;
+    int i, j;
+    if (dir == 0) i = f % (nx + 1), j = f / (nx + 1);
+    else i = (f - m->nfx) % nx, j = (f - m->nfx) / nx;
+    int n_across = dir == 0 ? ny : nx, a = dir == 0 ? j : i;
+    const double *hs = dir == 0 ? m->hy : m->hx, *cs = dir == 0 ? m->yc : m->xc;
+    int g[2];
+    double dist[2], wall_value[2];
+    for (int end = 0; end < 2; ++end) {
+      int to = end ? a + 1 : a - 1;
+      g[end] = -1;
+      if (to < 0 || to >= n_across) {
+        if (m->periodic[1 - dir]) to = (to + n_across) % n_across;
+        else { /* a wall (or an open side) half a cell off */
+          int e = 2 * f + end;
+          dist[end] = 0.5 * hs[a];
+          if (m->tan_noslip[4 * f + 2 * phase + end]) wall_value[end] = m->end_u[e];
+          else if (phase == 1 && m->end_wall[e] >= 0 && m->b[m->end_wall[e]].solids == TFP_SOLIDS_WALL_STRESS)
+            wall_value[end] = m->end_us[2 * tfp_primary(m, f) + end];
+          else g[end] = f; /* free slip: no gradient across */
+          continue;
+        }
+      }
+      g[end] = dir == 0 ? i + (nx + 1) * to : m->nfx + to + nx * j;
+      dist[end] = to == a + (end ? 1 : -1) ? fabs(cs[to] - cs[a]) : 0.5 * (hs[a] + hs[to]);
+    }
+    double w[3];
+    difference_weights(rho_alpha_V * at, dist, upwind, w);
+    rc |= add(m, row, row, w[2]);
+    for (int end = 0; end < 2; ++end) {
+      if (g[end] >= 0) rc |= TERM(g[end], w[end]);
+      else m->rhs[row] -= w[end] * wall_value[end];
+    }
+  }
+  #undef TERM
+  return rc;
+}
+
 /* Drag and solids pressure at the iterate: K, dK/d|s| and the normal slip at
  * every face, P_s and dP_s/dphi in the cells. */
 static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_diag *d) {
@@ -485,6 +585,10 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
         rc |= add(m, rs, m->us_row[gface], coef);
         m->rhs[rs] += coef * m->us_new[gface];
       }
+    }
+    if (m->convection) {
+      rc |= convection(m, 0, f, rf, V * eps * rho_f, 0);
+      rc |= convection(m, 1, f, rs, V * ph * rho_s, 1);
     }
     if (rc) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
     if ((rc = viscous(m, 0, f, rf, m->phi_new, d))) return rc;
