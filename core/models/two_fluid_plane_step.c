@@ -349,6 +349,15 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, s
   return 0;
 }
 
+/* The weights of a b du/ds at a point between neighbours at distances h[0]
+ * behind and h[1] ahead: central, or upwind (the neighbour the flow comes
+ * from); w[0], w[1] the neighbours', w[2] the point's own. */
+static void difference_weights(double ab, const double h[2], int upwind, double w[3]) {
+  if (!upwind) w[0] = -ab / (h[0] + h[1]), w[1] = -w[0], w[2] = 0.0;
+  else if (ab >= 0.0) w[0] = -ab / h[0], w[1] = 0.0, w[2] = ab / h[0];
+  else w[0] = 0.0, w[1] = ab / h[1], w[2] = -ab / h[1];
+}
+
 /* rho alpha (a . grad) u of the phase's normal velocity u at face f, times
  * its dual volume (rho_alpha_V), added to row: the advective form, a the
  * phase's velocity of the last iterate (Picard), its tangential component
@@ -361,15 +370,6 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, s
  * velocity jumps at a bed's surface, and central differences there
  * oscillated, lifted solids into the freeboard and blew fluidized_bed_2d's
  * first step up (solids at 400 m/s by its 9th iteration). */
-/* The weights of a b du/ds at a point between neighbours at distances h[0]
- * behind and h[1] ahead: central, or upwind (the neighbour the flow comes
- * from); w[0], w[1] the neighbours', w[2] the point's own. */
-static void difference_weights(double ab, const double h[2], int upwind, double w[3]) {
-  if (!upwind) w[0] = -ab / (h[0] + h[1]), w[1] = -w[0], w[2] = 0.0;
-  else if (ab >= 0.0) w[0] = -ab / h[0], w[1] = 0.0, w[2] = ab / h[0];
-  else w[0] = 0.0, w[1] = ab / h[1], w[2] = -ab / h[1];
-}
-
 static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_V, int upwind) {
   const int nx = m->nx, ny = m->ny, dir = face_dir(m, f);
   const int *rows = phase ? m->us_row : m->uf_row;
@@ -754,7 +754,8 @@ static void acceleration_apply(tfp_model *m, double v_scale, double th_scale) {
   /* theta stays positive: at most a fivefold fall from the map's value */
   for (int c = 0; c < nc; ++c) m->s.theta_new[c] = fmax(m->acc_g[2 * nf + c], 0.2 * m->s.theta_new[c]);
   memcpy(m->end_us, m->acc_g + 2 * nf + nc, 2 * (size_t)nf * sizeof *m->end_us);
-  /* phi is an affine combination of the transport's (so conserved); the next iteration's transport bounds it */
+  /* phi, an affine combination of transported fields (its inventory kept), is what the next iteration's
+     closures and weight read; that iteration's transport then replaces it */
   for (int c = 0; c < nc; ++c) m->phi_new[c] = fmin(fmax(m->acc_g[4 * nf + nc + c], 0.0), m->c.phi_max);
 }
 
