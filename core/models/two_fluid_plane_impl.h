@@ -118,8 +118,9 @@ typedef struct tfp_model {
   sl_csr A;
   int pattern_built;
   sl_linsolve *ls;
-  /* Anderson acceleration of the segregated iteration (velocities, then the transported theta): its state,
-     the iterate x and the map's value g over [us (nf), uf (nf), theta (nc)], their scales */
+  /* Anderson acceleration of the step's iteration (two_fluid_plane_step.c): its state, the iterate x and the
+     map's value g over [us (nf), uf (nf), theta (nc), the walls' solids velocities end_us (2 nf), phi (nc)], and
+     their scales */
   int accelerate;
   sl_anderson acc;
   double *acc_x, *acc_g, *acc_scale;

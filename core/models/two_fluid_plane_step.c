@@ -145,7 +145,7 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
   int n = 0;
   for (int f = 0; f < m->nf; ++f) {
     if (m->ftype[f] == TFP_FACE_IMAGE) { /* the first face of its row or column: already numbered */
-      int first = f < m->nfx ? f - nx : f - nx * ny;
+      int first = tfp_primary(m, f);
       m->us_row[f] = m->us_row[first], m->uf_row[f] = m->uf_row[first];
       continue;
     }

@@ -349,28 +349,35 @@ static double kinetic_pressure_spread(const char *file, double *phi_spread, doub
   return n > 0 && n == nt ? (hi - lo) / hi : NAN;
 }
 
+/* The two walls' solids and fluid stresses and solids slips of the last frame of `file` (bottom, top) into
+ * v[6] = {tau_s bottom, tau_s top, tau_f bottom, tau_f top, slip bottom, slip top}, and the checks of steady
+ * Couette flow between them: slips positive below max_slip, slips and solids stresses opposite, the four
+ * stresses balanced, all to rtol. */
+static void wall_pair(const char *file, double max_slip, double rtol, double v[6]) {
+  static const char *const names[6] = {"wall_shear_stress_solid_bottom", "wall_shear_stress_solid_top",
+                                       "wall_shear_stress_fluid_bottom", "wall_shear_stress_fluid_top",
+                                       "wall_slip_bottom",               "wall_slip_top"};
+  for (int q = 0; q < 6; ++q) v[q] = scalar(file, names[q], INFINITY);
+  CHECK(v[4] > 0.0 && v[4] < max_slip);
+  CHECK_CLOSE(v[5], -v[4], rtol);
+  CHECK_CLOSE(v[1], -v[0], rtol);
+  CHECK_MSG(fabs(v[0] + v[1] + v[2] + v[3]) < rtol * (v[0] + v[2]), "force balance: %.3e", v[0] + v[1] + v[2] + v[3]);
+}
+
 static void johnson_jackson_shear(void) {
   const char *frames[3][4] = {{"boundary.bottom.velocity=0", "boundary.top.velocity=1", NULL, NULL},
                               {"boundary.bottom.velocity=-0.5", "boundary.top.velocity=0.5", NULL, NULL},
                               {"boundary.bottom.velocity=0", "boundary.top.velocity=1",
                                "two_fluid.kinetic_pressure=false", NULL}};
   double v[3][6];
-  static const char *const names[6] = {"wall_shear_stress_solid_bottom", "wall_shear_stress_solid_top",
-                                       "wall_shear_stress_fluid_bottom", "wall_shear_stress_fluid_top",
-                                       "wall_slip_bottom",               "wall_slip_top"};
   for (int k = 0; k < 3; ++k) {
     if (run_ok("two_fluid_2d/johnson_jackson_shear", NULL, NULL, frames[k], "jj_shear.h5")) return;
-    for (int q = 0; q < 6; ++q) v[k][q] = scalar("jj_shear.h5", names[q], INFINITY);
+    wall_pair("jj_shear.h5", 1.0, 1e-7, v[k]);
     double phi_spread, phi_mean, ps_spread = kinetic_pressure_spread("jj_shear.h5", &phi_spread, &phi_mean);
     printf("johnson_jackson_shear, %s, %s%s%s: solids slip %.8g, %.8g m/s; stresses solids %.8g, %.8g, fluid %.8g, "
            "%.8g Pa; phi spread %.4f, mean %.15f; kinetic p_s spread %.2e\n", frames[k][0], frames[k][1],
            frames[k][2] ? ", " : "", frames[k][2] ? frames[k][2] : "", v[k][4], v[k][5], v[k][0], v[k][1], v[k][2],
            v[k][3], phi_spread, phi_mean, ps_spread);
-    CHECK(v[k][4] > 0.0 && v[k][4] < 1.0);
-    CHECK_CLOSE(v[k][5], -v[k][4], 1e-7);
-    CHECK_CLOSE(v[k][1], -v[k][0], 1e-7);
-    CHECK_MSG(fabs(v[k][0] + v[k][1] + v[k][2] + v[k][3]) < 1e-7 * (v[k][0] + v[k][2]), "force balance: %.3e",
-              v[k][0] + v[k][1] + v[k][2] + v[k][3]);
     CHECK_MSG(fabs(phi_mean - 0.4) < 1e-12, "solids conserved: mean phi %.15f", phi_mean);
     if (k < 2) {
       /* the kinetic pressure moves the solids until the normal stress is uniform across the gap (no gravity, no
@@ -435,20 +442,12 @@ static void navier_kinetic_shear(void) {
   const char *frames[2][4] = {{"closure.granular.model=lun", "boundary.top.velocity=0.1", NULL, NULL},
                               {"closure.granular.model=lun", "boundary.bottom.velocity=-0.05",
                                "boundary.top.velocity=0.05", NULL}};
-  static const char *const names[6] = {"wall_shear_stress_solid_bottom", "wall_shear_stress_solid_top",
-                                       "wall_shear_stress_fluid_bottom", "wall_shear_stress_fluid_top",
-                                       "wall_slip_bottom",               "wall_slip_top"};
   double v[2][6];
   for (int k = quick ? 1 : 0; k < 2; ++k) {
     if (run_ok("two_fluid_2d/couette_slip", NULL, NULL, frames[k], "navier_kinetic.h5")) return;
-    for (int q = 0; q < 6; ++q) v[k][q] = scalar("navier_kinetic.h5", names[q], INFINITY);
+    wall_pair("navier_kinetic.h5", 0.1, 1e-9, v[k]);
     printf("couette_slip with Lun's theory, %s: solids slip %.10g, %.10g m/s; stresses solids %.10g, %.10g, fluid "
            "%.10g, %.10g Pa\n", frames[k][1], v[k][4], v[k][5], v[k][0], v[k][1], v[k][2], v[k][3]);
-    CHECK(v[k][4] > 0.0 && v[k][4] < 0.1);
-    CHECK_CLOSE(v[k][5], -v[k][4], 1e-9);
-    CHECK_CLOSE(v[k][1], -v[k][0], 1e-9);
-    CHECK_MSG(fabs(v[k][0] + v[k][1] + v[k][2] + v[k][3]) < 1e-9 * (v[k][0] + v[k][2]), "force balance: %.3e",
-              v[k][0] + v[k][1] + v[k][2] + v[k][3]);
   }
   if (!quick)
     for (int q = 0; q < 6; ++q) CHECK_CLOSE(v[1][q], v[0][q], 1e-8);
