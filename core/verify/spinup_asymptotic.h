@@ -69,7 +69,7 @@ static inline double spinup_alpha(const spinup_theory *s, double r, double z, do
   const int steps = 2000;
   spinup_characteristic(s, tau0, hi, tau, steps, &re, &a);
   if (r > re) return NAN;
-  for (int it = 0; it < 60 && hi - lo > 1e-14; ++it) {
+  for (int it = 0; it < 60 && hi - lo > 1e-12; ++it) {
     double mid = 0.5 * (lo + hi);
     spinup_characteristic(s, tau0, mid, tau, steps, &re, &a);
     if (re < r)
