@@ -21,12 +21,13 @@
  * every cell after 1600 revolutions, the swirl within 0.01 of the digest's
  * table, and the mean fraction conserved to round-off. migration_poiseuille
  * (a pipe slice periodic along its axis) against eq 4.210 the same way.
- * boycott (a vessel inclined 45 degrees, coarse 12 x 16 mesh,
+ * boycott (a vessel inclined 45 degrees, the scene's 24 x 32 mesh,
  * core/verify/boycott_pnk.h): the front falls more than 1.6 times as fast
  * as in an upright vessel, above PNK's z_F; the clear fluid is PNK's
- * production law (with the run's own front) within 5 %, and the front is
- * PNK's with the Boycott layer's volume counted (Nigam 4.117) within 0.02
- * at t = 0.2 and 0.3; the stream function is zero on all walls. spinup
+ * production law (with the run's own front) within 5 %; the part not above
+ * the front is the Boycott layer's volume (Nigam 4.117) within 30 %, and
+ * the front PNK's with that volume counted within 0.03, at t = 0.2 and 0.3;
+ * the stream function is zero on all walls. spinup
  * (light particles in a spinning cylinder, slip along the fluid's
  * acceleration, core/verify/spinup_asymptotic.h): the asymptotic theory
  * against the digest's table, the kinematic shock within 0.03 of it at four
@@ -349,10 +350,10 @@ static void boycott(void) {
                 fabs(boycott_sediment(v, 0.3) - 0.0320) < 1e-4,
             "A %.6f, z_F(0.3) %.4f, S_s(0.3) %.4f", boycott_A(v), boycott_pnk_front(v, 0.3), boycott_sediment(v, 0.3));
   const char *out = "boycott.h5";
-  const char *sets[] = {"mesh.cells=12,16", "time.end=0.3", NULL};
+  const char *sets[] = {"time.end=0.3", NULL}; /* the scene's 24 x 32 mesh, walls refined */
   if (run_ok("boycott", NULL, NULL, sets, out)) return;
   const double A = boycott_A(v);
-  double z_prev = 1.0, produced = 0.0, worst_prod = 0.0, worst_layer = 0.0, t = 0.3, z = NAN;
+  double z_prev = 1.0, produced = 0.0, worst_prod = 0.0, worst_layer = 0.0, worst_volume = 0.0, t = 0.3, z = NAN;
   for (int k = 1; k <= 3; ++k) {
     double tk = 0.1 * k;
     z = scalar(out, "interface_height_0", tk);
@@ -360,26 +361,33 @@ static void boycott(void) {
     produced += 0.05 * (boycott_production_rate(v, z_prev, tk - 0.1) + boycott_production_rate(v, z, tk));
     double clear = clear_volume(out, tk, v->alpha0), z_layer = boycott_front_with_layer(v, tk, 2000);
     double pnk = boycott_pnk_front(v, tk);
+    /* the clear fluid not above the front, against the layer of (4.117) up to the run's front */
+    double layer = clear - boycott_width(v) * (1 - z), layer_theory = boycott_layer_volume(v, z, tk);
     printf("  boycott: t = %.1f: z_F = %.4f, PNK %.4f (lag %.4f), PNK with the layer's volume %.4f; clear fluid %.4f, "
-           "produced by PNK's law %.4f (ratio %.3f)\n",
-           tk, z, pnk, z - pnk, z_layer, clear, produced, clear / produced);
+           "produced by PNK's law %.4f (ratio %.3f); in the layer %.4f, (4.117) %.4f (ratio %.3f)\n",
+           tk, z, pnk, z - pnk, z_layer, clear, produced, clear / produced, layer, layer_theory, layer / layer_theory);
     CHECK_MSG(z > pnk, "the front %.4f below PNK's %.4f at t = %.1f", z, pnk, tk); /* the layer's volume */
     worst_prod = fmax(worst_prod, fabs(clear / produced - 1));
-    if (k >= 2) worst_layer = fmax(worst_layer, fabs(z - z_layer)); /* the layer formed: its transit time ~0.17 */
+    if (k >= 2) { /* the layer formed: its transit time along the wall is about 0.17 */
+      worst_layer = fmax(worst_layer, fabs(z - z_layer));
+      worst_volume = fmax(worst_volume, fabs(layer / layer_theory - 1));
+    }
     z_prev = z;
   }
   double enhancement = (1 - z) / (A * t);
   printf("  boycott: descent x%.2f of an upright vessel's (PNK x%.2f); clear fluid within %.3f of PNK's production; "
-         "front within %.4f of PNK with the layer\n",
-         enhancement, (1 - boycott_pnk_front(v, t)) / (A * t), worst_prod, worst_layer);
+         "the layer's volume within %.3f of (4.117); front within %.4f of PNK with the layer\n",
+         enhancement, (1 - boycott_pnk_front(v, t)) / (A * t), worst_prod, worst_volume, worst_layer);
   /* the front falls much faster than in an upright vessel */
   CHECK_MSG(enhancement > 1.6, "Boycott enhancement x%.2f", enhancement);
-  /* PNK's production, A times the interface's horizontal projection: 0.966-0.970 of it on 12 x 16, 0.970-0.976 on
-     24 x 32 */
+  /* PNK's production, A times the interface's horizontal projection: 0.970-0.976 of it (0.975-0.982 on 48 x 64) */
   CHECK_MSG(worst_prod <= 0.05, "clear fluid off PNK's production by %.3f", worst_prod);
-  /* the clear fluid not above the front is in the Boycott layer: PNK with the layer's volume (4.117) is the front
-     within 0.009 (t = 0.2) and 0.003 (0.3) on 12 x 16, 0.001 and 0.016 on 24 x 32; PNK's own z_F lags by 0.06-0.10 */
-  CHECK_MSG(worst_layer <= 0.02, "front off PNK with the layer by %.4f", worst_layer);
+  /* the rest of the clear fluid is in the Boycott layer: 0.89 and 0.95 of (4.117)'s volume at t = 0.2 and 0.3
+     (0.91, 1.08 on 48 x 64); the digest gives that profile +-30 % */
+  CHECK_MSG(worst_volume <= 0.3, "the layer's volume off (4.117) by %.3f", worst_volume);
+  /* so the front is PNK's with the layer: within 0.001 and 0.016 (0.003, 0.027 on 48 x 64), where the layer's +-30 %
+     is 0.036 and 0.026 of front; PNK's own z_F lags by 0.06-0.10 */
+  CHECK_MSG(worst_layer <= 0.03, "front off PNK with the layer by %.4f", worst_layer);
   CHECK_MSG(fabs(scalar(out, "solids_conservation_error", t)) < 1e-13, "solids not conserved");
   /* the stream function of the conservative fluxes: zero on every wall of the closed vessel */
   sl_output_field f;
@@ -650,12 +658,12 @@ static void migration(void) {
 }
 
 static void boycott_part(void) {
-  if (getenv("SLUICE_SKIP_LONG")) exit(77); /* 12 s; skipped in the sanitizer build (ctest's SKIP_RETURN_CODE) */
+  if (getenv("SLUICE_SKIP_LONG")) exit(77); /* 100 s; skipped in the sanitizer build (ctest's SKIP_RETURN_CODE) */
   boycott();
 }
 
 static void spinup_part(void) {
-  if (getenv("SLUICE_SKIP_LONG")) exit(77); /* 140 s; skipped in the sanitizer build */
+  if (getenv("SLUICE_SKIP_LONG")) exit(77); /* 110 s; skipped in the sanitizer build */
   spinup();
 }
 
