@@ -334,7 +334,9 @@ static int stress_setup(mixture *x, sl_diag *d) {
 /* The height (along -g) where the slab-averaged phi first reaches `level`
  * coming down from the top: the mixture/clear-fluid interface of a settling
  * column (slabs are the cells in 1-D, sqrt(n_cells) bands of equal height
- * in 2-D). NAN when phi stays below the level everywhere. */
+ * in 2-D), linear between slab centres. When the top slab is already at the
+ * level the mixture fills the column: its top (the highest vertex). NAN
+ * when phi stays below the level everywhere. */
 static double interface_height(const mixture *x, const double *phi, double level) {
   const double *xc = sl_transport_cell_points(x->tr), *vol = sl_transport_volumes(x->tr);
   double gn = hypot(x->g[0], x->g[1]), up[2] = {-x->g[0] / gn, -x->g[1] / gn};
@@ -358,7 +360,13 @@ static double interface_height(const mixture *x, const double *phi, double level
     if (sv[k] <= 0.0) continue;
     double p = sp[k] / sv[k], h = sh[k] / sv[k];
     if (p >= level) {
-      result = isnan(p_above) ? h : h + (h_above - h) * (p - level) / (p - p_above);
+      if (isnan(p_above)) {
+        result = -INFINITY;
+        for (int v = 0; v < x->m->n_vertices; ++v)
+          result = fmax(result, up[0] * x->m->xy[2 * v] + up[1] * x->m->xy[2 * v + 1]);
+      } else {
+        result = h + (h_above - h) * (p - level) / (p - p_above);
+      }
       break;
     }
     h_above = h, p_above = p;
