@@ -353,6 +353,9 @@ static void boycott(void) {
   const char *sets[] = {"time.end=0.3", NULL}; /* the scene's 24 x 32 mesh, walls refined */
   if (run_ok("boycott", NULL, NULL, sets, out)) return;
   const double A = boycott_A(v);
+  /* the uniform suspension fills the vessel: the interface at its top */
+  CHECK_MSG(fabs(scalar(out, "interface_height_0", 0.0) - 1.0) < 1e-12, "interface at t = 0: %.6f",
+            scalar(out, "interface_height_0", 0.0));
   double z_prev = 1.0, produced = 0.0, worst_prod = 0.0, worst_layer = 0.0, worst_volume = 0.0, t = 0.3, z = NAN;
   for (int k = 1; k <= 3; ++k) {
     double tk = 0.1 * k;
