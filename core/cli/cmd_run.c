@@ -10,7 +10,9 @@
 #include "core/config/ini.h"
 #include "core/config/scene_schema.h"
 #include "core/cli/progress.h"
+#include "core/mesh/mesh.h"
 #include "core/models/mixture.h"
+#include "core/models/scene_mesh.h"
 #include "core/models/navier_stokes.h"
 #include "core/models/two_fluid.h"
 #include "core/plugin/closure_ini.h"
@@ -25,7 +27,9 @@ static const char run_usage[] =
     "[closure.<kind>] against the closure's own schema, and runs it.\n"
     "  --print-config   print the resolved configuration (includes flattened,\n"
     "                   overrides applied) and stop\n"
-    "  --check          validate the scene and its closures, and stop\n"
+    "  --check          validate the scene and its closures, build the mesh and\n"
+    "                   print its report (where the cells are smallest and\n"
+    "                   largest, angles), and stop\n"
     "  -o OUT.h5        output file (default: [output] file, else SCENE.h5)\n"
     "  --restart F.h5   continue from the last checkpoint in F.h5\n"
     "  --profile        after the summary, what the run did and skipped: assemblies,\n"
@@ -237,6 +241,13 @@ int sl_cmd_run(int argc, char **argv) {
     for (int i = 0; i < n_closures; ++i) {
       const sl_closure_desc *c = closures[i]->desc;
       printf("  %-18s %-24s %s (%s)\n", sl_kind_name(c->kind), c->name, c->version, closures[i]->library->path);
+    }
+    /* the mesh is built and checked too, and its report says where the cells are finest */
+    if (sl_ini_find_section(ini, "mesh")) {
+      sl_mesh *m = NULL;
+      if ((rc = sl_scene_mesh(ini, &m, &d))) goto fail;
+      sl_mesh_print_report(m, stdout);
+      sl_mesh_destroy(m);
     }
     goto fail;
   }

@@ -652,9 +652,20 @@ void sl_mesh_print_report(const sl_mesh *m, FILE *out) {
     }
     fputc('\n', out);
   }
+  /* where the smallest and largest cells are: a graded mesh shows which way it is refined */
   const char *what = m->dim == 1 ? "length" : "area";
-  fprintf(out, "  cell %s %.6g (cell %d) .. %.6g (cell %d), largest neighbour ratio %.4g\n", what, q.min_area,
-          q.min_area_cell, q.max_area, q.max_area_cell, q.max_size_jump);
+  double c_min[2], c_max[2];
+  sl_mesh_cell_centroid(m, q.min_area_cell, c_min);
+  sl_mesh_cell_centroid(m, q.max_area_cell, c_max);
+  if (m->dim == 1)
+    fprintf(out, "  cell %s %.6g (cell %d at x = %.4g) .. %.6g (cell %d at x = %.4g), largest neighbour ratio %.4g\n",
+            what, q.min_area, q.min_area_cell, c_min[0], q.max_area, q.max_area_cell, c_max[0], q.max_size_jump);
+  else
+    fprintf(out,
+            "  cell %s %.6g (cell %d at (%.4g, %.4g)) .. %.6g (cell %d at (%.4g, %.4g)), largest neighbour ratio "
+            "%.4g\n",
+            what, q.min_area, q.min_area_cell, c_min[0], c_min[1], q.max_area, q.max_area_cell, c_max[0], c_max[1],
+            q.max_size_jump);
   if (m->dim == 2) {
     const double deg = 180 / acos(-1.0);
     fprintf(out, "  angles %.4g .. %.4g deg (smallest in cell %d), max aspect ratio %.4g (cell %d)\n",
