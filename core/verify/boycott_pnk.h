@@ -77,35 +77,31 @@ static inline double boycott_layer_volume(const boycott_vessel *v, double z, dou
   return 2.0 / 3.0 * k * xi * sqrt(xi);
 }
 
+/* The front that holds the clear-fluid volume V at time t: w (1 - z) +
+ * V_l(z) = V, decreasing in z, by bisection; the top while the layer alone
+ * takes V. */
+static inline double boycott_front_of_volume(const boycott_vessel *v, double V, double t) {
+  if (boycott_layer_volume(v, 1.0, t) >= V) return 1.0;
+  double w = boycott_width(v), lo = boycott_sediment(v, t), hi = 1.0;
+  for (int it = 0; it < 80; ++it) {
+    double m = 0.5 * (lo + hi);
+    if (w * (1 - m) + boycott_layer_volume(v, m, t) > V)
+      lo = m;
+    else
+      hi = m;
+  }
+  return 0.5 * (lo + hi);
+}
+
 /* The front with the layer's volume counted: (P) integrated by the midpoint
- * rule in n steps, the front found at each step by bisection on
- * w (1 - z) + V_l(z) = V (decreasing in z). */
+ * rule in n steps. */
 static inline double boycott_front_with_layer(const boycott_vessel *v, double t_end, int n) {
-  double w = boycott_width(v), h = t_end / n, V = 0.0, z = 1.0;
+  double h = t_end / n, V = 0.0, z = 1.0;
   for (int i = 0; i < n; ++i) {
     double t = i * h;
-    /* the midpoint's front from a half step of the rate at t */
-    double V_half = V + 0.5 * h * boycott_production_rate(v, z, t), z_half = z;
-    for (int pass = 0; pass < 2; ++pass) {
-      double target = pass == 0 ? V_half : V + h * boycott_production_rate(v, z_half, t + 0.5 * h);
-      double tt = pass == 0 ? t + 0.5 * h : t + h, lo = boycott_sediment(v, tt), hi = 1.0, zz;
-      if (boycott_layer_volume(v, 1.0, tt) >= target) {
-        zz = 1.0;
-      } else {
-        for (int it = 0; it < 80; ++it) {
-          double m = 0.5 * (lo + hi);
-          if (w * (1 - m) + boycott_layer_volume(v, m, tt) > target)
-            lo = m;
-          else
-            hi = m;
-        }
-        zz = 0.5 * (lo + hi);
-      }
-      if (pass == 0)
-        z_half = zz;
-      else
-        V = target, z = zz;
-    }
+    double z_half = boycott_front_of_volume(v, V + 0.5 * h * boycott_production_rate(v, z, t), t + 0.5 * h);
+    V += h * boycott_production_rate(v, z_half, t + 0.5 * h);
+    z = boycott_front_of_volume(v, V, t + h);
   }
   return z;
 }

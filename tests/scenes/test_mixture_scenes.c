@@ -49,7 +49,6 @@
 #include "core/verify/kynch_exact.h"
 #include "core/verify/spinup_asymptotic.h"
 #include "core/verify/boycott_pnk.h"
-#include "core/mesh/mesh.h"
 
 static char configs[4096];
 
@@ -414,8 +413,9 @@ static void boycott(void) {
   sl_output_mesh_free(&m);
 }
 
-/* The r-centroid of each cell of a one-row radial mesh, from the output file's nodes. */
-static int radial_centroids(const char *out, int n, double *rc) {
+/* The r-centroid of each of the first n cells (the first row of a radial mesh), from the output file's nodes,
+ * and their widths when `width` is given. */
+static int radial_centroids(const char *out, int n, double *rc, double *width) {
   sl_output_mesh m;
   sl_diag d = {{0}};
   if (sl_output_read_mesh(out, &m, &d)) {
@@ -429,6 +429,7 @@ static int radial_centroids(const char *out, int n, double *rc) {
       r0 = fmin(r0, r), r1 = fmax(r1, r);
     }
     rc[c] = 2.0 / 3.0 * (r1 * r1 * r1 - r0 * r0 * r0) / (r1 * r1 - r0 * r0);
+    if (width) width[c] = r1 - r0;
   }
   sl_output_mesh_free(&m);
   return 0;
@@ -464,7 +465,7 @@ static void migration_poiseuille(void) {
     return;
   }
   double *rc = malloc((size_t)f.n * sizeof *rc), worst = 0.0, where = 0.0, axis = 0.0;
-  if (rc && radial_centroids(out, f.n, rc) == 0)
+  if (rc && radial_centroids(out, f.n, rc, NULL) == 0)
     for (int c = 0; c < f.n; ++c) {
       double e = fabs(f.values[c] - pipe_phi(rc[c], aw));
       if (rc[c] >= 0.2 && e > worst) worst = e, where = rc[c];
@@ -533,22 +534,20 @@ static void spinup_theory_table(void) {
 static void spinup(void) {
   spinup_theory_table();
   const char *out = "spinup.h5";
-  enum { N = 48 }; /* the cells along r */
-  const sl_grading grade_r = {SL_GRADE_GEOMETRIC, 0.25};
-  const char *sets[] = {"time.end=25", "mesh.cells=48,24", "mesh.grading_x=geometric:0.25",
-                        "solver.nonlinear_tolerance=1e-6", NULL};
+  enum { N = 48 }; /* the cells along r (the scene's grading refines them towards the wall) */
+  const char *sets[] = {"time.end=25", "mesh.cells=48,24", "solver.nonlinear_tolerance=1e-6", NULL};
   if (run_ok("spinup", NULL, NULL, sets, out)) return;
   const double t = 25.0;
-  double tau_per_t, rn[N + 1];
+  double tau_per_t, rc[N], h[N];
   spinup_theory th = spin_theory(&tau_per_t);
   const double tau = t * tau_per_t, r_front = exp(-tau);
   static double xy[2 * N];
   sl_diag d = {{0}};
-  CHECK_MSG(sl_mesh_graded_points(0.0, 1.0, N, &grade_r, rn, &d) == 0, "%s", d.msg);
+  if (radial_centroids(out, N, rc, h)) return; /* the first row of cells: the columns' centroids and widths */
   double worst = 0.0, worst_a = 0.0, near_lid = 0.0;
   for (int k = 0; k < 4; ++k) {
-    /* phi at the cell centres, from the wall inwards */
-    for (int i = 0; i < N; ++i) xy[2 * i] = 0.5 * (rn[N - i] + rn[N - 1 - i]), xy[2 * i + 1] = spin_z[k];
+    /* phi at the cells' centroids, from the wall inwards */
+    for (int i = 0; i < N; ++i) xy[2 * i] = rc[N - 1 - i], xy[2 * i + 1] = spin_z[k];
     sl_sample smp;
     if (sl_sample_points(out, "phi", t, N, xy, &smp, &d)) {
       CHECK_MSG(0, "%s", d.msg);
@@ -568,7 +567,7 @@ static void spinup(void) {
     double dev = 0.0;
     for (int i = 0; i < N; ++i) {
       double r = xy[2 * i];
-      if (r < r_front + 0.08 || r > spin_rs[k] - 3 * (rn[N - i] - rn[N - 1 - i])) continue;
+      if (r < r_front + 0.08 || r > spin_rs[k] - 3 * h[N - 1 - i]) continue;
       dev = fmax(dev, fabs(smp.values[i] - spinup_alpha(&th, r, spin_z[k], tau)));
     }
     sl_sample_free(&smp);
