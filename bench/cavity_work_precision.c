@@ -60,7 +60,7 @@
 
 #include "core/config/scene_schema.h"
 #include "core/io/sample.h"
-#include "core/models/navier_stokes.h"
+#include "core/models/navier_stokes/navier_stokes.h"
 #include "bench_child.h"
 #include "bench_machine.h"
 #include "centreline_profile.h"

@@ -21,9 +21,9 @@
 #include <time.h>
 
 #include "core/config/scene_schema.h"
-#include "core/models/mixture.h"
-#include "core/models/navier_stokes.h"
-#include "core/models/two_fluid.h"
+#include "core/models/mixture/mixture.h"
+#include "core/models/navier_stokes/navier_stokes.h"
+#include "core/models/two_fluid/two_fluid.h"
 #include "core/plugin/closure_ini.h"
 
 enum { MAX_SCENES = 16, MAX_SETS = 16 };

@@ -43,8 +43,8 @@
 #include <unistd.h>
 
 #include "core/config/scene_schema.h"
-#include "core/models/mixture.h"
-#include "core/models/navier_stokes.h"
+#include "core/models/mixture/mixture.h"
+#include "core/models/navier_stokes/navier_stokes.h"
 #include "bench_child.h"
 #include "bench_machine.h"
 #include "svg_plot.h"

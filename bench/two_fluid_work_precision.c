@@ -32,7 +32,7 @@
 
 #include "core/config/scene_schema.h"
 #include "core/io/output.h"
-#include "core/models/two_fluid.h"
+#include "core/models/two_fluid/two_fluid.h"
 #include "core/plugin/closure_ini.h"
 #include "bench_machine.h"
 #include "svg_plot.h"

@@ -14,8 +14,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "core/models/mixture.h"
-#include "core/models/two_fluid.h"
+#include "core/models/mixture/mixture.h"
+#include "core/models/two_fluid/two_fluid.h"
 
 const char *sl_bench_status_name(sl_bench_status s) {
   static const char *const names[] = {"ok", "failed", "bad_input", "crashed", "timeout", "interrupted", "not_run"};

@@ -13,7 +13,7 @@
 #include <stdio.h>
 
 #include "core/config/ini.h"
-#include "core/models/navier_stokes.h"
+#include "core/models/navier_stokes/navier_stokes.h"
 #include "core/plugin/registry.h"
 
 typedef enum sl_bench_status {

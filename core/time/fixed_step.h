@@ -15,7 +15,7 @@
 #define SLUICE_TIME_FIXED_STEP_H
 
 #include "core/config/ini.h"
-#include "core/models/navier_stokes.h"
+#include "core/models/navier_stokes/navier_stokes.h"
 
 typedef struct sl_fixed_step_model {
   void *user;

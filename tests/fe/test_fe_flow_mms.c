@@ -9,7 +9,7 @@
  * L2 2, asserted within 0.25 on the finest pair; Newton must converge
  * quadratically at the end (correction c_k <= 30 c_{k-1}^2 for c_k > 1e-9) and in at most
  * 10 iterations from a zero start. */
-#include "core/models/flow_problem.h"
+#include "core/models/navier_stokes/flow_problem.h"
 #include "flow_exact.h"
 #include "fe_study.h"
 #include "testing.h"

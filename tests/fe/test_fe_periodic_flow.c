@@ -24,7 +24,7 @@
  * starts from the interpolant of the exact solution. */
 #include <string.h>
 
-#include "core/models/flow_problem.h"
+#include "core/models/navier_stokes/flow_problem.h"
 #include "fe_study.h"
 #include "flow_exact.h"
 #include "testing.h"

@@ -31,7 +31,7 @@
 #include "core/config/scene_schema.h"
 #include "core/io/output.h"
 #include "core/mesh/mesh.h"
-#include "core/models/mixture.h"
+#include "core/models/mixture/mixture.h"
 #include "core/plugin/closure_ini.h"
 #include "testing.h"
 

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "core/config/scene_schema.h"
-#include "core/models/navier_stokes.h"
+#include "core/models/navier_stokes/navier_stokes.h"
 #include "core/plugin/closure_ini.h"
 
 typedef int (*scene_model_run)(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res,

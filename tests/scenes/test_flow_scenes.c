@@ -25,7 +25,7 @@
 #include "core/config/scene_schema.h"
 #include "core/io/output.h"
 #include "core/io/sample.h"
-#include "core/models/navier_stokes.h"
+#include "core/models/navier_stokes/navier_stokes.h"
 #include "core/plugin/closure_ini.h"
 #include "scene_runner.h"
 #include "testing.h"

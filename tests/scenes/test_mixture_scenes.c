@@ -42,7 +42,7 @@
 #include "core/config/scene_schema.h"
 #include "core/io/output.h"
 #include "core/io/sample.h"
-#include "core/models/mixture.h"
+#include "core/models/mixture/mixture.h"
 #include "core/plugin/closure_ini.h"
 #include "scene_runner.h"
 #include "testing.h"

@@ -27,7 +27,7 @@
 #include <string.h>
 
 #include "core/io/output.h"
-#include "core/models/two_fluid.h"
+#include "core/models/two_fluid/two_fluid.h"
 #include "scene_fields.h"
 #include "scene_runner.h"
 #include "testing.h"

@@ -19,7 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/models/two_fluid.h"
+#include "core/models/two_fluid/two_fluid.h"
 #include "scene_fields.h"
 #include "scene_runner.h"
 #include "testing.h"

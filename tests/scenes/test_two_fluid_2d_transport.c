@@ -28,7 +28,7 @@
 
 #include "core/io/output.h"
 #include "core/mesh/mesh.h"
-#include "core/models/two_fluid.h"
+#include "core/models/two_fluid/two_fluid.h"
 #include "scene_fields.h"
 #include "scene_runner.h"
 #include "testing.h"

@@ -37,7 +37,7 @@
 
 #include "core/config/scene_schema.h"
 #include "core/io/output.h"
-#include "core/models/two_fluid.h"
+#include "core/models/two_fluid/two_fluid.h"
 #include "core/plugin/closure_ini.h"
 #include "scene_fields.h"
 #include "scene_runner.h"

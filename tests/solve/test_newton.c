@@ -14,7 +14,7 @@
 #include <string.h>
 
 #include "core/mesh/mesh.h"
-#include "core/models/flow_problem.h"
+#include "core/models/navier_stokes/flow_problem.h"
 #include "core/solve/newton.h"
 #include "poisson.h"
 #include "testing.h"

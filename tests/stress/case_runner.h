@@ -15,9 +15,9 @@
 #include "core/config/scene_schema.h"
 #include "core/io/output.h"
 #include "core/io/sample.h"
-#include "core/models/mixture.h"
-#include "core/models/navier_stokes.h"
-#include "core/models/two_fluid.h"
+#include "core/models/mixture/mixture.h"
+#include "core/models/navier_stokes/navier_stokes.h"
+#include "core/models/two_fluid/two_fluid.h"
 #include "core/plugin/closure_ini.h"
 
 typedef struct scene_case {

@@ -1,6 +1,6 @@
 /* The mixture model: the solids fraction coupled to the flow (see
  * mixture.h). */
-#include "core/models/mixture.h"
+#include "core/models/mixture/mixture.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -9,8 +9,8 @@
 
 #include "core/config/expr.h"
 #include "core/fe/field.h"
-#include "core/models/face_flux.h"
-#include "core/models/stream_function.h"
+#include "core/fv/face_flux.h"
+#include "core/models/mixture/stream_function.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/instance.h"
 #include "core/plugin/kinds.h"

@@ -1,5 +1,5 @@
 /* Flow problems for the nonlinear solver (see flow_problem.h). */
-#include "core/models/flow_problem.h"
+#include "core/models/navier_stokes/flow_problem.h"
 
 #include <stdlib.h>
 #include <string.h>

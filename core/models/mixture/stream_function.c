@@ -1,5 +1,5 @@
 /* The stream function of conservative face fluxes (stream_function.h). */
-#include "core/models/stream_function.h"
+#include "core/models/mixture/stream_function.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -1,5 +1,5 @@
 /* The mesh a scene's [mesh] section describes (see scene_mesh.h). */
-#include "core/models/scene_mesh.h"
+#include "core/scene/mesh.h"
 
 #include <stdio.h>
 #include <stdlib.h>

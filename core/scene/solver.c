@@ -1,5 +1,5 @@
 /* The sparse direct solver of a scene (scene_solver.h). */
-#include "core/models/scene_solver.h"
+#include "core/scene/solver.h"
 
 #include <string.h>
 

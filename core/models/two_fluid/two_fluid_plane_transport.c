@@ -13,7 +13,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "core/models/two_fluid_plane_impl.h"
+#include "core/models/two_fluid/two_fluid_plane_impl.h"
 
 static double cpu_now(void) { return (double)clock() / CLOCKS_PER_SEC; }
 

@@ -35,11 +35,11 @@
 #include <string.h>
 #include <time.h>
 
-#include "core/models/scene_mesh.h"
-#include "core/models/scene_output.h"
-#include "core/models/scene_solver.h"
-#include "core/models/two_fluid.h"
-#include "core/models/two_fluid_plane_impl.h"
+#include "core/scene/mesh.h"
+#include "core/scene/output.h"
+#include "core/scene/solver.h"
+#include "core/models/two_fluid/two_fluid.h"
+#include "core/models/two_fluid/two_fluid_plane_impl.h"
 #include "core/time/fixed_step.h"
 
 enum { F_PHI = 1, F_US = 2, F_UF = 4, F_P = 8, F_PS = 16, F_THETA = 32 };

@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/models/two_fluid_impl.h"
+#include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
 

@@ -17,7 +17,7 @@
 #define SLUICE_MODELS_TWO_FLUID_PLANE_IMPL_H
 
 #include "core/mesh/tensor_grid.h"
-#include "core/models/two_fluid_impl.h"
+#include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/point_eval.h"
 #include "core/solve/anderson.h"
 #include "core/solve/linsolve.h"

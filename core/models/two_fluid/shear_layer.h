@@ -66,7 +66,7 @@
 #ifndef SLUICE_MODELS_SHEAR_LAYER_H
 #define SLUICE_MODELS_SHEAR_LAYER_H
 
-#include "core/models/navier_stokes.h"
+#include "core/models/navier_stokes/navier_stokes.h"
 
 /* Runs a model = two_fluid, motion = shear scene; the arguments and returns
  * of sl_two_fluid_run. */

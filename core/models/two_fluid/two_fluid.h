@@ -59,7 +59,7 @@
 #ifndef SLUICE_MODELS_TWO_FLUID_H
 #define SLUICE_MODELS_TWO_FLUID_H
 
-#include "core/models/navier_stokes.h"
+#include "core/models/navier_stokes/navier_stokes.h"
 
 /* Runs a model = two_fluid scene (geometry = line); the arguments and
  * returns of sl_ns_run: 0, SL_EBADINPUT (nothing written) or SL_EFAILED

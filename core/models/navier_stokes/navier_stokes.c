@@ -1,7 +1,7 @@
 /* The navier_stokes model: scene set-up, steady solve with continuation,
  * adaptive BDF time loop, output, checkpoint and restart (see
  * navier_stokes.h). */
-#include "core/models/navier_stokes.h"
+#include "core/models/navier_stokes/navier_stokes.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -11,10 +11,10 @@
 
 #include "core/config/expr.h"
 #include "core/io/output.h"
-#include "core/models/flow_problem.h"
-#include "core/models/scene_mesh.h"
-#include "core/models/scene_output.h"
-#include "core/models/scene_solver.h"
+#include "core/models/navier_stokes/flow_problem.h"
+#include "core/scene/mesh.h"
+#include "core/scene/output.h"
+#include "core/scene/solver.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
 #include "core/time/bdf.h"

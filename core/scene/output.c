@@ -1,4 +1,4 @@
-#include "core/models/scene_output.h"
+#include "core/scene/output.h"
 
 #include <stdio.h>
 #include <string.h>

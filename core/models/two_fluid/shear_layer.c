@@ -1,6 +1,6 @@
 /* The two-fluid shear layer (see shear_layer.h): the scene, one implicit
  * step, the time loop and the output. */
-#include "core/models/shear_layer.h"
+#include "core/models/two_fluid/shear_layer.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -9,8 +9,8 @@
 #include <time.h>
 
 #include "core/config/expr.h"
-#include "core/models/scene_mesh.h"
-#include "core/models/scene_output.h"
+#include "core/scene/mesh.h"
+#include "core/scene/output.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/point_eval.h"

@@ -33,7 +33,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/models/two_fluid_plane_impl.h"
+#include "core/models/two_fluid/two_fluid_plane_impl.h"
 
 /* Nearly empty faces still get a solids equation: that of one particle in
  * clear fluid (every term of it is proportional to phi). */

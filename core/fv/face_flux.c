@@ -1,5 +1,5 @@
 /* Conservative face fluxes of a Taylor–Hood velocity (see face_flux.h). */
-#include "core/models/face_flux.h"
+#include "core/fv/face_flux.h"
 
 #include <math.h>
 #include <stdlib.h>

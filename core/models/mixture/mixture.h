@@ -38,7 +38,7 @@
 #ifndef SLUICE_MODELS_MIXTURE_H
 #define SLUICE_MODELS_MIXTURE_H
 
-#include "core/models/navier_stokes.h"
+#include "core/models/navier_stokes/navier_stokes.h"
 
 /* Runs a model = mixture scene; the arguments and returns of sl_ns_run.
  * res->coupling_summary gets the transport's one-line summary. */

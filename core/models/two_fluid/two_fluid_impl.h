@@ -6,7 +6,7 @@
 #include "core/config/expr.h"
 #include "core/config/ini.h"
 #include "core/io/output.h"
-#include "core/models/navier_stokes.h"
+#include "core/models/navier_stokes/navier_stokes.h"
 #include "core/plugin/registry.h"
 #include "core/plugin/instance.h"
 #include "core/util/diag.h"

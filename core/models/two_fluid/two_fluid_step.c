@@ -28,7 +28,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "core/models/two_fluid_impl.h"
+#include "core/models/two_fluid/two_fluid_impl.h"
 
 /* Faces with (nearly) no solids still get an equation: that of one particle
  * in clear fluid (every term is proportional to phi). */

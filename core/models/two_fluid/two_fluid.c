@@ -1,6 +1,6 @@
 /* The 1-D two-fluid model (see two_fluid.h): the scene, the time loop and
  * the output. One step is core/models/two_fluid_step.c. */
-#include "core/models/two_fluid.h"
+#include "core/models/two_fluid/two_fluid.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -8,10 +8,10 @@
 #include <string.h>
 #include <time.h>
 
-#include "core/models/scene_mesh.h"
-#include "core/models/scene_output.h"
-#include "core/models/shear_layer.h"
-#include "core/models/two_fluid_impl.h"
+#include "core/scene/mesh.h"
+#include "core/scene/output.h"
+#include "core/models/two_fluid/shear_layer.h"
+#include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
 #include "core/time/fixed_step.h"

@@ -4,8 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/models/scene_output.h"
-#include "core/models/two_fluid_impl.h"
+#include "core/scene/output.h"
+#include "core/models/two_fluid/two_fluid_impl.h"
 
 static const char *const STATE_NAMES[5] = {"phi", "velocity_solid", "velocity_fluid", "pressure", "solids_book"};
 

@@ -47,7 +47,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/models/two_fluid_plane_impl.h"
+#include "core/models/two_fluid/two_fluid_plane_impl.h"
 #include "core/plugin/closure_ini.h"
 #include "core/solve/linsolve.h"
 
