@@ -411,7 +411,7 @@ int main(int argc, char **argv) {
     else
       fprintf(f, "# machine (sluice runs, %s): %s; FreeFEM runs: load %.2f at start, %.2f at end\n", sluice_csv,
               machine, load[0][0], load[1][0]);
-    fprintf(f, "# cpu_s: fastest of %d %s; sluice: process CPU time of sl_ns_run; FreeFEM: clock() from the mesh "
+    fprintf(f, "# cpu_s: fastest of %d %s; sluice: process CPU time of sl_model_run; FreeFEM: clock() from the mesh "
                "to the solution\n",
             repeat, sluice_bench ? "interleaved rounds (sluice, then FreeFEM, mesh by mesh)" : "repeats");
     fprintf(f, "code,solver,n,unknowns,err_max,err_l2,min_u,min_err,cpu_s,peak_rss_mb\n");

@@ -58,7 +58,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "core/config/scene_schema.h"
+#include "core/models/run.h"
 #include "core/io/sample.h"
 #include "core/models/navier_stokes/navier_stokes.h"
 #include "bench_child.h"
@@ -73,11 +73,11 @@ typedef struct run_result {
   char err[2048 + 64];
   int dofs;
   double umin;         /* steady only */
-  double cpu, wall;    /* process CPU and wall seconds in sl_ns_run */
-  double assembly;     /* wall seconds (sl_ns_result) */
+  double cpu, wall;    /* process CPU and wall seconds in sl_model_run */
+  double assembly;     /* wall seconds (sl_run_result) */
   double t_symbolic, t_numeric, t_solve;
   long n_symbolic, n_numeric, n_skipped, n_solves;
-  long matrix_asm, rhs_asm; /* full and right-hand-side-only assemblies (sl_ns_result) */
+  long matrix_asm, rhs_asm; /* full and right-hand-side-only assemblies (sl_run_result) */
   long rss_kb;         /* peak resident set after the run */
   long steps;          /* transient: accepted steps */
   long step_count;     /* transient: steps 2..K-1 measured */
@@ -170,7 +170,7 @@ static int parse_summary(const char *s, run_result *r) {
 }
 
 typedef struct monitor {
-  const sl_ns_result *res;
+  const sl_run_result *res;
   run_result *r;
   long last; /* the last step: shortened to end exactly, it may be a new matrix */
   double wall_prev, assembly_prev;
@@ -183,10 +183,10 @@ static void on_step(void *user, double t, double dt, long step, int iterations) 
   if (step >= 2 && step < m->last) {
     m->r->step_wall += now - m->wall_prev;
     m->r->step_wall_max = fmax(m->r->step_wall_max, now - m->wall_prev);
-    m->r->step_assembly += m->res->assembly - m->assembly_prev;
+    m->r->step_assembly += m->res->model.assembly - m->assembly_prev;
     ++m->r->step_count;
   }
-  m->wall_prev = now, m->assembly_prev = m->res->assembly;
+  m->wall_prev = now, m->assembly_prev = m->res->model.assembly;
 }
 
 static int run(const bench_opts *bo, const char *solver, int n, int transient, run_result *r) {
@@ -216,16 +216,15 @@ static int run(const bench_opts *bo, const char *solver, int n, int transient, r
     if (!rc) rc = sl_ini_apply_override(ini, "time.adaptive=false", &d);
     if (!rc) rc = sl_ini_apply_override(ini, set, &d);
   }
-  if (!rc) rc = sl_scene_validate(ini, &d);
   if (!rc) rc = sl_registry_create(&reg, NULL, 0, &d);
-  sl_ns_result res;
+  sl_run_result res;
   monitor mon = {.res = &res, .r = r, .last = bo->steps};
-  sl_ns_run_opts o = {.scene_path = path, .output = file, .sluice_version = "bench", .monitor = on_step,
+  sl_run_opts o = {.scene_path = path, .output = file, .sluice_version = "bench", .monitor = on_step,
                       .monitor_user = &mon};
   if (!rc) {
     double c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID), w0 = clock_s(CLOCK_MONOTONIC);
     mon.wall_prev = w0;
-    rc = sl_ns_run(ini, reg, &o, &res, &d);
+    rc = sl_model_run(ini, reg, &o, &res, &d);
     r->cpu = clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0, r->wall = clock_s(CLOCK_MONOTONIC) - w0;
     struct rusage ru;
     if (!rc) {
@@ -234,10 +233,10 @@ static int run(const bench_opts *bo, const char *solver, int n, int transient, r
     }
   }
   if (!rc) {
-    r->assembly = res.assembly, r->steps = res.steps;
-    r->matrix_asm = res.matrix_assemblies, r->rhs_asm = res.residual_assemblies;
-    if (parse_summary(res.linear_summary, r))
-      rc = sl_diag_set(&d, SL_EFAILED, "unexpected linear solver summary '%s'", res.linear_summary);
+    r->assembly = res.model.assembly, r->steps = res.steps;
+    r->matrix_asm = res.model.matrix_assemblies, r->rhs_asm = res.model.residual_assemblies;
+    if (parse_summary(res.model.linear_summary, r))
+      rc = sl_diag_set(&d, SL_EFAILED, "unexpected linear solver summary '%s'", res.model.linear_summary);
   }
   if (!rc && r->step_count > 0) r->step_wall /= (double)r->step_count, r->step_assembly /= (double)r->step_count;
   if (!rc && !transient && !isfinite(r->umin = centreline_min(file)))

@@ -20,7 +20,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "core/config/scene_schema.h"
+#include "core/models/run.h"
 #include "core/models/mixture/mixture.h"
 #include "core/models/navier_stokes/navier_stokes.h"
 #include "core/models/two_fluid/two_fluid.h"
@@ -57,17 +57,16 @@ static int run_once(const char *configs, const scene_spec *s, int timing, measur
   sl_registry *reg = NULL;
   int model = 0, rc = sl_ini_parse_file(path, &ini, d);
   for (int i = 0; i < s->n_sets && !rc; ++i) rc = sl_ini_apply_override(ini, s->sets[i], d);
-  if (!rc) rc = sl_scene_validate(ini, d);
   if (!rc) rc = sl_ini_get_choice(ini, "scene", "model", 1, 0, "navier_stokes|mixture|two_fluid", &model, d);
   if (!rc) rc = sl_registry_create(&reg, NULL, 0, d);
   if (!rc) rc = sl_registry_index(reg, d);
   if (!rc) sl_registry_set_timing(reg, timing);
   if (!rc) {
-    sl_ns_result res;
-    sl_ns_run_opts o = {.scene_path = path, .output = out, .sluice_version = "bench"};
-    rc = model == 1 ? sl_mixture_run(ini, reg, &o, &res, d)
-         : model == 2 ? sl_two_fluid_run(ini, reg, &o, &res, d)
-                      : sl_ns_run(ini, reg, &o, &res, d);
+    sl_run_result res;
+    sl_run_opts o = {.scene_path = path, .output = out, .sluice_version = "bench"};
+    rc = model == 1 ? sl_model_run(ini, reg, &o, &res, d)
+         : model == 2 ? sl_model_run(ini, reg, &o, &res, d)
+                      : sl_model_run(ini, reg, &o, &res, d);
   }
   m->wall = clock_of(CLOCK_MONOTONIC) - w0, m->cpu = clock_of(CLOCK_PROCESS_CPUTIME_ID) - c0;
   for (int i = 0; reg && i < reg->n_libraries; ++i)

@@ -42,7 +42,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "core/config/scene_schema.h"
+#include "core/models/run.h"
 #include "core/models/mixture/mixture.h"
 #include "core/models/navier_stokes/navier_stokes.h"
 #include "bench_child.h"
@@ -122,28 +122,27 @@ static int run(const char *src, const scene_spec *s, int k, run_result *r) {
   int rc = sl_ini_parse_file(path, &ini, &d);
   if (!rc) rc = sl_ini_apply_override(ini, set, &d);
   for (int j = 0; s->sets[j] && !rc; ++j) rc = sl_ini_apply_override(ini, s->sets[j], &d);
-  if (!rc) rc = sl_scene_validate(ini, &d);
   if (!rc) rc = sl_ini_get_choice(ini, "scene", "model", 1, 0, "navier_stokes|mixture", &model, &d);
   if (!rc) rc = sl_registry_create(&reg, NULL, 0, &d);
   if (!rc) rc = sl_registry_scan(reg, &d);
-  sl_ns_result res;
+  sl_run_result res;
   memset(&res, 0, sizeof res);
-  sl_ns_run_opts o = {.scene_path = path, .output = file, .sluice_version = "bench"};
+  sl_run_opts o = {.scene_path = path, .output = file, .sluice_version = "bench"};
   if (!rc) {
     double c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID), w0 = clock_s(CLOCK_MONOTONIC);
-    rc = model == 1 ? sl_mixture_run(ini, reg, &o, &res, &d) : sl_ns_run(ini, reg, &o, &res, &d);
+    rc = model == 1 ? sl_model_run(ini, reg, &o, &res, &d) : sl_model_run(ini, reg, &o, &res, &d);
     r->cpu = clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0, r->wall = clock_s(CLOCK_MONOTONIC) - w0;
   }
   if (!rc) {
-    r->assembly = res.assembly, r->assemblies = res.matrix_assemblies + res.residual_assemblies;
-    r->symbolic = res.linear.t_symbolic, r->symbolics = res.linear.n_symbolic;
-    r->numeric = res.linear.t_numeric, r->numerics = res.linear.n_numeric;
-    r->solve = res.linear.t_solve, r->solves = res.linear.n_solves;
-    r->transport = res.cpu_coupled, r->steps = res.steps;
+    r->assembly = res.model.assembly, r->assemblies = res.model.matrix_assemblies + res.model.residual_assemblies;
+    r->symbolic = res.model.linear.t_symbolic, r->symbolics = res.model.linear.n_symbolic;
+    r->numeric = res.model.linear.t_numeric, r->numerics = res.model.linear.n_numeric;
+    r->solve = res.model.linear.t_solve, r->solves = res.model.linear.n_solves;
+    r->transport = res.model.cpu_coupled, r->steps = res.steps;
     /* the mixture's summary: "solids: N transport sub-steps (...)" (core/models/mixture.c) */
-    const char *sub = strstr(res.coupling_summary, "solids: ");
+    const char *sub = strstr(res.model.coupling_summary, "solids: ");
     if (s->has_transport && (!sub || sscanf(sub, "solids: %ld transport sub-steps", &r->substeps) != 1))
-      rc = sl_diag_set(&d, SL_EFAILED, "no transport sub-step count in '%s'", res.coupling_summary);
+      rc = sl_diag_set(&d, SL_EFAILED, "no transport sub-step count in '%s'", res.model.coupling_summary);
   }
   if (rc) snprintf(r->err, sizeof r->err, "%s", d.msg);
   r->ok = !rc;

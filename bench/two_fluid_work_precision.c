@@ -14,7 +14,7 @@
  *    summed over the coarse cells, or the smallest dt), which measures the
  *    discretisation error of the transient itself.
  *
- * CPU time is process time spent in the run (sl_two_fluid_run), the best of
+ * CPU time is process time spent in the run (sl_model_run), the best of
  * --repeat R (default 3) for runs under 2 s.
  *
  *   bench_two_fluid_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH] [--repeat R]
@@ -30,7 +30,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "core/config/scene_schema.h"
+#include "core/models/run.h"
 #include "core/io/output.h"
 #include "core/models/two_fluid/two_fluid.h"
 #include "core/plugin/closure_ini.h"
@@ -88,14 +88,13 @@ static int run_once(const char *src, const scene_spec *s, int cells, double dt, 
   int rc = sl_ini_parse_file(path, &ini, &d);
   for (int k = 0; k < 3 && !rc; ++k) rc = sl_ini_apply_override(ini, set[k], &d);
   if (!rc && s->extra) rc = sl_ini_apply_override(ini, s->extra, &d);
-  if (!rc) rc = sl_scene_validate(ini, &d);
   if (!rc) rc = sl_registry_create(&reg, NULL, 0, &d);
   if (!rc) rc = sl_registry_scan(reg, &d);
-  sl_ns_result res;
-  sl_ns_run_opts o = {.scene_path = path, .output = file, .sluice_version = "bench"};
+  sl_run_result res;
+  sl_run_opts o = {.scene_path = path, .output = file, .sluice_version = "bench"};
   if (!rc) {
     double c0 = cpu_seconds();
-    rc = sl_two_fluid_run(ini, reg, &o, &res, &d);
+    rc = sl_model_run(ini, reg, &o, &res, &d);
     r->cpu = cpu_seconds() - c0;
     r->steps = res.steps;
   }

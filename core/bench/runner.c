@@ -14,8 +14,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "core/models/mixture/mixture.h"
-#include "core/models/two_fluid/two_fluid.h"
+#include "core/models/run.h"
 
 const char *sl_bench_status_name(sl_bench_status s) {
   static const char *const names[] = {"ok", "failed", "bad_input", "crashed", "timeout", "interrupted", "not_run"};
@@ -63,18 +62,12 @@ int sl_bench_run_here(sl_ini *ini, const sl_registry *reg, const sl_bench_run_op
   record rec;
   memset(&rec, 0, sizeof rec);
   sl_diag d = {{0}};
-  sl_ns_result res;
+  sl_run_result res;
   memset(&res, 0, sizeof res);
-  int model = 0;
   double w0 = monotonic(), c0 = cpu_now();
-  int rc = sl_ini_get_choice(ini, "scene", "model", 1, 0, "navier_stokes|mixture|two_fluid", &model, &d);
-  if (!rc) {
-    sl_ns_run_opts ro = {.scene_path = o->scene_path, .output = o->output, .sluice_version = o->sluice_version,
-                         .interrupt = o->interrupt};
-    rc = model == 1   ? sl_mixture_run(ini, reg, &ro, &res, &d)
-         : model == 2 ? sl_two_fluid_run(ini, reg, &ro, &res, &d)
-                      : sl_ns_run(ini, reg, &ro, &res, &d);
-  }
+  sl_run_opts ro = {.scene_path = o->scene_path, .output = o->output, .sluice_version = o->sluice_version,
+                    .interrupt = o->interrupt};
+  int rc = sl_model_run(ini, reg, &ro, &res, &d);
   if (o->summary && rc != SL_EBADINPUT) o->summary(stderr, &res, monotonic() - w0, cpu_now() - c0);
   if (rc) fprintf(stderr, "%s\n", d.msg);
   rec.rc = rc, rec.steps = res.steps, rec.rejected = res.rejected_steps, rec.nonlinear = res.nonlinear_iterations;

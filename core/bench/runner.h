@@ -13,7 +13,7 @@
 #include <stdio.h>
 
 #include "core/config/ini.h"
-#include "core/models/navier_stokes/navier_stokes.h"
+#include "core/time/model.h"
 #include "core/plugin/registry.h"
 
 typedef enum sl_bench_status {
@@ -50,7 +50,7 @@ typedef struct sl_bench_run_opts {
   const char *scene_path; /* for provenance and messages */
   const char *output;     /* the run's output file */
   const char *sluice_version;
-  void (*summary)(FILE *log, const sl_ns_result *res, double wall, double cpu); /* the summary line, optional */
+  void (*summary)(FILE *log, const sl_run_result *res, double wall, double cpu); /* the summary line, optional */
 } sl_bench_run_opts;
 
 /* Runs one run in a child. Returns 0 with the outcome in r, or -1 when no

@@ -17,7 +17,7 @@
 #include "core/bench/study.h"
 #include "core/cli/cli.h"
 #include "core/cli/progress.h"
-#include "core/config/scene_schema.h"
+#include "core/models/run.h"
 #include "core/plugin/closure_ini.h"
 
 static const char bench_usage[] =
@@ -48,16 +48,16 @@ static void on_sigint(int sig) {
 }
 
 /* The run's summary line in its log, as `sluice run` prints it. */
-static void log_summary(FILE *log, const sl_ns_result *res, double wall, double cpu) {
+static void log_summary(FILE *log, const sl_run_result *res, double wall, double cpu) {
   sl_run_summary s = {.steps = res->steps, .rejected_steps = res->rejected_steps,
                       .nonlinear_iterations = res->nonlinear_iterations,
-                      .nonlinear_name = res->used_picard ? "Newton/Picard" : "Newton", .wall_seconds = wall,
-                      .cpu_seconds = cpu, .assembly = res->assembly, .factorisation = res->factorisation,
+                      .nonlinear_name = res->model.used_picard ? "Newton/Picard" : "Newton", .wall_seconds = wall,
+                      .cpu_seconds = cpu, .assembly = res->model.assembly, .factorisation = res->factorisation,
                       .solve = res->solve, .output = res->output, .step_limit = res->step_limit};
   char line[512];
   sl_run_summary_format(&s, line, sizeof line);
   fprintf(log, "%s\n", line);
-  if (res->coupling_summary[0]) fprintf(log, "sluice: %s\n", res->coupling_summary);
+  if (res->model.coupling_summary[0]) fprintf(log, "sluice: %s\n", res->model.coupling_summary);
 }
 
 typedef struct bench {
@@ -108,19 +108,12 @@ static int check_runs(bench *b, sl_diag *d) {
         if ((rc = sl_registry_create(&b->reg, (const char *const *)b->dirs, b->n_dirs, d))) break;
         if ((rc = sl_registry_scan(b->reg, d))) break;
       }
-      if ((rc = sl_scene_validate(ini, d))) break;
-      for (int k = 0; k < ini->n_sections && !rc; ++k) {
-        if (strncmp(ini->sections[k].name, "closure.", 8)) continue;
-        sl_closure *c = NULL;
-        rc = sl_closure_from_ini(b->reg, ini, ini->sections[k].name, &c, d);
-        sl_closure_destroy(c);
-      }
-      if (rc) break;
-      int model = 0, geometry = 0;
-      if ((rc = sl_ini_get_choice(ini, "scene", "model", 1, 0, "navier_stokes|mixture|two_fluid", &model, d))) break;
-      if ((rc = sl_ini_get_choice(ini, "scene", "geometry", 0, model == 2 ? 0 : 1, "line|planar|axisymmetric",
-                                  &geometry, d)))
-        break;
+      /* the scene as a run would take it: its keys, its closures created */
+      const sl_model_entry *entry;
+      sl_scene *sc = NULL;
+      if ((rc = sl_model_scene(ini, b->reg, 1, 0, &entry, &sc, d))) break;
+      int geometry = sc->geometry;
+      sl_scene_free(sc);
       const sl_study_measure *sm = &s->m;
       const sl_ini_section *ms = sm->where;
       if (sm->has_line && (sm->line_dim == 1) != (geometry == 0)) {
@@ -195,7 +188,12 @@ static int run_one(const char *path, const char *v_text, const char *p_text, con
   if (!rc) rc = sl_plugin_dirs_from_ini(ini, &dirs, &n_dirs, &d);
   if (!rc) rc = sl_registry_create(&reg, (const char *const *)dirs, n_dirs, &d);
   if (!rc) rc = sl_registry_scan(reg, &d);
-  if (!rc) rc = sl_scene_validate(ini, &d);
+  if (!rc) {
+    const sl_model_entry *entry;
+    sl_scene *sc = NULL;
+    rc = sl_model_scene(ini, reg, 0, 0, &entry, &sc, &d);
+    sl_scene_free(sc);
+  }
   if (rc) {
     fprintf(stderr, "sluice: %s\n", d.msg);
     sl_bench_send_failure(SL_BENCH_RESULT_FD, rc, d.msg);

@@ -7,17 +7,14 @@
 #include <string.h>
 
 #include "core/cli/cli.h"
-#include "core/config/ini.h"
-#include "core/config/scene_schema.h"
 #include "core/cli/progress.h"
+#include "core/config/ini.h"
 #include "core/mesh/mesh.h"
-#include "core/models/mixture/mixture.h"
-#include "core/scene/mesh.h"
-#include "core/models/navier_stokes/navier_stokes.h"
-#include "core/models/two_fluid/two_fluid.h"
+#include "core/models/run.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/instance.h"
 #include "core/plugin/kinds.h"
+#include "core/time/loop.h"
 
 static const char run_usage[] =
     "usage: sluice run SCENE.ini [--set section.key=value]... [--print-config] [-o OUT.h5]\n"
@@ -57,20 +54,21 @@ static double percent(double part, double whole) { return whole > 0 ? 100.0 * pa
 
 /* `--profile`: what the run did and what it skipped, and where the CPU time
  * went (every line starts with "sluice: profile:"). */
-static void print_profile(FILE *f, const sl_ns_result *res, const sl_registry *reg, double cpu_total) {
+static void print_profile(FILE *f, const sl_run_result *res, const sl_registry *reg, double cpu_total) {
   const char *p = "sluice: profile:";
-  if (res->matrix_assemblies + res->residual_assemblies > 0)
-    fprintf(f, "%s assemblies: %ld matrix, %ld right-hand-side only (%.3g s)\n", p, res->matrix_assemblies,
-            res->residual_assemblies, res->assembly);
-  const sl_linsolve_stats *ls = &res->linear;
+  const sl_model_stats *m = &res->model;
+  if (m->matrix_assemblies + m->residual_assemblies > 0)
+    fprintf(f, "%s assemblies: %ld matrix, %ld right-hand-side only (%.3g s)\n", p, m->matrix_assemblies,
+            m->residual_assemblies, m->assembly);
+  const sl_linsolve_stats *ls = &m->linear;
   if (ls->n_symbolic + ls->n_numeric + ls->n_solves > 0)
     fprintf(f, "%s factorisations: %ld symbolic (%.3g s), %ld numeric (%.3g s; %ld of them refactorisations), %ld "
                "skipped (matrix unchanged); %ld solves (%.3g s)\n",
             p, ls->n_symbolic, ls->t_symbolic, ls->n_numeric, ls->t_numeric, ls->n_refactor, ls->n_numeric_skipped,
             ls->n_solves, ls->t_solve);
-  if (res->roundoff_accepted > 0)
-    fprintf(f, "%s %ld nonlinear solve%s ended with the residual at round-off\n", p, res->roundoff_accepted,
-            res->roundoff_accepted == 1 ? "" : "s");
+  if (m->roundoff_accepted > 0)
+    fprintf(f, "%s %ld nonlinear solve%s ended with the residual at round-off\n", p, m->roundoff_accepted,
+            m->roundoff_accepted == 1 ? "" : "s");
   /* closures: per descriptor that had an instance */
   double closure_seconds = 0.0;
   int n_closures = 0;
@@ -100,13 +98,13 @@ static void print_profile(FILE *f, const sl_ns_result *res, const sl_registry *r
   if (res->output_times > 0)
     fprintf(f, "%s output: %ld output times, %ld datasets, %.3g MB of field values\n", p, res->output_times,
             res->output_datasets, res->output_bytes / 1e6);
-  double known = res->cpu_setup + res->cpu_flow + res->cpu_coupled + res->cpu_output;
+  double known = res->cpu_setup + m->cpu_flow + m->cpu_coupled + res->cpu_output;
   if (known > 0 && cpu_total > 0) {
     double other = cpu_total > known ? cpu_total - known : 0.0;
     fprintf(f, "%s CPU %.3g s: set-up %.3g s (%.0f %%), flow solves %.3g s (%.0f %%)", p, cpu_total, res->cpu_setup,
-            percent(res->cpu_setup, cpu_total), res->cpu_flow, percent(res->cpu_flow, cpu_total));
-    if (res->cpu_coupled > 0)
-      fprintf(f, ", solids transport %.3g s (%.0f %%)", res->cpu_coupled, percent(res->cpu_coupled, cpu_total));
+            percent(res->cpu_setup, cpu_total), m->cpu_flow, percent(m->cpu_flow, cpu_total));
+    if (m->cpu_coupled > 0)
+      fprintf(f, ", solids transport %.3g s (%.0f %%)", m->cpu_coupled, percent(m->cpu_coupled, cpu_total));
     fprintf(f, ", output %.3g s (%.0f %%), other %.3g s (%.0f %%)\n", res->cpu_output,
             percent(res->cpu_output, cpu_total), other, percent(other, cpu_total));
   }
@@ -115,40 +113,38 @@ static void print_profile(FILE *f, const sl_ns_result *res, const sl_registry *r
             closure_seconds, percent(closure_seconds, cpu_total));
 }
 
-static int simulate(sl_ini *ini, const sl_registry *reg, int model, const char *scene, const char *out_file,
-                    const char *restart, int profile, sl_diag *d) {
+static int simulate(sl_ini *ini, const sl_registry *reg, const sl_time_config *tc, const char *scene,
+                    const char *out_file, const char *restart, int profile, sl_diag *d) {
   double t0, t1;
-  int rc = sl_ns_time_span(ini, &t0, &t1, d);
-  if (rc) return rc;
+  sl_time_span(tc, &t0, &t1);
   sl_progress prog;
   sl_progress_begin(&prog, stderr, t0, t1);
-  sl_ns_run_opts o = {.scene_path = scene, .output = out_file, .restart = restart, .sluice_version = SLUICE_VERSION,
-                      .monitor = monitor, .monitor_user = &prog, .interrupt = &interrupted};
-  sl_ns_result res;
+  sl_run_opts o = {.scene_path = scene, .output = out_file, .restart = restart, .sluice_version = SLUICE_VERSION,
+                   .monitor = monitor, .monitor_user = &prog, .interrupt = &interrupted};
+  sl_run_result res;
   double w0 = sl_wall_seconds(), c0 = sl_cpu_seconds();
   void (*old)(int) = signal(SIGINT, on_sigint);
-  rc = model == 1   ? sl_mixture_run(ini, reg, &o, &res, d)
-       : model == 2 ? sl_two_fluid_run(ini, reg, &o, &res, d)
-                    : sl_ns_run(ini, reg, &o, &res, d);
+  int rc = sl_model_run(ini, reg, &o, &res, d);
   signal(SIGINT, old);
   sl_progress_end(&prog);
+  const sl_model_stats *m = &res.model;
   sl_run_summary s = {.steps = res.steps, .rejected_steps = res.rejected_steps,
                       .nonlinear_iterations = res.nonlinear_iterations,
-                      .nonlinear_name = res.used_picard ? "Newton/Picard" : "Newton",
+                      .nonlinear_name = m->used_picard ? "Newton/Picard" : "Newton",
                       .wall_seconds = sl_wall_seconds() - w0, .cpu_seconds = sl_cpu_seconds() - c0,
-                      .assembly = res.assembly, .factorisation = res.factorisation, .solve = res.solve,
+                      .assembly = m->assembly, .factorisation = res.factorisation, .solve = res.solve,
                       .output = res.output, .step_limit = res.step_limit};
   if (rc != SL_EBADINPUT) {
     char line[512];
     sl_run_summary_format(&s, line, sizeof line);
     fprintf(stderr, "%s\n", line);
-    if (res.coupling_summary[0]) fprintf(stderr, "sluice: %s\n", res.coupling_summary);
+    if (m->coupling_summary[0]) fprintf(stderr, "sluice: %s\n", m->coupling_summary);
     if (res.output_path[0]) {
-      fprintf(stderr, "sluice: output %s (%s", res.output_path, res.linear_summary);
+      fprintf(stderr, "sluice: output %s (%s", res.output_path, m->linear_summary);
       /* what was skipped shows in the counts: a constant matrix is assembled once */
-      if (res.matrix_assemblies + res.residual_assemblies > 0)
-        fprintf(stderr, "; assemblies: %ld matrix, %ld right-hand-side only", res.matrix_assemblies,
-                res.residual_assemblies);
+      if (m->matrix_assemblies + m->residual_assemblies > 0)
+        fprintf(stderr, "; assemblies: %ld matrix, %ld right-hand-side only", m->matrix_assemblies,
+                m->residual_assemblies);
       fputs(")\n", stderr);
     }
     if (res.stop_reason[0]) fprintf(stderr, "sluice: %s\n", res.stop_reason);
@@ -199,61 +195,50 @@ int sl_cmd_run(int argc, char **argv) {
   sl_diag d;
   sl_ini *ini = NULL;
   sl_registry *reg = NULL;
+  sl_scene *sc = NULL;
+  const sl_model_entry *entry = NULL;
   char **dirs = NULL;
   int n_dirs = 0, rc;
-  enum { MAX_CLOSURES = 64 };
-  sl_closure *closures[MAX_CLOSURES];
-  int n_closures = 0;
   if ((rc = sl_ini_parse_file(scene, &ini, &d))) goto fail;
   for (int i = 0; i < n_sets; ++i)
     if ((rc = sl_ini_apply_override(ini, sets[i], &d))) goto fail;
-  if ((rc = sl_scene_validate(ini, &d))) goto fail;
   if ((rc = sl_plugin_dirs_from_ini(ini, &dirs, &n_dirs, &d))) goto fail;
   /* Only the libraries of the closures the scene names are loaded. */
   if ((rc = sl_registry_create(&reg, (const char *const *)dirs, n_dirs, &d))) goto fail;
   if ((rc = sl_registry_index(reg, &d))) goto fail;
   if (profile) sl_registry_set_timing(reg, 1);
-  int model = 0;
-  if ((rc = sl_ini_get_choice(ini, "scene", "model", !print_config, 0, "navier_stokes|mixture|two_fluid", &model, &d)))
+  /* The whole scene is checked first (bad input: exit 2, nothing written): every section and key against the
+   * model's schema, each closure against its own; --check also builds the mesh and creates the closures. */
+  if ((rc = sl_model_scene(ini, reg, check_only && !print_config, check_only && !print_config, &entry, &sc, &d)))
     goto fail;
-  /* Every closure section is checked here (bad input: exit 2, nothing
-   * written); a run leaves creating them to the model, once. */
-  for (int s = 0; s < ini->n_sections; ++s) {
-    const char *name = ini->sections[s].name;
-    if (strncmp(name, "closure.", 8) != 0) continue;
-    if (!check_only || print_config) {
-      if ((rc = sl_closure_check_ini(reg, ini, name, &d))) goto fail;
-      continue;
-    }
-    if (n_closures == MAX_CLOSURES) {
-      rc = sl_diag_set(&d, SL_EBADINPUT, "%s: more than %d closures", scene, MAX_CLOSURES);
-      goto fail;
-    }
-    if ((rc = sl_closure_from_ini(reg, ini, name, &closures[n_closures], &d))) goto fail;
-    n_closures++;
-  }
   if (print_config) {
     if (sl_ini_write(ini, stdout)) rc = sl_diag_set(&d, SL_EFAILED, "cannot write the configuration");
     goto fail;
   }
   if (check_only) {
+    /* every check a run makes before it writes anything: the model's own set-up too */
+    void *self = NULL;
+    sl_model_info info;
+    if ((rc = entry->ops->setup(&self, sc, &info, &d))) goto fail;
+    entry->ops->destroy(self);
+    int n_closures = 0;
+    for (int r = 0; r < entry->schema->n_roles; ++r) n_closures += sc->closures[r] != NULL;
     printf("%s: scene valid; %d closure%s resolved\n", scene, n_closures, n_closures == 1 ? "" : "s");
-    for (int i = 0; i < n_closures; ++i) {
-      const sl_closure_desc *c = closures[i]->desc;
-      printf("  %-18s %-24s %s (%s)\n", sl_kind_name(c->kind), c->name, c->version, closures[i]->library->path);
+    for (int r = 0; r < entry->schema->n_roles; ++r) {
+      const sl_closure *cl = sc->closures[r];
+      if (!cl) continue;
+      const sl_closure_desc *c = cl->desc;
+      printf("  %-18s %-24s %s (%s)\n", sl_kind_name(c->kind), c->name, c->version, cl->library->path);
     }
     /* the mesh is built and checked too, and its report says where the cells are finest */
-    if (sl_ini_find_section(ini, "mesh")) {
-      sl_mesh *m = NULL;
-      if ((rc = sl_scene_mesh(ini, &m, &d))) goto fail;
-      sl_mesh_print_report(m, stdout);
-      sl_mesh_destroy(m);
-    }
+    if (sc->mesh) sl_mesh_print_report(sc->mesh, stdout);
     goto fail;
   }
-  rc = simulate(ini, reg, model, scene, out_file, restart, profile, &d);
+  sl_time_config tc = sc->time;
+  sl_scene_free(sc), sc = NULL;
+  rc = simulate(ini, reg, &tc, scene, out_file, restart, profile, &d);
 fail:
-  for (int i = 0; i < n_closures; ++i) sl_closure_destroy(closures[i]);
+  sl_scene_free(sc);
   sl_registry_destroy(reg);
   sl_plugin_dirs_free(dirs, n_dirs);
   sl_ini_free(ini);

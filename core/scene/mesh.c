@@ -1,18 +1,17 @@
-/* The mesh a scene's [mesh] section describes (see scene_mesh.h). */
+/* The mesh a scene's [mesh] section describes (see mesh.h). */
 #include "core/scene/mesh.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const generators = "interval|rectangle|annulus|inclined_box|gmsh";
+#include "core/scene/scene.h"
 
 /* "geometric:1.5", "symmetric:2" or a bare ratio (geometric). */
-static int grading(const sl_ini *ini, const char *key, sl_grading *g, sl_diag *d) {
-  const char *s;
-  int rc = sl_ini_get_string(ini, "mesh", key, 0, "", &s, d);
-  if (rc || !*s) return rc;
-  const sl_ini_entry *e = sl_ini_find(ini, "mesh", key);
+static int grading(const sl_scene *sc, const char *const *text, const char *key, sl_grading *g, sl_diag *d) {
+  const char *s = *text;
+  if (!s || !*s) return 0;
+  const sl_src *e = sl_scene_src(sc, text);
   const char *colon = strchr(s, ':');
   g->kind = SL_GRADE_GEOMETRIC;
   const char *num = s;
@@ -29,21 +28,29 @@ static int grading(const sl_ini *ini, const char *key, sl_grading *g, sl_diag *d
   return 0;
 }
 
-static int range(const sl_ini *ini, const char *key, double v[2], sl_diag *d) {
-  int n = 0, rc = sl_ini_get_real_list(ini, "mesh", key, 1, v, 2, &n, d);
-  if (rc) return rc;
-  const sl_ini_entry *e = sl_ini_find(ini, "mesh", key);
-  if (n != 2 || !(v[1] > v[0]))
+/* A required key of the generator that the scene does not give. */
+static int missing(const sl_scene *sc, const char *key, sl_diag *d) {
+  const sl_ini_section *s = sl_ini_find_section(sc->ini, "mesh");
+  return sl_diag_set(d, SL_EBADINPUT, "%s:%d:1: error: [mesh] is missing the required key '%s'", s ? s->file : "?",
+                     s ? s->line : 0, key);
+}
+
+static int range(const sl_scene *sc, const sl_reals *r, const char *key, double v[2], sl_diag *d) {
+  const sl_src *e = sl_scene_src(sc, r);
+  if (!e) return missing(sc, key, d);
+  if (r->n != 2 || !(r->v[1] > r->v[0]))
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [mesh] %s: expected two increasing numbers, e.g. %s = 0, 1", e->file,
                        e->line, key, key);
+  v[0] = r->v[0], v[1] = r->v[1];
   return 0;
 }
 
-static int cells(const sl_ini *ini, int want, int n[2], sl_diag *d) {
-  double v[2];
-  int k = 0, rc = sl_ini_get_real_list(ini, "mesh", "cells", 1, v, 2, &k, d);
-  if (rc) return rc;
-  const sl_ini_entry *e = sl_ini_find(ini, "mesh", "cells");
+static int cells(const sl_scene *sc, int want, int n[2], sl_diag *d) {
+  const sl_reals *r = &sc->mesh_config.cells;
+  const sl_src *e = sl_scene_src(sc, r);
+  if (!e) return missing(sc, "cells", d);
+  double v[2] = {r->v[0], r->n > 1 ? r->v[1] : 0.0};
+  int k = r->n;
   if (k == 1 && want == 2) v[1] = v[0], k = 2;
   for (int i = 0; i < k; ++i)
     if (v[i] < 1 || v[i] > 1e6 || v[i] != (int)v[i])
@@ -56,54 +63,49 @@ static int cells(const sl_ini *ini, int want, int n[2], sl_diag *d) {
   return 0;
 }
 
-int sl_scene_mesh(const sl_ini *ini, sl_mesh **out, sl_diag *d) {
+int sl_scene_mesh_build(const sl_scene *sc, sl_mesh **out, sl_diag *d) {
   *out = NULL;
-  int gen, rc = sl_ini_get_choice(ini, "mesh", "generator", 1, 0, generators, &gen, d);
-  if (rc) return rc;
+  const sl_mesh_config *c = &sc->mesh_config;
+  int rc;
   sl_grid_opts o = {0};
-  int type = 0, diag = 0;
-  if ((rc = sl_ini_get_choice(ini, "mesh", "cell_type", 0, 0, "quad|tri", &type, d))) return rc;
-  if ((rc = sl_ini_get_choice(ini, "mesh", "diagonal", 0, 0, "right|left|union_jack", &diag, d))) return rc;
-  o.cell_type = type ? SL_CELL_TRI3 : SL_CELL_QUAD4;
-  o.diagonal = (sl_diagonal)diag;
-  if ((rc = grading(ini, "grading_x", &o.grade_x, d)) || (rc = grading(ini, "grading_y", &o.grade_y, d))) return rc;
+  o.cell_type = c->cell_type ? SL_CELL_TRI3 : SL_CELL_QUAD4;
+  o.diagonal = (sl_diagonal)c->diagonal;
+  if ((rc = grading(sc, &c->grading_x, "grading_x", &o.grade_x, d)) ||
+      (rc = grading(sc, &c->grading_y, "grading_y", &o.grade_y, d)))
+    return rc;
   double x[2], y[2];
   int n[2];
-  switch (gen) {
+  switch (c->generator) {
     case 0: /* interval */
-      if ((rc = range(ini, "x", x, d)) || (rc = cells(ini, 1, n, d))) return rc;
+      if ((rc = range(sc, &c->x, "x", x, d)) || (rc = cells(sc, 1, n, d))) return rc;
       return sl_mesh_interval(x[0], x[1], n[0], &o.grade_x, out, d);
     case 1: /* rectangle */
-      if ((rc = range(ini, "x", x, d)) || (rc = range(ini, "y", y, d)) || (rc = cells(ini, 2, n, d))) return rc;
-      double shear;
-      if ((rc = sl_ini_get_real(ini, "mesh", "shear", 0, 0.0, -10.0, 10.0, &shear, d))) return rc;
+      if ((rc = range(sc, &c->x, "x", x, d)) || (rc = range(sc, &c->y, "y", y, d)) || (rc = cells(sc, 2, n, d)))
+        return rc;
       if ((rc = sl_mesh_rectangle(x[0], x[1], y[0], y[1], n[0], n[1], &o, out, d))) return rc;
       /* a parallelogram: x moves by shear (y - y0); the map has determinant 1, so cells keep their orientation */
-      for (int v = 0; v < (*out)->n_vertices && shear != 0.0; ++v)
-        (*out)->xy[2 * v] += shear * ((*out)->xy[2 * v + 1] - y[0]);
+      for (int v = 0; v < (*out)->n_vertices && c->shear != 0.0; ++v)
+        (*out)->xy[2 * v] += c->shear * ((*out)->xy[2 * v + 1] - y[0]);
       return 0;
     case 2: /* annulus: (r, z) box */
-      if ((rc = range(ini, "r", x, d)) || (rc = range(ini, "z", y, d)) || (rc = cells(ini, 2, n, d))) return rc;
+      if ((rc = range(sc, &c->r, "r", x, d)) || (rc = range(sc, &c->z, "z", y, d)) || (rc = cells(sc, 2, n, d)))
+        return rc;
       if (x[0] < 0.0) {
-        const sl_ini_entry *e = sl_ini_find(ini, "mesh", "r");
+        const sl_src *e = sl_scene_src(sc, &c->r);
         return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [mesh] r: the inner radius %g is negative", e->file, e->line, x[0]);
       }
       return sl_mesh_annulus(x[0], x[1], y[0], y[1], n[0], n[1], &o, out, d);
     case 3: { /* inclined box */
-      double origin[2] = {0, 0}, angle = 0.0, width, height;
-      int k = 0;
-      if ((rc = sl_ini_get_real_list(ini, "mesh", "origin", 0, origin, 2, &k, d))) return rc;
-      if ((rc = sl_ini_get_real(ini, "mesh", "width", 1, 0, 1e-12, 1e12, &width, d))) return rc;
-      if ((rc = sl_ini_get_real(ini, "mesh", "height", 1, 0, 1e-12, 1e12, &height, d))) return rc;
-      if ((rc = sl_ini_get_real(ini, "mesh", "angle", 0, 0.0, -7.0, 7.0, &angle, d))) return rc;
-      if ((rc = cells(ini, 2, n, d))) return rc;
-      return sl_mesh_inclined_box(origin[0], origin[1], width, height, angle, n[0], n[1], &o, out, d);
+      double origin[2] = {c->origin.n > 0 ? c->origin.v[0] : 0.0, c->origin.n > 1 ? c->origin.v[1] : 0.0};
+      if (!sl_scene_given(sc, &c->width)) return missing(sc, "width", d);
+      if (!sl_scene_given(sc, &c->height)) return missing(sc, "height", d);
+      if ((rc = cells(sc, 2, n, d))) return rc;
+      return sl_mesh_inclined_box(origin[0], origin[1], c->width, c->height, c->angle, n[0], n[1], &o, out, d);
     }
     default: { /* gmsh, relative to the scene file */
-      const char *file;
-      if ((rc = sl_ini_get_string(ini, "mesh", "file", 1, "", &file, d))) return rc;
-      const sl_ini_entry *e = sl_ini_find(ini, "mesh", "file");
-      char *path = sl_ini_path_relative(e->file, file);
+      const sl_src *e = sl_scene_src(sc, &c->file);
+      if (!e) return missing(sc, "file", d);
+      char *path = sl_ini_path_relative(e->file, c->file);
       if (!path) return sl_diag_set(d, SL_EFAILED, "mesh: out of memory");
       rc = sl_mesh_read_gmsh(path, out, d);
       free(path);
@@ -146,20 +148,8 @@ static const char *line_end_name(const sl_mesh *m, int vertex) {
   return NULL;
 }
 
-int sl_scene_line_ends(const sl_ini *ini, const sl_mesh *m, int first, int last, const char *model,
-                       const char *names[2], sl_diag *d) {
+int sl_scene_line_ends(const sl_mesh *m, int first, int last, const char *model, const char *names[2], sl_diag *d) {
   names[0] = line_end_name(m, first), names[1] = line_end_name(m, last);
   if (!names[0] || !names[1]) return sl_diag_set(d, SL_EBADINPUT, "%s: the line's ends carry no boundary tag", model);
-  for (int s = 0; s < ini->n_sections; ++s) {
-    const sl_ini_section *sec = &ini->sections[s];
-    if (strncmp(sec->name, "boundary.", 9) != 0) continue;
-    const char *b = sec->name + 9;
-    if (strcmp(b, names[0]) != 0 && strcmp(b, names[1]) != 0) {
-      const char *sug = sl_suggest(b, names, 2);
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the mesh has no boundary '%s'%s%s%s (its ends: %s, %s)",
-                         sec->file, sec->line, sec->name, b, sug ? "; did you mean '" : "", sug ? sug : "",
-                         sug ? "'?" : "", names[0], names[1]);
-    }
-  }
   return 0;
 }

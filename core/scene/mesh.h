@@ -1,4 +1,5 @@
-/* The mesh of a scene, from its [mesh] section:
+/* The mesh of a scene, from its [mesh] section (the keys, their defaults and
+ * ranges: core/scene/keys.c):
  *   generator = interval | rectangle | annulus | inclined_box | gmsh
  *   x = x0, x1   y = y0, y1        (interval: x only; rectangle)
  *   r = r0, r1   z = z0, z1        (annulus: the axisymmetric (r, z) box)
@@ -8,13 +9,14 @@
  *   grading_x = geometric:RATIO | symmetric:RATIO   grading_y = ...
  *   file = mesh.msh                 (gmsh, relative to the scene file)
  * Errors name the file and line of the offending key. */
-#ifndef SLUICE_MODELS_SCENE_MESH_H
-#define SLUICE_MODELS_SCENE_MESH_H
+#ifndef SLUICE_SCENE_MESH_H
+#define SLUICE_SCENE_MESH_H
 
-#include "core/config/ini.h"
 #include "core/mesh/mesh.h"
 
-int sl_scene_mesh(const sl_ini *ini, sl_mesh **out, sl_diag *d);
+struct sl_scene;
+
+int sl_scene_mesh_build(const struct sl_scene *sc, sl_mesh **out, sl_diag *d);
 
 /* A 1-D mesh as one chain of cells in order of increasing x: vertex[k]
  * (k = 0..n) is the k-th vertex along the chain and cell[i] (i = 0..n-1)
@@ -22,11 +24,8 @@ int sl_scene_mesh(const sl_ini *ini, sl_mesh **out, sl_diag *d);
  * mesh is not 1-D or not a single chain. */
 int sl_scene_line_chain(const sl_mesh *m, int *vertex, int *cell, sl_diag *d);
 
-/* The boundary names of a 1-D chain's two ends (vertices first and last),
- * checking that every [boundary.NAME] of the scene names one of them (else
- * SL_EBADINPUT with file:line and a "did you mean"). model names the model
- * in the message when an end carries no tag. */
-int sl_scene_line_ends(const sl_ini *ini, const sl_mesh *m, int first, int last, const char *model,
-                       const char *names[2], sl_diag *d);
+/* The boundary names of a 1-D chain's two ends (vertices first and last);
+ * SL_EBADINPUT naming `model` when an end carries no tag. */
+int sl_scene_line_ends(const sl_mesh *m, int first, int last, const char *model, const char *names[2], sl_diag *d);
 
 #endif

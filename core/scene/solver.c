@@ -1,22 +1,25 @@
-/* The sparse direct solver of a scene (scene_solver.h). */
+/* The sparse direct solver of a scene (solver.h). */
 #include "core/scene/solver.h"
 
 #include <string.h>
 
-int sl_scene_linsolve(const sl_ini *ini, const char *default_linear, const char *default_ordering, sl_linsolve **ls,
-                      const char **name, sl_diag *d) {
+static const char *const orderings[] = {"auto", "amd", "colamd", "metis"};
+
+int sl_scene_linsolve(const sl_scene *sc, sl_linsolve **ls, const char **name, sl_diag *d) {
   *ls = NULL;
-  const char *ordering = NULL;
-  int rc = sl_ini_get_string(ini, "solver", "linear", 0, default_linear, name, d);
-  if (!rc) rc = sl_ini_get_string(ini, "solver", "ordering", 0, NULL, &ordering, d);
-  if (!rc) rc = sl_linsolve_create(ls, *name, d);
+  int n = 0;
+  const char *const *names = sl_linsolve_names(&n);
+  *name = sc->solver.linear >= 0 && sc->solver.linear < n ? names[sc->solver.linear] : names[0];
+  int rc = sl_linsolve_create(ls, *name, d);
   if (rc) return rc;
-  const sl_ini_entry *e = sl_ini_find(ini, "solver", "ordering");
-  if (!ordering && strcmp(*name, "klu") == 0) ordering = default_ordering;
-  if (ordering && (rc = sl_linsolve_set_ordering(*ls, ordering, d))) {
+  const sl_key *k = sl_schema_key(sc->schema, "solver", "ordering");
+  int given = sl_scene_given(sc, &sc->solver.ordering);
+  int ordering = given ? sc->solver.ordering : (k && strcmp(*name, "klu") == 0 ? (int)k->def : 0);
+  if ((given || ordering != 0) && (rc = sl_linsolve_set_ordering(*ls, orderings[ordering], d))) {
     sl_linsolve_destroy(*ls);
     *ls = NULL;
-    return e ? sl_diag_prefix(d, SL_EBADINPUT, "%s:%d: [solver] ordering", e->file, e->line) : rc;
+    char at[400];
+    return given ? sl_diag_prefix(d, SL_EBADINPUT, "%s", sl_scene_where(sc, &sc->solver.ordering, at, sizeof at)) : rc;
   }
   return 0;
 }

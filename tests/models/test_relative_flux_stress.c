@@ -28,7 +28,7 @@
 #include <string.h>
 
 #include "core/assembly/flow.h"
-#include "core/config/scene_schema.h"
+#include "core/models/run.h"
 #include "core/io/output.h"
 #include "core/mesh/mesh.h"
 #include "core/models/mixture/mixture.h"
@@ -187,14 +187,13 @@ static const column columns[3] = {
 static int run_text(const char *text, const char *const *sets, const char *out, const char *restart, sl_diag *d) {
   sl_ini *ini = NULL;
   sl_registry *reg = NULL;
-  sl_ns_result res;
-  sl_ns_run_opts o = {.scene_path = "column.ini", .output = out, .restart = restart, .sluice_version = "test"};
+  sl_run_result res;
+  sl_run_opts o = {.scene_path = "column.ini", .output = out, .restart = restart, .sluice_version = "test"};
   int rc = sl_ini_parse_string(text, strlen(text), "column.ini", &ini, d);
   for (int i = 0; sets && sets[i] && !rc; ++i) rc = sl_ini_apply_override(ini, sets[i], d);
-  if (!rc) rc = sl_scene_validate(ini, d);
   if (!rc) rc = sl_registry_create(&reg, NULL, 0, d);
   if (!rc) rc = sl_registry_scan(reg, d);
-  if (!rc) rc = sl_mixture_run(ini, reg, &o, &res, d);
+  if (!rc) rc = sl_model_run(ini, reg, &o, &res, d);
   sl_registry_destroy(reg);
   sl_ini_free(ini);
   return rc;

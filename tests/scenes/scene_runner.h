@@ -7,11 +7,11 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/config/scene_schema.h"
+#include "core/models/run.h"
 #include "core/models/navier_stokes/navier_stokes.h"
 #include "core/plugin/closure_ini.h"
 
-typedef int (*scene_model_run)(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res,
+typedef int (*scene_model_run)(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_run_result *res,
                                sl_diag *d);
 
 typedef struct scene_request {
@@ -24,7 +24,7 @@ typedef struct scene_request {
   const char *restart;     /* checkpoint to continue from (NULL: start) */
 } scene_request;
 
-static inline int scene_run(const scene_request *q, scene_model_run run, sl_ns_result *res, sl_diag *d) {
+static inline int scene_run(const scene_request *q, scene_model_run run, sl_run_result *res, sl_diag *d) {
   char path[4200];
   snprintf(path, sizeof path, "%s/%s.ini", q->configs, q->scene);
   sl_ini *ini = NULL;
@@ -46,11 +46,10 @@ static inline int scene_run(const scene_request *q, scene_model_run run, sl_ns_r
     rc = sl_ini_parse_file(path, &ini, d);
   }
   for (int i = 0; q->sets && q->sets[i] && !rc; ++i) rc = sl_ini_apply_override(ini, q->sets[i], d);
-  if (!rc) rc = sl_scene_validate(ini, d);
   if (!rc) rc = sl_registry_create(&reg, NULL, 0, d);
   if (!rc) rc = sl_registry_scan(reg, d);
-  sl_ns_result r;
-  sl_ns_run_opts o = {.scene_path = path, .output = q->out, .restart = q->restart, .sluice_version = "test"};
+  sl_run_result r;
+  sl_run_opts o = {.scene_path = path, .output = q->out, .restart = q->restart, .sluice_version = "test"};
   if (!rc) rc = run(ini, reg, &o, res ? res : &r, d);
   sl_registry_destroy(reg);
   sl_ini_free(ini);

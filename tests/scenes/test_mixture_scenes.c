@@ -39,7 +39,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/config/scene_schema.h"
+#include "core/models/run.h"
 #include "core/io/output.h"
 #include "core/io/sample.h"
 #include "core/models/mixture/mixture.h"
@@ -52,7 +52,7 @@
 
 static char configs[4096];
 
-SCENE_RUNNERS(sl_mixture_run)
+SCENE_RUNNERS(sl_model_run)
 
 static double scalar(const char *file, const char *name, double t) {
   sl_diag d = {{0}};

@@ -27,7 +27,7 @@
 static char configs[4096];
 static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): 16 and 32 cells */
 
-SCENE_RUNNERS(sl_two_fluid_run)
+SCENE_RUNNERS(sl_model_run)
 
 /* The largest errors of the pressure (against the datum of cell 0) and of the fluid's velocity at t = 0.1 on n x n
  * cells, with convection or without. */

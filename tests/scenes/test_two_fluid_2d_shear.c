@@ -56,7 +56,7 @@
 static char configs[4096];
 static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): 10 and 20 cells, no start from rest, one frame */
 
-SCENE_RUNNERS(sl_two_fluid_run)
+SCENE_RUNNERS(sl_model_run)
 
 /* ---- couette_slip ------------------------------------------------------------------ */
 
@@ -243,7 +243,7 @@ static double transported_theta(const char *dt, const char *end, const char *res
   scene_request q = {.configs = configs, .scene = "two_fluid_2d/kinetic_shear", .sets = sets, .out = out,
                      .restart = restart};
   sl_diag d = {{0}};
-  if (scene_run(&q, sl_two_fluid_run, NULL, &d)) {
+  if (scene_run(&q, sl_model_run, NULL, &d)) {
     CHECK_MSG(0, "kinetic_shear, transported theta: %s", d.msg);
     return NAN;
   }

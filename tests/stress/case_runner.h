@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/config/scene_schema.h"
+#include "core/models/run.h"
 #include "core/io/output.h"
 #include "core/io/sample.h"
 #include "core/models/mixture/mixture.h"
@@ -41,7 +41,6 @@ static inline int scene_case_open(scene_case *c, const char *configs, const char
   snprintf(path, sizeof path, "%s/%s.ini", configs, scene);
   int rc = sl_ini_parse_file(path, &c->ini, d);
   for (int i = 0; sets && sets[i] && !rc; ++i) rc = sl_ini_apply_override(c->ini, sets[i], d);
-  if (!rc) rc = sl_scene_validate(c->ini, d);
   if (!rc) rc = sl_ini_get_choice(c->ini, "scene", "model", 1, 0, "navier_stokes|mixture|two_fluid", &c->model, d);
   if (!rc) rc = sl_registry_create(&c->reg, NULL, 0, d);
   if (!rc) rc = sl_registry_index(c->reg, d);
@@ -53,12 +52,12 @@ static inline int scene_case_open(scene_case *c, const char *configs, const char
   return rc;
 }
 
-static inline int scene_case_run(scene_case *c, const char *scene_path, const char *out, sl_ns_result *res,
+static inline int scene_case_run(scene_case *c, const char *scene_path, const char *out, sl_run_result *res,
                                  sl_diag *d) {
-  sl_ns_run_opts o = {.scene_path = scene_path, .output = out, .sluice_version = "test"};
-  return c->model == 1   ? sl_mixture_run(c->ini, c->reg, &o, res, d)
-         : c->model == 2 ? sl_two_fluid_run(c->ini, c->reg, &o, res, d)
-                         : sl_ns_run(c->ini, c->reg, &o, res, d);
+  sl_run_opts o = {.scene_path = scene_path, .output = out, .sluice_version = "test"};
+  return c->model == 1   ? sl_model_run(c->ini, c->reg, &o, res, d)
+         : c->model == 2 ? sl_model_run(c->ini, c->reg, &o, res, d)
+                         : sl_model_run(c->ini, c->reg, &o, res, d);
 }
 
 /* The libraries a run has loaded whose file name starts with `prefix`. */

@@ -1,4 +1,4 @@
-/* The mixture model: the solids fraction coupled to the flow (see
+/* The mixture model: the solids fraction riding on the flow (see
  * mixture.h). */
 #include "core/models/mixture/mixture.h"
 
@@ -6,16 +6,29 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "core/config/expr.h"
 #include "core/fe/field.h"
 #include "core/fv/face_flux.h"
 #include "core/models/mixture/stream_function.h"
-#include "core/plugin/closure_ini.h"
+#include "core/models/navier_stokes/flow.h"
 #include "core/plugin/instance.h"
 #include "core/plugin/kinds.h"
+#include "core/scene/keys.h"
 #include "core/transport/migration.h"
 #include "core/transport/transport.h"
+
+/* The model's own keys ([initial] phi, [mixture], [transport]). */
+typedef struct mixture_config {
+  sl_flow_config flow; /* first: the flow's keys address it from the config's start */
+  sl_scene_expr phi;
+  int slip_acceleration, relative_flux_stress;
+  double reference_acceleration, diffusivity;
+  long order, table_points;
+  int limiter;
+  double cfl;
+} mixture_config;
 
 enum { MAX_LEVELS = 8, MAX_IN = 32 };
 
@@ -83,9 +96,11 @@ typedef struct settling {
 } settling;
 
 typedef struct mixture {
-  const sl_ini *ini;
-  const sl_registry *reg;
-  sl_ns_coupling cpl;
+  sl_scene *sc;
+  const mixture_config *cfg;
+  sl_flow *flow_model; /* the flow it rides on */
+  double rho_solid;
+  const double *extra_stress; /* the flow's extra stress (node_stress), NULL without relative_flux_stress */
   const sl_th_space *th;
   const sl_mesh *m;
   int axi;
@@ -109,7 +124,8 @@ typedef struct mixture {
   sl_stream_graph pg;
   unsigned fields; /* bit k: field_names[k] is written */
   double inventory0, inflow, trial_inflow;
-  double inventory; /* of the current state: the summary needs it after the mesh is gone */
+  double inventory; /* of the current state */
+  double cpu_coupled; /* CPU seconds in the transport steps */
   double book[2]; /* inventory0 and inflow as checkpointed */
   long substeps, fallbacks, trial_substeps, trial_fallbacks, advances;
   double max_raw_div, trial_raw_div, max_div;
@@ -140,46 +156,50 @@ static int settling_fn(void *user, int n, const double *phi, double *u, double *
   return rc ? sl_diag_prefix(d, SL_EBADINPUT, "settling flux") : 0;
 }
 
+/* [solid] diameter, which a closure with the input d_p needs. */
+static int solid_diameter(const sl_scene *sc, double *v, sl_diag *d) {
+  *v = sc->solid.diameter;
+  return sl_scene_require(sc, &sc->solid.diameter, d);
+}
+
 /* Binds the closure's inputs to the scene: phi varies; d_p, sphericity,
  * rho_s from [solid]; rho_f, mu_f from [fluid]; gravity is g_ref; d_vessel
  * infinite (no wall term) unless [solid] vessel_diameter. */
 static int settling_setup(mixture *x, sl_diag *d) {
   settling *s = &x->st;
-  const sl_ini *ini = x->ini;
-  if (!sl_ini_find_section(ini, "closure.hindered_settling")) return 0;
-  int rc = sl_closure_from_ini(x->reg, ini, "closure.hindered_settling", &s->b.c, d);
-  if (rc) return rc;
+  const sl_scene *sc = x->sc;
+  if (!(s->b.c = sl_scene_closure(sc, "hindered_settling"))) return 0;
+  int rc = 0;
   const sl_closure_desc *c = s->b.c->desc;
-  const sl_ini_section *sec = sl_ini_find_section(ini, "closure.hindered_settling");
-  char label[128];
+  char label[128], where[300];
+  sl_scene_closure_where(sc, "hindered_settling", where, sizeof where);
   sl_closure_label(c, label, sizeof label);
   s->in_phi = sl_closure_input(c, "phi");
   s->out_u = sl_closure_output(c, "settling_velocity");
   if (s->in_phi < 0 || s->out_u < 0 || c->n_in > MAX_IN || c->n_out > MAX_IN)
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [closure.hindered_settling] %s does not map phi to a settling_velocity",
-                       sec->file, sec->line, label);
+    return sl_diag_set(d, SL_EBADINPUT, "%s %s does not map phi to a settling_velocity", where, label);
   for (int i = 0; i < c->n_in; ++i) {
     const char *name = c->in[i].name;
     double v = 0.0;
     if (i == s->in_phi) continue;
-    if (strcmp(name, "d_p") == 0) rc = sl_ini_get_real(ini, "solid", "diameter", 1, 0, 1e-9, 1.0, &v, d);
-    else if (strcmp(name, "sphericity") == 0) rc = sl_ini_get_real(ini, "solid", "sphericity", 0, 1.0, 0.01, 1.0, &v, d);
-    else if (strcmp(name, "rho_s") == 0) v = x->cpl.rho_solid;
+    if (strcmp(name, "d_p") == 0) rc = solid_diameter(sc, &v, d);
+    else if (strcmp(name, "sphericity") == 0) v = sc->solid.sphericity;
+    else if (strcmp(name, "rho_s") == 0) v = x->rho_solid;
     else if (strcmp(name, "rho_f") == 0) v = x->rho_f;
     else if (strcmp(name, "mu_f") == 0) v = x->mu_f;
     else if (strcmp(name, "gravity") == 0) v = x->g_ref;
     else if (strcmp(name, "d_vessel") == 0) v = HUGE_VAL;
     else
       return sl_diag_set(d, SL_EBADINPUT,
-                         "%s:%d: [closure.hindered_settling] %s needs the input '%s', which the mixture model does not "
-                         "provide (it provides phi, d_p, sphericity, rho_s, rho_f, mu_f, gravity, d_vessel)",
-                         sec->file, sec->line, label, name);
+                         "%s %s needs the input '%s', which the mixture model does not provide (it provides phi, d_p, "
+                         "sphericity, rho_s, rho_f, mu_f, gravity, d_vessel)",
+                         where, label, name);
     if (rc) return sl_diag_prefix(d, rc, "[closure.hindered_settling] %s needs %s", label, name);
     s->b.fixed[i] = v;
   }
   /* phi_max: the closure's packing parameter unless the scene sets [solid] phi_max; both must agree */
   int k = sl_params_find(c, "phi_max");
-  const sl_ini_entry *pe = sl_ini_find(ini, "solid", "phi_max");
+  const sl_src *pe = sl_scene_src(sc, &sc->solid.phi_max);
   if (k >= 0) {
     char buf[64];
     double cv;
@@ -325,7 +345,7 @@ static int stress_setup(mixture *x, sl_diag *d) {
   int rc = stress_of(x, x->phi, d);
   if (rc) return rc;
   node_stress_of(x);
-  x->cpl.extra_stress = x->node_stress;
+  x->extra_stress = x->node_stress;
   return 0;
 }
 
@@ -407,48 +427,45 @@ static int create_gradient_flux(mixture *x, const sl_migration_opts *mo, sl_diag
  * mu(phi) for its viscosity-gradient part, and [mixture] diffusivity, the
  * particle diffusivity of a pseudo-continuum (Lalli 1993, eq 0.2). */
 static int migration_setup(mixture *x, sl_diag *d) {
-  const sl_ini *ini = x->ini;
-  const sl_ini_section *sec = sl_ini_find_section(ini, "closure.migration");
-  double eps = 0.0;
-  int rc = sl_ini_get_real(ini, "mixture", "diffusivity", 0, 0.0, 0.0, 1e6, &eps, d);
-  if (rc) return rc;
+  const sl_scene *sc = x->sc;
+  double eps = x->cfg->diffusivity;
+  int rc = 0;
   sl_migration_opts mo = {.diffusivity = eps};
-  if (!sec) return eps > 0.0 ? create_gradient_flux(x, &mo, d) : 0;
-  if ((rc = sl_closure_from_ini(x->reg, ini, "closure.migration", &x->mig.c, d))) return rc;
+  if (!(x->mig.c = sl_scene_closure(sc, "migration"))) return eps > 0.0 ? create_gradient_flux(x, &mo, d) : 0;
   const sl_closure_desc *c = x->mig.c->desc;
-  char label[128];
+  char label[128], where[300];
   sl_closure_label(c, label, sizeof label);
+  sl_scene_closure_where(sc, "migration", where, sizeof where);
   x->mig_phi = sl_closure_input(c, "phi"), x->mig_shear = sl_closure_input(c, "shear_rate");
   x->mig_dc = sl_closure_output(c, "D_c"), x->mig_dmu = sl_closure_output(c, "D_mu");
   if (x->mig_phi < 0 || x->mig_shear < 0 || x->mig_dc < 0 || x->mig_dmu < 0 || c->n_in > MAX_IN || c->n_out > MAX_IN)
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [closure.migration] %s does not give D_c and D_mu of phi and shear_rate",
-                       sec->file, sec->line, label);
+    return sl_diag_set(d, SL_EBADINPUT, "%s %s does not give D_c and D_mu of phi and shear_rate", where, label);
   for (int i = 0; i < c->n_in; ++i) {
     if (i == x->mig_phi || i == x->mig_shear) continue;
     if (strcmp(c->in[i].name, "d_p") != 0)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [closure.migration] %s needs the input '%s', which the mixture model "
-                                          "does not provide (it provides phi, shear_rate, d_p)",
-                         sec->file, sec->line, label, c->in[i].name);
-    if ((rc = sl_ini_get_real(ini, "solid", "diameter", 1, 0, 1e-9, 1.0, &x->mig.fixed[i], d))) return rc;
+      return sl_diag_set(d, SL_EBADINPUT, "%s %s needs the input '%s', which the mixture model does not provide (it "
+                                          "provides phi, shear_rate, d_p)",
+                         where, label, c->in[i].name);
+    if ((rc = solid_diameter(sc, &x->mig.fixed[i], d))) return rc;
   }
   mo.coef = migration_coef, mo.coef_user = x;
-  const sl_ini_section *vs = sl_ini_find_section(ini, "closure.viscosity");
-  if (vs) {
-    if ((rc = sl_closure_from_ini(x->reg, ini, "closure.viscosity", &x->visc.c, d))) return rc;
+  if ((x->visc.c = sl_scene_closure(sc, "viscosity"))) {
+    char vs[300];
+    sl_scene_closure_where(sc, "viscosity", vs, sizeof vs);
     const sl_closure_desc *v = x->visc.c->desc;
     sl_closure_label(v, label, sizeof label);
     x->visc_phi = sl_closure_input(v, "phi"), x->visc_out = sl_closure_output(v, "viscosity");
     if (x->visc_phi < 0 || x->visc_out < 0 || !(v->in[x->visc_phi].flags & SL_FIELD_DIFF) || v->n_in > MAX_IN)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [closure.migration] needs [closure.viscosity] as a viscosity of phi; "
-                                          "%s is not", vs->file, vs->line, label);
+      return sl_diag_set(d, SL_EBADINPUT, "%s: [closure.migration] needs [closure.viscosity] as a viscosity of phi; "
+                                          "%s is not", vs, label);
     for (int i = 0; i < v->n_in; ++i) {
       if (i == x->visc_phi) continue;
       const char *name = v->in[i].name;
       if (strcmp(name, "mu_f") == 0) x->visc.fixed[i] = x->mu_f;
       else if (strcmp(name, "rho_f") == 0) x->visc.fixed[i] = x->rho_f;
       else
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [closure.migration] takes mu(phi) from [closure.viscosity], but %s "
-                                            "also depends on '%s'", vs->file, vs->line, label, name);
+        return sl_diag_set(d, SL_EBADINPUT, "%s: [closure.migration] takes mu(phi) from [closure.viscosity], but %s "
+                                            "also depends on '%s'", vs, label, name);
     }
     mo.ln_mu = migration_lnmu, mo.ln_mu_user = x;
   }
@@ -457,15 +474,11 @@ static int migration_setup(mixture *x, sl_diag *d) {
   return create_gradient_flux(x, &mo, d);
 }
 
-static const double *cell_phi(void *user) { return ((mixture *)user)->phi; }
-
 static int initial_phi(mixture *x, sl_diag *d) {
-  const sl_ini_entry *e = sl_ini_find(x->ini, "initial", "phi");
-  if (!e) return sl_diag_set(d, SL_EBADINPUT, "[initial] phi: the mixture model needs the initial solids fraction");
-  static const char *const vars[] = {"x", "y"};
-  sl_expr *ex;
-  int rc = sl_expr_compile(e->value, vars, 2, &ex, d);
-  if (rc) return sl_diag_prefix(d, rc, "%s:%d: [initial] phi", e->file, e->line);
+  const sl_src *e = sl_scene_src(x->sc, &x->cfg->phi);
+  const sl_expr *ex = x->cfg->phi.e;
+  if (!ex) return sl_diag_set(d, SL_EBADINPUT, "[initial] phi: the mixture model needs the initial solids fraction");
+  int rc = 0;
   const double *xc = sl_transport_cell_points(x->tr);
   for (int c = 0; c < x->m->n_cells && !rc; ++c) {
     double v = sl_expr_eval(ex, xc + 2 * c);
@@ -474,7 +487,6 @@ static int initial_phi(mixture *x, sl_diag *d) {
                        e->file, e->line, v, xc[2 * c], xc[2 * c + 1], x->phi_max);
     x->phi[c] = v;
   }
-  sl_expr_free(ex);
   return rc;
 }
 
@@ -482,11 +494,14 @@ static int initial_phi(mixture *x, sl_diag *d) {
 static int transport_boundaries(mixture *x, const unsigned char *open, sl_diag *d) {
   for (int b = 0; b < x->m->n_boundaries; ++b) {
     if (!open || !open[b]) continue;
-    char sec[300];
-    snprintf(sec, sizeof sec, "boundary.%s", x->m->boundary_names[b]);
-    double v;
-    int rc = sl_ini_get_real(x->ini, sec, "phi", 0, 0.0, 0.0, x->phi_max, &v, d);
-    if (!rc) rc = sl_transport_set_boundary(x->tr, b, SL_TRANSPORT_OPEN, v, d);
+    const ns_boundary *nb = sl_scene_boundary(x->sc, b);
+    double v = nb->phi;
+    if (v > x->phi_max) {
+      char at[400];
+      return sl_diag_set(d, SL_EBADINPUT, "%s = %g is outside the allowed range [0, %g] (phi_max)",
+                         sl_scene_where(x->sc, &nb->phi, at, sizeof at), v, x->phi_max);
+    }
+    int rc = sl_transport_set_boundary(x->tr, b, SL_TRANSPORT_OPEN, v, d);
     if (rc) return rc;
   }
   return 0;
@@ -513,22 +528,26 @@ static int periodic_setup(mixture *x, const unsigned char *open, const sl_period
 
 /* The mixture's output fields (after the flow's in [output] fields). */
 enum { F_PHI = 1, F_STREAM = 2 };
-static const char *const field_names[] = {"phi", "stream_function"};
 
-static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, const unsigned char *open,
-                 const sl_periodic_pair *pairs, int n_pairs, unsigned fields, sl_diag *d) {
-  mixture *x = user;
+/* The solids fraction on the flow f: the settling closure, the transport,
+ * the diagnostics and the initial phi. */
+static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag *d) {
+  const sl_scene *sc = x->sc;
+  const mixture_config *cfg = x->cfg;
+  const sl_th_space *th = sl_flow_space(fl);
+  const unsigned char *open = sl_flow_open(fl);
+  int n_pairs = 0;
+  const sl_periodic_pair *pairs = sl_flow_periodic(fl, &n_pairs);
   x->fields = fields;
-  x->th = th, x->m = th->mesh, x->axi = flow->axisymmetric, x->flow = flow;
+  x->th = th, x->m = th->mesh, x->axi = sl_flow_axisymmetric(fl), x->flow = sl_flow_options(fl);
+  x->rho_f = sc->fluid.density, x->mu_f = sc->fluid.viscosity;
+  x->slip_acceleration = cfg->slip_acceleration, x->relative_flux_stress = cfg->relative_flux_stress;
   int nc = x->m->n_cells, nf = x->m->n_faces, rc;
   /* body force and its reference magnitude */
-  double gl[3] = {0, 0, 0};
-  int ng = 0;
-  if ((rc = sl_ini_get_real_list(x->ini, "flow", "gravity", 0, gl, 3, &ng, d))) return rc;
-  x->g[0] = gl[0], x->g[1] = x->m->dim > 1 ? gl[1] : 0.0;
-  if ((rc = sl_ini_get_real(x->ini, "flow", "rotation", 0, 0.0, -1e6, 1e6, &x->omega, d))) return rc;
-  int nk = 0;
-  if ((rc = sl_ini_get_real_list(x->ini, "flow", "rotation_centre", 0, x->centre, 2, &nk, d))) return rc;
+  const sl_reals *gl = &sc->flow.gravity, *ce = &sc->flow.rotation_centre;
+  x->g[0] = gl->n > 0 ? gl->v[0] : 0.0, x->g[1] = x->m->dim > 1 && gl->n > 1 ? gl->v[1] : 0.0;
+  x->omega = sc->flow.rotation;
+  x->centre[0] = ce->n > 0 ? ce->v[0] : 0.0, x->centre[1] = ce->n > 1 ? ce->v[1] : 0.0;
   x->g_ref = hypot(x->g[0], x->g[1]);
   if (x->g_ref == 0.0 && x->omega != 0.0) {
     double rmax = 0.0;
@@ -538,28 +557,19 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
     }
     x->g_ref = x->omega * x->omega * rmax;
   }
-  if ((rc = sl_ini_get_bool(x->ini, "mixture", "slip_acceleration", 0, 0, &x->slip_acceleration, d))) return rc;
   if (x->slip_acceleration && x->g_ref == 0.0) x->g_ref = 1.0;
-  if ((rc = sl_ini_get_real(x->ini, "mixture", "reference_acceleration", 0, x->g_ref, 1e-12, 1e12, &x->g_ref, d)))
-    return rc;
+  if (sl_scene_given(sc, &cfg->reference_acceleration)) x->g_ref = cfg->reference_acceleration;
   if ((rc = settling_setup(x, d))) return rc;
   if (x->st.b.c && x->g_ref == 0.0)
     return sl_diag_set(d, SL_EBADINPUT, "[closure.hindered_settling] is set but nothing drives settling: give [flow] "
                                         "gravity or rotation, or [mixture] slip_acceleration = true");
   /* the transport */
-  long order = 2, table = 0;
-  int lim = 0;
-  double cfl = 0.9;
-  if ((rc = sl_ini_get_int(x->ini, "transport", "order", 0, 2, 1, 2, &order, d))) return rc;
-  if ((rc = sl_ini_get_choice(x->ini, "transport", "limiter", 0, 0, "mc|minmod", &lim, d))) return rc;
-  if ((rc = sl_ini_get_real(x->ini, "transport", "cfl", 0, 0.9, 1e-3, 1.0, &cfl, d))) return rc;
-  if ((rc = sl_ini_get_int(x->ini, "transport", "table_points", 0, 2049, 17, 1000001, &table, d))) return rc;
   x->topts = (sl_transport_opts){.phi_max = x->phi_max,
-                                 .order = (int)order,
-                                 .limiter = lim ? SL_LIMITER_MINMOD : SL_LIMITER_MC,
+                                 .order = (int)cfg->order,
+                                 .limiter = cfg->limiter ? SL_LIMITER_MINMOD : SL_LIMITER_MC,
                                  .geometry = x->axi ? SL_TRANSPORT_AXISYMMETRIC : SL_TRANSPORT_PLANAR,
-                                 .cfl = cfl,
-                                 .table_points = (int)table,
+                                 .cfl = cfg->cfl,
+                                 .table_points = (int)cfg->table_points,
                                  .settling = settling_fn,
                                  .settling_user = &x->st};
   if ((rc = sl_transport_create(x->m, &x->topts, &x->tr, d))) return sl_diag_prefix(d, rc, "solids transport");
@@ -593,9 +603,10 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
   x->inventory = x->inventory0 = sl_transport_mass(x->tr, x->phi);
   if (x->relative_flux_stress && (rc = stress_setup(x, d))) return rc;
   /* interface levels */
-  const sl_ini_entry *le = sl_ini_find(x->ini, "output", "interface");
+  const sl_src *le = sl_scene_src(sc, &sc->output.interface);
   if (le) {
-    if ((rc = sl_ini_get_real_list(x->ini, "output", "interface", 0, x->level, MAX_LEVELS, &x->n_levels, d))) return rc;
+    x->n_levels = sc->output.interface.n;
+    for (int k = 0; k < x->n_levels; ++k) x->level[k] = sc->output.interface.v[k];
     if (x->n_levels > 0 && hypot(x->g[0], x->g[1]) == 0.0)
       return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] interface: heights are measured against gravity, and the "
                                           "scene has none", le->file, le->line);
@@ -603,8 +614,7 @@ static int setup(void *user, const sl_th_space *th, const sl_flow_opts *flow, co
   return 0;
 }
 
-static int advance(void *user, double t, double dt, const double *u, const double *dudt, sl_diag *d) {
-  mixture *x = user;
+static int advance(mixture *x, double t, double dt, const double *u, const double *dudt, sl_diag *d) {
   if (x->st.b.c && x->slip_acceleration) { /* the slip of this step follows the acceleration at its end */
     cell_accelerations(x, u, dudt);
     sl_transport_settling_faces(x->tr, x->b_face, x->w);
@@ -631,8 +641,7 @@ static int advance(void *user, double t, double dt, const double *u, const doubl
   return x->relative_flux_stress ? stress_of(x, x->trial, d) : 0;
 }
 
-static void accept(void *user) {
-  mixture *x = user;
+static void accept(mixture *x) {
   memcpy(x->phi, x->trial, (size_t)x->m->n_cells * sizeof *x->phi);
   memcpy(x->q_acc, x->q, (size_t)x->m->n_faces * sizeof *x->q_acc);
   x->inflow += x->trial_inflow;
@@ -642,8 +651,7 @@ static void accept(void *user) {
   if (x->relative_flux_stress) node_stress_of(x);
 }
 
-static int write(void *user, sl_output *out, sl_diag *d) {
-  mixture *x = user;
+static int write(mixture *x, sl_output *out, sl_diag *d) {
   int rc = x->fields & F_PHI ? sl_output_write_field(out, "phi", SL_CENTRE_CELL, 1, x->phi, d) : 0;
   if (!rc && x->psi) {
     /* at the velocity nodes: vertices as computed, edge and centre nodes the mean of their cell's vertices
@@ -682,8 +690,7 @@ static int write(void *user, sl_output *out, sl_diag *d) {
   return rc;
 }
 
-static int checkpoint(void *user, sl_checkpoint_array *a, int max) {
-  mixture *x = user;
+static int checkpoint(mixture *x, sl_checkpoint_array *a, int max) {
   if (max < 2) return 0;
   snprintf(a[0].name, sizeof a[0].name, "phi");
   a[0].n = x->m->n_cells, a[0].data = x->phi;
@@ -697,8 +704,7 @@ static int checkpoint(void *user, sl_checkpoint_array *a, int max) {
   return 3;
 }
 
-static int restore(void *user, const sl_checkpoint *ck, sl_diag *d) {
-  mixture *x = user;
+static int restore(mixture *x, const sl_checkpoint *ck, sl_diag *d) {
   const sl_checkpoint_array *p = sl_checkpoint_find(ck, "phi"), *b = sl_checkpoint_find(ck, "solids_book");
   if (!p || p->n != x->m->n_cells || !b || b->n != 2)
     return sl_diag_set(d, SL_EBADINPUT, "restart: the checkpoint holds no solids fraction of %d cells", x->m->n_cells);
@@ -716,56 +722,200 @@ static int restore(void *user, const sl_checkpoint *ck, sl_diag *d) {
   return rc;
 }
 
-static int provenance(void *user, sl_provenance_closure *pc, int max, char *buf, size_t len) {
-  mixture *x = user;
-  if (!x->st.b.c || max < 1) return 0;
-  const sl_closure_desc *c = x->st.b.c->desc;
-  size_t at = 0;
-  buf[0] = '\0';
-  for (int k = 0; k < c->n_params && at < len; ++k) {
-    char v[64];
-    sl_params_format_value(c, x->st.b.c->params, k, v, sizeof v);
-    at += (size_t)snprintf(buf + at, len - at, "%s = %s\n", c->params[k].name, v);
-  }
-  pc[0] = (sl_provenance_closure){"closure.hindered_settling", sl_kind_name(c->kind), c->name, c->version,
-                                  x->st.b.c->library->path, buf};
-  return 1;
+
+static void mixture_free(mixture *x) {
+  sl_transport_destroy(x->tr);
+  sl_face_flux_destroy(x->ff);
+  free(x->phi), free(x->trial), free(x->q), free(x->w), free(x->q_acc), free(x->acc), free(x->b_face), free(x->psi),
+      free(x->node_psi);
+  free(x->cell_stress), free(x->settle_speed), free(x->node_stress), free(x->node_weight);
+  sl_stream_graph_free(&x->pg);
+  free(x->st.b.buf);
+  sl_migration_destroy(x->mg);
+  free(x->shear);
+  free(x->mig.buf), free(x->visc.buf);
+  sl_flow_destroy(x->flow_model);
+  free(x);
 }
 
-int sl_mixture_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d) {
-  mixture x = {.ini = ini, .reg = reg, .phi_max = 0.64};
-  int rc = sl_ini_get_real(ini, "fluid", "density", 0, 1000.0, 1e-3, 1e5, &x.rho_f, d);
-  if (!rc) rc = sl_ini_get_real(ini, "fluid", "viscosity", 0, 1e-3, 1e-7, 1e7, &x.mu_f, d);
-  if (!rc) rc = sl_ini_get_real(ini, "solid", "density", 1, 0, 1e-3, 1e5, &x.cpl.rho_solid, d);
-  if (!rc) rc = sl_ini_get_real(ini, "solid", "phi_max", 0, 0.64, 0.01, 1.0, &x.phi_max, d);
-  if (rc) return rc;
-  x.cpl.user = &x;
-  x.cpl.field_names = field_names, x.cpl.n_fields = (int)(sizeof field_names / sizeof field_names[0]);
-  x.cpl.setup = setup, x.cpl.cell_phi = cell_phi, x.cpl.advance = advance, x.cpl.accept = accept;
-  x.cpl.write = write, x.cpl.checkpoint = checkpoint, x.cpl.restore = restore, x.cpl.provenance = provenance;
-  if ((rc = sl_ini_get_bool(ini, "mixture", "relative_flux_stress", 0, 0, &x.relative_flux_stress, d))) return rc;
-  sl_ns_run_opts oo = *o;
-  oo.coupling = &x.cpl;
-  rc = sl_ns_run(ini, reg, &oo, res, d);
-  if (x.tr) { /* the mesh is gone now: only what the run kept */
-    double inv = x.inventory, base = x.inventory0 + x.inflow;
-    snprintf(res->coupling_summary, sizeof res->coupling_summary,
+/* ---- the schema ------------------------------------------------------------------------ */
+
+#define TABLE(name, keys) static const sl_key_table name = {keys, (int)(sizeof keys / sizeof keys[0])}
+#define M(field) SL_AT_MODEL(mixture_config, field)
+
+static const sl_key solid_keys[] = {
+    {.section = "solid", .name = "density", .type = SL_KEY_REAL, SL_AT_SCENE(solid.density), .flags = SL_KEY_REQUIRED,
+     .min = 1e-3, .max = 1e5, .units = "kg m^-3", .help = "particle density"},
+    {.section = "solid", .name = "diameter", .type = SL_KEY_REAL, SL_AT_SCENE(solid.diameter), .min = 1e-9,
+     .max = 1.0, .units = "m", .def_doc = "required by closures with the input d_p", .help = "particle diameter"},
+    {.section = "solid", .name = "phi_max", .type = SL_KEY_REAL, SL_AT_SCENE(solid.phi_max), .def = 0.64, .min = 0.01,
+     .max = 1.0, .def_doc = "the settling closure's phi_max, else 0.64", .help = "maximum packing fraction"},
+    {.section = "solid", .name = "sphericity", .type = SL_KEY_REAL, SL_AT_SCENE(solid.sphericity), .def = 1.0,
+     .min = 0.01, .max = 1.0, .help = "particle sphericity"},
+};
+TABLE(mixture_solid_keys, solid_keys);
+
+static const sl_key mixture_keys[] = {
+    {.section = "mixture", .name = "slip_acceleration", .type = SL_KEY_BOOL, M(slip_acceleration),
+     .help = "the slip follows g - Dj/Dt (Nigam 1999 eq 2.25), not only gravity and the frame's centrifugal force"},
+    {.section = "mixture", .name = "reference_acceleration", .type = SL_KEY_REAL, M(reference_acceleration),
+     .min = 1e-12, .max = 1e12, .units = "m s^-2",
+     .def_doc = "|g|, else the frame's largest centrifugal acceleration, else 1",
+     .help = "the acceleration the settling closure is evaluated at"},
+    {.section = "mixture", .name = "diffusivity", .type = SL_KEY_REAL, M(diffusivity), .min = 0.0, .max = 1e6,
+     .units = "m^2 s^-1", .help = "particle diffusivity eps: the flux -eps grad(phi) (Lalli 1993)"},
+    {.section = "mixture", .name = "relative_flux_stress", .type = SL_KEY_BOOL, M(relative_flux_stress),
+     .help = "the momentum carries the stress rho_f j_R j_R / (phi (1 - phi)) of the settling flux (Nigam 1999 eq "
+             "2.16)"},
+};
+TABLE(mixture_model_keys, mixture_keys);
+
+static const sl_key transport_keys[] = {
+    {.section = "transport", .name = "order", .type = SL_KEY_INT, M(order), .def = 2, .min = 1, .max = 2,
+     .help = "1: Godunov, 2: MUSCL (second order)"},
+    {.section = "transport", .name = "limiter", .type = SL_KEY_CHOICE, M(limiter), .choices = "mc|minmod",
+     .help = "the slope limiter of order 2"},
+    {.section = "transport", .name = "cfl", .type = SL_KEY_REAL, M(cfl), .def = 0.9, .min = 1e-3, .max = 1.0,
+     .help = "fraction of the stable explicit sub-step"},
+    {.section = "transport", .name = "table_points", .type = SL_KEY_INT, M(table_points), .def = 2049, .min = 17,
+     .max = 1000001, .help = "nodes of the settling-flux table"},
+};
+TABLE(mixture_transport_keys, transport_keys);
+
+static const sl_key extra_keys[] = {
+    {.section = "initial", .name = "phi", .type = SL_KEY_EXPR, M(phi), .vars = "x,y", .flags = SL_KEY_REQUIRED,
+     .help = "the initial solids fraction at the cell centroids"},
+    {.section = "output", .name = "interface", .type = SL_KEY_REALS, SL_AT_SCENE(output.interface),
+     .max_n = SL_REALS_MAX, .min = 0.0, .max = 1.0,
+     .help = "levels of phi whose heights (along -g) are written as interface_height_K"},
+    {.section = "boundary", .name = "phi", .type = SL_KEY_REAL, SL_AT_BOUNDARY(ns_boundary, phi), .min = 0.0,
+     .max = 1.0, .when_type = (1u << NS_OPEN) | (1u << NS_PRESSURE) | (1u << NS_TRACTION),
+     .help = "the solids fraction of what flows in"},
+};
+TABLE(mixture_extra_keys, extra_keys);
+
+static const char *const mixture_fields[] = {"velocity", "pressure", "shear_rate", "viscosity", "yielded", "phi",
+                                             "stream_function"};
+
+const sl_schema sl_mixture_schema = {
+    .model = "mixture",
+    .title = "drift-flux mixture model",
+    .summary = "The flow in the volume-averaged velocity j (div j = 0) with the mixture's density and viscosity, "
+               "carrying a solids fraction phi moved by j plus a hindered-settling flux (Nigam 1999, eqs 2.31-2.36), "
+               "shear-induced migration (Phillips et al. 1992) and a particle diffusivity; bounded, conservative "
+               "finite-volume transport with face fluxes from the flow; the slip along the fluid's acceleration in "
+               "a rotating frame.",
+    .tables = {&sl_keys_scene, &sl_flow_keys_scene, &sl_keys_mesh, &sl_keys_fluid, &mixture_solid_keys,
+               &sl_flow_keys_flow, &sl_flow_keys_time, &sl_flow_keys_solver, &sl_keys_output, &sl_keys_plugins,
+               &sl_flow_keys_boundary, &sl_flow_keys_initial, &mixture_extra_keys, &mixture_model_keys,
+               &mixture_transport_keys},
+    .n_tables = 15,
+    .roles = {{"viscosity", 0, "the suspension's viscosity of phi and the shear rate (none: [fluid] viscosity)"},
+              {"hindered_settling", 0, "the settling velocity of phi (none: no settling)"},
+              {"migration", 0, "shear-induced migration, D_c and D_mu of phi and the shear rate"}},
+    .n_roles = 3,
+    .config_size = sizeof(mixture_config),
+    .boundary_size = sizeof(ns_boundary),
+    .fields = mixture_fields,
+    .n_fields = 7,
+};
+
+/* ---- ops: the flow and the solids fraction ------------------------------------------------ */
+
+static double cpu_now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int mx_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) {
+  if (sc->time.scheme == SL_SCHEME_STEADY)
+    return sl_diag_set(d, SL_EBADINPUT, "[time] scheme = steady: the mixture model is transient (bdf1 or bdf2)");
+  mixture *x = calloc(1, sizeof *x);
+  if (!x) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+  x->sc = sc, x->cfg = sc->config, x->rho_solid = sc->solid.density, x->phi_max = sc->solid.phi_max;
+  unsigned mask, def = 1u | 2u | (sl_scene_closure(sc, "viscosity") ? 4u | 8u | 16u : 0u) | (3u << SL_FLOW_N_FIELDS);
+  int rc = sl_scene_output_fields(sc, def, &mask, d);
+  if (!rc) rc = sl_flow_create(sc, &x->cfg->flow, x->rho_solid, mask & ((1u << SL_FLOW_N_FIELDS) - 1u), &x->flow_model,
+                               info, d);
+  if (!rc) rc = mixture_setup(x, x->flow_model, mask >> SL_FLOW_N_FIELDS, d);
+  if (rc) {
+    mixture_free(x);
+    return rc;
+  }
+  sl_flow_rider rider = {.rho_solid = x->rho_solid, .phi = x->phi, .extra_stress = x->extra_stress};
+  sl_flow_ride(x->flow_model, &rider);
+  info->has_steady = 0;
+  *self = x;
+  return 0;
+}
+
+static int mx_step(void *self, sl_step *s, int *iterations, sl_diag *d) {
+  mixture *x = self;
+  return sl_flow_step(x->flow_model, s, iterations, d);
+}
+
+/* After the flow's step passed its error test: phi over the step. A failed transport rejects the step. */
+static int mx_complete(void *self, const sl_step *s, sl_diag *d) {
+  mixture *x = self;
+  double c0 = cpu_now();
+  int rc = advance(x, s->t, s->dt, s->u, s->dudt, d);
+  x->cpu_coupled += cpu_now() - c0;
+  return rc == 0 ? 0 : rc == SL_EFAILED ? SL_STEP_RETRY : -rc;
+}
+
+static void mx_accept(void *self, const sl_step *s, int *steady) {
+  (void)s, (void)steady;
+  accept(self);
+}
+
+static int mx_write_mesh(void *self, sl_output *out, sl_diag *d) {
+  return sl_flow_write_mesh(((mixture *)self)->flow_model, out, d);
+}
+
+static int mx_write(void *self, sl_output *out, double t, const double *u, sl_diag *d) {
+  (void)t;
+  mixture *x = self;
+  int rc = sl_flow_write(x->flow_model, out, u, d);
+  return rc ? rc : write(x, out, d);
+}
+
+static int mx_checkpoint(void *self, sl_checkpoint_array *a, int max) {
+  mixture *x = self;
+  int n = sl_flow_checkpoint(x->flow_model, a, max);
+  return n + checkpoint(x, a + n, max - n);
+}
+
+static int mx_restore(void *self, const sl_checkpoint *ck, sl_diag *d) {
+  mixture *x = self;
+  int rc = sl_flow_restore(x->flow_model, ck, d);
+  return rc ? rc : restore(x, ck, d);
+}
+
+static void mx_stats(void *self, const sl_run_result *res, sl_model_stats *st) {
+  (void)res;
+  mixture *x = self;
+  sl_flow_stats(x->flow_model, st);
+  st->cpu_coupled = x->cpu_coupled;
+  if (x->tr) {
+    double inv = x->inventory, base = x->inventory0 + x->inflow;
+    snprintf(st->coupling_summary, sizeof st->coupling_summary,
              "solids: %ld transport sub-steps (%.1f per step, %ld at first order), conservation error %.1e, "
              "raw face-flux divergence up to %.1e",
-             x.substeps, x.advances ? (double)x.substeps / (double)x.advances : 0.0, x.fallbacks,
-             base > 0.0 ? (inv - base) / base : 0.0, x.max_raw_div);
+             x->substeps, x->advances ? (double)x->substeps / (double)x->advances : 0.0, x->fallbacks,
+             base > 0.0 ? (inv - base) / base : 0.0, x->max_raw_div);
   }
-  sl_transport_destroy(x.tr);
-  sl_face_flux_destroy(x.ff);
-  free(x.phi), free(x.trial), free(x.q), free(x.w), free(x.q_acc), free(x.acc), free(x.b_face), free(x.psi), free(x.node_psi);
-  free(x.cell_stress), free(x.settle_speed), free(x.node_stress), free(x.node_weight);
-  sl_stream_graph_free(&x.pg);
-  free(x.st.b.buf);
-  sl_closure_destroy(x.st.b.c);
-  sl_migration_destroy(x.mg);
-  free(x.shear);
-  free(x.mig.buf), free(x.visc.buf);
-  sl_closure_destroy(x.mig.c);
-  sl_closure_destroy(x.visc.c);
-  return rc;
 }
+
+static void mx_destroy(void *self) { mixture_free(self); }
+
+const sl_model_ops sl_mixture_ops = {.setup = mx_setup,
+                                     .step = mx_step,
+                                     .complete = mx_complete,
+                                     .accept = mx_accept,
+                                     .write_mesh = mx_write_mesh,
+                                     .write = mx_write,
+                                     .checkpoint = mx_checkpoint,
+                                     .restore = mx_restore,
+                                     .stats = mx_stats,
+                                     .destroy = mx_destroy};

@@ -1,4 +1,4 @@
-/* The mixture (drift-flux) model: the flow of core/models/navier_stokes.h in
+/* The mixture (drift-flux) model: the flow of core/models/navier_stokes/flow.h in
  * the volume-averaged velocity j (div j = 0), carrying a solids fraction phi
  * that moves with j plus the hindered-settling flux (Nigam 1999, eqs
  * 2.31-2.36; digest of seed 002, section 1.6):
@@ -21,7 +21,7 @@
  * Time splitting: every step solves the flow with phi frozen at t_n, then
  * moves phi from t_n to t_n + dt by the finite-volume transport
  * (core/transport) with conservative face fluxes of the new velocity
- * (core/models/face_flux.h), sub-cycled within its CFL limit. A transport
+ * (core/fv/face_flux.h), sub-cycled within its CFL limit. A transport
  * step that fails rejects the whole step, which is retried smaller.
  *
  * Scene sections beyond navier_stokes.h's:
@@ -38,10 +38,10 @@
 #ifndef SLUICE_MODELS_MIXTURE_H
 #define SLUICE_MODELS_MIXTURE_H
 
-#include "core/models/navier_stokes/navier_stokes.h"
+#include "core/scene/schema.h"
+#include "core/time/model.h"
 
-/* Runs a model = mixture scene; the arguments and returns of sl_ns_run.
- * res->coupling_summary gets the transport's one-line summary. */
-int sl_mixture_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d);
+extern const sl_schema sl_mixture_schema;
+extern const sl_model_ops sl_mixture_ops;
 
 #endif

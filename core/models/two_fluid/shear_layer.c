@@ -10,11 +10,11 @@
 
 #include "core/config/expr.h"
 #include "core/scene/mesh.h"
-#include "core/scene/output.h"
-#include "core/plugin/closure_ini.h"
+#include "core/models/two_fluid/two_fluid.h"
+#include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/point_eval.h"
-#include "core/time/fixed_step.h"
+#include "core/scene/mesh.h"
 
 enum { SOLIDS_NO_SLIP = 0, SOLIDS_FREE_SLIP = 1, SOLIDS_WALL_STRESS = 2 };
 enum { F_PHI = 1, F_UF = 2, F_US = 4, F_THETA = 8 };
@@ -36,7 +36,7 @@ typedef struct sh_wall {
   int node, inner;     /* the wall's vertex and the next one inwards */
   int solids;          /* SOLIDS_* */
   int wall_function;   /* the wall closure reads wall_distance: slip at `inner` */
-  sl_expr *speed;      /* of t */
+  const sl_expr *speed; /* of t (the scene's) */
   double u;            /* the wall's speed now */
   double area;         /* r_w^2 (annular, per radian) or 1: torque or force per unit stress */
   double theta_area;   /* r_w or 1: energy per unit flux */
@@ -45,9 +45,9 @@ typedef struct sh_wall {
 } sh_wall;
 
 typedef struct sh_layer {
-  sl_ini *ini;
-  sl_ns_result *res;
-  sl_mesh *mesh;
+  const sl_scene *sc;
+  const tf_config *cfg;
+  const sl_mesh *mesh;
   int *vertex, *cell_of; /* [n+1], [n] */
   int n, annular;
   /* geometry: x [n+1]; per cell: h, W (volume), gm (momentum conductance), gt (conduction); per node: V, a, s */
@@ -69,13 +69,10 @@ typedef struct sh_layer {
   int max_iterations;
   double tolerance, steady_tol, v_ref;
   long iterations, advances;
-  sl_output *out;
   int fields;
   double *node_out, *cell_out;
-  char params[4][1024];
+  char steady_text[96];
 } sh_layer;
-
-static double cpu_now(void) { return (double)clock() / CLOCKS_PER_SEC; }
 
 /* ---- closures at points ----------------------------------------------------------- */
 
@@ -486,7 +483,7 @@ static int wall_report(sh_layer *L, sh_wall *w, const double *uf_old, const doub
 /* ---- set-up ------------------------------------------------------------------------ */
 
 static int geometry(sh_layer *L, sl_diag *d) {
-  sl_mesh *m = L->mesh;
+  const sl_mesh *m = L->mesh;
   int n = L->n = m->n_cells;
   L->vertex = malloc((size_t)(n + 1) * sizeof *L->vertex), L->cell_of = malloc((size_t)n * sizeof *L->cell_of);
   if (!L->vertex || !L->cell_of) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
@@ -508,9 +505,9 @@ static int geometry(sh_layer *L, sl_diag *d) {
   if (!(L->blk = calloc(N * 30, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
   for (size_t k = 0; k < N; ++k) L->x[k] = m->xy[2 * L->vertex[k]];
   if (L->annular && !(L->x[0] > 0.0)) {
-    const sl_ini_entry *e = sl_ini_find(L->ini, "two_fluid", "cross_section");
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] cross_section = annular: x is the radius and must be > 0 "
-                                        "(the mesh starts at x = %g)", e->file, e->line, L->x[0]);
+    char at[400];
+    return sl_diag_set(d, SL_EBADINPUT, "%s = annular: x is the radius and must be > 0 (the mesh starts at x = %g)",
+                       sl_scene_where(L->sc, &L->cfg->cross_section, at, sizeof at), L->x[0]);
   }
   for (int i = 0; i < n; ++i) {
     double x0 = L->x[i], x1 = L->x[i + 1], xm = 0.5 * (x0 + x1);
@@ -529,65 +526,33 @@ static int geometry(sh_layer *L, sl_diag *d) {
   return 0;
 }
 
-static int physics(sh_layer *L, const sl_registry *reg, sl_diag *d) {
-  sl_ini *ini = L->ini;
-  int rc = sl_ini_get_real(ini, "fluid", "density", 0, 1000.0, 1e-3, 1e5, &L->rho_f, d);
-  if (!rc) rc = sl_ini_get_real(ini, "fluid", "viscosity", 0, 1e-3, 1e-7, 1e7, &L->mu_f, d);
-  if (!rc) rc = sl_ini_get_real(ini, "solid", "density", 1, 0, 1e-3, 1e5, &L->rho_s, d);
-  if (!rc) rc = sl_ini_get_real(ini, "solid", "diameter", 1, 0, 1e-9, 1.0, &L->d_p, d);
-  if (!rc) rc = sl_ini_get_real(ini, "solid", "sphericity", 0, 1.0, 0.01, 1.0, &L->sphericity, d);
-  if (!rc) rc = sl_ini_get_real(ini, "solid", "phi_max", 0, 0.63, 0.01, 0.99, &L->phi_max, d);
-  if (!rc) rc = sl_ini_get_real(ini, "solid", "viscosity", 0, 0.0, 0.0, 1e7, &L->mu_s_const, d);
-  if (rc) return rc;
-  double gl[3] = {0, 0, 0};
-  int ng = 0;
-  if ((rc = sl_ini_get_real_list(ini, "flow", "gravity", 0, gl, 3, &ng, d))) return rc;
-  L->gravity = ng ? sqrt(gl[0] * gl[0] + gl[1] * gl[1] + gl[2] * gl[2]) : 9.81;
-  long it;
-  if ((rc = sl_ini_get_int(ini, "two_fluid", "iterations", 0, 50, 1, 1000, &it, d))) return rc;
-  L->max_iterations = (int)it;
-  if ((rc = sl_ini_get_real(ini, "two_fluid", "tolerance", 0, 1e-9, 1e-15, 1e-2, &L->tolerance, d))) return rc;
-  if ((rc = sl_ini_get_real(ini, "two_fluid", "steady_tolerance", 0, 0.0, 0.0, 1.0, &L->steady_tol, d))) return rc;
-  if ((rc = sl_ini_get_choice(ini, "two_fluid", "granular_temperature", 0, 0, "transport|algebraic", &L->algebraic,
-                              d)))
-    return rc;
-  if ((rc = sl_ini_get_bool(ini, "two_fluid", "interphase_dissipation", 0, 1, &L->exchange, d))) return rc;
-  static const char *const column_only[] = {"cfl", "diffusivity", "order", "limiter", "case"};
-  for (size_t k = 0; k < sizeof column_only / sizeof column_only[0]; ++k) {
-    const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", column_only[k]);
-    if (e)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: a key of the column (motion = column); the shear "
-                                          "layer holds phi and moves nothing across the line", e->file, e->line,
-                         e->key);
-  }
-  /* closures */
-  if (!sl_ini_find_section(ini, "closure.drag"))
-    return sl_diag_set(d, SL_EBADINPUT, "[closure.drag]: the two_fluid model needs a drag closure (e.g. model = "
-                                        "wen_yu); `sluice closures` lists them");
-  for (int s = 0; s < ini->n_sections; ++s) {
-    const char *name = ini->sections[s].name;
-    if (strncmp(name, "closure.", 8) == 0 && strcmp(name, "closure.drag") != 0 &&
-        strcmp(name, "closure.granular") != 0 && strcmp(name, "closure.wall_stress") != 0 &&
-        strcmp(name, "closure.viscosity") != 0)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the two_fluid shear layer uses [closure.drag], "
-                                          "[closure.viscosity], [closure.granular] and [closure.wall_stress]",
-                         ini->sections[s].file,
-                         ini->sections[s].line, name);
-  }
+static int physics(sh_layer *L, sl_diag *d) {
+  const sl_scene *sc = L->sc;
+  const tf_config *cfg = L->cfg;
+  int rc = 0;
+  L->rho_f = sc->fluid.density, L->mu_f = sc->fluid.viscosity;
+  L->rho_s = sc->solid.density, L->d_p = sc->solid.diameter, L->sphericity = sc->solid.sphericity;
+  L->phi_max = sc->solid.phi_max, L->mu_s_const = sc->solid.viscosity;
+  const sl_reals *gl = &sc->flow.gravity;
+  double g0 = gl->n > 0 ? gl->v[0] : 0.0, g1 = gl->n > 1 ? gl->v[1] : 0.0, g2 = gl->n > 2 ? gl->v[2] : 0.0;
+  L->gravity = sl_scene_given(sc, gl) && gl->n ? sqrt(g0 * g0 + g1 * g1 + g2 * g2) : 9.81;
+  L->max_iterations = (int)cfg->iterations;
+  L->tolerance = cfg->tolerance, L->steady_tol = cfg->steady_tolerance;
+  L->algebraic = cfg->granular_temperature, L->exchange = cfg->interphase_dissipation;
   const char *model = "the two_fluid shear layer";
-  if ((rc = sl_closure_from_ini(reg, ini, "closure.drag", &L->drag_c, d))) return rc;
+  L->drag_c = sl_scene_closure(sc, "drag");
   if ((rc = sl_point_bind(&L->drag, L->drag_c, quantity_names, Q_N, "closure.drag", model, d))) return rc;
   if (sl_point_has_input(&L->drag, "shear_rate"))
     return sl_diag_set(d, SL_EBADINPUT, "[closure.drag]: the shear layer gives a drag closure no shear_rate");
   if (!sl_point_has_output(&L->drag, "K") || !sl_point_has_input(&L->drag, "slip"))
     return sl_diag_set(d, SL_EBADINPUT, "[closure.drag]: the closure gives no K of slip");
-  L->granular = sl_ini_find_section(ini, "closure.granular") != NULL;
-  const sl_ini_entry *gt = sl_ini_find(ini, "two_fluid", "granular_temperature");
+  L->gran_c = sl_scene_closure(sc, "granular");
+  L->granular = L->gran_c != NULL;
+  const sl_src *gt = sl_scene_src(sc, &cfg->granular_temperature);
   if (!L->granular && gt)
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature: needs [closure.granular] (a "
                                         "kinetic theory, e.g. model = lun)", gt->file, gt->line);
   if (L->granular) {
-    if ((rc = sl_closure_from_ini(reg, ini, "closure.granular", &L->gran_c, d))) return rc;
     if ((rc = sl_point_bind(&L->gran, L->gran_c, quantity_names, Q_N, "closure.granular", model, d))) return rc;
     static const char *const need[] = {"mu_s", "kappa", "gamma"};
     for (int k = 0; k < 3; ++k)
@@ -595,14 +560,12 @@ static int physics(sh_layer *L, const sl_registry *reg, sl_diag *d) {
         return sl_diag_set(d, SL_EBADINPUT, "[closure.granular]: the shear layer needs mu_s, kappa and gamma of "
                                             "(phi, theta); this closure gives no %s", need[k]);
   }
-  if (sl_ini_find_section(ini, "closure.viscosity")) {
-    if ((rc = sl_closure_from_ini(reg, ini, "closure.viscosity", &L->visc_c, d))) return rc;
+  if ((L->visc_c = sl_scene_closure(sc, "viscosity"))) {
     if ((rc = sl_point_bind(&L->visc, L->visc_c, quantity_names, Q_N, "closure.viscosity", model, d))) return rc;
     if (!sl_point_has_output(&L->visc, "viscosity"))
       return sl_diag_set(d, SL_EBADINPUT, "[closure.viscosity]: the closure gives no viscosity");
   }
-  if (sl_ini_find_section(ini, "closure.wall_stress")) {
-    if ((rc = sl_closure_from_ini(reg, ini, "closure.wall_stress", &L->wall_c, d))) return rc;
+  if ((L->wall_c = sl_scene_closure(sc, "wall_stress"))) {
     if ((rc = sl_point_bind(&L->wall, L->wall_c, quantity_names, Q_N, "closure.wall_stress", model, d))) return rc;
     if (sl_point_has_input(&L->wall, "shear_rate"))
       return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: the shear layer gives a wall closure no shear_rate "
@@ -626,21 +589,24 @@ static int check_kinetic_scaling(sh_layer *L, sl_diag *d) {
   int rc = sl_point_eval(&L->gran, 2, v, rq, 2, d);
   if (rc) return rc;
   if (fabs(mu[1] / mu[0] - 2.0) > 1e-9 || fabs(g[1] / g[0] - 8.0) > 1e-9) {
-    const sl_ini_entry *e = sl_ini_find(L->ini, "two_fluid", "granular_temperature");
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature = algebraic needs a kinetic closure "
-                                        "(mu_s ~ theta^0.5, gamma ~ theta^1.5); [closure.granular] is not one (use "
-                                        "transport)", e->file, e->line);
+    char at[400];
+    return sl_diag_set(d, SL_EBADINPUT, "%s = algebraic needs a kinetic closure (mu_s ~ theta^0.5, gamma ~ "
+                                        "theta^1.5); [closure.granular] is not one (use transport)",
+                       sl_scene_where(L->sc, &L->cfg->granular_temperature, at, sizeof at));
   }
   return 0;
 }
 
 static int walls(sh_layer *L, sl_diag *d) {
   const char *names[2];
-  int rc = sl_scene_line_ends(L->ini, L->mesh, L->vertex[0], L->vertex[L->n], "two_fluid shear layer", names, d);
+  int rc = sl_scene_line_ends(L->mesh, L->vertex[0], L->vertex[L->n], "two_fluid shear layer", names, d);
   if (rc) return rc;
   int any_stress = 0;
   for (int side = 0; side < 2; ++side) {
     sh_wall *w = &L->wall_at[side];
+    int id;
+    if ((rc = sl_mesh_boundary_id(L->mesh, names[side], &id, d))) return rc;
+    const sh_boundary *b = sl_scene_boundary(L->sc, id);
     char sec[300];
     snprintf(sec, sizeof sec, "boundary.%s", names[side]);
     w->name = names[side];
@@ -648,23 +614,14 @@ static int walls(sh_layer *L, sl_diag *d) {
     w->inner = side == 0 ? 1 : L->n - 1;
     w->area = L->annular ? L->x[w->node] * L->x[w->node] : 1.0;
     w->theta_area = L->annular ? L->x[w->node] : 1.0;
-    static const char *const keys[] = {"type", "velocity", "solids"};
-    if (sl_ini_find_section(L->ini, sec) && (rc = sl_ini_check_keys(L->ini, sec, keys, 3, d))) return rc;
-    int type;
-    if ((rc = sl_ini_get_choice(L->ini, sec, "type", 0, 0, "wall", &type, d))) return rc;
-    if ((rc = sl_ini_get_choice(L->ini, sec, "solids", 0, SOLIDS_NO_SLIP, "no_slip|free_slip|wall_stress",
-                                &w->solids, d)))
-      return rc;
-    const sl_ini_entry *ve = sl_ini_find(L->ini, sec, "velocity");
-    static const char *const vars[] = {"t"};
-    if ((rc = sl_expr_compile(ve ? ve->value : "0", vars, 1, &w->speed, d)))
-      return sl_diag_prefix(d, rc, "%s:%d: [%s] velocity", ve->file, ve->line, sec);
+    w->solids = b->solids;
+    w->speed = b->velocity.e;
     if (w->solids == SOLIDS_WALL_STRESS) {
       any_stress = 1;
       if (!L->wall_c) {
-        const sl_ini_entry *e = sl_ini_find(L->ini, sec, "solids");
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] solids = wall_stress needs [closure.wall_stress] (e.g. "
-                                            "model = bagnold or johnson_jackson)", e->file, e->line, sec);
+        char at[400];
+        return sl_diag_set(d, SL_EBADINPUT, "%s = wall_stress needs [closure.wall_stress] (e.g. model = bagnold or "
+                                            "johnson_jackson)", sl_scene_where(L->sc, &b->solids, at, sizeof at));
       }
       w->wall_function = sl_point_has_input(&L->wall, "wall_distance");
       if (w->wall_function && L->n < 2)
@@ -680,25 +637,22 @@ static int walls(sh_layer *L, sl_diag *d) {
 }
 
 static int initial_state(sh_layer *L, sl_diag *d) {
-  static const char *const vars[] = {"x"};
-  static const char *const keys[] = {"phi", "theta", "velocity_fluid", "velocity_solid"};
-  int rc = sl_ini_check_keys(L->ini, "initial", keys, 4, d);
-  if (rc) return rc;
-  const sl_ini_entry *pe = sl_ini_find(L->ini, "initial", "phi");
+  const tf_config *cfg = L->cfg;
+  const sl_src *pe = sl_scene_src(L->sc, &cfg->sh_phi);
   if (!pe) return sl_diag_set(d, SL_EBADINPUT, "[initial] phi: the shear layer needs the solids fraction (held)");
-  const sl_ini_entry *te = sl_ini_find(L->ini, "initial", "theta");
+  const sl_src *te = sl_scene_src(L->sc, &cfg->sh_theta);
   if (te && !L->granular)
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] theta: needs [closure.granular]", te->file, te->line);
-  const sl_ini_entry *es[4] = {pe, te, sl_ini_find(L->ini, "initial", "velocity_fluid"),
-                               sl_ini_find(L->ini, "initial", "velocity_solid")};
-  const char *defaults[4] = {"0", "1e-6", "0", "0"};
+  const sl_scene_expr *ex[4] = {&cfg->sh_phi, &cfg->sh_theta, &cfg->sh_uf, &cfg->sh_us};
+  const char *names[4] = {"phi", "theta", "velocity_fluid", "velocity_solid"};
+  int rc = 0;
   for (int f = 0; f < 4 && !rc; ++f) {
-    sl_expr *ex;
-    if ((rc = sl_expr_compile(es[f] ? es[f]->value : defaults[f], vars, 1, &ex, d)))
-      return sl_diag_prefix(d, rc, "%s:%d: [initial] %s", es[f]->file, es[f]->line, es[f]->key);
+    const sl_src *es = sl_scene_src(L->sc, ex[f]);
+    const char *file = es ? es->file : "(default)";
+    int line = es ? es->line : 0;
     if (f == 0) {
       for (int i = 0; i < L->n && !rc; ++i) {
-        double xc = 0.5 * (L->x[i] + L->x[i + 1]), v = sl_expr_eval(ex, &xc);
+        double xc = 0.5 * (L->x[i] + L->x[i + 1]), v = sl_expr_eval(ex[f]->e, &xc);
         if (!(v > 0.0 && v <= L->phi_max))
           rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] phi = %g at x = %g: allowed 0 < phi <= phi_max = %g",
                            pe->file, pe->line, v, xc, L->phi_max);
@@ -707,14 +661,13 @@ static int initial_state(sh_layer *L, sl_diag *d) {
     } else {
       double *dst = f == 1 ? L->th : f == 2 ? L->uf : L->us;
       for (int k = 0; k <= L->n && !rc; ++k) {
-        double v = sl_expr_eval(ex, &L->x[k]);
+        double v = sl_expr_eval(ex[f]->e, &L->x[k]);
         if (!isfinite(v) || (f == 1 && !(v > 0.0)))
-          rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s = %g at x = %g: allowed %s", es[f]->file,
-                           es[f]->line, es[f]->key, v, L->x[k], f == 1 ? "theta > 0" : "a finite value");
+          rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s = %g at x = %g: allowed %s", file, line, names[f], v,
+                           L->x[k], f == 1 ? "theta > 0" : "a finite value");
         dst[k] = v;
       }
     }
-    sl_expr_free(ex);
   }
   if (rc) return rc;
   /* phi at the nodes: the volume-weighted mean of the node's half cells */
@@ -745,18 +698,8 @@ static int initial_state(sh_layer *L, sl_diag *d) {
 
 /* ---- output ------------------------------------------------------------------------ */
 
-static int open_output(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
-  unsigned mask;
-  int rc = sl_scene_output_path(L->ini, o->output, o->scene_path, L->res->output_path, sizeof L->res->output_path, d);
-  if (!rc)
-    rc = sl_scene_output_fields(L->ini, field_names, 4, F_PHI | F_UF | F_US | (L->granular ? F_THETA : 0u), &mask, d);
-  if (rc) return rc;
-  if ((mask & F_THETA) && !L->granular) {
-    const sl_ini_entry *e = sl_ini_find(L->ini, "output", "fields");
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] fields: theta needs [closure.granular]", e->file, e->line);
-  }
-  L->fields = (int)mask;
-  if ((rc = sl_output_open(&L->out, L->res->output_path, d))) return rc;
+static int layer_write_mesh(void *self, sl_output *out, sl_diag *d) {
+  sh_layer *L = self;
   const sl_mesh *m = L->mesh;
   int32_t *cells = malloc((size_t)m->n_cells * 2 * sizeof *cells);
   double *coords = malloc((size_t)m->n_vertices * sizeof *coords);
@@ -766,85 +709,69 @@ static int open_output(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
   }
   for (int v = 0; v < m->n_vertices; ++v) coords[v] = m->xy[2 * v];
   for (int e = 0; e < 2 * m->n_cells; ++e) cells[e] = m->cell_vertices[e];
-  rc = sl_output_write_mesh(L->out, 1, m->n_vertices, coords, m->n_cells, 2, cells, "Polyline", d);
+  int rc = sl_output_write_mesh(out, 1, m->n_vertices, coords, m->n_cells, 2, cells, "Polyline", d);
   free(cells), free(coords);
-  if (rc) return rc;
-  char *ini_text = sl_ini_to_string(L->ini);
-  sl_provenance_closure pc[4];
-  sl_provenance pv = {.sluice_version = o->sluice_version ? o->sluice_version : "unknown", .ini_text = ini_text,
-                      .closures = pc};
-  const sl_closure *cl[4] = {L->drag_c, L->gran_c, L->wall_c, L->visc_c};
-  const char *roles[4] = {"closure.drag", "closure.granular", "closure.wall_stress", "closure.viscosity"};
-  for (int k = 0; k < 4; ++k)
-    if (cl[k]) pc[pv.n_closures++] = sl_scene_closure_provenance(cl[k], roles[k], L->params[k], sizeof L->params[k]);
-  rc = sl_output_write_provenance(L->out, &pv, d);
-  free(ini_text);
   return rc;
 }
 
-static int write_state(sh_layer *L, double t, sl_diag *d) {
-  double t0 = cpu_now();
-  int rc = sl_output_begin_step(L->out, t, d);
-  if (!rc && (L->fields & F_PHI)) {
+static int write_state(sh_layer *L, sl_output *out, sl_diag *d) {
+  int rc = 0;
+  if (L->fields & F_PHI) {
     for (int i = 0; i < L->n; ++i) L->cell_out[L->cell_of[i]] = L->phi[i];
-    rc = sl_output_write_field(L->out, "phi", SL_CENTRE_CELL, 1, L->cell_out, d);
+    rc = sl_output_write_field(out, "phi", SL_CENTRE_CELL, 1, L->cell_out, d);
   }
   const double *nf[3] = {L->uf, L->us, L->th};
   const int flag[3] = {F_UF, F_US, F_THETA};
   for (int f = 0; f < 3 && !rc; ++f) {
     if (!(L->fields & flag[f])) continue;
     for (int k = 0; k <= L->n; ++k) L->node_out[L->vertex[k]] = nf[f][k];
-    rc = sl_output_write_field(L->out, field_names[f + 1], SL_CENTRE_NODE, 1, L->node_out, d);
+    rc = sl_output_write_field(out, field_names[f + 1], SL_CENTRE_NODE, 1, L->node_out, d);
   }
   for (int side = 0; side < 2 && !rc; ++side) {
     const sh_wall *w = &L->wall_at[side];
     char name[300];
     snprintf(name, sizeof name, "wall_shear_stress_fluid_%s", w->name);
-    rc = sl_output_write_scalar(L->out, name, w->tau_f, d);
+    rc = sl_output_write_scalar(out, name, w->tau_f, d);
     snprintf(name, sizeof name, "wall_shear_stress_solid_%s", w->name);
-    if (!rc) rc = sl_output_write_scalar(L->out, name, w->tau_s, d);
+    if (!rc) rc = sl_output_write_scalar(out, name, w->tau_s, d);
     snprintf(name, sizeof name, "wall_slip_%s", w->name);
-    if (!rc) rc = sl_output_write_scalar(L->out, name, w->slip, d);
+    if (!rc) rc = sl_output_write_scalar(out, name, w->slip, d);
     if (!rc && L->annular) {
       snprintf(name, sizeof name, "torque_%s", w->name);
-      rc = sl_output_write_scalar(L->out, name, 2.0 * SH_PI * w->area * (w->tau_f + w->tau_s), d);
+      rc = sl_output_write_scalar(out, name, 2.0 * SH_PI * w->area * (w->tau_f + w->tau_s), d);
     }
     if (!rc && w->solids == SOLIDS_WALL_STRESS && sl_point_has_output(&L->wall, "bagnold_number")) {
       snprintf(name, sizeof name, "bagnold_number_%s", w->name);
-      rc = sl_output_write_scalar(L->out, name, w->bagnold, d);
+      rc = sl_output_write_scalar(out, name, w->bagnold, d);
     }
   }
-  if (!rc) rc = sl_output_end_step(L->out, d);
-  L->res->output += cpu_now() - t0;
   return rc;
 }
 
-static int write_checkpoint(sh_layer *L, double t, double dt, long step, sl_diag *d) {
-  int N = L->n + 1;
-  sl_checkpoint_array a[3] = {{"velocity_fluid", N, L->uf}, {"velocity_solid", N, L->us}, {"theta", N, L->th}};
-  sl_checkpoint ck = {.time = t, .dt = dt, .step = step, .n_arrays = 3, .arrays = a};
-  ck.n_ints = 1;
-  snprintf(ck.int_names[0], SL_CHECKPOINT_NAME_MAX, "rejected");
-  ck.ints[0] = L->res->rejected_steps;
-  return sl_output_write_checkpoint(L->out, &ck, d);
+static int layer_checkpoint(void *self, sl_checkpoint_array *a, int max) {
+  sh_layer *L = self;
+  if (max < 3) return 0;
+  const char *names[3] = {"velocity_fluid", "velocity_solid", "theta"};
+  const double *data[3] = {L->uf, L->us, L->th};
+  for (int k = 0; k < 3; ++k) {
+    snprintf(a[k].name, sizeof a[k].name, "%s", names[k]);
+    a[k].n = L->n + 1, a[k].data = data[k];
+  }
+  return 3;
 }
 
-static int restore(sh_layer *L, const char *path, double *t, double *dt, long *step, sl_diag *d) {
-  sl_checkpoint ck;
-  int rc = sl_checkpoint_read(path, &ck, d);
-  if (rc) return rc;
+static int layer_restore(void *self, const sl_checkpoint *ck, sl_diag *d) {
+  sh_layer *L = self;
   const char *names[3] = {"velocity_fluid", "velocity_solid", "theta"};
   double *dst[3] = {L->uf, L->us, L->th};
-  for (int k = 0; k < 3 && !rc; ++k) {
-    const sl_checkpoint_array *a = sl_checkpoint_find(&ck, names[k]);
+  for (int k = 0; k < 3; ++k) {
+    const sl_checkpoint_array *a = sl_checkpoint_find(ck, names[k]);
     if (!a || a->n != L->n + 1)
-      rc = sl_diag_set(d, SL_EBADINPUT, "restart: %s holds no shear-layer '%s' of %d values", path, names[k], L->n + 1);
-    else memcpy(dst[k], a->data, (size_t)a->n * sizeof(double));
+      return sl_diag_set(d, SL_EBADINPUT, "restart: the checkpoint holds no shear-layer '%s' of %d values", names[k],
+                         L->n + 1);
+    memcpy(dst[k], a->data, (size_t)a->n * sizeof(double));
   }
-  *t = ck.time, *dt = ck.dt, *step = (long)ck.step;
-  if (!rc && ck.n_ints > 0) L->res->rejected_steps = (long)ck.ints[0];
-  sl_checkpoint_free(&ck);
-  return rc;
+  return 0;
 }
 
 /* The reported wall quantities of the state in (uf, us, th). */
@@ -859,20 +786,19 @@ static int report_walls(sh_layer *L, const double *uf_old, const double *us_old,
   return rc;
 }
 
-/* ---- the time loop (core/time/fixed_step) ------------------------------------------------ */
+/* ---- the model's steps (core/time/loop.h) ------------------------------------------------ */
 
-static int layer_trial(void *user, double t, double dt, int *iterations, int *fatal, sl_diag *d) {
-  sh_layer *L = user;
-  *fatal = 0;
-  int rc = layer_step(L, t, dt, iterations, d);
+static int layer_trial(void *self, sl_step *s, int *iterations, sl_diag *d) {
+  sh_layer *L = self;
+  int rc = layer_step(L, s->t, s->dt, iterations, d);
   L->iterations += *iterations;
-  return rc;
+  return rc == 0 ? 0 : SL_STEP_RETRY;
 }
 
-static void layer_accept(void *user, double dt, int *steady) {
-  sh_layer *L = user;
+static void layer_accept(void *self, const sl_step *s, int *steady) {
+  sh_layer *L = self;
   const int N = L->n + 1;
-  double rate_u = 0.0, rate_t = 0.0, th_max = THETA_FLOOR, v_scale = L->v_ref;
+  double dt = s->dt, rate_u = 0.0, rate_t = 0.0, th_max = THETA_FLOOR, v_scale = L->v_ref;
   for (int k = 0; k < N; ++k) {
     rate_u = fmax(rate_u, fmax(fabs(L->uf1[k] - L->uf[k]), fabs(L->us1[k] - L->us[k])));
     rate_t = fmax(rate_t, fabs(L->th1[k] - L->th[k]));
@@ -890,24 +816,11 @@ static void layer_accept(void *user, double dt, int *steady) {
   *steady = L->steady_tol > 0.0 && rate_u < L->steady_tol && (!L->granular || rate_t < L->steady_tol);
 }
 
-static int layer_write(void *user, double t, double dt_next, long step, sl_diag *d) {
-  sh_layer *L = user;
+static int layer_write(void *self, sl_output *out, double t, const double *u, sl_diag *d) {
+  (void)t, (void)u;
+  sh_layer *L = self;
   int rc = report_walls(L, L->uf_old, L->us_old, L->dt_last, d);
-  if (!rc) rc = write_state(L, t, d);
-  return rc ? rc : write_checkpoint(L, t, dt_next, step, d);
-}
-
-static int layer_restore(void *user, const char *path, double *t, double *dt, long *step, sl_diag *d) {
-  return restore(user, path, t, dt, step, d);
-}
-
-static int time_loop(sh_layer *L, const sl_ns_run_opts *o, sl_diag *d) {
-  char steady_text[96];
-  snprintf(steady_text, sizeof steady_text, "(relative rates below %g per s)", L->steady_tol);
-  sl_fixed_step_model m = {.user = L, .step = layer_trial, .accept = layer_accept, .write = layer_write,
-                           .restore = layer_restore, .steady_text = steady_text};
-  L->dt_last = 0.0; /* no storage term in the wall reactions of the starting state */
-  return sl_fixed_step_run(L->ini, &m, o, L->res, d);
+  return rc ? rc : write_state(L, out, d);
 }
 
 static void release(sh_layer *L) {
@@ -918,46 +831,69 @@ static void release(sh_layer *L) {
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   for (int k = 0; k < Q_N; ++k) free(L->qv[k]);
   sl_point_release(&L->drag), sl_point_release(&L->gran), sl_point_release(&L->wall), sl_point_release(&L->visc);
-  sl_closure_destroy(L->drag_c), sl_closure_destroy(L->gran_c), sl_closure_destroy(L->wall_c);
-  sl_closure_destroy(L->visc_c);
-  for (int side = 0; side < 2; ++side) sl_expr_free(L->wall_at[side].speed);
   free(L->vertex), free(L->cell_of);
-  sl_mesh_destroy(L->mesh);
+  free(L);
 }
 
-int sl_shear_layer_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d) {
-  memset(res, 0, sizeof *res);
-  sh_layer L = {.ini = ini, .res = res};
-  double c0 = cpu_now();
-  int rc = sl_ini_get_choice(ini, "two_fluid", "cross_section", 0, 0, "planar|annular", &L.annular, d);
-  if (!rc) rc = sl_scene_mesh(ini, &L.mesh, d);
-  if (!rc) rc = geometry(&L, d);
-  if (!rc) rc = physics(&L, reg, d);
-  if (!rc && L.granular && L.algebraic) rc = check_kinetic_scaling(&L, d);
-  L.b = L.granular && !L.algebraic ? 3 : 2;
-  if (!rc) rc = walls(&L, d);
-  if (!rc) rc = initial_state(&L, d);
-  if (!rc) rc = open_output(&L, o, d);
-  res->cpu_setup = cpu_now() - c0;
-  if (!rc) rc = time_loop(&L, o, d);
-  res->cpu_flow = res->solve, res->cpu_output = res->output; /* profile phases */
-  if (L.out) {
-    sl_output_stats(L.out, &res->output_times, &res->output_datasets, &res->output_bytes);
-    sl_diag d2;
-    int crc = sl_output_close(L.out, rc ? &d2 : d);
-    if (!rc) rc = crc;
+static int layer_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) {
+  sh_layer *L = calloc(1, sizeof *L);
+  if (!L) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+  L->sc = sc, L->cfg = sc->config, L->mesh = sc->mesh, L->annular = L->cfg->cross_section;
+  int rc = 0;
+  if (sc->geometry != 0) {
+    char at[400];
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: the shear layer (motion = shear) is 1-D (geometry = line; cross_section = "
+                                      "annular for coaxial cylinders)", sl_scene_where(sc, &sc->geometry, at, sizeof at));
   }
-  if (L.advances) {
+  if (!rc) rc = geometry(L, d);
+  if (!rc) rc = physics(L, d);
+  if (!rc && L->granular && L->algebraic) rc = check_kinetic_scaling(L, d);
+  L->b = L->granular && !L->algebraic ? 3 : 2;
+  if (!rc) rc = walls(L, d);
+  if (!rc) rc = initial_state(L, d);
+  unsigned mask = 0;
+  if (!rc) rc = sl_scene_output_fields(sc, F_PHI | F_UF | F_US | (L->granular ? F_THETA : 0u), &mask, d);
+  if (!rc && (mask & F_THETA) && !L->granular) {
+    char at[400];
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: theta needs [closure.granular]",
+                     sl_scene_where(sc, &sc->output.fields, at, sizeof at));
+  }
+  L->fields = (int)mask;
+  if (rc) {
+    release(L);
+    return rc;
+  }
+  L->dt_last = 0.0; /* no storage term in the wall reactions of the starting state */
+  snprintf(L->steady_text, sizeof L->steady_text, "(relative rates below %g per s)", L->steady_tol);
+  *info = (sl_model_info){.integrator = SL_INTEGRATE_FIXED, .steady_text = L->steady_text};
+  *self = L;
+  return 0;
+}
+
+static void layer_stats(void *self, const sl_run_result *res, sl_model_stats *st) {
+  sh_layer *L = self;
+  st->cpu_flow = res->solve; /* profile phases */
+  if (L->advances) {
     double thm = 0.0;
-    for (int k = 0; k <= L.n; ++k) thm = fmax(thm, L.th[k]);
-    snprintf(res->coupling_summary, sizeof res->coupling_summary,
+    for (int k = 0; k <= L->n; ++k) thm = fmax(thm, L->th[k]);
+    snprintf(st->coupling_summary, sizeof st->coupling_summary,
              "two_fluid shear layer (%s): %.1f iterations per step; solids wall stresses %.4g Pa (%s), %.4g Pa "
              "(%s); max theta %.3g m2/s2",
-             L.annular ? "annular" : "planar", (double)L.iterations / (double)L.advances, L.wall_at[0].tau_s,
-             L.wall_at[0].name ? L.wall_at[0].name : "-", L.wall_at[1].tau_s,
-             L.wall_at[1].name ? L.wall_at[1].name : "-", thm);
+             L->annular ? "annular" : "planar", (double)L->iterations / (double)L->advances, L->wall_at[0].tau_s,
+             L->wall_at[0].name ? L->wall_at[0].name : "-", L->wall_at[1].tau_s,
+             L->wall_at[1].name ? L->wall_at[1].name : "-", thm);
   }
-  snprintf(res->linear_summary, sizeof res->linear_summary, "2x2 block-tridiagonal, %d nodes", L.n + 1);
-  release(&L);
-  return rc;
+  snprintf(st->linear_summary, sizeof st->linear_summary, "2x2 block-tridiagonal, %d nodes", L->n + 1);
 }
+
+static void layer_destroy(void *self) { release(self); }
+
+const sl_model_ops sl_two_fluid_shear_ops = {.setup = layer_setup,
+                                             .step = layer_trial,
+                                             .accept = layer_accept,
+                                             .write_mesh = layer_write_mesh,
+                                             .write = layer_write,
+                                             .checkpoint = layer_checkpoint,
+                                             .restore = layer_restore,
+                                             .stats = layer_stats,
+                                             .destroy = layer_destroy};

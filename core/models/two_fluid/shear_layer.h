@@ -66,10 +66,13 @@
 #ifndef SLUICE_MODELS_SHEAR_LAYER_H
 #define SLUICE_MODELS_SHEAR_LAYER_H
 
-#include "core/models/navier_stokes/navier_stokes.h"
+#include "core/scene/schema.h"
 
-/* Runs a model = two_fluid, motion = shear scene; the arguments and returns
- * of sl_two_fluid_run. */
-int sl_shear_layer_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d);
+/* A wall of the layer, as the scene gives it (schema.c). */
+typedef struct sh_boundary {
+  int type;               /* wall */
+  sl_scene_expr velocity; /* the wall's speed, of t */
+  int solids;             /* no_slip | free_slip | wall_stress */
+} sh_boundary;
 
 #endif

@@ -8,38 +8,31 @@
 #include <string.h>
 #include <time.h>
 
-#include "core/scene/mesh.h"
-#include "core/scene/output.h"
-#include "core/models/two_fluid/shear_layer.h"
 #include "core/models/two_fluid/two_fluid_impl.h"
-#include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
-#include "core/time/fixed_step.h"
+#include "core/scene/mesh.h"
 
 enum { F_PHI = 1, F_US = 2, F_UF = 4, F_P = 8 };
 enum { TF_MAX_LEVELS = 8 };
-static const char *const field_names[] = {"phi", "velocity_solid", "velocity_fluid", "pressure"};
 
 typedef struct tf_run {
-  sl_ini *ini;
-  sl_ns_result *res;
-  sl_mesh *mesh;
+  const sl_scene *sc;
+  const tf_config *cfg;
+  const sl_mesh *mesh;
   tf_column c;
   int *face_vertex; /* [n+1] */
   int *cell_of;     /* [n]: the mesh cell of column cell i */
   double *node;     /* [n_vertices] scratch for node fields */
-  sl_output *out;
   int fields;
   double inventory0, outflow;
   double steady_tol;
   long substeps, iterations, advances;
-  char params[2][1024];
+  char steady_text[96];
+  tf_state ck; /* the checkpoint's view of the state */
   char inlet_where[400]; /* file:line: [section] key of the inlet's value */
   double level[TF_MAX_LEVELS]; /* [output] interface */
   int n_levels;
 } tf_run;
-
-static double cpu_now(void) { return (double)clock() / CLOCKS_PER_SEC; }
 
 /* ---- the column from the mesh ------------------------------------------------ */
 
@@ -68,35 +61,29 @@ static int column_from_mesh(tf_run *r, sl_diag *d) {
 
 static int boundaries(tf_run *r, sl_diag *d) {
   tf_column *c = &r->c;
+  const sl_scene *sc = r->sc;
   const char *names[2];
-  int rc = sl_scene_line_ends(r->ini, r->mesh, r->face_vertex[0], r->face_vertex[c->n], "two_fluid", names, d);
+  int rc = sl_scene_line_ends(r->mesh, r->face_vertex[0], r->face_vertex[c->n], "two_fluid", names, d);
   if (rc) return rc;
   int n_out = 0;
   c->inlet_side = -1;
   for (int side = 0; side < 2; ++side) {
+    int id;
+    if ((rc = sl_mesh_boundary_id(r->mesh, names[side], &id, d))) return rc;
+    const tfc_boundary *b = sl_scene_boundary(sc, id);
+    const sl_src *where = sl_scene_boundary_section(sc, id);
     char sec[300];
     snprintf(sec, sizeof sec, "boundary.%s", names[side]);
-    static const char *const keys[] = {"type", "velocity", "porosity", "pressure"};
-    if (sl_ini_find_section(r->ini, sec) && (rc = sl_ini_check_keys(r->ini, sec, keys, 4, d))) return rc;
-    if ((rc = sl_ini_get_choice(r->ini, sec, "type", 0, TF_WALL, "wall|inlet|outlet", &c->bc[side], d))) return rc;
-    const sl_ini_entry *ve = sl_ini_find(r->ini, sec, "velocity"), *pe = sl_ini_find(r->ini, sec, "pressure");
-    const sl_ini_entry *ne = sl_ini_find(r->ini, sec, "porosity");
-    if ((ve || ne) && c->bc[side] != TF_INLET)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] %s: only an inlet takes a %s", ve ? ve->file : ne->file,
-                         ve ? ve->line : ne->line, sec, ve ? "velocity" : "porosity", ve ? "velocity" : "porosity");
-    if (pe && c->bc[side] != TF_OUTLET)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] pressure: only an outlet takes a pressure", pe->file, pe->line,
-                         sec);
+    c->bc[side] = b->type;
+    const sl_src *ve = sl_scene_src(sc, &b->velocity), *ne = sl_scene_src(sc, &b->porosity);
     if (c->bc[side] == TF_INLET) {
       if (c->inlet_side >= 0)
         return sl_diag_set(d, SL_EBADINPUT, "[%s]: a second inlet (1-D: one inlet and one outlet at most)", sec);
-      if (!ve == !ne) {
-        const sl_ini_section *where = sl_ini_find_section(r->ini, sec);
+      if (!ve == !ne)
         return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: an inlet takes either velocity (the superficial fluid "
                                             "velocity entering, m/s) or porosity (that of the homogeneous bed the "
                                             "inflow holds at rest), an expression of t and case%s",
                            where ? where->file : "(scene)", where ? where->line : 0, sec, ve ? "; not both" : "");
-      }
       if (ne && side != (c->below ? 0 : 1))
         return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] porosity: a bed is held by an inflow from below; this "
                                             "inlet is at the top (give its velocity instead)", ne->file, ne->line,
@@ -105,16 +92,15 @@ static int boundaries(tf_run *r, sl_diag *d) {
         return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] porosity: particles no denser than the fluid (%g <= %g "
                                             "kg/m3) are not held by an upward flow (give the velocity instead)",
                            ne->file, ne->line, sec, c->rho_s, c->rho_f);
-      static const char *const vars[] = {"t", "case"};
-      const sl_ini_entry *e = ve ? ve : ne;
-      if ((rc = sl_expr_compile(e->value, vars, 2, ve ? &c->inlet : &c->inlet_porosity, d)))
-        return sl_diag_prefix(d, rc, "%s:%d: [%s] %s", e->file, e->line, sec, e->key);
+      const sl_src *e = ve ? ve : ne;
+      if (ve) c->inlet = b->velocity.e;
+      else c->inlet_porosity = b->porosity.e;
       c->inlet_side = side;
       snprintf(r->inlet_where, sizeof r->inlet_where, "%s:%d: [%s] %s", e->file, e->line, sec, e->key);
     }
     if (c->bc[side] == TF_OUTLET) {
       ++n_out;
-      if ((rc = sl_ini_get_real(r->ini, sec, "pressure", 0, 0.0, -1e12, 1e12, &c->p_out, d))) return rc;
+      c->p_out = b->pressure;
     }
   }
   if (n_out == 2)
@@ -128,17 +114,15 @@ static int boundaries(tf_run *r, sl_diag *d) {
 
 static int initial_state(tf_run *r, sl_diag *d) {
   tf_column *c = &r->c;
-  const sl_ini_entry *e = sl_ini_find(r->ini, "initial", "phi"), *en = sl_ini_find(r->ini, "initial", "porosity");
+  const sl_src *e = sl_scene_src(r->sc, &r->cfg->phi), *en = sl_scene_src(r->sc, &r->cfg->porosity);
   if (e && en)
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] porosity and phi both given: set one", en->file, en->line);
   if (!e && !en)
     return sl_diag_set(d, SL_EBADINPUT, "[initial] phi (or porosity): the two_fluid model needs the initial solids "
                                         "fraction");
-  const sl_ini_entry *use = e ? e : en;
-  static const char *const vars[] = {"x", "y", "case"};
-  sl_expr *ex;
-  int rc = sl_expr_compile(use->value, vars, 3, &ex, d);
-  if (rc) return sl_diag_prefix(d, rc, "%s:%d: [initial] %s", use->file, use->line, use->key);
+  const sl_src *use = e ? e : en;
+  const sl_expr *ex = e ? r->cfg->phi.e : r->cfg->porosity.e;
+  int rc = 0;
   for (int i = 0; i < c->n && !rc; ++i) {
     double xy[3] = {c->xc[i], 0.0, c->case_index}, v = sl_expr_eval(ex, xy), phi = e ? v : 1.0 - v;
     if (!(phi >= 0.0 && phi <= c->phi_max))
@@ -147,7 +131,6 @@ static int initial_state(tf_run *r, sl_diag *d) {
                        c->phi_max);
     c->phi[i] = phi;
   }
-  sl_expr_free(ex);
   return rc;
 }
 
@@ -170,12 +153,8 @@ static void release(tf_run *r) {
                    c->phif,  c->slip, c->lo,   c->di,     c->up,    c->rhs,  c->flux,  c->dpdx,    c->drag.buf,
                    c->ps.buf, r->node};
   for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i) free(all[i]);
-  sl_closure_destroy(c->drag.c);
-  sl_closure_destroy(c->ps.c);
-  sl_expr_free(c->inlet);
-  sl_expr_free(c->inlet_porosity);
   free(r->face_vertex), free(r->cell_of);
-  sl_mesh_destroy(r->mesh);
+  free(r);
 }
 
 /* ---- output ----------------------------------------------------------------------- */
@@ -186,38 +165,33 @@ static double inventory(const tf_column *c) {
   return s;
 }
 
-static int open_output(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
-  unsigned mask;
-  const sl_ini_entry *le = sl_ini_find(r->ini, "output", "interface");
-  if (le) {
-    int rc = sl_ini_get_real_list(r->ini, "output", "interface", 0, r->level, TF_MAX_LEVELS, &r->n_levels, d);
-    if (rc) return rc;
-    for (int k = 0; k < r->n_levels; ++k)
-      if (!(r->level[k] > 0.0 && r->level[k] <= r->c.phi_max))
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] interface = %g: a level of phi, allowed 0 < level <= "
-                                            "phi_max = %g", le->file, le->line, r->level[k], r->c.phi_max);
-    if (r->n_levels > 0 && r->c.g == 0.0)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] interface: heights are measured against gravity, and the "
-                                          "scene has none", le->file, le->line);
+/* [output] interface: levels of phi in (0, phi_max], against gravity. */
+static int interface_levels(tf_run *r, sl_diag *d) {
+  const sl_src *le = sl_scene_src(r->sc, &r->sc->output.interface);
+  if (!le) return 0;
+  r->n_levels = r->sc->output.interface.n;
+  for (int k = 0; k < r->n_levels; ++k) {
+    r->level[k] = r->sc->output.interface.v[k];
+    if (!(r->level[k] > 0.0 && r->level[k] <= r->c.phi_max))
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] interface = %g: a level of phi, allowed 0 < level <= "
+                                          "phi_max = %g", le->file, le->line, r->level[k], r->c.phi_max);
   }
-  int rc = sl_scene_output_path(r->ini, o->output, o->scene_path, r->res->output_path, sizeof r->res->output_path, d);
-  if (!rc) rc = sl_scene_output_fields(r->ini, field_names, 4, F_PHI | F_US | F_UF | F_P, &mask, d);
-  if (rc) return rc;
-  r->fields = (int)mask;
-  if ((rc = sl_output_open(&r->out, r->res->output_path, d))) return rc;
+  if (r->n_levels > 0 && r->c.g == 0.0)
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] interface: heights are measured against gravity, and the "
+                                        "scene has none", le->file, le->line);
+  return 0;
+}
+
+static int column_write_mesh(void *self, sl_output *out, sl_diag *d) {
+  tf_run *r = self;
   const sl_mesh *m = r->mesh;
   int32_t *cells = malloc((size_t)m->n_cells * 2 * sizeof *cells);
-  r->node = calloc((size_t)m->n_vertices, sizeof *r->node);
-  if (!cells || !r->node) {
-    free(cells);
-    return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-  }
+  if (!cells) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
   for (int v = 0; v < m->n_vertices; ++v) r->node[v] = m->xy[2 * v];
   for (int e2 = 0; e2 < 2 * m->n_cells; ++e2) cells[e2] = m->cell_vertices[e2];
-  rc = sl_output_write_mesh(r->out, 1, m->n_vertices, r->node, m->n_cells, 2, cells, "Polyline", d);
+  int rc = sl_output_write_mesh(out, 1, m->n_vertices, r->node, m->n_cells, 2, cells, "Polyline", d);
   free(cells);
-  if (rc) return rc;
-  return tf_write_provenance(r->out, r->ini, o, &r->c, NULL, NULL, 0, r->params, d);
+  return rc;
 }
 
 /* The height (along -g) where phi first reaches `level` coming down from the
@@ -237,10 +211,11 @@ static double interface_height(const tf_column *c, double level) {
 }
 
 /* Cell arrays in the mesh's cell order, face arrays at the mesh's vertices. */
-static int write_state(tf_run *r, double t, sl_diag *d) {
-  double t0 = cpu_now();
+static int column_write(void *self, sl_output *out, double t, const double *u, sl_diag *d) {
+  (void)u;
+  tf_run *r = self;
   tf_column *c = &r->c;
-  int rc = sl_output_begin_step(r->out, t, d);
+  int rc = 0;
   double *cellv = r->c.alpha; /* scratch of n cells */
   const double *cf[2] = {c->phi, c->p}, *ff[2] = {c->u, c->uf};
   const int cflag[2] = {F_PHI, F_P}, fflag[2] = {F_US, F_UF};
@@ -248,65 +223,60 @@ static int write_state(tf_run *r, double t, sl_diag *d) {
   for (int k = 0; k < 2 && !rc; ++k) {
     if (!(r->fields & cflag[k])) continue;
     for (int i = 0; i < c->n; ++i) cellv[r->cell_of[i]] = cf[k][i];
-    rc = sl_output_write_field(r->out, cname[k], SL_CENTRE_CELL, 1, cellv, d);
+    rc = sl_output_write_field(out, cname[k], SL_CENTRE_CELL, 1, cellv, d);
   }
   for (int k = 0; k < 2 && !rc; ++k) {
     if (!(r->fields & fflag[k])) continue;
     for (int f = 0; f <= c->n; ++f) r->node[r->face_vertex[f]] = ff[k][f];
-    rc = sl_output_write_field(r->out, fname[k], SL_CENTRE_NODE, 1, r->node, d);
+    rc = sl_output_write_field(out, fname[k], SL_CENTRE_NODE, 1, r->node, d);
   }
   double inv = inventory(c);
-  if (!rc) rc = sl_output_write_scalar(r->out, "solids_inventory", inv, d);
+  if (!rc) rc = sl_output_write_scalar(out, "solids_inventory", inv, d);
   if (!rc)
-    rc = sl_output_write_scalar(r->out, "solids_conservation_error",
+    rc = sl_output_write_scalar(out, "solids_conservation_error",
                                 r->inventory0 > 0.0 ? (inv + r->outflow - r->inventory0) / r->inventory0 : 0.0, d);
   double j = 0.0;
   if (!rc) rc = tf_mixture_flux(c, t, &j, d);
-  if (!rc) rc = sl_output_write_scalar(r->out, "mixture_flux", j, d);
+  if (!rc) rc = sl_output_write_scalar(out, "mixture_flux", j, d);
   for (int k = 0; k < r->n_levels && !rc; ++k) {
     char name[64];
     snprintf(name, sizeof name, "interface_height_%d", k);
-    rc = sl_output_write_scalar(r->out, name, interface_height(c, r->level[k]), d);
+    rc = sl_output_write_scalar(out, name, interface_height(c, r->level[k]), d);
     snprintf(name, sizeof name, "interface_level_%d", k);
-    if (!rc) rc = sl_output_write_scalar(r->out, name, r->level[k], d);
+    if (!rc) rc = sl_output_write_scalar(out, name, r->level[k], d);
   }
-  if (!rc) rc = sl_output_end_step(r->out, d);
-  r->res->output += cpu_now() - t0;
   return rc;
 }
 
-static tf_state column_state(tf_run *r) {
-  return (tf_state){.phi = r->c.phi, .us = r->c.u, .uf = r->c.uf, .p = r->c.p, .n_cells = r->c.n,
-                    .n_faces = r->c.n + 1, .inventory0 = r->inventory0, .outflow = r->outflow,
-                    .rejected = r->res->rejected_steps};
+static int column_checkpoint(void *self, sl_checkpoint_array *a, int max) {
+  tf_run *r = self;
+  r->ck = (tf_state){.phi = r->c.phi, .us = r->c.u, .uf = r->c.uf, .p = r->c.p, .n_cells = r->c.n,
+                     .n_faces = r->c.n + 1, .inventory0 = r->inventory0, .outflow = r->outflow};
+  return tf_checkpoint_arrays(&r->ck, a, max);
 }
 
-static int write_checkpoint(tf_run *r, double t, double dt, long step, sl_diag *d) {
-  tf_state st = column_state(r);
-  return tf_checkpoint_write(r->out, &st, t, dt, step, d);
-}
-
-static int restore(tf_run *r, const char *path, double *t, double *dt, long *step, sl_diag *d) {
-  tf_state st = column_state(r);
-  int rc = tf_checkpoint_restore(path, "two_fluid", &st, t, dt, step, d);
-  r->inventory0 = st.inventory0, r->outflow = st.outflow, r->res->rejected_steps = st.rejected;
+static int column_restore(void *self, const sl_checkpoint *ck, sl_diag *d) {
+  tf_run *r = self;
+  tf_state st = {.phi = r->c.phi, .us = r->c.u, .uf = r->c.uf, .p = r->c.p, .n_cells = r->c.n, .n_faces = r->c.n + 1};
+  int rc = tf_checkpoint_restore(ck, "two_fluid", &st, d);
+  if (!rc) r->inventory0 = st.inventory0, r->outflow = st.outflow;
   return rc;
 }
 
-/* ---- the time loop (core/time/fixed_step) ------------------------------------------------ */
+/* ---- the model's steps (core/time/loop.h) ------------------------------------------------ */
 
-static int column_step(void *user, double t, double dt, int *iterations, int *fatal, sl_diag *d) {
-  tf_run *r = user;
-  int rc = tf_step(&r->c, t, dt, d);
-  *iterations = r->c.iterations_trial, *fatal = r->c.fatal;
+static int column_step(void *self, sl_step *s, int *iterations, sl_diag *d) {
+  tf_run *r = self;
+  int rc = tf_step(&r->c, s->t, s->dt, d);
+  *iterations = r->c.iterations_trial;
   r->iterations += r->c.iterations_trial;
-  return rc;
+  return rc == 0 ? 0 : r->c.fatal ? -SL_EFAILED : SL_STEP_RETRY;
 }
 
-static void column_accept(void *user, double dt, int *steady) {
-  tf_run *r = user;
+static void column_accept(void *self, const sl_step *s, int *steady) {
+  tf_run *r = self;
   tf_column *c = &r->c;
-  double rate = 0.0;
+  double dt = s->dt, rate = 0.0;
   for (int i = 0; i < c->n; ++i) rate = fmax(rate, fabs(c->phi_new[i] - c->phi[i]) / dt);
   double *sw;
   sw = c->phi, c->phi = c->phi_new, c->phi_new = sw;
@@ -319,112 +289,67 @@ static void column_accept(void *user, double dt, int *steady) {
   *steady = r->steady_tol > 0.0 && rate < r->steady_tol;
 }
 
-static int column_write(void *user, double t, double dt_next, long step, sl_diag *d) {
-  tf_run *r = user;
-  int rc = write_state(r, t, d);
-  return rc ? rc : write_checkpoint(r, t, dt_next, step, d);
-}
-
-static int column_restore(void *user, const char *path, double *t, double *dt, long *step, sl_diag *d) {
-  return restore(user, path, t, dt, step, d);
-}
-
-static int time_loop(tf_run *r, const sl_ns_run_opts *o, sl_diag *d) {
-  char steady_text[96];
-  snprintf(steady_text, sizeof steady_text, "(largest dphi/dt below %g per s)", r->steady_tol);
-  sl_fixed_step_model m = {.user = r, .step = column_step, .accept = column_accept, .write = column_write,
-                           .restore = column_restore, .steady_text = steady_text};
-  r->inventory0 = inventory(&r->c); /* a restart reads it from the checkpoint */
-  return sl_fixed_step_run(r->ini, &m, o, r->res, d);
-}
-
-int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d) {
-  int motion = 0;
-  int rc = sl_ini_get_choice(ini, "two_fluid", "motion", 0, 0, "column|shear", &motion, d);
-  if (rc) return rc;
-  if (motion == 1) {
-    int geometry = 0;
-    if ((rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, d))) return rc;
-    if (geometry != 0) {
-      const sl_ini_entry *e = sl_ini_find(ini, "scene", "geometry");
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [scene] geometry = %s: the shear layer (motion = shear) is 1-D "
-                                          "(geometry = line; cross_section = annular for coaxial cylinders)",
-                         e->file, e->line, e->value);
-    }
-    static const char *const plane_only[] = {"kinetic_pressure", "acceleration"};
-    for (int k = 0; k < 2; ++k) {
-      const sl_ini_entry *kp = sl_ini_find(ini, "two_fluid", plane_only[k]);
-      if (kp)
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: a key of the 2-D model (not of the shear layer)",
-                           kp->file, kp->line, kp->key);
-    }
-    return sl_shear_layer_run(ini, reg, o, res, d);
-  }
-  int geometry = 0;
-  rc = sl_ini_get_choice(ini, "scene", "geometry", 0, 0, "line|planar|axisymmetric", &geometry, d);
-  if (rc) return rc;
-  /* the column has no solids stress; the 2-D model takes its granular keys */
-  static const char *const not_column[] = {"cross_section", "granular_temperature", "interphase_dissipation",
-                                           "kinetic_pressure", "acceleration"};
-  static const char *const owner[] = {"the shear layer (motion = shear)",
-                                      "the shear layer (motion = shear) or a 2-D scene with [closure.granular]",
-                                      "the shear layer (motion = shear) or a 2-D scene with [closure.granular]",
-                                      "a 2-D scene with [closure.granular]", "a 2-D scene"};
-  for (size_t k = 0; k < (geometry != 0 ? 1 : sizeof not_column / sizeof not_column[0]); ++k) {
-    const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", not_column[k]);
-    if (e) return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: a key of %s", e->file, e->line, e->key, owner[k]);
-  }
-  if (geometry != 0) return sl_two_fluid_plane_run(ini, reg, o, res, d);
-  int convection = 0;
-  if ((rc = sl_ini_get_bool(ini, "flow", "convection", 0, 0, &convection, d))) return rc;
-  if (convection) {
-    const sl_ini_entry *cv = sl_ini_find(ini, "flow", "convection");
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [flow] convection: the 1-D column has no convective acceleration "
-                                        "(the 2-D model takes it: geometry = planar or axisymmetric)",
-                       cv->file, cv->line);
-  }
-  memset(res, 0, sizeof *res);
-  tf_run r = {.ini = ini, .res = res};
-  double c0 = cpu_now();
-  if (!rc) rc = sl_scene_mesh(ini, &r.mesh, d);
-  if (!rc) rc = column_from_mesh(&r, d);
-  if (!rc) rc = tf_scene_physics(r.ini, reg, 1, &r.c, NULL, &r.steady_tol, d);
-  if (!rc) rc = boundaries(&r, d);
-  if (!rc) rc = allocate(&r.c, d);
-  if (!rc) rc = initial_state(&r, d);
+static int column_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) {
+  tf_run *r = calloc(1, sizeof *r);
+  if (!r) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  r->sc = sc, r->cfg = sc->config, r->mesh = sc->mesh;
+  unsigned mask;
+  int rc = sl_scene_output_fields(sc, F_PHI | F_US | F_UF | F_P, &mask, d);
+  r->fields = (int)mask;
+  if (!rc) rc = column_from_mesh(r, d);
+  if (!rc) rc = tf_scene_physics(sc, r->cfg, 1, &r->c, NULL, &r->steady_tol, d);
+  if (!rc) rc = boundaries(r, d);
+  if (!rc) rc = allocate(&r->c, d);
+  if (!rc) rc = initial_state(r, d);
   if (!rc) { /* the initial fluid velocity and a consistent u_s = 0 */
-    tf_column *c = &r.c;
+    tf_column *c = &r->c;
     double j = 0.0;
-    if (tf_mixture_flux(c, 0.0, &j, d)) rc = sl_diag_prefix(d, SL_EBADINPUT, "%s", r.inlet_where);
+    if (tf_mixture_flux(c, 0.0, &j, d)) rc = sl_diag_prefix(d, SL_EBADINPUT, "%s", r->inlet_where);
     for (int k = 0; k <= c->n && !rc; ++k) {
       int cell = k == 0 ? 0 : k == c->n ? c->n - 1 : (c->below ? k - 1 : k);
       c->uf[k] = j / (1.0 - c->phi[cell]);
     }
     c->v_ref = fmax(c->v_ref, fabs(j));
   }
-  if (!rc) rc = open_output(&r, o, d);
-  res->cpu_setup = cpu_now() - c0;
-  if (!rc) rc = time_loop(&r, o, d);
-  /* profile phases: the implicit steps less their transport, the transport, the output */
-  res->cpu_coupled = r.c.transport_cpu, res->cpu_flow = fmax(res->solve - r.c.transport_cpu, 0.0);
-  res->cpu_output = res->output;
-  if (r.out) {
-    sl_output_stats(r.out, &res->output_times, &res->output_datasets, &res->output_bytes);
-    sl_diag d2;
-    int crc = sl_output_close(r.out, rc ? &d2 : d);
-    if (!rc) rc = crc;
+  if (!rc) rc = interface_levels(r, d);
+  if (!rc && !(r->node = calloc((size_t)r->mesh->n_vertices, sizeof *r->node)))
+    rc = sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  if (rc) {
+    release(r);
+    return rc;
   }
-  if (r.advances) {
-    double base = r.inventory0, err = base > 0.0 ? (inventory(&r.c) + r.outflow - base) / base : 0.0;
+  r->inventory0 = inventory(&r->c); /* a restart reads it from the checkpoint */
+  snprintf(r->steady_text, sizeof r->steady_text, "(largest dphi/dt below %g per s)", r->steady_tol);
+  *info = (sl_model_info){.integrator = SL_INTEGRATE_FIXED, .steady_text = r->steady_text};
+  *self = r;
+  return 0;
+}
+
+static void column_stats(void *self, const sl_run_result *res, sl_model_stats *st) {
+  tf_run *r = self;
+  /* profile phases: the implicit steps less their transport, the transport */
+  st->cpu_coupled = r->c.transport_cpu, st->cpu_flow = fmax(res->solve - r->c.transport_cpu, 0.0);
+  if (r->advances) {
+    double base = r->inventory0, err = base > 0.0 ? (inventory(&r->c) + r->outflow - base) / base : 0.0;
     double pmax = 0.0;
-    for (int i = 0; i < r.c.n; ++i) pmax = fmax(pmax, r.c.phi[i]);
-    snprintf(res->coupling_summary, sizeof res->coupling_summary,
+    for (int i = 0; i < r->c.n; ++i) pmax = fmax(pmax, r->c.phi[i]);
+    snprintf(st->coupling_summary, sizeof st->coupling_summary,
              "two_fluid: %.1f iterations and %.1f transport sub-steps per step, solids conservation error %.1e, "
              "outflow %.3g m, max phi %.4f (phi_max %.4g)",
-             (double)r.iterations / (double)r.advances, (double)r.substeps / (double)r.advances, err, r.outflow, pmax,
-             r.c.phi_max);
+             (double)r->iterations / (double)r->advances, (double)r->substeps / (double)r->advances, err, r->outflow,
+             pmax, r->c.phi_max);
   }
-  snprintf(res->linear_summary, sizeof res->linear_summary, "tridiagonal, %d faces", r.c.n + 1);
-  release(&r);
-  return rc;
+  snprintf(st->linear_summary, sizeof st->linear_summary, "tridiagonal, %d faces", r->c.n + 1);
 }
+
+static void column_destroy(void *self) { release(self); }
+
+const sl_model_ops sl_two_fluid_column_ops = {.setup = column_setup,
+                                              .step = column_step,
+                                              .accept = column_accept,
+                                              .write_mesh = column_write_mesh,
+                                              .write = column_write,
+                                              .checkpoint = column_checkpoint,
+                                              .restore = column_restore,
+                                              .stats = column_stats,
+                                              .destroy = column_destroy};

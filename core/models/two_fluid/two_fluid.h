@@ -55,20 +55,17 @@
  *   [time]    end, dt, dt_min, max_steps
  *   [output]  file, every, fields, interface (levels of phi whose heights
  *             are written as interface_height_K)
- */
+ * (the keys' defaults, units and ranges: schema.c) */
 #ifndef SLUICE_MODELS_TWO_FLUID_H
 #define SLUICE_MODELS_TWO_FLUID_H
 
-#include "core/models/navier_stokes/navier_stokes.h"
+#include "core/scene/schema.h"
+#include "core/time/model.h"
 
-/* Runs a model = two_fluid scene (geometry = line); the arguments and
- * returns of sl_ns_run: 0, SL_EBADINPUT (nothing written) or SL_EFAILED
- * (the last good state saved, the message says where and why).
- * res->coupling_summary gets the model's one-line summary. */
-int sl_two_fluid_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res, sl_diag *d);
-
-/* The same for geometry = planar | axisymmetric (two_fluid_plane.c). */
-int sl_two_fluid_plane_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_ns_result *res,
-                           sl_diag *d);
+/* The variants of model = two_fluid: the 1-D column (two_fluid.c), the 2-D
+ * model (two_fluid_plane.c, geometry = planar | axisymmetric), the shear
+ * layer (shear_layer.c, motion = shear). */
+extern const sl_schema sl_two_fluid_column_schema, sl_two_fluid_plane_schema, sl_two_fluid_shear_schema;
+extern const sl_model_ops sl_two_fluid_column_ops, sl_two_fluid_plane_ops, sl_two_fluid_shear_ops;
 
 #endif

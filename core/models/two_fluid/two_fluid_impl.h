@@ -1,15 +1,33 @@
-/* Internals of the 1-D two-fluid model shared by two_fluid.c (scene set-up,
- * time loop, output) and two_fluid_step.c (one implicit step). */
+/* Internals of the two-fluid model shared by its variants: the 1-D column
+ * (two_fluid.c, one step in two_fluid_step.c), the 2-D model
+ * (two_fluid_plane*.c) and the shear layer (shear_layer.c); their schemas
+ * (schema.c) and configuration. */
 #ifndef SLUICE_MODELS_TWO_FLUID_IMPL_H
 #define SLUICE_MODELS_TWO_FLUID_IMPL_H
 
 #include "core/config/expr.h"
-#include "core/config/ini.h"
 #include "core/io/output.h"
-#include "core/models/navier_stokes/navier_stokes.h"
-#include "core/plugin/registry.h"
 #include "core/plugin/instance.h"
+#include "core/scene/scene.h"
+#include "core/time/model.h"
 #include "core/util/diag.h"
+
+/* The keys of the [two_fluid] section and [initial] (each variant reads its part). */
+typedef struct tf_config {
+  long iterations, order, case_index;
+  double tolerance, cfl, steady_tolerance, diffusivity;
+  int limiter, motion, cross_section, granular_temperature, interphase_dissipation, acceleration, kinetic_pressure;
+  sl_scene_expr phi, porosity, theta;            /* [initial]: the column and the 2-D model (x, y, case) */
+  sl_scene_exprs velocity_fluid, velocity_solid; /* [initial]: the 2-D model (two components) */
+  sl_scene_expr sh_phi, sh_theta, sh_uf, sh_us;  /* [initial]: the shear layer (of x) */
+} tf_config;
+
+/* A boundary of the 1-D column. */
+typedef struct tfc_boundary {
+  int type;                        /* TF_WALL | TF_INLET | TF_OUTLET */
+  sl_scene_expr velocity, porosity; /* inlet: of (t, case) */
+  double pressure;                 /* outlet */
+} tfc_boundary;
 
 enum { TF_MAX_IN = 32 };
 enum { TF_WALL = 0, TF_INLET = 1, TF_OUTLET = 2 };
@@ -33,11 +51,11 @@ typedef struct tf_column {
   /* physics */
   double rho_f, mu_f, rho_s, d_p, sphericity, g, phi_max;
   double v_ref; /* velocity scale: |j| or the Stokes velocity */
-  tf_closure drag, ps; /* ps.c NULL: no solids pressure */
+  tf_closure drag, ps; /* the scene's closures (not owned); ps.c NULL: no solids pressure */
   /* boundaries: [0] at x0, [1] at x1 */
   int bc[2];
-  sl_expr *inlet;          /* superficial fluid velocity entering, of (t, case) */
-  sl_expr *inlet_porosity; /* or the porosity of a bed the inflow holds in equilibrium, of (t, case) */
+  const sl_expr *inlet;          /* superficial fluid velocity entering, of (t, case) (the scene's) */
+  const sl_expr *inlet_porosity; /* or the porosity of a bed the inflow holds in equilibrium, of (t, case) */
   int inlet_side;
   double case_index;       /* [two_fluid] case, a variable of the scene's expressions */
   double eq_porosity[2], eq_velocity[2]; /* the last two equilibria found (a step alternates between two) */
@@ -83,38 +101,30 @@ int tf_step(tf_column *c, double t, double dt, sl_diag *d);
 int tf_transport(tf_column *c, const double *phi0, const double *u, double dt, double *phi, long *substeps,
                  double *outflow, sl_diag *d);
 
-/* Reads the scene's physics into c (two_fluid_scene.c): [fluid], [solid],
- * [flow] gravity (dim components; 2-D: into gravity[], default (0, -9.81),
- * and c->g = -|g|), the [two_fluid] numerical keys, and binds
- * [closure.drag] and the optional [closure.solids_pressure] to the model's
- * inputs. 0 or SL_EBADINPUT with file:line. */
-int tf_scene_physics(sl_ini *ini, const sl_registry *reg, int dim, tf_column *c, double gravity[2],
+/* The scene's physics into c (two_fluid_scene.c): [fluid], [solid], [flow]
+ * gravity (dim components; 2-D: into gravity[], default (0, -9.81), and
+ * c->g = -|g|), the [two_fluid] numerical keys, and [closure.drag] and the
+ * optional [closure.solids_pressure] bound to the model's inputs. 0 or
+ * SL_EBADINPUT with file:line. */
+int tf_scene_physics(const sl_scene *sc, const tf_config *cfg, int dim, tf_column *c, double gravity[2],
                      double *steady_tol, sl_diag *d);
 
 /* A run's state as its checkpoint holds it: phi and p in n_cells cells, the
- * solids and fluid velocities on n_faces faces, the solids bookkeeping and
- * the count of rejected steps (two_fluid_io.c). */
+ * solids and fluid velocities on n_faces faces, and the solids bookkeeping
+ * (two_fluid_io.c). */
 typedef struct tf_state {
   double *phi, *us, *uf, *p;
   double *theta; /* [n_cells] a transported granular temperature, or NULL */
   int64_t n_cells, n_faces;
   double inventory0, outflow;
-  long rejected;
+  double book[2]; /* inventory0 and outflow as checkpointed */
 } tf_state;
 
-int tf_checkpoint_write(sl_output *out, const tf_state *s, double t, double dt, long step, sl_diag *d);
-/* Reads a checkpoint into s's arrays (their lengths must match: SL_EBADINPUT
+/* The state's arrays for a checkpoint (their count, at most max). */
+int tf_checkpoint_arrays(tf_state *s, sl_checkpoint_array *a, int max);
+/* From a checkpoint into s's arrays (their lengths must match: SL_EBADINPUT
  * naming the array and the model otherwise) and its bookkeeping. */
-int tf_checkpoint_restore(const char *path, const char *model, tf_state *s, double *t, double *dt, long *step,
-                          sl_diag *d);
-/* The scene, the drag and solids-pressure closures and up to
- * TF_MAX_EXTRA_CLOSURES more with their roles (NULL entries skipped);
- * params[2 + n_extra]: their parameter text, kept alive until the output
- * closes. */
-enum { TF_MAX_EXTRA_CLOSURES = 3 };
-int tf_write_provenance(sl_output *out, const sl_ini *ini, const sl_ns_run_opts *o, const tf_column *c,
-                        const sl_closure *const *extra, const char *const *extra_roles, int n_extra,
-                        char params[][1024], sl_diag *d);
+int tf_checkpoint_restore(const sl_checkpoint *ck, const char *model, tf_state *s, sl_diag *d);
 
 /* K and dK/dslip at n faces (phi, slip given); p_s and dp_s/dphi at n cells. */
 int tf_closure_eval(tf_closure *b, int n, const double *phi, const double *slip, double *value, double *dvalue,

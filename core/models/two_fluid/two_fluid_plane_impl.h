@@ -34,10 +34,10 @@ enum { TFP_SOLIDS_NO_SLIP = 0, TFP_SOLIDS_FREE_SLIP, TFP_SOLIDS_WALL_STRESS };
 
 typedef struct tfp_boundary {
   int type;
-  int solids;        /* wall: TFP_SOLIDS_* */
-  sl_expr *velocity; /* inlet: superficial fluid velocity entering; wall: its own speed along the side (+x along
-                        the bottom and top, +y along the left and right); of (x, y, t, case) (NULL: 0) */
-  double pressure;   /* outlet */
+  int solids;             /* wall: TFP_SOLIDS_* */
+  sl_scene_expr velocity; /* inlet: superficial fluid velocity entering; wall: its own speed along the side (+x along
+                             the bottom and top, +y along the left and right); of (x, y, t, case) (e NULL: 0) */
+  double pressure;        /* outlet */
 } tfp_boundary;
 
 /* The quantities the 2-D model offers its solids-stress closures, by input name. */
@@ -49,7 +49,7 @@ enum { TFP_Q_PHI, TFP_Q_SLIP, TFP_Q_THETA, TFP_Q_RHO_F, TFP_Q_MU_F, TFP_Q_RHO_S,
  * (with the granular temperature theta in the cells), and the wall stress
  * of [closure.wall_stress]. */
 typedef struct tfp_solids {
-  sl_closure *visc_c, *gran_c, *wall_c; /* NULL: not in the scene */
+  sl_closure *visc_c, *gran_c, *wall_c; /* the scene's (not owned); NULL: not in the scene */
   sl_point_closure visc, gran, wall;
   int granular, algebraic, exchange, wall_function;
   int kinetic_pressure; /* the granular closure's p_s joins the solids pressure */
@@ -168,9 +168,9 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d);
 int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double *outflow, sl_diag *d);
 
 /* The solids stress closures of the scene bound, the keys read
- * ([two_fluid] granular_temperature, interphase_dissipation); after
- * tfp_setup. 0, SL_EBADINPUT or SL_EFAILED. */
-int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *d);
+ * ([two_fluid] granular_temperature, interphase_dissipation, kinetic_pressure,
+ * acceleration); after tfp_setup. 0, SL_EBADINPUT or SL_EFAILED. */
+int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_diag *d);
 void tfp_solids_free(tfp_solids *s);
 
 /* The solids viscosity of every cell at the iterate (us, phi, theta_new),

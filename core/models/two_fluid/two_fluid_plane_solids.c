@@ -48,7 +48,6 @@
 #include <string.h>
 
 #include "core/models/two_fluid/two_fluid_plane_impl.h"
-#include "core/plugin/closure_ini.h"
 #include "core/solve/linsolve.h"
 
 static const char *const quantity_names[TFP_Q_N] = {"phi",        "slip",          "theta",      "rho_f",
@@ -66,15 +65,12 @@ void tfp_solids_free(tfp_solids *s) {
   sl_linsolve_destroy(s->th_ls);
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   for (int k = 0; k < TFP_Q_N; ++k) free(s->qv[k]);
-  sl_closure_destroy(s->visc_c);
-  sl_closure_destroy(s->gran_c);
-  sl_closure_destroy(s->wall_c);
   free(s->visc.buf), free(s->gran.buf), free(s->wall.buf);
 }
 
 /* The kinetic scaling the algebraic theta relies on: mu_s ~ sqrt(theta),
  * gamma ~ theta^1.5 (and p_s ~ theta, when it is used) at fixed phi. */
-static int check_kinetic_scaling(tfp_model *m, sl_ini *ini, sl_diag *d) {
+static int check_kinetic_scaling(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_diag *d) {
   tfp_solids *s = &m->s;
   double th[2] = {1.0, 4.0}, ph[2], mu[2], g[2], one[TFP_Q_N];
   ph[0] = ph[1] = fmin(0.5 * m->c.phi_max, 0.3);
@@ -88,7 +84,7 @@ static int check_kinetic_scaling(tfp_model *m, sl_ini *ini, sl_diag *d) {
   int rc = sl_point_eval(&s->gran, 2, v, rq, s->kinetic_pressure ? 3 : 2, d);
   if (rc) return rc;
   if (fabs(mu[1] / mu[0] - 2.0) > 1e-9 || fabs(g[1] / g[0] - 8.0) > 1e-9 || fabs(ps[1] / ps[0] - 4.0) > 1e-9) {
-    const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", "granular_temperature");
+    const sl_src *e = sl_scene_src(sc, &cfg->granular_temperature);
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature = algebraic needs a kinetic closure "
                                         "(mu_s ~ theta^0.5, gamma ~ theta^1.5%s); [closure.granular] is not one",
                        e ? e->file : "", e ? e->line : 0, s->kinetic_pressure ? ", p_s ~ theta" : "");
@@ -96,7 +92,7 @@ static int check_kinetic_scaling(tfp_model *m, sl_ini *ini, sl_diag *d) {
   return 0;
 }
 
-int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *d) {
+int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_diag *d) {
   tfp_solids *s = &m->s;
   const size_t nc = (size_t)m->nc, nk = (size_t)(m->nx + 1) * (size_t)(m->ny + 1); /* nk > nc */
   double **a[] = {&s->mu,    &s->mu_t,  &s->gdot,  &s->rho,   &s->Kc,    &s->theta,   &s->theta_new,
@@ -112,26 +108,24 @@ int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *
     s->qv[TFP_Q_D_P][c] = m->c.d_p, s->qv[TFP_Q_SPHERICITY][c] = m->c.sphericity;
     s->qv[TFP_Q_GRAVITY][c] = fabs(m->c.g), s->one[c] = 1.0;
   }
-  int rc = sl_ini_get_real(ini, "solid", "viscosity", 0, 0.0, 0.0, 1e7, &s->mu_const, d);
-  if (rc) return rc;
+  s->mu_const = sc->solid.viscosity;
+  int rc = 0;
+  char at[400];
   const char *model = "the 2-D two_fluid model";
-  if (sl_ini_find_section(ini, "closure.viscosity")) {
-    if ((rc = sl_closure_from_ini(reg, ini, "closure.viscosity", &s->visc_c, d))) return rc;
+  if ((s->visc_c = sl_scene_closure(sc, "viscosity"))) {
     if ((rc = sl_point_bind(&s->visc, s->visc_c, quantity_names, TFP_Q_N, "closure.viscosity", model, d))) return rc;
     if (!sl_point_has_output(&s->visc, "viscosity"))
       return sl_diag_set(d, SL_EBADINPUT, "[closure.viscosity]: the closure gives no viscosity");
   }
-  s->granular = sl_ini_find_section(ini, "closure.granular") != NULL;
-  const sl_ini_entry *gt = sl_ini_find(ini, "two_fluid", "granular_temperature");
+  s->gran_c = sl_scene_closure(sc, "granular");
+  s->granular = s->gran_c != NULL;
+  const sl_src *gt = sl_scene_src(sc, &cfg->granular_temperature);
   if (!s->granular && gt)
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature: needs [closure.granular] (a "
                                         "kinetic theory, e.g. model = lun)", gt->file, gt->line);
   if (s->granular) {
-    if ((rc = sl_ini_get_choice(ini, "two_fluid", "granular_temperature", 0, 1, "transport|algebraic", &s->algebraic,
-                                d)))
-      return rc;
-    if ((rc = sl_ini_get_bool(ini, "two_fluid", "interphase_dissipation", 0, 1, &s->exchange, d))) return rc;
-    if ((rc = sl_closure_from_ini(reg, ini, "closure.granular", &s->gran_c, d))) return rc;
+    s->algebraic = cfg->granular_temperature;
+    s->exchange = cfg->interphase_dissipation;
     if ((rc = sl_point_bind(&s->gran, s->gran_c, quantity_names, TFP_Q_N, "closure.granular", model, d))) return rc;
     static const char *const need[] = {"mu_s", "gamma", "kappa"};
     for (int k = 0; k < (s->algebraic ? 2 : 3); ++k)
@@ -143,32 +137,23 @@ int tfp_solids_bind(tfp_model *m, sl_ini *ini, const sl_registry *reg, sl_diag *
        at once, as (gdot d)^2, and from an impulsive start (kinetic_shear, bagnold_shear) its pressure in the
        walls' cells kept the iteration from converging at any time step */
     int has_ps = sl_point_has_output(&s->gran, "p_s");
-    if ((rc = sl_ini_get_bool(ini, "two_fluid", "kinetic_pressure", 0, has_ps && !s->algebraic, &s->kinetic_pressure,
-                              d)))
-      return rc;
-    if (s->kinetic_pressure && !has_ps) {
-      const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", "kinetic_pressure");
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] kinetic_pressure = true: [closure.granular] gives no p_s",
-                         e->file, e->line);
-    }
-    if (s->algebraic && (rc = check_kinetic_scaling(m, ini, d))) return rc;
+    s->kinetic_pressure = sl_scene_given(sc, &cfg->kinetic_pressure) ? cfg->kinetic_pressure : has_ps && !s->algebraic;
+    if (s->kinetic_pressure && !has_ps)
+      return sl_diag_set(d, SL_EBADINPUT, "%s = true: [closure.granular] gives no p_s",
+                         sl_scene_where(sc, &cfg->kinetic_pressure, at, sizeof at));
+    if (s->algebraic && (rc = check_kinetic_scaling(m, sc, cfg, d))) return rc;
   } else {
-    static const char *const keys[] = {"interphase_dissipation", "kinetic_pressure"};
-    for (int k = 0; k < 2; ++k) {
-      const sl_ini_entry *e = sl_ini_find(ini, "two_fluid", keys[k]);
-      if (e)
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: needs [closure.granular]", e->file, e->line,
-                           keys[k]);
-    }
+    const void *keys[] = {&cfg->interphase_dissipation, &cfg->kinetic_pressure};
+    for (int k = 0; k < 2; ++k)
+      if (sl_scene_given(sc, keys[k]))
+        return sl_diag_set(d, SL_EBADINPUT, "%s: needs [closure.granular]", sl_scene_where(sc, keys[k], at, sizeof at));
   }
   /* Anderson acceleration: the default with a kinetic theory (see tfp_step) */
-  if ((rc = sl_ini_get_choice(ini, "two_fluid", "acceleration", 0, s->granular, "none|anderson", &m->accelerate, d)))
-    return rc;
+  m->accelerate = sl_scene_given(sc, &cfg->acceleration) ? cfg->acceleration : s->granular;
   int any_stress = 0;
   for (int f = 0; f < 2 * m->nf; ++f)
     any_stress |= m->end_wall[f] >= 0 && m->b[m->end_wall[f]].solids == TFP_SOLIDS_WALL_STRESS;
-  if (sl_ini_find_section(ini, "closure.wall_stress")) {
-    if ((rc = sl_closure_from_ini(reg, ini, "closure.wall_stress", &s->wall_c, d))) return rc;
+  if ((s->wall_c = sl_scene_closure(sc, "wall_stress"))) {
     if ((rc = sl_point_bind(&s->wall, s->wall_c, quantity_names, TFP_Q_N, "closure.wall_stress", model, d))) return rc;
     if (!sl_point_has_output(&s->wall, "tau_w"))
       return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: the closure gives no tau_w");

@@ -191,7 +191,7 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
       double x = dir == 0 ? xf[f % (m->nx + 1)] : xf[end ? m->nx : 0];
       double y = dir == 0 ? yf[end ? m->ny : 0] : yf[(f - m->nfx) / m->nx];
       double v[4] = {x, y, t, m->c.case_index};
-      double U = m->b[b].velocity ? sl_expr_eval(m->b[b].velocity, v) : 0.0;
+      double U = m->b[b].velocity.e ? sl_expr_eval(m->b[b].velocity.e, v) : 0.0;
       if (!isfinite(U))
         return sl_diag_set(d, SL_EFAILED, "a wall's velocity is not a finite number (%g) at (%g, %g), t = %g", U, x,
                            y, t);
@@ -204,7 +204,7 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
     double x = dir == 0 ? xf[f % (m->nx + 1)] : m->xc[(f - m->nfx) % m->nx];
     double y = dir == 0 ? m->yc[f / (m->nx + 1)] : yf[(f - m->nfx) / m->nx];
     double v[4] = {x, y, t, m->c.case_index};
-    double U = sl_expr_eval(m->b[m->fbound[f]].velocity, v);
+    double U = sl_expr_eval(m->b[m->fbound[f]].velocity.e, v);
     if (!isfinite(U))
       return sl_diag_set(d, SL_EFAILED, "the inlet velocity is not a finite number (%g) at (%g, %g), t = %g", U, x, y,
                          t);

@@ -1,0 +1,771 @@
+/* The flow of a scene (flow.h): physics, boundary conditions, solves with
+ * continuation, output and checkpoint of the Taylor-Hood flow. */
+#include "core/models/navier_stokes/flow.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "core/fe/field.h"
+#include "core/plugin/kinds.h"
+#include "core/scene/solver.h"
+
+static double cpu(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+enum { MAX_COMP = 3 };
+
+const char *const sl_flow_field_names[SL_FLOW_N_FIELDS] = {"velocity", "pressure", "shear_rate", "viscosity",
+                                                           "yielded"};
+enum { F_VELOCITY = 1, F_PRESSURE = 2, F_SHEAR = 4, F_VISCOSITY = 8, F_YIELDED = 16 };
+
+/* ---- physics: fluid properties, the viscosity closure, forces ------------ */
+
+typedef struct physics {
+  int n_comp, dim, axisymmetric;
+  double density, viscosity;
+  sl_closure *visc; /* NULL: Newtonian (the scene's) */
+  int in_shear, in_other[8], n_other;
+  double other_value[8];
+  int out_visc, has_dmu;
+  double yield_stress; /* for `yielded`; 0 when the law has none */
+  double *buf;         /* closure inputs/outputs for one batch */
+  int cap;
+  double gravity[MAX_COMP], body_force[MAX_COMP];
+  int has_force;
+  int riding;                /* a solids fraction rides on the flow: variable density, buoyancy, phi input */
+  const sl_flow_rider *rider;
+  int in_phi, in_density;    /* viscosity inputs fed per point (-1: absent) */
+} physics;
+
+static void physics_free(physics *ph) {
+  free(ph->buf);
+  memset(ph, 0, sizeof *ph);
+}
+
+/* Viscosity through the closure, once per batch; mu and d mu / d gamma. */
+static int viscosity_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
+  physics *ph = user;
+  int n_in = ph->visc->desc->n_in, n_out = ph->visc->desc->n_out;
+  int need = b->n * (n_in + n_out + n_in + 1);
+  if (need > ph->cap) {
+    double *nb = realloc(ph->buf, (size_t)need * sizeof *nb);
+    if (!nb) return sl_diag_set(d, SL_EFAILED, "viscosity: out of memory");
+    ph->buf = nb, ph->cap = need;
+  }
+  const double *in[16];
+  double *outs[16], *dout[16 * 16];
+  double *w = ph->buf;
+  const double *phi = ph->riding ? ph->rider->phi : NULL;
+  for (int i = 0; i < n_in; ++i) {
+    if (i == ph->in_shear) {
+      in[i] = b->shear_rate;
+      continue;
+    }
+    if (phi && (i == ph->in_phi || i == ph->in_density)) {
+      for (int q = 0; q < b->n; ++q) {
+        double f = phi[b->cell[q]];
+        w[q] = i == ph->in_phi ? f : ph->density + f * (ph->rider->rho_solid - ph->density);
+      }
+      in[i] = w, w += b->n;
+      continue;
+    }
+    for (int k = 0; k < ph->n_other; ++k)
+      if (ph->in_other[k] == i)
+        for (int q = 0; q < b->n; ++q) w[q] = ph->other_value[k];
+    in[i] = w, w += b->n;
+  }
+  for (int k = 0; k < n_out; ++k) outs[k] = w, w += b->n;
+  for (int k = 0; k < n_out * n_in; ++k) dout[k] = NULL;
+  if (ph->has_dmu) dout[ph->out_visc * n_in + ph->in_shear] = w, w += b->n;
+  for (int i = 0; i < n_in; ++i) /* the ABI asks a slot for every differentiable input once one is asked */
+    if (ph->has_dmu && i != ph->in_shear && (ph->visc->desc->in[i].flags & SL_FIELD_DIFF))
+      dout[ph->out_visc * n_in + i] = w, w += b->n;
+  sl_error err;
+  sl_eval_args a = {.Q = b->n, .in = in, .out = outs, .dout = dout, .err = &err};
+  int rc = sl_closure_evaluate(ph->visc, &a);
+  if (rc) {
+    char label[128];
+    sl_closure_label(ph->visc->desc, label, sizeof label);
+    int q = err.point >= 0 && err.point < b->n ? err.point : 0;
+    char extra[64] = "";
+    if (phi) snprintf(extra, sizeof extra, ", phi %g", phi[b->cell[q]]);
+    return sl_diag_set(d, SL_EFAILED, "closure %s %s at (%g, %g) in cell %d (shear rate %g%s): %s", label,
+                       rc > 0 ? "outside its validity" : "failed", b->x[q][0], b->x[q][1], (int)b->cell[q],
+                       b->shear_rate[q], extra, err.msg);
+  }
+  const double *mu = outs[ph->out_visc], *dmu = ph->has_dmu ? dout[ph->out_visc * n_in + ph->in_shear] : NULL;
+  for (int q = 0; q < b->n; ++q) out[2 * q] = mu[q], out[2 * q + 1] = dmu ? dmu[q] : 0.0;
+  return 0;
+}
+
+/* Gravity and the body force. With a solids fraction only the excess
+ * density (rho - rho_f) = phi (rho_s - rho_f) is buoyant: rho_f g goes into
+ * the (reduced) pressure. */
+static int force_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
+  const physics *ph = user;
+  (void)d;
+  const double *phi = ph->riding ? ph->rider->phi : NULL;
+  for (int q = 0; q < b->n; ++q) {
+    double rho = phi ? phi[b->cell[q]] * (ph->rider->rho_solid - ph->density) : ph->density;
+    for (int c = 0; c < ph->n_comp; ++c) out[q * ph->n_comp + c] = rho * ph->gravity[c] + ph->body_force[c];
+  }
+  return 0;
+}
+
+/* The mixture density rho_f + phi (rho_s - rho_f) (Nigam 1999 eq 2.1). */
+static int density_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
+  const physics *ph = user;
+  (void)d;
+  const double *phi = ph->rider->phi;
+  for (int q = 0; q < b->n; ++q) out[q] = ph->density + phi[b->cell[q]] * (ph->rider->rho_solid - ph->density);
+  return 0;
+}
+
+/* A vector key of the scene into n_comp components (more given is an error). */
+static int vec_get(const sl_scene *sc, const sl_reals *r, int n_comp, double *v, sl_diag *d) {
+  if (r->n > n_comp) {
+    char at[400];
+    return sl_diag_set(d, SL_EBADINPUT, "%s: %d components given, the scene has %d velocity components",
+                       sl_scene_where(sc, r, at, sizeof at), r->n, n_comp);
+  }
+  for (int c = 0; c < MAX_COMP; ++c) v[c] = c < r->n ? r->v[c] : 0.0;
+  return 0;
+}
+
+static int physics_setup(const sl_scene *sc, int n_comp, int dim, int axi, int riding, double rho_solid, physics *ph,
+                         sl_diag *d) {
+  memset(ph, 0, sizeof *ph);
+  ph->n_comp = n_comp, ph->dim = dim, ph->axisymmetric = axi, ph->riding = riding;
+  ph->in_phi = ph->in_density = -1;
+  ph->density = sc->fluid.density, ph->viscosity = sc->fluid.viscosity;
+  int rc = vec_get(sc, &sc->flow.gravity, n_comp, ph->gravity, d);
+  if (!rc) rc = vec_get(sc, &sc->flow.body_force, n_comp, ph->body_force, d);
+  if (rc) return rc;
+  for (int c = 0; c < MAX_COMP; ++c) ph->has_force |= ph->gravity[c] != 0.0 || ph->body_force[c] != 0.0;
+  if (riding && rho_solid == ph->density) { /* neutrally buoyant: gravity acts on nothing */
+    ph->has_force = 0;
+    for (int c = 0; c < MAX_COMP; ++c) ph->has_force |= ph->body_force[c] != 0.0;
+  }
+  if (!(ph->visc = sl_scene_closure(sc, "viscosity"))) return 0;
+  const sl_closure_desc *c = ph->visc->desc;
+  char label[128], where[300];
+  sl_closure_label(c, label, sizeof label);
+  sl_scene_closure_where(sc, "viscosity", where, sizeof where);
+  ph->in_shear = sl_closure_input(c, "shear_rate");
+  ph->out_visc = sl_closure_output(c, "viscosity");
+  if (riding) {
+    ph->in_phi = sl_closure_input(c, "phi");
+    ph->in_density = sl_closure_input(c, "density");
+  }
+  if (ph->out_visc < 0 || (ph->in_shear < 0 && ph->in_phi < 0 && ph->in_density < 0) || c->n_in > 16 ||
+      c->n_out > 16)
+    return sl_diag_set(d, SL_EBADINPUT, "%s %s does not map a shear rate%s to a viscosity", where, label,
+                       riding ? " or a solids fraction" : "");
+  for (int i = 0; i < c->n_in; ++i) {
+    if (i == ph->in_shear || i == ph->in_phi || i == ph->in_density) continue;
+    const char *name = c->in[i].name;
+    double v;
+    if (strcmp(name, "mu_f") == 0) v = ph->viscosity;
+    else if (strcmp(name, "rho_f") == 0 || (!riding && strcmp(name, "density") == 0)) v = ph->density;
+    else
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "%s %s needs the input '%s', which the %s model does not provide (it provides shear_rate, "
+                         "mu_f, rho_f%s)",
+                         where, label, name, riding ? "mixture" : "navier_stokes", riding ? ", phi, density" : "");
+    if (ph->n_other == 8) return sl_diag_set(d, SL_EBADINPUT, "%s: too many inputs", label);
+    ph->in_other[ph->n_other] = i, ph->other_value[ph->n_other++] = v;
+  }
+  ph->has_dmu = ph->in_shear >= 0 && (c->in[ph->in_shear].flags & SL_FIELD_DIFF) != 0;
+  int k = sl_params_find(c, "yield_stress");
+  if (k >= 0) {
+    char buf[64];
+    sl_params_format_value(c, ph->visc->params, k, buf, sizeof buf);
+    sl_parse_real(buf, &ph->yield_stress);
+  }
+  return 0;
+}
+
+static void physics_opts(physics *ph, sl_flow_opts *o) {
+  o->axisymmetric = ph->axisymmetric;
+  o->density = ph->riding && ph->rider && ph->rider->rho_solid != ph->density ? (sl_coef){density_fn, ph, 0.0}
+                                                                              : (sl_coef){NULL, NULL, ph->density};
+  o->viscosity = ph->visc ? viscosity_fn : NULL;
+  o->viscosity_user = ph;
+  o->viscosity_value = ph->viscosity;
+  o->body_force = ph->has_force ? force_fn : NULL;
+  o->body_force_user = ph;
+  o->extra_stress = ph->riding && ph->rider ? ph->rider->extra_stress : NULL;
+}
+
+/* ---- boundary conditions ------------------------------------------------- */
+
+typedef struct bc {
+  const char *name; /* the mesh's boundary name */
+  const ns_boundary *in;
+  int type;
+  int slip_comp;             /* the velocity component normal to a slip boundary */
+  double traction[MAX_COMP]; /* traction; or -p n for pressure (p in traction[0]) */
+  int n_comp;
+} bc;
+
+typedef struct bc_set {
+  int n;
+  bc *b;
+  int time_dependent;
+  int has_natural; /* an open, pressure or traction boundary: no pressure datum */
+  int n_pairs;     /* periodic pairs (boundary, partner), each once */
+  sl_periodic_pair *pairs;
+  unsigned char *open; /* [n]: the velocity is free there */
+} bc_set;
+
+static void bc_set_free(bc_set *s) {
+  free(s->b);
+  free(s->pairs);
+  free(s->open);
+  memset(s, 0, sizeof *s);
+}
+
+/* The component normal to an axis-aligned boundary, or -1. */
+static int aligned_normal(const sl_mesh *m, int id) {
+  int comp = -1;
+  for (int k = m->bface_start[id]; k < m->bface_start[id + 1]; ++k) {
+    double n[2];
+    sl_mesh_face_normal(m, m->bface[k], n);
+    int c = fabs(n[0]) > 1.0 - 1e-10 ? 0 : fabs(n[1]) > 1.0 - 1e-10 ? 1 : -1;
+    if (c < 0 || (comp >= 0 && c != comp)) return -1;
+    comp = c;
+  }
+  return comp;
+}
+
+static int expr_uses_t(const sl_scene_exprs *v) {
+  for (int i = 0; i < v->n; ++i)
+    if (sl_expr_uses(v->e[i], 2)) return 1;
+  return 0;
+}
+
+static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag *d) {
+  const sl_mesh *m = sc->mesh;
+  memset(s, 0, sizeof *s);
+  s->b = calloc((size_t)m->n_boundaries + 1, sizeof *s->b);
+  s->pairs = calloc((size_t)m->n_boundaries + 1, sizeof *s->pairs);
+  s->open = calloc((size_t)m->n_boundaries + 1, 1);
+  if (!s->b || !s->pairs || !s->open) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  s->n = m->n_boundaries;
+  for (int i = 0; i < s->n; ++i) {
+    bc *b = &s->b[i];
+    b->name = m->boundary_names[i], b->in = sl_scene_boundary(sc, i), b->type = NS_WALL, b->n_comp = n_comp;
+  }
+  for (int k = 0; k < s->n; ++k) { /* in the file's order: the first of a periodic pair to name the other leads */
+    int id = sc->boundary_order[k];
+    const sl_src *sec = sl_scene_boundary_section(sc, id);
+    if (!sec) continue;
+    bc *b = &s->b[id];
+    const ns_boundary *in = b->in;
+    const char *name = b->name;
+    char at[400];
+    b->type = in->type;
+    if (b->type == NS_VELOCITY) {
+      if (in->velocity.n == 0)
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] type = velocity needs velocity = <%d expressions of x, y, t>",
+                           sec->file, sec->line, sec->section, n_comp);
+      if (in->velocity.n > n_comp)
+        return sl_diag_set(d, SL_EBADINPUT, "%s: %d components given, the scene has %d velocity components",
+                           sl_scene_where(sc, &in->velocity, at, sizeof at), in->velocity.n, n_comp);
+      s->time_dependent |= expr_uses_t(&in->velocity);
+    } else if (b->type == NS_SLIP) {
+      if ((b->slip_comp = aligned_normal(m, id)) < 0)
+        return sl_diag_set(d, SL_EBADINPUT,
+                           "%s:%d: [%s] type = slip needs a straight boundary along x or y; '%s' is not (use a "
+                           "velocity condition or realign the mesh)",
+                           sec->file, sec->line, sec->section, name);
+    } else if (b->type == NS_AXIS) {
+      if (!axi || aligned_normal(m, id) != 0)
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] type = axis needs an axisymmetric scene and a boundary at r = 0",
+                           sec->file, sec->line, sec->section);
+      for (int f = m->bface_start[id]; f < m->bface_start[id + 1]; ++f) {
+        double c[2];
+        sl_mesh_face_centroid(m, m->bface[f], c);
+        if (fabs(c[0]) > 1e-12)
+          return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] type = axis: the boundary lies at r = %g, not on the axis",
+                             sec->file, sec->line, sec->section, c[0]);
+      }
+    } else if (b->type == NS_PRESSURE) {
+      int rc = sl_scene_require(sc, &in->pressure, d);
+      if (rc) return rc;
+      b->traction[0] = in->pressure;
+      s->has_natural = 1;
+    } else if (b->type == NS_TRACTION) {
+      int rc = vec_get(sc, &in->traction, n_comp, b->traction, d);
+      if (rc) return rc;
+      s->has_natural = 1;
+    } else if (b->type == NS_OPEN) {
+      s->has_natural = 1;
+    } else if (b->type == NS_PERIODIC) {
+      /* the partner is the same boundary translated: its dofs become this boundary's */
+      const char *partner = in->partner ? in->partner : "";
+      int pid;
+      if (!*partner) continue; /* the partner side of a pair named elsewhere: checked below */
+      int rc = sl_mesh_boundary_id(m, partner, &pid, d);
+      if (rc) return sl_diag_prefix(d, rc, "%s:%d: [%s] partner", sec->file, sec->line, sec->section);
+      if (pid == id)
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] partner: a boundary cannot be its own partner", sec->file,
+                           sec->line, sec->section);
+      sl_mesh_periodic pm;
+      if ((rc = sl_mesh_periodic_match(m, name, partner, &pm, d)))
+        return sl_diag_prefix(d, rc, "%s:%d: [%s] type = periodic", sec->file, sec->line, sec->section);
+      double shift_r = pm.shift[0];
+      sl_mesh_periodic_free(&pm);
+      if (axi && fabs(shift_r) > 0.0)
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] type = periodic: an axisymmetric scene repeats along z only, "
+                                            "and '%s' is '%s' moved by %g in r", sec->file, sec->line, sec->section,
+                           partner, name, shift_r);
+      s->pairs[s->n_pairs++] = (sl_periodic_pair){m->boundary_names[id], m->boundary_names[pid]};
+    }
+  }
+  /* every periodic boundary belongs to exactly one pair; the partner of a pair is periodic too */
+  for (int k = 0; k < s->n_pairs; ++k) {
+    int pid = -1;
+    sl_diag quiet;
+    if (sl_mesh_boundary_id(m, s->pairs[k].partner, &pid, &quiet)) pid = -1;
+    for (int j = 0; j < k; ++j)
+      if (s->pairs[j].boundary == s->pairs[k].partner && s->pairs[j].partner == s->pairs[k].boundary) {
+        s->pairs[k--] = s->pairs[--s->n_pairs]; /* written on both sides: keep one */
+        pid = -1;
+        break;
+      }
+    if (pid < 0) continue;
+    const sl_src *ps = sl_scene_boundary_section(sc, pid);
+    if (ps && s->b[pid].type != NS_PERIODIC)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] is the periodic partner of '%s' and cannot have another type",
+                         ps->file, ps->line, ps->section, s->pairs[k].boundary);
+    s->b[pid].type = NS_PERIODIC;
+  }
+  for (int i = 0; i < s->n; ++i) {
+    if (s->b[i].type != NS_PERIODIC) continue;
+    int paired = 0;
+    for (int k = 0; k < s->n_pairs; ++k)
+      paired |= strcmp(s->pairs[k].boundary, s->b[i].name) == 0 || strcmp(s->pairs[k].partner, s->b[i].name) == 0;
+    if (!paired)
+      return sl_diag_set(d, SL_EBADINPUT, "[boundary.%s] type = periodic needs partner = <the matching boundary>",
+                         s->b[i].name);
+  }
+  /* Unnamed boundaries of an axisymmetric mesh called "axis" are the axis. */
+  for (int i = 0; i < s->n && axi; ++i)
+    if (strcmp(s->b[i].name, "axis") == 0 && !sl_scene_boundary_section(sc, i)) s->b[i].type = NS_AXIS;
+  for (int i = 0; i < s->n; ++i) {
+    int ty = s->b[i].type;
+    s->open[i] = ty == NS_OPEN || ty == NS_PRESSURE || ty == NS_TRACTION;
+  }
+  return 0;
+}
+
+typedef struct bc_eval {
+  const sl_expr *e;
+  double t;
+} bc_eval;
+
+static void bc_value(void *user, const double x[2], double *v, double g[2]) {
+  const bc_eval *b = user;
+  double vals[3] = {x[0], x[1], b->t};
+  *v = sl_expr_eval(b->e, vals);
+  if (g) g[0] = g[1] = 0.0;
+}
+
+/* Fixes the Dirichlet dofs at time t: slip and axis first, then prescribed
+ * velocities, then walls, so that walls win shared corners. */
+static int bc_apply(const bc_set *s, const sl_th_space *th, sl_constraints *con, double t, int datum, sl_diag *d) {
+  int rc = 0;
+  for (int pass = 0; pass < 3 && !rc; ++pass)
+    for (int i = 0; i < s->n && !rc; ++i) {
+      const bc *b = &s->b[i];
+      if (pass == 0 && b->type == NS_SLIP)
+        rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, b->slip_comp, 0), NULL, NULL, 0.0, d);
+      if (pass == 0 && b->type == NS_AXIS) {
+        rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, 0, 0), NULL, NULL, 0.0, d);
+        if (!rc && th->n_comp == 3)
+          rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, 2, 0), NULL, NULL, 0.0, d);
+      }
+      if (pass == 1 && b->type == NS_VELOCITY)
+        for (int c = 0; c < th->n_comp && !rc; ++c) {
+          if (c >= b->in->velocity.n) {
+            rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, c, 0), NULL, NULL, 0.0, d);
+            continue;
+          }
+          bc_eval be = {b->in->velocity.e[c], t};
+          rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, c, 0), bc_value, &be, 0.0, d);
+        }
+      if (pass == 2 && b->type == NS_WALL) /* periodic boundaries carry no condition */
+        for (int c = 0; c < th->n_comp && !rc; ++c)
+          rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, c, 0), NULL, NULL, 0.0, d);
+    }
+  if (!rc && datum) sl_stokes_fix_pressure_datum(con, th);
+  return rc;
+}
+
+static int traction_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
+  const bc *bc_ = user;
+  (void)d;
+  for (int q = 0; q < b->n; ++q)
+    for (int c = 0; c < bc_->n_comp; ++c) {
+      double v;
+      if (bc_->type == NS_PRESSURE) v = c < 2 ? -bc_->traction[0] * b->normal[q][c] : 0.0;
+      else v = bc_->traction[c];
+      out[q * bc_->n_comp + c] = v;
+    }
+  return 0;
+}
+
+/* ---- the flow ---------------------------------------------------------------- */
+
+struct sl_flow {
+  sl_scene *sc;
+  const sl_mesh *mesh;
+  sl_th_space *th;
+  physics ph;
+  bc_set bcs;
+  sl_flow_problem prob;
+  sl_linsolve *ls;
+  sl_newton_opts nopts;
+  unsigned fields;
+  double *u;    /* the state: velocity and pressure */
+  double *work; /* n_vel * 3 */
+  double *cellbuf;
+  int datum;
+  int riding;
+  double rho_solid;
+  sl_flow_rider rider;
+  const char *linear; /* the solver's name */
+  /* The residual's round-off (see solve): the largest initial residual of
+   * the run, and whether a solve has already ended there. */
+  double newton_scale[2];
+  sl_model_stats st;
+};
+
+const sl_th_space *sl_flow_space(const sl_flow *f) { return f->th; }
+const sl_flow_opts *sl_flow_options(const sl_flow *f) { return &f->prob.opts; }
+const unsigned char *sl_flow_open(const sl_flow *f) { return f->bcs.open; }
+int sl_flow_axisymmetric(const sl_flow *f) { return f->prob.opts.axisymmetric; }
+const sl_periodic_pair *sl_flow_periodic(const sl_flow *f, int *n_pairs) {
+  *n_pairs = f->bcs.n_pairs;
+  return f->bcs.pairs;
+}
+
+void sl_flow_ride(sl_flow *f, const sl_flow_rider *r) {
+  f->rider = *r;
+  f->ph.rider = &f->rider;
+  physics_opts(&f->ph, &f->prob.opts);
+}
+
+/* ---- output ---------------------------------------------------------------------- */
+
+int sl_flow_write_mesh(sl_flow *f, sl_output *out, sl_diag *d) {
+  const sl_th_space *th = f->th;
+  static const char *const topo[] = {[SL_CELL_LINE2] = "Edge_3", [SL_CELL_TRI3] = "Triangle_6",
+                                     [SL_CELL_QUAD4] = "Quadrilateral_9"};
+  /* the geometric nodes: periodic boundaries keep both sides in the file */
+  const double *coords = th->vel->node_xy;
+  if (th->mesh->dim == 1) { /* the writer takes n x dim coordinates */
+    for (int32_t i = 0; i < th->vel->n_nodes; ++i) f->work[i] = th->vel->node_xy[2 * i];
+    coords = f->work;
+  }
+  return sl_output_write_mesh(out, th->mesh->dim, th->vel->n_nodes, coords, th->mesh->n_cells,
+                              th->vel->dofs_per_cell, th->vel->cell_nodes, topo[th->mesh->cell_type], d);
+}
+
+int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
+  const sl_th_space *th = f->th;
+  int rc = 0;
+  if (f->fields & F_VELOCITY) {
+    /* in the frame: in-plane components, then the out-of-plane/swirl one as component 2 */
+    memset(f->work, 0, (size_t)th->vel->n_nodes * 3 * sizeof *f->work);
+    for (int32_t i = 0; i < th->vel->n_nodes; ++i)
+      for (int c = 0; c < th->n_comp; ++c)
+        f->work[3 * i + (c < th->mesh->dim ? c : 2)] = u[sl_th_vel_dof(th, c, th->vel->node_dof[i])];
+    rc = sl_output_write_field(out, "velocity", SL_CENTRE_NODE, 3, f->work, d);
+  }
+  if (!rc && (f->fields & F_PRESSURE)) {
+    /* P1 pressure at every velocity node: the vertices carry their values,
+     * the other nodes the average of their cell's vertices (exact for the
+     * linear pressure on edge midpoints and the Q1 cell centre). */
+    const double *p = u + th->p_offset;
+    double mean = 0.0, area = 0.0;
+    if (f->datum && sl_fe_integrate(th->pres, p, f->ph.axisymmetric, &mean, &area, NULL) == 0 && area > 0.0)
+      mean /= area;
+    else
+      mean = 0.0;
+    const sl_mesh *m = th->mesh;
+    int nb = th->vel->dofs_per_cell, nvc = m->nv_per_cell;
+    for (int c = 0; c < m->n_cells; ++c) {
+      const int32_t *vd = th->vel->cell_nodes + (size_t)c * nb, *pn = th->pres->node_dof;
+      const int *cv = m->cell_vertices + (size_t)c * nvc;
+      for (int k = 0; k < nb; ++k) {
+        double v;
+        if (k < nvc) {
+          v = p[pn[cv[k]]];
+        } else if (m->dim == 1 || (m->cell_type == SL_CELL_QUAD4 && k == 8)) {
+          v = 0.0;
+          for (int j = 0; j < nvc; ++j) v += p[pn[cv[j]]];
+          v /= nvc;
+        } else {
+          int e = k - nvc;
+          v = 0.5 * (p[pn[cv[e]]] + p[pn[cv[(e + 1) % nvc]]]);
+        }
+        f->work[vd[k]] = v - mean;
+      }
+    }
+    rc = sl_output_write_field(out, "pressure", SL_CENTRE_NODE, 1, f->work, d);
+  }
+  if (!rc && (f->fields & (F_SHEAR | F_VISCOSITY | F_YIELDED))) {
+    int nc = th->mesh->n_cells;
+    double *g = f->cellbuf, *mu = g + nc, *y = mu + nc;
+    rc = sl_flow_cell_diagnostics(th, u, &f->prob.opts, f->ph.yield_stress, g, mu, y, d);
+    if (!rc && (f->fields & F_SHEAR)) rc = sl_output_write_field(out, "shear_rate", SL_CENTRE_CELL, 1, g, d);
+    if (!rc && (f->fields & F_VISCOSITY)) rc = sl_output_write_field(out, "viscosity", SL_CENTRE_CELL, 1, mu, d);
+    if (!rc && (f->fields & F_YIELDED)) rc = sl_output_write_field(out, "yielded", SL_CENTRE_CELL, 1, y, d);
+  }
+  return rc;
+}
+
+int sl_flow_checkpoint(sl_flow *f, sl_checkpoint_array *a, int max) {
+  if (max < 1) return 0;
+  snprintf(a[0].name, sizeof a[0].name, "newton_scale"); /* a restart tests convergence as the run did */
+  a[0].n = 2, a[0].data = f->newton_scale;
+  return 1;
+}
+
+int sl_flow_restore(sl_flow *f, const sl_checkpoint *ck, sl_diag *d) {
+  (void)d;
+  const sl_checkpoint_array *ns = sl_checkpoint_find(ck, "newton_scale");
+  if (ns && ns->n == 2) f->newton_scale[0] = ns->data[0], f->newton_scale[1] = ns->data[1];
+  return 0;
+}
+
+/* ---- solves ---------------------------------------------------------------- */
+
+/* A residual this far below the largest initial residual of the run (its
+ * forcing: the lid, the buoyancy) is at round-off. A flow nearly at rest
+ * under a large load that the pressure carries (a suspension close to
+ * packing) gets there in one iteration, and then no relative test can pass:
+ * the corrections are noise and the predictor's residual, the reference of
+ * the relative residual test, is already tiny. Such a solve is converged.
+ * Ordinary solves pass their own tests first and are not touched; once one
+ * has ended at round-off, the later ones stop there (atol). */
+#define NEWTON_ROUNDOFF 1e-13
+
+static int solve(sl_flow *f, double *u, int *iterations, sl_diag *d) {
+  sl_newton_stats st;
+  double c0 = cpu();
+  double *scale = &f->newton_scale[0], *engaged = &f->newton_scale[1];
+  f->nopts.atol = *engaged ? NEWTON_ROUNDOFF * *scale : 0.0;
+  int rc = sl_flow_problem_solve(&f->prob, u, f->ls, &f->nopts, &st, d);
+  if (isfinite(st.residual0) && st.residual0 > *scale) *scale = st.residual0;
+  if (rc == SL_EFAILED && st.iterations > 0 && isfinite(st.residual) && st.residual <= NEWTON_ROUNDOFF * *scale) {
+    rc = 0; /* u is the last iterate, whose residual st.residual is */
+    *engaged = 1.0;
+    f->st.roundoff_accepted++;
+  } else if (rc == 0 && f->nopts.atol > 0.0 && st.residual <= f->nopts.atol) {
+    f->st.roundoff_accepted++;
+  }
+  if (iterations) *iterations = st.iterations;
+  f->st.correction = st.correction;
+  f->st.residual0 = st.residual0, f->st.residual = st.residual;
+  f->st.matrix_assemblies += st.assemblies, f->st.residual_assemblies += st.residuals;
+  f->st.assembly += st.t_assembly;
+  if (st.picard_iterations) f->st.used_picard = 1;
+  f->st.cpu_flow += cpu() - c0;
+  return rc;
+}
+
+int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
+  f->prob.opts.mass_coef = s->mass_coef;
+  f->prob.opts.history = s->history;
+  int rc;
+  if (f->bcs.time_dependent && (rc = bc_apply(&f->bcs, f->th, &f->prob.bc, s->t + s->dt, f->datum, d)))
+    return -rc;
+  rc = solve(f, s->u, iterations, d);
+  return rc == 0 ? 0 : rc == SL_EFAILED ? SL_STEP_RETRY : -rc;
+}
+
+/* Rebuilds the physics after a change of the scene (continuation). */
+static int rebuild_physics(sl_flow *f, sl_diag *d) {
+  physics_free(&f->ph);
+  int rc = physics_setup(f->sc, f->th->n_comp, f->mesh->dim, f->prob.opts.axisymmetric, f->riding, f->rho_solid,
+                         &f->ph, d);
+  if (rc) return rc;
+  if (f->riding) f->ph.rider = &f->rider;
+  int convection = f->prob.opts.convection;
+  double omega = f->prob.opts.omega, c0 = f->prob.opts.rotation_centre[0], c1 = f->prob.opts.rotation_centre[1];
+  physics_opts(&f->ph, &f->prob.opts);
+  f->prob.opts.convection = convection, f->prob.opts.omega = omega;
+  f->prob.opts.rotation_centre[0] = c0, f->prob.opts.rotation_centre[1] = c1;
+  return 0;
+}
+
+int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag *d) {
+  const sl_solver_config *sv = &f->sc->solver;
+  sl_model_stats *r = &f->st;
+  const char *key = sv->continuation ? sv->continuation : "";
+  int rc = 0;
+  *steps = 0, *iterations = 0;
+  if (!*key) {
+    int its = 0;
+    rc = solve(f, u, &its, d);
+    *steps = 1, *iterations = its;
+    if (rc) return sl_diag_prefix(d, rc, "steady solve");
+    r->converged = 1;
+    if (f->nopts.linear)
+      snprintf(r->stop_reason, sizeof r->stop_reason, "steady state solved: a linear problem, one solve (residual %.2g)",
+               r->residual);
+    else
+      snprintf(r->stop_reason, sizeof r->stop_reason,
+               "steady state converged in %d Newton iteration%s (last relative correction %.2g, tolerance %g; "
+               "residual %.2g from %.2g)",
+               its, its == 1 ? "" : "s", r->correction, f->nopts.rtol, r->residual, r->residual0);
+    return 0;
+  }
+  /* continuation: section.key from continuation_from to its scene value (checked at set-up) */
+  double target, from = sv->continuation_from;
+  long n_stages = sv->continuation_steps;
+  if ((rc = sl_scene_get_real(f->sc, key, &target, d))) return rc;
+  int geometric = from > 0 && target > 0;
+  for (long k = 0; k <= n_stages && !rc; ++k) {
+    double s = (double)k / (double)n_stages;
+    double v = geometric ? from * pow(target / from, s) : from + (target - from) * s;
+    if (k == n_stages) v = target;
+    if ((rc = sl_scene_set_real(f->sc, key, v, d))) break;
+    if ((rc = rebuild_physics(f, d))) break;
+    int its = 0;
+    rc = solve(f, u, &its, d);
+    *iterations += its;
+    if (rc) rc = sl_diag_prefix(d, rc, "continuation stage %ld of %ld (%s = %g)", k, n_stages, key, v);
+    (*steps)++;
+    if (!rc && k == n_stages) {
+      r->converged = 1;
+      snprintf(r->stop_reason, sizeof r->stop_reason,
+               "steady state converged at %s = %g, the last of %ld continuation stages, in %d Newton iteration%s "
+               "(last relative correction %.2g, tolerance %g; residual %.2g from %.2g)",
+               key, v, n_stages + 1, its, its == 1 ? "" : "s", r->correction, f->nopts.rtol, r->residual,
+               r->residual0);
+    }
+  }
+  return rc;
+}
+
+void sl_flow_stats(sl_flow *f, sl_model_stats *st) {
+  *st = f->st;
+  if (f->ls) {
+    st->linear = *sl_linsolve_get_stats(f->ls);
+    st->has_linear = 1;
+    sl_linsolve_summary(f->ls, st->linear_summary, sizeof st->linear_summary);
+  }
+}
+
+/* ---- set-up and teardown ---------------------------------------------------- */
+
+static int initial_velocity(const sl_scene *sc, const sl_flow_config *fc, const sl_th_space *th, double *u,
+                            sl_diag *d) {
+  const sl_scene_exprs *v = &fc->velocity;
+  if (v->n > th->n_comp) {
+    char at[400];
+    return sl_diag_set(d, SL_EBADINPUT, "%s: %d components given, the scene has %d velocity components",
+                       sl_scene_where(sc, v, at, sizeof at), v->n, th->n_comp);
+  }
+  for (int c = 0; c < v->n; ++c) {
+    bc_eval be = {v->e[c], 0.0};
+    sl_fe_interpolate(th->vel, bc_value, &be, u + sl_th_vel_dof(th, c, 0));
+  }
+  return 0;
+}
+
+/* [solver] continuation names a real value the flow can vary, and its start. */
+static int check_continuation(const sl_scene *sc, sl_diag *d) {
+  const sl_solver_config *sv = &sc->solver;
+  if (!sv->continuation || !*sv->continuation) return 0;
+  char at[400];
+  double v;
+  sl_diag inner;
+  if (sl_scene_get_real(sc, sv->continuation, &v, &inner))
+    return sl_diag_set(d, SL_EBADINPUT, "%s = %s: %s", sl_scene_where(sc, &sv->continuation, at, sizeof at),
+                       sv->continuation, inner.msg);
+  if (!sl_scene_given(sc, &sv->continuation_from))
+    return sl_diag_set(d, SL_EBADINPUT, "%s: continuation needs continuation_from = <the first value>",
+                       sl_scene_where(sc, &sv->continuation, at, sizeof at));
+  return 0;
+}
+
+int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, unsigned fields, sl_flow **out,
+                   sl_model_info *info, sl_diag *d) {
+  *out = NULL;
+  sl_flow *f = calloc(1, sizeof *f);
+  if (!f) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  f->sc = sc, f->mesh = sc->mesh, f->fields = fields;
+  f->riding = rho_solid >= 0.0, f->rho_solid = rho_solid;
+  int geometry = sc->geometry, third = sc->flow.third_component, rc;
+  int dim = f->mesh->dim, axi = geometry == 2;
+  if ((geometry == 0) != (dim == 1)) {
+    rc = sl_diag_set(d, SL_EBADINPUT, "[scene] geometry = %s but the mesh is %d-D",
+                     geometry == 0 ? "line" : geometry == 1 ? "planar" : "axisymmetric", dim);
+    goto fail;
+  }
+  if ((rc = check_continuation(sc, d))) goto fail;
+  if ((rc = bc_setup(sc, dim + (third ? 1 : 0), axi, &f->bcs, d))) goto fail;
+  if ((rc = sl_th_create_periodic(f->mesh, dim + (third ? 1 : 0), f->bcs.pairs, f->bcs.n_pairs, &f->th, d))) goto fail;
+  if ((rc = physics_setup(sc, f->th->n_comp, dim, axi, f->riding, rho_solid, &f->ph, d))) goto fail;
+  if ((rc = sl_flow_problem_init(&f->prob, f->th, d))) goto fail;
+  physics_opts(&f->ph, &f->prob.opts);
+  f->prob.opts.convection = sc->flow.convection;
+  f->prob.opts.omega = sc->flow.rotation;
+  const sl_reals *ce = &sc->flow.rotation_centre;
+  f->prob.opts.rotation_centre[0] = ce->n > 0 ? ce->v[0] : 0.0, f->prob.opts.rotation_centre[1] = ce->n > 1 ? ce->v[1] : 0.0;
+  if ((rc = sl_flow_check_geometry(f->th, &f->prob.opts, d))) goto fail;
+  f->datum = !f->bcs.has_natural;
+  for (int i = 0; i < f->bcs.n; ++i)
+    if (f->bcs.b[i].type == NS_PRESSURE || f->bcs.b[i].type == NS_TRACTION) {
+      if (f->prob.n_tractions == SL_FLOW_MAX_TRACTIONS) break;
+      f->prob.traction[f->prob.n_tractions++] = (sl_flow_traction){f->bcs.b[i].name, traction_fn, &f->bcs.b[i]};
+    }
+  if ((rc = bc_apply(&f->bcs, f->th, &f->prob.bc, 0.0, f->datum, d))) goto fail;
+  if ((rc = sl_scene_linsolve(sc, &f->ls, &f->linear, d))) goto fail;
+  f->nopts = (sl_newton_opts){.rtol = sc->solver.nonlinear_tolerance,
+                              .max_iterations = (int)sc->solver.max_iterations,
+                              .picard_only = sc->solver.nonlinear == 1,
+                              .picard_first = (int)sc->solver.picard_first,
+                              .linear = !sc->flow.convection && !f->ph.visc,
+                              .scale = 1e-12,
+                              .rtol_residual = 1e-10};
+  f->u = calloc((size_t)f->th->n_dofs, sizeof *f->u);
+  f->work = malloc((size_t)f->th->vel->n_nodes * 3 * sizeof *f->work);
+  /* the cell diagnostics only when written */
+  int cell_fields = (f->fields & (F_SHEAR | F_VISCOSITY | F_YIELDED)) != 0;
+  if (cell_fields) f->cellbuf = malloc((size_t)f->mesh->n_cells * 3 * sizeof *f->cellbuf);
+  if (!f->u || !f->work || (cell_fields && !f->cellbuf)) {
+    rc = sl_diag_set(d, SL_EFAILED, "out of memory for %d unknowns", (int)f->th->n_dofs);
+    goto fail;
+  }
+  if ((rc = initial_velocity(sc, fc, f->th, f->u, d))) goto fail;
+  *info = (sl_model_info){.integrator = SL_INTEGRATE_BDF, .n = f->th->n_dofs, .n_err = f->th->p_offset, .u = f->u,
+                          .has_steady = 1, .state_name = "velocity"};
+  *out = f;
+  return 0;
+fail:
+  sl_flow_destroy(f);
+  return rc;
+}
+
+void sl_flow_destroy(sl_flow *f) {
+  if (!f) return;
+  free(f->u), free(f->work), free(f->cellbuf);
+  sl_linsolve_destroy(f->ls);
+  sl_flow_problem_free(&f->prob);
+  bc_set_free(&f->bcs);
+  physics_free(&f->ph);
+  sl_th_destroy(f->th);
+  free(f);
+}
