@@ -12,6 +12,7 @@ int sl_cmd_check_closure(int argc, char **argv);
 int sl_cmd_run(int argc, char **argv);
 int sl_cmd_sample(int argc, char **argv);
 int sl_cmd_bench(int argc, char **argv);
+int sl_cmd_model(int argc, char **argv); /* list | describe */
 
 /* A registry with every library of the search path loaded. Libraries that
  * could not be used are reported on stderr when `warn` is set. */

@@ -13,6 +13,7 @@ static const char usage[] =
     "commands:\n"
     "  run SCENE.ini [--set section.key=value]... [--print-config] [-o OUT.h5]\n"
     "                                  validate a scene and resolve its closures\n"
+    "  model list | describe NAME      the models, and the sections and keys each reads\n"
     "  closures                        list every closure found (kind, name, version, library)\n"
     "  closure describe NAME|--all     schema, units, ranges, reference, an INI stanza\n"
     "  closure eval NAME --at SPEC     evaluate a closure without a mesh (CSV)\n"
@@ -66,7 +67,7 @@ typedef struct command {
 static const command commands[] = {
     {"run", sl_cmd_run},           {"closures", sl_cmd_closures}, {"closure", sl_cmd_closure},
     {"check-closure", sl_cmd_check_closure}, {"version", sl_cmd_version},
-    {"sample", sl_cmd_sample},     {"bench", sl_cmd_bench},
+    {"sample", sl_cmd_sample},     {"bench", sl_cmd_bench},       {"model", sl_cmd_model},
 };
 
 int main(int argc, char **argv) {

@@ -53,8 +53,10 @@ void sl_key_default_text(const sl_key *k, char *buf, size_t len) {
   }
   switch (k->type) {
     case SL_KEY_REAL:
-    case SL_KEY_INT:
       snprintf(buf, len, "%g", k->def);
+      return;
+    case SL_KEY_INT:
+      snprintf(buf, len, "%.15g", k->def);
       return;
     case SL_KEY_BOOL:
       snprintf(buf, len, "%s", k->def != 0.0 ? "true" : "false");
@@ -86,7 +88,7 @@ void sl_key_range_text(const sl_key *k, char *buf, size_t len) {
       snprintf(buf, len, "real in [%g, %g]", k->min, k->max);
       return;
     case SL_KEY_INT:
-      snprintf(buf, len, "integer in [%g, %g]", k->min, k->max);
+      snprintf(buf, len, "integer in [%.15g, %.15g]", k->min, k->max);
       return;
     case SL_KEY_BOOL:
       snprintf(buf, len, "true | false");
@@ -190,7 +192,8 @@ void sl_schema_describe(const sl_schema *s, FILE *f, int markdown) {
           md_escape(f, k->help);
           fputs(" |\n", f);
         } else {
-          fprintf(f, "  %-22s %s; default %s%s%s", k->name, range, def, k->units ? "; " : "", k->units ? k->units : "");
+          fprintf(f, "  %-22s %s; %s%s%s%s", k->name, range, (k->flags & SL_KEY_REQUIRED) ? "" : "default ", def,
+                  k->units ? "; " : "", k->units ? k->units : "");
           if (boundary && k->when_type) fprintf(f, "; types %s", when);
           fprintf(f, "\n      %s\n", k->help);
         }
