@@ -370,6 +370,19 @@ SL_EVAL_INLINE int evaluate_checked(sl_closure *c, const sl_eval_args *a) {
       }
     }
   }
+  /* nor in the derivatives a Newton solve takes */
+  for (int32_t k = 0; k < desc->n_out && a->dout; ++k)
+    for (int32_t i = 0; i < desc->n_in; ++i) {
+      const double *o = a->dout[k * desc->n_in + i];
+      if (!o || all_finite(o, a->Q)) continue;
+      for (int32_t q = 0; q < a->Q; ++q)
+        if (!isfinite(o[q])) {
+          a->err->point = q;
+          snprintf(a->err->msg, sizeof a->err->msg, "derivative of '%s' by '%s' is %g at point %d", desc->out[k].name,
+                   desc->in[i].name, o[q], (int)q);
+          return SL_RECOVERABLE;
+        }
+    }
   return 0;
 }
 

@@ -15,6 +15,7 @@
 #include "core/models/navier_stokes/flow.h"
 #include "core/plugin/instance.h"
 #include "core/plugin/kinds.h"
+#include "core/plugin/point_eval.h"
 #include "core/scene/keys.h"
 #include "core/transport/migration.h"
 #include "core/transport/transport.h"
@@ -30,69 +31,18 @@ typedef struct mixture_config {
   double cfl;
 } mixture_config;
 
-enum { MAX_LEVELS = 8, MAX_IN = 32 };
+enum { MAX_LEVELS = 8 };
 
-/* A closure evaluated in batch with some inputs varying (per point) and the
- * others fixed by the scene; one output and its derivatives. */
-typedef struct bound_closure {
-  sl_closure *c;
-  double fixed[MAX_IN];
-  double *buf;
-  int cap;
-} bound_closure;
-
-/* Evaluates output `out` at n points; var[i] != NULL supplies input i per
- * point, the others take fixed[i]. dvar (may be NULL) gets d out / d input
- * `wrt`. */
-static int bound_eval(bound_closure *b, int n, const double *const *var, int out, double *value, int wrt, double *dvar,
-                      sl_diag *d) {
-  const sl_closure_desc *c = b->c->desc;
-  int n_in = c->n_in, n_out = c->n_out;
-  int need = n * (2 * n_in + n_out);
-  if (need > b->cap) {
-    double *nb = realloc(b->buf, (size_t)need * sizeof *nb);
-    if (!nb) return sl_diag_set(d, SL_EFAILED, "closure %s: out of memory", c->name);
-    b->buf = nb, b->cap = need;
-  }
-  const double *in[MAX_IN];
-  double *outs[MAX_IN] = {0}, *dout[MAX_IN * MAX_IN] = {0}, *w = b->buf;
-  for (int i = 0; i < n_in; ++i) {
-    if (var[i]) {
-      in[i] = var[i];
-      continue;
-    }
-    for (int k = 0; k < n; ++k) w[k] = b->fixed[i];
-    in[i] = w, w += n;
-  }
-  for (int k = 0; k < n_out; ++k)
-    if (k == out || !(c->out[k].flags & SL_FIELD_OPTIONAL)) outs[k] = w, w += n;
-  if (dvar)
-    for (int i = 0; i < n_in; ++i) /* a slot for every differentiable input of the asked output (ABI) */
-      if (c->in[i].flags & SL_FIELD_DIFF) dout[out * n_in + i] = w, w += n;
-  sl_error err;
-  sl_eval_args a = {.Q = n, .in = in, .out = outs, .dout = dout, .err = &err};
-  int rc = sl_closure_evaluate(b->c, &a);
-  if (rc) {
-    char label[128], where[64] = "";
-    sl_closure_label(c, label, sizeof label);
-    for (int i = 0; i < n_in; ++i)
-      if (var[i] && err.point >= 0 && err.point < n) {
-        snprintf(where, sizeof where, " at %s = %g", c->in[i].name, var[i][err.point]);
-        break;
-      }
-    return sl_diag_set(d, SL_EFAILED, "closure %s %s%s: %s", label, rc > 0 ? "is outside its validity" : "failed", where,
-                       err.msg);
-  }
-  memcpy(value, outs[out], (size_t)n * sizeof *value);
-  if (dvar) memcpy(dvar, dout[out * n_in + wrt], (size_t)n * sizeof *dvar);
-  return 0;
-}
+/* The quantities the mixture model gives its closures. */
+enum { Q_PHI, Q_SHEAR_RATE, Q_D_P, Q_SPHERICITY, Q_RHO_S, Q_RHO_F, Q_MU_F, Q_GRAVITY, Q_D_VESSEL, Q_N };
+static const char *const quantity_names[Q_N] = {"phi",   "shear_rate", "d_p",     "sphericity", "rho_s",
+                                                "rho_f", "mu_f",       "gravity", "d_vessel"};
 
 /* The hindered-settling closure as the transport's batch callback: phi
  * varies, every other input is fixed by the scene. */
 typedef struct settling {
-  bound_closure b; /* b.c NULL: no settling */
-  int in_phi, out_u;
+  sl_closure *c; /* the scene's; NULL: no settling */
+  sl_point_closure pc;
 } settling;
 
 typedef struct mixture {
@@ -135,8 +85,8 @@ typedef struct mixture {
   double level[MAX_LEVELS];
   /* shear-induced migration (optional) */
   const sl_flow_opts *flow;
-  bound_closure mig, visc; /* [closure.migration]; [closure.viscosity] as mu(phi) */
-  int mig_phi, mig_shear, mig_dc, mig_dmu, visc_phi, visc_out;
+  sl_closure *mig_c, *visc_c;   /* [closure.migration]; [closure.viscosity] as mu(phi) (the scene's) */
+  sl_point_closure mig, visc;
   sl_migration *mg;
   double *shear;           /* [n_cells] */
   char params[2048];
@@ -146,13 +96,13 @@ typedef struct mixture {
 
 static int settling_fn(void *user, int n, const double *phi, double *u, double *du, sl_diag *d) {
   settling *s = user;
-  if (!s->b.c) {
+  if (!s->c) {
     for (int i = 0; i < n; ++i) u[i] = du[i] = 0.0;
     return 0;
   }
-  const double *var[MAX_IN] = {0};
-  var[s->in_phi] = phi;
-  int rc = bound_eval(&s->b, n, var, s->out_u, u, s->in_phi, du, d);
+  const double *values[Q_N] = {phi};
+  sl_point_request rq = {"settling_velocity", u, du, "phi"};
+  int rc = sl_point_eval(&s->pc, n, values, &rq, 1, d);
   return rc ? sl_diag_prefix(d, SL_EBADINPUT, "settling flux") : 0;
 }
 
@@ -168,42 +118,28 @@ static int solid_diameter(const sl_scene *sc, double *v, sl_diag *d) {
 static int settling_setup(mixture *x, sl_diag *d) {
   settling *s = &x->st;
   const sl_scene *sc = x->sc;
-  if (!(s->b.c = sl_scene_closure(sc, "hindered_settling"))) return 0;
-  int rc = 0;
-  const sl_closure_desc *c = s->b.c->desc;
+  if (!(s->c = sl_scene_closure(sc, "hindered_settling"))) return 0;
+  const sl_closure_desc *c = s->c->desc;
   char label[128], where[300];
   sl_scene_closure_where(sc, "hindered_settling", where, sizeof where);
   sl_closure_label(c, label, sizeof label);
-  s->in_phi = sl_closure_input(c, "phi");
-  s->out_u = sl_closure_output(c, "settling_velocity");
-  if (s->in_phi < 0 || s->out_u < 0 || c->n_in > MAX_IN || c->n_out > MAX_IN)
+  int rc = sl_point_bind(&s->pc, s->c, quantity_names, Q_N, "closure.hindered_settling", "the mixture model", d);
+  if (rc) return rc;
+  if (!sl_point_has_input(&s->pc, "phi") || !sl_point_has_output(&s->pc, "settling_velocity") ||
+      sl_point_has_input(&s->pc, "shear_rate"))
     return sl_diag_set(d, SL_EBADINPUT, "%s %s does not map phi to a settling_velocity", where, label);
-  for (int i = 0; i < c->n_in; ++i) {
-    const char *name = c->in[i].name;
-    double v = 0.0;
-    if (i == s->in_phi) continue;
-    if (strcmp(name, "d_p") == 0) rc = solid_diameter(sc, &v, d);
-    else if (strcmp(name, "sphericity") == 0) v = sc->solid.sphericity;
-    else if (strcmp(name, "rho_s") == 0) v = x->rho_solid;
-    else if (strcmp(name, "rho_f") == 0) v = x->rho_f;
-    else if (strcmp(name, "mu_f") == 0) v = x->mu_f;
-    else if (strcmp(name, "gravity") == 0) v = x->g_ref;
-    else if (strcmp(name, "d_vessel") == 0) v = HUGE_VAL;
-    else
-      return sl_diag_set(d, SL_EBADINPUT,
-                         "%s %s needs the input '%s', which the mixture model does not provide (it provides phi, d_p, "
-                         "sphericity, rho_s, rho_f, mu_f, gravity, d_vessel)",
-                         where, label, name);
-    if (rc) return sl_diag_prefix(d, rc, "[closure.hindered_settling] %s needs %s", label, name);
-    s->b.fixed[i] = v;
-  }
+  double dp = 0.0;
+  if (sl_point_has_input(&s->pc, "d_p") && (rc = solid_diameter(sc, &dp, d)))
+    return sl_diag_prefix(d, rc, "[closure.hindered_settling] %s needs d_p", label);
+  const double constants[Q_N] = {0.0, 0.0, dp, sc->solid.sphericity, x->rho_solid, x->rho_f, x->mu_f, x->g_ref, HUGE_VAL};
+  for (int k = Q_D_P; k < Q_N; ++k) sl_point_constant(&s->pc, quantity_names[k], constants[k]);
   /* phi_max: the closure's packing parameter unless the scene sets [solid] phi_max; both must agree */
   int k = sl_params_find(c, "phi_max");
   const sl_src *pe = sl_scene_src(sc, &sc->solid.phi_max);
   if (k >= 0) {
     char buf[64];
     double cv;
-    sl_params_format_value(c, s->b.c->params, k, buf, sizeof buf);
+    sl_params_format_value(c, s->c->params, k, buf, sizeof buf);
     sl_parse_real(buf, &cv);
     if (!pe) x->phi_max = cv;
     else if (fabs(cv - x->phi_max) > 1e-12)
@@ -286,9 +222,9 @@ static void set_flux_floor(mixture *x) {
  * Entries 00, 11, 01 per cell into cell_stress. */
 static int stress_of(mixture *x, const double *phi_cells, sl_diag *d) {
   int nc = x->m->n_cells;
-  const double *var[MAX_IN] = {0};
-  var[x->st.in_phi] = phi_cells;
-  int rc = bound_eval(&x->st.b, nc, var, x->st.out_u, x->settle_speed, 0, NULL, d);
+  const double *values[Q_N] = {phi_cells};
+  sl_point_request rq = {"settling_velocity", x->settle_speed, NULL, NULL};
+  int rc = sl_point_eval(&x->st.pc, nc, values, &rq, 1, d);
   if (rc) return sl_diag_prefix(d, rc, "relative-flux stress");
   const double *xc = sl_transport_cell_points(x->tr);
   for (int c = 0; c < nc; ++c) {
@@ -327,7 +263,7 @@ static void node_stress_of(mixture *x) {
 /* The node weights of node_stress_of (1 / the volume around each pressure
  * node), the buffers, and the stress of the initial state. */
 static int stress_setup(mixture *x, sl_diag *d) {
-  if (!x->st.b.c)
+  if (!x->st.c)
     return sl_diag_set(d, SL_EBADINPUT, "[mixture] relative_flux_stress = true needs the relative flux of a "
                                         "[closure.hindered_settling]; the scene has none");
   const sl_dofmap *pm = x->th->pres;
@@ -401,18 +337,16 @@ static double interface_height(const mixture *x, const double *phi, double level
 
 static int migration_coef(void *user, int n, const double *phi, const double *g, double *D_c, double *D_mu, sl_diag *d) {
   mixture *x = user;
-  const double *var[MAX_IN] = {0};
-  var[x->mig_phi] = phi, var[x->mig_shear] = g;
-  int rc = bound_eval(&x->mig, n, var, x->mig_dc, D_c, 0, NULL, d);
-  if (!rc) rc = bound_eval(&x->mig, n, var, x->mig_dmu, D_mu, 0, NULL, d);
-  return rc;
+  const double *values[Q_N] = {phi, g};
+  sl_point_request rq[2] = {{"D_c", D_c, NULL, NULL}, {"D_mu", D_mu, NULL, NULL}};
+  return sl_point_eval(&x->mig, n, values, rq, 2, d);
 }
 
 static int migration_lnmu(void *user, int n, const double *phi, double *ln_mu, double *dln_mu, sl_diag *d) {
   mixture *x = user;
-  const double *var[MAX_IN] = {0};
-  var[x->visc_phi] = phi;
-  int rc = bound_eval(&x->visc, n, var, x->visc_out, ln_mu, x->visc_phi, dln_mu, d);
+  const double *values[Q_N] = {phi};
+  sl_point_request rq = {"viscosity", ln_mu, dln_mu, "phi"};
+  int rc = sl_point_eval(&x->visc, n, values, &rq, 1, d);
   for (int i = 0; i < n && !rc; ++i) dln_mu[i] /= ln_mu[i], ln_mu[i] = log(ln_mu[i]);
   return rc;
 }
@@ -431,42 +365,41 @@ static int migration_setup(mixture *x, sl_diag *d) {
   double eps = x->cfg->diffusivity;
   int rc = 0;
   sl_migration_opts mo = {.diffusivity = eps};
-  if (!(x->mig.c = sl_scene_closure(sc, "migration"))) return eps > 0.0 ? create_gradient_flux(x, &mo, d) : 0;
-  const sl_closure_desc *c = x->mig.c->desc;
+  if (!(x->mig_c = sl_scene_closure(sc, "migration"))) return eps > 0.0 ? create_gradient_flux(x, &mo, d) : 0;
+  const sl_closure_desc *c = x->mig_c->desc;
   char label[128], where[300];
   sl_closure_label(c, label, sizeof label);
   sl_scene_closure_where(sc, "migration", where, sizeof where);
-  x->mig_phi = sl_closure_input(c, "phi"), x->mig_shear = sl_closure_input(c, "shear_rate");
-  x->mig_dc = sl_closure_output(c, "D_c"), x->mig_dmu = sl_closure_output(c, "D_mu");
-  if (x->mig_phi < 0 || x->mig_shear < 0 || x->mig_dc < 0 || x->mig_dmu < 0 || c->n_in > MAX_IN || c->n_out > MAX_IN)
+  /* it is given phi, the shear rate and d_p */
+  if ((rc = sl_point_bind(&x->mig, x->mig_c, quantity_names, Q_D_P + 1, "closure.migration", "the mixture model", d)))
+    return rc;
+  if (!sl_point_has_input(&x->mig, "phi") || !sl_point_has_input(&x->mig, "shear_rate") ||
+      !sl_point_has_output(&x->mig, "D_c") || !sl_point_has_output(&x->mig, "D_mu"))
     return sl_diag_set(d, SL_EBADINPUT, "%s %s does not give D_c and D_mu of phi and shear_rate", where, label);
-  for (int i = 0; i < c->n_in; ++i) {
-    if (i == x->mig_phi || i == x->mig_shear) continue;
-    if (strcmp(c->in[i].name, "d_p") != 0)
-      return sl_diag_set(d, SL_EBADINPUT, "%s %s needs the input '%s', which the mixture model does not provide (it "
-                                          "provides phi, shear_rate, d_p)",
-                         where, label, c->in[i].name);
-    if ((rc = solid_diameter(sc, &x->mig.fixed[i], d))) return rc;
+  if (sl_point_has_input(&x->mig, "d_p")) {
+    double dp;
+    if ((rc = solid_diameter(sc, &dp, d))) return rc;
+    sl_point_constant(&x->mig, "d_p", dp);
   }
   mo.coef = migration_coef, mo.coef_user = x;
-  if ((x->visc.c = sl_scene_closure(sc, "viscosity"))) {
+  if ((x->visc_c = sl_scene_closure(sc, "viscosity"))) {
     char vs[300];
     sl_scene_closure_where(sc, "viscosity", vs, sizeof vs);
-    const sl_closure_desc *v = x->visc.c->desc;
+    const sl_closure_desc *v = x->visc_c->desc;
     sl_closure_label(v, label, sizeof label);
-    x->visc_phi = sl_closure_input(v, "phi"), x->visc_out = sl_closure_output(v, "viscosity");
-    if (x->visc_phi < 0 || x->visc_out < 0 || !(v->in[x->visc_phi].flags & SL_FIELD_DIFF) || v->n_in > MAX_IN)
+    int in_phi = sl_closure_input(v, "phi");
+    if (in_phi < 0 || sl_closure_output(v, "viscosity") < 0 || !(v->in[in_phi].flags & SL_FIELD_DIFF))
       return sl_diag_set(d, SL_EBADINPUT, "%s: [closure.migration] needs [closure.viscosity] as a viscosity of phi; "
                                           "%s is not", vs, label);
     for (int i = 0; i < v->n_in; ++i) {
-      if (i == x->visc_phi) continue;
       const char *name = v->in[i].name;
-      if (strcmp(name, "mu_f") == 0) x->visc.fixed[i] = x->mu_f;
-      else if (strcmp(name, "rho_f") == 0) x->visc.fixed[i] = x->rho_f;
-      else
+      if (strcmp(name, "phi") != 0 && strcmp(name, "mu_f") != 0 && strcmp(name, "rho_f") != 0)
         return sl_diag_set(d, SL_EBADINPUT, "%s: [closure.migration] takes mu(phi) from [closure.viscosity], but %s "
                                             "also depends on '%s'", vs, label, name);
     }
+    if ((rc = sl_point_bind(&x->visc, x->visc_c, quantity_names, Q_N, "closure.viscosity", "the mixture model", d)))
+      return rc;
+    sl_point_constant(&x->visc, "mu_f", x->mu_f), sl_point_constant(&x->visc, "rho_f", x->rho_f);
     mo.ln_mu = migration_lnmu, mo.ln_mu_user = x;
   }
   x->shear = calloc((size_t)x->m->n_cells, sizeof *x->shear);
@@ -560,7 +493,7 @@ static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag
   if (x->slip_acceleration && x->g_ref == 0.0) x->g_ref = 1.0;
   if (sl_scene_given(sc, &cfg->reference_acceleration)) x->g_ref = cfg->reference_acceleration;
   if ((rc = settling_setup(x, d))) return rc;
-  if (x->st.b.c && x->g_ref == 0.0)
+  if (x->st.c && x->g_ref == 0.0)
     return sl_diag_set(d, SL_EBADINPUT, "[closure.hindered_settling] is set but nothing drives settling: give [flow] "
                                         "gravity or rotation, or [mixture] slip_acceleration = true");
   /* the transport */
@@ -594,7 +527,7 @@ static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag
     x->b_face = malloc((size_t)2 * nf * sizeof *x->b_face);
     if (!x->acc || !x->b_face) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
   }
-  if (x->st.b.c) {
+  if (x->st.c) {
     sl_transport_settling_field(x->tr, body_direction, x, x->w);
     set_flux_floor(x);
   }
@@ -615,7 +548,7 @@ static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag
 }
 
 static int advance(mixture *x, double t, double dt, const double *u, const double *dudt, sl_diag *d) {
-  if (x->st.b.c && x->slip_acceleration) { /* the slip of this step follows the acceleration at its end */
+  if (x->st.c && x->slip_acceleration) { /* the slip of this step follows the acceleration at its end */
     cell_accelerations(x, u, dudt);
     sl_transport_settling_faces(x->tr, x->b_face, x->w);
     set_flux_floor(x);
@@ -627,13 +560,13 @@ static int advance(mixture *x, double t, double dt, const double *u, const doubl
   int rc = sl_face_flux_conservative(x->ff, u, fmax(x->flux_floor, 1e-8 * umax * x->area_max), x->q, &x->trial_raw_div, d);
   if (rc) return rc;
   memcpy(x->trial, x->phi, (size_t)x->m->n_cells * sizeof *x->trial);
-  if (x->mig.c) { /* the shear rate of the new velocity drives the migration over the step */
+  if (x->mig_c) { /* the shear rate of the new velocity drives the migration over the step */
     if ((rc = sl_flow_cell_diagnostics(x->th, u, x->flow, 0.0, x->shear, NULL, NULL, d)) ||
         (rc = sl_migration_set_shear_rate(x->mg, x->shear, d)))
       return rc;
   }
   sl_transport_stats st;
-  rc = sl_transport_step(x->tr, dt, x->q, x->st.b.c ? x->w : NULL, x->trial, &st, d);
+  rc = sl_transport_step(x->tr, dt, x->q, x->st.c ? x->w : NULL, x->trial, &st, d);
   if (rc) return sl_diag_prefix(d, SL_EFAILED, "solids transport from t = %.6g over dt = %.3g", t, dt);
   x->trial_substeps = st.n_substeps, x->trial_fallbacks = st.n_fallbacks;
   x->trial_inflow = st.boundary_inflow;
@@ -730,10 +663,10 @@ static void mixture_free(mixture *x) {
       free(x->node_psi);
   free(x->cell_stress), free(x->settle_speed), free(x->node_stress), free(x->node_weight);
   sl_stream_graph_free(&x->pg);
-  free(x->st.b.buf);
+  sl_point_release(&x->st.pc);
   sl_migration_destroy(x->mg);
   free(x->shear);
-  free(x->mig.buf), free(x->visc.buf);
+  sl_point_release(&x->mig), sl_point_release(&x->visc);
   sl_flow_destroy(x->flow_model);
   free(x);
 }

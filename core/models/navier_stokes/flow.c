@@ -10,6 +10,7 @@
 
 #include "core/fe/field.h"
 #include "core/plugin/kinds.h"
+#include "core/plugin/point_eval.h"
 #include "core/scene/solver.h"
 
 static double cpu(void) {
@@ -26,81 +27,58 @@ enum { F_VELOCITY = 1, F_PRESSURE = 2, F_SHEAR = 4, F_VISCOSITY = 8, F_YIELDED =
 
 /* ---- physics: fluid properties, the viscosity closure, forces ------------ */
 
+/* The quantities the flow gives a viscosity closure; phi and density vary
+ * per point when a solids fraction rides on the flow. */
+enum { Q_SHEAR_RATE, Q_MU_F, Q_RHO_F, Q_DENSITY, Q_PHI, Q_N };
+static const char *const quantity_names[Q_N] = {"shear_rate", "mu_f", "rho_f", "density", "phi"};
+
 typedef struct physics {
   int n_comp, dim, axisymmetric;
   double density, viscosity;
   sl_closure *visc; /* NULL: Newtonian (the scene's) */
-  int in_shear, in_other[8], n_other;
-  double other_value[8];
-  int out_visc, has_dmu;
+  sl_point_closure pc;
+  int has_dmu;
   double yield_stress; /* for `yielded`; 0 when the law has none */
-  double *buf;         /* closure inputs/outputs for one batch */
+  double *buf;         /* phi, density, mu, d mu / d gamma at the points of one batch */
   int cap;
   double gravity[MAX_COMP], body_force[MAX_COMP];
   int has_force;
   int riding;                /* a solids fraction rides on the flow: variable density, buoyancy, phi input */
   const sl_flow_rider *rider;
-  int in_phi, in_density;    /* viscosity inputs fed per point (-1: absent) */
 } physics;
 
 static void physics_free(physics *ph) {
   free(ph->buf);
+  sl_point_release(&ph->pc);
   memset(ph, 0, sizeof *ph);
 }
 
 /* Viscosity through the closure, once per batch; mu and d mu / d gamma. */
 static int viscosity_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
   physics *ph = user;
-  int n_in = ph->visc->desc->n_in, n_out = ph->visc->desc->n_out;
-  int need = b->n * (n_in + n_out + n_in + 1);
+  int need = 4 * b->n;
   if (need > ph->cap) {
     double *nb = realloc(ph->buf, (size_t)need * sizeof *nb);
     if (!nb) return sl_diag_set(d, SL_EFAILED, "viscosity: out of memory");
     ph->buf = nb, ph->cap = need;
   }
-  const double *in[16];
-  double *outs[16], *dout[16 * 16];
-  double *w = ph->buf;
+  double *phi_q = ph->buf, *rho_q = phi_q + b->n, *mu = rho_q + b->n, *dmu = mu + b->n;
+  const double *values[Q_N] = {b->shear_rate, NULL, NULL, NULL, NULL};
   const double *phi = ph->riding ? ph->rider->phi : NULL;
-  for (int i = 0; i < n_in; ++i) {
-    if (i == ph->in_shear) {
-      in[i] = b->shear_rate;
-      continue;
+  if (phi) {
+    for (int q = 0; q < b->n; ++q) {
+      double f = phi[b->cell[q]];
+      phi_q[q] = f, rho_q[q] = ph->density + f * (ph->rider->rho_solid - ph->density);
     }
-    if (phi && (i == ph->in_phi || i == ph->in_density)) {
-      for (int q = 0; q < b->n; ++q) {
-        double f = phi[b->cell[q]];
-        w[q] = i == ph->in_phi ? f : ph->density + f * (ph->rider->rho_solid - ph->density);
-      }
-      in[i] = w, w += b->n;
-      continue;
-    }
-    for (int k = 0; k < ph->n_other; ++k)
-      if (ph->in_other[k] == i)
-        for (int q = 0; q < b->n; ++q) w[q] = ph->other_value[k];
-    in[i] = w, w += b->n;
+    values[Q_PHI] = phi_q, values[Q_DENSITY] = rho_q;
   }
-  for (int k = 0; k < n_out; ++k) outs[k] = w, w += b->n;
-  for (int k = 0; k < n_out * n_in; ++k) dout[k] = NULL;
-  if (ph->has_dmu) dout[ph->out_visc * n_in + ph->in_shear] = w, w += b->n;
-  for (int i = 0; i < n_in; ++i) /* the ABI asks a slot for every differentiable input once one is asked */
-    if (ph->has_dmu && i != ph->in_shear && (ph->visc->desc->in[i].flags & SL_FIELD_DIFF))
-      dout[ph->out_visc * n_in + i] = w, w += b->n;
-  sl_error err;
-  sl_eval_args a = {.Q = b->n, .in = in, .out = outs, .dout = dout, .err = &err};
-  int rc = sl_closure_evaluate(ph->visc, &a);
+  sl_point_request rq = {"viscosity", mu, ph->has_dmu ? dmu : NULL, "shear_rate"};
+  int rc = sl_point_eval(&ph->pc, b->n, values, &rq, 1, d);
   if (rc) {
-    char label[128];
-    sl_closure_label(ph->visc->desc, label, sizeof label);
-    int q = err.point >= 0 && err.point < b->n ? err.point : 0;
-    char extra[64] = "";
-    if (phi) snprintf(extra, sizeof extra, ", phi %g", phi[b->cell[q]]);
-    return sl_diag_set(d, SL_EFAILED, "closure %s %s at (%g, %g) in cell %d (shear rate %g%s): %s", label,
-                       rc > 0 ? "outside its validity" : "failed", b->x[q][0], b->x[q][1], (int)b->cell[q],
-                       b->shear_rate[q], extra, err.msg);
+    int q = ph->pc.failed_point >= 0 ? ph->pc.failed_point : 0;
+    return sl_diag_prefix(d, rc, "at (%g, %g) in cell %d", b->x[q][0], b->x[q][1], (int)b->cell[q]);
   }
-  const double *mu = outs[ph->out_visc], *dmu = ph->has_dmu ? dout[ph->out_visc * n_in + ph->in_shear] : NULL;
-  for (int q = 0; q < b->n; ++q) out[2 * q] = mu[q], out[2 * q + 1] = dmu ? dmu[q] : 0.0;
+  for (int q = 0; q < b->n; ++q) out[2 * q] = mu[q], out[2 * q + 1] = ph->has_dmu ? dmu[q] : 0.0;
   return 0;
 }
 
@@ -142,7 +120,6 @@ static int physics_setup(const sl_scene *sc, int n_comp, int dim, int axi, int r
                          sl_diag *d) {
   memset(ph, 0, sizeof *ph);
   ph->n_comp = n_comp, ph->dim = dim, ph->axisymmetric = axi, ph->riding = riding;
-  ph->in_phi = ph->in_density = -1;
   ph->density = sc->fluid.density, ph->viscosity = sc->fluid.viscosity;
   int rc = vec_get(sc, &sc->flow.gravity, n_comp, ph->gravity, d);
   if (!rc) rc = vec_get(sc, &sc->flow.body_force, n_comp, ph->body_force, d);
@@ -157,31 +134,19 @@ static int physics_setup(const sl_scene *sc, int n_comp, int dim, int axi, int r
   char label[128], where[300];
   sl_closure_label(c, label, sizeof label);
   sl_scene_closure_where(sc, "viscosity", where, sizeof where);
-  ph->in_shear = sl_closure_input(c, "shear_rate");
-  ph->out_visc = sl_closure_output(c, "viscosity");
-  if (riding) {
-    ph->in_phi = sl_closure_input(c, "phi");
-    ph->in_density = sl_closure_input(c, "density");
-  }
-  if (ph->out_visc < 0 || (ph->in_shear < 0 && ph->in_phi < 0 && ph->in_density < 0) || c->n_in > 16 ||
-      c->n_out > 16)
+  /* the navier_stokes model gives a constant density; a riding solids fraction gives phi and the mixture's */
+  int rc2 = sl_point_bind(&ph->pc, ph->visc, quantity_names, riding ? Q_N : Q_PHI, "closure.viscosity",
+                          riding ? "the mixture model" : "the navier_stokes model", d);
+  if (rc2) return rc2;
+  int in_shear = sl_point_has_input(&ph->pc, "shear_rate");
+  int varies = in_shear || (riding && (sl_point_has_input(&ph->pc, "phi") || sl_point_has_input(&ph->pc, "density")));
+  if (!sl_point_has_output(&ph->pc, "viscosity") || !varies)
     return sl_diag_set(d, SL_EBADINPUT, "%s %s does not map a shear rate%s to a viscosity", where, label,
                        riding ? " or a solids fraction" : "");
-  for (int i = 0; i < c->n_in; ++i) {
-    if (i == ph->in_shear || i == ph->in_phi || i == ph->in_density) continue;
-    const char *name = c->in[i].name;
-    double v;
-    if (strcmp(name, "mu_f") == 0) v = ph->viscosity;
-    else if (strcmp(name, "rho_f") == 0 || (!riding && strcmp(name, "density") == 0)) v = ph->density;
-    else
-      return sl_diag_set(d, SL_EBADINPUT,
-                         "%s %s needs the input '%s', which the %s model does not provide (it provides shear_rate, "
-                         "mu_f, rho_f%s)",
-                         where, label, name, riding ? "mixture" : "navier_stokes", riding ? ", phi, density" : "");
-    if (ph->n_other == 8) return sl_diag_set(d, SL_EBADINPUT, "%s: too many inputs", label);
-    ph->in_other[ph->n_other] = i, ph->other_value[ph->n_other++] = v;
-  }
-  ph->has_dmu = ph->in_shear >= 0 && (c->in[ph->in_shear].flags & SL_FIELD_DIFF) != 0;
+  sl_point_constant(&ph->pc, "mu_f", ph->viscosity);
+  sl_point_constant(&ph->pc, "rho_f", ph->density);
+  sl_point_constant(&ph->pc, "density", ph->density);
+  ph->has_dmu = sl_point_differentiates(&ph->pc, "shear_rate");
   int k = sl_params_find(c, "yield_stress");
   if (k >= 0) {
     char buf[64];

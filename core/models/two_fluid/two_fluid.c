@@ -150,9 +150,9 @@ static void release(tf_run *r) {
   tf_column *c = &r->c;
   double *all[] = {c->slope, c->stage, c->h, c->xc, c->xf, c->dual, c->phi, c->p, c->phi_new, c->p_new, c->ps_v,
                    c->ps_d,  c->alpha, c->u,   c->uf,     c->u_new, c->uf_new, c->w,     c->K,       c->dK,
-                   c->phif,  c->slip, c->lo,   c->di,     c->up,    c->rhs,  c->flux,  c->dpdx,    c->drag.buf,
-                   c->ps.buf, r->node};
+                   c->phif,  c->slip, c->lo,   c->di,     c->up,    c->rhs,  c->flux,  c->dpdx,    r->node};
   for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i) free(all[i]);
+  sl_point_release(&c->drag.pc), sl_point_release(&c->ps.pc);
   free(r->face_vertex), free(r->cell_of);
   free(r);
 }

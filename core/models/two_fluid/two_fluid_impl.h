@@ -8,6 +8,7 @@
 #include "core/config/expr.h"
 #include "core/io/output.h"
 #include "core/plugin/instance.h"
+#include "core/plugin/point_eval.h"
 #include "core/scene/scene.h"
 #include "core/time/model.h"
 #include "core/util/diag.h"
@@ -33,14 +34,12 @@ enum { TF_MAX_IN = 32 };
 enum { TF_WALL = 0, TF_INLET = 1, TF_OUTLET = 2 };
 enum { TF_LIMITER_MINMOD = 0, TF_LIMITER_MC = 1 };
 
-/* A closure with one varying input or two (phi, and slip for drag), the
- * others fixed by the scene; one output and its derivatives. */
+/* A closure of phi (and slip, for drag), the scene's constants bound
+ * (core/plugin/point_eval.h); one output and its derivative. */
 typedef struct tf_closure {
-  sl_closure *c;
-  int in_phi, in_slip, out; /* in_slip -1: none */
-  double fixed[TF_MAX_IN];
-  double *buf;
-  int cap;
+  sl_closure *c; /* the scene's; NULL: not in the scene */
+  sl_point_closure pc;
+  const char *out, *wrt; /* "K", "slip"; "p_s", "phi" */
 } tf_closure;
 
 typedef struct tf_column {

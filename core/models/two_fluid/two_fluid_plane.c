@@ -298,7 +298,7 @@ static void plane_accept(void *self, const sl_step *s, int *steady) {
 
 static void release(tfp_run *r) {
   free(r->cellbuf);
-  free(r->m.c.drag.buf), free(r->m.c.ps.buf);
+  sl_point_release(&r->m.c.drag.pc), sl_point_release(&r->m.c.ps.pc);
   tfp_free(&r->m);
   free(r);
 }

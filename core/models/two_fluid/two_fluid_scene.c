@@ -8,36 +8,26 @@
 #include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/kinds.h"
 
+/* The quantities the two_fluid model gives its drag and solids-pressure closures. */
+static const char *const quantities[] = {"phi", "slip", "rho_f", "mu_f", "rho_s", "d_p", "sphericity", "gravity"};
+
 static int bind_closure(const sl_scene *sc, const tf_column *c, const char *role, tf_closure *b, int with_slip,
                         const char *output, sl_diag *d) {
   b->c = sl_scene_closure(sc, role);
-  const sl_closure_desc *cd = b->c->desc;
+  char section[64];
+  snprintf(section, sizeof section, "closure.%s", role);
+  int rc = sl_point_bind(&b->pc, b->c, quantities, with_slip ? 8 : 8, section, "the two_fluid model", d);
+  if (rc) return rc;
   char label[128], where[300];
-  sl_closure_label(cd, label, sizeof label);
+  sl_closure_label(b->c->desc, label, sizeof label);
   sl_scene_closure_where(sc, role, where, sizeof where);
-  b->in_phi = sl_closure_input(cd, "phi");
-  b->in_slip = with_slip ? sl_closure_input(cd, "slip") : -1;
-  b->out = sl_closure_output(cd, output);
-  if (b->in_phi < 0 || (with_slip && b->in_slip < 0) || b->out < 0 || cd->n_in > TF_MAX_IN || cd->n_out > TF_MAX_IN)
+  if (!sl_point_has_input(&b->pc, "phi") || (with_slip && !sl_point_has_input(&b->pc, "slip")) ||
+      !sl_point_has_output(&b->pc, output) || (!with_slip && sl_point_has_input(&b->pc, "slip")))
     return sl_diag_set(d, SL_EBADINPUT, "%s %s does not give %s of phi%s", where, label, output,
                        with_slip ? " and slip" : "");
-  for (int i = 0; i < cd->n_in; ++i) {
-    const char *name = cd->in[i].name;
-    double v;
-    if (i == b->in_phi || i == b->in_slip) continue;
-    if (strcmp(name, "rho_f") == 0) v = c->rho_f;
-    else if (strcmp(name, "mu_f") == 0) v = c->mu_f;
-    else if (strcmp(name, "rho_s") == 0) v = c->rho_s;
-    else if (strcmp(name, "d_p") == 0) v = c->d_p;
-    else if (strcmp(name, "sphericity") == 0) v = c->sphericity;
-    else if (strcmp(name, "gravity") == 0) v = fabs(c->g);
-    else
-      return sl_diag_set(d, SL_EBADINPUT,
-                         "%s %s needs the input '%s', which the two_fluid model does not provide (it provides phi, "
-                         "slip, rho_f, mu_f, rho_s, d_p, sphericity, gravity)",
-                         where, label, name);
-    b->fixed[i] = v;
-  }
+  b->out = output, b->wrt = with_slip ? "slip" : "phi";
+  const double values[8] = {0.0, 0.0, c->rho_f, c->mu_f, c->rho_s, c->d_p, c->sphericity, fabs(c->g)};
+  for (int k = 2; k < 8; ++k) sl_point_constant(&b->pc, quantities[k], values[k]);
   return 0;
 }
 

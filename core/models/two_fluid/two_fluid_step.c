@@ -100,53 +100,9 @@ int tf_mixture_flux(tf_column *c, double t, double *j, sl_diag *d) {
 
 int tf_closure_eval(tf_closure *b, int n, const double *phi, const double *slip, double *value, double *dvalue,
                     sl_diag *d) {
-  const sl_closure_desc *c = b->c->desc;
-  int n_in = c->n_in, n_out = c->n_out;
-  int need = n * (n_in + n_out + n_out * n_in);
-  if (need > b->cap) {
-    double *nb = realloc(b->buf, (size_t)need * sizeof *nb);
-    if (!nb) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-    b->buf = nb, b->cap = need;
-  }
-  const double *in[TF_MAX_IN];
-  double *outs[TF_MAX_IN] = {0}, *dout[TF_MAX_IN * TF_MAX_IN] = {0}, *w = b->buf;
-  for (int i = 0; i < n_in; ++i) {
-    if (i == b->in_phi) in[i] = phi;
-    else if (i == b->in_slip) in[i] = slip;
-    else {
-      for (int k = 0; k < n; ++k) w[k] = b->fixed[i];
-      in[i] = w, w += n;
-    }
-  }
-  for (int k = 0; k < n_out; ++k)
-    if (k == b->out || !(c->out[k].flags & SL_FIELD_OPTIONAL)) outs[k] = w, w += n;
-  if (dvalue) /* a slot for every differentiable input of every output computed (ABI) */
-    for (int k = 0; k < n_out; ++k)
-      for (int i = 0; i < n_in && outs[k]; ++i)
-        if (c->in[i].flags & SL_FIELD_DIFF) dout[k * n_in + i] = w, w += n;
-  sl_error err;
-  sl_eval_args a = {.Q = n, .in = in, .out = outs, .dout = dvalue ? dout : NULL, .err = &err};
-  int rc = sl_closure_evaluate(b->c, &a);
-  if (rc) {
-    char label[128], where[128] = "";
-    sl_closure_label(c, label, sizeof label);
-    if (err.point >= 0 && err.point < n) {
-      if (b->in_slip >= 0)
-        snprintf(where, sizeof where, " at phi = %g, slip = %g", phi[err.point], slip[err.point]);
-      else
-        snprintf(where, sizeof where, " at phi = %g", phi[err.point]);
-    }
-    return sl_diag_set(d, SL_EFAILED, "closure %s %s%s: %s", label, rc > 0 ? "is outside its validity" : "failed",
-                       where, err.msg);
-  }
-  memcpy(value, outs[b->out], (size_t)n * sizeof *value);
-  if (dvalue) {
-    int wrt = b->in_slip >= 0 ? b->in_slip : b->in_phi;
-    const double *src = dout[b->out * n_in + wrt];
-    if (src) memcpy(dvalue, src, (size_t)n * sizeof *dvalue);
-    else memset(dvalue, 0, (size_t)n * sizeof *dvalue);
-  }
-  return 0;
+  const double *values[8] = {phi, slip};
+  sl_point_request rq = {b->out, value, dvalue, b->wrt};
+  return sl_point_eval(&b->pc, n, values, &rq, 1, d);
 }
 
 /* The limited slope of cell i (per metre) for a second-order face value:
