@@ -8,13 +8,7 @@
 
 #include "core/cli/cli.h"
 #include "core/cli/progress.h"
-#include "core/config/ini.h"
-#include "core/mesh/mesh.h"
-#include "core/models/run.h"
-#include "core/plugin/closure_ini.h"
-#include "core/plugin/instance.h"
-#include "core/plugin/kinds.h"
-#include "core/time/loop.h"
+#include "sluice/sluice.h"
 
 static const char run_usage[] =
     "usage: sluice run SCENE.ini [--set section.key=value]... [--print-config] [-o OUT.h5]\n"
@@ -54,13 +48,12 @@ static double percent(double part, double whole) { return whole > 0 ? 100.0 * pa
 
 /* `--profile`: what the run did and what it skipped, and where the CPU time
  * went (every line starts with "sluice: profile:"). */
-static void print_profile(FILE *f, const sl_run_result *res, const sl_registry *reg, double cpu_total) {
+static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, double cpu_total) {
   const char *p = "sluice: profile:";
-  const sl_model_stats *m = &res->model;
   if (m->matrix_assemblies + m->residual_assemblies > 0)
     fprintf(f, "%s assemblies: %ld matrix, %ld right-hand-side only (%.3g s)\n", p, m->matrix_assemblies,
             m->residual_assemblies, m->assembly);
-  const sl_linsolve_stats *ls = &m->linear;
+  const sluice_linear *ls = &m->linear;
   if (ls->n_symbolic + ls->n_numeric + ls->n_solves > 0)
     fprintf(f, "%s factorisations: %ld symbolic (%.3g s), %ld numeric (%.3g s; %ld of them refactorisations), %ld "
                "skipped (matrix unchanged); %ld solves (%.3g s)\n",
@@ -69,89 +62,65 @@ static void print_profile(FILE *f, const sl_run_result *res, const sl_registry *
   if (m->roundoff_accepted > 0)
     fprintf(f, "%s %ld nonlinear solve%s ended with the residual at round-off\n", p, m->roundoff_accepted,
             m->roundoff_accepted == 1 ? "" : "s");
-  /* closures: per descriptor that had an instance */
-  double closure_seconds = 0.0;
-  int n_closures = 0;
-  for (int i = 0; i < reg->n_libraries; ++i) {
-    const sl_library *lib = reg->libraries[i];
-    const char *base = strrchr(lib->path, '/');
-    for (int32_t k = 0; k < lib->n_closures; ++k) {
-      const sl_closure_usage *u = &lib->usage[k];
-      if (u->instances == 0) continue;
-      char label[128];
-      sl_closure_label(lib->closures[k], label, sizeof label);
-      fprintf(f, "%s closure %s (%s): %ld instance%s, %llu batched call%s, %llu points (%.1f per call), %.3g s\n", p,
-              label, base ? base + 1 : lib->path, u->instances, u->instances == 1 ? "" : "s", u->calls,
-              u->calls == 1 ? "" : "s", u->points, u->calls ? (double)u->points / (double)u->calls : 0.0, u->seconds);
-      closure_seconds += u->seconds;
-      ++n_closures;
-    }
-  }
-  if (n_closures == 0) fprintf(f, "%s closures: none evaluated\n", p);
-  fprintf(f, "%s plugins: %d of %d libraries on the search path loaded (%ld dlopen)", p, reg->n_libraries,
-          sl_registry_files_on_path(reg), reg->n_dlopen);
-  for (int i = 0; i < reg->n_libraries; ++i) {
-    const char *base = strrchr(reg->libraries[i]->path, '/');
-    fprintf(f, "%s%s", i ? ", " : ": ", base ? base + 1 : reg->libraries[i]->path);
-  }
-  fputc('\n', f);
-  if (res->output_times > 0)
-    fprintf(f, "%s output: %ld output times, %ld datasets, %.3g MB of field values\n", p, res->output_times,
-            res->output_datasets, res->output_bytes / 1e6);
-  double known = res->cpu_setup + m->cpu_flow + m->cpu_coupled + res->cpu_output;
+  sluice_print_closure_profile(sc, f, p, cpu_total);
+  if (m->output_times > 0)
+    fprintf(f, "%s output: %ld output times, %ld datasets, %.3g MB of field values\n", p, m->output_times,
+            m->output_datasets, m->output_bytes / 1e6);
+  double known = m->cpu_setup + m->cpu_flow + m->cpu_coupled + m->cpu_output;
   if (known > 0 && cpu_total > 0) {
     double other = cpu_total > known ? cpu_total - known : 0.0;
-    fprintf(f, "%s CPU %.3g s: set-up %.3g s (%.0f %%), flow solves %.3g s (%.0f %%)", p, cpu_total, res->cpu_setup,
-            percent(res->cpu_setup, cpu_total), m->cpu_flow, percent(m->cpu_flow, cpu_total));
+    fprintf(f, "%s CPU %.3g s: set-up %.3g s (%.0f %%), flow solves %.3g s (%.0f %%)", p, cpu_total, m->cpu_setup,
+            percent(m->cpu_setup, cpu_total), m->cpu_flow, percent(m->cpu_flow, cpu_total));
     if (m->cpu_coupled > 0)
       fprintf(f, ", solids transport %.3g s (%.0f %%)", m->cpu_coupled, percent(m->cpu_coupled, cpu_total));
-    fprintf(f, ", output %.3g s (%.0f %%), other %.3g s (%.0f %%)\n", res->cpu_output,
-            percent(res->cpu_output, cpu_total), other, percent(other, cpu_total));
+    fprintf(f, ", output %.3g s (%.0f %%), other %.3g s (%.0f %%)\n", m->cpu_output,
+            percent(m->cpu_output, cpu_total), other, percent(other, cpu_total));
   }
-  if (n_closures > 0)
-    fprintf(f, "%s closure calls took %.3g s, %.2g %% of the run's CPU time (wall clock inside the calls)\n", p,
-            closure_seconds, percent(closure_seconds, cpu_total));
 }
 
-static int simulate(sl_ini *ini, const sl_registry *reg, const sl_time_config *tc, const char *scene,
-                    const char *out_file, const char *restart, int profile, sl_diag *d) {
+static int simulate(sluice *sc, const char *scene, const char *out_file, const char *restart, int profile,
+                    sluice_error *e) {
   double t0, t1;
-  sl_time_span(tc, &t0, &t1);
+  int rc = sluice_time_span(sc, &t0, &t1, e);
+  if (rc) return rc;
   sl_progress prog;
   sl_progress_begin(&prog, stderr, t0, t1);
-  sl_run_opts o = {.scene_path = scene, .output = out_file, .restart = restart, .sluice_version = SLUICE_VERSION,
-                   .monitor = monitor, .monitor_user = &prog, .interrupt = &interrupted};
-  sl_run_result res;
+  sluice_run_opts o = {.scene_path = scene, .output = out_file, .restart = restart, .version = SLUICE_VERSION,
+                       .progress = monitor, .progress_user = &prog, .interrupt = &interrupted};
+  sluice_summary m;
   double w0 = sl_wall_seconds(), c0 = sl_cpu_seconds();
   void (*old)(int) = signal(SIGINT, on_sigint);
-  int rc = sl_model_run(ini, reg, &o, &res, d);
+  rc = sluice_run(sc, &o, &m, e);
   signal(SIGINT, old);
   sl_progress_end(&prog);
-  const sl_model_stats *m = &res.model;
-  sl_run_summary s = {.steps = res.steps, .rejected_steps = res.rejected_steps,
-                      .nonlinear_iterations = res.nonlinear_iterations,
-                      .nonlinear_name = m->used_picard ? "Newton/Picard" : "Newton",
+  sl_run_summary s = {.steps = m.steps, .rejected_steps = m.rejected_steps,
+                      .nonlinear_iterations = m.nonlinear_iterations,
+                      .nonlinear_name = m.used_picard ? "Newton/Picard" : "Newton",
                       .wall_seconds = sl_wall_seconds() - w0, .cpu_seconds = sl_cpu_seconds() - c0,
-                      .assembly = m->assembly, .factorisation = res.factorisation, .solve = res.solve,
-                      .output = res.output, .step_limit = res.step_limit};
-  if (rc != SL_EBADINPUT) {
+                      .assembly = m.assembly, .factorisation = m.factorisation, .solve = m.solve,
+                      .output = m.output, .step_limit = m.step_limit};
+  if (rc != SLUICE_BAD_INPUT) {
     char line[512];
     sl_run_summary_format(&s, line, sizeof line);
     fprintf(stderr, "%s\n", line);
-    if (m->coupling_summary[0]) fprintf(stderr, "sluice: %s\n", m->coupling_summary);
-    if (res.output_path[0]) {
-      fprintf(stderr, "sluice: output %s (%s", res.output_path, m->linear_summary);
+    if (m.coupling_summary[0]) fprintf(stderr, "sluice: %s\n", m.coupling_summary);
+    if (m.output_path[0]) {
+      fprintf(stderr, "sluice: output %s (%s", m.output_path, m.linear_summary);
       /* what was skipped shows in the counts: a constant matrix is assembled once */
-      if (m->matrix_assemblies + m->residual_assemblies > 0)
-        fprintf(stderr, "; assemblies: %ld matrix, %ld right-hand-side only", m->matrix_assemblies,
-                m->residual_assemblies);
+      if (m.matrix_assemblies + m.residual_assemblies > 0)
+        fprintf(stderr, "; assemblies: %ld matrix, %ld right-hand-side only", m.matrix_assemblies,
+                m.residual_assemblies);
       fputs(")\n", stderr);
     }
-    if (res.stop_reason[0]) fprintf(stderr, "sluice: %s\n", res.stop_reason);
-    if (profile) print_profile(stderr, &res, reg, s.cpu_seconds);
+    if (m.stop_reason[0]) fprintf(stderr, "sluice: %s\n", m.stop_reason);
+    if (profile) print_profile(stderr, sc, &m, s.cpu_seconds);
   }
-  if (rc == SL_EFAILED && res.output_path[0])
-    sl_diag_prefix(d, rc, "run failed at t = %g; last state saved in %s", res.t_reached, res.output_path);
+  if (rc == SLUICE_FAILED && m.output_path[0]) {
+    char msg[sizeof e->msg];
+    snprintf(msg, sizeof msg, "run failed at t = %g; last state saved in %.900s: %.1000s", m.t_reached, m.output_path,
+             e->msg);
+    memcpy(e->msg, msg, sizeof msg);
+  }
   return rc;
 }
 
@@ -192,56 +161,23 @@ int sl_cmd_run(int argc, char **argv) {
   }
   if (!scene) return sl_cli_error(SL_EBADINPUT, "run: which scene?\n%s", run_usage);
 
-  sl_diag d;
-  sl_ini *ini = NULL;
-  sl_registry *reg = NULL;
-  sl_scene *sc = NULL;
-  const sl_model_entry *entry = NULL;
-  char **dirs = NULL;
-  int n_dirs = 0, rc;
-  if ((rc = sl_ini_parse_file(scene, &ini, &d))) goto fail;
-  for (int i = 0; i < n_sets; ++i)
-    if ((rc = sl_ini_apply_override(ini, sets[i], &d))) goto fail;
-  if ((rc = sl_plugin_dirs_from_ini(ini, &dirs, &n_dirs, &d))) goto fail;
-  /* Only the libraries of the closures the scene names are loaded. */
-  if ((rc = sl_registry_create(&reg, (const char *const *)dirs, n_dirs, &d))) goto fail;
-  if ((rc = sl_registry_index(reg, &d))) goto fail;
-  if (profile) sl_registry_set_timing(reg, 1);
-  /* The whole scene is checked first (bad input: exit 2, nothing written): every section and key against the
-   * model's schema, each closure against its own; --check also builds the mesh and creates the closures. */
-  if ((rc = sl_model_scene(ini, reg, check_only && !print_config, check_only && !print_config, &entry, &sc, &d)))
-    goto fail;
-  if (print_config) {
-    if (sl_ini_write(ini, stdout)) rc = sl_diag_set(&d, SL_EFAILED, "cannot write the configuration");
-    goto fail;
+  sluice *sc = NULL;
+  sluice_error e = {0, ""};
+  const char *set_list[MAX_SETS + 1];
+  for (int i = 0; i < n_sets; ++i) set_list[i] = sets[i];
+  set_list[n_sets] = NULL;
+  sluice_open_opts oo = {.sets = set_list, .timing = profile};
+  int rc = sluice_open(scene, &oo, &sc, &e);
+  if (!rc && print_config) {
+    /* the keys and the closures are checked first (bad input: exit 2, nothing printed) */
+    double t0, t1;
+    if (!(rc = sluice_time_span(sc, &t0, &t1, &e))) rc = sluice_write_config(sc, stdout, &e);
+  } else if (!rc && check_only) {
+    rc = sluice_check(sc, stdout, &e);
+  } else if (!rc) {
+    rc = simulate(sc, scene, out_file, restart, profile, &e);
   }
-  if (check_only) {
-    /* every check a run makes before it writes anything: the model's own set-up too */
-    void *self = NULL;
-    sl_model_info info;
-    if ((rc = entry->ops->setup(&self, sc, &info, &d))) goto fail;
-    entry->ops->destroy(self);
-    int n_closures = 0;
-    for (int r = 0; r < entry->schema->n_roles; ++r) n_closures += sc->closures[r] != NULL;
-    printf("%s: scene valid; %d closure%s resolved\n", scene, n_closures, n_closures == 1 ? "" : "s");
-    for (int r = 0; r < entry->schema->n_roles; ++r) {
-      const sl_closure *cl = sc->closures[r];
-      if (!cl) continue;
-      const sl_closure_desc *c = cl->desc;
-      printf("  %-18s %-24s %s (%s)\n", sl_kind_name(c->kind), c->name, c->version, cl->library->path);
-    }
-    /* the mesh is built and checked too, and its report says where the cells are finest */
-    if (sc->mesh) sl_mesh_print_report(sc->mesh, stdout);
-    goto fail;
-  }
-  sl_time_config tc = sc->time;
-  sl_scene_free(sc), sc = NULL;
-  rc = simulate(ini, reg, &tc, scene, out_file, restart, profile, &d);
-fail:
-  sl_scene_free(sc);
-  sl_registry_destroy(reg);
-  sl_plugin_dirs_free(dirs, n_dirs);
-  sl_ini_free(ini);
-  if (rc) fprintf(stderr, "%s\n", d.msg);
+  sluice_close(sc);
+  if (rc) fprintf(stderr, "%s\n", e.msg);
   return rc;
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs sluice into a scratch prefix, builds examples/my_closure against
 # it as a third party would, and uses the closure by name through
-# SLUICE_PLUGIN_PATH. Arguments: BUILD_DIR SOURCE_DIR WORK_DIR.
+# SLUICE_PLUGIN_PATH; builds examples/embed against the installed library
+# and runs a scene through it. Arguments: BUILD_DIR SOURCE_DIR WORK_DIR.
 set -eu
 build=$1 src=$2 work=$3
 rm -rf "$work"; mkdir -p "$work"
@@ -21,5 +22,15 @@ check "listed with the path" '"$sluice" closures | grep -q "^viscosity *my_power
 out=$("$sluice" closure eval my_power_law --set consistency=0.5 --set n=0.6 --at "shear_rate=32")
 check "evaluated by name: 0.5 * 32^-0.4 = 0.125" '[ "$(tail -n 1 <<<"$out")" = "32,0.125" ]'
 check "passes the conformance battery" '"$sluice" check-closure "$work/example/my_closure.so" > "$work/check.log"'
+# A program embedding the core through sluice/sluice.h, built with the installed pkg-config file: the Stokes
+# cavity in 4 fixed BDF1 steps of 0.1 to t = 0.4.
+export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig:$work/prefix/lib64/pkgconfig:$work/prefix/lib/x86_64-linux-gnu/pkgconfig"
+unset SLUICE_PLUGIN_PATH
+check "embedding program builds with pkg-config" \
+  'cc "$src/examples/embed/embed.c" $(pkg-config --cflags --libs sluice) -o "$work/embed" 2> "$work/embed_build.log"'
+out=$("$work/embed" "$src/configs/cavity_stokes.ini" "$work/embed.h5" mesh.cells=4 time.scheme=bdf1 time.adaptive=false \
+      time.dt=0.1 time.end=0.4 output.every=0 2>&1 || true)
+check "embedded run: 4 steps, each seen by the progress callback" 'grep -q "4 steps (4 seen by the progress callback), 0 rejected; reached the end time t = 0.4" <<<"$out"'
+check "embedded run: its output file, two output times" 'grep -q "embed.h5: 2 output times" <<<"$out"'
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

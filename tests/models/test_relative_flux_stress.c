@@ -28,7 +28,7 @@
 #include <string.h>
 
 #include "core/assembly/flow.h"
-#include "core/models/run.h"
+#include "sluice/sluice.h"
 #include "core/io/output.h"
 #include "core/mesh/mesh.h"
 #include "core/models/mixture/mixture.h"
@@ -185,17 +185,15 @@ static const column columns[3] = {
  * be NULL), validates it and runs it through the mixture model into `out`,
  * from the last checkpoint of `restart` (NULL: from the start). */
 static int run_text(const char *text, const char *const *sets, const char *out, const char *restart, sl_diag *d) {
-  sl_ini *ini = NULL;
-  sl_registry *reg = NULL;
-  sl_run_result res;
-  sl_run_opts o = {.scene_path = "column.ini", .output = out, .restart = restart, .sluice_version = "test"};
-  int rc = sl_ini_parse_string(text, strlen(text), "column.ini", &ini, d);
-  for (int i = 0; sets && sets[i] && !rc; ++i) rc = sl_ini_apply_override(ini, sets[i], d);
-  if (!rc) rc = sl_registry_create(&reg, NULL, 0, d);
-  if (!rc) rc = sl_registry_scan(reg, d);
-  if (!rc) rc = sl_model_run(ini, reg, &o, &res, d);
-  sl_registry_destroy(reg);
-  sl_ini_free(ini);
+  sluice *s = NULL;
+  sluice_error e = {0, ""};
+  sluice_summary res;
+  sluice_open_opts oo = {.sets = sets, .scan_all = 1};
+  sluice_run_opts o = {.scene_path = "column.ini", .output = out, .restart = restart, .version = "test"};
+  int rc = sluice_open_text(text, strlen(text), "column.ini", &oo, &s, &e);
+  if (!rc) rc = sluice_run(s, &o, &res, &e);
+  sluice_close(s);
+  if (rc) sl_diag_set(d, rc, "%s", e.msg);
   return rc;
 }
 

@@ -1,18 +1,14 @@
-/* Runs a scene of configs/ through a model's entry point, as `sluice run`
- * does (parse, overrides, validation, closure registry), for the scene
- * tests. */
+/* Runs a scene of configs/ as `sluice run` does (parse, overrides,
+ * validation, closures, the model), through the embedding API, for the
+ * scene tests. */
 #ifndef SLUICE_TESTS_SCENES_SCENE_RUNNER_H
 #define SLUICE_TESTS_SCENES_SCENE_RUNNER_H
 
 #include <stdio.h>
 #include <string.h>
 
-#include "core/models/run.h"
-#include "core/models/navier_stokes/navier_stokes.h"
-#include "core/plugin/closure_ini.h"
-
-typedef int (*scene_model_run)(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_run_result *res,
-                               sl_diag *d);
+#include "core/util/diag.h"
+#include "sluice/sluice.h"
 
 typedef struct scene_request {
   const char *configs;         /* folder of the scene files */
@@ -24,11 +20,12 @@ typedef struct scene_request {
   const char *restart;     /* checkpoint to continue from (NULL: start) */
 } scene_request;
 
-static inline int scene_run(const scene_request *q, scene_model_run run, sl_run_result *res, sl_diag *d) {
+static inline int scene_run(const scene_request *q, sluice_summary *res, sl_diag *d) {
   char path[4200];
   snprintf(path, sizeof path, "%s/%s.ini", q->configs, q->scene);
-  sl_ini *ini = NULL;
-  sl_registry *reg = NULL;
+  sluice *s = NULL;
+  sluice_error e = {0, ""};
+  sluice_open_opts oo = {.sets = q->sets, .scan_all = 1};
   int rc;
   if (q->replace_section) {
     static char text[1 << 16], edited[1 << 16];
@@ -41,31 +38,28 @@ static inline int scene_run(const scene_request *q, scene_model_run run, sl_run_
     char *a = strstr(text, head), *b = a ? strstr(a + 1, "\n[") : NULL;
     if (!a) return sl_diag_set(d, SL_EBADINPUT, "%s: no section %s", path, head);
     snprintf(edited, sizeof edited, "%.*s%s%s", (int)(a - text), text, q->replacement, b ? b : "");
-    rc = sl_ini_parse_string(edited, strlen(edited), path, &ini, d);
+    rc = sluice_open_text(edited, strlen(edited), path, &oo, &s, &e);
   } else {
-    rc = sl_ini_parse_file(path, &ini, d);
+    rc = sluice_open(path, &oo, &s, &e);
   }
-  for (int i = 0; q->sets && q->sets[i] && !rc; ++i) rc = sl_ini_apply_override(ini, q->sets[i], d);
-  if (!rc) rc = sl_registry_create(&reg, NULL, 0, d);
-  if (!rc) rc = sl_registry_scan(reg, d);
-  sl_run_result r;
-  sl_run_opts o = {.scene_path = path, .output = q->out, .restart = q->restart, .sluice_version = "test"};
-  if (!rc) rc = run(ini, reg, &o, res ? res : &r, d);
-  sl_registry_destroy(reg);
-  sl_ini_free(ini);
+  sluice_summary r;
+  sluice_run_opts o = {.scene_path = path, .output = q->out, .restart = q->restart, .version = "test"};
+  if (!rc) rc = sluice_run(s, &o, res ? res : &r, &e);
+  sluice_close(s);
+  if (rc) sl_diag_set(d, rc, "%s", e.msg);
   return rc;
 }
 
 /* Defines, for a test file with `static char configs[]` and testing.h:
  *   run_scene(scene, replace_section, replacement, sets, out, d): 0 or the error (d set);
  *   run_ok(scene, replace_section, replacement, sets, out): the same, a failure counted as a failed check;
- * both with the model entry point `model`. */
-#define SCENE_RUNNERS(model)                                                                                          \
+ * (the model is the scene's). */
+#define SCENE_RUNNERS()                                                                                               \
   static int run_scene(const char *scene, const char *replace_section, const char *replacement,                      \
                        const char *const *sets, const char *out, sl_diag *d) {                                        \
     scene_request q = {.configs = configs, .scene = scene, .replace_section = replace_section,                        \
                        .replacement = replacement, .sets = sets, .out = out};                                         \
-    return scene_run(&q, model, NULL, d);                                                                             \
+    return scene_run(&q, NULL, d);                                                                                    \
   }                                                                                                                   \
   static int run_ok(const char *scene, const char *section, const char *replacement, const char *const *sets,        \
                     const char *out) {                                                                                \

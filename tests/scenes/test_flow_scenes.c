@@ -22,11 +22,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/models/run.h"
 #include "core/io/output.h"
 #include "core/io/sample.h"
-#include "core/models/navier_stokes/navier_stokes.h"
-#include "core/plugin/closure_ini.h"
 #include "scene_runner.h"
 #include "testing.h"
 
@@ -34,10 +31,10 @@ static char configs[4096];
 
 /* Runs configs/<scene>.ini with overrides into out; returns the code. */
 static int run_scene(const char *scene, const char *const *sets, const char *out, const char *restart,
-                     sl_run_result *res) {
+                     sluice_summary *res) {
   sl_diag d = {{0}};
   scene_request q = {.configs = configs, .scene = scene, .sets = sets, .out = out, .restart = restart};
-  int rc = scene_run(&q, sl_model_run, res, &d);
+  int rc = scene_run(&q, res, &d);
   CHECK_MSG(rc == 0, "%s: %s", scene, d.msg);
   return rc;
 }
@@ -105,12 +102,12 @@ static void cavity_stokes(void) {
     snprintf(set, sizeof set, "mesh.cells=%d", ns[k]);
     snprintf(out, sizeof out, "stokes_%d.h5", ns[k]);
     const char *sets[] = {set, NULL};
-    sl_run_result res;
+    sluice_summary res;
     if (run_scene("cavity_stokes", sets, out, NULL, &res)) return;
     CHECK_MSG(res.nonlinear_iterations == 1, "Stokes cavity: %ld solves for a linear problem", res.nonlinear_iterations);
-    CHECK_MSG(res.model.matrix_assemblies == 1 && res.model.residual_assemblies == 0,
-              "Stokes cavity: %ld matrix and %ld residual assemblies for one linear solve", res.model.matrix_assemblies,
-              res.model.residual_assemblies);
+    CHECK_MSG(res.matrix_assemblies == 1 && res.residual_assemblies == 0,
+              "Stokes cavity: %ld matrix and %ld residual assemblies for one linear solve", res.matrix_assemblies,
+              res.residual_assemblies);
     m[k] = centreline_min(out);
     printf("Stokes cavity n = %2d: min u on x = 1/2 (401 samples) %.6f\n", ns[k], m[k]);
   }
@@ -273,14 +270,14 @@ static int read_velocity(const char *file, sl_output_field *f) {
 static void single_factorisation(void) {
   const char *sets[] = {"time.scheme=bdf1", "time.adaptive=false", "time.dt=0.01", "time.end=0.1",
                         "output.every=0", NULL};
-  sl_run_result res;
+  sluice_summary res;
   if (run_scene("diffusion_1d", sets, "one_factor.h5", NULL, &res)) return;
   printf("constant coefficients: %ld steps, %ld matrix assemblies, %ld right-hand sides, %s\n", res.steps,
-         res.model.matrix_assemblies, res.model.residual_assemblies, res.model.linear_summary);
+         res.matrix_assemblies, res.residual_assemblies, res.linear_summary);
   CHECK(res.steps == 10);
-  CHECK_CONTAINS(res.model.linear_summary, " 1 numeric");
-  CHECK_MSG(res.model.matrix_assemblies == 1 && res.model.residual_assemblies == 9, "%ld matrix, %ld residual-only assemblies",
-            res.model.matrix_assemblies, res.model.residual_assemblies);
+  CHECK_CONTAINS(res.linear_summary, " 1 numeric");
+  CHECK_MSG(res.matrix_assemblies == 1 && res.residual_assemblies == 9, "%ld matrix, %ld residual-only assemblies",
+            res.matrix_assemblies, res.residual_assemblies);
 }
 
 /* The Stokes cavity (n = 8) from rest, BDF1 with dt = 0.05 to t = 3, the
@@ -291,14 +288,14 @@ static void single_factorisation(void) {
 static void constant_coefficient_steps(void) {
   const char *sets[] = {"mesh.cells=8", "time.scheme=bdf1", "time.adaptive=false", "time.dt=0.05", "time.end=3",
                         "output.every=0", "boundary.top.velocity=min(1, t), 0", NULL};
-  sl_run_result res;
+  sluice_summary res;
   if (run_scene("cavity_stokes", sets, "stokes_8_steps.h5", NULL, &res)) return;
   printf("Stokes cavity, ramped lid: %ld steps, %ld matrix assemblies, %ld right-hand sides, %s\n", res.steps,
-         res.model.matrix_assemblies, res.model.residual_assemblies, res.model.linear_summary);
+         res.matrix_assemblies, res.residual_assemblies, res.linear_summary);
   CHECK(res.steps == 60);
-  CHECK_CONTAINS(res.model.linear_summary, " 1 numeric");
-  CHECK_MSG(res.model.matrix_assemblies == 1 && res.model.residual_assemblies == 59, "%ld matrix, %ld residual-only assemblies",
-            res.model.matrix_assemblies, res.model.residual_assemblies);
+  CHECK_CONTAINS(res.linear_summary, " 1 numeric");
+  CHECK_MSG(res.matrix_assemblies == 1 && res.residual_assemblies == 59, "%ld matrix, %ld residual-only assemblies",
+            res.matrix_assemblies, res.residual_assemblies);
   sl_output_field a, b;
   if (read_velocity("stokes_8_steps.h5", &a)) return;
   if (read_velocity("stokes_8.h5", &b) == 0) {
@@ -315,15 +312,15 @@ static void constant_coefficient_steps(void) {
                          "output.every=0", "boundary.top.velocity=min(1, 4*t), 0", NULL};
   const char *part[] = {"mesh.cells=8", "time.scheme=bdf2", "time.adaptive=false", "time.dt=0.05", "time.end=0.5",
                         "output.every=0", "boundary.top.velocity=min(1, 4*t), 0", "time.max_steps=4", NULL};
-  sl_run_result r1, r2, r3;
+  sluice_summary r1, r2, r3;
   if (run_scene("cavity_stokes", whole, "kept_whole.h5", NULL, &r1) ||
       run_scene("cavity_stokes", part, "kept_first.h5", NULL, &r2) ||
       run_scene("cavity_stokes", whole, "kept_second.h5", "kept_first.h5", &r3))
     return;
   /* BDF2 starts with a BDF1 step: two mass coefficients, two matrices; the restart assembles one more */
-  CHECK_MSG(r1.steps == 10 && r1.model.matrix_assemblies == 2 && r3.steps == 10 && r3.model.matrix_assemblies == 1,
+  CHECK_MSG(r1.steps == 10 && r1.matrix_assemblies == 2 && r3.steps == 10 && r3.matrix_assemblies == 1,
             "%ld steps, %ld matrix assemblies; restarted: %ld steps, %ld matrix assemblies", r1.steps,
-            r1.model.matrix_assemblies, r3.steps, r3.model.matrix_assemblies);
+            r1.matrix_assemblies, r3.steps, r3.matrix_assemblies);
   if (read_velocity("kept_whole.h5", &a)) return;
   if (read_velocity("kept_second.h5", &b) == 0) {
     CHECK_MSG(a.n == b.n && a.time == b.time &&
@@ -335,7 +332,7 @@ static void constant_coefficient_steps(void) {
 }
 
 static void restart(void) {
-  sl_run_result a, b, c;
+  sluice_summary a, b, c;
   const char *full[] = {"time.adaptive=true", NULL};
   const char *part[] = {"time.adaptive=true", "time.max_steps=5", NULL};
   if (run_scene("diffusion_1d", full, "whole.h5", NULL, &a) || run_scene("diffusion_1d", part, "first.h5", NULL, &b) ||

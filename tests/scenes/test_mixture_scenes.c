@@ -39,11 +39,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/models/run.h"
 #include "core/io/output.h"
 #include "core/io/sample.h"
-#include "core/models/mixture/mixture.h"
-#include "core/plugin/closure_ini.h"
 #include "scene_runner.h"
 #include "testing.h"
 #include "core/verify/kynch_exact.h"
@@ -52,7 +49,7 @@
 
 static char configs[4096];
 
-SCENE_RUNNERS(sl_model_run)
+SCENE_RUNNERS()
 
 static double scalar(const char *file, const char *name, double t) {
   sl_diag d = {{0}};

@@ -24,14 +24,13 @@
 #include <string.h>
 
 #include "core/io/output.h"
-#include "core/models/two_fluid/two_fluid.h"
 #include "kinetic_reference.h"
 #include "scene_runner.h"
 #include "testing.h"
 
 static char configs[4096];
 
-SCENE_RUNNERS(sl_model_run)
+SCENE_RUNNERS()
 
 static const double PI = 3.14159265358979323846;
 
@@ -67,7 +66,7 @@ static int run_text(const char *name, const char *text, const char *const *sets,
   fputs(text, f);
   fclose(f);
   scene_request q = {.configs = ".", .scene = name, .sets = sets, .out = out, .restart = restart};
-  return scene_run(&q, sl_model_run, NULL, d);
+  return scene_run(&q, NULL, d);
 }
 
 /* ---- ktgf_shear ------------------------------------------------------------------ */
@@ -297,7 +296,7 @@ static void restart(void) {
   sl_diag d = {{0}};
   scene_request q = {.configs = configs, .scene = "shear_cell", .sets = full, .out = "cell_cont.h5",
                      .restart = "cell_half.h5"};
-  int rc = scene_run(&q, sl_model_run, NULL, &d);
+  int rc = scene_run(&q, NULL, &d);
   CHECK_MSG(rc == 0, "restart: %s", d.msg);
   const char *fields[3] = {"velocity_fluid", "velocity_solid", "theta"};
   for (int f = 0; f < 3 && rc == 0; ++f) {

@@ -27,7 +27,6 @@
 #include <string.h>
 
 #include "core/io/output.h"
-#include "core/models/two_fluid/two_fluid.h"
 #include "scene_fields.h"
 #include "scene_runner.h"
 #include "testing.h"
@@ -35,7 +34,7 @@
 static char configs[4096], local[4096];
 static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): a shorter T1 step, the planar bed only, no blow-out */
 
-SCENE_RUNNERS(sl_model_run)
+SCENE_RUNNERS()
 
 /* ---- one column against the 1-D model ------------------------------------------ */
 
@@ -161,7 +160,7 @@ static double duct_gradient(const char *scene, int n_across, int n_along, int ax
   const char *out = "tf2_duct.h5";
   sl_diag d = {{0}};
   scene_request q = {.configs = local, .scene = scene, .sets = sets, .out = out};
-  if (scene_run(&q, sl_model_run, NULL, &d)) {
+  if (scene_run(&q, NULL, &d)) {
     CHECK_MSG(0, "%s: %s", scene, d.msg);
     return NAN;
   }
@@ -206,10 +205,10 @@ static void blow_out(void) {
   const char *sets[] = {"boundary.bottom.velocity=t <= 0 ? 0.01 : 0.5", "time.dt=0.1", "time.end=10",
                         "output.every=1", "two_fluid.steady_tolerance=0", NULL};
   const char *out = "tf2_blow.h5";
-  sl_run_result res;
+  sluice_summary res;
   sl_diag d = {{0}};
   scene_request q = {.configs = configs, .scene = "fluidized_bed_2d", .sets = sets, .out = out};
-  int rc = scene_run(&q, sl_model_run, &res, &d);
+  int rc = scene_run(&q, &res, &d);
   CHECK_MSG(rc == 0, "blow-out: %s", d.msg);
   if (rc) return;
   int ns = 0, bad = 0;
@@ -228,7 +227,7 @@ static void blow_out(void) {
   }
   double left = scalar(out, "solids_inventory", times[ns - 1]);
   printf("  blow-out (2-D, U 0.01 -> 0.5 m/s, dt = 0.1 s): conservation within %.1e, solids left %.1e m^2 of "
-         "%.4f; %s\n", worst, left, 0.05 * 0.3 * 0.4, res.model.coupling_summary);
+         "%.4f; %s\n", worst, left, 0.05 * 0.3 * 0.4, res.coupling_summary);
   CHECK_MSG(bad == 0, "blow-out: %d values outside [0, phi_max] or not finite", bad);
   CHECK_MSG(worst < 1e-12, "blow-out: conservation error %.3g", worst);
   CHECK_MSG(left < 1e-9 * 0.006, "blow-out: %.3g m^2 of solids left", left);
@@ -244,7 +243,7 @@ static void restart(void) {
   sl_diag d = {{0}};
   scene_request q = {.configs = configs, .scene = "fluidized_bed_2d", .sets = full, .out = "tf2_cont.h5",
                      .restart = "tf2_half.h5"};
-  int rc = scene_run(&q, sl_model_run, NULL, &d);
+  int rc = scene_run(&q, NULL, &d);
   CHECK_MSG(rc == 0, "restart: %s", d.msg);
   const char *fields[4] = {"phi", "velocity_solid", "velocity_fluid", "pressure"};
   for (int f = 0; f < 4 && rc == 0; ++f) {

@@ -19,7 +19,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/models/two_fluid/two_fluid.h"
 #include "scene_fields.h"
 #include "scene_runner.h"
 #include "testing.h"
@@ -27,7 +26,7 @@
 static char configs[4096];
 static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): 16 and 32 cells */
 
-SCENE_RUNNERS(sl_model_run)
+SCENE_RUNNERS()
 
 /* The largest errors of the pressure (against the datum of cell 0) and of the fluid's velocity at t = 0.1 on n x n
  * cells, with convection or without. */

@@ -47,7 +47,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/models/two_fluid/two_fluid.h"
 #include "kinetic_reference.h"
 #include "scene_fields.h"
 #include "scene_runner.h"
@@ -56,7 +55,7 @@
 static char configs[4096];
 static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): 10 and 20 cells, no start from rest, one frame */
 
-SCENE_RUNNERS(sl_model_run)
+SCENE_RUNNERS()
 
 /* ---- couette_slip ------------------------------------------------------------------ */
 
@@ -243,7 +242,7 @@ static double transported_theta(const char *dt, const char *end, const char *res
   scene_request q = {.configs = configs, .scene = "two_fluid_2d/kinetic_shear", .sets = sets, .out = out,
                      .restart = restart};
   sl_diag d = {{0}};
-  if (scene_run(&q, sl_model_run, NULL, &d)) {
+  if (scene_run(&q, NULL, &d)) {
     CHECK_MSG(0, "kinetic_shear, transported theta: %s", d.msg);
     return NAN;
   }

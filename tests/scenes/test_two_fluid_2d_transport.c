@@ -28,7 +28,6 @@
 
 #include "core/io/output.h"
 #include "core/mesh/mesh.h"
-#include "core/models/two_fluid/two_fluid.h"
 #include "scene_fields.h"
 #include "scene_runner.h"
 #include "testing.h"
@@ -36,7 +35,7 @@
 static char configs[4096], local[4096];
 static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): a shorter T1 step, no blow-out */
 
-SCENE_RUNNERS(sl_model_run)
+SCENE_RUNNERS()
 
 static const char *const limiters[2] = {"minmod", "mc"};
 
@@ -91,7 +90,7 @@ static const char *t1_2d(int along_x, const char *const *extra, const char *out)
   if (along_x) {
     sl_diag d = {{0}};
     scene_request q = {.configs = local, .scene = "column_x", .sets = sets, .out = out};
-    int rc = scene_run(&q, sl_model_run, NULL, &d);
+    int rc = scene_run(&q, NULL, &d);
     CHECK_MSG(rc == 0, "column_x: %s", d.msg);
     return rc ? NULL : out;
   }
@@ -170,7 +169,7 @@ static double pulse_error(int n, int order, int limiter, const char *grading, in
   scene_request q = {.configs = local, .scene = way == PERIODIC ? "pulse_periodic" : "pulse", .sets = sets,
                      .out = out};
   if (way == BACKWARD) q.replace_section = "boundary.left", q.replacement = "[boundary.left]\ntype = outlet\n";
-  if (scene_run(&q, sl_model_run, NULL, &d)) {
+  if (scene_run(&q, NULL, &d)) {
     CHECK_MSG(0, "pulse: %s", d.msg);
     return NAN;
   }
@@ -308,17 +307,17 @@ static void blow_out(void) {
                         "output.every=0.5", "two_fluid.steady_tolerance=0", "two_fluid.order=2",
                         "two_fluid.limiter=mc", NULL};
   const char *out = "tf2t_blow.h5";
-  sl_run_result res;
+  sluice_summary res;
   sl_diag d = {{0}};
   scene_request q = {.configs = configs, .scene = "fluidized_bed_2d", .sets = sets, .out = out};
-  int rc = scene_run(&q, sl_model_run, &res, &d);
+  int rc = scene_run(&q, &res, &d);
   CHECK_MSG(rc == 0, "blow-out: %s", d.msg);
   if (rc) return;
   double worst, pmax, left;
   int full;
   if (bounded(out, "blow-out", &worst, &pmax, &full, &left)) return;
   printf("  blow-out (order 2, mc, U 0.01 -> 0.5 m/s, dt = 0.02 s): conservation within %.1e, max phi %.4f, solids "
-         "left %.1e m^2 of %.4f; %s\n", worst, pmax, left, 0.05 * 0.3 * 0.4, res.model.coupling_summary);
+         "left %.1e m^2 of %.4f; %s\n", worst, pmax, left, 0.05 * 0.3 * 0.4, res.coupling_summary);
   CHECK_MSG(left < 1e-9 * 0.006, "blow-out: %.3g m^2 of solids left", left);
 }
 

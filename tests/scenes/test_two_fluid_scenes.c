@@ -35,10 +35,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/models/run.h"
 #include "core/io/output.h"
-#include "core/models/two_fluid/two_fluid.h"
-#include "core/plugin/closure_ini.h"
 #include "scene_fields.h"
 #include "scene_runner.h"
 #include "testing.h"
@@ -46,7 +43,7 @@
 static char configs[4096];
 static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): no refined runs */
 
-SCENE_RUNNERS(sl_model_run)
+SCENE_RUNNERS()
 
 static const double g = 9.81;
 
@@ -757,17 +754,17 @@ static void blow_out(void) {
     const char *sets[] = {runs[k].dt, runs[k].end, "output.every=1", "output.fields=phi,velocity_solid",
                           "two_fluid.steady_tolerance=0", runs[k].velocity, NULL};
     const char *inlet = "[boundary.left]\ntype = inlet\nvelocity = t <= 0 ? 0.0111 : 0.5\n";
-    sl_run_result res;
+    sluice_summary res;
     sl_diag d = {{0}};
     scene_request q = {.configs = configs, .scene = runs[k].scene, .replace_section = runs[k].velocity ? NULL :
                        "boundary.left", .replacement = inlet, .sets = sets, .out = out};
-    int rc = scene_run(&q, sl_model_run, &res, &d);
+    int rc = scene_run(&q, &res, &d);
     CHECK_MSG(rc == 0, "blow-out %s %s: %s", runs[k].scene, runs[k].dt, d.msg);
     double left = NAN;
     if (rc || bounded_and_conserved(out, runs[k].scene, &left)) continue;
     printf("  blow-out %s, %s, %s: solids left %.1e m of %.4f; %s\n", runs[k].scene,
            runs[k].velocity ? runs[k].velocity + 23 : "nylon to 0.5 m/s", runs[k].dt, left, runs[k].solids,
-           res.model.coupling_summary);
+           res.coupling_summary);
     CHECK_MSG(left < 1e-9 * runs[k].solids, "blow-out %s: %.3g m of solids left in the column", runs[k].scene, left);
   }
   const char *nan_sets[] = {"boundary.left.velocity=t <= 0 ? 0.0077783 : t > 2 ? log(-1) : 0.5", "time.dt=0.1",
@@ -792,7 +789,7 @@ static void restart(void) {
   sl_diag d = {{0}};
   scene_request q = {.configs = configs, .scene = "fluidization_step", .sets = full, .out = "tf_cont.h5",
                      .restart = "tf_half.h5"};
-  int rc = scene_run(&q, sl_model_run, NULL, &d);
+  int rc = scene_run(&q, NULL, &d);
   CHECK_MSG(rc == 0, "restart: %s", d.msg);
   const char *fields[4] = {"phi", "velocity_solid", "velocity_fluid", "pressure"};
   for (int f = 0; f < 4 && rc == 0; ++f) {

@@ -15,7 +15,7 @@ static char configs[4096];
 
 /* Opens configs/<scene>.ini with overrides, runs it into out; the case stays
  * open (its registry says what was loaded). */
-static int run(scene_case *c, const char *scene, const char *const *sets, const char *out, sl_run_result *res) {
+static int run(scene_case *c, const char *scene, const char *const *sets, const char *out, sluice_summary *res) {
   sl_diag d = {{0}};
   char path[4200];
   snprintf(path, sizeof path, "%s/%s.ini", configs, scene);
@@ -34,19 +34,19 @@ static void test_stokes_factorises_once(void) {
   const char *sets[] = {"mesh.cells=8,8", "time.scheme=bdf1", "time.adaptive=false", "time.dt=0.01", "time.end=0.5",
                         "output.every=0.1", NULL};
   scene_case c;
-  sl_run_result r;
+  sluice_summary r;
   if (run(&c, "cavity_stokes", sets, "skip_stokes.h5", &r)) return;
-  const sl_linsolve_stats *ls = &r.model.linear;
+  const sluice_linear *ls = &r.linear;
   printf("Stokes, %ld BDF1 steps: %ld matrix and %ld right-hand-side assemblies; %ld symbolic, %ld numeric "
          "factorisations, %ld solves\n",
-         r.steps, r.model.matrix_assemblies, r.model.residual_assemblies, ls->n_symbolic, ls->n_numeric, ls->n_solves);
+         r.steps, r.matrix_assemblies, r.residual_assemblies, ls->n_symbolic, ls->n_numeric, ls->n_solves);
   CHECK(r.steps == 50);
-  CHECK_MSG(r.model.matrix_assemblies == 1 && r.model.residual_assemblies == r.steps - 1, "%ld matrix, %ld residual assemblies",
-            r.model.matrix_assemblies, r.model.residual_assemblies);
+  CHECK_MSG(r.matrix_assemblies == 1 && r.residual_assemblies == r.steps - 1, "%ld matrix, %ld residual assemblies",
+            r.matrix_assemblies, r.residual_assemblies);
   CHECK_MSG(ls->n_symbolic == 1 && ls->n_numeric == 1 && ls->n_solves == r.steps,
             "%ld symbolic, %ld numeric factorisations, %ld solves", ls->n_symbolic, ls->n_numeric, ls->n_solves);
-  CHECK_MSG(c.reg->n_dlopen == 0 && c.reg->n_libraries == 0, "a scene without closures loaded %d libraries",
-            c.reg->n_libraries);
+  CHECK_MSG(scene_case_dlopen(&c) == 0 && scene_case_n_loaded(&c) == 0, "a scene without closures loaded %d libraries",
+            scene_case_n_loaded(&c));
   scene_case_close(&c);
 }
 
@@ -55,16 +55,16 @@ static void test_stokes_factorises_once(void) {
 static void test_only_named_closures(void) {
   const char *sets[] = {"transport.table_points=1025", "time.end=40", NULL};
   scene_case c;
-  sl_run_result r;
+  sluice_summary r;
   if (run(&c, "kynch_settling", sets, "skip_kynch.h5", &r)) return;
-  int on_path = sl_registry_files_on_path(c.reg);
-  printf("kynch_settling: %d of %d libraries loaded, %ld dlopen\n", c.reg->n_libraries, on_path, c.reg->n_dlopen);
+  int on_path = scene_case_on_path(&c);
+  printf("kynch_settling: %d of %d libraries loaded, %ld dlopen\n", scene_case_n_loaded(&c), on_path, scene_case_dlopen(&c));
   CHECK_MSG(on_path > 20, "only %d closure libraries on the search path", on_path);
-  CHECK_MSG(c.reg->n_libraries == 1 && c.reg->n_dlopen == 1 &&
+  CHECK_MSG(scene_case_n_loaded(&c) == 1 && scene_case_dlopen(&c) == 1 &&
                 scene_case_loaded(&c, "hindered_settling_richardson_zaki.so") == 1,
-            "%d libraries loaded, %ld dlopen", c.reg->n_libraries, c.reg->n_dlopen);
+            "%d libraries loaded, %ld dlopen", scene_case_n_loaded(&c), scene_case_dlopen(&c));
   CHECK(scene_case_loaded(&c, "drag_") == 0 && scene_case_loaded(&c, "viscosity_") == 0);
-  const sl_closure_usage *u = scene_case_usage(&c, "hindered_settling", "richardson_zaki");
+  const sluice_closure_use *u = scene_case_usage(&c, "hindered_settling", "richardson_zaki");
   CHECK_MSG(u && u->instances == 1 && u->calls == 1 && u->points == 1025,
             "settling closure: %ld instances, %llu calls, %llu points over %ld steps", u ? u->instances : 0,
             u ? u->calls : 0ULL, u ? u->points : 0ULL, r.steps);
@@ -74,20 +74,20 @@ static void test_only_named_closures(void) {
   /* the mixture with a phi-dependent viscosity: two libraries, nothing else */
   const char *bsets[] = {"mesh.cells=4,6", "time.end=2e-3", "output.every=0", NULL};
   if (run(&c, "boycott", bsets, "skip_boycott.h5", &r)) return;
-  CHECK_MSG(c.reg->n_libraries == 2 && c.reg->n_dlopen == 2 && scene_case_loaded(&c, "hindered_settling_nigam.so") &&
+  CHECK_MSG(scene_case_n_loaded(&c) == 2 && scene_case_dlopen(&c) == 2 && scene_case_loaded(&c, "hindered_settling_nigam.so") &&
                 scene_case_loaded(&c, "viscosity_krieger_dougherty.so"),
-            "boycott: %d libraries loaded", c.reg->n_libraries);
-  const sl_closure_usage *v = scene_case_usage(&c, "viscosity", "krieger_dougherty");
+            "boycott: %d libraries loaded", scene_case_n_loaded(&c));
+  const sluice_closure_use *v = scene_case_usage(&c, "viscosity", "krieger_dougherty");
   CHECK(v && v->instances == 1);
   scene_case_close(&c);
 
   /* two_fluid: the drag and the solids pressure */
   const char *fsets[] = {"time.end=1", NULL};
   if (run(&c, "fluidized_bed", fsets, "skip_fluidized.h5", &r)) return;
-  CHECK_MSG(c.reg->n_libraries == 2 && scene_case_loaded(&c, "drag_richardson_zaki_consistent.so") &&
+  CHECK_MSG(scene_case_n_loaded(&c) == 2 && scene_case_loaded(&c, "drag_richardson_zaki_consistent.so") &&
                 scene_case_loaded(&c, "solids_pressure_pringle_exponential.so"),
-            "fluidized_bed: %d libraries loaded", c.reg->n_libraries);
-  const sl_closure_usage *k = scene_case_usage(&c, "drag", "richardson_zaki_consistent");
+            "fluidized_bed: %d libraries loaded", scene_case_n_loaded(&c));
+  const sluice_closure_use *k = scene_case_usage(&c, "drag", "richardson_zaki_consistent");
   CHECK(k && k->instances == 1 && k->calls > 0);
   scene_case_close(&c);
 }
@@ -98,15 +98,15 @@ static void test_only_named_closures(void) {
 static void test_closure_calls_per_assembly(void) {
   const char *sets[] = {"solver.continuation_steps=4", NULL};
   scene_case c;
-  sl_run_result r;
+  sluice_summary r;
   if (run(&c, "bingham_channel", sets, "skip_channel.h5", &r)) return;
-  const sl_closure_usage *u = scene_case_usage(&c, "viscosity", "bingham");
+  const sluice_closure_use *u = scene_case_usage(&c, "viscosity", "bingham");
   if (!u) {
     CHECK_MSG(0, "bingham_channel: the viscosity closure was never created");
     scene_case_close(&c);
     return;
   }
-  long passes = r.model.matrix_assemblies + r.model.residual_assemblies + r.output_times; /* every output has the diagnostics */
+  long passes = r.matrix_assemblies + r.residual_assemblies + r.output_times; /* every output has the diagnostics */
   long cells = 200;
   unsigned long long per_pass = u->points / (unsigned long long)passes;
   printf("bingham_channel: %llu points in %llu calls over %ld assembly passes (%llu points per cell and pass), %ld "
@@ -126,14 +126,14 @@ static void test_closure_calls_per_assembly(void) {
 static void test_steady_stops(void) {
   const char *sets[] = {"mesh.cells=16,16", NULL};
   scene_case c;
-  sl_run_result r;
+  sluice_summary r;
   if (run(&c, "cavity_re100", sets, "skip_re100.h5", &r)) return;
   printf("cavity_re100: %ld step, %ld Newton iterations: %s\n", r.steps, r.nonlinear_iterations, r.stop_reason);
-  CHECK_MSG(r.model.converged && r.steps == 1 && r.nonlinear_iterations >= 2 && r.nonlinear_iterations <= 10,
-            "converged %d, %ld steps, %ld iterations", r.model.converged, r.steps, r.nonlinear_iterations);
+  CHECK_MSG(r.converged && r.steps == 1 && r.nonlinear_iterations >= 2 && r.nonlinear_iterations <= 10,
+            "converged %d, %ld steps, %ld iterations", r.converged, r.steps, r.nonlinear_iterations);
   /* Newton's own tests (cavity_re100: nonlinear_tolerance = 1e-10, the residual reduced by 1e10) */
-  CHECK_MSG(r.model.correction <= 1e-10 || r.model.residual <= 1e-10 * r.model.residual0,
-            "last relative correction %g, residual %g from %g: not converged", r.model.correction, r.model.residual, r.model.residual0);
+  CHECK_MSG(r.correction <= 1e-10 || r.residual <= 1e-10 * r.residual0,
+            "last relative correction %g, residual %g from %g: not converged", r.correction, r.residual, r.residual0);
   CHECK_CONTAINS(r.stop_reason, "converged");
   CHECK(r.output_times == 1);
   scene_case_close(&c);
@@ -155,7 +155,7 @@ static void test_steady_stops(void) {
 static void test_unused_fields(void) {
   const char *sets[] = {"mesh.cells=8,8", "output.fields=velocity", NULL};
   scene_case c;
-  sl_run_result r;
+  sluice_summary r;
   if (run(&c, "cavity_stokes", sets, "skip_fields.h5", &r)) return;
   scene_case_close(&c);
   sl_output_contents ct;

@@ -1,7 +1,7 @@
 /* Runs a scene of configs/ with overrides in-process, as `sluice run` does
  * (parse, --set overrides, validation, every [closure.*] section checked,
  * the plugin index that loads only the closures a scene names), through the
- * model's entry point; and reads an output file back to check every value
+ * embedding API (sluice/sluice.h); and reads an output file back to check every value
  * of every field at every output time. Shared by tests/stress and
  * tests/skipping. */
 #ifndef SLUICE_TESTS_STRESS_CASE_RUNNER_H
@@ -12,78 +12,74 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/models/run.h"
 #include "core/io/output.h"
 #include "core/io/sample.h"
-#include "core/models/mixture/mixture.h"
-#include "core/models/navier_stokes/navier_stokes.h"
-#include "core/models/two_fluid/two_fluid.h"
-#include "core/plugin/closure_ini.h"
+#include "sluice/sluice.h"
 
 typedef struct scene_case {
-  sl_ini *ini;
-  sl_registry *reg; /* kept after the run: what it loaded and what its closures did */
-  int model;        /* 0 navier_stokes, 1 mixture, 2 two_fluid */
+  sluice *s; /* kept after the run: what it loaded and what its closures did */
 } scene_case;
 
 static inline void scene_case_close(scene_case *c) {
-  sl_registry_destroy(c->reg);
-  sl_ini_free(c->ini);
+  sluice_close(c->s);
   memset(c, 0, sizeof *c);
 }
 
 /* configs/<scene>.ini with the overrides `sets` (NULL-terminated, may be
- * NULL); timing: closures time their calls (the profile's clock). */
+ * NULL); timing: closures time their calls (the profile's clock). Its keys
+ * and closures are checked (nothing run). */
 static inline int scene_case_open(scene_case *c, const char *configs, const char *scene, const char *const *sets,
                                   int timing, sl_diag *d) {
   memset(c, 0, sizeof *c);
   char path[4200];
   snprintf(path, sizeof path, "%s/%s.ini", configs, scene);
-  int rc = sl_ini_parse_file(path, &c->ini, d);
-  for (int i = 0; sets && sets[i] && !rc; ++i) rc = sl_ini_apply_override(c->ini, sets[i], d);
-  if (!rc) rc = sl_ini_get_choice(c->ini, "scene", "model", 1, 0, "navier_stokes|mixture|two_fluid", &c->model, d);
-  if (!rc) rc = sl_registry_create(&c->reg, NULL, 0, d);
-  if (!rc) rc = sl_registry_index(c->reg, d);
-  if (!rc && timing) sl_registry_set_timing(c->reg, 1);
-  for (int s = 0; !rc && s < c->ini->n_sections; ++s)
-    if (strncmp(c->ini->sections[s].name, "closure.", 8) == 0)
-      rc = sl_closure_check_ini(c->reg, c->ini, c->ini->sections[s].name, d);
-  if (rc) scene_case_close(c);
+  sluice_error e = {0, ""};
+  sluice_open_opts oo = {.sets = sets, .timing = timing};
+  double t0, t1;
+  int rc = sluice_open(path, &oo, &c->s, &e);
+  if (!rc) rc = sluice_time_span(c->s, &t0, &t1, &e);
+  if (rc) {
+    sl_diag_set(d, rc, "%s", e.msg);
+    scene_case_close(c);
+  }
   return rc;
 }
 
-static inline int scene_case_run(scene_case *c, const char *scene_path, const char *out, sl_run_result *res,
+static inline int scene_case_run(scene_case *c, const char *scene_path, const char *out, sluice_summary *res,
                                  sl_diag *d) {
-  sl_run_opts o = {.scene_path = scene_path, .output = out, .sluice_version = "test"};
-  return c->model == 1   ? sl_model_run(c->ini, c->reg, &o, res, d)
-         : c->model == 2 ? sl_model_run(c->ini, c->reg, &o, res, d)
-                         : sl_model_run(c->ini, c->reg, &o, res, d);
+  sluice_error e = {0, ""};
+  sluice_run_opts o = {.scene_path = scene_path, .output = out, .version = "test"};
+  int rc = sluice_run(c->s, &o, res, &e);
+  if (rc) sl_diag_set(d, rc, "%s", e.msg);
+  return rc;
 }
 
 /* The libraries a run has loaded whose file name starts with `prefix`. */
-static inline int scene_case_loaded(const scene_case *c, const char *prefix) {
-  int n = 0;
-  for (int i = 0; i < c->reg->n_libraries; ++i) {
-    const char *base = strrchr(c->reg->libraries[i]->path, '/');
-    base = base ? base + 1 : c->reg->libraries[i]->path;
-    n += strncmp(base, prefix, strlen(prefix)) == 0;
-  }
-  return n;
+static inline int scene_case_loaded(const scene_case *c, const char *prefix) { return sluice_plugins_loaded(c->s, prefix); }
+
+/* The libraries loaded, on the search path, and the dlopen calls so far. */
+static inline int scene_case_n_loaded(const scene_case *c) {
+  sluice_plugins p;
+  sluice_plugin_counts(c->s, &p);
+  return p.loaded;
+}
+static inline int scene_case_on_path(const scene_case *c) {
+  sluice_plugins p;
+  sluice_plugin_counts(c->s, &p);
+  return p.on_path;
+}
+static inline long scene_case_dlopen(const scene_case *c) {
+  sluice_plugins p;
+  sluice_plugin_counts(c->s, &p);
+  return p.dlopen;
 }
 
 /* The usage of closure kind/name over the run, or NULL when never created. */
-static inline const sl_closure_usage *scene_case_usage(const scene_case *c, const char *kind, const char *name) {
-  for (int i = 0; i < c->reg->n_libraries; ++i) {
-    const sl_library *lib = c->reg->libraries[i];
-    for (int32_t k = 0; k < lib->n_closures; ++k) {
-      char label[128];
-      snprintf(label, sizeof label, "%s/%s", kind, name);
-      char have[128];
-      sl_closure_label(lib->closures[k], have, sizeof have);
-      if (strcmp(label, have) == 0 && lib->usage[k].instances > 0) return &lib->usage[k];
-    }
-  }
-  return NULL;
+static inline const sluice_closure_use *scene_case_usage(const scene_case *c, const char *kind, const char *name) {
+  static sluice_closure_use u[4];
+  static int next;
+  sluice_closure_use *x = &u[next++ % 4];
+  return sluice_closure_usage(c->s, kind, name, x) ? NULL : x;
 }
 
 /* What an output file holds, every value read back. */

@@ -171,10 +171,10 @@ static void run_in_child(const stress_case *c, outcome *o) {
   double c0 = cpu_now();
   o->rc = scene_case_open(&sc, configs_dir(), c->scene, c->sets, 0, &d);
   if (!o->rc) {
-    sl_run_result res;
+    sluice_summary res;
     o->rc = scene_case_run(&sc, scene_path, out, &res, &d);
     o->steps = res.steps, o->t_end = res.t_end, o->t_reached = res.t_reached;
-    o->converged = res.model.converged, o->nonlinear_iterations = res.nonlinear_iterations;
+    o->converged = res.converged, o->nonlinear_iterations = res.nonlinear_iterations;
     snprintf(o->stop_reason, sizeof o->stop_reason, "%s", res.stop_reason);
     scene_case_close(&sc);
   }
