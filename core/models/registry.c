@@ -5,6 +5,7 @@
 
 #include "core/models/mixture/mixture.h"
 #include "core/models/navier_stokes/navier_stokes.h"
+#include "core/models/scalar/scalar.h"
 #include "core/models/two_fluid/two_fluid.h"
 #include "core/scene/scene.h"
 
@@ -14,6 +15,7 @@ static const sl_model_entry entries[] = {
     {&sl_two_fluid_column_schema, &sl_two_fluid_column_ops},
     {&sl_two_fluid_plane_schema, &sl_two_fluid_plane_ops},
     {&sl_two_fluid_shear_schema, &sl_two_fluid_shear_ops},
+    {&sl_scalar_schema, &sl_scalar_ops},
 };
 enum { N_ENTRIES = (int)(sizeof entries / sizeof entries[0]) };
 

@@ -93,7 +93,7 @@ static int boundaries(tfp_run *r, sl_diag *d) {
     if ((dir == 0 ? gp->nx : gp->ny) < 2)
       return sl_diag_set(d, SL_EBADINPUT, "type = periodic: the %s sides need at least 2 cells between them",
                          pair[dir]);
-    r->m.periodic[dir] = 1;
+    r->m.fv.periodic[dir] = 1;
   }
   if (r->has_inlet && !r->has_outlet)
     return sl_diag_set(d, SL_EBADINPUT, "two_fluid: an inlet needs an outlet (type = outlet) for the flow to leave");
@@ -123,8 +123,8 @@ static int initial_state(tfp_run *r, sl_diag *d) {
                        te->file, te->line);
   if (te) { /* theta in the cells, m^2/s^2 (default 1e-6) */
     int trc = 0;
-    for (int c = 0; c < r->m.nc && !trc; ++c) {
-      double xy[3] = {r->m.xc[c % r->m.nx], r->m.yc[c / r->m.nx], r->m.c.case_index}, th = sl_expr_eval(cfg->theta.e, xy);
+    for (int c = 0; c < r->m.fv.nc && !trc; ++c) {
+      double xy[3] = {r->m.fv.xc[c % r->m.fv.nx], r->m.fv.yc[c / r->m.fv.nx], r->m.c.case_index}, th = sl_expr_eval(cfg->theta.e, xy);
       if (!(th > 0.0 && th < 1e4))
         trc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] theta = %g at (%g, %g): allowed 0 < theta < 1e4 m^2/s^2",
                           te->file, te->line, th, xy[0], xy[1]);
@@ -132,7 +132,7 @@ static int initial_state(tfp_run *r, sl_diag *d) {
     }
     if (trc) return trc;
   } else if (r->m.s.granular && !r->m.s.algebraic) {
-    for (int c = 0; c < r->m.nc; ++c) r->m.s.theta[c] = r->m.s.theta_new[c] = 1e-6;
+    for (int c = 0; c < r->m.fv.nc; ++c) r->m.s.theta[c] = r->m.s.theta_new[c] = 1e-6;
   }
   const sl_src *e = sl_scene_src(sc, &cfg->phi), *en = sl_scene_src(sc, &cfg->porosity);
   if (e && en)
@@ -144,8 +144,8 @@ static int initial_state(tfp_run *r, sl_diag *d) {
   const sl_expr *ex = e ? cfg->phi.e : cfg->porosity.e;
   int rc = 0;
   tfp_model *m = &r->m;
-  for (int c = 0; c < m->nc && !rc; ++c) {
-    double xy[3] = {m->xc[c % m->nx], m->yc[c / m->nx], m->c.case_index}, v = sl_expr_eval(ex, xy);
+  for (int c = 0; c < m->fv.nc && !rc; ++c) {
+    double xy[3] = {m->fv.xc[c % m->fv.nx], m->fv.yc[c / m->fv.nx], m->c.case_index}, v = sl_expr_eval(ex, xy);
     double phi = e ? v : 1.0 - v;
     if (!(phi >= 0.0 && phi <= m->c.phi_max))
       rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s = %g at (%g, %g): allowed %s = %g", use->file,
@@ -164,10 +164,10 @@ static int initial_state(tfp_run *r, sl_diag *d) {
                                           "x, y and case; %d given", ve->file, ve->line, ve->key, vel[phase]->n);
     sl_expr *const *comp = vel[phase]->e;
     double *u = phase ? m->us : m->uf;
-    for (int f = 0; f < m->nf; ++f) {
-      int dir = f >= m->nfx, i = dir ? (f - m->nfx) % m->nx : f % (m->nx + 1);
-      int j = dir ? (f - m->nfx) / m->nx : f / (m->nx + 1);
-      double xy[3] = {dir ? m->xc[i] : m->grid.xf[i], dir ? m->grid.yf[j] : m->yc[j], m->c.case_index};
+    for (int f = 0; f < m->fv.nf; ++f) {
+      int dir = f >= m->fv.nfx, i = dir ? (f - m->fv.nfx) % m->fv.nx : f % (m->fv.nx + 1);
+      int j = dir ? (f - m->fv.nfx) / m->fv.nx : f / (m->fv.nx + 1);
+      double xy[3] = {dir ? m->fv.xc[i] : m->grid.xf[i], dir ? m->grid.yf[j] : m->fv.yc[j], m->c.case_index};
       u[f] = sl_expr_eval(comp[dir], xy);
       if (!isfinite(u[f])) rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s is not finite at (%g, %g)",
                                             ve->file, ve->line, ve->key, xy[0], xy[1]);
@@ -193,7 +193,7 @@ static int plane_write_mesh(void *self, sl_output *out, sl_diag *d) {
 /* A grid-ordered cell field into mesh cell order (components 1 or 2). */
 static const double *to_mesh_order(tfp_run *r, const double *a, const double *b) {
   const tfp_model *m = &r->m;
-  for (int c = 0; c < m->nc; ++c) {
+  for (int c = 0; c < m->fv.nc; ++c) {
     int mc = m->grid.mesh_cell[c];
     if (b) r->cellbuf[2 * mc] = a[c], r->cellbuf[2 * mc + 1] = b[c];
     else r->cellbuf[mc] = a[c];
@@ -209,13 +209,13 @@ static int plane_write(void *self, sl_output *out, double t, const double *u_sta
   if (r->fields & F_PHI)
     rc = sl_output_write_field(out, "phi", SL_CENTRE_CELL, 1, to_mesh_order(r, m->phi, NULL), d);
   /* velocities at the cell centres: the mean of the two faces of each family */
-  double *vx = m->x, *vy = m->x + m->nc; /* scratch between steps */
+  double *vx = m->x, *vy = m->x + m->fv.nc; /* scratch between steps */
   for (int phase = 0; phase < 2 && !rc; ++phase) {
     if (!(r->fields & (phase ? F_US : F_UF))) continue;
     const double *u = phase ? m->us : m->uf;
-    for (int c = 0; c < m->nc; ++c) {
-      int i = c % m->nx, j = c / m->nx, w = i + (m->nx + 1) * j, s = m->nfx + i + m->nx * j;
-      vx[c] = 0.5 * (u[w] + u[w + 1]), vy[c] = 0.5 * (u[s] + u[s + m->nx]);
+    for (int c = 0; c < m->fv.nc; ++c) {
+      int i = c % m->fv.nx, j = c / m->fv.nx, w = i + (m->fv.nx + 1) * j, s = m->fv.nfx + i + m->fv.nx * j;
+      vx[c] = 0.5 * (u[w] + u[w + 1]), vy[c] = 0.5 * (u[s] + u[s + m->fv.nx]);
     }
     rc = sl_output_write_field(out, phase ? "velocity_solid" : "velocity_fluid", SL_CENTRE_CELL, 2,
                                to_mesh_order(r, vx, vy), d);
@@ -223,7 +223,7 @@ static int plane_write(void *self, sl_output *out, double t, const double *u_sta
   if (!rc && (r->fields & F_P))
     rc = sl_output_write_field(out, "pressure", SL_CENTRE_CELL, 1, to_mesh_order(r, m->p, NULL), d);
   if (!rc && (r->fields & F_PS) && m->c.ps.c) {
-    if ((rc = tf_closure_eval(&m->c.ps, m->nc, m->phi, NULL, vx, NULL, d)) == 0)
+    if ((rc = tf_closure_eval(&m->c.ps, m->fv.nc, m->phi, NULL, vx, NULL, d)) == 0)
       rc = sl_output_write_field(out, "solids_pressure", SL_CENTRE_CELL, 1, to_mesh_order(r, vx, NULL), d);
   }
   if (!rc && (r->fields & F_THETA) && m->s.granular)
@@ -250,7 +250,7 @@ static int plane_write(void *self, sl_output *out, double t, const double *u_sta
 
 static tf_state plane_state(tfp_run *r) {
   tfp_model *m = &r->m;
-  return (tf_state){.phi = m->phi, .us = m->us, .uf = m->uf, .p = m->p, .n_cells = m->nc, .n_faces = m->nf,
+  return (tf_state){.phi = m->phi, .us = m->us, .uf = m->uf, .p = m->p, .n_cells = m->fv.nc, .n_faces = m->fv.nf,
                     .theta = m->s.granular && !m->s.algebraic ? m->s.theta : NULL,
                     .inventory0 = r->inventory0, .outflow = r->outflow};
 }
@@ -265,7 +265,7 @@ static int plane_restore(void *self, const sl_checkpoint *ck, sl_diag *d) {
   tfp_run *r = self;
   tf_state st = plane_state(r);
   int rc = tf_checkpoint_restore(ck, "2-D two_fluid (the same grid)", &st, d);
-  if (!rc && st.theta) memcpy(r->m.s.theta_new, r->m.s.theta, (size_t)r->m.nc * sizeof *r->m.s.theta);
+  if (!rc && st.theta) memcpy(r->m.s.theta_new, r->m.s.theta, (size_t)r->m.fv.nc * sizeof *r->m.s.theta);
   if (!rc) r->inventory0 = st.inventory0, r->outflow = st.outflow;
   return rc;
 }
@@ -284,12 +284,12 @@ static void plane_accept(void *self, const sl_step *s, int *steady) {
   tfp_run *r = self;
   tfp_model *m = &r->m;
   double rate = 0.0, *sw, dt = s->dt;
-  for (int c = 0; c < m->nc; ++c) rate = fmax(rate, fabs(m->phi_new[c] - m->phi[c]) / dt);
+  for (int c = 0; c < m->fv.nc; ++c) rate = fmax(rate, fabs(m->phi_new[c] - m->phi[c]) / dt);
   sw = m->phi, m->phi = m->phi_new, m->phi_new = sw;
   sw = m->p, m->p = m->p_new, m->p_new = sw;
   sw = m->us, m->us = m->us_new, m->us_new = sw;
   sw = m->uf, m->uf = m->uf_new, m->uf_new = sw;
-  if (m->s.granular) memcpy(m->s.theta, m->s.theta_new, (size_t)m->nc * sizeof *m->s.theta);
+  if (m->s.granular) memcpy(m->s.theta, m->s.theta_new, (size_t)m->fv.nc * sizeof *m->s.theta);
   r->outflow += m->outflow_trial;
   r->substeps += m->substeps_trial, ++r->advances;
   m->accepted_substeps = m->last_substeps;
@@ -321,7 +321,7 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   if (!rc) rc = tfp_solids_bind(&r->m, sc, r->cfg, d);
   /* the phases' convective acceleration, off by default as in the 1-D column (which has none) */
   r->m.convection = sc->flow.convection;
-  if (!rc && !(r->cellbuf = calloc(2 * (size_t)r->m.nc, sizeof *r->cellbuf)))
+  if (!rc && !(r->cellbuf = calloc(2 * (size_t)r->m.fv.nc, sizeof *r->cellbuf)))
     rc = sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
   if (!rc) rc = initial_state(r, d);
   if (!rc) rc = sl_scene_linsolve(sc, &r->m.ls, &r->linear, d);
@@ -359,11 +359,11 @@ static void plane_stats(void *self, const sl_run_result *res, sl_model_stats *st
   if (r->advances) {
     double base = r->inventory0, err = base > 0.0 ? (tfp_inventory(&r->m, r->m.phi) + r->outflow - base) / base : 0.0;
     double pmax = 0.0;
-    for (int c = 0; c < r->m.nc; ++c) pmax = fmax(pmax, r->m.phi[c]);
+    for (int c = 0; c < r->m.fv.nc; ++c) pmax = fmax(pmax, r->m.phi[c]);
     snprintf(st->coupling_summary, sizeof st->coupling_summary,
              "two_fluid (2-D staggered, %d x %d): %.1f iterations and %.1f transport sub-steps per step, solids "
              "conservation error %.1e, max phi %.4f (phi_max %.4g)",
-             r->m.nx, r->m.ny, (double)r->iterations / (double)r->advances, (double)r->substeps / (double)r->advances,
+             r->m.fv.nx, r->m.fv.ny, (double)r->iterations / (double)r->advances, (double)r->substeps / (double)r->advances,
              err, pmax, r->m.c.phi_max);
   }
   if (r->m.ls) snprintf(st->linear_summary, sizeof st->linear_summary, "%s, %d unknowns", r->linear, r->m.n_unknowns);

@@ -2,9 +2,9 @@
  * two_fluid_plane.c (scene, boundaries, output, time loop) and
  * two_fluid_plane_step.c (one implicit step on the staggered grid).
  *
- * The staggered (MAC) grid of Harlow & Welch (1965): phi, the pressure p and
- * the solids pressure P_s in the cells; the normal components of the fluid
- * and solids velocities on the faces. It carries the 1-D column's face
+ * The staggered (MAC) grid of Harlow & Welch (1965; core/fv/grid.h): phi,
+ * the pressure p and the solids pressure P_s in the cells; the normal
+ * components of the fluid and solids velocities on the faces. It carries the 1-D column's face
  * scheme (two_fluid_step.c) over to two dimensions: each face balances the
  * two cells it separates, so a checkerboard of phi drives the face fluxes
  * that relax it (a collocated or Taylor-Hood form averages it away).
@@ -16,11 +16,14 @@
 #ifndef SLUICE_MODELS_TWO_FLUID_PLANE_IMPL_H
 #define SLUICE_MODELS_TWO_FLUID_PLANE_IMPL_H
 
+#include "core/fv/cell_scalar.h"
+#include "core/fv/grid.h"
 #include "core/mesh/tensor_grid.h"
 #include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/point_eval.h"
 #include "core/solve/anderson.h"
 #include "core/solve/linsolve.h"
+#include "core/solve/triplets.h"
 
 enum { TFP_WALL = 0, TFP_SLIP, TFP_AXIS, TFP_INLET, TFP_OUTLET, TFP_PERIODIC };
 /* what a face's normal velocities are */
@@ -64,19 +67,18 @@ typedef struct tfp_solids {
      means of the cells around, the shear rate, theta, the viscosity and its tangent */
   double *shear, *phi_k, *rho_k, *K_k, *gdot_k, *theta_k, *mu_k_corner, *mu_tk;
   double *mum, *mu_k, *kap, *gam, *dgam, *one; /* per-point scratch (corners' size) */
-  /* the transported theta's system: its matrix, solver, the last iterate's theta, right-hand side, solution */
-  sl_csr th_A;
-  sl_linsolve *th_ls;
-  double *th_old, *th_rhs, *th_x;
+  /* the transported theta (core/fv/cell_scalar.h): its solver, the last iterate's theta, the equation's
+     capacity, source and sink per cell, the solution */
+  sl_cell_scalar th;
+  double *th_old, *th_cap, *th_src, *th_sink, *th_x;
   double last_bagnold; /* the Bagnold number of the last wall-closure call (NAN: the closure gives none) */
   int any; /* the solids carry a stress (a viscosity at all) */
 } tfp_solids;
 
 typedef struct tfp_model {
   sl_tensor_grid grid;
-  int nx, ny, nc, nfx, nf;
+  sl_fv_grid fv;   /* its staggered grid: cells, faces, neighbours, periodic images, geometry */
   int axi;
-  int periodic[2]; /* periodic along x, along y */
   int convection;  /* [flow] convection: the phases' rho alpha (u . grad) u */
   double g[2];
   tfp_solids s;
@@ -87,13 +89,7 @@ typedef struct tfp_model {
      stress on it, [5 b + 2] the mean solids slip, [5 b + 3] the mean Bagnold number of the wall closure (NAN:
      none), [5 b + 4] the length (or area per radian) averaged over */
   double *wall_stats;
-  /* geometry */
-  double *xc, *yc, *hx, *hy;      /* cell centres and sizes along x [nx], y [ny] */
-  double *vol;                    /* [nc] (axisymmetric: r dr dz, without 2 pi) */
-  double *area, *dist;            /* [nf]: face area (axisymmetric: r ds), centre-to-centre distance (half cells at
-                                     the boundary) */
-  int *lo, *hi;                   /* [nf] */
-  int *ftype, *fbound;            /* [nf]: TFP_FACE_*, the boundary index of a boundary face (-1 inside) */
+  int *ftype;                     /* [nf]: TFP_FACE_* */
   int *tan_noslip;                /* [4 nf]: per phase (fluid 0, solids 1) and end (minus 0, plus 1) of the face
                                      across its family, 1 when a boundary there holds the phase (no-slip) */
   int *end_wall;                  /* [2 nf]: per end, the wall (boundary index) along which the face runs, -1 none */
@@ -108,15 +104,11 @@ typedef struct tfp_model {
   int closed; /* no outlet: the pressure takes its datum in cell 0 */
   /* the step's work arrays */
   double *phf, *phg, *w, *K, *dK, *slip, *sn, *ps, *dps, *flux, *alpha, *inflow, *x, *rhs;
-  /* the linear system: triplets, their CSR positions */
-  int n_trip, cap_trip;
-  int32_t *trow, *tcol, *tpos;
-  int32_t *prow, *pcol; /* the triplet sequence the pattern was built from */
+  /* the linear system: its triplets (the pattern kept) */
+  sl_triplets trip;
   int phi_frozen;       /* this iteration takes the face phi from the step's start */
   int sink_frozen;      /* this iteration keeps the drag coefficient of the granular sink 3 K theta */
-  double *tval;
   sl_csr A;
-  int pattern_built;
   sl_linsolve *ls;
   /* Anderson acceleration of the step's iteration (two_fluid_plane_step.c): its state, the iterate x and the
      map's value g over [us (nf), uf (nf), theta (nc), the walls' solids velocities end_us (2 nf), phi (nc)], and
@@ -131,24 +123,11 @@ typedef struct tfp_model {
   char where[256]; /* where the last failure happened */
 } tfp_model;
 
-/* The neighbour of cell c along dir (0: x, 1: y) on its minus (side 0) or
- * plus (side 1) side, wrapping along a periodic direction; -1 outside. */
+/* The grid's neighbour and image-face maps (core/fv/grid.h). */
 static inline int tfp_neighbour(const tfp_model *m, int c, int dir, int side) {
-  int i = c % m->nx, j = c / m->nx, n = dir == 0 ? m->nx : m->ny, k = (dir == 0 ? i : j) + (side ? 1 : -1);
-  if (k < 0 || k >= n) {
-    if (!m->periodic[dir]) return -1;
-    k = (k + n) % n;
-  }
-  return dir == 0 ? k + m->nx * j : i + m->nx * k;
+  return sl_fv_neighbour(&m->fv, c, dir, side);
 }
-
-/* The face whose unknowns and values face f shares: f itself, or for an
- * image face the first face of its periodic row (x-faces) or column
- * (y-faces). */
-static inline int tfp_primary(const tfp_model *m, int f) {
-  if (m->ftype[f] != TFP_FACE_IMAGE) return f;
-  return f < m->nfx ? f - m->nx : f - m->nx * m->ny;
-}
+static inline int tfp_primary(const tfp_model *m, int f) { return sl_fv_primary(&m->fv, f); }
 
 /* The grid geometry, face types and unknown numbering from the grid and the
  * boundaries. 0 or SL_EFAILED (memory). */

@@ -60,9 +60,8 @@ void tfp_solids_free(tfp_solids *s) {
   double *all[] = {s->mu,    s->mu_t,  s->gdot, s->rho,    s->Kc,      s->theta,       s->theta_new,
                    s->normal, s->mum,  s->mu_k, s->kap,    s->gam,     s->one,         s->shear,
                    s->phi_k, s->rho_k, s->K_k,  s->gdot_k, s->theta_k, s->mu_k_corner, s->mu_tk,
-                   s->dgam,  s->th_old, s->th_rhs, s->th_x};
-  sl_csr_free(&s->th_A);
-  sl_linsolve_destroy(s->th_ls);
+                   s->dgam,  s->th_old, s->th_cap, s->th_src, s->th_sink, s->th_x};
+  sl_cell_scalar_free(&s->th);
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   for (int k = 0; k < TFP_Q_N; ++k) free(s->qv[k]);
   free(s->visc.buf), free(s->gran.buf), free(s->wall.buf);
@@ -94,11 +93,11 @@ static int check_kinetic_scaling(tfp_model *m, const sl_scene *sc, const tf_conf
 
 int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_diag *d) {
   tfp_solids *s = &m->s;
-  const size_t nc = (size_t)m->nc, nk = (size_t)(m->nx + 1) * (size_t)(m->ny + 1); /* nk > nc */
+  const size_t nc = (size_t)m->fv.nc, nk = (size_t)(m->fv.nx + 1) * (size_t)(m->fv.ny + 1); /* nk > nc */
   double **a[] = {&s->mu,    &s->mu_t,  &s->gdot,  &s->rho,   &s->Kc,    &s->theta,   &s->theta_new,
                   &s->normal, &s->mum,  &s->mu_k,  &s->kap,   &s->gam,   &s->one,     &s->shear,
                   &s->phi_k, &s->rho_k, &s->K_k,   &s->gdot_k, &s->theta_k, &s->mu_k_corner, &s->mu_tk,
-                  &s->dgam,  &s->th_old, &s->th_rhs, &s->th_x};
+                  &s->dgam,  &s->th_old, &s->th_cap, &s->th_src, &s->th_sink, &s->th_x};
   for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
     if (!(*a[k] = calloc(nk, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
   for (int k = 0; k < TFP_Q_N; ++k)
@@ -151,7 +150,7 @@ int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_d
   /* Anderson acceleration: the default with a kinetic theory (see tfp_step) */
   m->accelerate = sl_scene_given(sc, &cfg->acceleration) ? cfg->acceleration : s->granular;
   int any_stress = 0;
-  for (int f = 0; f < 2 * m->nf; ++f)
+  for (int f = 0; f < 2 * m->fv.nf; ++f)
     any_stress |= m->end_wall[f] >= 0 && m->b[m->end_wall[f]].solids == TFP_SOLIDS_WALL_STRESS;
   if ((s->wall_c = sl_scene_closure(sc, "wall_stress"))) {
     if ((rc = sl_point_bind(&s->wall, s->wall_c, quantity_names, TFP_Q_N, "closure.wall_stress", model, d))) return rc;
@@ -187,45 +186,45 @@ static double wall_solids(const tfp_model *m, int f, int end, double u_face) {
 
 /* du/dy + dv/dx of the solids at every corner of the grid. */
 static void corner_shear(tfp_model *m, const double *us) {
-  const int nx = m->nx, ny = m->ny;
+  const int nx = m->fv.nx, ny = m->fv.ny;
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) {
       double g = 0.0;
       /* du/dy from the x-faces (i, j-1) and (i, j) */
       {
         int below = j - 1, above = j, fa, fb;
-        if (m->periodic[1]) below = (below + ny) % ny, above = above % ny;
+        if (m->fv.periodic[1]) below = (below + ny) % ny, above = above % ny;
         double ua, ub, gap;
         if (below >= 0 && above < ny) {
           fa = i + (nx + 1) * above, fb = i + (nx + 1) * below;
-          ua = us[fa], ub = us[fb], gap = 0.5 * (m->hy[above] + m->hy[below]);
+          ua = us[fa], ub = us[fb], gap = 0.5 * (m->fv.hy[above] + m->fv.hy[below]);
         } else if (below < 0) { /* the bottom */
           fa = i + (nx + 1) * above;
           ua = us[fa], ub = wall_solids(m, fa, 0, ua);
-          gap = 0.5 * m->hy[above];
+          gap = 0.5 * m->fv.hy[above];
         } else { /* the top */
           fb = i + (nx + 1) * below;
           ub = us[fb], ua = wall_solids(m, fb, 1, ub);
-          gap = 0.5 * m->hy[below];
+          gap = 0.5 * m->fv.hy[below];
         }
         g += (ua - ub) / gap;
       }
       /* dv/dx from the y-faces (i-1, j) and (i, j) */
       {
         int left = i - 1, right = i, fa, fb;
-        if (m->periodic[0]) left = (left + nx) % nx, right = right % nx;
+        if (m->fv.periodic[0]) left = (left + nx) % nx, right = right % nx;
         double ua, ub, gap;
         if (left >= 0 && right < nx) {
-          fa = m->nfx + right + nx * j, fb = m->nfx + left + nx * j;
-          ua = us[fa], ub = us[fb], gap = 0.5 * (m->hx[right] + m->hx[left]);
+          fa = m->fv.nfx + right + nx * j, fb = m->fv.nfx + left + nx * j;
+          ua = us[fa], ub = us[fb], gap = 0.5 * (m->fv.hx[right] + m->fv.hx[left]);
         } else if (left < 0) {
-          fa = m->nfx + right + nx * j;
+          fa = m->fv.nfx + right + nx * j;
           ua = us[fa], ub = wall_solids(m, fa, 0, ua);
-          gap = 0.5 * m->hx[right];
+          gap = 0.5 * m->fv.hx[right];
         } else {
-          fb = m->nfx + left + nx * j;
+          fb = m->fv.nfx + left + nx * j;
           ub = us[fb], ua = wall_solids(m, fb, 1, ub);
-          gap = 0.5 * m->hx[left];
+          gap = 0.5 * m->fv.hx[left];
         }
         g += (ua - ub) / gap;
       }
@@ -235,15 +234,15 @@ static void corner_shear(tfp_model *m, const double *us) {
 
 /* The solids shear rate of every cell, sqrt(2 S':S'). */
 static void shear_rate(tfp_model *m, const double *us) {
-  const int nx = m->nx;
+  const int nx = m->fv.nx;
   corner_shear(m, us);
-  for (int c = 0; c < m->nc; ++c) {
+  for (int c = 0; c < m->fv.nc; ++c) {
     int i = c % nx, j = c / nx, cf[4];
-    int fw = i + (nx + 1) * j, fs = m->nfx + i + nx * j;
+    int fw = i + (nx + 1) * j, fs = m->fv.nfx + i + nx * j;
     cf[0] = fw, cf[1] = fw + 1, cf[2] = fs, cf[3] = fs + nx;
-    double sxx = (us[cf[1]] - us[cf[0]]) / m->hx[i], syy = (us[cf[3]] - us[cf[2]]) / m->hy[j];
-    double stt = m->axi ? 0.5 * (us[cf[0]] + us[cf[1]]) / m->xc[i] : 0.0;
-    if (m->axi) sxx = (m->grid.xf[i + 1] * us[cf[1]] - m->grid.xf[i] * us[cf[0]]) / (m->xc[i] * m->hx[i]) - stt;
+    double sxx = (us[cf[1]] - us[cf[0]]) / m->fv.hx[i], syy = (us[cf[3]] - us[cf[2]]) / m->fv.hy[j];
+    double stt = m->axi ? 0.5 * (us[cf[0]] + us[cf[1]]) / m->fv.xc[i] : 0.0;
+    if (m->axi) sxx = (m->grid.xf[i + 1] * us[cf[1]] - m->grid.xf[i] * us[cf[0]]) / (m->fv.xc[i] * m->fv.hx[i]) - stt;
     double sxy2 = 0.0; /* the mean square of S_xy = (du/dy + dv/dx)/2 over the four corners */
     for (int q = 0; q < 4; ++q) {
       double g = m->s.shear[(i + (q & 1)) + (nx + 1) * (j + (q >> 1))];
@@ -262,9 +261,9 @@ static int corner_cells(const tfp_model *m, int i, int j, int cells[4]) {
   for (int dj = -1; dj <= 0; ++dj)
     for (int di = -1; di <= 0; ++di) {
       int ci = i + di, cj = j + dj;
-      if (m->periodic[0]) ci = (ci + m->nx) % m->nx;
-      if (m->periodic[1]) cj = (cj + m->ny) % m->ny;
-      if (ci >= 0 && ci < m->nx && cj >= 0 && cj < m->ny) cells[n++] = ci + m->nx * cj;
+      if (m->fv.periodic[0]) ci = (ci + m->fv.nx) % m->fv.nx;
+      if (m->fv.periodic[1]) cj = (cj + m->fv.ny) % m->fv.ny;
+      if (ci >= 0 && ci < m->fv.nx && cj >= 0 && cj < m->fv.ny) cells[n++] = ci + m->fv.nx * cj;
     }
   return n;
 }
@@ -324,10 +323,10 @@ static int solids_mu_points(tfp_model *m, int N, const double *phi, const double
 int tfp_solids_viscosity(tfp_model *m, const double *us, const double *phi, sl_diag *d) {
   tfp_solids *s = &m->s;
   if (!s->any) return 0;
-  const int nx = m->nx, ny = m->ny, nk = (nx + 1) * (ny + 1);
+  const int nx = m->fv.nx, ny = m->fv.ny, nk = (nx + 1) * (ny + 1);
   shear_rate(m, us);
-  for (int c = 0; c < m->nc; ++c) {
-    int i = c % nx, j = c / nx, fw = i + (nx + 1) * j, fs = m->nfx + i + nx * j;
+  for (int c = 0; c < m->fv.nc; ++c) {
+    int i = c % nx, j = c / nx, fw = i + (nx + 1) * j, fs = m->fv.nfx + i + nx * j;
     s->rho[c] = (1.0 - phi[c]) * m->c.rho_f + phi[c] * m->c.rho_s;
     /* the sink's K, once the iteration is close: a drag law of |slip| (Wen & Yu's Re^0.687) is not smooth at
        the zero slip of a sheared suspension, and its round-off kept the iteration from converging */
@@ -350,7 +349,7 @@ int tfp_solids_viscosity(tfp_model *m, const double *us, const double *phi, sl_d
         s->theta_k[k] = th;
       }
     }
-  int rc = solids_mu_points(m, m->nc, phi, s->gdot, s->rho, s->Kc, s->theta_new, s->mu, s->mu_t, d);
+  int rc = solids_mu_points(m, m->fv.nc, phi, s->gdot, s->rho, s->Kc, s->theta_new, s->mu, s->mu_t, d);
   if (rc) return sl_diag_prefix(d, rc, "cells");
   if ((rc = solids_mu_points(m, nk, s->phi_k, s->gdot_k, s->rho_k, s->K_k, s->theta_k, s->mu_k_corner,
                              s->mu_tk, d)))
@@ -382,15 +381,15 @@ static int wall_energy(tfp_model *m, int c, const int cf[4], double *rhs, double
         for (int k = 0; k < TFP_Q_N; ++k) one[k] = s->qv[k][0], v[k] = &one[k];
         one[TFP_Q_PHI] = m->phi_new[c], one[TFP_Q_THETA] = s->th_old[c];
         one[TFP_Q_SLIP_WALL] = one[TFP_Q_SLIP] = fabs(m->end_us[e] - m->end_u[e]);
-        one[TFP_Q_WALL_DISTANCE] = 0.5 * (dir ? m->hy[c / m->nx] : m->hx[c % m->nx]);
+        one[TFP_Q_WALL_DISTANCE] = 0.5 * (dir ? m->fv.hy[c / m->fv.nx] : m->fv.hx[c % m->fv.nx]);
         one[TFP_Q_SHEAR_RATE] = s->gdot[c], one[TFP_Q_DENSITY] = s->rho[c];
         sl_point_request rq = {"theta_flux", &q, &dq, "theta"};
         int rc = sl_point_eval(&s->wall, 1, v, &rq, 1, d);
-        if (rc) return sl_diag_prefix(d, rc, "[closure.wall_stress] theta_flux in cell (%d, %d)", c % m->nx, c / m->nx);
+        if (rc) return sl_diag_prefix(d, rc, "[closure.wall_stress] theta_flux in cell (%d, %d)", c % m->fv.nx, c / m->fv.nx);
         q_sum += q, dq_sum += fmin(dq, 0.0), ++n;
       }
       if (!n) continue;
-      double A = m->area[cf[2 * dir + side]] / n;
+      double A = m->fv.area[cf[2 * dir + side]] / n;
       *rhs += A * (q_sum - dq_sum * s->th_old[c]);
       *diag -= A * dq_sum;
     }
@@ -409,20 +408,20 @@ static int wall_energy(tfp_model *m, int c, const int cf[4], double *rhs, double
  * (wall_energy), the others are adiabatic; there is no convection of theta
  * (the model's momentum has none either). *change: the largest change of
  * theta. */
+/* The walls' energy flux into cell c's equation (sl_cell_scalar_terms boundary). */
+static int wall_energy_of(void *user, int c, double *rhs, double *diag, sl_diag *d) {
+  tfp_model *m = user;
+  int cf[4];
+  sl_fv_cell_faces(&m->fv, c, cf);
+  return wall_energy(m, c, cf, rhs, diag, d);
+}
+
 int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
   tfp_solids *s = &m->s;
-  const int nc = m->nc;
+  const int nc = m->fv.nc;
   int rc;
-  if (!s->th_ls) { /* the pattern: each cell with its four neighbours */
-    int32_t *pairs = malloc(4 * (size_t)nc * sizeof *pairs);
-    if (!pairs) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-    for (int c = 0; c < nc; ++c)
-      for (int dir = 0; dir < 2; ++dir) pairs[4 * c + 2 * dir] = c, pairs[4 * c + 2 * dir + 1] = tfp_neighbour(m, c, dir, 1);
-    rc = sl_csr_build_uniform(&s->th_A, nc, 2 * nc, 2, pairs, d);
-    free(pairs);
-    if (!rc) rc = sl_linsolve_create(&s->th_ls, "klu", d);
-    if (rc) return sl_diag_prefix(d, rc, "the granular temperature's system");
-  }
+  if (!s->th.ls && (rc = sl_cell_scalar_init(&s->th, &m->fv, d)))
+    return sl_diag_prefix(d, rc, "the granular temperature's system");
   shear_rate(m, m->us_new);
   for (int c = 0; c < nc; ++c) s->th_old[c] = fmax(s->theta_new[c], THETA_FLOOR);
   const double *v[TFP_Q_N];
@@ -431,34 +430,24 @@ int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
   sl_point_request rq[3] = {{"mu_s", s->mu_k, NULL, NULL}, {"kappa", s->kap, NULL, NULL},
                             {"gamma", s->gam, s->dgam, "theta"}};
   if ((rc = sl_point_eval(&s->gran, nc, v, rq, 3, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
-  sl_csr *A = &s->th_A;
-  sl_csr_zero(A);
+  /* (3/2) rho_s phi, the production less the dissipation (Newton in gamma), the sinks: the dissipation's
+     derivative and the drag's 3 K */
   for (int c = 0; c < nc; ++c) {
-    double V = m->vol[c], ph = fmax(m->phi_new[c], 1e-6), cap = 1.5 * m->c.rho_s * ph * V / dt;
-    double X = s->exchange ? 3.0 * s->Kc[c] : 0.0, dg = fmax(s->dgam[c], 0.0);
-    double diag = cap + V * (dg + X);
-    s->th_rhs[c] = cap * s->theta[c] + V * (s->mu_k[c] * s->gdot[c] * s->gdot[c] - s->gam[c] + dg * s->th_old[c]);
-    int cf[4], i = c % m->nx, j = c / m->nx;
-    cf[0] = i + (m->nx + 1) * j, cf[1] = cf[0] + 1, cf[2] = m->nfx + i + m->nx * j, cf[3] = cf[2] + m->nx;
-    for (int dir = 0; dir < 2; ++dir)
-      for (int side = 0; side < 2; ++side) {
-        int nb = tfp_neighbour(m, c, dir, side), f = cf[2 * dir + side];
-        if (nb < 0 || nb == c) continue;
-        double k = 0.5 * (s->kap[c] + s->kap[nb]) * m->area[f] / m->dist[f];
-        diag += k;
-        A->values[sl_csr_find(A, c, nb)] -= k;
-      }
-    if (s->wall_energy && (rc = wall_energy(m, c, cf, &s->th_rhs[c], &diag, d))) return rc;
-    A->values[sl_csr_find(A, c, c)] += diag;
+    double ph = fmax(m->phi_new[c], 1e-6), X = s->exchange ? 3.0 * s->Kc[c] : 0.0, dg = fmax(s->dgam[c], 0.0);
+    s->th_cap[c] = 1.5 * m->c.rho_s * ph;
+    s->th_sink[c] = dg + X;
+    s->th_src[c] = s->mu_k[c] * s->gdot[c] * s->gdot[c] - s->gam[c] + dg * s->th_old[c];
   }
-  sl_csr_touch(A);
-  if ((rc = sl_linsolve_solve(s->th_ls, A, s->th_rhs, s->th_x, d)))
+  sl_cell_scalar_terms terms = {.dt = dt, .cap = s->th_cap, .s_old = s->theta, .k = s->kap, .source = s->th_src,
+                                .sink = s->th_sink, .boundary = s->wall_energy ? wall_energy_of : NULL,
+                                .boundary_user = m};
+  if ((rc = sl_cell_scalar_solve(&s->th, &terms, s->th_x, d)))
     return sl_diag_prefix(d, rc, "the granular temperature's solve");
   double ch = 0.0;
   for (int c = 0; c < nc; ++c) {
     if (!isfinite(s->th_x[c]))
-      return sl_diag_set(d, SL_EFAILED, "the granular temperature is not finite in cell (%d, %d)", c % m->nx,
-                         c / m->nx);
+      return sl_diag_set(d, SL_EFAILED, "the granular temperature is not finite in cell (%d, %d)", c % m->fv.nx,
+                         c / m->fv.nx);
     /* theta stays positive: at most a fivefold fall per iteration */
     double th = fmax(s->th_x[c], fmax(0.2 * s->th_old[c], THETA_FLOOR));
     ch = fmax(ch, fabs(th - s->th_old[c]));
@@ -473,15 +462,15 @@ int tfp_solids_pressure(tfp_model *m, const double *phi, double *ps, double *dps
   if (!s->granular || !s->kinetic_pressure) return 0;
   const double *v[TFP_Q_N];
   for (int k = 0; k < TFP_Q_N; ++k) v[k] = s->qv[k];
-  for (int c = 0; c < m->nc; ++c) s->th_old[c] = fmax(s->theta_new[c], THETA_FLOOR);
+  for (int c = 0; c < m->fv.nc; ++c) s->th_old[c] = fmax(s->theta_new[c], THETA_FLOOR);
   /* the algebraic theta of an iterate may leave the closure's range (a wall started impulsively shears its
      cell at U / (h/2)): p_s ~ theta is evaluated at theta = 1 and scaled (checked at set-up) */
   v[TFP_Q_PHI] = phi, v[TFP_Q_THETA] = s->algebraic ? s->one : s->th_old;
   v[TFP_Q_SHEAR_RATE] = s->gdot, v[TFP_Q_DENSITY] = s->rho;
   sl_point_request rq = {"p_s", s->mum, s->gam, "phi"};
-  int rc = sl_point_eval(&s->gran, m->nc, v, &rq, 1, d);
+  int rc = sl_point_eval(&s->gran, m->fv.nc, v, &rq, 1, d);
   if (rc) return sl_diag_prefix(d, rc, "[closure.granular] p_s");
-  for (int c = 0; c < m->nc; ++c) {
+  for (int c = 0; c < m->fv.nc; ++c) {
     double scale = s->algebraic ? s->th_old[c] : 1.0;
     ps[c] += scale * s->mum[c], dps[c] += scale * s->gam[c];
   }
@@ -498,7 +487,7 @@ static int wall_tau(tfp_model *m, int f, double phi, double slip, double dist, d
   double one[TFP_Q_N], th = 0.0, gd = 0.0, rho = 0.0;
   int n = 0;
   for (int side = 0; side < 2; ++side) {
-    int c = side ? m->hi[f] : m->lo[f];
+    int c = side ? m->fv.hi[f] : m->fv.lo[f];
     if (c >= 0) th += s->theta_new[c], gd += s->gdot[c], rho += s->rho[c], ++n;
   }
   const double *v[TFP_Q_N];
@@ -548,6 +537,6 @@ int tfp_solids_wall(tfp_model *m, int f, int end, double mu, double h, double *R
   return 0;
 failed:
   return sl_diag_prefix(d, rc, "[closure.wall_stress] at (%g, %g)",
-                        f < m->nfx ? m->grid.xf[f % (m->nx + 1)] : m->xc[(f - m->nfx) % m->nx],
-                        f < m->nfx ? m->yc[f / (m->nx + 1)] : m->grid.yf[(f - m->nfx) / m->nx]);
+                        f < m->fv.nfx ? m->grid.xf[f % (m->fv.nx + 1)] : m->fv.xc[(f - m->fv.nfx) % m->fv.nx],
+                        f < m->fv.nfx ? m->fv.yc[f / (m->fv.nx + 1)] : m->grid.yf[(f - m->fv.nfx) / m->fv.nx]);
 }

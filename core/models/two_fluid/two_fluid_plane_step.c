@@ -50,81 +50,51 @@ enum { ANDERSON_DEPTH = 5 };
 
 /* ---- geometry --------------------------------------------------------------- */
 
-static int face_dir(const tfp_model *m, int f) { return f >= m->nfx; }
+static int face_dir(const tfp_model *m, int f) { return f >= m->fv.nfx; }
 
 /* The four faces of cell c (west, east, south, north) and the sign of the
  * outward normal along each face's axis. */
-static void cell_faces(const tfp_model *m, int c, int f[4]) {
-  int i = c % m->nx, j = c / m->nx;
-  f[0] = i + (m->nx + 1) * j, f[1] = f[0] + 1;
-  f[2] = m->nfx + i + m->nx * j, f[3] = f[2] + m->nx;
-}
+static void cell_faces(const tfp_model *m, int c, int f[4]) { sl_fv_cell_faces(&m->fv, c, f); }
 static const double SIGMA[4] = {-1.0, 1.0, -1.0, 1.0};
 
 int tfp_setup(tfp_model *m, sl_diag *d) {
   const sl_tensor_grid *g = &m->grid;
   const int nx = g->nx, ny = g->ny;
-  m->nx = nx, m->ny = ny, m->nc = nx * ny, m->nfx = (nx + 1) * ny, m->nf = m->nfx + nx * (ny + 1);
-  const size_t nc = (size_t)m->nc, nf = (size_t)m->nf;
+  int periodic[2] = {m->fv.periodic[0], m->fv.periodic[1]}; /* the boundaries' */
+  int rc = sl_fv_grid_build(&m->fv, g, m->axi, periodic, d);
+  if (rc) return rc;
+  const size_t nc = (size_t)m->fv.nc, nf = (size_t)m->fv.nf;
   struct { double **p; size_t n; } a[] = {
-      {&m->xc, nx}, {&m->yc, ny}, {&m->hx, nx}, {&m->hy, ny}, {&m->vol, nc}, {&m->area, nf}, {&m->dist, nf},
       {&m->phi, nc}, {&m->p, nc}, {&m->uf, nf}, {&m->us, nf}, {&m->phi_new, nc}, {&m->p_new, nc},
       {&m->uf_new, nf}, {&m->us_new, nf}, {&m->phf, nf}, {&m->phg, nf}, {&m->w, nf}, {&m->K, nf}, {&m->dK, nf}, {&m->slip, nf},
       {&m->sn, nf}, {&m->ps, nc}, {&m->dps, nc}, {&m->flux, nf}, {&m->alpha, nc}, {&m->inflow, nc},
       {&m->x, 2 * nf + nc}, {&m->rhs, 2 * nf + nc}};
   for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
     if (!(*a[k].p = calloc(a[k].n, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-  int **ia[] = {&m->lo, &m->hi, &m->ftype, &m->fbound, &m->us_row, &m->uf_row};
+  int **ia[] = {&m->ftype, &m->us_row, &m->uf_row};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k)
     if (!(*ia[k] = calloc(nf, sizeof(int)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
   if (!(m->wall_stats = calloc(5 * (size_t)m->n_b, sizeof(double))) || !(m->tan_noslip = calloc(4 * nf, sizeof(int))) || !(m->end_wall = calloc(2 * nf, sizeof(int))) ||
       !(m->end_u = calloc(2 * nf, sizeof(double))) || !(m->end_us = calloc(2 * nf, sizeof(double))))
     return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-  for (int i = 0; i < nx; ++i) m->hx[i] = g->xf[i + 1] - g->xf[i], m->xc[i] = 0.5 * (g->xf[i] + g->xf[i + 1]);
-  for (int j = 0; j < ny; ++j) m->hy[j] = g->yf[j + 1] - g->yf[j], m->yc[j] = 0.5 * (g->yf[j] + g->yf[j + 1]);
-  for (int c = 0; c < m->nc; ++c) {
-    int i = c % nx, j = c / nx;
-    m->vol[c] = m->hx[i] * m->hy[j] * (m->axi ? m->xc[i] : 1.0);
-  }
-  for (int f = 0; f < m->nf; ++f) {
-    int side = -1, k = 0, image = 0;
-    if (f < m->nfx) {
-      int i = f % (nx + 1), j = f / (nx + 1);
-      m->lo[f] = i > 0 ? i - 1 + nx * j : -1, m->hi[f] = i < nx ? i + nx * j : -1;
-      m->area[f] = m->hy[j] * (m->axi ? g->xf[i] : 1.0);
-      m->dist[f] = i == 0 ? 0.5 * m->hx[0] : i == nx ? 0.5 * m->hx[nx - 1] : m->xc[i] - m->xc[i - 1];
-      if (m->periodic[0] && (i == 0 || i == nx)) { /* between the last cell of the row and the first */
-        m->lo[f] = nx - 1 + nx * j, m->hi[f] = nx * j, m->dist[f] = 0.5 * (m->hx[0] + m->hx[nx - 1]);
-        image = i == nx;
-      } else if (i == 0 || i == nx) side = i == 0 ? SL_SIDE_LEFT : SL_SIDE_RIGHT, k = j;
-    } else {
-      int i = (f - m->nfx) % nx, j = (f - m->nfx) / nx;
-      m->lo[f] = j > 0 ? i + nx * (j - 1) : -1, m->hi[f] = j < ny ? i + nx * j : -1;
-      m->area[f] = m->hx[i] * (m->axi ? m->xc[i] : 1.0);
-      m->dist[f] = j == 0 ? 0.5 * m->hy[0] : j == ny ? 0.5 * m->hy[ny - 1] : m->yc[j] - m->yc[j - 1];
-      if (m->periodic[1] && (j == 0 || j == ny)) {
-        m->lo[f] = i + nx * (ny - 1), m->hi[f] = i, m->dist[f] = 0.5 * (m->hy[0] + m->hy[ny - 1]);
-        image = j == ny;
-      } else if (j == 0 || j == ny) side = j == 0 ? SL_SIDE_BOTTOM : SL_SIDE_TOP, k = i;
-    }
-    m->fbound[f] = side >= 0 ? g->side_tag[side][k] : -1;
-    if (image) m->ftype[f] = TFP_FACE_IMAGE;
-    else if (side < 0) m->ftype[f] = TFP_FACE_INTERIOR;
-    else if (m->area[f] == 0.0) m->ftype[f] = TFP_FACE_CLOSED; /* on the axis */
+  for (int f = 0; f < m->fv.nf; ++f) {
+    if (m->fv.image[f]) m->ftype[f] = TFP_FACE_IMAGE;
+    else if (m->fv.bound[f] < 0) m->ftype[f] = TFP_FACE_INTERIOR;
+    else if (m->fv.area[f] == 0.0) m->ftype[f] = TFP_FACE_CLOSED; /* on the axis */
     else {
-      int t = m->b[m->fbound[f]].type;
+      int t = m->b[m->fv.bound[f]].type;
       m->ftype[f] = t == TFP_INLET ? TFP_FACE_INLET : t == TFP_OUTLET ? TFP_FACE_OUTLET : TFP_FACE_CLOSED;
     }
   }
   /* the tangential conditions: a face touching a side at one of its ends (x-faces: bottom, top; y-faces:
      left, right) takes the side faces that meet there; no-slip when one of them holds the phase; a wall there
      gives its speed and, for the solids, its stress */
-  for (int f = 0; f < 2 * m->nf; ++f) m->end_wall[f] = -1;
-  for (int f = 0; f < m->nf; ++f) {
-    int dir = face_dir(m, f), along = dir == 0 ? f % (nx + 1) : (f - m->nfx) / nx;
-    int across = dir == 0 ? f / (nx + 1) : (f - m->nfx) % nx, n_along = dir == 0 ? nx : ny;
+  for (int f = 0; f < 2 * m->fv.nf; ++f) m->end_wall[f] = -1;
+  for (int f = 0; f < m->fv.nf; ++f) {
+    int dir = face_dir(m, f), along = dir == 0 ? f % (nx + 1) : (f - m->fv.nfx) / nx;
+    int across = dir == 0 ? f / (nx + 1) : (f - m->fv.nfx) % nx, n_along = dir == 0 ? nx : ny;
     int n_across = dir == 0 ? ny : nx;
-    if (m->periodic[1 - dir]) continue; /* no side across the face's family */
+    if (m->fv.periodic[1 - dir]) continue; /* no side across the face's family */
     for (int end = 0; end < 2; ++end) {
       if (across != (end == 0 ? 0 : n_across - 1)) continue;
       int side = dir == 0 ? (end == 0 ? SL_SIDE_BOTTOM : SL_SIDE_TOP) : (end == 0 ? SL_SIDE_LEFT : SL_SIDE_RIGHT);
@@ -141,9 +111,9 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
     }
   }
   m->closed = 1;
-  for (int f = 0; f < m->nf; ++f) m->closed = m->closed && m->ftype[f] != TFP_FACE_OUTLET;
+  for (int f = 0; f < m->fv.nf; ++f) m->closed = m->closed && m->ftype[f] != TFP_FACE_OUTLET;
   int n = 0;
-  for (int f = 0; f < m->nf; ++f) {
+  for (int f = 0; f < m->fv.nf; ++f) {
     if (m->ftype[f] == TFP_FACE_IMAGE) { /* the first face of its row or column: already numbered */
       int first = tfp_primary(m, f);
       m->us_row[f] = m->us_row[first], m->uf_row[f] = m->uf_row[first];
@@ -153,20 +123,22 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
     m->us_row[f] = active ? n++ : -1;
     m->uf_row[f] = active ? n++ : -1;
   }
-  m->n_vel = n, m->n_unknowns = n + m->nc;
+  m->n_vel = n, m->n_unknowns = n + m->fv.nc;
   return 0;
 }
 
 void tfp_free(tfp_model *m) {
-  double *all[] = {m->xc,  m->yc,  m->hx,     m->hy,     m->vol,    m->area,  m->dist,  m->phi,  m->p,
+  double *all[] = {m->phi,  m->p,
                    m->uf,  m->us,  m->phi_new, m->p_new, m->uf_new, m->us_new, m->phf, m->phg,  m->w,    m->K,
                    m->dK,  m->slip, m->sn,    m->ps,     m->dps,    m->flux,  m->alpha, m->inflow, m->x,
-                   m->rhs, m->tval, m->end_u, m->end_us, m->wall_stats, m->acc_x, m->acc_g, m->acc_scale};
+                   m->rhs, m->end_u, m->end_us, m->wall_stats, m->acc_x, m->acc_g, m->acc_scale};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
-  int *ia[] = {m->lo, m->hi, m->ftype, m->fbound, m->us_row, m->uf_row, m->tan_noslip, m->end_wall, m->trow, m->tcol, m->tpos, m->prow, m->pcol};
+  int *ia[] = {m->ftype, m->us_row, m->uf_row, m->tan_noslip, m->end_wall};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k) free(ia[k]);
   sl_csr_free(&m->A);
+  sl_triplets_free(&m->trip);
   sl_linsolve_destroy(m->ls);
+  sl_fv_grid_free(&m->fv);
   sl_tensor_grid_free(&m->grid);
   tfp_solids_free(&m->s);
   if (m->acc.n) sl_anderson_free(&m->acc);
@@ -174,7 +146,7 @@ void tfp_free(tfp_model *m) {
 
 double tfp_inventory(const tfp_model *m, const double *phi) {
   double s = 0.0;
-  for (int c = 0; c < m->nc; ++c) s += phi[c] * m->vol[c];
+  for (int c = 0; c < m->fv.nc; ++c) s += phi[c] * m->fv.vol[c];
   return s;
 }
 
@@ -183,13 +155,13 @@ double tfp_inventory(const tfp_model *m, const double *phi) {
  * of the faces that run along them. */
 int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
   const double *xf = m->grid.xf, *yf = m->grid.yf;
-  for (int f = 0; f < m->nf; ++f) {
+  for (int f = 0; f < m->fv.nf; ++f) {
     int dir = face_dir(m, f);
     for (int end = 0; end < 2; ++end) {
       int b = m->end_wall[2 * f + end];
       if (b < 0) continue;
-      double x = dir == 0 ? xf[f % (m->nx + 1)] : xf[end ? m->nx : 0];
-      double y = dir == 0 ? yf[end ? m->ny : 0] : yf[(f - m->nfx) / m->nx];
+      double x = dir == 0 ? xf[f % (m->fv.nx + 1)] : xf[end ? m->fv.nx : 0];
+      double y = dir == 0 ? yf[end ? m->fv.ny : 0] : yf[(f - m->fv.nfx) / m->fv.nx];
       double v[4] = {x, y, t, m->c.case_index};
       double U = m->b[b].velocity.e ? sl_expr_eval(m->b[b].velocity.e, v) : 0.0;
       if (!isfinite(U))
@@ -200,15 +172,15 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
     }
     if (m->ftype[f] == TFP_FACE_CLOSED) m->uf[f] = m->us[f] = 0.0;
     if (m->ftype[f] != TFP_FACE_INLET) continue;
-    int inside = m->lo[f] >= 0 ? m->lo[f] : m->hi[f];
-    double x = dir == 0 ? xf[f % (m->nx + 1)] : m->xc[(f - m->nfx) % m->nx];
-    double y = dir == 0 ? m->yc[f / (m->nx + 1)] : yf[(f - m->nfx) / m->nx];
+    int inside = m->fv.lo[f] >= 0 ? m->fv.lo[f] : m->fv.hi[f];
+    double x = dir == 0 ? xf[f % (m->fv.nx + 1)] : m->fv.xc[(f - m->fv.nfx) % m->fv.nx];
+    double y = dir == 0 ? m->fv.yc[f / (m->fv.nx + 1)] : yf[(f - m->fv.nfx) / m->fv.nx];
     double v[4] = {x, y, t, m->c.case_index};
-    double U = sl_expr_eval(m->b[m->fbound[f]].velocity.e, v);
+    double U = sl_expr_eval(m->b[m->fv.bound[f]].velocity.e, v);
     if (!isfinite(U))
       return sl_diag_set(d, SL_EFAILED, "the inlet velocity is not a finite number (%g) at (%g, %g), t = %g", U, x, y,
                          t);
-    double inward = m->lo[f] < 0 ? 1.0 : -1.0;
+    double inward = m->fv.lo[f] < 0 ? 1.0 : -1.0;
     m->us[f] = 0.0;
     m->uf[f] = inward * U / (1.0 - phi[inside]);
   }
@@ -217,28 +189,13 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
 
 /* ---- the linear system ------------------------------------------------------------ */
 
-static int add(tfp_model *m, int row, int col, double v) {
-  if (row < 0 || col < 0) return 0;
-  if (m->n_trip == m->cap_trip) {
-    int cap = m->cap_trip ? 2 * m->cap_trip : 1024;
-    int32_t *r = realloc(m->trow, (size_t)cap * sizeof *r);
-    if (r) m->trow = r;
-    int32_t *c = realloc(m->tcol, (size_t)cap * sizeof *c);
-    if (c) m->tcol = c;
-    double *x = realloc(m->tval, (size_t)cap * sizeof *x);
-    if (x) m->tval = x;
-    if (!r || !c || !x) return -1;
-    m->cap_trip = cap;
-  }
-  m->trow[m->n_trip] = row, m->tcol[m->n_trip] = col, m->tval[m->n_trip] = v, ++m->n_trip;
-  return 0;
-}
+static int add(tfp_model *m, int row, int col, double v) { return sl_triplets_add(&m->trip, row, col, v); }
 
 /* The face's phi in its momentum equations and its continuity flux: the
  * cell on gravity's side of it, the mean of its two cells when gravity runs
  * along it, the inside cell at the boundary. */
 static double face_phi(const tfp_model *m, const double *phi, int f) {
-  int lo = m->lo[f], hi = m->hi[f];
+  int lo = m->fv.lo[f], hi = m->fv.hi[f];
   double v;
   if (lo < 0 || hi < 0) v = phi[lo < 0 ? hi : lo];
   else {
@@ -273,36 +230,36 @@ static int flux_term(tfp_model *m, int row, int nb_row, double fixed, double k, 
  * wall the phase sticks to the wall's speed, slips freely, or (solids) feels
  * the wall closure's stress. */
 static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, sl_diag *d) {
-  const int nx = m->nx, ny = m->ny, dir = face_dir(m, f);
+  const int nx = m->fv.nx, ny = m->fv.ny, dir = face_dir(m, f);
   const int *rows = phase ? m->us_row : m->uf_row;
   const double *u = phase ? m->us : m->uf, *un = phase ? m->us_new : m->uf_new;
   const double *xf = m->grid.xf;
   int i, j;
   if (dir == 0) i = f % (nx + 1), j = f / (nx + 1);
-  else i = (f - m->nfx) % nx, j = (f - m->nfx) / nx;
+  else i = (f - m->fv.nfx) % nx, j = (f - m->fv.nfx) / nx;
   int rc = 0;
   /* along the normal: through the cells lo and hi to their far faces of the same family */
   for (int side = 0; side < 2; ++side) {
-    int c = side ? m->hi[f] : m->lo[f];
+    int c = side ? m->fv.hi[f] : m->fv.lo[f];
     if (c < 0) continue; /* an outlet: zero normal gradient */
     int ci = c % nx, cj = c / nx, cf[4];
     cell_faces(m, c, cf);
     int nb = cf[2 * dir + side];
-    double across = dir == 0 ? m->hy[cj] * (m->axi ? m->xc[ci] : 1.0) : m->hx[ci] * (m->axi ? m->xc[ci] : 1.0);
-    double h = dir == 0 ? m->hx[ci] : m->hy[cj];
+    double across = dir == 0 ? m->fv.hy[cj] * (m->axi ? m->fv.xc[ci] : 1.0) : m->fv.hx[ci] * (m->axi ? m->fv.xc[ci] : 1.0);
+    double h = dir == 0 ? m->fv.hx[ci] : m->fv.hy[cj];
     double k = phase_mu(m, phase, phi, c) * across / h, kt = phase_mu_t(m, phase, phi, c) * across / h;
     rc |= flux_term(m, row, rows[nb], u[nb], k, kt, un[f], un[nb]);
   }
   /* across: to the faces of the same family in the neighbouring rows (x-faces) or columns (y-faces) */
   int n_across = dir == 0 ? ny : nx, a = dir == 0 ? j : i;
-  const double *hs = dir == 0 ? m->hy : m->hx;
+  const double *hs = dir == 0 ? m->fv.hy : m->fv.hx;
   for (int end = 0; end < 2; ++end) {
     int to = end ? a + 1 : a - 1;
     int wall = to < 0 || to >= n_across;
-    if (wall && m->periodic[1 - dir]) to = (to + n_across) % n_across, wall = 0;
+    if (wall && m->fv.periodic[1 - dir]) to = (to + n_across) % n_across, wall = 0;
     /* the corner's radius and the dual length of the face */
     double r_corner = dir == 0 ? xf[i] : xf[end ? i + 1 : i];
-    double across = m->dist[f] * (m->axi ? r_corner : 1.0);
+    double across = m->fv.dist[f] * (m->axi ? r_corner : 1.0);
     /* the viscosity at the corner: the mean of the cells around it */
     double mu = 0.0, mut = 0.0;
     if (phase == 1) { /* the solids' viscosity at the corner's own shear rate */
@@ -311,7 +268,7 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, s
     } else { /* the fluid's: the mean of the cells around the corner */
       int nmu = 0;
       for (int s = 0; s < 2; ++s) {
-        int c = s ? m->hi[f] : m->lo[f];
+        int c = s ? m->fv.hi[f] : m->fv.lo[f];
         if (c < 0) continue;
         mu += phase_mu(m, phase, phi, c), ++nmu;
         int cn = tfp_neighbour(m, c, 1 - dir, end);
@@ -333,17 +290,17 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, s
       }
       continue; /* free slip: no stress */
     }
-    int nb = dir == 0 ? i + (nx + 1) * to : m->nfx + to + nx * j;
-    const double *cs = dir == 0 ? m->yc : m->xc; /* the centres' distance, half cells across a periodic seam */
+    int nb = dir == 0 ? i + (nx + 1) * to : m->fv.nfx + to + nx * j;
+    const double *cs = dir == 0 ? m->fv.yc : m->fv.xc; /* the centres' distance, half cells across a periodic seam */
     double gap = to == a + (end ? 1 : -1) ? fabs(cs[to] - cs[a]) : 0.5 * (hs[a] + hs[to]);
     rc |= flux_term(m, row, rows[nb], u[nb], mu * across / gap, mut * across / gap, un[f], un[nb]);
   }
   if (dir == 0 && m->axi) { /* mu u_r / r^2 over the dual volume */
     double mu = 0.0;
     int nmu = 0;
-    if (m->lo[f] >= 0) mu += phase_mu(m, phase, phi, m->lo[f]), ++nmu;
-    if (m->hi[f] >= 0) mu += phase_mu(m, phase, phi, m->hi[f]), ++nmu;
-    rc |= add(m, row, row, mu / nmu * m->area[f] * m->dist[f] / (xf[i] * xf[i]));
+    if (m->fv.lo[f] >= 0) mu += phase_mu(m, phase, phi, m->fv.lo[f]), ++nmu;
+    if (m->fv.hi[f] >= 0) mu += phase_mu(m, phase, phi, m->fv.hi[f]), ++nmu;
+    rc |= add(m, row, row, mu / nmu * m->fv.area[f] * m->fv.dist[f] / (xf[i] * xf[i]));
   }
   if (rc) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
   return 0;
@@ -371,10 +328,10 @@ static void difference_weights(double ab, const double h[2], int upwind, double 
  * oscillated, lifted solids into the freeboard and blew fluidized_bed_2d's
  * first step up (solids at 400 m/s by its 9th iteration). */
 static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_V, int upwind) {
-  const int nx = m->nx, ny = m->ny, dir = face_dir(m, f);
+  const int nx = m->fv.nx, ny = m->fv.ny, dir = face_dir(m, f);
   const int *rows = phase ? m->us_row : m->uf_row;
   const double *un = phase ? m->us_new : m->uf_new;
-  const int lo = m->lo[f], hi = m->hi[f];
+  const int lo = m->fv.lo[f], hi = m->fv.hi[f];
   int rc = 0;
   /* an entry coef u_g of face g: its unknown, or its given value */
   #define TERM(g, coef) ((rows[g] >= 0) ? add(m, row, rows[g], (coef)) : (m->rhs[row] -= (coef) * un[g], 0))
@@ -387,7 +344,7 @@ static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_
       if (c < 0) continue;
       int cf[4];
       cell_faces(m, c, cf);
-      nb[side] = cf[2 * dir + side], h[side] = dir == 0 ? m->hx[c % nx] : m->hy[c / nx];
+      nb[side] = cf[2 * dir + side], h[side] = dir == 0 ? m->fv.hx[c % nx] : m->fv.hy[c / nx];
     }
     double an = un[f];
     if (nb[0] >= 0 && nb[1] >= 0) {
@@ -414,16 +371,16 @@ static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_
     at /= nt;
     int i, j;
     if (dir == 0) i = f % (nx + 1), j = f / (nx + 1);
-    else i = (f - m->nfx) % nx, j = (f - m->nfx) / nx;
+    else i = (f - m->fv.nfx) % nx, j = (f - m->fv.nfx) / nx;
     int n_across = dir == 0 ? ny : nx, a = dir == 0 ? j : i;
-    const double *hs = dir == 0 ? m->hy : m->hx, *cs = dir == 0 ? m->yc : m->xc;
+    const double *hs = dir == 0 ? m->fv.hy : m->fv.hx, *cs = dir == 0 ? m->fv.yc : m->fv.xc;
     int g[2];
     double dist[2], wall_value[2];
     for (int end = 0; end < 2; ++end) {
       int to = end ? a + 1 : a - 1;
       g[end] = -1;
       if (to < 0 || to >= n_across) {
-        if (m->periodic[1 - dir]) to = (to + n_across) % n_across;
+        if (m->fv.periodic[1 - dir]) to = (to + n_across) % n_across;
         else { /* a wall (or an open side) half a cell off */
           int e = 2 * f + end;
           dist[end] = 0.5 * hs[a];
@@ -434,7 +391,7 @@ static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_
           continue;
         }
       }
-      g[end] = dir == 0 ? i + (nx + 1) * to : m->nfx + to + nx * j;
+      g[end] = dir == 0 ? i + (nx + 1) * to : m->fv.nfx + to + nx * j;
       dist[end] = to == a + (end ? 1 : -1) ? fabs(cs[to] - cs[a]) : 0.5 * (hs[a] + hs[to]);
     }
     double w[3];
@@ -452,14 +409,14 @@ static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_
 /* Drag and solids pressure at the iterate: K, dK/d|s| and the normal slip at
  * every face, P_s and dP_s/dphi in the cells. */
 static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_diag *d) {
-  for (int f = 0; f < m->nf; ++f) {
+  for (int f = 0; f < m->fv.nf; ++f) {
     m->phf[f] = face_phi(m, phi_drag, f);
     m->phg[f] = face_phi(m, m->phi_frozen ? m->phi : phi, f);
     /* the transverse slip: the mean over the faces of the other family around f */
     double st = 0.0;
     int n = 0;
     for (int s = 0; s < 2; ++s) {
-      int c = s ? m->hi[f] : m->lo[f];
+      int c = s ? m->fv.hi[f] : m->fv.lo[f];
       if (c < 0) continue;
       int cf[4];
       cell_faces(m, c, cf);
@@ -470,22 +427,22 @@ static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_
     st /= n;
     m->slip[f] = hypot(m->sn[f], st);
   }
-  int rc = tf_closure_eval(&m->c.drag, m->nf, m->phf, m->slip, m->K, m->dK, d);
+  int rc = tf_closure_eval(&m->c.drag, m->fv.nf, m->phf, m->slip, m->K, m->dK, d);
   if (rc) return sl_diag_prefix(d, rc, "drag");
-  for (int f = 0; f < m->nf; ++f)
+  for (int f = 0; f < m->fv.nf; ++f)
     if (!isfinite(m->K[f]) || m->K[f] < 0.0 || !isfinite(m->dK[f]))
       return sl_diag_set(d, SL_EFAILED, "[closure.drag] gave K = %g (dK/dslip = %g) at face %d, phi = %g, slip %g m/s",
                          m->K[f], m->dK[f], f, m->phf[f], m->slip[f]);
   if (m->c.ps.c) {
-    if ((rc = tf_closure_eval(&m->c.ps, m->nc, phi, NULL, m->ps, m->dps, d)))
+    if ((rc = tf_closure_eval(&m->c.ps, m->fv.nc, phi, NULL, m->ps, m->dps, d)))
       return sl_diag_prefix(d, rc, "solids pressure");
   } else {
-    memset(m->ps, 0, (size_t)m->nc * sizeof *m->ps), memset(m->dps, 0, (size_t)m->nc * sizeof *m->dps);
+    memset(m->ps, 0, (size_t)m->fv.nc * sizeof *m->ps), memset(m->dps, 0, (size_t)m->fv.nc * sizeof *m->dps);
   }
   if ((rc = tfp_solids_pressure(m, phi, m->ps, m->dps, d))) return rc; /* the kinetic theory's, added */
-  for (int c = 0; c < m->nc; ++c) m->dps[c] = fmax(m->dps[c], 0.0); /* a softening law would be unstable */
-  for (int f = 0; f < m->nf; ++f) { /* the transport's upwind phi of the iterate */
-    double lo = m->lo[f] >= 0 ? phi[m->lo[f]] : 0.0, hi = m->hi[f] >= 0 ? phi[m->hi[f]] : 0.0;
+  for (int c = 0; c < m->fv.nc; ++c) m->dps[c] = fmax(m->dps[c], 0.0); /* a softening law would be unstable */
+  for (int f = 0; f < m->fv.nf; ++f) { /* the transport's upwind phi of the iterate */
+    double lo = m->fv.lo[f] >= 0 ? phi[m->fv.lo[f]] : 0.0, hi = m->fv.hi[f] >= 0 ? phi[m->fv.hi[f]] : 0.0;
     m->w[f] = m->us_new[f] > 0.0 ? lo : m->us_new[f] < 0.0 ? hi : fmax(lo, hi);
   }
   return 0;
@@ -496,17 +453,17 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
   const double rho_s = m->c.rho_s, rho_f = m->c.rho_f;
   const int P = m->n_vel;
   int rc = 0;
-  m->n_trip = 0;
+  sl_triplets_clear(&m->trip);
   memset(m->rhs, 0, (size_t)m->n_unknowns * sizeof *m->rhs);
-  for (int f = 0; f < m->nf; ++f) {
+  for (int f = 0; f < m->fv.nf; ++f) {
     int rs = m->us_row[f], rf = m->uf_row[f];
     if (rs < 0 || m->ftype[f] == TFP_FACE_IMAGE) continue;
-    const int lo = m->lo[f], hi = m->hi[f], dir = face_dir(m, f);
-    const double ph = m->phf[f], eps = 1.0 - ph, A = m->area[f], V = A * m->dist[f], gd = m->g[dir];
+    const int lo = m->fv.lo[f], hi = m->fv.hi[f], dir = face_dir(m, f);
+    const double ph = m->phf[f], eps = 1.0 - ph, A = m->fv.area[f], V = A * m->fv.dist[f], gd = m->g[dir];
     const double K = m->K[f], s = m->sn[f];
     double Keff = K + (m->slip[f] > 0.0 ? m->dK[f] * s * s / m->slip[f] : 0.0);
     Keff = fmax(Keff, 0.0);
-    const double p_out = (lo < 0 || hi < 0) ? m->b[m->fbound[f]].pressure : 0.0;
+    const double p_out = (lo < 0 || hi < 0) ? m->b[m->fv.bound[f]].pressure : 0.0;
     /* the weight and the pressure gradient share the iterate's phi_g (never frozen) */
     const double pg = m->phg[f], eg = 1.0 - pg;
     /* solids */
@@ -530,9 +487,9 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
        a stratified suspension (the smeared top of a settling one) overturns once N dt exceeds about 1, N the
        buoyancy frequency. */
     { /* emitted for every face (zero where phi_g is floored), so that the pattern stays the same */
-      double gradp = lo >= 0 && hi >= 0 ? (m->p_new[hi] - m->p_new[lo]) / m->dist[f]
-                     : lo < 0           ? (m->p_new[hi] - p_out) / m->dist[f]
-                                        : (p_out - m->p_new[lo]) / m->dist[f];
+      double gradp = lo >= 0 && hi >= 0 ? (m->p_new[hi] - m->p_new[lo]) / m->fv.dist[f]
+                     : lo < 0           ? (m->p_new[hi] - p_out) / m->fv.dist[f]
+                                        : (p_out - m->p_new[lo]) / m->fv.dist[f];
       double Ss = pg > PHI_FLOOR ? V * (rho_s * gd - gradp) : 0.0, Sf = pg > PHI_FLOOR ? -V * (rho_f * gd - gradp) : 0.0;
       int src[2] = {-1, -1};
       double wt[2] = {1.0, 0.0};
@@ -549,11 +506,11 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
         /* one Euler step's dphi over-predicts the sub-stepped transport beyond a Courant number of 1 (a bed
            blown out at 0.5 m/s): the derivative is scaled back steeply by it */
         double courant = 0.0;
-        for (int k = 0; k < 4; ++k) courant += 0.5 * dt * fabs(m->area[cf[k]] * m->us_new[cf[k]]) / m->vol[c];
+        for (int k = 0; k < 4; ++k) courant += 0.5 * dt * fabs(m->fv.area[cf[k]] * m->us_new[cf[k]]) / m->fv.vol[c];
         double damp = pow(fmax(1.0, courant), -4.0);
         for (int k = 0; k < 4; ++k)
           if (m->us_row[cf[k]] >= 0)
-            cols[nc] = cf[k], dphi[nc++] = damp * wt[q] * (-(dt / m->vol[c]) * SIGMA[k] * m->area[cf[k]] * m->w[cf[k]]);
+            cols[nc] = cf[k], dphi[nc++] = damp * wt[q] * (-(dt / m->fv.vol[c]) * SIGMA[k] * m->fv.area[cf[k]] * m->w[cf[k]]);
       }
       /* Dilute faces: the weight's sensitivity, drho g per unit phi, does not fall with phi as the row's inertia
          and drag do, and would take the row over (a bed blown out leaves such faces): the term is kept to half
@@ -581,7 +538,7 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
       for (int k = 0; k < 4; ++k) {
         int gface = cf[k];
         if (m->us_row[gface] < 0) continue;
-        double coef = sg * A * m->dps[c] * (-(dt / m->vol[c]) * SIGMA[k] * m->area[gface] * m->w[gface]);
+        double coef = sg * A * m->dps[c] * (-(dt / m->fv.vol[c]) * SIGMA[k] * m->fv.area[gface] * m->w[gface]);
         rc |= add(m, rs, m->us_row[gface], coef);
         m->rhs[rs] += coef * m->us_new[gface];
       }
@@ -595,7 +552,7 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
     if (m->s.any && (rc = viscous(m, 1, f, rs, m->phi_new, d))) return rc;
   }
   /* continuity: the mixture's volume flux out of each cell; in a closed vessel cell 0 holds the datum p = 0 */
-  for (int c = 0; c < m->nc; ++c) {
+  for (int c = 0; c < m->fv.nc; ++c) {
     int row = P + c;
     if (m->closed && c == 0) {
       rc |= add(m, row, row, 1.0);
@@ -606,54 +563,17 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
     cell_faces(m, c, cf);
     for (int k = 0; k < 4; ++k) {
       int f = cf[k];
-      double A = SIGMA[k] * m->area[f], ph = m->phf[f];
+      double A = SIGMA[k] * m->fv.area[f], ph = m->phf[f];
       if (m->us_row[f] >= 0) {
         rc |= add(m, row, m->us_row[f], A * ph);
         rc |= add(m, row, m->uf_row[f], A * (1.0 - ph));
       } else if (m->ftype[f] == TFP_FACE_INLET) { /* eps u_f of the inside cell: the given superficial velocity */
-        int in = m->lo[f] >= 0 ? m->lo[f] : m->hi[f];
+        int in = m->fv.lo[f] >= 0 ? m->fv.lo[f] : m->fv.hi[f];
         m->rhs[row] -= A * (1.0 - m->phi[in]) * m->uf[f];
       }
     }
   }
   if (rc) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-  return 0;
-}
-
-/* The CSR matrix of the triplets: the pattern once (again should the
- * triplet sequence change), then the values through the stored positions. */
-static int to_csr(tfp_model *m, sl_diag *d) {
-  int rc = 0;
-  /* the same triplet sequence as the pattern's (the assembly emits a fixed stencil; checked, not assumed) */
-  int same = m->pattern_built && m->A.nnz > 0 && m->n_trip == m->pattern_built &&
-             memcmp(m->prow, m->trow, (size_t)m->n_trip * sizeof *m->trow) == 0 &&
-             memcmp(m->pcol, m->tcol, (size_t)m->n_trip * sizeof *m->tcol) == 0;
-  if (!same) {
-    int32_t *iota = malloc((size_t)(m->n_trip + 1) * sizeof *iota);
-    int32_t *pos = realloc(m->tpos, (size_t)m->n_trip * sizeof *pos);
-    if (pos) m->tpos = pos;
-    if (!iota || !pos) {
-      free(iota);
-      return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-    }
-    for (int k = 0; k <= m->n_trip; ++k) iota[k] = k;
-    sl_csr_free(&m->A);
-    rc = sl_csr_build(&m->A, m->n_unknowns, m->n_unknowns, m->n_trip, iota, m->trow, iota, m->tcol, d);
-    free(iota);
-    if (rc) return rc;
-    for (int k = 0; k < m->n_trip; ++k) m->tpos[k] = sl_csr_find(&m->A, m->trow[k], m->tcol[k]);
-    int32_t *pr = realloc(m->prow, (size_t)m->n_trip * sizeof *pr);
-    if (pr) m->prow = pr;
-    int32_t *pc = realloc(m->pcol, (size_t)m->n_trip * sizeof *pc);
-    if (pc) m->pcol = pc;
-    if (!pr || !pc) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
-    memcpy(m->prow, m->trow, (size_t)m->n_trip * sizeof *pr);
-    memcpy(m->pcol, m->tcol, (size_t)m->n_trip * sizeof *pc);
-    m->pattern_built = m->n_trip;
-  }
-  sl_csr_zero(&m->A);
-  for (int k = 0; k < m->n_trip; ++k) m->A.values[m->tpos[k]] += m->tval[k];
-  sl_csr_touch(&m->A);
   return 0;
 }
 
@@ -663,23 +583,23 @@ static int to_csr(tfp_model *m, sl_diag *d) {
 static int wall_stresses(tfp_model *m, sl_diag *d) {
   double *w = m->wall_stats;
   memset(w, 0, 5 * (size_t)m->n_b * sizeof *w);
-  for (int f = 0; f < m->nf; ++f)
+  for (int f = 0; f < m->fv.nf; ++f)
     for (int end = 0; end < 2; ++end) {
       int e = 2 * f + end, b = m->end_wall[e];
       if (b < 0 || m->ftype[f] != TFP_FACE_INTERIOR) continue;
-      int dir = face_dir(m, f), a = dir == 0 ? f / (m->nx + 1) : (f - m->nfx) % m->nx;
-      double h = dir == 0 ? m->hy[a] : m->hx[a];
-      double r = m->axi ? (dir == 0 ? m->grid.xf[f % (m->nx + 1)] : m->grid.xf[end ? m->nx : 0]) : 1.0;
-      double len = m->dist[f] * r, U = m->end_u[e], muf = 0.0, bn = NAN;
+      int dir = face_dir(m, f), a = dir == 0 ? f / (m->fv.nx + 1) : (f - m->fv.nfx) % m->fv.nx;
+      double h = dir == 0 ? m->fv.hy[a] : m->fv.hx[a];
+      double r = m->axi ? (dir == 0 ? m->grid.xf[f % (m->fv.nx + 1)] : m->grid.xf[end ? m->fv.nx : 0]) : 1.0;
+      double len = m->fv.dist[f] * r, U = m->end_u[e], muf = 0.0, bn = NAN;
       int n = 0;
       for (int s = 0; s < 2; ++s) {
-        int c = s ? m->hi[f] : m->lo[f];
+        int c = s ? m->fv.hi[f] : m->fv.lo[f];
         if (c >= 0) muf += (1.0 - m->phi_new[c]) * m->c.mu_f, ++n;
       }
       muf /= n;
       /* the solids' viscosity of the wall corner, as the momentum equation took it */
-      int i = dir == 0 ? f % (m->nx + 1) : (f - m->nfx) % m->nx, j = dir == 0 ? f / (m->nx + 1) : (f - m->nfx) / m->nx;
-      double mus = m->s.mu_k_corner[dir == 0 ? i + (m->nx + 1) * (j + end) : (i + end) + (m->nx + 1) * j];
+      int i = dir == 0 ? f % (m->fv.nx + 1) : (f - m->fv.nfx) % m->fv.nx, j = dir == 0 ? f / (m->fv.nx + 1) : (f - m->fv.nfx) / m->fv.nx;
+      double mus = m->s.mu_k_corner[dir == 0 ? i + (m->fv.nx + 1) * (j + end) : (i + end) + (m->fv.nx + 1) * j];
       double tf = muf * (m->uf_new[f] - U) / (0.5 * h), ts = 0.0, slip = 0.0;
       if (m->b[b].solids == TFP_SOLIDS_NO_SLIP) ts = mus * (m->us_new[f] - U) / (0.5 * h);
       else if (m->b[b].solids == TFP_SOLIDS_WALL_STRESS) {
@@ -714,7 +634,7 @@ static int wall_stresses(tfp_model *m, sl_diag *d) {
  * phi so accelerated is an affine combination of transported fields (its
  * inventory kept), and a converged step ends on the map's own value. */
 static int acceleration_start(tfp_model *m, sl_diag *d) {
-  const int n = 4 * m->nf + 2 * m->nc;
+  const int n = 4 * m->fv.nf + 2 * m->fv.nc;
   if (!m->acc.n) {
     int rc = sl_anderson_init(&m->acc, n, ANDERSON_DEPTH, d);
     if (rc) return rc;
@@ -727,11 +647,11 @@ static int acceleration_start(tfp_model *m, sl_diag *d) {
 }
 
 static void pack(const tfp_model *m, double *v) {
-  const size_t nf = (size_t)m->nf;
+  const size_t nf = (size_t)m->fv.nf;
   memcpy(v, m->us_new, nf * sizeof *v), memcpy(v + nf, m->uf_new, nf * sizeof *v);
-  memcpy(v + 2 * nf, m->s.theta_new, (size_t)m->nc * sizeof *v);
-  memcpy(v + 2 * nf + (size_t)m->nc, m->end_us, 2 * nf * sizeof *v);
-  memcpy(v + 4 * nf + (size_t)m->nc, m->phi_new, (size_t)m->nc * sizeof *v);
+  memcpy(v + 2 * nf, m->s.theta_new, (size_t)m->fv.nc * sizeof *v);
+  memcpy(v + 2 * nf + (size_t)m->fv.nc, m->end_us, 2 * nf * sizeof *v);
+  memcpy(v + 4 * nf + (size_t)m->fv.nc, m->phi_new, (size_t)m->fv.nc * sizeof *v);
 }
 
 /* The iterate the map starts from; a new map (the iteration's frozen
@@ -742,7 +662,7 @@ static void acceleration_save(tfp_model *m, int it) {
 }
 
 static void acceleration_apply(tfp_model *m, double v_scale, double th_scale) {
-  const int nf = m->nf, nc = m->nc;
+  const int nf = m->fv.nf, nc = m->fv.nc;
   pack(m, m->acc_g);
   for (int k = 0; k < 2 * nf; ++k) m->acc_scale[k] = v_scale;
   for (int c = 0; c < nc; ++c) m->acc_scale[2 * nf + c] = th_scale > 0.0 ? th_scale : 1.0;
@@ -760,7 +680,7 @@ static void acceleration_apply(tfp_model *m, double v_scale, double th_scale) {
 }
 
 int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
-  const int nf = m->nf, nc = m->nc;
+  const int nf = m->fv.nf, nc = m->fv.nc;
   int rc = tfp_boundary_values(m, t + dt, m->phi, d);
   if (rc) return rc;
   memcpy(m->us_new, m->us, (size_t)nf * sizeof *m->us);
@@ -779,7 +699,7 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
     m->sink_frozen = it > FREEZE_PHI_AFTER;
     if ((rc = closures(m, it > FREEZE_PHI_AFTER ? m->phi : m->phi_new, m->phi_new, d))) return rc;
     if ((rc = tfp_solids_viscosity(m, m->us_new, m->phi_new, d))) return rc;
-    if ((rc = assemble(m, dt, d)) || (rc = to_csr(m, d))) return rc;
+    if ((rc = assemble(m, dt, d)) || (rc = sl_triplets_to_csr(&m->trip, &m->A, m->n_unknowns, d))) return rc;
     if ((rc = sl_linsolve_solve(m->ls, &m->A, m->rhs, m->x, d))) return sl_diag_prefix(d, rc, "the coupled solve");
     change = 0.0, umax = 0.0;
     for (int f = 0; f < nf; ++f) {
@@ -808,7 +728,7 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
       /* the inlet's u_f with the new phi of its cell */
       for (int f = 0; f < nf; ++f)
         if (m->ftype[f] == TFP_FACE_INLET) {
-          int in = m->lo[f] >= 0 ? m->lo[f] : m->hi[f];
+          int in = m->fv.lo[f] >= 0 ? m->fv.lo[f] : m->fv.hi[f];
           m->uf_new[f] = m->uf[f] * (1.0 - m->phi[in]) / (1.0 - m->phi_new[in]);
         }
       return 0;

@@ -39,7 +39,7 @@ typedef struct muscl {
  * (the uniform grid's 2 dphi / dx would not), hence within [0, phi_max] and [0, 2 phi_c]. Next to the boundary
  * the slope is 0 (first order there, and nothing enters through a wall), as in the column's end cells. */
 static int muscl_setup(const tfp_model *m, muscl *w) {
-  const int nc = m->nc;
+  const int nc = m->fv.nc;
   w->nb = malloc(4 * (size_t)nc * sizeof *w->nb);
   w->g = malloc(9 * (size_t)nc * sizeof *w->g);
   if (!w->nb || !w->g) return -1;
@@ -47,15 +47,15 @@ static int muscl_setup(const tfp_model *m, muscl *w) {
   for (int c = 0; c < nc; ++c)
     for (int dir = 0; dir < 2; ++dir) {
       int l = tfp_neighbour(m, c, dir, 0), r = tfp_neighbour(m, c, dir, 1);
-      const double *size = dir == 0 ? m->hx : m->hy;
-      int at = dir == 0 ? c % m->nx : c / m->nx; /* the cell's index along dir */
+      const double *size = dir == 0 ? m->fv.hx : m->fv.hy;
+      int at = dir == 0 ? c % m->fv.nx : c / m->fv.nx; /* the cell's index along dir */
       double *g = w->g + 6 * c + 3 * dir;
       w->nb[4 * c + 2 * dir] = l < 0 ? c : l, w->nb[4 * c + 2 * dir + 1] = r < 0 ? c : r;
       if (l < 0 || r < 0) {
         g[0] = g[1] = g[2] = 0.0;
         continue;
       }
-      double h = size[at], hl = size[dir == 0 ? l % m->nx : l / m->nx], hr = size[dir == 0 ? r % m->nx : r / m->nx];
+      double h = size[at], hl = size[dir == 0 ? l % m->fv.nx : l / m->fv.nx], hr = size[dir == 0 ? r % m->fv.nx : r / m->fv.nx];
       g[0] = h / (h + hl), g[1] = h / (h + hr), g[2] = h / (2.0 * h + hl + hr);
     }
   return 0;
@@ -66,7 +66,7 @@ static void muscl_free(muscl *w) { free(w->nb), free(w->g); }
 /* The limited half increments of phi in every cell along x and y. */
 static void muscl_increments(const tfp_model *m, const muscl *w, const double *phi) {
   const int mc = m->c.limiter == TF_LIMITER_MC;
-  for (int k = 0; k < 2 * m->nc; ++k) { /* k = 2 c + dir */
+  for (int k = 0; k < 2 * m->fv.nc; ++k) { /* k = 2 c + dir */
     int c = k >> 1;
     const double *g = w->g + 3 * k;
     double dl = phi[c] - phi[w->nb[2 * k]], dr = phi[w->nb[2 * k + 1]] - phi[c], a;
@@ -88,51 +88,51 @@ static void transport_stage(tfp_model *m, const double *us, const double *phi, d
   const double phi_max = m->c.phi_max, D = m->c.diffusivity;
   double *F = m->flux, *alpha = m->alpha, *in = m->inflow;
   if (w) muscl_increments(m, w, phi);
-  memset(in, 0, (size_t)m->nc * sizeof *in);
-  for (int f = 0; f < m->nf; ++f) {
+  memset(in, 0, (size_t)m->fv.nc * sizeof *in);
+  for (int f = 0; f < m->fv.nf; ++f) {
     F[f] = 0.0;
     if (m->ftype[f] == TFP_FACE_IMAGE) continue;
-    int lo = m->lo[f], hi = m->hi[f], dir = f >= m->nfx;
-    double q = m->area[f] * us[f];
+    int lo = m->fv.lo[f], hi = m->fv.hi[f], dir = f >= m->fv.nfx;
+    double q = m->fv.area[f] * us[f];
     /* nothing enters from outside (clear fluid at an outlet; held solids at an inlet) */
     if (q > 0.0 && lo >= 0) F[f] = q * (w ? phi[lo] + w->half[2 * lo + dir] : phi[lo]);
     else if (q < 0.0 && hi >= 0) F[f] = q * (w ? phi[hi] - w->half[2 * hi + dir] : phi[hi]);
-    if (D > 0.0 && lo >= 0 && hi >= 0) F[f] -= D * m->area[f] * (phi[hi] - phi[lo]) / m->dist[f];
+    if (D > 0.0 && lo >= 0 && hi >= 0) F[f] -= D * m->fv.area[f] * (phi[hi] - phi[lo]) / m->fv.dist[f];
     if (F[f] > 0.0 && hi >= 0) in[hi] += F[f];
     else if (F[f] < 0.0 && lo >= 0) in[lo] -= F[f];
   }
   /* what leaves a cell is bounded by the CFL condition (phi stays >= 0); what enters is scaled here */
-  for (int c = 0; c < m->nc; ++c)
-    alpha[c] = in[c] > 0.0 ? fmin(1.0, fmax(0.0, (phi_max - phi[c]) * m->vol[c] / (ds * in[c]))) : 1.0;
-  for (int f = 0; f < m->nf; ++f) {
-    int lo = m->lo[f], hi = m->hi[f];
+  for (int c = 0; c < m->fv.nc; ++c)
+    alpha[c] = in[c] > 0.0 ? fmin(1.0, fmax(0.0, (phi_max - phi[c]) * m->fv.vol[c] / (ds * in[c]))) : 1.0;
+  for (int f = 0; f < m->fv.nf; ++f) {
+    int lo = m->fv.lo[f], hi = m->fv.hi[f];
     if (F[f] > 0.0 && hi >= 0) F[f] *= alpha[hi];
     else if (F[f] < 0.0 && lo >= 0) F[f] *= alpha[lo];
     if (hi < 0) *out += ds * F[f];
     if (lo < 0) *out -= ds * F[f];
   }
-  if (next != phi) memcpy(next, phi, (size_t)m->nc * sizeof *next);
-  for (int f = 0; f < m->nf; ++f) {
-    if (m->lo[f] >= 0) next[m->lo[f]] -= ds / m->vol[m->lo[f]] * F[f];
-    if (m->hi[f] >= 0) next[m->hi[f]] += ds / m->vol[m->hi[f]] * F[f];
+  if (next != phi) memcpy(next, phi, (size_t)m->fv.nc * sizeof *next);
+  for (int f = 0; f < m->fv.nf; ++f) {
+    if (m->fv.lo[f] >= 0) next[m->fv.lo[f]] -= ds / m->fv.vol[m->fv.lo[f]] * F[f];
+    if (m->fv.hi[f] >= 0) next[m->fv.hi[f]] += ds / m->fv.vol[m->fv.hi[f]] * F[f];
   }
-  for (int c = 0; c < m->nc; ++c) /* round-off only */
+  for (int c = 0; c < m->fv.nc; ++c) /* round-off only */
     next[c] = next[c] < 0.0 ? 0.0 : next[c] > phi_max ? phi_max : next[c];
 }
 
 int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double *outflow, sl_diag *d) {
   double t0 = cpu_now();
   double *rate = m->inflow, rmax = 0.0;
-  memset(rate, 0, (size_t)m->nc * sizeof *rate);
-  for (int f = 0; f < m->nf; ++f) {
+  memset(rate, 0, (size_t)m->fv.nc * sizeof *rate);
+  for (int f = 0; f < m->fv.nf; ++f) {
     if (m->ftype[f] == TFP_FACE_IMAGE) continue;
-    int lo = m->lo[f], hi = m->hi[f];
-    double q = m->area[f] * us[f];
-    double Df = m->c.diffusivity > 0.0 && lo >= 0 && hi >= 0 ? m->c.diffusivity * m->area[f] / m->dist[f] : 0.0;
+    int lo = m->fv.lo[f], hi = m->fv.hi[f];
+    double q = m->fv.area[f] * us[f];
+    double Df = m->c.diffusivity > 0.0 && lo >= 0 && hi >= 0 ? m->c.diffusivity * m->fv.area[f] / m->fv.dist[f] : 0.0;
     if (lo >= 0) rate[lo] += fmax(q, 0.0) + Df;
     if (hi >= 0) rate[hi] += fmax(-q, 0.0) + Df;
   }
-  for (int c = 0; c < m->nc; ++c) rmax = fmax(rmax, rate[c] / m->vol[c]);
+  for (int c = 0; c < m->fv.nc; ++c) rmax = fmax(rmax, rate[c] / m->fv.vol[c]);
   /* a limited second-order stage is positive at half the first-order step (a face value may be up to twice the
      cell's mean) */
   const int order2 = m->c.order == 2;
@@ -150,7 +150,7 @@ int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double
     muscl_free(&w);
     return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
   }
-  memcpy(phi, m->phi, (size_t)m->nc * sizeof *phi);
+  memcpy(phi, m->phi, (size_t)m->fv.nc * sizeof *phi);
   for (long s = 0; s < n; ++s) {
     if (!order2) {
       transport_stage(m, us, phi, ds, phi, NULL, &out);
@@ -161,7 +161,7 @@ int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double
     double o1 = 0.0, o2 = 0.0;
     transport_stage(m, us, phi, ds, w.stage, &w, &o1);
     transport_stage(m, us, w.stage, ds, w.stage, &w, &o2);
-    for (int c = 0; c < m->nc; ++c) phi[c] = 0.5 * (phi[c] + w.stage[c]);
+    for (int c = 0; c < m->fv.nc; ++c) phi[c] = 0.5 * (phi[c] + w.stage[c]);
     out += 0.5 * (o1 + o2);
   }
   muscl_free(&w);
