@@ -58,9 +58,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "core/models/run.h"
+#include "sluice/sluice.h"
 #include "core/io/sample.h"
-#include "core/models/navier_stokes/navier_stokes.h"
 #include "bench_child.h"
 #include "bench_machine.h"
 #include "centreline_profile.h"
@@ -73,11 +72,11 @@ typedef struct run_result {
   char err[2048 + 64];
   int dofs;
   double umin;         /* steady only */
-  double cpu, wall;    /* process CPU and wall seconds in sl_model_run */
-  double assembly;     /* wall seconds (sl_run_result) */
+  double cpu, wall;    /* process CPU and wall seconds in sluice_run */
+  double assembly;     /* wall seconds (sluice_summary) */
   double t_symbolic, t_numeric, t_solve;
   long n_symbolic, n_numeric, n_skipped, n_solves;
-  long matrix_asm, rhs_asm; /* full and right-hand-side-only assemblies (sl_run_result) */
+  long matrix_asm, rhs_asm; /* full and right-hand-side-only assemblies (sluice_summary) */
   long rss_kb;         /* peak resident set after the run */
   long steps;          /* transient: accepted steps */
   long step_count;     /* transient: steps 2..K-1 measured */
@@ -170,7 +169,7 @@ static int parse_summary(const char *s, run_result *r) {
 }
 
 typedef struct monitor {
-  const sl_run_result *res;
+  const sluice_summary *res; /* kept up to date by the run before each call */
   run_result *r;
   long last; /* the last step: shortened to end exactly, it may be a new matrix */
   double wall_prev, assembly_prev;
@@ -183,71 +182,68 @@ static void on_step(void *user, double t, double dt, long step, int iterations) 
   if (step >= 2 && step < m->last) {
     m->r->step_wall += now - m->wall_prev;
     m->r->step_wall_max = fmax(m->r->step_wall_max, now - m->wall_prev);
-    m->r->step_assembly += m->res->model.assembly - m->assembly_prev;
+    m->r->step_assembly += m->res->assembly - m->assembly_prev;
     ++m->r->step_count;
   }
-  m->wall_prev = now, m->assembly_prev = m->res->model.assembly;
+  m->wall_prev = now, m->assembly_prev = m->res->assembly;
 }
 
 static int run(const bench_opts *bo, const char *solver, int n, int transient, run_result *r) {
   memset(r, 0, sizeof *r);
   r->umin = NAN;
   r->dofs = 2 * (2 * n + 1) * (2 * n + 1) + (n + 1) * (n + 1);
-  char path[4096], file[128], set[128];
+  char path[4096], file[128];
   snprintf(path, sizeof path, "%s/configs/cavity_stokes.ini", bo->src);
   snprintf(file, sizeof file, "/tmp/sluice_bench_cavity_%ld_%d.h5", (long)getpid(), n);
-  sl_diag d = {0};
-  sl_ini *ini = NULL;
-  sl_registry *reg = NULL;
-  int rc = sl_ini_parse_file(path, &ini, &d);
-  snprintf(set, sizeof set, "mesh.cells=%d", n);
-  if (!rc) rc = sl_ini_apply_override(ini, set, &d);
-  if (solver && !rc) {
-    snprintf(set, sizeof set, "solver.linear=%s", solver);
-    rc = sl_ini_apply_override(ini, set, &d);
+  /* the overrides: the mesh, the solver, the bench's own, a fixed-step transient */
+  char sets[16][128];
+  const char *set_list[20];
+  int n_sets = 0;
+  snprintf(sets[n_sets++], sizeof sets[0], "mesh.cells=%d", n);
+  if (solver) snprintf(sets[n_sets++], sizeof sets[0], "solver.linear=%s", solver);
+  for (int k = 0; k < bo->n_sets && n_sets < 10; ++k) snprintf(sets[n_sets++], sizeof sets[0], "%s", bo->sets[k]);
+  if (transient) {
+    snprintf(sets[n_sets++], sizeof sets[0], "time.scheme=bdf1");
+    snprintf(sets[n_sets++], sizeof sets[0], "time.dt=%.17g", bo->dt);
+    snprintf(sets[n_sets++], sizeof sets[0], "time.adaptive=false");
+    snprintf(sets[n_sets++], sizeof sets[0], "time.end=%.17g", bo->dt * (double)bo->steps);
   }
-  for (int k = 0; k < bo->n_sets && !rc; ++k) rc = sl_ini_apply_override(ini, bo->sets[k], &d);
-  if (transient && !rc) {
-    char dt[64];
-    snprintf(dt, sizeof dt, "time.dt=%.17g", bo->dt);
-    snprintf(set, sizeof set, "time.end=%.17g", bo->dt * (double)bo->steps);
-    rc = sl_ini_apply_override(ini, "time.scheme=bdf1", &d);
-    if (!rc) rc = sl_ini_apply_override(ini, dt, &d);
-    if (!rc) rc = sl_ini_apply_override(ini, "time.adaptive=false", &d);
-    if (!rc) rc = sl_ini_apply_override(ini, set, &d);
-  }
-  if (!rc) rc = sl_registry_create(&reg, NULL, 0, &d);
-  sl_run_result res;
-  monitor mon = {.res = &res, .r = r, .last = bo->steps};
-  sl_run_opts o = {.scene_path = path, .output = file, .sluice_version = "bench", .monitor = on_step,
-                      .monitor_user = &mon};
+  for (int k = 0; k < n_sets; ++k) set_list[k] = sets[k];
+  set_list[n_sets] = NULL;
+  sluice_error e = {0, ""};
+  sluice *sc = NULL;
+  sluice_open_opts oo = {.sets = set_list};
+  int rc = sluice_open(path, &oo, &sc, &e);
+  sluice_summary res, live;
+  monitor mon = {.res = &live, .r = r, .last = bo->steps};
+  sluice_run_opts o = {.scene_path = path, .output = file, .version = "bench", .progress = on_step,
+                       .progress_user = &mon, .live = &live};
   if (!rc) {
     double c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID), w0 = clock_s(CLOCK_MONOTONIC);
     mon.wall_prev = w0;
-    rc = sl_model_run(ini, reg, &o, &res, &d);
+    rc = sluice_run(sc, &o, &res, &e);
     r->cpu = clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0, r->wall = clock_s(CLOCK_MONOTONIC) - w0;
     struct rusage ru;
     if (!rc) {
-      if (getrusage(RUSAGE_SELF, &ru)) rc = sl_diag_set(&d, SL_EFAILED, "getrusage: %s", strerror(errno));
+      if (getrusage(RUSAGE_SELF, &ru)) rc = e.code = 1, snprintf(e.msg, sizeof e.msg, "getrusage: %s", strerror(errno));
       else r->rss_kb = ru.ru_maxrss;
     }
   }
   if (!rc) {
-    r->assembly = res.model.assembly, r->steps = res.steps;
-    r->matrix_asm = res.model.matrix_assemblies, r->rhs_asm = res.model.residual_assemblies;
-    if (parse_summary(res.model.linear_summary, r))
-      rc = sl_diag_set(&d, SL_EFAILED, "unexpected linear solver summary '%s'", res.model.linear_summary);
+    r->assembly = res.assembly, r->steps = res.steps;
+    r->matrix_asm = res.matrix_assemblies, r->rhs_asm = res.residual_assemblies;
+    if (parse_summary(res.linear_summary, r))
+      rc = 1, snprintf(e.msg, sizeof e.msg, "unexpected linear solver summary '%s'", res.linear_summary);
   }
   if (!rc && r->step_count > 0) r->step_wall /= (double)r->step_count, r->step_assembly /= (double)r->step_count;
   if (!rc && !transient && !isfinite(r->umin = centreline_min(file)))
-    rc = sl_diag_set(&d, SL_EFAILED, "sampling the centreline of %s failed", file);
+    rc = 1, snprintf(e.msg, sizeof e.msg, "sampling the centreline of %s failed", file);
   if (!rc && !transient && bo->prof && profile_error(file, bo, &r->prof_max, &r->prof_l2))
-    rc = sl_diag_set(&d, SL_EFAILED, "sampling the centreline profile of %s failed", file);
-  if (rc) snprintf(r->err, sizeof r->err, "%s", d.msg);
+    rc = 1, snprintf(e.msg, sizeof e.msg, "sampling the centreline profile of %s failed", file);
+  if (rc) snprintf(r->err, sizeof r->err, "%s", e.msg);
   r->ok = !rc;
   bench_remove_output(file);
-  sl_registry_destroy(reg);
-  sl_ini_free(ini);
+  sluice_close(sc);
   return rc;
 }
 

@@ -20,11 +20,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "core/models/run.h"
-#include "core/models/mixture/mixture.h"
-#include "core/models/navier_stokes/navier_stokes.h"
-#include "core/models/two_fluid/two_fluid.h"
-#include "core/plugin/closure_ini.h"
+#include "core/util/diag.h"
+#include "sluice/sluice.h"
 
 enum { MAX_SCENES = 16, MAX_SETS = 16 };
 
@@ -53,31 +50,26 @@ static int run_once(const char *configs, const scene_spec *s, int timing, measur
   snprintf(path, sizeof path, "%s/%s.ini", configs, s->name);
   snprintf(out, sizeof out, "closure_share_%s.h5", s->name);
   double w0 = clock_of(CLOCK_MONOTONIC), c0 = clock_of(CLOCK_PROCESS_CPUTIME_ID);
-  sl_ini *ini = NULL;
-  sl_registry *reg = NULL;
-  int model = 0, rc = sl_ini_parse_file(path, &ini, d);
-  for (int i = 0; i < s->n_sets && !rc; ++i) rc = sl_ini_apply_override(ini, s->sets[i], d);
-  if (!rc) rc = sl_ini_get_choice(ini, "scene", "model", 1, 0, "navier_stokes|mixture|two_fluid", &model, d);
-  if (!rc) rc = sl_registry_create(&reg, NULL, 0, d);
-  if (!rc) rc = sl_registry_index(reg, d);
-  if (!rc) sl_registry_set_timing(reg, timing);
+  const char *sets[MAX_SETS + 1];
+  for (int i = 0; i < s->n_sets; ++i) sets[i] = s->sets[i];
+  sets[s->n_sets] = NULL;
+  sluice *sc = NULL;
+  sluice_error e = {0, ""};
+  sluice_open_opts oo = {.sets = sets, .timing = timing};
+  int rc = sluice_open(path, &oo, &sc, &e);
   if (!rc) {
-    sl_run_result res;
-    sl_run_opts o = {.scene_path = path, .output = out, .sluice_version = "bench"};
-    rc = model == 1 ? sl_model_run(ini, reg, &o, &res, d)
-         : model == 2 ? sl_model_run(ini, reg, &o, &res, d)
-                      : sl_model_run(ini, reg, &o, &res, d);
+    sluice_summary res;
+    sluice_run_opts o = {.scene_path = path, .output = out, .version = "bench"};
+    rc = sluice_run(sc, &o, &res, &e);
   }
   m->wall = clock_of(CLOCK_MONOTONIC) - w0, m->cpu = clock_of(CLOCK_PROCESS_CPUTIME_ID) - c0;
-  for (int i = 0; reg && i < reg->n_libraries; ++i)
-    for (int32_t k = 0; k < reg->libraries[i]->n_closures; ++k) {
-      const sl_closure_usage *u = &reg->libraries[i]->usage[k];
-      if (u->instances == 0) continue;
-      m->n_closures++;
-      m->calls += u->calls, m->points += u->points, m->closure_seconds += u->seconds;
-    }
-  sl_registry_destroy(reg);
-  sl_ini_free(ini);
+  if (sc) {
+    sluice_closure_use total;
+    m->n_closures = sluice_closure_totals(sc, &total);
+    m->calls = total.calls, m->points = total.points, m->closure_seconds = total.seconds;
+  }
+  if (rc) sl_diag_set(d, rc, "%s", e.msg);
+  sluice_close(sc);
   remove(out);
   return rc;
 }

@@ -42,9 +42,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "core/models/run.h"
-#include "core/models/mixture/mixture.h"
-#include "core/models/navier_stokes/navier_stokes.h"
+#include "sluice/sluice.h"
 #include "bench_child.h"
 #include "bench_machine.h"
 #include "svg_plot.h"
@@ -115,40 +113,38 @@ static int run(const char *src, const scene_spec *s, int k, run_result *r) {
   snprintf(file, sizeof file, "/tmp/sluice_bench_cost_%ld.h5", (long)getpid());
   if (s->ny[k]) snprintf(set, sizeof set, "mesh.cells=%d,%d", s->nx[k], s->ny[k]);
   else snprintf(set, sizeof set, "mesh.cells=%d", s->nx[k]);
-  sl_diag d = {{0}};
-  sl_ini *ini = NULL;
-  sl_registry *reg = NULL;
-  int model = 0;
-  int rc = sl_ini_parse_file(path, &ini, &d);
-  if (!rc) rc = sl_ini_apply_override(ini, set, &d);
-  for (int j = 0; s->sets[j] && !rc; ++j) rc = sl_ini_apply_override(ini, s->sets[j], &d);
-  if (!rc) rc = sl_ini_get_choice(ini, "scene", "model", 1, 0, "navier_stokes|mixture", &model, &d);
-  if (!rc) rc = sl_registry_create(&reg, NULL, 0, &d);
-  if (!rc) rc = sl_registry_scan(reg, &d);
-  sl_run_result res;
+  const char *sets[20];
+  int n_sets = 0;
+  sets[n_sets++] = set;
+  for (int j = 0; s->sets[j] && n_sets < 18; ++j) sets[n_sets++] = s->sets[j];
+  sets[n_sets] = NULL;
+  sluice *sc = NULL;
+  sluice_error e = {0, ""};
+  sluice_open_opts oo = {.sets = sets, .scan_all = 1};
+  int rc = sluice_open(path, &oo, &sc, &e);
+  sluice_summary res;
   memset(&res, 0, sizeof res);
-  sl_run_opts o = {.scene_path = path, .output = file, .sluice_version = "bench"};
+  sluice_run_opts o = {.scene_path = path, .output = file, .version = "bench"};
   if (!rc) {
     double c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID), w0 = clock_s(CLOCK_MONOTONIC);
-    rc = model == 1 ? sl_model_run(ini, reg, &o, &res, &d) : sl_model_run(ini, reg, &o, &res, &d);
+    rc = sluice_run(sc, &o, &res, &e);
     r->cpu = clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0, r->wall = clock_s(CLOCK_MONOTONIC) - w0;
   }
   if (!rc) {
-    r->assembly = res.model.assembly, r->assemblies = res.model.matrix_assemblies + res.model.residual_assemblies;
-    r->symbolic = res.model.linear.t_symbolic, r->symbolics = res.model.linear.n_symbolic;
-    r->numeric = res.model.linear.t_numeric, r->numerics = res.model.linear.n_numeric;
-    r->solve = res.model.linear.t_solve, r->solves = res.model.linear.n_solves;
-    r->transport = res.model.cpu_coupled, r->steps = res.steps;
-    /* the mixture's summary: "solids: N transport sub-steps (...)" (core/models/mixture.c) */
-    const char *sub = strstr(res.model.coupling_summary, "solids: ");
+    r->assembly = res.assembly, r->assemblies = res.matrix_assemblies + res.residual_assemblies;
+    r->symbolic = res.linear.t_symbolic, r->symbolics = res.linear.n_symbolic;
+    r->numeric = res.linear.t_numeric, r->numerics = res.linear.n_numeric;
+    r->solve = res.linear.t_solve, r->solves = res.linear.n_solves;
+    r->transport = res.cpu_coupled, r->steps = res.steps;
+    /* the mixture's summary: "solids: N transport sub-steps (...)" (core/models/mixture/mixture.c) */
+    const char *sub = strstr(res.coupling_summary, "solids: ");
     if (s->has_transport && (!sub || sscanf(sub, "solids: %ld transport sub-steps", &r->substeps) != 1))
-      rc = sl_diag_set(&d, SL_EFAILED, "no transport sub-step count in '%s'", res.model.coupling_summary);
+      rc = 1, snprintf(e.msg, sizeof e.msg, "no transport sub-step count in '%s'", res.coupling_summary);
   }
-  if (rc) snprintf(r->err, sizeof r->err, "%s", d.msg);
+  if (rc) snprintf(r->err, sizeof r->err, "%s", e.msg);
   r->ok = !rc;
   bench_remove_output(file);
-  sl_registry_destroy(reg);
-  sl_ini_free(ini);
+  sluice_close(sc);
   return rc;
 }
 

@@ -14,7 +14,7 @@
  *    summed over the coarse cells, or the smallest dt), which measures the
  *    discretisation error of the transient itself.
  *
- * CPU time is process time spent in the run (sl_model_run), the best of
+ * CPU time is process time spent in the run (sluice_run), the best of
  * --repeat R (default 3) for runs under 2 s.
  *
  *   bench_two_fluid_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH] [--repeat R]
@@ -30,10 +30,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "core/models/run.h"
+#include "sluice/sluice.h"
 #include "core/io/output.h"
-#include "core/models/two_fluid/two_fluid.h"
-#include "core/plugin/closure_ini.h"
 #include "bench_machine.h"
 #include "svg_plot.h"
 
@@ -83,23 +81,21 @@ static int run_once(const char *src, const scene_spec *s, int cells, double dt, 
   snprintf(set[1], sizeof set[1], "time.dt=%.17g", dt);
   snprintf(set[2], sizeof set[2], "output.every=%.17g", T_PROBE);
   sl_diag d = {0};
-  sl_ini *ini = NULL;
-  sl_registry *reg = NULL;
-  int rc = sl_ini_parse_file(path, &ini, &d);
-  for (int k = 0; k < 3 && !rc; ++k) rc = sl_ini_apply_override(ini, set[k], &d);
-  if (!rc && s->extra) rc = sl_ini_apply_override(ini, s->extra, &d);
-  if (!rc) rc = sl_registry_create(&reg, NULL, 0, &d);
-  if (!rc) rc = sl_registry_scan(reg, &d);
-  sl_run_result res;
-  sl_run_opts o = {.scene_path = path, .output = file, .sluice_version = "bench"};
+  const char *sets[5] = {set[0], set[1], set[2], s->extra, NULL};
+  sluice *sc = NULL;
+  sluice_error e = {0, ""};
+  sluice_open_opts oo = {.sets = sets, .scan_all = 1};
+  int rc = sluice_open(path, &oo, &sc, &e);
+  sluice_summary res;
+  sluice_run_opts o = {.scene_path = path, .output = file, .version = "bench"};
   if (!rc) {
     double c0 = cpu_seconds();
-    rc = sl_model_run(ini, reg, &o, &res, &d);
+    rc = sluice_run(sc, &o, &res, &e);
     r->cpu = cpu_seconds() - c0;
     r->steps = res.steps;
   }
-  sl_registry_destroy(reg);
-  sl_ini_free(ini);
+  if (rc) sl_diag_set(&d, rc, "%s", e.msg);
+  sluice_close(sc);
   double last[MAX_CELLS];
   if (!rc) rc = read_phi(file, T_PROBE, r->profile, cells, &d);
   if (!rc) rc = read_phi(file, INFINITY, last, cells, &d);

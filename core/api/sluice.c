@@ -270,3 +270,17 @@ int sluice_closure_usage(const sluice *s, const char *kind, const char *name, sl
   }
   return -1;
 }
+
+int sluice_closure_totals(const sluice *s, sluice_closure_use *total) {
+  memset(total, 0, sizeof *total);
+  int n = 0;
+  for (int i = 0; i < s->reg->n_libraries; ++i)
+    for (int32_t k = 0; k < s->reg->libraries[i]->n_closures; ++k) {
+      const sl_closure_usage *u = &s->reg->libraries[i]->usage[k];
+      if (u->instances == 0) continue;
+      ++n;
+      total->instances += u->instances, total->calls += u->calls, total->points += u->points;
+      total->seconds += u->seconds;
+    }
+  return n;
+}

@@ -133,6 +133,8 @@ typedef struct sluice_closure_use {
   double seconds; /* inside the calls, when timed */
 } sluice_closure_use;
 int sluice_closure_usage(const sluice *s, const char *kind, const char *name, sluice_closure_use *u);
+/* The closures the runs so far created: their number, and their uses summed into total. */
+int sluice_closure_totals(const sluice *s, sluice_closure_use *total);
 
 #ifdef __cplusplus
 }
