@@ -34,7 +34,9 @@ static int fail(sluice_error *e, int code, const char *msg) {
   return code;
 }
 
-static int from_diag(sluice_error *e, int code, const sl_diag *d) { return code ? fail(e, code, d->msg) : 0; }
+static int from_diag(sluice_error *e, int code, const sl_diag *d) {
+  return code ? fail(e, sl_exit_status(code), d->msg) : 0;
+}
 
 static int finish_open(sluice *s, const sluice_open_opts *o, sluice_error *e) {
   sl_diag d;

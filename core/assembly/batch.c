@@ -14,7 +14,7 @@ int sl_asm_batch_init(sl_asm_batch *b, int nq, int with_shear_rate, sl_diag *d) 
   if (with_shear_rate) b->shear_rate = malloc(cap * sizeof *b->shear_rate);
   if (!b->x || !b->cell || (with_shear_rate && !b->shear_rate)) {
     sl_asm_batch_free(b);
-    return sl_diag_set(d, SL_EFAILED, "assembly: out of memory for a batch of %zu points", cap);
+    return sl_diag_set(d, SL_ENOMEM, "assembly: out of memory for a batch of %zu points", cap);
   }
   return 0;
 }

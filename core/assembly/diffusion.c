@@ -22,14 +22,14 @@ static void work_free(diffusion_work *w) {
 
 static int work_create(diffusion_work **out, const sl_dofmap *dm, const sl_diffusion_opts *o, sl_diag *d) {
   diffusion_work *w = calloc(1, sizeof *w);
-  if (!w) return sl_diag_set(d, SL_EFAILED, "diffusion: out of memory");
+  if (!w) return sl_diag_set(d, SL_ENOMEM, "diffusion: out of memory");
   int degree = o->quad_degree > 0 ? o->quad_degree : 2 * dm->element->order + (o->axisymmetric ? 1 : 0);
   int rc = sl_fe_values_create(&w->fv, dm->mesh, 1, &dm->element, degree, o->axisymmetric, d);
   if (!rc) rc = sl_asm_batch_init(&w->batch, w->fv->quad.n, 0, d);
   if (!rc) {
     size_t cap = (size_t)SL_ASSEMBLY_BATCH_CELLS * w->fv->quad.n;
     w->k = malloc(cap * sizeof *w->k), w->f = malloc(cap * sizeof *w->f);
-    if (!w->k || !w->f) rc = sl_diag_set(d, SL_EFAILED, "diffusion: out of memory");
+    if (!w->k || !w->f) rc = sl_diag_set(d, SL_ENOMEM, "diffusion: out of memory");
   }
   if (rc) {
     work_free(w);

@@ -60,7 +60,7 @@ static void work_free(flow_work *w) {
 
 static int work_create(flow_work **out, const sl_th_space *th, const sl_flow_opts *o, sl_diag *d) {
   flow_work *w = calloc(1, sizeof *w);
-  if (!w) return sl_diag_set(d, SL_EFAILED, "flow: out of memory");
+  if (!w) return sl_diag_set(d, SL_ENOMEM, "flow: out of memory");
   const sl_element *spaces[2] = {th->vel->element, th->pres->element};
   /* Degree 5 integrates the planar Q2 terms with constant coefficients
    * exactly. The r weight and the hoop terms raise the degree: with 3 x 3
@@ -76,7 +76,7 @@ static int work_create(flow_work **out, const sl_th_space *th, const sl_flow_opt
     w->rho = malloc(cap * sizeof *w->rho);
     w->mu = malloc(2 * cap * sizeof *w->mu);
     w->force = calloc(cap * th->n_comp, sizeof *w->force);
-    if (!w->state || !w->rho || !w->mu || !w->force) rc = sl_diag_set(d, SL_EFAILED, "flow: out of memory");
+    if (!w->state || !w->rho || !w->mu || !w->force) rc = sl_diag_set(d, SL_ENOMEM, "flow: out of memory");
   }
   if (rc) {
     work_free(w);

@@ -24,7 +24,7 @@ int sl_assemble_flow_traction(sl_system *s, const sl_th_space *th, const char *b
   int32_t *cell = malloc((size_t)np * sizeof *cell);
   double *t = malloc((size_t)np * nc * sizeof *t);
   if (!x || !nrm || !xi || !w || !cell || !t) {
-    rc = sl_diag_set(d, SL_EFAILED, "traction: out of memory");
+    rc = sl_diag_set(d, SL_ENOMEM, "traction: out of memory");
     goto out;
   }
   const sl_element *p1 = sl_element_lagrange(m->cell_type, 1);

@@ -28,14 +28,14 @@ static void work_free(stokes_work *w) {
 static int work_create(stokes_work **out, const sl_th_space *th, const sl_stokes_opts *o, int with_shear,
                        sl_diag *d) {
   stokes_work *w = calloc(1, sizeof *w);
-  if (!w) return sl_diag_set(d, SL_EFAILED, "stokes: out of memory");
+  if (!w) return sl_diag_set(d, SL_ENOMEM, "stokes: out of memory");
   const sl_element *spaces[2] = {th->vel->element, th->pres->element};
   int rc = sl_fe_values_create(&w->fv, th->mesh, 2, spaces, o->quad_degree > 0 ? o->quad_degree : 4, 0, d);
   if (!rc) rc = sl_asm_batch_init(&w->batch, w->fv->quad.n, with_shear, d);
   if (!rc) {
     size_t cap = (size_t)SL_ASSEMBLY_BATCH_CELLS * w->fv->quad.n;
     w->mu = malloc(cap * sizeof *w->mu), w->force = malloc(cap * th->n_comp * sizeof *w->force);
-    if (!w->mu || !w->force) rc = sl_diag_set(d, SL_EFAILED, "stokes: out of memory");
+    if (!w->mu || !w->force) rc = sl_diag_set(d, SL_ENOMEM, "stokes: out of memory");
   }
   if (rc) {
     work_free(w);

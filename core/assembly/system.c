@@ -13,7 +13,7 @@ int sl_system_init(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_el
   if (!ptr || !s->b) {
     free(ptr);
     sl_system_free(s);
-    return sl_diag_set(d, SL_EFAILED, "assembly: out of memory for a system of %d dofs", (int)n_dofs);
+    return sl_diag_set(d, SL_ENOMEM, "assembly: out of memory for a system of %d dofs", (int)n_dofs);
   }
   for (int32_t e = 0; e <= n_elem; ++e) ptr[e] = e * dofs_per_elem;
   int rc = sl_csr_build_uniform(&s->A, n_dofs, n_elem, dofs_per_elem, elem_dofs, d);
@@ -56,7 +56,7 @@ int sl_constraints_init(sl_constraints *bc, int32_t n_dofs, sl_diag *d) {
   bc->value = calloc((size_t)n_dofs, sizeof *bc->value);
   if (!bc->fixed || !bc->value) {
     sl_constraints_free(bc);
-    return sl_diag_set(d, SL_EFAILED, "constraints: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "constraints: out of memory");
   }
   bc->n_dofs = n_dofs;
   return 0;
@@ -98,7 +98,7 @@ int sl_constraints_apply(const sl_constraints *bc, sl_system *s, int symmetric, 
   double *vals = malloc((size_t)bc->n_fixed * sizeof *vals);
   if (!rows || !vals) {
     free(rows), free(vals);
-    return sl_diag_set(d, SL_EFAILED, "constraints: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "constraints: out of memory");
   }
   for (int32_t i = 0; i < bc->n_dofs; ++i)
     if (bc->fixed[i]) rows[k] = i, vals[k++] = bc->value[i];

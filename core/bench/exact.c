@@ -98,7 +98,7 @@ static int settling_velocity(sl_closure *c, const sl_ini *ini, double g, int n, 
   const double **in = calloc((size_t)n_in, sizeof *in);
   double **out = calloc((size_t)n_out, sizeof *out), **dout = calloc((size_t)n_in * (size_t)n_out, sizeof *dout);
   int rc = 0;
-  if (!work || !in || !out || !dout) rc = sl_diag_set(d, SL_EFAILED, "exact = kynch: out of memory");
+  if (!work || !in || !out || !dout) rc = sl_diag_set(d, SL_ENOMEM, "exact = kynch: out of memory");
   for (int i = 0; i < n_in && !rc; ++i) {
     const char *name = desc->in[i].name;
     double *col = work + (size_t)i * (size_t)n, v = 0.0;
@@ -404,7 +404,7 @@ int sl_bench_exact_create(const char *name, const sl_ini *ini, const sl_registry
                           sl_diag *d) {
   *out = NULL;
   sl_bench_exact *e = calloc(1, sizeof *e);
-  if (!e) return sl_diag_set(d, SL_EFAILED, "exact: out of memory");
+  if (!e) return sl_diag_set(d, SL_ENOMEM, "exact: out of memory");
   int rc;
   if (!strcmp(name, "kynch")) e->kind = EXACT_KYNCH, rc = kynch_create(e, ini, reg, d);
   else if (!strcmp(name, "bingham")) e->kind = EXACT_BINGHAM, rc = bingham_create(e, ini, reg, d);

@@ -9,7 +9,7 @@
 #include "core/io/output.h"
 #include "core/io/sample.h"
 
-static int oom(sl_diag *d) { return sl_diag_set(d, SL_EFAILED, "measure: out of memory"); }
+static int oom(sl_diag *d) { return sl_diag_set(d, SL_ENOMEM, "measure: out of memory"); }
 
 static int alloc_profile(sl_bench_measured *m, int n, int with_ref, sl_diag *d) {
   m->is_profile = 1, m->n = n;

@@ -268,7 +268,7 @@ int sl_bench_write_png(const sl_bench_table *t, const char *path, sl_diag *d) {
   const char **labels = calloc((size_t)nv * (size_t)np, sizeof *labels);
   if (!series || !xs || !ys || !names || !labels) {
     free(series), free(xs), free(ys), free(names), free(labels);
-    return sl_diag_set(d, SL_EFAILED, "%s: out of memory", path);
+    return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", path);
   }
   int all_x = 1;
   for (int p = 0; p < np; ++p) all_x &= isfinite(s->point_x[p]);

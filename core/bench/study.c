@@ -17,7 +17,7 @@ static char *dup_str(const char *s, size_t n) {
   return p;
 }
 
-static int oom(sl_diag *d) { return sl_diag_set(d, SL_EFAILED, "bench: out of memory"); }
+static int oom(sl_diag *d) { return sl_diag_set(d, SL_ENOMEM, "bench: out of memory"); }
 
 static int at_entry(sl_diag *d, const sl_ini_entry *e, const char *section, const char *why) {
   return sl_diag_set(d, SL_EBADINPUT, "%s:%d:%d: [%s] %s: %s", e->file, e->line, e->col, section, e->key, why);

@@ -96,7 +96,7 @@ static int check_runs(bench *b, sl_diag *d) {
   int n = s->n_variants * s->n_points, rc = 0;
   b->inis = calloc((size_t)n, sizeof *b->inis);
   b->exact = calloc((size_t)n, sizeof *b->exact);
-  if (!b->inis || !b->exact) return sl_diag_set(d, SL_EFAILED, "bench: out of memory");
+  if (!b->inis || !b->exact) return sl_diag_set(d, SL_ENOMEM, "bench: out of memory");
   for (int v = 0; v < s->n_variants && !rc; ++v)
     for (int p = 0; p < s->n_points && !rc; ++p) {
       int i = v * s->n_points + p;

@@ -84,7 +84,7 @@ int main(int argc, char **argv) {
   const char *names[sizeof commands / sizeof commands[0]];
   for (size_t i = 0; i < sizeof commands / sizeof commands[0]; ++i) {
     names[i] = commands[i].name;
-    if (strcmp(name, commands[i].name) == 0) return commands[i].run(argc - 2, argv + 2);
+    if (strcmp(name, commands[i].name) == 0) return sl_exit_status(commands[i].run(argc - 2, argv + 2));
   }
   const char *s = sl_suggest(name, names, (int)(sizeof names / sizeof names[0]));
   if (s) return sl_cli_error(SL_EBADINPUT, "unknown command '%s'; did you mean '%s'? (sluice --help)", name, s);

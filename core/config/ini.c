@@ -174,7 +174,7 @@ static int err_at(sl_diag *d, const char *file, int line, int col, const char *f
   return sl_diag_set(d, SL_EBADINPUT, "%s:%d:%d: error: %s", file, line, col, msg);
 }
 
-static int oom(sl_diag *d) { return sl_diag_set(d, SL_EFAILED, "error: out of memory while handling the configuration"); }
+static int oom(sl_diag *d) { return sl_diag_set(d, SL_ENOMEM, "error: out of memory while handling the configuration"); }
 
 /* ------------------------------------------------------- configuration data */
 

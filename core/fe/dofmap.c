@@ -76,7 +76,7 @@ static int identify(sl_dofmap *dm, const sl_mesh_periodic *match, int n_match, s
   unsigned char *on_partner = calloc((size_t)nn + 1, 1);
   if (!parent || !rep || !on_partner) {
     free(parent), free(rep), free(on_partner);
-    return sl_diag_set(d, SL_EFAILED, "dof map: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "dof map: out of memory");
   }
   for (int32_t i = 0; i < nn; ++i) parent[i] = i, rep[i] = -1;
   int face_nodes = dm->element->order == 2 && m->dim == 2;
@@ -116,7 +116,7 @@ static int identify(sl_dofmap *dm, const sl_mesh_periodic *match, int n_match, s
     size_t ncd = (size_t)m->n_cells * dm->dofs_per_cell;
     dm->cell_dofs = malloc((ncd + 1) * sizeof *dm->cell_dofs);
     dm->xy = malloc((2 * (size_t)n_dofs + 1) * sizeof *dm->xy);
-    if (!dm->cell_dofs || !dm->xy) rc = sl_diag_set(d, SL_EFAILED, "dof map: out of memory");
+    if (!dm->cell_dofs || !dm->xy) rc = sl_diag_set(d, SL_ENOMEM, "dof map: out of memory");
     for (size_t k = 0; k < ncd && !rc; ++k) dm->cell_dofs[k] = dm->node_dof[dm->cell_nodes[k]];
     for (int32_t i = 0; i < nn && !rc; ++i)
       if (parent[i] == i) {
@@ -137,7 +137,7 @@ static int dofmap_build(const sl_mesh *mesh, int order, const sl_mesh_periodic *
     return sl_diag_set(d, SL_EBADINPUT, "dof map: no Lagrange element of order %d on %s cells (1 or 2)", order,
                        sl_cell_type_name(mesh->cell_type));
   sl_dofmap *dm = calloc(1, sizeof *dm);
-  if (!dm) return sl_diag_set(d, SL_EFAILED, "dof map: out of memory");
+  if (!dm) return sl_diag_set(d, SL_ENOMEM, "dof map: out of memory");
   dm->mesh = mesh, dm->element = e, dm->dofs_per_cell = e->n_basis;
   dm->n_nodes = count_nodes(mesh, e);
   dm->n_periodic = n_match;
@@ -146,7 +146,7 @@ static int dofmap_build(const sl_mesh *mesh, int order, const sl_mesh_periodic *
   dm->node_dof = malloc(((size_t)dm->n_nodes + 1) * sizeof *dm->node_dof);
   if (!dm->cell_nodes || !dm->node_xy || !dm->node_dof) {
     sl_dofmap_destroy(dm);
-    return sl_diag_set(d, SL_EFAILED, "dof map: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "dof map: out of memory");
   }
   number_cells(dm);
   place_nodes(dm);
@@ -185,7 +185,7 @@ static int match_pairs(const sl_mesh *mesh, const sl_periodic_pair *pairs, int n
   int *master = malloc(((size_t)mesh->n_boundaries + 1) * sizeof *master);
   if (!match || !master) {
     free(match), free(master);
-    return sl_diag_set(d, SL_EFAILED, "periodic pairs: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "periodic pairs: out of memory");
   }
   int rc = 0;
   for (int k = 0; k < n_pairs && !rc; ++k) rc = sl_mesh_periodic_match(mesh, pairs[k].boundary, pairs[k].partner, &match[k], d);
@@ -249,7 +249,7 @@ int sl_dofmap_boundary_dofs(const sl_dofmap *dm, const char *boundary, int32_t *
   int32_t nf = m->bface_start[b + 1] - m->bface_start[b];
   if (nf == 0) return 0;
   int32_t *list = malloc(3 * (size_t)nf * sizeof *list), k = 0;
-  if (!list) return sl_diag_set(d, SL_EFAILED, "dof map: out of memory");
+  if (!list) return sl_diag_set(d, SL_ENOMEM, "dof map: out of memory");
   for (int32_t i = m->bface_start[b]; i < m->bface_start[b + 1]; ++i) {
     int f = m->bface[i];
     list[k++] = dm->node_dof[m->face_vertices[2 * f]];
@@ -302,7 +302,7 @@ int sl_th_create_periodic(const sl_mesh *mesh, int n_comp, const sl_periodic_pai
   sl_th_space *th = calloc(1, sizeof *th);
   if (!th) {
     free_matches(match, n_pairs);
-    return sl_diag_set(d, SL_EFAILED, "Taylor-Hood: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "Taylor-Hood: out of memory");
   }
   th->mesh = mesh, th->n_comp = n_comp;
   rc = dofmap_build(mesh, 2, match, n_pairs, &th->vel, d);
@@ -319,7 +319,7 @@ int sl_th_create_periodic(const sl_mesh *mesh, int n_comp, const sl_periodic_pai
   th->cell_dofs = malloc((size_t)mesh->n_cells * th->dofs_per_cell * sizeof *th->cell_dofs);
   if (!th->cell_dofs) {
     sl_th_destroy(th);
-    return sl_diag_set(d, SL_EFAILED, "Taylor-Hood: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "Taylor-Hood: out of memory");
   }
   number_th_cells(th);
   *out = th;

@@ -32,7 +32,7 @@ int sl_fe_values_init(sl_fe_values *fv, const sl_mesh *mesh, int n_spaces, const
 int sl_fe_values_create(sl_fe_values **out, const sl_mesh *mesh, int n_spaces, const sl_element *const *spaces,
                         int quad_degree, int axisymmetric, sl_diag *d) {
   *out = malloc(sizeof **out);
-  if (!*out) return sl_diag_set(d, SL_EFAILED, "fe values: out of memory");
+  if (!*out) return sl_diag_set(d, SL_ENOMEM, "fe values: out of memory");
   int rc = sl_fe_values_init(*out, mesh, n_spaces, spaces, quad_degree, axisymmetric, d);
   if (rc) free(*out), *out = NULL;
   return rc;

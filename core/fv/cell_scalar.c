@@ -13,7 +13,7 @@ int sl_cell_scalar_init(sl_cell_scalar *cs, const sl_fv_grid *g, sl_diag *d) {
   cs->rhs = malloc((size_t)nc * sizeof *cs->rhs);
   if (!pairs || !cs->rhs) {
     free(pairs);
-    return sl_diag_set(d, SL_EFAILED, "cell scalar: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "cell scalar: out of memory");
   }
   for (int c = 0; c < nc; ++c)
     for (int dir = 0; dir < 2; ++dir) pairs[4 * c + 2 * dir] = c, pairs[4 * c + 2 * dir + 1] = sl_fv_neighbour(g, c, dir, 1);

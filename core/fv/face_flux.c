@@ -64,7 +64,7 @@ int sl_face_flux_create(const sl_th_space *th, int axisymmetric, const unsigned 
   *out = NULL;
   const sl_mesh *m = th->mesh;
   sl_face_flux *ff = calloc(1, sizeof *ff);
-  if (!ff) return sl_diag_set(d, SL_EFAILED, "face fluxes: out of memory");
+  if (!ff) return sl_diag_set(d, SL_ENOMEM, "face fluxes: out of memory");
   ff->th = th, ff->axisymmetric = axisymmetric, ff->pinned = -1;
   int nc = m->n_cells, nf = m->n_faces, rc = 0;
   ff->adjustable = calloc((size_t)nf, 1);
@@ -76,7 +76,7 @@ int sl_face_flux_create(const sl_th_space *th, int axisymmetric, const unsigned 
   ff->n_pairs = n_pairs;
   ff->pairs = malloc((size_t)(2 * n_pairs + 1) * sizeof *ff->pairs);
   if (!ff->adjustable || !ff->div || !ff->lambda || !ptr || !rows || !ff->pairs) {
-    rc = sl_diag_set(d, SL_EFAILED, "face fluxes: out of memory");
+    rc = sl_diag_set(d, SL_ENOMEM, "face fluxes: out of memory");
     goto out;
   }
   int open = 0;

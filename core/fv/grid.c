@@ -15,10 +15,10 @@ int sl_fv_grid_build(sl_fv_grid *m, const sl_tensor_grid *g, int axi, const int 
     size_t n;
   } a[] = {{&m->xc, nx}, {&m->yc, ny}, {&m->hx, nx}, {&m->hy, ny}, {&m->vol, nc}, {&m->area, nf}, {&m->dist, nf}};
   for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
-    if (!(*a[k].p = calloc(a[k].n, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "grid: out of memory");
+    if (!(*a[k].p = calloc(a[k].n, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "grid: out of memory");
   int **ia[] = {&m->lo, &m->hi, &m->bound, &m->image};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k)
-    if (!(*ia[k] = calloc(nf, sizeof(int)))) return sl_diag_set(d, SL_EFAILED, "grid: out of memory");
+    if (!(*ia[k] = calloc(nf, sizeof(int)))) return sl_diag_set(d, SL_ENOMEM, "grid: out of memory");
   for (int i = 0; i < nx; ++i) m->hx[i] = g->xf[i + 1] - g->xf[i], m->xc[i] = 0.5 * (g->xf[i] + g->xf[i + 1]);
   for (int j = 0; j < ny; ++j) m->hy[j] = g->yf[j + 1] - g->yf[j], m->yc[j] = 0.5 * (g->yf[j] + g->yf[j + 1]);
   for (int c = 0; c < m->nc; ++c) {

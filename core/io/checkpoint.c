@@ -191,7 +191,7 @@ static int read_slot(const char *path, hid_t slot, const char *sname, sl_checkpo
   int n = 0;
   rc = sl_h5_list(arrays, &names, &n, path, full, d);
   if (!rc && n > 0 && !(ck->arrays = calloc((size_t)n, sizeof *ck->arrays)))
-    rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory reading %s", path, full);
+    rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading %s", path, full);
   for (int i = 0; !rc && i < n; ++i) {
     sl_checkpoint_array *a = &ck->arrays[i];
     char dname[160];
@@ -210,7 +210,7 @@ static int read_slot(const char *path, hid_t slot, const char *sname, sl_checkpo
     } else if (dim > 0) {
       double *buf = malloc((size_t)dim * sizeof *buf);
       if (!buf)
-        rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory reading %s", path, dname);
+        rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading %s", path, dname);
       else if (H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) < 0)
         rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot read dataset", dname);
       a->data = buf;

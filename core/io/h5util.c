@@ -156,7 +156,7 @@ int sl_h5_read_attr_string(hid_t loc, const char *name, char *buf, size_t len, c
     char *tmp = malloc(sz + 1);
     hid_t mt = H5Tcopy(ft);
     if (!tmp || mt < 0) {
-      rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory reading %s", file, where);
+      rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading %s", file, where);
     } else if (H5Aread(a, mt, tmp) < 0) {
       rc = sl_h5_fail(d, SL_EBADINPUT, file, "cannot read attribute", where);
     } else {
@@ -233,7 +233,7 @@ int sl_h5_list(hid_t group, char ***names, int *n, const char *file, const char 
   *n = 0;
   if (H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, &idx, list_cb, &l) < 0) {
     sl_io_free_names(l.v, l.n);
-    if (l.oom) return sl_diag_set(d, SL_EFAILED, "%s: out of memory listing %s", file, obj);
+    if (l.oom) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory listing %s", file, obj);
     return sl_h5_fail(d, SL_EBADINPUT, file, "cannot list group", obj);
   }
   *names = l.v;

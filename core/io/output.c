@@ -105,7 +105,7 @@ int sl_output_open(sl_output **out, const char *path, sl_diag *d) {
 
   /* A missing directory is the common mistake: say so plainly. */
   char *tmp = dup_str(path);
-  if (!tmp) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  if (!tmp) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   const char *dir = dirname(tmp);
   struct stat sb;
   int rc = 0;
@@ -120,7 +120,7 @@ int sl_output_open(sl_output **out, const char *path, sl_diag *d) {
   if (rc) return rc;
 
   sl_output *o = calloc(1, sizeof *o);
-  if (!o) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  if (!o) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   o->file = o->step_group = -1;
   o->ck_current = -1;
   o->path = dup_str(path);
@@ -134,7 +134,7 @@ int sl_output_open(sl_output **out, const char *path, sl_diag *d) {
   o->xmf_tmp = malloc(stem + 9);
   if (!o->path || !o->xmf_path || !o->xmf_tmp) {
     free_output(o);
-    return sl_diag_set(d, SL_EFAILED, "out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "out of memory");
   }
   memcpy(o->xmf_path, path, stem);
   memcpy(o->xmf_path + stem, ".xmf", 5);
@@ -237,7 +237,7 @@ int sl_output_write_mesh(sl_output *o, int dim, int32_t n_vertices, const double
 
   /* ParaView wants XYZ: pad 1-D and 2-D coordinates with zeros. */
   double *xyz = malloc((size_t)n_vertices * 3 * sizeof *xyz);
-  if (!xyz) return sl_diag_set(d, SL_EFAILED, "%s: out of memory for the mesh", o->path);
+  if (!xyz) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory for the mesh", o->path);
   for (int32_t v = 0; v < n_vertices; ++v)
     for (int c = 0; c < 3; ++c) xyz[3 * (size_t)v + c] = c < dim ? coords[(size_t)v * dim + c] : 0.0;
   hsize_t dc[2] = {(hsize_t)n_vertices, 3}, dt[2] = {(hsize_t)n_cells, (hsize_t)nodes_per_cell};
@@ -300,7 +300,7 @@ int sl_output_write_field(sl_output *o, const char *name, sl_centring centring, 
   if (o->n_fields == o->cap_fields) {
     int cap = o->cap_fields ? 2 * o->cap_fields : 8;
     sl_out_field *f = realloc(o->fields, (size_t)cap * sizeof *f);
-    if (!f) return sl_diag_set(d, SL_EFAILED, "%s: out of memory", o->path);
+    if (!f) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", o->path);
     o->fields = f, o->cap_fields = cap;
   }
   int32_t n = centring == SL_CENTRE_NODE ? o->n_vertices : o->n_cells;
@@ -319,7 +319,7 @@ int sl_output_write_field(sl_output *o, const char *name, sl_centring centring, 
   double *pad = NULL;
   if (components == 2) { /* ParaView's vectors have 3 components */
     pad = malloc((size_t)n * 3 * sizeof *pad);
-    if (!pad) return sl_diag_set(d, SL_EFAILED, "%s: out of memory writing %s", o->path, full);
+    if (!pad) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory writing %s", o->path, full);
     for (int32_t i = 0; i < n; ++i) {
       pad[3 * (size_t)i] = values[2 * (size_t)i];
       pad[3 * (size_t)i + 1] = values[2 * (size_t)i + 1];
@@ -337,7 +337,7 @@ int sl_output_write_field(sl_output *o, const char *name, sl_centring centring, 
   if (ds >= 0 && H5Dclose(ds) < 0 && !rc) rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot close dataset", full);
   if (rc) return rc;
   sl_out_field *f = &o->fields[o->n_fields];
-  if (!(f->name = dup_str(name))) return sl_diag_set(d, SL_EFAILED, "%s: out of memory", o->path);
+  if (!(f->name = dup_str(name))) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", o->path);
   f->centring = centring;
   f->components = stored;
   f->n = n;
@@ -436,11 +436,11 @@ int sl_output_end_step(sl_output *o, sl_diag *d) {
   if (o->n_steps == o->cap_steps) {
     int cap = o->cap_steps ? 2 * o->cap_steps : 16;
     sl_out_step *s = realloc(o->steps, (size_t)cap * sizeof *s);
-    if (!s) return sl_diag_set(d, SL_EFAILED, "%s: out of memory", o->path);
+    if (!s) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", o->path);
     o->steps = s, o->cap_steps = cap;
   }
   char *xml = render_step(o, index, o->step_time);
-  if (!xml) return sl_diag_set(d, SL_EFAILED, "%s: out of memory", o->path);
+  if (!xml) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", o->path);
   o->steps[o->n_steps].index = index;
   o->steps[o->n_steps].time = o->step_time;
   o->steps[o->n_steps].xml = xml;

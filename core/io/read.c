@@ -26,7 +26,7 @@ static int read_array(const char *path, hid_t loc, const char *name, hid_t mtype
     size_t count = (size_t)dims[0] * (r == 2 ? (size_t)dims[1] : 1);
     *buf = malloc(count * elem + 1);
     if (!*buf)
-      rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory reading %s", path, name);
+      rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading %s", path, name);
     else if (count > 0 && H5Dread(ds, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, *buf) < 0)
       rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot read dataset", name);
   }
@@ -104,7 +104,7 @@ static int list_steps(const char *path, hid_t f, step_entry **out, int *n_out, s
   int rc = sl_h5_list(f, &names, &n, path, "/", d);
   if (rc) return rc;
   step_entry *s = malloc(((size_t)n + 1) * sizeof *s);
-  if (!s) rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory", path);
+  if (!s) rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory", path);
   for (int i = 0; !rc && i < n; ++i) {
     int idx, len = 0;
     if (sscanf(names[i], "step_%d%n", &idx, &len) != 1 || names[i][len] != 0 || strlen(names[i]) >= 32) continue;
@@ -150,7 +150,7 @@ int sl_output_read_times(const char *path, int *n_steps, double **times, sl_diag
     *times = malloc((size_t)n * sizeof **times);
     if (!*times) {
       free(s);
-      return sl_diag_set(d, SL_EFAILED, "%s: out of memory", path);
+      return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", path);
     }
     for (int i = 0; i < n; ++i) (*times)[i] = s[i].time;
   }
@@ -325,7 +325,7 @@ int sl_output_read_text(const char *path, const char *what, char **text, sl_diag
     size_t sz = H5Tget_size(type);
     char *buf = malloc(sz + 1);
     if (!buf) {
-      rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory reading %s", path, what);
+      rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading %s", path, what);
     } else {
       herr_t st = at ? H5Aread(a, type, buf) : H5Dread(o, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf);
       if (st < 0) {
@@ -369,7 +369,7 @@ static int note_field(const char *path, hid_t g, const step_entry *st, const cha
     if (c->n_fields == *cap) {
       int ncap = *cap ? 2 * *cap : 8;
       sl_output_field_info *nf = realloc(c->fields, (size_t)ncap * sizeof *nf);
-      if (!nf) return sl_diag_set(d, SL_EFAILED, "%s: out of memory", path);
+      if (!nf) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", path);
       c->fields = nf, *cap = ncap;
     }
     fi = &c->fields[c->n_fields++];
@@ -393,7 +393,7 @@ int sl_output_read_contents(const char *path, sl_output_contents *c, sl_diag *d)
   int n = 0, cap = 0;
   rc = list_steps(path, f, &s, &n, d);
   if (!rc && n > 0 && !(c->times = malloc((size_t)n * sizeof *c->times)))
-    rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory", path);
+    rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory", path);
   for (int i = 0; !rc && i < n; ++i) {
     c->times[i] = s[i].time;
     c->n_steps = i + 1;

@@ -108,7 +108,7 @@ static int locator_build(locator *L, const sl_output_mesh *m, const char *path, 
 
   size_t n_bins = (size_t)L->nb[0] * (size_t)L->nb[1];
   L->start = calloc(n_bins + 1, sizeof *L->start);
-  if (!L->start) return sl_diag_set(d, SL_EFAILED, "%s: out of memory for the point locator", path);
+  if (!L->start) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory for the point locator", path);
   /* Two passes: count the cells of each bin, then fill. */
   for (int pass = 0; pass < 2; ++pass) {
     for (int c = 0; c < m->n_cells; ++c) {
@@ -129,7 +129,7 @@ static int locator_build(locator *L, const sl_output_mesh *m, const char *path, 
       L->cells = malloc((L->start[n_bins] + 1) * sizeof *L->cells);
       if (!L->cells) {
         locator_free(L);
-        return sl_diag_set(d, SL_EFAILED, "%s: out of memory for the point locator", path);
+        return sl_diag_set(d, SL_ENOMEM, "%s: out of memory for the point locator", path);
       }
     }
   }
@@ -250,7 +250,7 @@ int sl_sample_points(const char *path, const char *field, double t, int n_points
   }
   if (!rc) {
     s->values = malloc(((size_t)n_points * (size_t)f.components + 1) * sizeof *s->values);
-    if (!s->values) rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory for %d sample points", path, n_points);
+    if (!s->values) rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory for %d sample points", path, n_points);
   }
   if (!rc) {
     s->step = f.step;

@@ -64,7 +64,7 @@ int sl_mesh_interval(double a, double b, int n, const sl_grading *g, sl_mesh **o
   int *cells = malloc(2 * (size_t)n * sizeof *cells);
   int rc = 0;
   if (!xy || !x || !cells) {
-    rc = sl_diag_set(d, SL_EFAILED, "interval: out of memory for %d cells", n);
+    rc = sl_diag_set(d, SL_ENOMEM, "interval: out of memory for %d cells", n);
     goto done;
   }
   rc = sl_mesh_graded_points(a, b, n, g, x, d);
@@ -128,7 +128,7 @@ static int grid(const char *who, double x0, double x1, double y0, double y1, int
   int *sides = malloc(2 * (size_t)nside * sizeof *sides), *tags = malloc((size_t)nside * sizeof *tags);
   int rc = 0;
   if (!xs || !ys || !xy || !cells || !sides || !tags) {
-    rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory for %d x %d cells", who, nx, ny);
+    rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory for %d x %d cells", who, nx, ny);
     goto done;
   }
   if ((rc = sl_mesh_graded_points(x0, x1, nx, &o->grade_x, xs, d)) ||

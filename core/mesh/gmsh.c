@@ -79,7 +79,7 @@ static int err(gmsh *g, int line, const char *fmt, ...) {
   return sl_diag_set(g->d, SL_EBADINPUT, "%s:%d: %s", g->name, line, msg);
 }
 
-static int oom(gmsh *g) { return sl_diag_set(g->d, SL_EFAILED, "%s: out of memory", g->name); }
+static int oom(gmsh *g) { return sl_diag_set(g->d, SL_ENOMEM, "%s: out of memory", g->name); }
 
 /* Grows *p (elements of `size` bytes) to hold at least `need`. */
 static int grow(void **p, int *cap, int need, size_t size) {
@@ -854,7 +854,7 @@ int sl_mesh_read_gmsh(const char *path, sl_mesh **out, sl_diag *d) {
       if (!t) {
         free(text);
         fclose(f);
-        return sl_diag_set(d, SL_EFAILED, "%s: out of memory reading the mesh file", path);
+        return sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading the mesh file", path);
       }
       text = t;
       cap = c;

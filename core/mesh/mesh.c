@@ -183,7 +183,7 @@ static int build_faces(sl_mesh *m, const char *source, const int *cell_line, hal
   int *face_of = malloc((size_t)nh * sizeof *face_of);
   int rc = 0;
   if (!h || !pos || !first || !face_of) {
-    rc = sl_diag_set(d, SL_EFAILED, "out of memory building the faces of a mesh with %d cells", m->n_cells);
+    rc = sl_diag_set(d, SL_ENOMEM, "out of memory building the faces of a mesh with %d cells", m->n_cells);
     goto fail;
   }
   for (int c = 0; c < m->n_cells; ++c)
@@ -253,7 +253,7 @@ static int build_faces(sl_mesh *m, const char *source, const int *cell_line, hal
   m->face_local = malloc(2 * (size_t)n_faces * sizeof *m->face_local);
   m->face_tag = malloc((size_t)n_faces * sizeof *m->face_tag);
   if (!m->cell_faces || !m->face_vertices || !m->face_cells || !m->face_local || !m->face_tag) {
-    rc = sl_diag_set(d, SL_EFAILED, "out of memory building %d faces", n_faces);
+    rc = sl_diag_set(d, SL_ENOMEM, "out of memory building %d faces", n_faces);
     goto fail;
   }
   int next = 0;
@@ -345,12 +345,12 @@ static int tag_boundaries(sl_mesh *m, const sl_mesh_spec *s, const half_face *h,
 
   m->bface_start = calloc((size_t)m->n_boundaries + 1, sizeof *m->bface_start);
   m->bface = malloc(((size_t)m->n_boundary_faces + 1) * sizeof *m->bface);
-  if (!m->bface_start || !m->bface) return sl_diag_set(d, SL_EFAILED, "out of memory listing boundary faces");
+  if (!m->bface_start || !m->bface) return sl_diag_set(d, SL_ENOMEM, "out of memory listing boundary faces");
   for (int f = 0; f < m->n_faces; ++f)
     if (m->face_tag[f] >= 0) ++m->bface_start[m->face_tag[f] + 1];
   for (int b = 0; b < m->n_boundaries; ++b) m->bface_start[b + 1] += m->bface_start[b];
   int *fill = malloc(((size_t)m->n_boundaries + 1) * sizeof *fill);
-  if (!fill) return sl_diag_set(d, SL_EFAILED, "out of memory listing boundary faces");
+  if (!fill) return sl_diag_set(d, SL_ENOMEM, "out of memory listing boundary faces");
   memcpy(fill, m->bface_start, (size_t)m->n_boundaries * sizeof *fill);
   for (int f = 0; f < m->n_faces; ++f)
     if (m->face_tag[f] >= 0) m->bface[fill[m->face_tag[f]]++] = f;
@@ -364,14 +364,14 @@ static int copy_names(char ***dst, const char *const *src, int n, const char *wh
   *dst = NULL;
   if (n == 0) return 0;
   char **names = calloc((size_t)n, sizeof *names);
-  if (!names) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  if (!names) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   *dst = names;
   for (int i = 0; i < n; ++i) {
     if (!src[i] || !src[i][0]) return sl_diag_set(d, SL_EBADINPUT, "%s %d has no name", what, i);
     for (int j = 0; j < i; ++j)
       if (strcmp(src[i], src[j]) == 0)
         return sl_diag_set(d, SL_EBADINPUT, "two %ss are named \"%s\"; names must be unique", what, src[i]);
-    if (!(names[i] = dup_string(src[i]))) return sl_diag_set(d, SL_EFAILED, "out of memory");
+    if (!(names[i] = dup_string(src[i]))) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   }
   return 0;
 }
@@ -439,7 +439,7 @@ int sl_mesh_create(const sl_mesh_spec *s, sl_mesh **out, sl_diag *d) {
   int rc = validate_spec(s, d);
   if (rc) return rc;
   sl_mesh *m = calloc(1, sizeof *m);
-  if (!m) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  if (!m) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   m->dim = s->dim;
   m->cell_type = s->cell_type;
   m->nv_per_cell = (int)s->cell_type;
@@ -450,7 +450,7 @@ int sl_mesh_create(const sl_mesh_spec *s, sl_mesh **out, sl_diag *d) {
   m->xy = malloc(2 * (size_t)s->n_vertices * sizeof *m->xy);
   m->cell_vertices = malloc(ncv * sizeof *m->cell_vertices);
   if (!m->xy || !m->cell_vertices) {
-    rc = sl_diag_set(d, SL_EFAILED, "out of memory for a mesh of %d cells", s->n_cells);
+    rc = sl_diag_set(d, SL_ENOMEM, "out of memory for a mesh of %d cells", s->n_cells);
     goto fail;
   }
   memcpy(m->xy, s->xy, 2 * (size_t)s->n_vertices * sizeof *m->xy);
@@ -465,7 +465,7 @@ int sl_mesh_create(const sl_mesh_spec *s, sl_mesh **out, sl_diag *d) {
     if (rc) goto fail;
     m->cell_region = malloc((size_t)s->n_cells * sizeof *m->cell_region);
     if (!m->cell_region) {
-      rc = sl_diag_set(d, SL_EFAILED, "out of memory");
+      rc = sl_diag_set(d, SL_ENOMEM, "out of memory");
       goto fail;
     }
     memcpy(m->cell_region, s->cell_region, (size_t)s->n_cells * sizeof *m->cell_region);

@@ -104,7 +104,7 @@ int sl_mesh_periodic_match(const sl_mesh *m, const char *boundary, const char *p
   int na, nb;
   if (boundary_vertices(m, a, &w.va, &na) || boundary_vertices(m, b, &w.vb, &nb)) {
     work_free(&w);
-    return sl_diag_set(d, SL_EFAILED, "periodic pair '%s' / '%s': out of memory", an, bn);
+    return sl_diag_set(d, SL_ENOMEM, "periodic pair '%s' / '%s': out of memory", an, bn);
   }
   if (na != nb || nfa != nfb) {
     work_free(&w);
@@ -141,7 +141,7 @@ int sl_mesh_periodic_match(const sl_mesh *m, const char *boundary, const char *p
   if (!w.sorted || !w.used || !w.image || !out->vertex_pairs || !out->face_pairs || !w.fa) {
     work_free(&w);
     sl_mesh_periodic_free(out);
-    return sl_diag_set(d, SL_EFAILED, "periodic pair '%s' / '%s': out of memory", an, bn);
+    return sl_diag_set(d, SL_ENOMEM, "periodic pair '%s' / '%s': out of memory", an, bn);
   }
   for (int i = 0; i < na; ++i) w.sorted[i] = (keyed){m->xy[2 * (size_t)w.va[i] + axis], w.va[i]};
   qsort(w.sorted, (size_t)na, sizeof *w.sorted, cmp_keyed);

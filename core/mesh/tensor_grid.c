@@ -47,7 +47,7 @@ int sl_tensor_grid_from_mesh(const sl_mesh *m, sl_tensor_grid *g, sl_diag *d) {
   int nxl = 0, nyl = 0;
   if (grid_lines(m->xy, m->n_vertices, tol, &xs, &nxl) || grid_lines(m->xy + 1, m->n_vertices, tol, &ys, &nyl)) {
     free(xs);
-    return sl_diag_set(d, SL_EFAILED, "tensor grid: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "tensor grid: out of memory");
   }
   g->xf = xs, g->yf = ys, g->nx = nxl - 1, g->ny = nyl - 1;
   const int nx = g->nx, ny = g->ny;
@@ -61,7 +61,7 @@ int sl_tensor_grid_from_mesh(const sl_mesh *m, sl_tensor_grid *g, sl_diag *d) {
   for (int s = 0; s < 4; ++s) g->side_tag[s] = malloc((size_t)(s < 2 ? ny : nx) * sizeof(int));
   if (!g->mesh_cell || !g->side_tag[0] || !g->side_tag[1] || !g->side_tag[2] || !g->side_tag[3]) {
     sl_tensor_grid_free(g);
-    return sl_diag_set(d, SL_EFAILED, "tensor grid: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "tensor grid: out of memory");
   }
   for (int c = 0; c < m->n_cells; ++c) g->mesh_cell[c] = -1;
   for (int s = 0; s < 4; ++s)

@@ -268,7 +268,7 @@ static void draw_legend(sl_image *im, const frame *f, const sl_chart *c) {
 
 int sl_chart_draw(const sl_chart *c, int w, int h, sl_image *im, sl_diag *d) {
   if (w < 200 || h < 150) return sl_diag_set(d, SL_EBADINPUT, "chart: %d x %d pixels is too small", w, h);
-  if (sl_image_init(im, w, h, WHITE)) return sl_diag_set(d, SL_EFAILED, "chart: out of memory");
+  if (sl_image_init(im, w, h, WHITE)) return sl_diag_set(d, SL_ENOMEM, "chart: out of memory");
   frame f;
   int any = make_axis(&f.ax, c->xscale, c, 0);
   make_axis(&f.ay, c->yscale, c, 1);

@@ -83,7 +83,7 @@ int sl_plugin_dirs_from_ini(const sl_ini *ini, char ***dirs, int *n, sl_diag *d)
   int cap = 1;
   for (const char *c = e->value; *c; ++c) cap += *c == ',';
   char **out = calloc((size_t)cap, sizeof *out);
-  if (!out) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  if (!out) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   /* Relative folders are taken from the folder of the file that names them. */
   const char *slash = e->file ? strrchr(e->file, '/') : NULL;
   int base_len = slash ? (int)(slash - e->file) : 0;
@@ -96,7 +96,7 @@ int sl_plugin_dirs_from_ini(const sl_ini *ini, char ***dirs, int *n, sl_diag *d)
       size_t sz = len + (size_t)base_len + 2;
       if (!(out[k] = malloc(sz))) {
         sl_plugin_dirs_free(out, k);
-        return sl_diag_set(d, SL_EFAILED, "out of memory");
+        return sl_diag_set(d, SL_ENOMEM, "out of memory");
       }
       if (t[0] == '/' || base_len == 0) snprintf(out[k], sz, "%.*s", (int)len, t);
       else snprintf(out[k], sz, "%.*s/%.*s", base_len, e->file, (int)len, t);

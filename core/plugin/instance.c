@@ -43,7 +43,7 @@ static void host_free(void *host, void *p) {
 
 int sl_params_new(const sl_closure_desc *desc, void **params, sl_diag *d) {
   *params = host_alloc(NULL, desc->params_size ? desc->params_size : 1);
-  if (!*params) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  if (!*params) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   for (int32_t i = 0; i < desc->n_params; ++i) {
     const sl_param_desc *p = &desc->params[i];
     char *at = (char *)*params + p->offset;
@@ -209,7 +209,7 @@ int sl_closure_create(const sl_closure_entry *entry, void *params, sl_closure **
   sl_closure *c = calloc(1, sizeof *c);
   if (!c) {
     sl_params_free(params);
-    return sl_diag_set(d, SL_EFAILED, "out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "out of memory");
   }
   c->desc = entry->desc;
   c->library = entry->library;

@@ -70,7 +70,7 @@ int sl_point_eval(sl_point_closure *pc, int Q, const double *const *values, cons
   size_t need = (size_t)Q * (size_t)(n_const + n_out + (want_d ? n_out * n_in : 0));
   if (need > pc->cap) {
     double *nb = realloc(pc->buf, need * sizeof *nb);
-    if (!nb) return sl_diag_set(d, SL_EFAILED, "closure %s: out of memory", sl_closure_label(cd, label, sizeof label));
+    if (!nb) return sl_diag_set(d, SL_ENOMEM, "closure %s: out of memory", sl_closure_label(cd, label, sizeof label));
     pc->buf = nb, pc->cap = need;
   }
   const double *in[SL_POINT_MAX_IN];

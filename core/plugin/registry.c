@@ -40,9 +40,9 @@ static int push_dir(sl_registry *r, const char *dir, sl_diag *d) {
   for (int i = 0; i < r->n_dirs; ++i)
     if (strcmp(r->dirs[i], dir) == 0) return 0;
   char **dirs = realloc(r->dirs, (size_t)(r->n_dirs + 1) * sizeof *dirs);
-  if (!dirs) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  if (!dirs) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   r->dirs = dirs;
-  if (!(r->dirs[r->n_dirs] = dup_str(dir))) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  if (!(r->dirs[r->n_dirs] = dup_str(dir))) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   r->n_dirs++;
   return 0;
 }
@@ -71,13 +71,13 @@ const char *sl_registry_default_dir(void) {
 int sl_registry_create(sl_registry **out, const char *const *scene_dirs, int n_scene_dirs, sl_diag *d) {
   *out = NULL;
   sl_registry *r = calloc(1, sizeof *r);
-  if (!r) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  if (!r) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   int rc = 0;
   for (int i = 0; i < n_scene_dirs && !rc; ++i) rc = push_dir(r, scene_dirs[i], d);
   const char *env = getenv("SLUICE_PLUGIN_PATH");
   if (env && !rc) {
     char *copy = dup_str(env);
-    if (!copy) rc = sl_diag_set(d, SL_EFAILED, "out of memory");
+    if (!copy) rc = sl_diag_set(d, SL_ENOMEM, "out of memory");
     for (char *save = NULL, *tok = copy ? strtok_r(copy, ":", &save) : NULL; tok && !rc;
          tok = strtok_r(NULL, ":", &save))
       rc = push_dir(r, tok, d);
@@ -175,7 +175,7 @@ static int open_library(const char *path, sl_library **out, long *n_dlopen, sl_d
     if (lib) free(lib->path);
     free(lib);
     dlclose(h);
-    return sl_diag_set(d, SL_EFAILED, "out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "out of memory");
   }
   lib->handle = h;
   lib->n_closures = n;
@@ -207,7 +207,7 @@ int sl_registry_add_library(sl_registry *r, const char *path, sl_library **out, 
     sl_library **libs = realloc(r->libraries, (size_t)cap * sizeof *libs);
     if (!libs) {
       library_free(lib);
-      return sl_diag_set(d, SL_EFAILED, "out of memory");
+      return sl_diag_set(d, SL_ENOMEM, "out of memory");
     }
     r->libraries = libs;
     r->cap_libraries = cap;
@@ -218,7 +218,7 @@ int sl_registry_add_library(sl_registry *r, const char *path, sl_library **out, 
     sl_closure_entry *e = realloc(r->entries, (size_t)cap * sizeof *e);
     if (!e) {
       library_free(lib);
-      return sl_diag_set(d, SL_EFAILED, "out of memory");
+      return sl_diag_set(d, SL_ENOMEM, "out of memory");
     }
     r->entries = e;
     r->cap_entries = cap;
@@ -298,7 +298,7 @@ int sl_registry_scan(sl_registry *r, sl_diag *d) {
     for (int i = 0; i < r->n_files; ++i) {
       if (r->file_tried[i]) continue;
       r->file_tried[i] = 1;
-      if (load_from_path(r, r->files[i])) return sl_diag_set(d, SL_EFAILED, "out of memory while loading %s", r->files[i]);
+      if (load_from_path(r, r->files[i])) return sl_diag_set(d, SL_ENOMEM, "out of memory while loading %s", r->files[i]);
     }
     return 0;
   }
@@ -312,7 +312,7 @@ int sl_registry_scan(sl_registry *r, sl_diag *d) {
     }
     for (int k = 0; k < n; ++k) free(names[k]);
     free(names);
-    if (rc) return sl_diag_set(d, SL_EFAILED, "out of memory while scanning %s", r->dirs[i]);
+    if (rc) return sl_diag_set(d, SL_ENOMEM, "out of memory while scanning %s", r->dirs[i]);
   }
   return 0;
 }
@@ -341,7 +341,7 @@ int sl_registry_index(sl_registry *r, sl_diag *d) {
     }
     for (int k = 0; k < n; ++k) free(names[k]);
     free(names);
-    if (rc) return sl_diag_set(d, SL_EFAILED, "out of memory while listing %s", r->dirs[i]);
+    if (rc) return sl_diag_set(d, SL_ENOMEM, "out of memory while listing %s", r->dirs[i]);
   }
   r->lazy = 1;
   return 0;
@@ -377,7 +377,7 @@ static int load_candidates(sl_registry *r, sl_kind kind, const char *name, const
     else candidate = strcmp(base, want) == 0 || !conventional_name(base);
     if (!candidate) continue;
     r->file_tried[i] = 1;
-    if (load_from_path(r, r->files[i])) return sl_diag_set(d, SL_EFAILED, "out of memory while loading %s", r->files[i]);
+    if (load_from_path(r, r->files[i])) return sl_diag_set(d, SL_ENOMEM, "out of memory while loading %s", r->files[i]);
   }
   return 0;
 }

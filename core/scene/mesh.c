@@ -106,7 +106,7 @@ int sl_scene_mesh_build(const sl_scene *sc, sl_mesh **out, sl_diag *d) {
       const sl_src *e = sl_scene_src(sc, &c->file);
       if (!e) return missing(sc, "file", d);
       char *path = sl_ini_path_relative(e->file, c->file);
-      if (!path) return sl_diag_set(d, SL_EFAILED, "mesh: out of memory");
+      if (!path) return sl_diag_set(d, SL_ENOMEM, "mesh: out of memory");
       rc = sl_mesh_read_gmsh(path, out, d);
       free(path);
       return rc;
@@ -122,7 +122,7 @@ int sl_scene_line_chain(const sl_mesh *m, int *vertex, int *cell, sl_diag *d) {
   int *ends = calloc((size_t)m->n_vertices, sizeof *ends);
   if (!next || !cell_at || !ends) {
     free(next), free(cell_at), free(ends);
-    return sl_diag_set(d, SL_EFAILED, "mesh: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "mesh: out of memory");
   }
   for (int v = 0; v < m->n_vertices; ++v) next[v] = -1;
   for (int e = 0; e < n; ++e) {

@@ -28,7 +28,7 @@ typedef struct builder {
   const sl_scene_opts *o;
 } builder;
 
-static int oom(sl_diag *d) { return sl_diag_set(d, SL_EFAILED, "scene: out of memory"); }
+static int oom(sl_diag *d) { return sl_diag_set(d, SL_ENOMEM, "scene: out of memory"); }
 
 static int remember(builder *b, const void *field, const char *section, const sl_ini_entry *e, sl_diag *d) {
   sl_scene *sc = b->sc;

@@ -23,7 +23,7 @@ int sl_anderson_init(sl_anderson *a, int n, int depth, sl_diag *d) {
   a->f = malloc(nn * sizeof *a->f);
   if (!a->dF || !a->dG || !a->f_prev || !a->g_prev || !a->f) {
     sl_anderson_free(a);
-    return sl_diag_set(d, SL_EFAILED, "Anderson acceleration: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "Anderson acceleration: out of memory");
   }
   return 0;
 }

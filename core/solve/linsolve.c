@@ -41,7 +41,7 @@ static double now(void) {
 int sl_linsolve_create_ops(sl_linsolve **ls, const sl_linsolve_ops *ops, sl_diag *d) {
   *ls = NULL;
   sl_linsolve *s = calloc(1, sizeof *s);
-  if (!s) return sl_diag_set(d, SL_EFAILED, "%s: out of memory", ops->name);
+  if (!s) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", ops->name);
   s->ops = ops;
   int rc = ops->create(&s->backend, d);
   if (rc) {
@@ -166,7 +166,7 @@ int sl_linsolve_solve(sl_linsolve *ls, const sl_csr *A, const double *b, double 
   if (x == b) {
     /* the backends need distinct b and x */
     double *w = realloc(ls->work, (size_t)n * sizeof *w);
-    if (!w) return sl_diag_set(d, SL_EFAILED, "%s: out of memory", ls->ops->name);
+    if (!w) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", ls->ops->name);
     ls->work = w;
     memcpy(w, b, (size_t)n * sizeof *w);
     b = w;

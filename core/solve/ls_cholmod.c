@@ -61,7 +61,7 @@ static cholmod_sparse view(const sl_csr *A) {
 
 static int chol_create(void **backend, sl_diag *d) {
   chol_state *s = calloc(1, sizeof *s);
-  if (!s) return sl_diag_set(d, SL_EFAILED, "cholmod: out of memory");
+  if (!s) return sl_diag_set(d, SL_ENOMEM, "cholmod: out of memory");
   if (!cholmod_start(&s->c)) {
     free(s);
     return sl_diag_set(d, SL_EFAILED, "cholmod: cholmod_start failed");
@@ -85,7 +85,7 @@ static int chol_symbolic(void *backend, const sl_csr *A, sl_diag *d) {
 static int check_symmetric(const sl_csr *A, sl_diag *d) {
   int32_t n = A->n_rows;
   double *rowmax = calloc((size_t)n, sizeof *rowmax);
-  if (!rowmax) return sl_diag_set(d, SL_EFAILED, "cholmod: out of memory");
+  if (!rowmax) return sl_diag_set(d, SL_ENOMEM, "cholmod: out of memory");
   for (int32_t i = 0; i < n; ++i)
     for (int32_t p = A->row_ptr[i]; p < A->row_ptr[i + 1]; ++p)
       if (fabs(A->values[p]) > rowmax[i]) rowmax[i] = fabs(A->values[p]);

@@ -74,7 +74,7 @@ static int metis_order(int n, int *Ap, int *Ai, int *Perm, klu_common *kc) {
 
 static int klu_create_(void **backend, sl_diag *d) {
   klu_state *s = calloc(1, sizeof *s);
-  if (!s) return sl_diag_set(d, SL_EFAILED, "klu: out of memory");
+  if (!s) return sl_diag_set(d, SL_ENOMEM, "klu: out of memory");
   klu_defaults(&s->c);
   *backend = s;
   return 0;

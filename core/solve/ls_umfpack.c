@@ -44,7 +44,7 @@ static int umf_fail(int status, const char *stage, int32_t n, sl_diag *d) {
 
 static int umf_create(void **backend, sl_diag *d) {
   umf_state *s = calloc(1, sizeof *s);
-  if (!s) return sl_diag_set(d, SL_EFAILED, "umfpack: out of memory");
+  if (!s) return sl_diag_set(d, SL_ENOMEM, "umfpack: out of memory");
   umfpack_dl_defaults(s->control);
   s->control[UMFPACK_PRL] = 0; /* never print */
   *backend = s;
@@ -66,7 +66,7 @@ static int umf_symbolic(void *backend, const sl_csr *A, sl_diag *d) {
   s->idx = malloc(((size_t)A->nnz + 1) * sizeof *s->idx);
   if (!s->ptr || !s->idx) {
     umf_drop(s);
-    return sl_diag_set(d, SL_EFAILED, "umfpack: out of memory for the pattern of a %d x %d matrix", (int)A->n_rows,
+    return sl_diag_set(d, SL_ENOMEM, "umfpack: out of memory for the pattern of a %d x %d matrix", (int)A->n_rows,
                        (int)A->n_rows);
   }
   for (int32_t i = 0; i <= A->n_rows; ++i) s->ptr[i] = A->row_ptr[i];

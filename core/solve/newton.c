@@ -64,7 +64,7 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
   double *du = malloc((size_t)n * sizeof *du), *trial = malloc((size_t)n * sizeof *trial);
   if (!du || !trial) {
     free(du), free(trial);
-    return sl_diag_set(d, SL_EFAILED, "nonlinear solve: out of memory for %d unknowns", (int)n);
+    return sl_diag_set(d, SL_ENOMEM, "nonlinear solve: out of memory for %d unknowns", (int)n);
   }
   int picard_left = o.picard_only ? o.max_iterations : o.picard_first;
   sl_nl_mode mode = picard_left > 0 ? SL_NL_PICARD : SL_NL_NEWTON;

@@ -142,7 +142,7 @@ int sl_csr_build(sl_csr *A, int32_t n_rows, int32_t n_cols, int32_t n_elem, cons
 oom:
   free(rel_ptr), free(marker), free(rel), free(cnt);
   sl_csr_free(A);
-  return sl_diag_set(d, SL_EFAILED, "sparsity: out of memory (%d rows, %d elements)", (int)n_rows, (int)n_elem);
+  return sl_diag_set(d, SL_ENOMEM, "sparsity: out of memory (%d rows, %d elements)", (int)n_rows, (int)n_elem);
 }
 
 int sl_csr_build_uniform(sl_csr *A, int32_t n_dofs, int32_t n_elem, int dofs_per_elem, const int32_t *elem_dofs,
@@ -154,7 +154,7 @@ int sl_csr_build_uniform(sl_csr *A, int32_t n_dofs, int32_t n_elem, int dofs_per
   int32_t *ptr = malloc(((size_t)n_elem + 1) * sizeof *ptr);
   if (!ptr) {
     memset(A, 0, sizeof *A);
-    return sl_diag_set(d, SL_EFAILED, "sparsity: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "sparsity: out of memory");
   }
   for (int32_t e = 0; e <= n_elem; ++e) ptr[e] = e * dofs_per_elem;
   int rc = sl_csr_build(A, n_dofs, n_dofs, n_elem, ptr, elem_dofs, NULL, NULL, d);
@@ -214,7 +214,7 @@ int sl_csr_elem_map_build(sl_csr_elem_map *map, const sl_csr *A, int32_t n_elem,
     col_dofs = row_dofs;
   }
   map->offset = malloc(((size_t)n_elem + 1) * sizeof *map->offset);
-  if (!map->offset) return sl_diag_set(d, SL_EFAILED, "element map: out of memory");
+  if (!map->offset) return sl_diag_set(d, SL_ENOMEM, "element map: out of memory");
   map->offset[0] = 0;
   for (int32_t e = 0; e < n_elem; ++e)
     map->offset[e + 1] =
@@ -222,7 +222,7 @@ int sl_csr_elem_map_build(sl_csr_elem_map *map, const sl_csr *A, int32_t n_elem,
   map->pos = malloc(((size_t)map->offset[n_elem] + 1) * sizeof *map->pos);
   if (!map->pos) {
     sl_csr_elem_map_free(map);
-    return sl_diag_set(d, SL_EFAILED, "element map: out of memory (%lld positions)", (long long)map->offset[n_elem]);
+    return sl_diag_set(d, SL_ENOMEM, "element map: out of memory (%lld positions)", (long long)map->offset[n_elem]);
   }
   map->n_elem = n_elem;
   map->pattern_id = A->pattern_id;
@@ -278,7 +278,7 @@ int sl_csr_set_dirichlet(sl_csr *A, int32_t n, const int32_t *rows, const double
     return sl_diag_set(d, SL_EBADINPUT, "dirichlet: matrix is %d x %d, not square", (int)A->n_rows, (int)A->n_cols);
   /* which[r] = k + 1 for the last k naming row r, 0 otherwise */
   int32_t *which = calloc((size_t)A->n_rows + 1, sizeof *which);
-  if (!which) return sl_diag_set(d, SL_EFAILED, "dirichlet: out of memory");
+  if (!which) return sl_diag_set(d, SL_ENOMEM, "dirichlet: out of memory");
   for (int32_t k = 0; k < n; ++k) {
     int32_t r = rows[k];
     if (r < 0 || r >= A->n_rows) {

@@ -31,7 +31,7 @@ int sl_triplets_to_csr(sl_triplets *t, sl_csr *A, int32_t n, sl_diag *d) {
     if (pos) t->pos = pos;
     if (!iota || !pos) {
       free(iota);
-      return sl_diag_set(d, SL_EFAILED, "assembly: out of memory");
+      return sl_diag_set(d, SL_ENOMEM, "assembly: out of memory");
     }
     for (int32_t k = 0; k <= t->n; ++k) iota[k] = k;
     sl_csr_free(A);
@@ -43,7 +43,7 @@ int sl_triplets_to_csr(sl_triplets *t, sl_csr *A, int32_t n, sl_diag *d) {
     if (pr) t->prow = pr;
     int32_t *pc = realloc(t->pcol, (size_t)(t->n > 0 ? t->n : 1) * sizeof *pc);
     if (pc) t->pcol = pc;
-    if (!pr || !pc) return sl_diag_set(d, SL_EFAILED, "assembly: out of memory");
+    if (!pr || !pc) return sl_diag_set(d, SL_ENOMEM, "assembly: out of memory");
     memcpy(t->prow, t->row, (size_t)t->n * sizeof *pr);
     memcpy(t->pcol, t->col, (size_t)t->n * sizeof *pc);
     t->n_pattern = t->n;

@@ -25,7 +25,7 @@ int sl_bdf_init(sl_bdf *b, int order_max, int32_t n, const double *u0, double t0
   for (int k = 0; k < 3; ++k)
     if (!(b->past[k] = malloc((size_t)n * sizeof(double)))) {
       sl_bdf_free(b);
-      return sl_diag_set(d, SL_EFAILED, "bdf: out of memory for %d unknowns", (int)n);
+      return sl_diag_set(d, SL_ENOMEM, "bdf: out of memory for %d unknowns", (int)n);
     }
   memcpy(b->past[0], u0, (size_t)n * sizeof(double));
   b->order_max = order_max, b->n = n, b->n_past = 1, b->t = t0;

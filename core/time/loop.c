@@ -133,7 +133,7 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
   double *hist = malloc((size_t)n * sizeof *hist), *pred = malloc((size_t)n * sizeof *pred);
   double *trial = malloc((size_t)n * sizeof *trial), *rate = ops->complete ? malloc((size_t)n * sizeof *rate) : NULL;
   if (!hist || !pred || !trial || (ops->complete && !rate)) {
-    rc = sl_diag_set(d, SL_EFAILED, "out of memory for %d unknowns", (int)n);
+    rc = sl_diag_set(d, SL_ENOMEM, "out of memory for %d unknowns", (int)n);
     goto out;
   }
   double h = L->h;
@@ -232,7 +232,7 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
   long best = 0;
   for (int k = 0; k < N_LIMITS; ++k)
     if (limit_count[k] > best) best = limit_count[k], res->step_limit = limits[k];
-  if (rc == SL_EFAILED) { /* keep the last good state */
+  if (rc == SL_EFAILED || rc == SL_ENOMEM) { /* keep the last good state */
     sl_diag d2;
     write_state(L, ops, self, out, b->t, b->past[0], h, b, res, &d2);
   }
@@ -315,7 +315,7 @@ static int run_fixed(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_ou
     snprintf(res->stop_reason, sizeof res->stop_reason,
              "stopped after max_steps = %ld steps at t = %.6g, before the end time %g (checkpoint saved)",
              tc->max_steps, t, end);
-  if (rc == SL_EFAILED) { /* keep the last good state */
+  if (rc == SL_EFAILED || rc == SL_ENOMEM) { /* keep the last good state */
     sl_diag d2;
     write_state(L, ops, self, out, t, NULL, h, NULL, res, &d2);
   }

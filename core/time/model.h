@@ -33,6 +33,10 @@ struct sl_scene;
 struct sl_run_result;
 
 enum { SL_STEP_RETRY = 1 };
+
+/* A step's code from a solve's: a failed solve is retried smaller (SL_EFAILED), anything else (bad input, out
+ * of memory) stops the run. */
+static inline int sl_step_code(int rc) { return rc == 0 ? 0 : rc == SL_EFAILED ? SL_STEP_RETRY : -rc; }
 enum { SL_INTEGRATE_FIXED = 0, SL_INTEGRATE_BDF = 1 };
 
 /* What a model's setup tells the loop. */

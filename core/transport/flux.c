@@ -59,7 +59,7 @@ int sl_settling_table_build(sl_settling_table *t, double phi_max, int n, sl_sett
   t->D = malloc((size_t)n * sizeof *t->D);
   int rc = 0;
   if (!phi || !u || !du || !t->F || !t->D) {
-    rc = sl_diag_set(d, SL_EFAILED, "settling table: out of memory");
+    rc = sl_diag_set(d, SL_ENOMEM, "settling table: out of memory");
     goto done;
   }
   for (int k = 0; k < n; ++k) phi[k] = k == n - 1 ? phi_max : k * t->dphi;
@@ -110,7 +110,7 @@ int sl_settling_table_build(sl_settling_table *t, double phi_max, int n, sl_sett
   }
   t->FD = malloc(4 * (size_t)(n - 1) * sizeof *t->FD);
   if (!t->FD || find_pieces(t)) {
-    rc = sl_diag_set(d, SL_EFAILED, "settling table: out of memory");
+    rc = sl_diag_set(d, SL_ENOMEM, "settling table: out of memory");
     goto done;
   }
   for (int k = 0; k + 1 < n; ++k) {

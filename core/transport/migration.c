@@ -43,7 +43,7 @@ int sl_migration_create(const sl_transport *t, const sl_migration_opts *o, sl_mi
     return sl_diag_set(d, SL_EBADINPUT, "migration: no transport, or neither a coefficient callback nor a finite "
                                         "diffusivity > 0");
   sl_migration *mg = calloc(1, sizeof *mg);
-  if (!mg) return sl_diag_set(d, SL_EFAILED, "migration: out of memory");
+  if (!mg) return sl_diag_set(d, SL_ENOMEM, "migration: out of memory");
   size_t nc = (size_t)t->m->n_cells, nf = (size_t)t->m->n_faces + 1;
   mg->t = t;
   mg->o = *o;
@@ -59,7 +59,7 @@ int sl_migration_create(const sl_transport *t, const sl_migration_opts *o, sl_mi
   mg->sum = malloc(nc * sizeof *mg->sum);
   if (!mg->g || !mg->fface || !mg->pf || !mg->gf || !mg->dc || !mg->dmu || !mg->lnmu || !mg->dlnmu || !mg->sum) {
     sl_migration_destroy(mg);
-    return sl_diag_set(d, SL_EFAILED, "migration: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "migration: out of memory");
   }
   *out = mg;
   return 0;

@@ -113,7 +113,7 @@ int sl_transport_build_vertex_cells(sl_transport *t, sl_diag *d) {
   return 0;
 oom:
   free(up), free(cstart), free(cls), free(mark), free(start), free(list), free(nb);
-  return sl_diag_set(d, SL_EFAILED, "transport: out of memory");
+  return sl_diag_set(d, SL_ENOMEM, "transport: out of memory");
 }
 
 void sl_transport_reconstruct(sl_transport *t, const double *phi) {

@@ -53,7 +53,7 @@ int sl_transport_set_periodic(sl_transport *t, int a, int b, sl_diag *d) {
     if (!t->partner || !t->pshift) {
       free(t->partner), free(t->pshift);
       t->partner = NULL, t->pshift = NULL;
-      rc = sl_diag_set(d, SL_EFAILED, "transport: out of memory");
+      rc = sl_diag_set(d, SL_ENOMEM, "transport: out of memory");
       goto done;
     }
     for (int f = 0; f < m->n_faces; ++f) t->partner[f] = -1;

@@ -225,7 +225,7 @@ int sl_transport_set_extra_flux(sl_transport *t, sl_transport_extra_fn fn, void 
       free(t->xflux), free(t->xflux2), free(t->xin), free(t->xout), free(t->xadv);
       t->xflux = t->xflux2 = t->xin = t->xout = t->xadv = NULL;
       t->extra = NULL;
-      return sl_diag_set(d, SL_EFAILED, "transport: out of memory");
+      return sl_diag_set(d, SL_ENOMEM, "transport: out of memory");
     }
   }
   t->extra = fn;

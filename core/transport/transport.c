@@ -153,7 +153,7 @@ int sl_transport_create(const sl_mesh *m, const sl_transport_opts *o, sl_transpo
     return sl_diag_set(d, SL_EBADINPUT, "transport: unknown geometry %d", (int)r.geometry);
   if (r.max_substeps < 1) return sl_diag_set(d, SL_EBADINPUT, "transport: max_substeps = %d", r.max_substeps);
   sl_transport *t = calloc(1, sizeof *t);
-  if (!t) return sl_diag_set(d, SL_EFAILED, "transport: out of memory");
+  if (!t) return sl_diag_set(d, SL_ENOMEM, "transport: out of memory");
   t->m = m;
   t->o = r;
   size_t nc = (size_t)m->n_cells, nf = (size_t)m->n_faces, nb = (size_t)m->n_boundaries;
@@ -174,7 +174,7 @@ int sl_transport_create(const sl_mesh *m, const sl_transport_opts *o, sl_transpo
   int rc;
   if (!t->vol || !t->area || !t->normal || !t->xf || !t->xc || !t->lsq || !t->bc_type || !t->bc_phi || !t->fkind ||
       !t->res || !t->cur || !t->stage || !t->grad || !t->sens) {
-    rc = sl_diag_set(d, SL_EFAILED, "transport: out of memory");
+    rc = sl_diag_set(d, SL_ENOMEM, "transport: out of memory");
     goto fail;
   }
   if ((rc = build_geometry(t, d))) goto fail;

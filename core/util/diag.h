@@ -8,8 +8,12 @@
 enum {
   SL_EXIT_OK = 0,
   SL_EFAILED = 1,   /* the simulation failed; the last good state is kept */
-  SL_EBADINPUT = 2  /* bad usage or bad input: nothing was written */
+  SL_EBADINPUT = 2, /* bad usage or bad input: nothing was written */
+  SL_ENOMEM = 3     /* out of memory: the run stops (a smaller step would not help); a failed run to the user */
 };
+
+/* The process exit status of a code: out of memory is a failed run (1). */
+static inline int sl_exit_status(int code) { return code == SL_ENOMEM ? SL_EFAILED : code; }
 
 typedef struct sl_diag {
   char msg[2048];

@@ -273,7 +273,7 @@ static int stress_setup(mixture *x, sl_diag *d) {
   x->node_stress = malloc((size_t)6 * pm->n_dofs * sizeof *x->node_stress);
   x->node_weight = calloc((size_t)pm->n_dofs, sizeof *x->node_weight);
   if (!x->cell_stress || !x->settle_speed || !x->node_stress || !x->node_weight)
-    return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
   const double *vol = sl_transport_volumes(x->tr);
   for (int c = 0; c < nc; ++c)
     for (int k = 0; k < np; ++k) x->node_weight[pm->cell_dofs[(size_t)c * np + k]] += vol[c];
@@ -403,7 +403,7 @@ static int migration_setup(mixture *x, sl_diag *d) {
     mo.ln_mu = migration_lnmu, mo.ln_mu_user = x;
   }
   x->shear = calloc((size_t)x->m->n_cells, sizeof *x->shear);
-  if (!x->shear) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+  if (!x->shear) return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
   return create_gradient_flux(x, &mo, d);
 }
 
@@ -450,7 +450,7 @@ static int periodic_setup(mixture *x, const unsigned char *open, const sl_period
     if ((rc = sl_transport_set_periodic_named(x->tr, pairs[k].boundary, pairs[k].partner, d))) break;
     if ((rc = sl_mesh_periodic_match(x->m, pairs[k].boundary, pairs[k].partner, &pm, d))) break;
     int *nf = realloc(fp, (size_t)2 * (n + pm.n_faces) * sizeof *nf);
-    if (!nf) rc = sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+    if (!nf) rc = sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
     else memcpy(nf + 2 * n, pm.face_pairs, (size_t)2 * pm.n_faces * sizeof *nf), fp = nf, n += pm.n_faces;
     sl_mesh_periodic_free(&pm);
   }
@@ -515,17 +515,17 @@ static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag
   x->q = malloc((size_t)nf * sizeof *x->q);
   x->w = calloc((size_t)nf, sizeof *x->w);
   x->q_acc = calloc((size_t)nf, sizeof *x->q_acc);
-  if (!x->phi || !x->trial || !x->q || !x->w || !x->q_acc) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+  if (!x->phi || !x->trial || !x->q || !x->w || !x->q_acc) return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
   if (x->m->dim == 2 && (x->fields & F_STREAM)) {
     x->psi = malloc((size_t)x->m->n_vertices * sizeof *x->psi);
     x->node_psi = malloc((size_t)th->vel->n_nodes * sizeof *x->node_psi);
     if (!x->psi || !x->node_psi || sl_stream_graph_build(&x->pg, x->m))
-      return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+      return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
   }
   if (x->slip_acceleration) {
     x->acc = calloc((size_t)2 * nc, sizeof *x->acc);
     x->b_face = malloc((size_t)2 * nf * sizeof *x->b_face);
-    if (!x->acc || !x->b_face) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+    if (!x->acc || !x->b_face) return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
   }
   if (x->st.c) {
     sl_transport_settling_field(x->tr, body_direction, x, x->w);
@@ -765,7 +765,7 @@ static int mx_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) 
   if (sc->time.scheme == SL_SCHEME_STEADY)
     return sl_diag_set(d, SL_EBADINPUT, "[time] scheme = steady: the mixture model is transient (bdf1 or bdf2)");
   mixture *x = calloc(1, sizeof *x);
-  if (!x) return sl_diag_set(d, SL_EFAILED, "mixture: out of memory");
+  if (!x) return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
   x->sc = sc, x->cfg = sc->config, x->rho_solid = sc->solid.density, x->phi_max = sc->solid.phi_max;
   unsigned mask, def = 1u | 2u | (sl_scene_closure(sc, "viscosity") ? 4u | 8u | 16u : 0u) | (3u << SL_FLOW_N_FIELDS);
   int rc = sl_scene_output_fields(sc, def, &mask, d);
@@ -794,7 +794,7 @@ static int mx_complete(void *self, const sl_step *s, sl_diag *d) {
   double c0 = cpu_now();
   int rc = advance(x, s->t, s->dt, s->u, s->dudt, d);
   x->cpu_coupled += cpu_now() - c0;
-  return rc == 0 ? 0 : rc == SL_EFAILED ? SL_STEP_RETRY : -rc;
+  return sl_step_code(rc);
 }
 
 static void mx_accept(void *self, const sl_step *s, int *steady) {

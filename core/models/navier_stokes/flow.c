@@ -59,7 +59,7 @@ static int viscosity_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *
   int need = 4 * b->n;
   if (need > ph->cap) {
     double *nb = realloc(ph->buf, (size_t)need * sizeof *nb);
-    if (!nb) return sl_diag_set(d, SL_EFAILED, "viscosity: out of memory");
+    if (!nb) return sl_diag_set(d, SL_ENOMEM, "viscosity: out of memory");
     ph->buf = nb, ph->cap = need;
   }
   double *phi_q = ph->buf, *rho_q = phi_q + b->n, *mu = rho_q + b->n, *dmu = mu + b->n;
@@ -221,7 +221,7 @@ static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag 
   s->b = calloc((size_t)m->n_boundaries + 1, sizeof *s->b);
   s->pairs = calloc((size_t)m->n_boundaries + 1, sizeof *s->pairs);
   s->open = calloc((size_t)m->n_boundaries + 1, 1);
-  if (!s->b || !s->pairs || !s->open) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  if (!s->b || !s->pairs || !s->open) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   s->n = m->n_boundaries;
   for (int i = 0; i < s->n; ++i) {
     bc *b = &s->b[i];
@@ -555,7 +555,7 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
   if (f->bcs.time_dependent && (rc = bc_apply(&f->bcs, f->th, &f->prob.bc, s->t + s->dt, f->datum, d)))
     return -rc;
   rc = solve(f, s->u, iterations, d);
-  return rc == 0 ? 0 : rc == SL_EFAILED ? SL_STEP_RETRY : -rc;
+  return sl_step_code(rc);
 }
 
 /* Rebuilds the physics after a change of the scene (continuation). */
@@ -669,7 +669,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
                    sl_model_info *info, sl_diag *d) {
   *out = NULL;
   sl_flow *f = calloc(1, sizeof *f);
-  if (!f) return sl_diag_set(d, SL_EFAILED, "out of memory");
+  if (!f) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   f->sc = sc, f->mesh = sc->mesh, f->fields = fields;
   f->riding = rho_solid >= 0.0, f->rho_solid = rho_solid;
   int geometry = sc->geometry, third = sc->flow.third_component, rc;
@@ -711,7 +711,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
   int cell_fields = (f->fields & (F_SHEAR | F_VISCOSITY | F_YIELDED)) != 0;
   if (cell_fields) f->cellbuf = malloc((size_t)f->mesh->n_cells * 3 * sizeof *f->cellbuf);
   if (!f->u || !f->work || (cell_fields && !f->cellbuf)) {
-    rc = sl_diag_set(d, SL_EFAILED, "out of memory for %d unknowns", (int)f->th->n_dofs);
+    rc = sl_diag_set(d, SL_ENOMEM, "out of memory for %d unknowns", (int)f->th->n_dofs);
     goto fail;
   }
   if ((rc = initial_velocity(sc, fc, f->th, f->u, d))) goto fail;

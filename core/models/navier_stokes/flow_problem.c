@@ -27,7 +27,7 @@ void sl_flow_problem_free(sl_flow_problem *p) {
 static int collect_fixed(sl_flow_problem *p, sl_diag *d) {
   int32_t old = p->n_fixed, k = 0;
   int32_t *f = realloc(p->fixed, ((size_t)(p->bc.n_fixed > old ? p->bc.n_fixed : old) + 1) * sizeof *f);
-  if (!f) return sl_diag_set(d, SL_EFAILED, "flow: out of memory");
+  if (!f) return sl_diag_set(d, SL_ENOMEM, "flow: out of memory");
   p->fixed = f;
   int same = 1;
   for (int32_t i = 0; i < p->bc.n_dofs; ++i)

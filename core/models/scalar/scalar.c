@@ -111,7 +111,7 @@ static void release(scalar *s) {
 
 static int sc_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) {
   scalar *s = calloc(1, sizeof *s);
-  if (!s) return sl_diag_set(d, SL_EFAILED, "scalar: out of memory");
+  if (!s) return sl_diag_set(d, SL_ENOMEM, "scalar: out of memory");
   s->sc = sc, s->cfg = sc->config, s->b = sc->boundaries;
   const sl_mesh *m = sc->mesh;
   char at[400];
@@ -144,7 +144,7 @@ static int sc_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) 
     s->flux = calloc((size_t)nf, sizeof *s->flux), s->cap = malloc((size_t)nc * sizeof *s->cap);
     s->src = calloc((size_t)nc, sizeof *s->src), s->cellbuf = malloc((size_t)nc * sizeof *s->cellbuf);
     if (!s->c || !s->c_new || !s->flux || !s->cap || !s->src || !s->cellbuf)
-      rc = sl_diag_set(d, SL_EFAILED, "scalar: out of memory");
+      rc = sl_diag_set(d, SL_ENOMEM, "scalar: out of memory");
   }
   if (!rc) rc = sl_cell_scalar_init(&s->cs, &s->g, d);
   /* the velocity's normal component at each face centre, times its area: the volume flux */
@@ -224,7 +224,7 @@ static void sc_accept(void *self, const sl_step *st, int *steady) {
 static int sc_write_mesh(void *self, sl_output *out, sl_diag *d) {
   const sl_mesh *m = ((scalar *)self)->sc->mesh;
   int32_t *cells = malloc((size_t)m->n_cells * m->nv_per_cell * sizeof *cells);
-  if (!cells) return sl_diag_set(d, SL_EFAILED, "scalar: out of memory");
+  if (!cells) return sl_diag_set(d, SL_ENOMEM, "scalar: out of memory");
   for (int i = 0; i < m->n_cells * m->nv_per_cell; ++i) cells[i] = m->cell_vertices[i];
   int rc = sl_output_write_mesh(out, 2, m->n_vertices, m->xy, m->n_cells, m->nv_per_cell, cells, "Quadrilateral", d);
   free(cells);

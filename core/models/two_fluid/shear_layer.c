@@ -486,7 +486,7 @@ static int geometry(sh_layer *L, sl_diag *d) {
   const sl_mesh *m = L->mesh;
   int n = L->n = m->n_cells;
   L->vertex = malloc((size_t)(n + 1) * sizeof *L->vertex), L->cell_of = malloc((size_t)n * sizeof *L->cell_of);
-  if (!L->vertex || !L->cell_of) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+  if (!L->vertex || !L->cell_of) return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   int rc = sl_scene_line_chain(m, L->vertex, L->cell_of, d);
   if (rc) return sl_diag_prefix(d, rc, "two_fluid (motion = shear)");
   size_t N = (size_t)n + 1;
@@ -496,13 +496,13 @@ static int geometry(sh_layer *L, sl_diag *d) {
   double **cells[] = {&L->h,    &L->W,   &L->gm,  &L->gt,       &L->phi, &L->muc,  &L->muk,
                       &L->dmuc, &L->kapc, &L->thc, &L->cell_out, &L->gdc, &L->rhoc, &L->mumc};
   for (size_t k = 0; k < sizeof nodes / sizeof nodes[0]; ++k)
-    if (!(*nodes[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+    if (!(*nodes[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   for (size_t k = 0; k < sizeof cells / sizeof cells[0]; ++k)
     if (!(*cells[k] = calloc((size_t)n, sizeof(double))))
-      return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+      return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   for (int k = 0; k < Q_N; ++k)
-    if (!(L->qv[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
-  if (!(L->blk = calloc(N * 30, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+    if (!(L->qv[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
+  if (!(L->blk = calloc(N * 30, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   for (size_t k = 0; k < N; ++k) L->x[k] = m->xy[2 * L->vertex[k]];
   if (L->annular && !(L->x[0] > 0.0)) {
     char at[400];
@@ -705,7 +705,7 @@ static int layer_write_mesh(void *self, sl_output *out, sl_diag *d) {
   double *coords = malloc((size_t)m->n_vertices * sizeof *coords);
   if (!cells || !coords) {
     free(cells), free(coords);
-    return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   }
   for (int v = 0; v < m->n_vertices; ++v) coords[v] = m->xy[2 * v];
   for (int e = 0; e < 2 * m->n_cells; ++e) cells[e] = m->cell_vertices[e];
@@ -792,7 +792,7 @@ static int layer_trial(void *self, sl_step *s, int *iterations, sl_diag *d) {
   sh_layer *L = self;
   int rc = layer_step(L, s->t, s->dt, iterations, d);
   L->iterations += *iterations;
-  return rc == 0 ? 0 : SL_STEP_RETRY;
+  return sl_step_code(rc);
 }
 
 static void layer_accept(void *self, const sl_step *s, int *steady) {
@@ -837,7 +837,7 @@ static void release(sh_layer *L) {
 
 static int layer_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) {
   sh_layer *L = calloc(1, sizeof *L);
-  if (!L) return sl_diag_set(d, SL_EFAILED, "shear layer: out of memory");
+  if (!L) return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   L->sc = sc, L->cfg = sc->config, L->mesh = sc->mesh, L->annular = L->cfg->cross_section;
   int rc = 0;
   if (sc->geometry != 0) {

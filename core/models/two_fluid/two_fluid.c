@@ -46,12 +46,12 @@ static int column_from_mesh(tf_run *r, sl_diag *d) {
   c->n = n;
   r->cell_of = malloc((size_t)n * sizeof *r->cell_of);
   r->face_vertex = malloc((size_t)(n + 1) * sizeof *r->face_vertex);
-  if (!r->cell_of || !r->face_vertex) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  if (!r->cell_of || !r->face_vertex) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   int rc = sl_scene_line_chain(m, r->face_vertex, r->cell_of, d);
   if (rc) return sl_diag_prefix(d, rc, "two_fluid");
   c->h = malloc((size_t)n * sizeof *c->h), c->xc = malloc((size_t)n * sizeof *c->xc);
   c->xf = malloc((size_t)(n + 1) * sizeof *c->xf), c->dual = malloc((size_t)(n + 1) * sizeof *c->dual);
-  if (!c->h || !c->xc || !c->xf || !c->dual) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  if (!c->h || !c->xc || !c->xf || !c->dual) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   for (int k = 0; k <= n; ++k) c->xf[k] = m->xy[2 * r->face_vertex[k]];
   for (int i = 0; i < n; ++i) c->h[i] = c->xf[i + 1] - c->xf[i], c->xc[i] = 0.5 * (c->xf[i] + c->xf[i + 1]);
   c->dual[0] = 0.5 * c->h[0], c->dual[n] = 0.5 * c->h[n - 1];
@@ -140,9 +140,9 @@ static int allocate(tf_column *c, sl_diag *d) {
   double **faces[] = {&c->u,  &c->uf,   &c->u_new, &c->uf_new, &c->w,  &c->K,   &c->dK,   &c->phif,
                       &c->slip, &c->lo, &c->di,    &c->up,     &c->rhs, &c->flux, &c->dpdx};
   for (size_t i = 0; i < sizeof cells / sizeof cells[0]; ++i)
-    if (!(*cells[i] = calloc(n, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    if (!(*cells[i] = calloc(n, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   for (size_t i = 0; i < sizeof faces / sizeof faces[0]; ++i)
-    if (!(*faces[i] = calloc(f, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    if (!(*faces[i] = calloc(f, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   return 0;
 }
 
@@ -186,7 +186,7 @@ static int column_write_mesh(void *self, sl_output *out, sl_diag *d) {
   tf_run *r = self;
   const sl_mesh *m = r->mesh;
   int32_t *cells = malloc((size_t)m->n_cells * 2 * sizeof *cells);
-  if (!cells) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  if (!cells) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   for (int v = 0; v < m->n_vertices; ++v) r->node[v] = m->xy[2 * v];
   for (int e2 = 0; e2 < 2 * m->n_cells; ++e2) cells[e2] = m->cell_vertices[e2];
   int rc = sl_output_write_mesh(out, 1, m->n_vertices, r->node, m->n_cells, 2, cells, "Polyline", d);
@@ -270,7 +270,7 @@ static int column_step(void *self, sl_step *s, int *iterations, sl_diag *d) {
   int rc = tf_step(&r->c, s->t, s->dt, d);
   *iterations = r->c.iterations_trial;
   r->iterations += r->c.iterations_trial;
-  return rc == 0 ? 0 : r->c.fatal ? -SL_EFAILED : SL_STEP_RETRY;
+  return rc == 0 ? 0 : r->c.fatal ? -SL_EFAILED : sl_step_code(rc);
 }
 
 static void column_accept(void *self, const sl_step *s, int *steady) {
@@ -291,7 +291,7 @@ static void column_accept(void *self, const sl_step *s, int *steady) {
 
 static int column_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) {
   tf_run *r = calloc(1, sizeof *r);
-  if (!r) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  if (!r) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   r->sc = sc, r->cfg = sc->config, r->mesh = sc->mesh;
   unsigned mask;
   int rc = sl_scene_output_fields(sc, F_PHI | F_US | F_UF | F_P, &mask, d);
@@ -313,7 +313,7 @@ static int column_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag 
   }
   if (!rc) rc = interface_levels(r, d);
   if (!rc && !(r->node = calloc((size_t)r->mesh->n_vertices, sizeof *r->node)))
-    rc = sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    rc = sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   if (rc) {
     release(r);
     return rc;

@@ -183,7 +183,7 @@ static int plane_write_mesh(void *self, sl_output *out, sl_diag *d) {
   tfp_run *r = self;
   const sl_mesh *m = r->mesh;
   int32_t *cells = malloc((size_t)m->n_cells * m->nv_per_cell * sizeof *cells);
-  if (!cells) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  if (!cells) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   for (int i = 0; i < m->n_cells * m->nv_per_cell; ++i) cells[i] = m->cell_vertices[i];
   int rc = sl_output_write_mesh(out, 2, m->n_vertices, m->xy, m->n_cells, m->nv_per_cell, cells, "Quadrilateral", d);
   free(cells);
@@ -277,7 +277,7 @@ static int plane_step(void *self, sl_step *s, int *iterations, sl_diag *d) {
   int rc = tfp_step(&r->m, s->t, s->dt, d);
   *iterations = r->m.iterations_trial;
   r->iterations += r->m.iterations_trial;
-  return rc == 0 ? 0 : SL_STEP_RETRY;
+  return sl_step_code(rc);
 }
 
 static void plane_accept(void *self, const sl_step *s, int *steady) {
@@ -305,7 +305,7 @@ static void release(tfp_run *r) {
 
 static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) {
   tfp_run *r = calloc(1, sizeof *r);
-  if (!r) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  if (!r) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   r->sc = sc, r->cfg = sc->config, r->mesh = sc->mesh, r->linear = "klu";
   r->m.axi = sc->geometry == 2;
   int rc = 0;
@@ -322,7 +322,7 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   /* the phases' convective acceleration, off by default as in the 1-D column (which has none) */
   r->m.convection = sc->flow.convection;
   if (!rc && !(r->cellbuf = calloc(2 * (size_t)r->m.fv.nc, sizeof *r->cellbuf)))
-    rc = sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    rc = sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   if (!rc) rc = initial_state(r, d);
   if (!rc) rc = sl_scene_linsolve(sc, &r->m.ls, &r->linear, d);
   if (!rc) { /* the velocity scale: the Stokes velocity, or the largest inflow at t = 0 */

@@ -99,9 +99,9 @@ int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_d
                   &s->phi_k, &s->rho_k, &s->K_k,   &s->gdot_k, &s->theta_k, &s->mu_k_corner, &s->mu_tk,
                   &s->dgam,  &s->th_old, &s->th_cap, &s->th_src, &s->th_sink, &s->th_x};
   for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
-    if (!(*a[k] = calloc(nk, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    if (!(*a[k] = calloc(nk, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   for (int k = 0; k < TFP_Q_N; ++k)
-    if (!(s->qv[k] = calloc(nk, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    if (!(s->qv[k] = calloc(nk, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   for (size_t c = 0; c < nk; ++c) {
     s->qv[TFP_Q_RHO_F][c] = m->c.rho_f, s->qv[TFP_Q_MU_F][c] = m->c.mu_f, s->qv[TFP_Q_RHO_S][c] = m->c.rho_s;
     s->qv[TFP_Q_D_P][c] = m->c.d_p, s->qv[TFP_Q_SPHERICITY][c] = m->c.sphericity;

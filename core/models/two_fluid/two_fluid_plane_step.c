@@ -70,13 +70,13 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
       {&m->sn, nf}, {&m->ps, nc}, {&m->dps, nc}, {&m->flux, nf}, {&m->alpha, nc}, {&m->inflow, nc},
       {&m->x, 2 * nf + nc}, {&m->rhs, 2 * nf + nc}};
   for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
-    if (!(*a[k].p = calloc(a[k].n, sizeof(double)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    if (!(*a[k].p = calloc(a[k].n, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   int **ia[] = {&m->ftype, &m->us_row, &m->uf_row};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k)
-    if (!(*ia[k] = calloc(nf, sizeof(int)))) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    if (!(*ia[k] = calloc(nf, sizeof(int)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   if (!(m->wall_stats = calloc(5 * (size_t)m->n_b, sizeof(double))) || !(m->tan_noslip = calloc(4 * nf, sizeof(int))) || !(m->end_wall = calloc(2 * nf, sizeof(int))) ||
       !(m->end_u = calloc(2 * nf, sizeof(double))) || !(m->end_us = calloc(2 * nf, sizeof(double))))
-    return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   for (int f = 0; f < m->fv.nf; ++f) {
     if (m->fv.image[f]) m->ftype[f] = TFP_FACE_IMAGE;
     else if (m->fv.bound[f] < 0) m->ftype[f] = TFP_FACE_INTERIOR;
@@ -302,7 +302,7 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, s
     if (m->fv.hi[f] >= 0) mu += phase_mu(m, phase, phi, m->fv.hi[f]), ++nmu;
     rc |= add(m, row, row, mu / nmu * m->fv.area[f] * m->fv.dist[f] / (xf[i] * xf[i]));
   }
-  if (rc) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  if (rc) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   return 0;
 }
 
@@ -547,7 +547,7 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
       rc |= convection(m, 0, f, rf, V * eps * rho_f, 0);
       rc |= convection(m, 1, f, rs, V * ph * rho_s, 1);
     }
-    if (rc) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    if (rc) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
     if ((rc = viscous(m, 0, f, rf, m->phi_new, d))) return rc;
     if (m->s.any && (rc = viscous(m, 1, f, rs, m->phi_new, d))) return rc;
   }
@@ -573,7 +573,7 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
       }
     }
   }
-  if (rc) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+  if (rc) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   return 0;
 }
 
@@ -640,7 +640,7 @@ static int acceleration_start(tfp_model *m, sl_diag *d) {
     if (rc) return rc;
     m->acc_x = malloc((size_t)n * sizeof *m->acc_x), m->acc_g = malloc((size_t)n * sizeof *m->acc_g);
     m->acc_scale = malloc((size_t)n * sizeof *m->acc_scale);
-    if (!m->acc_x || !m->acc_g || !m->acc_scale) return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    if (!m->acc_x || !m->acc_g || !m->acc_scale) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   }
   sl_anderson_reset(&m->acc);
   return 0;

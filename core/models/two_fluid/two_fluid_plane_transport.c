@@ -148,7 +148,7 @@ int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double
   muscl w = {0};
   if (order2 && muscl_setup(m, &w)) {
     muscl_free(&w);
-    return sl_diag_set(d, SL_EFAILED, "two_fluid: out of memory");
+    return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   }
   memcpy(phi, m->phi, (size_t)m->fv.nc * sizeof *phi);
   for (long s = 0; s < n; ++s) {
