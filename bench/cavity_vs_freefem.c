@@ -39,17 +39,16 @@
  * on bad usage. */
 #define _DEFAULT_SOURCE /* wait4, getloadavg */
 #include <errno.h>
-#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
 #include <sys/types.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "centreline_profile.h"
+#include "core/study/child.h"
 #include "svg_plot.h"
 
 enum { MAX_RUNS = 64, MAX_N = 16, MAX_SOLVERS = 3 };
@@ -62,6 +61,23 @@ typedef struct point {
   char raw[1024]; /* sluice: its line of the work-precision CSV */
 } point;
 
+/* FreeFEM's lines: "RESULT n unknowns umin cpu" and "P i u" per profile point. */
+typedef struct freefem_output {
+  const centreline_profile *ref;
+  double *u;
+  int got, n_u;
+  double umin, cpu;
+  long unknowns;
+} freefem_output;
+
+static void freefem_line(void *user, const char *line) {
+  freefem_output *fo = user;
+  int nn = 0, i;
+  double v;
+  if (sscanf(line, "RESULT %d %ld %lf %lf", &nn, &fo->unknowns, &fo->umin, &fo->cpu) == 4) fo->got = 1;
+  else if (sscanf(line, "P %d %lf", &i, &v) == 2 && i == fo->n_u && fo->n_u < fo->ref->n) fo->u[fo->n_u++] = v;
+}
+
 /* Runs FreeFem++ on the script for n cells per side (fastest of repeat),
  * sampling u at the points of `points` (the reference's y). */
 static int run_freefem(const char *script, const char *points, const centreline_profile *ref, int n, int repeat, point *p) {
@@ -70,45 +86,22 @@ static int run_freefem(const char *script, const char *points, const centreline_
   snprintf(p->code, sizeof p->code, "freefem"), snprintf(p->solver, sizeof p->solver, "umfpack");
   p->n = n, p->cpu = INFINITY;
   for (int k = 0; k < repeat; ++k) {
-    int fd[2];
-    if (pipe(fd)) return fprintf(stderr, "pipe: %s\n", strerror(errno)), -1;
-    pid_t pid = fork();
-    if (pid < 0) return fprintf(stderr, "fork: %s\n", strerror(errno)), -1;
-    if (pid == 0) {
-      char arg[32];
-      snprintf(arg, sizeof arg, "%d", n);
-      dup2(fd[1], STDOUT_FILENO);
-      close(fd[0]), close(fd[1]);
-      execlp("FreeFem++", "FreeFem++", "-nw", "-v", "0", script, arg, points, (char *)NULL);
-      fprintf(stderr, "FreeFem++: %s (Debian: apt-get install freefem++)\n", strerror(errno));
-      _exit(127);
-    }
-    close(fd[1]);
-    FILE *f = fdopen(fd[0], "r");
-    char line[512];
-    int got = 0, n_u = 0;
-    double umin = NAN, cpu = NAN;
-    long unknowns = 0;
-    int nn = 0, i;
-    double v;
-    while (f && fgets(line, sizeof line, f)) {
-      if (sscanf(line, "RESULT %d %ld %lf %lf", &nn, &unknowns, &umin, &cpu) == 4) got = 1;
-      else if (sscanf(line, "P %d %lf", &i, &v) == 2 && i == n_u && n_u < ref->n) u[n_u++] = v;
-    }
-    if (f) fclose(f);
-    else close(fd[0]);
-    int status;
-    struct rusage ru;
-    if (wait4(pid, &status, 0, &ru) < 0) return fprintf(stderr, "wait4: %s\n", strerror(errno)), -1;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !got || n_u != ref->n) {
-      fprintf(stderr, "FreeFem++ %s %d failed (status %d, %d of %d profile points)\n", script, n, status, n_u, ref->n);
+    char arg[32];
+    snprintf(arg, sizeof arg, "%d", n);
+    char *argv[] = {"FreeFem++", "-nw", "-v", "0", (char *)script, arg, (char *)points, NULL};
+    freefem_output fo = {.ref = ref, .u = u};
+    sl_child_opts co = {.argv = argv, .result_fd = -1, .line = freefem_line, .line_user = &fo};
+    sl_child_result cr;
+    if (sl_child_run(&co, &cr)) return fprintf(stderr, "FreeFem++: %s\n", cr.message), -1;
+    if (cr.signal_number || cr.exit_code != 0 || !fo.got || fo.n_u != ref->n) {
+      fprintf(stderr, "FreeFem++ %s %d failed (status %d%s, %d of %d profile points)\n", script, n, cr.exit_code,
+              cr.exit_code == 127 ? ": is it installed? Debian: apt-get install freefem++" : "", fo.n_u, ref->n);
       return -1;
     }
-    p->unknowns = unknowns, p->umin = umin;
+    p->unknowns = fo.unknowns, p->umin = fo.umin;
     centreline_profile_error(ref, u, &p->err_max, &p->err_l2);
-    if (cpu < p->cpu) p->cpu = cpu;
-    double mb = ru.ru_maxrss / 1024.0;
-    if (mb > p->mb) p->mb = mb;
+    if (fo.cpu < p->cpu) p->cpu = fo.cpu;
+    if (cr.peak_rss_mb > p->mb) p->mb = cr.peak_rss_mb;
   }
   if (!isfinite(p->err_max) || !isfinite(p->err_l2)) return fprintf(stderr, "FreeFEM n = %d: NaN in profile\n", n), -1;
   return 0;
@@ -202,20 +195,14 @@ static int read_sluice(const char *path, point *pts, int max, char *machine, siz
 static int run_sluice_bench(const char *exe, const char *src, const char *prof, double ref, int n, const char *csv) {
   char nbuf[32], rbuf[64];
   snprintf(nbuf, sizeof nbuf, "%d", n), snprintf(rbuf, sizeof rbuf, "%.17g", ref);
-  pid_t pid = fork();
-  if (pid < 0) return fprintf(stderr, "fork: %s\n", strerror(errno)), -1;
-  if (pid == 0) {
-    int null = open("/dev/null", O_WRONLY); /* its CSV goes to the file; stderr shows progress */
-    if (null >= 0) dup2(null, STDOUT_FILENO), close(null);
-    execl(exe, exe, src, "--solvers", "umfpack,klu", "--repeat", "1", "--steps", "0", "--reference", rbuf,
-          "--profile-ref", prof, "--csv", csv, nbuf, (char *)NULL);
-    fprintf(stderr, "%s: %s\n", exe, strerror(errno));
-    _exit(127);
-  }
-  int status;
-  if (waitpid(pid, &status, 0) < 0) return fprintf(stderr, "waitpid: %s\n", strerror(errno)), -1;
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    return fprintf(stderr, "%s n = %d failed (status %d)\n", exe, n, status), -1;
+  /* its CSV goes to the file; stderr shows progress */
+  char *argv[] = {(char *)exe, (char *)src, "--solvers", "umfpack,klu", "--repeat", "1", "--steps", "0",
+                  "--reference", rbuf, "--profile-ref", (char *)prof, "--csv", (char *)csv, nbuf, NULL};
+  sl_child_opts co = {.argv = argv, .result_fd = -1, .out = "/dev/null"};
+  sl_child_result cr;
+  if (sl_child_run(&co, &cr)) return fprintf(stderr, "%s: %s\n", exe, cr.message), -1;
+  if (cr.signal_number || cr.exit_code != 0)
+    return fprintf(stderr, "%s n = %d failed (status %d, signal %d)\n", exe, n, cr.exit_code, cr.signal_number), -1;
   return 0;
 }
 

@@ -1,5 +1,5 @@
 /* sluice bench STUDY.ini: a work-precision study or a closure comparison
- * (core/bench/study.h): every run of the study in its own process, each
+ * (core/study/study.h): every run of the study in its own process, each
  * output measured, one CSV row per run and a PNG plot. */
 #include <errno.h>
 #include <math.h>
@@ -10,11 +10,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/bench/exact.h"
-#include "core/bench/measure.h"
-#include "core/bench/report.h"
-#include "core/bench/runner.h"
-#include "core/bench/study.h"
+#include "core/study/exact.h"
+#include "core/study/measure.h"
+#include "core/study/report.h"
+#include "core/study/runner.h"
+#include "core/study/study.h"
 #include "core/cli/cli.h"
 #include "core/cli/progress.h"
 #include "core/models/run.h"

@@ -29,7 +29,7 @@
 #include <unistd.h>
 
 #include "bench/png_check.h"
-#include "core/verify/kynch_exact.h"
+#include "core/study/kynch_exact.h"
 #include "testing.h"
 
 static char exe[4096], configs[4096];

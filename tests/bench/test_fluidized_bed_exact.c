@@ -1,6 +1,6 @@
 /* The equilibrium porosity of a liquid-fluidised bed (exact = fluidized_bed
  * of sluice bench):
- *  - core/verify/fluidized_bed_exact.h with Richardson & Zaki's drag, whose
+ *  - core/study/fluidized_bed_exact.h with Richardson & Zaki's drag, whose
  *    balance K s = phi (1 - phi) (rho_s - rho_f) g, s = U / (1 - phi), has
  *    the closed form porosity = (U / u_t)^(1/n) (Richardson & Zaki 1954);
  *    below the minimum fluidisation velocity and above u_t there is no bed;
@@ -20,9 +20,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/bench/exact.h"
-#include "core/bench/study.h"
-#include "core/verify/fluidized_bed_exact.h"
+#include "core/study/exact.h"
+#include "core/study/study.h"
+#include "core/study/fluidized_bed_exact.h"
 #include "testing.h"
 
 static char configs[4096];

@@ -1,4 +1,4 @@
-/* The PNG encoder, the bitmap font and the chart (core/plot/): checksums
+/* The PNG encoder, the bitmap font and the chart (core/study/): checksums
  * against their published check values, encoded images read back by an
  * independent reader and inflater (tests/bench/png_check.h) pixel for
  * pixel, for data with few repeats, one colour, stripes and a row longer
@@ -10,9 +10,9 @@
 #include <string.h>
 
 #include "bench/png_check.h"
-#include "core/plot/chart.h"
-#include "core/plot/font.h"
-#include "core/plot/png.h"
+#include "core/study/chart.h"
+#include "core/study/font.h"
+#include "core/study/png.h"
 #include "testing.h"
 
 /* Check values: CRC-32 of "123456789" is 0xCBF43926 (the catalogue's "check"

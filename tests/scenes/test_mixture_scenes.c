@@ -2,7 +2,7 @@
  * `sluice run` and read back from their output files.
  *
  * kynch_settling (1-D batch settling) against the exact Kynch entropy
- * solution (core/verify/kynch_exact.h: shocks, the contact shock and
+ * solution (core/study/kynch_exact.h: shocks, the contact shock and
  * fan of non-convex fluxes, the meeting of the fronts):
  *  - Richardson-Zaki with its packing cut-off at phi0 = 0.05, 0.1, 0.2: the
  *    top interface (the written interface height) and the bottom shock fall
@@ -22,14 +22,14 @@
  * table, and the mean fraction conserved to round-off. migration_poiseuille
  * (a pipe slice periodic along its axis) against eq 4.210 the same way.
  * boycott (a vessel inclined 45 degrees, the scene's 24 x 32 mesh,
- * core/verify/boycott_pnk.h): the front falls more than 1.6 times as fast
+ * tests/scenes/boycott_pnk.h): the front falls more than 1.6 times as fast
  * as in an upright vessel, above PNK's z_F; the clear fluid is PNK's
  * production law (with the run's own front) within 5 %; the part not above
  * the front is the Boycott layer's volume (Nigam 4.117) within 30 %, and
  * the front PNK's with that volume counted within 0.03, at t = 0.2 and 0.3;
  * the stream function is zero on all walls. spinup
  * (light particles in a spinning cylinder, slip along the fluid's
- * acceleration, core/verify/spinup_asymptotic.h): the asymptotic theory
+ * acceleration, tests/scenes/spinup_asymptotic.h): the asymptotic theory
  * against the digest's table, the kinematic shock within 0.03 of it at four
  * heights, the mixture region within 0.02 of the characteristics at z =
  * 0.1. wave_bed (seed 003's pseudo-continuum): solids
@@ -43,9 +43,9 @@
 #include "core/io/sample.h"
 #include "scene_runner.h"
 #include "testing.h"
-#include "core/verify/kynch_exact.h"
-#include "core/verify/spinup_asymptotic.h"
-#include "core/verify/boycott_pnk.h"
+#include "core/study/kynch_exact.h"
+#include "spinup_asymptotic.h"
+#include "boycott_pnk.h"
 
 static char configs[4096];
 
@@ -511,7 +511,7 @@ static spinup_theory spin_theory(double *tau_per_t) {
   return s;
 }
 
-/* The asymptotic solution written here (core/verify/spinup_asymptotic.h)
+/* The asymptotic solution written here (tests/scenes/spinup_asymptotic.h)
  * against the digest's independently integrated table. */
 static void spinup_theory_table(void) {
   double tau_per_t;

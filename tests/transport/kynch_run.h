@@ -10,7 +10,7 @@
 
 #include "core/mesh/mesh.h"
 #include "core/transport/transport.h"
-#include "core/verify/kynch_exact.h"
+#include "core/study/kynch_exact.h"
 
 typedef struct kr_run {
   sl_mesh *m;

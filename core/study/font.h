@@ -3,7 +3,7 @@
 #ifndef SLUICE_PLOT_FONT_H
 #define SLUICE_PLOT_FONT_H
 
-#include "core/plot/image.h"
+#include "core/study/image.h"
 
 enum { SL_FONT_W = 5, SL_FONT_H = 8, SL_FONT_ADVANCE = 6 }; /* pixels at scale 1; advance includes the gap */
 

@@ -1,14 +1,14 @@
 /* The results of a study: one row per run, the errors and observed orders,
  * and what is written: a CSV with one row per run, a CSV of the compared
- * quantity side by side (comparisons), and a PNG plot (core/plot/chart.h):
+ * quantity side by side (comparisons), and a PNG plot (core/study/chart.h):
  * error against CPU time on log-log axes, one curve per variant, or for a
  * comparison the quantity per variant on linear axes. */
 #ifndef SLUICE_BENCH_REPORT_H
 #define SLUICE_BENCH_REPORT_H
 
-#include "core/bench/measure.h"
-#include "core/bench/runner.h"
-#include "core/bench/study.h"
+#include "core/study/measure.h"
+#include "core/study/runner.h"
+#include "core/study/study.h"
 
 typedef struct sl_bench_row {
   int variant, point;

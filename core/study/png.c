@@ -1,5 +1,5 @@
 /* PNG encoder with a fixed-Huffman deflate stream (see png.h). */
-#include "core/plot/png.h"
+#include "core/study/png.h"
 
 #include <errno.h>
 #include <stdio.h>

@@ -1,5 +1,5 @@
 /* A study's CSV and PNG (see report.h). */
-#include "core/bench/report.h"
+#include "core/study/report.h"
 
 #include <errno.h>
 #include <math.h>
@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/plot/chart.h"
+#include "core/study/chart.h"
 
 int sl_bench_table_init(sl_bench_table *t, const sl_study *s) {
   memset(t, 0, sizeof *t);

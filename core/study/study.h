@@ -30,7 +30,7 @@ typedef struct sl_study_key {
 
 typedef enum sl_study_against {
   SL_AGAINST_NONE,      /* a comparison: the quantity itself, side by side */
-  SL_AGAINST_EXACT,     /* an exact solution built into sluice (core/bench/exact.h) */
+  SL_AGAINST_EXACT,     /* an exact solution built into sluice (core/study/exact.h) */
   SL_AGAINST_REFERENCE, /* a CSV of position (or time), value */
   SL_AGAINST_VALUE,     /* one number */
   SL_AGAINST_FINEST     /* the last point of the same variant */

@@ -1,11 +1,9 @@
-/* One run of a study in a child process: fork, then exec the sluice
- * command itself (/proc/self/exe) for that one run, so that the child's
- * memory and clocks start from nothing, and wait for it with wait4(), whose
- * rusage gives the child's CPU time (user + system) and peak resident set
- * (ru_maxrss). A crash, a failure or a hang (killed at the timeout) of one
- * run is recorded and the study goes on. The child's stdout and stderr go
- * to a log file; its step counts and message come back through a pipe on
- * file descriptor 3. */
+/* One run of a study in a child process (core/study/child.h): the sluice
+ * command itself (/proc/self/exe) exec'ed for that one run, so that the
+ * child's memory and clocks start from nothing. A crash, a failure or a
+ * hang (killed at the timeout) of one run is recorded and the study goes
+ * on. The child's stdout and stderr go to a log file; its step counts and
+ * message come back through a pipe on file descriptor 3. */
 #ifndef SLUICE_BENCH_RUNNER_H
 #define SLUICE_BENCH_RUNNER_H
 

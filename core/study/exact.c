@@ -1,5 +1,5 @@
 /* Exact solutions from a run's scene (see exact.h). */
-#include "core/bench/exact.h"
+#include "core/study/exact.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -8,9 +8,9 @@
 
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/instance.h"
-#include "core/verify/bingham_exact.h"
-#include "core/verify/fluidized_bed_exact.h"
-#include "core/verify/kynch_exact.h"
+#include "core/study/bingham_exact.h"
+#include "core/study/fluidized_bed_exact.h"
+#include "core/study/kynch_exact.h"
 
 typedef enum { EXACT_KYNCH, EXACT_BINGHAM, EXACT_FLUIDIZED_BED } exact_kind;
 
@@ -272,7 +272,7 @@ typedef struct drag_binding {
   char failure[400];
 } drag_binding;
 
-/* fb_drag_fn (core/verify/fluidized_bed_exact.h): K at one point. */
+/* fb_drag_fn (core/study/fluidized_bed_exact.h): K at one point. */
 static int drag_at(void *user, double phi, double slip, double *K) {
   drag_binding *b = user;
   const sl_closure_desc *desc = b->c->desc;

@@ -2,17 +2,17 @@
  * up from one run's resolved scene, closures included:
  *
  *  kynch    1-D batch settling in a closed column (Kynch 1952; the entropy
- *           solution of core/verify/kynch_exact.h): cell averages of phi.
+ *           solution of core/study/kynch_exact.h): cell averages of phi.
  *           The settling flux is the scene's own closure, evaluated through
  *           the plugin: richardson_zaki with its packing cut-off and a given
  *           exponent, or nigam; u_t is the closure's value at phi = 0, and
  *           the law is checked against the closure at several phi.
  *  bingham  fully developed Bingham flow between plates (Bird, Dai &
- *           Yarusso 1983; core/verify/bingham_exact.h): the axial (third)
+ *           Yarusso 1983; core/study/bingham_exact.h): the axial (third)
  *           velocity component; the scene's plastic viscosity and yield
  *           stress, the driving force from [flow] body_force and gravity.
  *  fluidized_bed  the homogeneous liquid-fluidised bed at rest (Richardson &
- *           Zaki 1954; core/verify/fluidized_bed_exact.h): a 1-D two_fluid
+ *           Zaki 1954; core/study/fluidized_bed_exact.h): a 1-D two_fluid
  *           column fed at the bottom ([boundary.left] an inlet of constant
  *           velocity U, [boundary.right] an outlet) holds its solids at the
  *           porosity where the scene's own drag closure (evaluated through

@@ -23,7 +23,7 @@
 
 #include <math.h>
 
-#include "core/verify/kynch_exact.h"
+#include "core/study/kynch_exact.h"
 
 typedef struct spinup_theory {
   kx_law flux; /* F(alpha) = alpha (1 - alpha)^2 (1 - alpha/alpha_m)^(K alpha_m): kx_nigam(1, K, alpha_m) */

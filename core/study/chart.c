@@ -1,12 +1,12 @@
 /* Line charts on a raster (see chart.h). */
-#include "core/plot/chart.h"
+#include "core/study/chart.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "core/plot/font.h"
-#include "core/plot/png.h"
+#include "core/study/font.h"
+#include "core/study/png.h"
 
 enum { TEXT = 2, SMALL = 1, MAX_TICKS = 64 }; /* font scales: titles, labels and ticks; point labels */
 

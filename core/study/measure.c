@@ -1,5 +1,5 @@
 /* Measuring a run's output (see measure.h). */
-#include "core/bench/measure.h"
+#include "core/study/measure.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* The 5 x 8 bitmap font (see font.h): one glyph per printable ASCII
  * character, drawn row by row ('#' a set pixel). */
-#include "core/plot/font.h"
+#include "core/study/font.h"
 
 #include <string.h>
 

@@ -1,5 +1,5 @@
 /* RGB raster drawing (see image.h). */
-#include "core/plot/image.h"
+#include "core/study/image.h"
 
 #include <math.h>
 #include <stdlib.h>

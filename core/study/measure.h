@@ -17,8 +17,8 @@
 #ifndef SLUICE_BENCH_MEASURE_H
 #define SLUICE_BENCH_MEASURE_H
 
-#include "core/bench/exact.h"
-#include "core/bench/study.h"
+#include "core/study/exact.h"
+#include "core/study/study.h"
 
 typedef struct sl_bench_measured {
   double time;    /* the output time measured (NaN for a scalar against reference times) */

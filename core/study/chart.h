@@ -10,7 +10,7 @@
 #ifndef SLUICE_PLOT_CHART_H
 #define SLUICE_PLOT_CHART_H
 
-#include "core/plot/image.h"
+#include "core/study/image.h"
 #include "core/util/diag.h"
 
 typedef enum sl_axis_scale { SL_AXIS_LINEAR, SL_AXIS_LOG } sl_axis_scale;

@@ -1,5 +1,5 @@
 /* Reading and checking a study file (see study.h). */
-#include "core/bench/study.h"
+#include "core/study/study.h"
 
 #include <errno.h>
 #include <math.h>

@@ -1,20 +1,15 @@
 /* A study's runs in child processes (see runner.h). */
-#define _DEFAULT_SOURCE /* wait4(): the one wait that returns the child's own rusage (BSD, in glibc and musl) */
-#include "core/bench/runner.h"
+#include "core/study/runner.h"
 
 #include <errno.h>
-#include <fcntl.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
-#include <sys/time.h>
-#include <sys/types.h>
-#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "core/models/run.h"
+#include "core/study/child.h"
 
 const char *sl_bench_status_name(sl_bench_status s) {
   static const char *const names[] = {"ok", "failed", "bad_input", "crashed", "timeout", "interrupted", "not_run"};
@@ -87,100 +82,26 @@ void sl_bench_send_failure(int result_fd, int rc, const char *msg) {
   if (result_fd >= 0) write_all(result_fd, &rec, sizeof rec);
 }
 
-/* In the forked child: the log as stdout and stderr, the pipe as fd 3, then
- * the run's command. */
-static _Noreturn void child(int fd, const sl_bench_run_opts *o) {
-  int log = open(o->log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (log >= 0) {
-    dup2(log, STDOUT_FILENO), dup2(log, STDERR_FILENO);
-    close(log);
-  }
-  if (fd != SL_BENCH_RESULT_FD) {
-    if (dup2(fd, SL_BENCH_RESULT_FD) < 0) _exit(127);
-    close(fd);
-  }
-  execv(o->argv[0], o->argv);
-  fprintf(stderr, "sluice: cannot run %s: %s\n", o->argv[0], strerror(errno));
-  _exit(127);
-}
-
 int sl_bench_run(const sl_bench_run_opts *o, sl_bench_run_result *r) {
   memset(r, 0, sizeof *r);
   r->status = SL_RUN_NOT_RUN;
   r->cpu = r->wall = r->peak_rss_mb = r->t_reached = NAN;
-  int fd[2];
-  if (pipe(fd)) {
-    snprintf(r->message, sizeof r->message, "pipe: %s", strerror(errno));
-    return -1;
-  }
-  if (fd[1] <= SL_BENCH_RESULT_FD) { /* the child's end must not be one of 0..3, which the child replaces */
-    int moved = fcntl(fd[1], F_DUPFD, SL_BENCH_RESULT_FD + 1);
-    close(fd[1]);
-    fd[1] = moved;
-    if (moved < 0) {
-      snprintf(r->message, sizeof r->message, "fcntl: %s", strerror(errno));
-      close(fd[0]);
-      return -1;
-    }
-  }
-  fflush(NULL); /* nothing buffered is written twice */
-  double w0 = monotonic();
-  pid_t pid = fork();
-  if (pid < 0) {
-    snprintf(r->message, sizeof r->message, "fork: %s", strerror(errno));
-    close(fd[0]), close(fd[1]);
-    return -1;
-  }
-  if (pid == 0) {
-    close(fd[0]);
-    child(fd[1], o);
-  }
-  close(fd[1]);
-  int status = 0, timed_out = 0, forwarded = 0;
-  struct rusage ru;
-  memset(&ru, 0, sizeof ru);
-  long pause_ns = 1000000; /* 1 ms, growing to 20 ms: short runs are not held up */
-  for (;;) {
-    pid_t got = wait4(pid, &status, WNOHANG, &ru);
-    if (got == pid) break;
-    if (got < 0 && errno != EINTR) {
-      snprintf(r->message, sizeof r->message, "wait4: %s", strerror(errno));
-      close(fd[0]);
-      return -1;
-    }
-    if (!timed_out && monotonic() - w0 > o->timeout) {
-      kill(pid, SIGKILL);
-      timed_out = 1;
-    }
-    if (o->interrupt && *o->interrupt && !forwarded) { /* a Ctrl-C of the terminal reached the child too; kill -INT did not */
-      kill(pid, SIGINT);
-      forwarded = 1;
-    }
-    struct timespec ts = {0, pause_ns};
-    nanosleep(&ts, NULL);
-    if (pause_ns < 20000000) pause_ns *= 2;
-  }
-  r->wall = monotonic() - w0;
-  r->cpu = (double)ru.ru_utime.tv_sec + 1e-6 * (double)ru.ru_utime.tv_usec + (double)ru.ru_stime.tv_sec +
-           1e-6 * (double)ru.ru_stime.tv_usec;
-  r->peak_rss_mb = (double)ru.ru_maxrss / 1024.0; /* Linux: kilobytes */
   record rec;
-  size_t got = 0;
-  while (got < sizeof rec) {
-    ssize_t k = read(fd[0], (char *)&rec + got, sizeof rec - got);
-    if (k < 0 && errno == EINTR) continue;
-    if (k <= 0) break;
-    got += (size_t)k;
+  sl_child_opts co = {.argv = o->argv, .result = &rec, .result_size = sizeof rec, .result_fd = SL_BENCH_RESULT_FD,
+                      .out = o->log, .err = o->log, .timeout = o->timeout, .interrupt = o->interrupt};
+  sl_child_result cr;
+  if (sl_child_run(&co, &cr)) {
+    snprintf(r->message, sizeof r->message, "%s", cr.message);
+    return -1;
   }
-  close(fd[0]);
-  if (WIFEXITED(status)) r->exit_code = WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) r->signal_number = WTERMSIG(status);
-  if (timed_out) {
+  r->wall = cr.wall, r->cpu = cr.cpu, r->peak_rss_mb = cr.peak_rss_mb;
+  r->exit_code = cr.exit_code, r->signal_number = cr.signal_number;
+  if (cr.timed_out) {
     r->status = SL_RUN_TIMEOUT;
     snprintf(r->message, sizeof r->message, "killed after %.0f s, the study's timeout ([study] timeout)", o->timeout);
-  } else if (got != sizeof rec) {
+  } else if (!cr.got_result) {
     r->status = SL_RUN_CRASHED;
-    if (WIFSIGNALED(status))
+    if (r->signal_number)
       snprintf(r->message, sizeof r->message, "killed by signal %d (%s)", r->signal_number, strsignal(r->signal_number));
     else snprintf(r->message, sizeof r->message, "exited with status %d without a result", r->exit_code);
   } else {
