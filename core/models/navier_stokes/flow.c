@@ -243,6 +243,19 @@ static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag 
       if (in->velocity.n > n_comp)
         return sl_diag_set(d, SL_EBADINPUT, "%s: %d components given, the scene has %d velocity components",
                            sl_scene_where(sc, &in->velocity, at, sizeof at), in->velocity.n, n_comp);
+      /* the values at t = 0 along the boundary, where a bad expression shows before anything is written */
+      for (int f = m->bface_start[id]; f < m->bface_start[id + 1]; ++f) {
+        const int *fv = m->face_vertices + 2 * m->bface[f];
+        for (int e = 0; e < 2 && fv[e] >= 0; ++e) { /* 1-D: one vertex */
+          double v[3] = {m->xy[2 * fv[e]], m->xy[2 * fv[e] + 1], 0.0};
+          for (int c = 0; c < in->velocity.n; ++c) {
+            double u = sl_expr_eval(in->velocity.e[c], v);
+            if (!isfinite(u))
+              return sl_diag_set(d, SL_EBADINPUT, "%s: component %d is %g at (%g, %g), t = 0: not a finite velocity",
+                                 sl_scene_where(sc, &in->velocity, at, sizeof at), c + 1, u, v[0], v[1]);
+          }
+        }
+      }
       s->time_dependent |= expr_uses_t(&in->velocity);
     } else if (b->type == NS_SLIP) {
       if ((b->slip_comp = aligned_normal(m, id)) < 0)
