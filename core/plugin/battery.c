@@ -21,6 +21,9 @@ typedef struct battery {
   char label[128];
 } battery;
 
+#if defined(__GNUC__)
+__attribute__((format(printf, 4, 5)))
+#endif
 static void report(battery *b, int ok, const char *check, const char *fmt, ...) {
   if (ok) b->res->passed++;
   else b->res->failed++;
@@ -169,8 +172,8 @@ static void check_schema_and_bounds(battery *b) {
     }
     sl_params_free(params);
   }
-  report(b, refused_all, "bounds", refused_all ? "%d out-of-range values refused" : "%s", refused_all ? tried : 0,
-         what);
+  if (refused_all) report(b, 1, "bounds", "%d out-of-range values refused", tried);
+  else report(b, 0, "bounds", "%s", what);
 }
 
 /* 3. Every output written, with and without derivatives. */
@@ -204,8 +207,9 @@ static void check_outputs_written(battery *b, batch *bt) {
               snprintf(where, sizeof where, "d%s/d%s not written or not finite at point %d",
                        b->desc->out[j / bt->n_in].name, b->desc->in[j % bt->n_in].name, (int)q);
             }
-    report(b, ok, derivs ? "outputs written (derivatives)" : "outputs written", ok ? "%d states" : "%s",
-           ok ? (int)bt->Q : 0, where);
+    const char *check = derivs ? "outputs written (derivatives)" : "outputs written";
+    if (ok) report(b, 1, check, "%d states", (int)bt->Q);
+    else report(b, 0, check, "%s", where);
   }
 }
 
@@ -349,7 +353,8 @@ static void check_out_of_range(battery *b) {
     }
   }
   batch_free(&bt);
-  report(b, ok, "outside validity", ok ? "%d bad inputs refused with the point named" : "%s", ok ? tried : 0, msg);
+  if (ok) report(b, 1, "outside validity", "%d bad inputs refused with the point named", tried);
+  else report(b, 0, "outside validity", "%s", msg);
 }
 
 /* 7. Reference values from the literature. */
@@ -382,8 +387,8 @@ static void check_reference_values(battery *b) {
     }
   }
   batch_free(&bt);
-  report(b, ok, "reference values", ok ? "%d values, worst relative deviation %.1e" : "%s", ok ? (int)c->n_checks : 0,
-         ok ? worst : 0.0, msg);
+  if (ok) report(b, 1, "reference values", "%d values, worst relative deviation %.1e", (int)c->n_checks, worst);
+  else report(b, 0, "reference values", "%s", msg);
 }
 
 /* 8. Concurrent evaluate calls on one state. */
@@ -431,8 +436,9 @@ static void check_concurrency(battery *b, batch *ref) {
       if (memcmp(jobs[t].bt.out[k], ref->out[k], (size_t)ref->Q * sizeof(double)) != 0) ok = 0;
   }
   for (int t = 0; t < 2; ++t) batch_free(&jobs[t].bt);
-  report(b, ok, "concurrent evaluation", ok ? "2 threads x %d calls agree with the serial result" : "results differ",
-         N_THREAD_REPEATS);
+  if (ok) report(b, 1, "concurrent evaluation", "2 threads x %d calls agree with the serial result", N_THREAD_REPEATS);
+  else report(b, 0, "concurrent evaluation", "results differ between 2 threads x %d calls and the serial result",
+              N_THREAD_REPEATS);
 }
 
 void sl_battery_run(const sl_closure_entry *entry, FILE *log, sl_battery_result *res) {

@@ -119,8 +119,17 @@ void sl_registry_destroy(sl_registry *r) {
  * *n_dlopen counts the libraries dlopen'ed, refused ones included. */
 static int open_library(const char *path, sl_library **out, long *n_dlopen, sl_diag *d) {
   *out = NULL;
+  /* A name without a slash is a file in the working folder, as on the
+     command line; dlopen would look for it on the system's library path. */
+  char local[PATH_MAX];
+  const char *open_path = path;
+  if (!strchr(path, '/')) {
+    if (snprintf(local, sizeof local, "./%s", path) >= (int)sizeof local)
+      return sl_diag_set(d, SL_EBADINPUT, "%s: path too long", path);
+    open_path = local;
+  }
   dlerror();
-  void *h = dlopen(path, SL_DLOPEN_FLAGS);
+  void *h = dlopen(open_path, SL_DLOPEN_FLAGS);
   if (!h) {
     const char *why = dlerror();
     return sl_diag_set(d, SL_EBADINPUT, "%s: cannot load: %s", path, why ? why : "unknown dlopen error");
