@@ -41,7 +41,7 @@ static int from_diag(sluice_error *e, int code, const sl_diag *d) {
 static int finish_open(sluice *s, const sluice_open_opts *o, sluice_error *e) {
   sl_diag d;
   int rc = 0;
-  for (int i = 0; o && o->sets && o->sets[i] && !rc; ++i) rc = sl_ini_apply_override(s->ini, o->sets[i], &d);
+  for (int i = 0; o && o->sets && o->sets[i] && !rc; ++i) rc = sl_closure_ini_apply_override(s->ini, o->sets[i], &d);
   if (!rc) rc = sl_plugin_dirs_from_ini(s->ini, &s->dirs, &s->n_dirs, &d);
   if (!rc) rc = sl_registry_create(&s->reg, (const char *const *)s->dirs, s->n_dirs, &d);
   /* only the libraries of the closures the scene names are loaded, unless asked */

@@ -281,6 +281,25 @@ sl_ini_entry *sl_ini_find(const sl_ini *ini, const char *section, const char *ke
   return i < 0 ? NULL : &s->entries[i];
 }
 
+int sl_ini_entry_from_command_line(const sl_ini_entry *e) { return e && e->file && !strcmp(e->file, CMDLINE_FILE); }
+
+void sl_ini_drop_entries(sl_ini *ini, const char *section, int (*keep)(const sl_ini_entry *, void *), void *ctx) {
+  if (!ini || !section) return;
+  int si = find_section_n(ini, section, strlen(section));
+  if (si < 0) return;
+  sl_ini_section *sec = &ini->sections[si];
+  int kept = 0;
+  for (int i = 0; i < sec->n_entries; ++i) {
+    if (keep(&sec->entries[i], ctx)) {
+      sec->entries[kept++] = sec->entries[i];
+      continue;
+    }
+    free(sec->entries[i].key);
+    free(sec->entries[i].value);
+  }
+  sec->n_entries = kept;
+}
+
 /* Why [s, s+n) is not a valid section name (NULL when it is); *bad is the offset to point at. */
 static const char *bad_section_name(const char *s, size_t n, size_t *bad) {
   *bad = 0;

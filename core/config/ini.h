@@ -52,6 +52,12 @@ int sl_ini_apply_override(sl_ini *ini, const char *assignment, sl_diag *d);
 const sl_ini_section *sl_ini_find_section(const sl_ini *ini, const char *section);
 sl_ini_entry *sl_ini_find(const sl_ini *ini, const char *section, const char *key);
 
+/* The entry was given by sl_ini_apply_override, not read from a file. */
+int sl_ini_entry_from_command_line(const sl_ini_entry *e);
+
+/* Removes the entries of `section` for which keep(entry, ctx) is 0. */
+void sl_ini_drop_entries(sl_ini *ini, const char *section, int (*keep)(const sl_ini_entry *, void *), void *ctx);
+
 /* Typed getters. A missing key gives `def` when required == 0, an error when
  * required != 0. Values outside [min, max] are errors naming the range. Each
  * marks the entry used. Return 0 or SL_EBADINPUT. */

@@ -74,6 +74,44 @@ int sl_closure_check_ini(const sl_registry *r, const sl_ini *ini, const char *se
   return rc;
 }
 
+static int keep_for_new_model(const sl_ini_entry *e, void *ctx) {
+  (void)ctx;
+  return !strcmp(e->key, "model") || sl_ini_entry_from_command_line(e);
+}
+
+void sl_closure_ini_replace_model(sl_ini *ini, const char *section, const char *model) {
+  if (strncmp(section, "closure.", 8) != 0) return;
+  const sl_ini_entry *old = sl_ini_find(ini, section, "model");
+  if (!old || !strcmp(old->value, model)) return;
+  sl_ini_drop_entries(ini, section, keep_for_new_model, NULL);
+}
+
+int sl_closure_ini_apply_override(sl_ini *ini, const char *assignment, sl_diag *d) {
+  /* section.key=value, the key after the last dot (as sl_ini_apply_override reads it) */
+  const char *eq = assignment ? strchr(assignment, '=') : NULL;
+  if (eq) {
+    const char *ls = assignment, *le = eq, *vs = eq + 1;
+    while (ls < le && (*ls == ' ' || *ls == '\t')) ++ls;
+    while (le > ls && (le[-1] == ' ' || le[-1] == '\t')) --le;
+    while (*vs == ' ' || *vs == '\t') ++vs;
+    size_t vlen = strlen(vs);
+    while (vlen && (vs[vlen - 1] == ' ' || vs[vlen - 1] == '\t')) --vlen;
+    const char *dot = NULL;
+    for (const char *q = ls; q < le; ++q)
+      if (*q == '.') dot = q;
+    char section[256], model[256];
+    if (dot && le - dot - 1 == 5 && !memcmp(dot + 1, "model", 5) && (size_t)(dot - ls) < sizeof section &&
+        vlen < sizeof model && (vlen == 0 || vs[0] != '"')) {
+      memcpy(section, ls, (size_t)(dot - ls));
+      section[dot - ls] = '\0';
+      memcpy(model, vs, vlen);
+      model[vlen] = '\0';
+      sl_closure_ini_replace_model(ini, section, model);
+    }
+  }
+  return sl_ini_apply_override(ini, assignment, d);
+}
+
 int sl_plugin_dirs_from_ini(const sl_ini *ini, char ***dirs, int *n, sl_diag *d) {
   *dirs = NULL;
   *n = 0;

@@ -19,6 +19,16 @@ int sl_closure_from_ini(const sl_registry *r, const sl_ini *ini, const char *sec
  * errors of sl_closure_from_ini except a refusal by the closure's create. */
 int sl_closure_check_ini(const sl_registry *r, const sl_ini *ini, const char *section, sl_diag *d);
 
+/* A closure section whose `model` becomes another closure: the keys its
+ * files gave (parameters, `library`) were the old closure's and are dropped,
+ * so that the new one starts from its defaults; keys given on the command
+ * line stay (they were meant for the new one). Nothing when the model is the
+ * same or the section is not a closure's. */
+void sl_closure_ini_replace_model(sl_ini *ini, const char *section, const char *model);
+
+/* sl_ini_apply_override with the rule above: what `--set` does to a scene. */
+int sl_closure_ini_apply_override(sl_ini *ini, const char *assignment, sl_diag *d);
+
 /* Search folders named in the scene: [plugins] path = dir, dir (relative to
  * the scene file). Free the result with sl_plugin_dirs_free. */
 int sl_plugin_dirs_from_ini(const sl_ini *ini, char ***dirs, int *n, sl_diag *d);

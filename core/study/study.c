@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/plugin/closure_ini.h"
+
 /* ---- helpers ------------------------------------------------------------------ */
 
 static char *dup_str(const char *s, size_t n) {
@@ -462,27 +464,8 @@ static sl_ini_section *find_section(sl_ini *ini, const char *name) {
   return NULL;
 }
 
-/* A closure section whose model changes: its other keys were the old
- * closure's parameters. */
-static void drop_closure_parameters(sl_ini *ini, const sl_study_key *k, const char *value) {
-  if (!is_prefix(k->section, "closure.") || strcmp(k->key, "model") != 0) return;
-  sl_ini_section *sec = find_section(ini, k->section);
-  const sl_ini_entry *model = sl_ini_find(ini, k->section, "model");
-  if (!sec || !model || !strcmp(model->value, value)) return;
-  int kept = 0;
-  for (int i = 0; i < sec->n_entries; ++i) {
-    if (!strcmp(sec->entries[i].key, "model")) {
-      sec->entries[kept++] = sec->entries[i];
-      continue;
-    }
-    free(sec->entries[i].key);
-    free(sec->entries[i].value);
-  }
-  sec->n_entries = kept;
-}
-
 static int apply(sl_ini *ini, const sl_study_key *k, const char *value, sl_diag *d) {
-  drop_closure_parameters(ini, k, value);
+  if (!strcmp(k->key, "model")) sl_closure_ini_replace_model(ini, k->section, value);
   int had_section = find_section(ini, k->section) != NULL;
   size_t len = strlen(k->section) + strlen(k->key) + strlen(value) + 3;
   char *a = malloc(len);
