@@ -9,10 +9,9 @@
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
 #include "core/time/loop.h"
+#include "core/util/version.h"
 
-#ifndef SLUICE_VERSION
-#define SLUICE_VERSION "unknown"
-#endif
+const char *sluice_version(void) { return sl_version(); }
 
 struct sluice {
   sl_ini *ini;
@@ -197,7 +196,7 @@ int sluice_run(sluice *s, const sluice_run_opts *o, sluice_summary *sum, sluice_
   sl_run_opts ro = {.scene_path = o && o->scene_path ? o->scene_path : s->path,
                     .output = o ? o->output : NULL,
                     .restart = o ? o->restart : NULL,
-                    .sluice_version = o && o->version ? o->version : SLUICE_VERSION,
+                    .sluice_version = o && o->version ? o->version : sl_version(),
                     .monitor = o && (o->progress || o->live) ? relay : NULL,
                     .monitor_user = &rl,
                     .interrupt = o ? o->interrupt : NULL};

@@ -16,6 +16,7 @@
 #include "core/study/runner.h"
 #include "core/study/study.h"
 #include "core/cli/cli.h"
+#include "core/util/version.h"
 #include "core/cli/progress.h"
 #include "core/models/run.h"
 #include "core/plugin/closure_ini.h"
@@ -39,7 +40,7 @@ static const char bench_usage[] =
     "A failed, crashed or timed-out run is recorded and the study goes on. One line\n"
     "per run on stderr. Ctrl-C stops after the current run and writes what is done.\n"
     "Exit status: 0 every run measured, 1 one or more runs failed (see the CSV),\n"
-    "2 bad usage or a bad study file. The file format: README, \"Benchmark studies\".";
+    "2 bad usage or a bad study file. The file format: docs/benchmarks.md.";
 
 static volatile sig_atomic_t interrupted;
 static void on_sigint(int sig) {
@@ -200,7 +201,7 @@ static int run_one(const char *path, const char *v_text, const char *p_text, con
     code = rc == SL_EBADINPUT ? 2 : 1;
   } else {
     void (*old)(int) = signal(SIGINT, on_sigint);
-    sl_bench_run_opts o = {.scene_path = s->scene, .output = out, .sluice_version = SLUICE_VERSION,
+    sl_bench_run_opts o = {.scene_path = s->scene, .output = out, .sluice_version = sl_version(),
                            .interrupt = &interrupted, .summary = log_summary};
     code = sl_bench_run_here(ini, reg, &o, SL_BENCH_RESULT_FD);
     signal(SIGINT, old);

@@ -85,7 +85,7 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
   if (rc) return rc;
   sl_progress prog;
   sl_progress_begin(&prog, stderr, t0, t1);
-  sluice_run_opts o = {.scene_path = scene, .output = out_file, .restart = restart, .version = SLUICE_VERSION,
+  sluice_run_opts o = {.scene_path = scene, .output = out_file, .restart = restart,
                        .progress = monitor, .progress_user = &prog, .interrupt = &interrupted};
   sluice_summary m;
   double w0 = sl_wall_seconds(), c0 = sl_cpu_seconds();

@@ -3,6 +3,7 @@
 #include <sluice/closure.h>
 
 #include "core/cli/cli.h"
+#include "core/util/version.h"
 #include "core/plugin/registry.h"
 
 int sl_cmd_version(int argc, char **argv) {
@@ -11,7 +12,7 @@ int sl_cmd_version(int argc, char **argv) {
     return 0;
   }
   if (argc > 0) return sl_cli_error(2, "version takes no arguments");
-  printf("sluice %s\nclosure ABI %u.%u\nplugin folder %s\n", SLUICE_VERSION, SL_CLOSURE_ABI_MAJOR,
+  printf("sluice %s\nclosure ABI %u.%u\nplugin folder %s\n", sl_version(), SL_CLOSURE_ABI_MAJOR,
          SL_CLOSURE_ABI_MINOR, sl_registry_default_dir());
   return 0;
 }

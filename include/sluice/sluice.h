@@ -40,6 +40,9 @@ typedef struct sluice_error {
 
 typedef struct sluice sluice; /* an opened scene */
 
+/* This library's version: "0.1.0", with "+g<commit>" when built from git. */
+const char *sluice_version(void);
+
 typedef struct sluice_open_opts {
   const char *const *sets; /* "section.key=value" overrides, NULL-terminated (NULL: none) */
   /* Closure libraries: every one on the search path is loaded (scan_all), or only those that hold the closures

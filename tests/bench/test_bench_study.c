@@ -249,7 +249,7 @@ static void failing_run(void) {
 /* Two drag laws on the fluidised bed: a closure comparison. The scene's
  * drag section holds richardson_zaki_consistent's parameters; the study's
  * model change drops them. wen_yu's equilibrium porosity at U = 10 mm/s is
- * 0.6815 (README, two-fluid scenes: bisection on the published law). */
+ * 0.6815 (docs/verification.md, two-fluid scenes: bisection on the published law). */
 static void drag_comparison(void) {
   char text[8192];
   snprintf(text, sizeof text,

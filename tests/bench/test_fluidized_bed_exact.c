@@ -10,7 +10,7 @@
  *    the plugin: the same closed form with u_t =
  *    (rho_s - rho_f) g d^2 / (18 mu) = 78.4 mm/s for the scene's sand and
  *    water, at three U; Wen-Yu's and Di Felice's porosities at U = 10 mm/s
- *    as the two-fluid scene tests find them from the published laws (README,
+ *    as the two-fluid scene tests find them from the published laws (docs/verification.md,
  *    two-fluid scenes: 0.6815 and 0.6758);
  *  - the part compared: the cells below the top of the bed at rest that holds
  *    the run's inventory;

@@ -1,0 +1,5 @@
+#include "core/util/version.h"
+
+#include "sluice_version_full.h"
+
+const char *sl_version(void) { return SLUICE_VERSION_FULL; }
