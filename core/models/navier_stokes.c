@@ -151,7 +151,7 @@ static int viscosity_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *
 static int force_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
   const physics *ph = user;
   (void)d;
-  const double *phi = ph->cpl ? ph->cpl->cell_phi(ph->cpl->user) : NULL;
+  const double *phi = ph->cpl ? ph->cpl->buoyant_phi ? ph->cpl->buoyant_phi : ph->cpl->cell_phi(ph->cpl->user) : NULL;
   for (int q = 0; q < b->n; ++q) {
     double rho = phi ? phi[b->cell[q]] * (ph->cpl->rho_solid - ph->density) : ph->density;
     for (int c = 0; c < ph->n_comp; ++c) out[q * ph->n_comp + c] = rho * ph->gravity[c] + ph->body_force[c];
@@ -502,6 +502,12 @@ static int write_state(ns_run *r, double t, const double *u, sl_diag *d) {
      * the other nodes the average of their cell's vertices (exact for the
      * linear pressure on edge midpoints and the Q1 cell centre). */
     const double *p = u + th->p_offset;
+    const double *shift = r->cpl ? r->cpl->pressure_shift : NULL;
+    if (shift) { /* the pressure of what the coupled model kept out of the load */
+      double *ps = r->work + th->vel->n_nodes;
+      for (int32_t i = 0; i < th->pres->n_dofs; ++i) ps[i] = p[i] + shift[i];
+      p = ps;
+    }
     double mean = 0.0, area = 0.0;
     if (r->datum && sl_fe_integrate(th->pres, p, r->ph.axisymmetric, &mean, &area, NULL) == 0 && area > 0.0)
       mean /= area;
@@ -849,6 +855,7 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     r->prob.opts.history = hist;
     if (r->bcs.time_dependent && (rc = bc_apply(&r->bcs, r->th, &r->prob.bc, b.t + hh, r->datum, d))) break;
     memcpy(trial, pred, (size_t)n * sizeof *trial);
+    if (r->cpl && r->cpl->prepare && (rc = r->cpl->prepare(r->cpl->user, hh, d))) break;
     sl_diag dn;
     int its = 0, nrc = solve(r, trial, &its, &dn);
     double err = 0.0;
@@ -997,6 +1004,7 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
     free(open);
     if (rc) goto out;
     r.prob.opts.extra_stress = r.cpl->extra_stress; /* allocated by the set-up */
+    r.prob.opts.cell_drag = r.cpl->cell_drag;
   }
   r.datum = !r.bcs.has_natural;
   for (int i = 0; i < r.bcs.n; ++i)

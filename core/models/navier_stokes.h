@@ -56,6 +56,15 @@ typedef struct sl_ns_coupling {
    * in the pressure space (sl_flow_opts extra_stress); set by setup and
    * kept current by the coupling through the run; NULL: none. */
   const double *extra_stress;
+  /* A momentum sink of the coupled model per cell (sl_flow_opts cell_drag), set by setup; before each attempt of a
+   * step over dt the flow calls prepare (may be NULL), which brings it up to date. NULL: none. */
+  const double *cell_drag;
+  int (*prepare)(void *user, double dt, sl_diag *d);
+  /* The cell values whose buoyancy the flow takes in place of cell_phi's (the part of phi the pressure does not
+   * carry, core/assembly/hydrostatic.h), and the pressure that part left out carries, per pressure dof, added to
+   * the pressure written; set by setup, kept current by the coupling; NULL: cell_phi, none. */
+  const double *buoyant_phi;
+  const double *pressure_shift;
   /* Into a trial state, from the converged velocity u at t + dt and the
    * integrator's time derivative dudt of it (both combined numbering). */
   int (*advance)(void *user, double t, double dt, const double *u, const double *dudt, sl_diag *d);
