@@ -68,6 +68,9 @@ static void print_profile(FILE *f, const sl_ns_result *res, const sl_registry *r
                "skipped (matrix unchanged); %ld solves (%.3g s)\n",
             p, ls->n_symbolic, ls->t_symbolic, ls->n_numeric, ls->t_numeric, ls->n_refactor, ls->n_numeric_skipped,
             ls->n_solves, ls->t_solve);
+  if (res->solves_skipped > 0)
+    fprintf(f, "%s %ld flow solve%s skipped (the flow known: at rest in a closed column, or at a fixed point)\n", p,
+            res->solves_skipped, res->solves_skipped == 1 ? "" : "s");
   if (res->roundoff_accepted > 0)
     fprintf(f, "%s %ld nonlinear solve%s ended with the residual at round-off\n", p, res->roundoff_accepted,
             res->roundoff_accepted == 1 ? "" : "s");

@@ -105,6 +105,7 @@ typedef struct mixture {
   sl_hydrostatic *hs;           /* the layers whose hydrostatic part of the buoyancy the pressure carries, or NULL */
   double *buoy_phi, *p_hydro;   /* [n_cells] phi less that part, [pressure dofs] its pressure */
   int periodic_along_g;         /* a periodic pair repeats along gravity */
+  int unchanged;                /* the last accepted step left phi bitwise as it was */
   sl_transport_opts topts;
   sl_transport *tr;
   sl_face_flux *ff;
@@ -700,8 +701,11 @@ static int advance(void *user, double t, double dt, const double *u, const doubl
   return x->relative_flux_stress ? stress_of(x, x->trial, d) : 0;
 }
 
+static int unchanged(void *user) { return ((const mixture *)user)->unchanged; }
+
 static void accept(void *user) {
   mixture *x = user;
+  x->unchanged = memcmp(x->phi, x->trial, (size_t)x->m->n_cells * sizeof *x->phi) == 0;
   memcpy(x->phi, x->trial, (size_t)x->m->n_cells * sizeof *x->phi);
   memcpy(x->q_acc, x->q, (size_t)x->m->n_faces * sizeof *x->q_acc);
   x->inflow += x->trial_inflow;
@@ -813,6 +817,7 @@ int sl_mixture_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o,
   x.cpl.user = &x;
   x.cpl.field_names = field_names, x.cpl.n_fields = (int)(sizeof field_names / sizeof field_names[0]);
   x.cpl.setup = setup, x.cpl.cell_phi = cell_phi, x.cpl.advance = advance, x.cpl.accept = accept;
+  x.cpl.unchanged = unchanged;
   x.cpl.write = write, x.cpl.checkpoint = checkpoint, x.cpl.restore = restore, x.cpl.provenance = provenance;
   if ((rc = sl_ini_get_bool(ini, "mixture", "relative_flux_stress", 0, 0, &x.relative_flux_stress, d))) return rc;
   sl_ns_run_opts oo = *o;

@@ -65,6 +65,9 @@ typedef struct sl_ns_coupling {
    * the pressure written; set by setup, kept current by the coupling; NULL: cell_phi, none. */
   const double *buoyant_phi;
   const double *pressure_shift;
+  /* Whether the last accepted step left what the flow reads of the coupled model (phi) bitwise as it was; the
+   * flow then reuses a solve that was at a fixed point (may be NULL: always solve). */
+  int (*unchanged)(void *user);
   /* Into a trial state, from the converged velocity u at t + dt and the
    * integrator's time derivative dudt of it (both combined numbering). */
   int (*advance)(void *user, double t, double dt, const double *u, const double *dudt, sl_diag *d);
@@ -106,6 +109,8 @@ typedef struct sl_ns_result {
   double correction;         /* steady: its last relative Newton correction */
   double residual0, residual; /* steady: |b|_2 at the start and at the end of that solve */
   long roundoff_accepted;    /* solves accepted with their residual at round-off (see navier_stokes.c) */
+  long solves_skipped;       /* steps whose flow was known without a solve (a closed column at rest, a flow at a
+                                fixed point whose coupled phi did not change) */
   char stop_reason[256];     /* why the run ended, one line ("" when it failed: the error says why) */
   /* CPU seconds: set-up (mesh, spaces, closures, output file), the flow's
    * solves, the coupled model's steps (the mixture's transport), output */
