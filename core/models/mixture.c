@@ -106,6 +106,7 @@ typedef struct mixture {
   double *buoy_phi, *p_hydro;   /* [n_cells] phi less that part, [pressure dofs] its pressure */
   int periodic_along_g;         /* a periodic pair repeats along gravity */
   int unchanged;                /* the last accepted step left phi bitwise as it was */
+  int no_load;                  /* the remainder of the hydrostatic split is at round-off: the flow is not loaded */
   sl_transport_opts topts;
   sl_transport *tr;
   sl_face_flux *ff;
@@ -284,7 +285,13 @@ static void hydrostatic_update(mixture *x) {
   sl_hydrostatic_pressure(x->hs, pm->n_dofs, pm->xy, x->p_hydro);
   double drho = x->cpl.rho_solid - x->rho_f;
   for (int32_t i = 0; i < pm->n_dofs; ++i) x->p_hydro[i] *= drho;
+  /* a remainder within 1e-12 of the largest phi drives nothing beyond round-off */
+  double rmax = 0.0, pmax = 0.0;
+  for (int c = 0; c < x->m->n_cells; ++c) rmax = fmax(rmax, fabs(x->buoy_phi[c])), pmax = fmax(pmax, x->phi[c]);
+  x->no_load = !x->relative_flux_stress && rmax <= 1e-12 * pmax;
 }
+
+static int at_rest(void *user) { return ((const mixture *)user)->no_load; }
 
 /* The hydrostatic split where dropping the layers' buoyancy moves nothing:
  * a layered mesh, walls and periodic pairs across gravity only (an open
@@ -817,7 +824,7 @@ int sl_mixture_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o,
   x.cpl.user = &x;
   x.cpl.field_names = field_names, x.cpl.n_fields = (int)(sizeof field_names / sizeof field_names[0]);
   x.cpl.setup = setup, x.cpl.cell_phi = cell_phi, x.cpl.advance = advance, x.cpl.accept = accept;
-  x.cpl.unchanged = unchanged;
+  x.cpl.unchanged = unchanged, x.cpl.at_rest = at_rest;
   x.cpl.write = write, x.cpl.checkpoint = checkpoint, x.cpl.restore = restore, x.cpl.provenance = provenance;
   if ((rc = sl_ini_get_bool(ini, "mixture", "relative_flux_stress", 0, 0, &x.relative_flux_stress, d))) return rc;
   sl_ns_run_opts oo = *o;

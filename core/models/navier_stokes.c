@@ -484,6 +484,7 @@ typedef struct ns_run {
    * the run, and whether a solve has already ended there. */
   double newton_scale[2];
   int column_at_rest; /* a 1-D column between walls: div j = 0 makes j = 0 whatever the load */
+  int unforced;       /* walls at rest all round, no body force, no rotation: only the coupled model loads it */
   int fixed_point;    /* the last solve returned its start and the coupled phi has not changed since */
 } ns_run;
 
@@ -863,7 +864,14 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
        velocity is exactly 0); a flow at a fixed point whose phi has not changed gives itself again. */
     int writes = tc->every > 0 ? b.t + hh >= next_out * tc->every - eps_t : 0;
     writes |= b.t + hh >= tc->end - eps_t || steps_here + 1 >= tc->max_steps;
-    if ((r->column_at_rest && !(writes && (r->fields & F_PRESSURE))) || (r->fixed_point && !r->bcs.time_dependent)) {
+    int known = !o->solve_every_step;
+    int rest = known && r->unforced && r->cpl && r->cpl->at_rest && r->cpl->at_rest(r->cpl->user);
+    for (int32_t i = 0; i < r->th->p_offset && rest; ++i) rest = b.past[0][i] == 0.0;
+    if (rest) { /* at rest under no load: zero velocity and (reduced) pressure */
+      memset(trial, 0, (size_t)n * sizeof *trial);
+      r->res->solves_skipped++;
+    } else if (known && ((r->column_at_rest && !(writes && (r->fields & F_PRESSURE))) ||
+                         (r->fixed_point && !r->bcs.time_dependent))) {
       memcpy(trial, b.past[0], (size_t)n * sizeof *trial);
       r->res->solves_skipped++;
     } else {
@@ -1023,7 +1031,13 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
   }
   r.datum = !r.bcs.has_natural;
   r.column_at_rest = dim == 1 && r.th->n_comp == 1 && r.bcs.n > 0;
-  for (int i = 0; i < r.bcs.n; ++i) r.column_at_rest &= r.bcs.b[i].type == BC_WALL;
+  r.unforced = omega == 0.0;
+  for (int c = 0; c < MAX_COMP; ++c) r.unforced &= r.ph.body_force[c] == 0.0;
+  for (int i = 0; i < r.bcs.n; ++i) {
+    bc_type ty = r.bcs.b[i].type;
+    r.column_at_rest &= ty == BC_WALL;
+    r.unforced &= ty == BC_WALL || ty == BC_SLIP || ty == BC_AXIS || ty == BC_PERIODIC;
+  }
   for (int i = 0; i < r.bcs.n; ++i)
     if (r.bcs.b[i].type == BC_PRESSURE || r.bcs.b[i].type == BC_TRACTION) {
       if (r.prob.n_tractions == SL_FLOW_MAX_TRACTIONS) break;

@@ -68,6 +68,10 @@ typedef struct sl_ns_coupling {
   /* Whether the last accepted step left what the flow reads of the coupled model (phi) bitwise as it was; the
    * flow then reuses a solve that was at a fixed point (may be NULL: always solve). */
   int (*unchanged)(void *user);
+  /* Whether the coupled model loads the flow with nothing (its buoyancy all carried by the pressure, to 1e-12 of
+   * its scale, and no stress of its own): a flow at rest between walls at rest then stays at rest and is not solved
+   * (may be NULL: never). */
+  int (*at_rest)(void *user);
   /* Into a trial state, from the converged velocity u at t + dt and the
    * integrator's time derivative dudt of it (both combined numbering). */
   int (*advance)(void *user, double t, double dt, const double *u, const double *dudt, sl_diag *d);
@@ -88,6 +92,7 @@ typedef struct sl_ns_run_opts {
   void *monitor_user;
   volatile sig_atomic_t *interrupt; /* set asynchronously (Ctrl-C): stop after the step, save */
   const sl_ns_coupling *coupling;   /* NULL: single-phase flow */
+  int solve_every_step;             /* solve the flow even where its result is known (verification) */
 } sl_ns_run_opts;
 
 typedef struct sl_ns_result {
@@ -109,8 +114,8 @@ typedef struct sl_ns_result {
   double correction;         /* steady: its last relative Newton correction */
   double residual0, residual; /* steady: |b|_2 at the start and at the end of that solve */
   long roundoff_accepted;    /* solves accepted with their residual at round-off (see navier_stokes.c) */
-  long solves_skipped;       /* steps whose flow was known without a solve (a closed column at rest, a flow at a
-                                fixed point whose coupled phi did not change) */
+  long solves_skipped;       /* steps whose flow was known without a solve (a closed column at rest, a vessel at
+                                rest under no load, a flow at a fixed point whose coupled phi did not change) */
   char stop_reason[256];     /* why the run ended, one line ("" when it failed: the error says why) */
   /* CPU seconds: set-up (mesh, spaces, closures, output file), the flow's
    * solves, the coupled model's steps (the mixture's transport), output */

@@ -30,15 +30,18 @@ typedef struct box_scene {
   const char *mesh_extra; /* more [mesh] lines ("cell_type = tri", a grading), or NULL */
   double rho_s;           /* particle density (996 kg m^-3 water) */
   const char *phi;        /* [initial] phi, NULL: phi0 */
-  int settling;           /* 0: no [closure.hindered_settling] */
+  int settling;           /* 0: no [closure.hindered_settling]; 2: the step cut-off at phi_max */
+  double a, phi_max;      /* the law's a and phi_max; 0: box_a, box_phi_max */
   double end, dt, every;
   int convection;         /* [flow] convection = true, with adaptive BDF2 steps (else Stokes flow, fixed BDF1) */
+  int solve_every_step;   /* solve the flow even where its result is known (sl_ns_run_opts) */
   const char *extra;      /* more sections at the end, or NULL */
 } box_scene;
 
 /* The scene's INI text into buf. */
 static inline void box_text(const box_scene *s, char *buf, size_t len) {
   char mesh[512], phi[256], closure[512];
+  double a = s->a > 0.0 ? s->a : box_a, phi_max = s->phi_max > 0.0 ? s->phi_max : box_phi_max;
   if (s->line)
     snprintf(mesh, sizeof mesh, "generator = interval\nx = 0, %g\ncells = %d\n", box_H, s->n);
   else
@@ -46,9 +49,9 @@ static inline void box_text(const box_scene *s, char *buf, size_t len) {
              BOX_NX, s->n, s->mesh_extra ? s->mesh_extra : "");
   snprintf(phi, sizeof phi, "%s", s->phi ? s->phi : "0.1");
   snprintf(closure, sizeof closure,
-           "[closure.hindered_settling]\nmodel = vesilind\na = %g\npacking_cutoff = smooth\nphi_max = %g\n"
+           "[closure.hindered_settling]\nmodel = vesilind\na = %g\npacking_cutoff = %s\nphi_max = %g\n"
            "terminal_velocity = given\nu_t = %.17g\n",
-           box_a, box_phi_max, box_ut);
+           a, s->settling == 2 ? "step" : "smooth", phi_max, box_ut);
   snprintf(buf, len,
            "[scene]\nmodel = mixture\ngeometry = %s\n[mesh]\n%s"
            "[fluid]\ndensity = 996\nviscosity = 1e-3\n[solid]\ndensity = %.17g\ndiameter = 1e-4\nphi_max = %g\n%s"
@@ -56,7 +59,7 @@ static inline void box_text(const box_scene *s, char *buf, size_t len) {
            "[boundary.left]\ntype = wall\n[boundary.right]\ntype = wall\n%s"
            "[transport]\norder = 2\n"
            "[time]\nscheme = %s\nend = %.17g\ndt = %.17g\nadaptive = %s\n[output]\nevery = %.17g\n%s",
-           s->line ? "line" : "planar", mesh, s->rho_s, box_phi_max, s->settling ? closure : "",
+           s->line ? "line" : "planar", mesh, s->rho_s, phi_max, s->settling ? closure : "",
            s->line ? "-9.81" : "0, -9.81", s->convection ? "true" : "false", phi,
            s->line ? "" : "[boundary.bottom]\ntype = wall\n[boundary.top]\ntype = wall\n",
            s->convection ? "bdf2" : "bdf1", s->end, s->dt, s->convection ? "true" : "false", s->every,
@@ -70,7 +73,8 @@ static inline int box_run(const box_scene *s, const char *out, sl_ns_result *res
   sl_ini *ini = NULL;
   sl_registry *reg = NULL;
   sl_ns_result r;
-  sl_ns_run_opts o = {.scene_path = "box.ini", .output = out, .sluice_version = "test"};
+  sl_ns_run_opts o = {.scene_path = "box.ini", .output = out, .sluice_version = "test",
+                      .solve_every_step = s->solve_every_step};
   int rc = sl_ini_parse_string(text, strlen(text), "box.ini", &ini, d);
   if (!rc) rc = sl_scene_validate(ini, d);
   if (!rc) rc = sl_registry_create(&reg, NULL, 0, d);
@@ -81,9 +85,9 @@ static inline int box_run(const box_scene *s, const char *out, sl_ns_result *res
   return rc;
 }
 
-/* The law's exact solution. */
-static inline int box_exact(kynch *k) {
-  return kx_init(k, kx_vesilind(box_ut, box_a, box_phi_max, 0), box_H, box_phi0);
+/* The law's exact solution (step: the step cut-off). */
+static inline int box_exact(kynch *k, int step) {
+  return kx_init(k, kx_vesilind(box_ut, box_a, box_phi_max, step), box_H, box_phi0);
 }
 
 /* The L1 error of phi at output time t, per unit width: sum over cells of

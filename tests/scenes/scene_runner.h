@@ -22,6 +22,7 @@ typedef struct scene_request {
   const char *const *sets; /* section.key=value overrides, NULL-terminated (may be NULL) */
   const char *out;         /* output file */
   const char *restart;     /* checkpoint to continue from (NULL: start) */
+  int solve_every_step;    /* solve the flow even where its result is known */
 } scene_request;
 
 static inline int scene_run(const scene_request *q, scene_model_run run, sl_ns_result *res, sl_diag *d) {
@@ -50,7 +51,8 @@ static inline int scene_run(const scene_request *q, scene_model_run run, sl_ns_r
   if (!rc) rc = sl_registry_create(&reg, NULL, 0, d);
   if (!rc) rc = sl_registry_scan(reg, d);
   sl_ns_result r;
-  sl_ns_run_opts o = {.scene_path = path, .output = q->out, .restart = q->restart, .sluice_version = "test"};
+  sl_ns_run_opts o = {.scene_path = path, .output = q->out, .restart = q->restart, .sluice_version = "test",
+                      .solve_every_step = q->solve_every_step};
   if (!rc) rc = run(ini, reg, &o, res ? res : &r, d);
   sl_registry_destroy(reg);
   sl_ini_free(ini);
