@@ -3,11 +3,11 @@
  *
  *  - Hydrostatic suspensions (no settling closure): uniform phi, a stable
  *    linear stratification and a step, in the upright box 0.1 m x 1 m (4 x
- *    20 cells: quadrilaterals, "/" triangles, quadrilaterals and triangles
+ *    20 cells, 4 x 8 in the sanitizer build: quadrilaterals, "/" triangles, quadrilaterals and triangles
  *    graded towards the walls, lid and floor; dt = 10 s, where the internal
  *    waves' N dt reaches 9) and in the Boycott vessel (configs/boycott.ini,
- *    45-degree walls, its wall grading, 12 x 16 cells, quadrilaterals and "/"
- *    triangles; dt = 0.01, N dt up to 3): max |j| over 100 steps below 1e-12
+ *    45-degree walls, its wall grading, 12 x 16 cells (6 x 8), quadrilaterals and "/"
+ *    triangles; dt = 0.01, N dt up to 3): max |j| at every tenth of 100 steps below 1e-12
  *    of the settling speed scale (2.198 mm/s in the box, u_t = 1 in the
  *    vessel), every step solved (sl_ns_run_opts solve_every_step); as a run
  *    goes, all 100 solves are skipped (at rest under no load) and j = 0.
@@ -16,7 +16,7 @@
  *    1e-3 with the linear stratification.
  *  - The upright box settling (tests/scenes/mixture_box.h: Vesilind's law,
  *    phi0 = 0.1, exact Kynch solution with j = 0) on 4 x 50, 100, 200 cells
- *    against the 1-D column of 50, 100, 200 cells at t = 570 s: the L1
+ *    (25, 50) against the 1-D column of as many at t = 570 s: the L1
  *    error of phi within 20 % of the column's on every mesh and falling at
  *    its rate (within 0.1), max |j| below 1e-12 of the settling speed, every
  *    step solved; the run that skips the known solves ends at the same L1
@@ -33,6 +33,7 @@
 #include "testing.h"
 
 static char configs[4096];
+static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): smaller meshes, the same checks */
 
 /* The largest |j| of a run over all its outputs. */
 static double worst_speed(const char *out) {
@@ -53,8 +54,8 @@ static void hydrostatic_box(void) {
   for (int m = 0; m < 4; ++m)
     for (int k = 0; k < 3; ++k) {
       /* every step solved: the discretisation itself; then as a run does it, skipping what is known */
-      box_scene s = {.n = 20, .mesh_extra = meshes[m][1], .rho_s = 1006.0, .phi = strata[k][1], .settling = 0,
-                     .end = 1000.0, .dt = 10.0, .every = 10.0, .solve_every_step = 1};
+      box_scene s = {.n = quick ? 8 : 20, .mesh_extra = meshes[m][1], .rho_s = 1006.0, .phi = strata[k][1], .settling = 0,
+                     .end = 1000.0, .dt = 10.0, .every = 100.0, .solve_every_step = 1};
       sl_diag d = {{0}};
       sl_ns_result res, skip;
       int rc = box_run(&s, "balance_box.h5", &res, &d);
@@ -82,8 +83,8 @@ static void hydrostatic_boycott(void) {
       char phi[128];
       snprintf(phi, sizeof phi, "initial.phi=%s", strata[k][1]);
       /* quadrilaterals: the list ends at meshes[m][1] == NULL */
-      const char *sets[] = {"mesh.cells=12,16", "time.scheme=bdf1", "time.adaptive=false", "time.dt=0.01",
-                            "time.end=1", "output.every=0.01", phi, meshes[m][1], "mesh.diagonal=right", NULL};
+      const char *sets[] = {quick ? "mesh.cells=6,8" : "mesh.cells=12,16", "time.scheme=bdf1", "time.adaptive=false", "time.dt=0.01",
+                            "time.end=1", "output.every=0.1", phi, meshes[m][1], "mesh.diagonal=right", NULL};
       scene_request q = {.configs = configs, .scene = "boycott", .replace_section = "closure.hindered_settling",
                          .replacement = "", .sets = sets, .out = "balance_boycott.h5", .solve_every_step = 1};
       sl_diag d = {{0}};
@@ -113,9 +114,10 @@ static void settling_box(void) {
     return;
   }
   double e2[3], e1[3], v, v1;
-  for (int j = 0; j < 3; ++j) {
-    int n = 50 << j;
-    box_scene s = {.n = n, .rho_s = 1006.0, .settling = 1, .end = 570.0, .dt = 10.0, .every = 10.0,
+  int nj = quick ? 2 : 3, n0 = quick ? 25 : 50;
+  for (int j = 0; j < nj; ++j) {
+    int n = n0 << j;
+    box_scene s = {.n = n, .rho_s = 1006.0, .settling = 1, .end = 570.0, .dt = 10.0, .every = 190.0,
                    .solve_every_step = 1};
     e2[j] = settle(s, "balance_settle_2d.h5", &k, &v);
     CHECK_MSG(v <= 1e-12 * box_ut, "4 x %d: |j| = %.3g m/s", n, v);
@@ -130,12 +132,12 @@ static void settling_box(void) {
               e_skip);
     CHECK_MSG(fabs(e2[j] / e1[j] - 1.0) <= 0.2, "4 x %d: L1 %.4g, the column's %.4g", n, e2[j], e1[j]);
   }
-  double r2 = log(e2[0] / e2[2]) / log(4.0), r1 = log(e1[0] / e1[2]) / log(4.0);
-  printf("  settling box: L1 rate %.3f over 50 .. 200 vertical cells, the column's %.3f\n", r2, r1);
+  double span = (nj - 1) * log(2.0), r2 = log(e2[0] / e2[nj - 1]) / span, r1 = log(e1[0] / e1[nj - 1]) / span;
+  printf("  settling box: L1 rate %.3f over %d .. %d vertical cells, the column's %.3f\n", r2, n0, n0 << (nj - 1), r1);
   CHECK_MSG(fabs(r2 - r1) <= 0.1 && r1 > 0.6, "L1 rates: box %.3g, column %.3g", r2, r1);
   /* density contrast 1: Stokes flow with fixed steps, and convection with adaptive BDF2 */
   for (int c = 0; c < 2; ++c) {
-    box_scene s = {.n = 50, .rho_s = 2000.0, .settling = 1, .end = 570.0, .dt = 10.0, .every = 10.0, .convection = c,
+    box_scene s = {.n = n0, .rho_s = 2000.0, .settling = 1, .end = 570.0, .dt = 10.0, .every = 190.0, .convection = c,
                    .solve_every_step = 1};
     sl_diag d = {{0}};
     sl_ns_result res;
@@ -153,6 +155,7 @@ static void settling_box(void) {
 
 int main(void) {
   const char *src = getenv("SLUICE_SOURCE_DIR");
+  quick = getenv("SLUICE_SKIP_LONG") != NULL;
   snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
   hydrostatic_box();
   hydrostatic_boycott();
