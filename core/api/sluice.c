@@ -165,6 +165,7 @@ static void summarise(const sl_run_result *res, sluice_summary *sum) {
   sum->used_picard = m->used_picard, sum->converged = m->converged;
   sum->correction = m->correction, sum->residual0 = m->residual0, sum->residual = m->residual;
   sum->roundoff_accepted = m->roundoff_accepted;
+  sum->solves_skipped = m->solves_skipped;
   const sl_linsolve_stats *ls = &m->linear;
   sum->linear = (sluice_linear){ls->n_symbolic, ls->n_numeric, ls->n_refactor, ls->n_refactor_redo,
                                 ls->n_numeric_skipped, ls->n_solves, ls->t_symbolic, ls->t_numeric, ls->t_solve};

@@ -167,6 +167,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
   memset(w->be, 0, (size_t)n * sizeof *w->be);
   /* Coriolis 2 Omega x u = C u in the frame (Omega along e_2 planar, along the axis e_1 = z axisymmetric). */
   double C[3][3] = {{0}};
+  const double *K = o->cell_drag ? o->cell_drag + 4 * (size_t)c : NULL;
   if (o->omega != 0.0) {
     if (axi) C[0][2] = -2.0 * o->omega, C[2][0] = 2.0 * o->omega;
     else C[0][1] = -2.0 * o->omega, C[1][0] = 2.0 * o->omega;
@@ -218,6 +219,9 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       for (int B = 0; B < 3; ++B) conv += s->G[A][B] * s->u[B], cor += C[A][B] * s->u[B];
       m[A] = rq * (o->mass_coef * s->u[A] + hist[A] + (o->convection ? conv : 0.0) + cor) - f[A];
     }
+    if (K) /* the cell's momentum sink K u (in-plane axes) */
+      for (int A = 0; A < dim; ++A)
+        for (int B = 0; B < dim; ++B) m[A] += K[2 * A + B] * s->u[B];
     /* The basis vectors of this point. */
     for (int a = 0; a < nc; ++a)
       for (int i = 0; i < nb; ++i) {
@@ -262,6 +266,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
         val *= wq;
         /* rho (mass + C + convection) tested with phi_i in direction A_i */
         double lin_v = (vi->A == vj->A ? rm : 0.0) + rq * C[vi->A][vj->A];
+        if (K && vi->A < dim && vj->A < dim) lin_v += K[2 * vi->A + vj->A];
         val += wphi * lin_v * vj->phi;
         row[kj] += val;
       }

@@ -62,6 +62,11 @@ typedef struct sl_flow_opts {
    * (axisymmetric: r, z, theta). There the pressure can balance it exactly: a T = -p I + const of that space
    * leaves the velocity at rest. NULL: none. */
   const double *extra_stress;
+  /* A linear momentum sink per cell: the momentum gains + K u (a force -K u), K constant in each cell, its 2 x 2
+   * in-plane entries K_00, K_01, K_10, K_11 (kg m^-3 s^-1, the frame axes e_0, e_1; a 1-D mesh reads K_00 only),
+   * assembled into the matrix and the residual; not symmetric in general. The mixture model's buoyancy over the
+   * step comes so (its linearised change with the velocity that transports phi). NULL: none. */
+  const double *cell_drag;
   double mass_coef;      /* 0: steady */
   const double *history; /* combined numbering (velocity part read); NULL: zero */
   int quad_degree;       /* 0: 5 planar (exact for the Q2 convective term on affine cells), 7 axisymmetric */

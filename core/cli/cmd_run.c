@@ -59,6 +59,9 @@ static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, do
                "skipped (matrix unchanged); %ld solves (%.3g s)\n",
             p, ls->n_symbolic, ls->t_symbolic, ls->n_numeric, ls->t_numeric, ls->n_refactor, ls->n_numeric_skipped,
             ls->n_solves, ls->t_solve);
+  if (m->solves_skipped > 0)
+    fprintf(f, "%s %ld flow solve%s skipped (the flow known: at rest, or at a fixed point)\n", p, m->solves_skipped,
+            m->solves_skipped == 1 ? "" : "s");
   if (m->roundoff_accepted > 0)
     fprintf(f, "%s %ld nonlinear solve%s ended with the residual at round-off\n", p, m->roundoff_accepted,
             m->roundoff_accepted == 1 ? "" : "s");

@@ -40,6 +40,7 @@ typedef struct sl_solver_config {
   const char *continuation; /* "section.key", "" for none */
   double continuation_from;
   long continuation_steps;
+  int skip_known; /* skip the solves whose result is known (a flow at rest, at a fixed point) */
 } sl_solver_config;
 
 /* [output] */

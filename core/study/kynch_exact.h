@@ -1,11 +1,14 @@
 /* The exact entropy solution of 1-D batch settling (Kynch 1952) in a closed
  * column 0 <= z <= H (z up), phi(z, 0) = phi0:
  *
- *   phi_t - (F(phi))_z = 0,   F(phi) = u_t phi (1 - phi)^p (1 - phi/c)^m,   F(0) = F(c) = 0,
+ *   phi_t - (F(phi))_z = 0,   F(phi) = u_t phi (1 - phi)^p (1 - phi/c)^m exp(-k phi),   F(0) = F(c) = 0,
  *
  * which covers Richardson & Zaki (1954) with a packing cut-off (p = n, m = 1,
- * c = phi_max) and Nigam (1999) eqs 2.20/2.36 (p = 2, m = K alpha_m, c =
- * alpha_m). F is concave then convex (one inflection point, checked).
+ * c = phi_max), Nigam (1999) eqs 2.20/2.36 (p = 2, m = K alpha_m, c =
+ * alpha_m) and Vesilind (1968), 10^(-a phi) = exp(-a ln(10) phi), with its
+ * smooth cut-off (p = 0, m = 1) or a step one (m = 0 and F(c) = 0 alone:
+ * `step`, a flux that drops to zero at c). F is concave then convex (one
+ * inflection point, checked).
  *
  * Construction (Kynch 1952, Trans. Faraday Soc. 48:166; Bustos, Concha, Bürger
  * & Tory 1999, "Sedimentation and Thickening"): the walls act as the states 0
@@ -19,12 +22,16 @@
  *    contact: it moves with the characteristics of its lower side), then a
  *    rarefaction fan z/t = -F'(phi) for phi from phi* to c, then the sediment
  *    phi = c below z = -F'(c) t. With phi0 past the inflection the bottom is
- *    a fan from phi0.
+ *    a fan from phi0. With a step at c the hull reaches (c, 0) along the
+ *    tangent from it, touching F at phi_e (F'(phi_e) (c - phi_e) + F(phi_e) =
+ *    0): the fan ends at phi_e, over the sediment's contact shock rising at
+ *    -F'(phi_e) (one shock phi0 | c when the tangent from phi0 touches past
+ *    phi_e).
  *  - The fronts meet at t1 = H / (v0 + sigma). After that (fan cases) the
  *    interface 0 | phi descends through the fan: dz/dt = -F(phi)/phi with z =
  *    -F'(phi) t, i.e. d ln t / d phi = F''(phi) / (F(phi)/phi - F'(phi)),
- *    integrated by quadrature, until phi = c at t2 (infinite when F'(c) = 0);
- *    then the sediment phi0 H / c high is at rest.
+ *    integrated by quadrature, until phi = c (phi_e with a step) at t2
+ *    (infinite when F'(c) = 0); then the sediment phi0 H / c high is at rest.
  * Cell averages are exact: over the fan, int phi dz = -t [phi F' - F]. */
 #ifndef SLUICE_VERIFY_KYNCH_EXACT_H
 #define SLUICE_VERIFY_KYNCH_EXACT_H
@@ -36,31 +43,43 @@
 
 typedef struct kx_law {
   double u_t, p, c, m;
+  double k; /* exp(-k phi); 0: none */
+  int step; /* F(c) = 0 by a step (m = 0) */
 } kx_law;
 
 static inline kx_law kx_richardson_zaki(double u_t, double n, double phi_max) {
-  kx_law l = {u_t, n, phi_max, 1.0};
+  kx_law l = {u_t, n, phi_max, 1.0, 0.0, 0};
   return l;
 }
 
 static inline kx_law kx_nigam(double u_t, double K, double alpha_m) {
-  kx_law l = {u_t, 2.0, alpha_m, K * alpha_m};
+  kx_law l = {u_t, 2.0, alpha_m, K * alpha_m, 0.0, 0};
   return l;
 }
 
-/* F = u_t phi A B, A = (1 - phi)^p, B = (1 - phi/c)^m. */
+/* Vesilind (1968): u_t 10^(-a phi), with the smooth cut-off (1 - phi/c) or the step one at c. */
+static inline kx_law kx_vesilind(double u_t, double a, double c, int step) {
+  kx_law l = {u_t, 0.0, c, step ? 0.0 : 1.0, a * 2.302585092994045684, step};
+  return l;
+}
+
+/* F = u_t phi A B, A = (1 - phi)^p, B = (1 - phi/c)^m exp(-k phi) (the smooth
+ * F of a step law below c). */
 static inline void kx_parts(const kx_law *l, double x, double *A, double *A1, double *A2, double *B, double *B1,
                             double *B2) {
   double e = 1 - x, r = 1 - x / l->c;
   if (r < 0) r = 0;
   *A = pow(e, l->p), *A1 = -l->p * pow(e, l->p - 1), *A2 = l->p * (l->p - 1) * pow(e, l->p - 2);
-  *B = pow(r, l->m);
-  *B1 = -l->m / l->c * (l->m == 1 ? 1.0 : pow(r, l->m - 1));
-  *B2 = l->m == 1 ? 0.0 : l->m * (l->m - 1) / (l->c * l->c) * pow(r, l->m - 2);
+  double C = pow(r, l->m);
+  double C1 = l->m == 0 ? 0.0 : -l->m / l->c * (l->m == 1 ? 1.0 : pow(r, l->m - 1));
+  double C2 = l->m == 0 || l->m == 1 ? 0.0 : l->m * (l->m - 1) / (l->c * l->c) * pow(r, l->m - 2);
+  double E = exp(-l->k * x), k = l->k;
+  *B = C * E, *B1 = (C1 - k * C) * E, *B2 = (C2 - 2 * k * C1 + k * k * C) * E;
 }
 
 static inline double kx_F(const kx_law *l, double x) {
   double A, A1, A2, B, B1, B2;
+  if (l->step && x >= l->c) return 0.0;
   kx_parts(l, x, &A, &A1, &A2, &B, &B1, &B2);
   return l->u_t * x * A * B;
 }
@@ -84,8 +103,9 @@ static inline int kx_settling(void *user, int n, const double *phi, double *u, d
   for (int i = 0; i < n; ++i) {
     double A, A1, A2, B, B1, B2;
     kx_parts(l, phi[i], &A, &A1, &A2, &B, &B1, &B2);
-    u[i] = l->u_t * A * B;
-    du[i] = l->u_t * (A1 * B + A * B1);
+    int cut = l->step && phi[i] >= l->c;
+    u[i] = cut ? 0.0 : l->u_t * A * B;
+    du[i] = cut ? 0.0 : l->u_t * (A1 * B + A * B1);
   }
   return 0;
 }
@@ -100,8 +120,9 @@ typedef struct kynch {
   double v0;      /* speed of the top interface (downwards) */
   int bottom;     /* KX_SHOCK, KX_CONTACT or KX_FAN */
   double phis;    /* phi*: upper state of the fan (c for a single shock, phi0 for a fan from phi0) */
+  double phie;    /* the fan's lower end: c, or phi_e with a step (c for a single shock) */
   double sigma;   /* speed of the top of the bottom structure (upwards) */
-  double sed;     /* -F'(c): the top of the phi = c layer rises at this speed (fan cases) */
+  double sed;     /* -F'(phie): the top of the phi = c layer rises at this speed (fan cases) */
   double t1, z1;  /* the fronts meet */
   double t2;      /* the interface reaches the sediment; at rest afterwards (INFINITY: never) */
   double z_final; /* phi0 H / c */
@@ -140,7 +161,7 @@ static inline double kx_interface_rate(const kx_law *l, double x) {
  * within 1e-13 of c, geometric in the distance to c (the integrand grows
  * like 1/(c - phi) when F'(c) = 0), 8-point Gauss-Legendre per panel. */
 static inline void kx_log_time_table(kynch *k) {
-  double c = k->law.c, da = c - k->phis, db = 1e-13 * c;
+  double c = k->phie, da = c - k->phis, db = 1e-13 * k->law.c;
   k->lt_x[0] = k->phis, k->lt_v[0] = 0;
   for (int j = 1; j <= KX_NT; ++j) {
     k->lt_x[j] = c - da * pow(db / da, (double)j / KX_NT);
@@ -181,21 +202,37 @@ static inline int kx_init(kynch *k, kx_law law, double H, double phi0) {
       return -1;
     }
   }
-  k->sed = -kx_dF(l, law.c);
+  /* the fan's lower end: c, or with a step the tangency from (c, 0), where t(x) = F'(x)(c - x) + F(x)
+     increases from t(infl) through 0 (none when t(infl) >= 0: the sediment is reached by one shock) */
+  k->phie = law.c;
+  if (law.step) {
+    k->phie = k->infl;
+    if (kx_dF(l, k->infl) * (law.c - k->infl) + kx_F(l, k->infl) < 0) {
+      a = k->infl, b = law.c;
+      for (int it = 0; it < 200 && b - a > 1e-16; ++it) {
+        double mid = 0.5 * (a + b);
+        if (kx_dF(l, mid) * (law.c - mid) + kx_F(l, mid) < 0) a = mid;
+        else b = mid;
+      }
+      k->phie = 0.5 * (a + b);
+    }
+  }
+  k->sed = -kx_dF(l, k->phie);
   if (k->sed < 1e-14 * law.u_t) k->sed = 0;
-  if (phi0 >= k->infl) {
+  if (phi0 >= k->infl && phi0 < k->phie) {
     k->bottom = KX_FAN, k->phis = phi0, k->sigma = -kx_dF(l, phi0);
     if (!(k->sigma > 0)) {
       fprintf(stderr, "kynch: phi0 = %g: the fan does not rise\n", phi0);
       return -1;
     }
   } else {
-    /* g(x) = F'(x)(x - phi0) - (F(x) - F0) < 0 on the concave part, increasing on the convex one. */
-    double gc = kx_dF(l, law.c) * (law.c - phi0) + F0;
-    if (gc <= 0) {
-      k->bottom = KX_SHOCK, k->phis = law.c, k->sigma = F0 / (law.c - phi0);
+    /* g(x) = F'(x)(x - phi0) - (F(x) - F0) < 0 on the concave part, increasing on the convex one: the tangent
+       from phi0 touches F where g = 0, if before the fan's end; otherwise one shock to c */
+    double ge = kx_dF(l, k->phie) * (k->phie - phi0) - (kx_F(l, k->phie) - F0);
+    if (phi0 >= k->infl || ge <= 0) {
+      k->bottom = KX_SHOCK, k->phis = k->phie = law.c, k->sigma = F0 / (law.c - phi0);
     } else {
-      a = k->infl, b = law.c;
+      a = k->infl, b = k->phie;
       for (int it = 0; it < 200 && b - a > 1e-16; ++it) {
         double mid = 0.5 * (a + b);
         if (kx_dF(l, mid) * (mid - phi0) - (kx_F(l, mid) - F0) < 0) a = mid;
@@ -220,7 +257,7 @@ static inline int kx_init(kynch *k, kx_law law, double H, double phi0) {
  * int_phis^phi rate; the table's panel, then safeguarded Newton in it. */
 static inline double kx_interface_phi(const kynch *k, double t) {
   double target = log(t / k->t1);
-  if (target >= k->lt_v[KX_NT]) return k->law.c;
+  if (target >= k->lt_v[KX_NT]) return k->phie;
   int lo = 0, hi = KX_NT;
   while (hi - lo > 1) {
     int mid = (lo + hi) / 2;

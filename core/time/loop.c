@@ -166,7 +166,10 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
     sl_bdf_step s;
     sl_bdf_prepare(b, hh, &s, hist, pred);
     memcpy(trial, pred, (size_t)n * sizeof *trial);
-    sl_step st = {.t = b->t, .dt = hh, .mass_coef = s.mass_coef, .history = hist, .predictor = pred, .u = trial};
+    int writes = tc->every > 0 ? b->t + hh >= next_out * tc->every - eps_t : 0;
+    writes |= b->t + hh >= tc->end - eps_t || steps_here + 1 >= tc->max_steps;
+    sl_step st = {.t = b->t, .dt = hh, .mass_coef = s.mass_coef, .history = hist, .predictor = pred, .u = trial,
+                  .state = b->past[0], .writes = writes};
     sl_diag dn;
     int its = 0, nrc = ops->step(self, &st, &its, &dn);
     res->nonlinear_iterations += its;
@@ -270,7 +273,9 @@ static int run_fixed(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_ou
     if (fabs(t + hh - t_stop) > eps_t && (t + hh > t_stop || t + 1.05 * hh > t_stop)) hh = t_stop - t;
     double c0 = clock_cpu();
     sl_diag ds;
-    sl_step st = {.t = t, .dt = hh};
+    int writes = every > 0 ? t + hh >= next_out * every - eps_t : 0;
+    writes |= t + hh >= end - eps_t || steps_here + 1 >= tc->max_steps;
+    sl_step st = {.t = t, .dt = hh, .writes = writes};
     int its = 0, src = ops->step(self, &st, &its, &ds);
     res->solve += clock_cpu() - c0;
     res->nonlinear_iterations += its;

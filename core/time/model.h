@@ -61,6 +61,8 @@ typedef struct sl_step {
   const double *predictor;
   double *u;
   const double *dudt; /* for `complete`: the BDF du/dt at t + dt */
+  const double *state; /* BDF: the last accepted state (at t) */
+  int writes;          /* the state after this step is written (an output time, the end, the step limit) */
 } sl_step;
 
 /* The counts a model adds to the summary and the profile. */
@@ -72,6 +74,7 @@ typedef struct sl_model_stats {
   int has_linear;
   double cpu_flow, cpu_coupled; /* CPU seconds in the main solves and in the coupled part (transport) */
   long roundoff_accepted;
+  long solves_skipped; /* steps whose result was known without a solve */
   int converged;             /* steady: the (last) solve converged */
   double correction, residual0, residual;
   char coupling_summary[256]; /* the model's own one line, or "" */

@@ -116,29 +116,50 @@ oom:
   return sl_diag_set(d, SL_ENOMEM, "transport: out of memory");
 }
 
+/* The least-squares gradient of phi over the face neighbours (periodic
+ * ones translated next to the face), unlimited. */
+static void lsq_gradient(const sl_transport *t, const double *phi, int c, double g[2]) {
+  const sl_mesh *m = t->m;
+  const int nfc = m->nf_per_cell;
+  const double *L = t->lsq + 3 * c, *xc = t->xc + 2 * c;
+  double rx = 0, ry = 0, pc = phi[c];
+  g[0] = g[1] = 0;
+  if (L[0] == 0 && L[2] == 0) return;
+  for (int k = 0; k < nfc; ++k) {
+    int f = m->cell_faces[(size_t)c * nfc + k];
+    double sh[2];
+    int j = sl_transport_across(t, f, c, sh);
+    if (j < 0) continue;
+    double dp = phi[j] - pc;
+    rx += (t->xc[2 * j] + sh[0] - xc[0]) * dp;
+    ry += (t->xc[2 * j + 1] + sh[1] - xc[1]) * dp;
+  }
+  g[0] = L[0] * rx + L[1] * ry, g[1] = L[1] * rx + L[2] * ry;
+}
+
+void sl_transport_gradient(const sl_transport *t, const double *phi, double *grad) {
+  for (int c = 0; c < t->m->n_cells; ++c) lsq_gradient(t, phi, c, grad + 2 * c);
+}
+
 void sl_transport_reconstruct(sl_transport *t, const double *phi) {
   const sl_mesh *m = t->m;
   const int nfc = m->nf_per_cell;
   const double beta = t->o.limiter == SL_LIMITER_MINMOD ? 0.5 : 1.0;
   for (int c = 0; c < m->n_cells; ++c) {
-    const double *L = t->lsq + 3 * c, *xc = t->xc + 2 * c;
-    double *g = t->grad + 2 * c;
+    const double *xc = t->xc + 2 * c;
+    double *g = t->grad + 2 * c, gl[2];
+    lsq_gradient(t, phi, c, gl);
     g[0] = g[1] = 0;
-    if (L[0] == 0 && L[2] == 0) continue;
-    double rx = 0, ry = 0, pc = phi[c], lo = pc, hi = pc;
+    double gx = gl[0], gy = gl[1], pc = phi[c], lo = pc, hi = pc;
+    if (gx == 0 && gy == 0) continue;
     for (int k = 0; k < nfc; ++k) {
       int f = m->cell_faces[(size_t)c * nfc + k];
       double sh[2];
       int j = sl_transport_across(t, f, c, sh);
       if (j < 0) continue;
-      double dp = phi[j] - pc;
-      rx += (t->xc[2 * j] + sh[0] - xc[0]) * dp;
-      ry += (t->xc[2 * j + 1] + sh[1] - xc[1]) * dp;
       if (phi[j] < lo) lo = phi[j];
       if (phi[j] > hi) hi = phi[j];
     }
-    double gx = L[0] * rx + L[1] * ry, gy = L[1] * rx + L[2] * ry;
-    if (gx == 0 && gy == 0) continue;
     double dv[4], dmax = 0, dmin = 0; /* face value - cell value (nf_per_cell <= 4) */
     for (int k = 0; k < nfc; ++k) {
       int f = m->cell_faces[(size_t)c * nfc + k];

@@ -228,6 +228,11 @@ double sl_transport_stable_dt(const sl_transport *t, const double *q, const doub
 int sl_transport_step(sl_transport *t, double dt, const double *q, const double *w, double *phi,
                       sl_transport_stats *st, sl_diag *d);
 
+/* The least-squares gradient of the cell values phi (n_cells) from each
+ * cell's face neighbours, across periodic pairs too, unlimited (exact for
+ * linear data), into grad[2 n_cells] (1-D: the x component, 0). */
+void sl_transport_gradient(const sl_transport *t, const double *phi, double *grad);
+
 /* sum_i V_i phi_i, compensated (Neumaier) so that it measures conservation
  * to round-off. */
 double sl_transport_mass(const sl_transport *t, const double *phi);

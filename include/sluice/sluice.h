@@ -103,6 +103,7 @@ typedef struct sluice_summary {
   int used_picard, converged;
   double correction, residual0, residual; /* steady: the last Newton solve */
   long roundoff_accepted;
+  long solves_skipped; /* steps whose flow was known without a solve (at rest, or at a fixed point) */
   sluice_linear linear;
   /* seconds: assembly, factorisation, solve (wall), output; CPU of the phases */
   double assembly, factorisation, solve, output;

@@ -206,13 +206,16 @@ static void kynch_study(void) {
   CHECK_MSG(!exists("kynch_out/kynch_small.runs"), "the run outputs are left behind");
 }
 
+/* The adaptive variant fails: the channel accelerating from rest cannot be followed to a tolerance of 1e-12
+ * without steps below dt_min. */
 static void failing_run(void) {
   char text[8192];
   snprintf(text, sizeof text,
-           "[study]\nscene = %s/kynch_settling.ini\n"
-           "[set.mesh]\ncells = 20\n[set.time]\nend = 2\ntolerance = 1e-12\ndt_min = 0.5\n[set.output]\nevery = 2\n"
+           "[study]\nscene = %s/bingham_channel.ini\n"
+           "[set.mesh]\ncells = 20\n[set.time]\nscheme = bdf1\nend = 2\ndt = 1\ntolerance = 1e-12\ndt_min = 0.5\n"
+           "[set.output]\nevery = 2\n[set.closure.viscosity]\neps = 0.1\n"
            "[variants]\nnames = adaptive, fixed\n[variants.time]\nadaptive = true, false\n"
-           "[measure]\nexact = kynch\ntime = 2\n",
+           "[measure]\nexact = bingham\ntime = 2\n",
            configs);
   write_file("failing.ini", text);
   const char *args[] = {"bench", "failing.ini", "-o", "failing_out", NULL};

@@ -1,5 +1,5 @@
-/* Tests of the hindered_settling closures richardson_zaki, michaels_bolger
- * and nigam: the terminal velocity (Stokes formula; the Schiller-Naumann /
+/* Tests of the hindered_settling closures richardson_zaki, michaels_bolger,
+ * nigam and vesilind: the terminal velocity (Stokes formula; the Schiller-Naumann /
  * Rowe force balance to 1e-14 and the digest 000 values for nylon spheres),
  * the Richardson-Zaki (1954) and Garside & Al-Dibouni (1977) exponents at
  * published Re_t, f -> 1 as phi -> 0, the digest 002 table and Kynch flux
@@ -360,10 +360,40 @@ static void test_nigam(void) {
   sl_tc_close(t);
 }
 
+/* ---- Vesilind ------------------------------------------------------------------ */
+
+/* u_t 10^(-a phi) with the smooth cut-off (1 - phi/phi_max) or the step to 0 at phi_max. */
+static void test_vesilind(void) {
+  sl_tc *t = sl_tc_open("hindered_settling", "vesilind", NULL);
+  sl_tc *st = sl_tc_open("hindered_settling", "vesilind", "packing_cutoff=step", "a=3", "phi_max=0.5",
+                         "terminal_velocity=given", "u_t=2.198e-3", NULL);
+  const double phis[] = {0.0, 1e-9, 0.1, 0.32, 0.6, 0.64};
+  double u0 = 1600.0 * 9.81 * 1e-8 / 18e-3;
+  for (int i = 0; i < 6; ++i) {
+    hs s = H(phis[i], 1e-4, 2600.0, 1000.0, 1e-3);
+    CHECK_CLOSE(vs(t, s), u0 * exp(-2.0 * log(10.0) * phis[i]) * (1.0 - phis[i] / 0.64), 1e-12);
+    if (phis[i] < 0.64) check_derivs(t, s);
+  }
+  CHECK(fh(t, H(0.64, 1e-4, 2600.0, 1000.0, 1e-3)) == 0.0 && sl_tc_status(t) == 0);
+  /* the step: 10^(-3 phi) up to phi_max, exactly 0 there */
+  const double phis2[] = {0.0, 0.1, 0.3, 0.4999};
+  for (int i = 0; i < 4; ++i) {
+    hs s = H(phis2[i], 1e-4, 2600.0, 1000.0, 1e-3);
+    CHECK_CLOSE(vs(st, s), 2.198e-3 * pow(10.0, -3.0 * phis2[i]), 1e-12);
+    check_derivs(st, s);
+  }
+  CHECK(vs(st, H(0.5, 1e-4, 2600.0, 1000.0, 1e-3)) == 0.0 && dev(st, "settling_velocity", H(0.5, 1e-4, 2600.0, 1000.0, 1e-3)) == 0.0);
+  check_refused(t, H(0.6400001, 1e-4, 2600.0, 1000.0, 1e-3));
+  check_refused(st, H(0.51, 1e-4, 2600.0, 1000.0, 1e-3));
+  check_common_refusals(t);
+  sl_tc_close(t);
+  sl_tc_close(st);
+}
+
 /* Optional outputs may be left out: evaluate with only settling_velocity. */
 static void test_optional_outputs(void) {
-  const char *names[] = {"richardson_zaki", "michaels_bolger", "nigam"};
-  for (int i = 0; i < 3; ++i) {
+  const char *names[] = {"richardson_zaki", "michaels_bolger", "nigam", "vesilind"};
+  for (int i = 0; i < 4; ++i) {
     sl_tc *t = sl_tc_open("hindered_settling", names[i], NULL);
     const sl_closure_desc *c = t->c->desc;
     double in_v[16], v = NAN, dv = NAN;
@@ -386,6 +416,7 @@ int main(void) {
   test_richardson_zaki();
   test_michaels_bolger();
   test_nigam();
+  test_vesilind();
   test_optional_outputs();
   return sl_test_summary();
 }

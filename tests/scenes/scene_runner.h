@@ -18,6 +18,7 @@ typedef struct scene_request {
   const char *const *sets; /* section.key=value overrides, NULL-terminated (may be NULL) */
   const char *out;         /* output file */
   const char *restart;     /* checkpoint to continue from (NULL: start) */
+  int solve_every_step;    /* solve the flow even where its result is known */
 } scene_request;
 
 static inline int scene_run(const scene_request *q, sluice_summary *res, sl_diag *d) {
@@ -25,7 +26,13 @@ static inline int scene_run(const scene_request *q, sluice_summary *res, sl_diag
   snprintf(path, sizeof path, "%s/%s.ini", q->configs, q->scene);
   sluice *s = NULL;
   sluice_error e = {0, ""};
-  sluice_open_opts oo = {.sets = q->sets, .scan_all = 1};
+  /* solve_every_step: [solver] skip_known = false after the request's own overrides */
+  const char *sets[64];
+  int n_sets = 0;
+  while (q->sets && q->sets[n_sets] && n_sets < 62) sets[n_sets] = q->sets[n_sets], ++n_sets;
+  if (q->solve_every_step) sets[n_sets++] = "solver.skip_known=false";
+  sets[n_sets] = NULL;
+  sluice_open_opts oo = {.sets = sets, .scan_all = 1};
   int rc;
   if (q->replace_section) {
     static char text[1 << 16], edited[1 << 16];

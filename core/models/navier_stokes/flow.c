@@ -84,11 +84,12 @@ static int viscosity_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *
 
 /* Gravity and the body force. With a solids fraction only the excess
  * density (rho - rho_f) = phi (rho_s - rho_f) is buoyant: rho_f g goes into
- * the (reduced) pressure. */
+ * the (reduced) pressure; so does the part of phi whose pressure the rider
+ * carries (buoyant_phi is the rest). */
 static int force_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
   const physics *ph = user;
   (void)d;
-  const double *phi = ph->riding ? ph->rider->phi : NULL;
+  const double *phi = ph->riding ? ph->rider->buoyant_phi ? ph->rider->buoyant_phi : ph->rider->phi : NULL;
   for (int q = 0; q < b->n; ++q) {
     double rho = phi ? phi[b->cell[q]] * (ph->rider->rho_solid - ph->density) : ph->density;
     for (int c = 0; c < ph->n_comp; ++c) out[q * ph->n_comp + c] = rho * ph->gravity[c] + ph->body_force[c];
@@ -166,6 +167,7 @@ static void physics_opts(physics *ph, sl_flow_opts *o) {
   o->body_force = ph->has_force ? force_fn : NULL;
   o->body_force_user = ph;
   o->extra_stress = ph->riding && ph->rider ? ph->rider->extra_stress : NULL;
+  o->cell_drag = ph->riding && ph->rider ? ph->rider->cell_drag : NULL;
 }
 
 /* ---- boundary conditions ------------------------------------------------- */
@@ -423,6 +425,11 @@ struct sl_flow {
   /* The residual's round-off (see solve): the largest initial residual of
    * the run, and whether a solve has already ended there. */
   double newton_scale[2];
+  /* Solves whose result is known ([solver] skip_known): */
+  int column_at_rest; /* a 1-D column between walls: div u = 0 makes u = 0 whatever the load */
+  int unforced;       /* walls at rest all round, no body force, no rotation: only the rider loads it */
+  int fixed_point;    /* the last accepted solve returned its start and the rider's phi has not changed since */
+  int solved, solved_to_start; /* the last step's: solved (not skipped), and its result was its start */
   sl_model_stats st;
 };
 
@@ -473,6 +480,12 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
      * the other nodes the average of their cell's vertices (exact for the
      * linear pressure on edge midpoints and the Q1 cell centre). */
     const double *p = u + th->p_offset;
+    const double *shift = f->riding ? f->rider.pressure_shift : NULL;
+    if (shift) { /* the pressure of what the rider kept out of the load */
+      double *ps = f->work + th->vel->n_nodes;
+      for (int32_t i = 0; i < th->pres->n_dofs; ++i) ps[i] = p[i] + shift[i];
+      p = ps;
+    }
     double mean = 0.0, area = 0.0;
     if (f->datum && sl_fe_integrate(th->pres, p, f->ph.axisymmetric, &mean, &area, NULL) == 0 && area > 0.0)
       mean /= area;
@@ -567,8 +580,36 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
   int rc;
   if (f->bcs.time_dependent && (rc = bc_apply(&f->bcs, f->th, &f->prob.bc, s->t + s->dt, f->datum, d)))
     return -rc;
+  size_t bytes = (size_t)f->th->n_dofs * sizeof *s->u;
+  f->solved = 0;
+  /* Skip what is known: a vessel at rest under no load stays at rest; a closed column's velocity is 0 and its
+     pressure is needed only when written; a flow at a fixed point whose phi has not changed gives itself again. */
+  if (f->sc->solver.skip_known && s->state) {
+    const sl_flow_rider *r = &f->rider;
+    int rest = f->riding && f->unforced && r->at_rest && r->at_rest(r->user);
+    for (int32_t i = 0; i < f->th->p_offset && rest; ++i) rest = s->state[i] == 0.0;
+    if (rest) { /* zero velocity and (reduced) pressure */
+      memset(s->u, 0, bytes);
+      f->st.solves_skipped++;
+      return 0;
+    }
+    if ((f->column_at_rest && !(s->writes && (f->fields & F_PRESSURE))) || (f->fixed_point && !f->bcs.time_dependent)) {
+      memcpy(s->u, s->state, bytes);
+      f->st.solves_skipped++;
+      return 0;
+    }
+  }
+  if (f->riding && f->rider.prepare && (rc = f->rider.prepare(f->rider.user, s->dt, d))) return sl_step_code(rc);
   rc = solve(f, s->u, iterations, d);
+  f->solved = 1;
+  if (rc == 0 && f->column_at_rest) memset(s->u, 0, (size_t)f->th->p_offset * sizeof *s->u);
+  f->solved_to_start = rc == 0 && s->state && memcmp(s->u, s->state, bytes) == 0;
   return sl_step_code(rc);
+}
+
+void sl_flow_accept(sl_flow *f) {
+  if (f->solved) f->fixed_point = f->solved_to_start;
+  if (f->riding && !(f->rider.unchanged && f->rider.unchanged(f->rider.user))) f->fixed_point = 0;
 }
 
 /* Rebuilds the physics after a change of the scene (continuation). */
@@ -704,6 +745,14 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
   f->prob.opts.rotation_centre[0] = ce->n > 0 ? ce->v[0] : 0.0, f->prob.opts.rotation_centre[1] = ce->n > 1 ? ce->v[1] : 0.0;
   if ((rc = sl_flow_check_geometry(f->th, &f->prob.opts, d))) goto fail;
   f->datum = !f->bcs.has_natural;
+  f->column_at_rest = dim == 1 && f->th->n_comp == 1 && f->bcs.n > 0;
+  f->unforced = f->prob.opts.omega == 0.0;
+  for (int c = 0; c < MAX_COMP; ++c) f->unforced &= f->ph.body_force[c] == 0.0;
+  for (int i = 0; i < f->bcs.n; ++i) {
+    int ty = f->bcs.b[i].type;
+    f->column_at_rest &= ty == NS_WALL;
+    f->unforced &= ty == NS_WALL || ty == NS_SLIP || ty == NS_AXIS || ty == NS_PERIODIC;
+  }
   for (int i = 0; i < f->bcs.n; ++i)
     if (f->bcs.b[i].type == NS_PRESSURE || f->bcs.b[i].type == NS_TRACTION) {
       if (f->prob.n_tractions == SL_FLOW_MAX_TRACTIONS) break;

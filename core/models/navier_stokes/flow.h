@@ -68,6 +68,23 @@ typedef struct sl_flow_rider {
   double rho_solid;
   const double *phi;
   const double *extra_stress;
+  void *user; /* for the hooks below */
+  /* A momentum sink per cell (sl_flow_opts cell_drag); before each solve of a step over dt the flow calls
+   * prepare (may be NULL), which brings it up to date. NULL: none. */
+  const double *cell_drag;
+  int (*prepare)(void *user, double dt, sl_diag *d);
+  /* The cell values whose buoyancy the flow takes in place of phi's (the part of phi the pressure does not carry,
+   * core/assembly/hydrostatic.h), and the pressure of the part left out, per pressure dof, added to the pressure
+   * written. NULL: phi, none. */
+  const double *buoyant_phi;
+  const double *pressure_shift;
+  /* Whether the last accepted step left phi bitwise as it was: a flow at a fixed point is then reused (NULL:
+   * always solve). */
+  int (*unchanged)(void *user);
+  /* Whether the rider loads the flow with nothing (its buoyancy all carried by the pressure, to 1e-12 of its
+   * scale, and no stress of its own): a flow at rest between walls at rest then stays at rest and is not solved
+   * (NULL: never). */
+  int (*at_rest)(void *user);
 } sl_flow_rider;
 
 /* The flow's output fields, in [output] fields' order; the rider's follow them. */
@@ -95,6 +112,8 @@ int sl_flow_axisymmetric(const sl_flow *f);
 
 /* The model hooks (core/time/model.h) of the flow alone. */
 int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d);
+/* After the loop accepted a step (and the rider its part): whether the flow is at a fixed point. */
+void sl_flow_accept(sl_flow *f);
 int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag *d);
 int sl_flow_write_mesh(sl_flow *f, sl_output *out, sl_diag *d);
 int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d);

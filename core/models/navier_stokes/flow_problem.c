@@ -47,7 +47,7 @@ typedef struct sl_flow_matrix_key matrix_key;
  * options (history, body force, rotation centre) and the tractions enter the
  * right-hand side only. */
 static int constant_matrix_key(const sl_flow_opts *o, matrix_key *k) {
-  if (o->convection || o->viscosity || o->density.fn) return 0;
+  if (o->convection || o->viscosity || o->density.fn || o->cell_drag) return 0;
   *k = (matrix_key){.mass_coef = o->mass_coef, .density = o->density.value, .viscosity = o->viscosity_value,
                     .omega = o->omega, .axisymmetric = o->axisymmetric, .quad_degree = o->quad_degree};
   return 1;

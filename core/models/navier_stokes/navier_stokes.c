@@ -77,6 +77,9 @@ static const sl_key solver_keys[] = {
      .help = "the first value of the continuation parameter"},
     {.section = "solver", .name = "continuation_steps", .type = SL_KEY_INT, SL_AT_SCENE(solver.continuation_steps),
      .def = 5, .min = 1, .max = 1000, .help = "continuation stages (geometric when both ends are positive)"},
+    {.section = "solver", .name = "skip_known", .type = SL_KEY_BOOL, SL_AT_SCENE(solver.skip_known), .def = 1,
+     .help = "transient: skip the solves whose result is known (a closed 1-D column's velocity, a vessel at rest "
+             "under no load, a flow at a fixed point whose phi did not change)"},
 };
 TABLE(sl_flow_keys_solver, solver_keys);
 
@@ -143,6 +146,10 @@ static int ns_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) 
 }
 
 static int ns_step(void *self, sl_step *s, int *iterations, sl_diag *d) { return sl_flow_step(self, s, iterations, d); }
+static void ns_accept(void *self, const sl_step *s, int *steady) {
+  (void)s, (void)steady;
+  sl_flow_accept(self);
+}
 static int ns_steady(void *self, double *u, long *steps, long *its, sl_diag *d) {
   return sl_flow_steady(self, u, steps, its, d);
 }
@@ -161,6 +168,7 @@ static void ns_destroy(void *self) { sl_flow_destroy(self); }
 
 const sl_model_ops sl_navier_stokes_ops = {.setup = ns_setup,
                                            .step = ns_step,
+                                           .accept = ns_accept,
                                            .steady = ns_steady,
                                            .write_mesh = ns_write_mesh,
                                            .write = ns_write,
