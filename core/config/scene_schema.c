@@ -33,6 +33,7 @@ static const sl_key_spec time_keys[] = {
 static const sl_key_spec solver_keys[] = {
     {"linear", SL_KEY_CHOICE, 0, 0, 0, "umfpack|klu|cholmod", "sparse direct solver"},
     {"ordering", SL_KEY_CHOICE, 0, 0, 0, "auto|amd|colamd|metis", "klu's fill-reducing ordering (auto: AMD, METIS from 30 000 unknowns)"},
+    {"reuse", SL_KEY_CHOICE, 0, 0, 0, "auto|never", "Newton's corrections by FGMRES with an older factorisation (auto) or a factorisation per changed matrix (never)"},
     {"nonlinear_tolerance", SL_KEY_REAL, 0, 1e-16, 1.0, NULL, "relative tolerance of Newton/Picard"},
     {"max_iterations", SL_KEY_INT, 0, 1, 1000, NULL, "nonlinear iterations per step"},
     {"nonlinear", SL_KEY_CHOICE, 0, 0, 0, "newton|picard", "Newton (line search, Picard fallback) or Picard only"},

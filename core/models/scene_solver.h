@@ -1,6 +1,7 @@
 /* The sparse direct solver of a scene, from its [solver] section:
  *   linear   = umfpack | klu | cholmod      (default: the model's)
  *   ordering = auto | amd | colamd | metis  (klu only; default: the model's)
+ *   reuse    = auto | never                 (factorisation reuse in Newton's solves, see linsolve.h)
  * Errors name the file and line of the offending key. */
 #ifndef SLUICE_MODELS_SCENE_SOLVER_H
 #define SLUICE_MODELS_SCENE_SOLVER_H

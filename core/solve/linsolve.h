@@ -7,14 +7,42 @@
  * factorisation only when the values changed (or the caller says so). A
  * matrix re-assembled with bitwise the same values (a constant operator of a
  * linear problem) is recognised by comparison with a copy of the factorised
- * values and not factorised again. */
+ * values and not factorised again.
+ *
+ * Factorisation reuse (sl_linsolve_solve_rtol): a caller that can take an
+ * approximate solution, to a relative residual rtol (Newton's corrections),
+ * gets one from FGMRES (core/solve/krylov.h) preconditioned with the last
+ * factorisation when only the matrix values changed since it was computed:
+ * a slowly varying matrix (a Newton Jacobian, one time step to the next)
+ * is then factorised a few times per run instead of at every solve. The
+ * solve is refactorised and done directly when FGMRES does not reach rtol
+ * within its budget or its rate says it will not (the preconditioner has
+ * drifted too far), and at the next solve after one that needed more than
+ * slow_iterations. Why each factorisation was computed is counted. */
 #ifndef SLUICE_SOLVE_LINSOLVE_H
 #define SLUICE_SOLVE_LINSOLVE_H
 
 #include <stdint.h>
 
+#include "core/solve/krylov.h"
 #include "core/solve/sparse.h"
 #include "core/util/diag.h"
+
+/* Why a numeric factorisation was computed (sl_linsolve_stats.refactor_reason). */
+typedef enum sl_refactor_reason {
+  SL_REFACTOR_FIRST = 0,  /* no factorisation yet, or the last one failed */
+  SL_REFACTOR_PATTERN,    /* a new sparsity pattern or ordering */
+  SL_REFACTOR_DIRECT,     /* new values and a direct solve: reuse off, an exact solve asked for, sl_linsolve_factor */
+  SL_REFACTOR_FORCED,     /* sl_linsolve_values_changed */
+  SL_REFACTOR_ITERATIONS, /* FGMRES with the old factorisation used its budget without converging */
+  SL_REFACTOR_STAGNATION, /* its convergence rate could not reach the tolerance within the budget */
+  SL_REFACTOR_SLOW,       /* the previous reuse needed more than slow_iterations */
+  SL_REFACTOR_BREAKDOWN,  /* FGMRES failed (a vector not finite) */
+  SL_REFACTOR_N
+} sl_refactor_reason;
+
+/* "first", "pattern", "direct", "forced", "iterations", "stagnation", "slow", "breakdown" */
+const char *sl_refactor_reason_name(int reason);
 
 typedef struct sl_linsolve_stats {
   long n_symbolic;      /* symbolic analyses (orderings) */
@@ -22,10 +50,17 @@ typedef struct sl_linsolve_stats {
   long n_refactor;      /* of those, klu_refactor reusing the old pivots */
   long n_refactor_redo; /* klu_refactor results thrown away for a fresh klu_factor (rcond degraded) */
   long n_numeric_skipped; /* re-assembled matrices found bitwise unchanged: not refactorised */
-  long n_solves;
+  long n_solves; /* systems solved, reused ones included (t_solve: FGMRES included) */
   double t_symbolic, t_numeric, t_solve; /* wall-clock seconds */
   double rcond;                          /* last reciprocal condition estimate (backend's own, crude) */
   const char *ordering; /* the last fill-reducing ordering, where the backend says ("amd", "metis"), else NULL */
+  /* factorisation reuse (sl_linsolve_solve_rtol) */
+  long n_reused;            /* solves answered by FGMRES with an older factorisation */
+  long n_krylov_failed;     /* FGMRES attempts that ended in a refactorisation */
+  long n_krylov_iterations; /* FGMRES iterations in all, failed attempts included */
+  int krylov_max;           /* most iterations of one accepted reuse */
+  long refactor_reason[SL_REFACTOR_N]; /* numeric factorisations by reason; they sum to n_numeric */
+  double t_krylov; /* of t_solve, the wall-clock seconds in FGMRES (its preconditioner solves, failed attempts) */
 } sl_linsolve_stats;
 
 /* A backend. Every function returns 0 or an SL_E* code with d set. The
@@ -45,6 +80,9 @@ typedef struct sl_linsolve_ops {
   /* Optional: the fill-reducing ordering of later symbolic analyses
    * (SL_ORDERING_*); NULL when the backend chooses its own. */
   int (*set_ordering)(void *backend, int ordering, sl_diag *d);
+  /* Optional: as solve, for a preconditioner application (A holds the
+   * factorised values): no iterative refinement. NULL: solve. */
+  int (*precond)(void *backend, const sl_csr *A, const double *b, double *x, sl_diag *d);
 } sl_linsolve_ops;
 
 /* Fill-reducing orderings a backend may be told to use. AUTO is the
@@ -81,6 +119,23 @@ int sl_linsolve_solve(sl_linsolve *ls, const sl_csr *A, const double *b, double 
 /* Force a numeric factorisation at the next solve (values written without
  * sl_csr_touch). */
 void sl_linsolve_values_changed(sl_linsolve *ls);
+
+/* x with |b - A x|_2 <= rtol |b|_2: when only A's values changed since the
+ * last factorisation and reuse is on, by FGMRES preconditioned with that
+ * factorisation; otherwise (rtol <= 0, reuse off, a new pattern, no
+ * factorisation yet, FGMRES failing) as sl_linsolve_solve. */
+int sl_linsolve_solve_rtol(sl_linsolve *ls, const sl_csr *A, const double *b, double *x, double rtol, sl_diag *d);
+
+/* The reuse policy. On by default (it only acts in sl_linsolve_solve_rtol). */
+typedef struct sl_linsolve_reuse {
+  int enabled;
+  int max_iterations;  /* FGMRES budget of one solve (no restart); default 20 */
+  int slow_iterations; /* a reuse needing more refactorises at the next solve; default 10 */
+} sl_linsolve_reuse;
+void sl_linsolve_set_reuse(sl_linsolve *ls, const sl_linsolve_reuse *policy);
+sl_linsolve_reuse sl_linsolve_get_reuse(const sl_linsolve *ls);
+/* "auto" (the defaults) | "never"; SL_EBADINPUT with a did-you-mean otherwise. */
+int sl_linsolve_set_reuse_name(sl_linsolve *ls, const char *name, sl_diag *d);
 
 /* The ordering by name ("auto" | "amd" | "colamd" | "metis"), for the next
  * symbolic analysis. SL_EBADINPUT for an unknown name (with a did-you-mean)

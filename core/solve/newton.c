@@ -57,6 +57,8 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
   if (o.max_iterations <= 0) o.max_iterations = 30;
   if (o.picard_fallback <= 0) o.picard_fallback = 5;
   if (!(o.min_step > 0)) o.min_step = 1.0 / 64.0;
+  /* a linear problem's one solve is exact: its residual b - A du is computed, not solved for */
+  double linear_rtol = o.linear || o.linear_rtol < 0 ? 0.0 : o.linear_rtol > 0 ? o.linear_rtol : SL_NEWTON_LINEAR_RTOL;
   int32_t n_check = o.n_check > 0 && o.n_check <= n ? o.n_check : n;
   memset(st, 0, sizeof *st);
   nl_ctx c = {A, b, n, fn, user, st};
@@ -79,7 +81,7 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
       break;
     }
     if (st->iterations == o.max_iterations) break;
-    if ((rc = sl_linsolve_solve(ls, A, b, du, d))) break;
+    if ((rc = sl_linsolve_solve_rtol(ls, A, b, du, linear_rtol, d))) break;
     ++st->iterations;
     if (mode == SL_NL_PICARD) ++st->picard_iterations;
     st->correction = norm_inf(du, n_check) / fmax(norm_inf(u, n_check), o.scale);
