@@ -483,6 +483,7 @@ typedef struct ns_run {
   /* The residual's round-off (see solve): the largest initial residual of
    * the run, and whether a solve has already ended there. */
   double newton_scale[2];
+  sl_bdf_controller ctl; /* the adaptive step's controller (core/time/bdf.h) */
 } ns_run;
 
 static int write_state(ns_run *r, double t, const double *u, sl_diag *d) {
@@ -548,7 +549,7 @@ static int write_state(ns_run *r, double t, const double *u, sl_diag *d) {
  * history of its one solution). */
 static int write_checkpoint(ns_run *r, const sl_bdf *b, double t, double dt_next, long step, sl_diag *d) {
   double t0 = wall(), c0 = cpu();
-  sl_checkpoint_array arr[12];
+  sl_checkpoint_array arr[16];
   int na = 0;
   const char *names[3] = {"u", "u_prev", "u_prev2"};
   for (int k = 0; k < b->n_past; ++k) {
@@ -560,7 +561,13 @@ static int write_checkpoint(ns_run *r, const sl_bdf *b, double t, double dt_next
   arr[na].n = 2, arr[na].data = b->h_past, ++na;
   snprintf(arr[na].name, sizeof arr[na].name, "newton_scale"); /* a restart tests convergence as the run did */
   arr[na].n = 2, arr[na].data = r->newton_scale, ++na;
-  if (r->cpl) na += r->cpl->checkpoint(r->cpl->user, arr + na, 12 - na);
+  double ctl[SL_BDF_CONTROLLER_STATE]; /* and controls its steps as the run did */
+  sl_bdf_controller_save(&r->ctl, ctl);
+  snprintf(arr[na].name, sizeof arr[na].name, "step_control");
+  arr[na].n = SL_BDF_CONTROLLER_STATE, arr[na].data = ctl, ++na;
+  /* a restart starts with a fresh factorisation: so does the run that goes on, bit for bit the same */
+  sl_linsolve_drop_numeric(r->ls);
+  if (r->cpl) na += r->cpl->checkpoint(r->cpl->user, arr + na, 16 - na);
   sl_checkpoint ck = {.time = t, .dt = dt_next, .step = step, .n_arrays = na, .arrays = arr};
   ck.n_ints = 2;
   snprintf(ck.int_names[0], SL_CHECKPOINT_NAME_MAX, "n_past");
@@ -790,6 +797,7 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
   int32_t n = r->th->n_dofs;
   int rc = sl_bdf_init(&b, tc->scheme, n, u, 0.0, d);
   if (rc) return rc;
+  sl_bdf_controller_init(&r->ctl, SL_BDF_CONTROL_PI);
   double *hist = malloc((size_t)n * sizeof *hist), *pred = malloc((size_t)n * sizeof *pred);
   double *trial = malloc((size_t)n * sizeof *trial), *rate = malloc((size_t)n * sizeof *rate);
   if (!hist || !pred || !trial || !rate) {
@@ -816,6 +824,8 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     if (hp && hp->n == 2) b.h_past[0] = hp->data[0], b.h_past[1] = hp->data[1];
     const sl_checkpoint_array *ns = sl_checkpoint_find(ck, "newton_scale");
     if (ns && ns->n == 2) r->newton_scale[0] = ns->data[0], r->newton_scale[1] = ns->data[1];
+    const sl_checkpoint_array *sc = sl_checkpoint_find(ck, "step_control");
+    if (sc && sc->n == SL_BDF_CONTROLLER_STATE) sl_bdf_controller_restore(&r->ctl, sc->data);
     b.n_past = (int)np, b.t = ck->time;
     h = ck->dt, step = (long)ck->step;
     if (ck->n_ints > 1) r->res->rejected_steps = (long)ck->ints[1];
@@ -862,7 +872,7 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     }
     if (nrc != 0 || err > 1.0) {
       r->res->rejected_steps++;
-      h = nrc ? 0.25 * hh : sl_bdf_next_h(&s, err);
+      h = nrc ? sl_bdf_controller_fail(&r->ctl, &s) : sl_bdf_controller_reject(&r->ctl, &s, err);
       limit_count[coupled_failed ? 5 : nrc ? 1 : 0]++;
       if (nrc && nrc != SL_EFAILED) {
         rc = sl_diag_set(d, nrc, "%s", dn.msg);
@@ -882,7 +892,7 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
     sl_bdf_accept(&b, &s, trial);
     if (r->cpl) r->cpl->accept(r->cpl->user);
     ++step, ++steps_here;
-    double h_next = tc->adaptive ? sl_bdf_next_h(&s, err) : tc->dt;
+    double h_next = tc->adaptive ? sl_bdf_controller_accept(&r->ctl, &s, err) : tc->dt;
     if (h_next > tc->dt_max) h_next = tc->dt_max, limit = 2;
     if (limit != 3) h = h_next; /* a step shortened to hit the end keeps the proposal */
     limit_count[limit]++;

@@ -24,14 +24,16 @@ struct sl_linsolve {
   sl_linsolve_reuse reuse;
   int reason;        /* of the next numeric factorisation, when set by the reuse path (else -1) */
   int refactor_next; /* the last reuse was slow: refactorise at the next solve */
+  int fresh_pending; /* sl_linsolve_drop_numeric was called (see settle_fresh) */
+  int numeric_since_symbolic;
   sl_krylov kry;
   double *kry_b;     /* copy of b for in-place solves through FGMRES */
 };
 
-static const sl_linsolve_reuse reuse_defaults = {.enabled = 1, .max_iterations = 20, .slow_iterations = 10};
+static const sl_linsolve_reuse reuse_defaults = {.enabled = 1, .max_iterations = 20, .slow_iterations = 7};
 
-static const char *const reason_names[SL_REFACTOR_N] = {"first",      "pattern", "direct",    "forced",
-                                                        "iterations", "stagnation", "slow", "breakdown"};
+static const char *const reason_names[SL_REFACTOR_N] = {"first", "pattern",    "direct", "forced",   "iterations",
+                                                        "stagnation", "slow", "breakdown", "fresh"};
 
 const char *sl_refactor_reason_name(int reason) {
   return reason >= 0 && reason < SL_REFACTOR_N ? reason_names[reason] : "unknown";
@@ -109,14 +111,36 @@ int sl_linsolve_set_ordering(sl_linsolve *ls, const char *name, sl_diag *d) {
 }
 
 void sl_linsolve_values_changed(sl_linsolve *ls) { ls->force_numeric = 1; }
+
+void sl_linsolve_drop_numeric(sl_linsolve *ls) {
+  if (ls && ls->have_symbolic) ls->fresh_pending = 1;
+}
+
+/* After sl_linsolve_drop_numeric, at the next factorisation or solve: start
+ * as a new solver would, unless the factorisation in hand is what a new
+ * solver would compute for A (A's values bitwise those factorised, the
+ * first numeric factorisation after the analysis of those same values: a
+ * constant operator then stays factorised once). */
+static void settle_fresh(sl_linsolve *ls, const sl_csr *A) {
+  if (!ls->fresh_pending) return;
+  ls->fresh_pending = 0;
+  int same = ls->have_numeric && ls->numeric_since_symbolic == 1 && ls->pattern_id == A->pattern_id &&
+             ls->n == A->n_rows && ls->factored && ls->n_factored == A->nnz &&
+             memcmp(ls->factored, A->values, (size_t)A->nnz * sizeof *A->values) == 0;
+  ls->refactor_next = 0;
+  if (same) return;
+  ls->have_symbolic = ls->have_numeric = 0;
+  ls->reason = SL_REFACTOR_FRESH;
+}
 const char *sl_linsolve_name(const sl_linsolve *ls) { return ls->ops->name; }
 const char *sl_linsolve_description(const sl_linsolve *ls) { return ls->ops->description; }
 const sl_linsolve_stats *sl_linsolve_get_stats(const sl_linsolve *ls) { return &ls->st; }
 
 void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len) {
   const sl_linsolve_stats *s = &ls->st;
-  int k = snprintf(buf, len, "%s: %ld symbolic %.3g s, %ld numeric %.3g s", ls->ops->name, s->n_symbolic, s->t_symbolic,
-                   s->n_numeric, s->t_numeric);
+  int k = snprintf(buf, len, "%s%s%s%s: %ld symbolic %.3g s, %ld numeric %.3g s", ls->ops->name,
+                   s->ordering ? " (" : "", s->ordering ? s->ordering : "", s->ordering ? " ordering)" : "",
+                   s->n_symbolic, s->t_symbolic, s->n_numeric, s->t_numeric);
   if (k >= 0 && (size_t)k < len && s->n_numeric_skipped > 0)
     k += snprintf(buf + k, len - (size_t)k, " (%ld skipped: matrix unchanged)", s->n_numeric_skipped);
   if (k >= 0 && (size_t)k < len && s->n_refactor > 0)
@@ -134,16 +158,18 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "%s: matrix is %d x %d, not square", name, (int)A->n_rows, (int)A->n_cols);
   if (A->n_rows <= 0 || !A->row_ptr) return sl_diag_set(d, SL_EBADINPUT, "%s: empty matrix", name);
 
+  settle_fresh(ls, A);
   int reason = ls->reason;
   ls->reason = -1;
   if (!ls->have_symbolic || ls->pattern_id != A->pattern_id || ls->n != A->n_rows) {
-    reason = ls->st.n_numeric == 0 ? SL_REFACTOR_FIRST : SL_REFACTOR_PATTERN;
+    if (reason != SL_REFACTOR_FRESH) reason = ls->st.n_numeric == 0 ? SL_REFACTOR_FIRST : SL_REFACTOR_PATTERN;
     ls->have_symbolic = ls->have_numeric = 0;
     double t0 = now();
     int rc = ls->ops->symbolic(ls->backend, A, d);
     ls->st.t_symbolic += now() - t0;
     if (rc) return rc;
     ++ls->st.n_symbolic;
+    ls->numeric_since_symbolic = 0;
     ls->have_symbolic = 1;
     ls->pattern_id = A->pattern_id;
     ls->n = A->n_rows;
@@ -173,6 +199,7 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
     if (rc) return rc; /* stays without a numeric factorisation: the next call retries */
     ++ls->st.n_numeric;
     ++ls->st.refactor_reason[reason];
+    ++ls->numeric_since_symbolic;
     ls->refactor_next = 0;
     ls->have_numeric = 1;
     ls->force_numeric = 0;
@@ -255,6 +282,7 @@ static int apply_factor(void *user, const double *x, double *y, sl_diag *d) {
 }
 
 int sl_linsolve_solve_rtol(sl_linsolve *ls, const sl_csr *A, const double *b, double *x, double rtol, sl_diag *d) {
+  if (A->n_rows == A->n_cols && A->row_ptr) settle_fresh(ls, A);
   if (!(rtol > 0.0) || !ls->reuse.enabled || !ls->have_symbolic || !ls->have_numeric || ls->force_numeric ||
       ls->pattern_id != A->pattern_id || ls->n != A->n_rows || A->n_rows != A->n_cols || !ls->factored ||
       ls->n_factored != A->nnz)

@@ -38,10 +38,11 @@ typedef enum sl_refactor_reason {
   SL_REFACTOR_STAGNATION, /* its convergence rate could not reach the tolerance within the budget */
   SL_REFACTOR_SLOW,       /* the previous reuse needed more than slow_iterations */
   SL_REFACTOR_BREAKDOWN,  /* FGMRES failed (a vector not finite) */
+  SL_REFACTOR_FRESH,      /* after sl_linsolve_drop_numeric (a checkpoint) */
   SL_REFACTOR_N
 } sl_refactor_reason;
 
-/* "first", "pattern", "direct", "forced", "iterations", "stagnation", "slow", "breakdown" */
+/* "first", "pattern", "direct", "forced", "iterations", "stagnation", "slow", "breakdown", "fresh" */
 const char *sl_refactor_reason_name(int reason);
 
 typedef struct sl_linsolve_stats {
@@ -120,6 +121,16 @@ int sl_linsolve_solve(sl_linsolve *ls, const sl_csr *A, const double *b, double 
  * sl_csr_touch). */
 void sl_linsolve_values_changed(sl_linsolve *ls);
 
+/* The next factorisation or solve starts as a new solver would (analysis
+ * and factorisation afresh, no reuse pending), unless the factorisation in
+ * hand is exactly what a new solver would compute for that matrix (the
+ * first after the analysis of the same values: a constant operator stays
+ * factorised once). A run restarted from a checkpoint starts with a new
+ * solver; the run that writes the checkpoint calls this, so that both go
+ * on bit for bit the same (reuse and KLU's refactorisation depend on what
+ * came before). */
+void sl_linsolve_drop_numeric(sl_linsolve *ls);
+
 /* x with |b - A x|_2 <= rtol |b|_2: when only A's values changed since the
  * last factorisation and reuse is on, by FGMRES preconditioned with that
  * factorisation; otherwise (rtol <= 0, reuse off, a new pattern, no
@@ -130,7 +141,7 @@ int sl_linsolve_solve_rtol(sl_linsolve *ls, const sl_csr *A, const double *b, do
 typedef struct sl_linsolve_reuse {
   int enabled;
   int max_iterations;  /* FGMRES budget of one solve (no restart); default 20 */
-  int slow_iterations; /* a reuse needing more refactorises at the next solve; default 10 */
+  int slow_iterations; /* a reuse needing more refactorises at the next solve; default 7 */
 } sl_linsolve_reuse;
 void sl_linsolve_set_reuse(sl_linsolve *ls, const sl_linsolve_reuse *policy);
 sl_linsolve_reuse sl_linsolve_get_reuse(const sl_linsolve *ls);
@@ -147,7 +158,9 @@ const char *sl_linsolve_name(const sl_linsolve *ls);
 const char *sl_linsolve_description(const sl_linsolve *ls);
 const sl_linsolve_stats *sl_linsolve_get_stats(const sl_linsolve *ls);
 /* One line for the run summary, e.g.
- * "umfpack: 1 symbolic 0.012 s, 3 numeric 0.150 s, 40 solves 0.020 s". */
+ * "umfpack: 1 symbolic 0.012 s, 3 numeric 0.150 s, 40 solves 0.020 s" or
+ * "klu (amd ordering): 1 symbolic ..., 13 numeric ..., 159 reused (FGMRES
+ * 7.5 iterations a solve, 0 refactorised) ..., 172 solves ...". */
 void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len);
 
 #endif

@@ -81,7 +81,12 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
       break;
     }
     if (st->iterations == o.max_iterations) break;
-    if ((rc = sl_linsolve_solve_rtol(ls, A, b, du, linear_rtol, d))) break;
+    /* The same absolute accuracy for every correction, |b - A du| <= linear_rtol |b0| (at most 1e-4 of |b|):
+       a later correction, of a residual already reduced, needs fewer digits of its own (the forcing term
+       follows the residual's decrease, Eisenstat & Walker 1996, SIAM J. Sci. Comput. 17:16). */
+    double eta = linear_rtol;
+    if (eta > 0.0 && res > 0.0) eta = fmin(1e-4, fmax(linear_rtol, linear_rtol * st->residual0 / res));
+    if ((rc = sl_linsolve_solve_rtol(ls, A, b, du, eta, d))) break;
     ++st->iterations;
     if (mode == SL_NL_PICARD) ++st->picard_iterations;
     st->correction = norm_inf(du, n_check) / fmax(norm_inf(u, n_check), o.scale);
