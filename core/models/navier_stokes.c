@@ -1015,7 +1015,7 @@ int sl_ns_run(sl_ini *ini, const sl_registry *reg, const sl_ns_run_opts *o, sl_n
       r.prob.traction[r.prob.n_tractions++] = (sl_flow_traction){r.bcs.b[i].name, traction_fn, &r.bcs.b[i]};
     }
   if ((rc = bc_apply(&r.bcs, r.th, &r.prob.bc, 0.0, r.datum, d))) goto out;
-  if ((rc = sl_scene_linsolve(ini, "umfpack", NULL, &r.ls, &linear, d))) goto out;
+  if ((rc = sl_scene_linsolve(ini, sl_linsolve_default_name(r.th->n_dofs), NULL, &r.ls, &linear, d))) goto out;
   r.nopts = (sl_newton_opts){.rtol = tol,
                              .max_iterations = (int)max_it,
                              .picard_only = nonlinear == 1,

@@ -6,6 +6,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "core/util/blas.h"
+
 struct sl_linsolve {
   const sl_linsolve_ops *ops;
   void *backend;
@@ -43,6 +45,12 @@ static const char *const solver_names[] = {"umfpack", "klu", "cholmod"};
 static const sl_linsolve_ops *const solver_ops[] = {&sl_linsolve_umfpack_ops, &sl_linsolve_klu_ops,
                                                     &sl_linsolve_cholmod_ops};
 enum { N_SOLVERS = (int)(sizeof solver_names / sizeof solver_names[0]) };
+
+const char *sl_linsolve_default_name(int32_t n) {
+  const char *blas = sl_blas_description();
+  int reference = !strncmp(blas, "reference", 9) || !strncmp(blas, "none", 4);
+  return n < SL_LINSOLVE_KLU_MAX_UNKNOWNS || reference ? "klu" : "umfpack";
+}
 
 const char *const *sl_linsolve_names(int *n) {
   if (n) *n = N_SOLVERS;

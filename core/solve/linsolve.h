@@ -1,6 +1,7 @@
 /* Direct sparse linear solvers behind one ops table (SUNDIALS style), one
- * backend per SuiteSparse package: "umfpack" (default, general LU), "klu"
- * (LU with cheap refactorisation) and "cholmod" (symmetric positive definite).
+ * backend per SuiteSparse package: "umfpack" (general multifrontal LU), "klu"
+ * (LU with cheap refactorisation) and "cholmod" (symmetric positive definite);
+ * the scenes' default by size and BLAS, sl_linsolve_default_name.
  *
  * The solver remembers the pattern and the values generation of the matrix it
  * factorised: the symbolic analysis runs once per pattern, the numeric
@@ -105,6 +106,17 @@ typedef struct sl_linsolve sl_linsolve;
 int sl_linsolve_create(sl_linsolve **ls, const char *name, sl_diag *d);
 int sl_linsolve_create_ops(sl_linsolve **ls, const sl_linsolve_ops *ops, sl_diag *d);
 void sl_linsolve_destroy(sl_linsolve *ls);
+
+/* The default solver for n unknowns, chosen by measurement (bench_transient_cost,
+ * docs/benchmarks.md): "klu" below SL_LINSOLVE_KLU_MAX_UNKNOWNS, where its
+ * cheaper refactorisations and back-substitutions win (the 2-D scenes with
+ * factorisation reuse: 13-25 % less CPU than UMFPACK), and at every size
+ * when the process runs on the reference BLAS (UMFPACK then takes 3-4 times
+ * longer); "umfpack" from there with an optimised BLAS, whose supernodal
+ * kernels win the large factorisations (the Stokes cavity on 128 x 128
+ * cells, 149 k unknowns: 6.9 s against KLU's 10.5 s; equal at 28 k). */
+enum { SL_LINSOLVE_KLU_MAX_UNKNOWNS = 20000 };
+const char *sl_linsolve_default_name(int32_t n);
 
 /* The names accepted by sl_linsolve_create, for help text. */
 const char *const *sl_linsolve_names(int *n);

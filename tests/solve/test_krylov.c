@@ -11,7 +11,8 @@
  *    with the old factorisation to the tolerance, a far one refactorised
  *    with its reason; counts and reasons add up;
  *  - Newton on a nonlinear problem: the same iterations and the same
- *    solution (to 1e-12) with reuse as with a factorisation per iteration. */
+ *    solution (to 1e-12) with reuse as with a factorisation per iteration;
+ *  - the default solver by size and BLAS. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,6 +20,7 @@
 #include "core/solve/krylov.h"
 #include "core/solve/linsolve.h"
 #include "core/solve/newton.h"
+#include "core/util/blas.h"
 #include "poisson.h"
 #include "testing.h"
 
@@ -339,7 +341,19 @@ static void newton_reuse(void) {
   free(f), free(b);
 }
 
+/* The default solver: KLU for the small systems, UMFPACK for the large unless the BLAS is the reference one. */
+static void default_solver(void) {
+  const char *blas = sl_blas_description();
+  int reference = strncmp(blas, "reference", 9) == 0;
+  printf("default solver: %s at 7 195 unknowns, %s at 149 000 (BLAS: %s)\n", sl_linsolve_default_name(7195),
+         sl_linsolve_default_name(149000), blas);
+  CHECK(strcmp(sl_linsolve_default_name(7195), "klu") == 0);
+  CHECK(strcmp(sl_linsolve_default_name(SL_LINSOLVE_KLU_MAX_UNKNOWNS), reference ? "klu" : "umfpack") == 0);
+  CHECK(strcmp(sl_linsolve_default_name(149000), reference ? "klu" : "umfpack") == 0);
+}
+
 int main(void) {
+  default_solver();
   distinct_eigenvalues();
   unpreconditioned();
   preconditioned();
