@@ -79,7 +79,8 @@ static void print_profile(FILE *f, const sl_ns_result *res, const sl_registry *r
     fprintf(f,
             "%s factorisation reuse: %ld of %ld solves by FGMRES with an older factorisation, %.1f iterations a solve "
             "(at most %d), %ld attempts refactorised; %.3g s in FGMRES\n",
-            p, ls->n_reused, ls->n_solves, (double)ls->n_krylov_iterations / (double)(ls->n_reused + ls->n_krylov_failed),
+            p, ls->n_reused, ls->n_solves,
+            (double)ls->n_krylov_iterations / (double)(ls->n_reused + ls->n_krylov_failed),
             ls->krylov_max, ls->n_krylov_failed, ls->t_krylov);
   if (res->roundoff_accepted > 0)
     fprintf(f, "%s %ld nonlinear solve%s ended with the residual at round-off\n", p, res->roundoff_accepted,

@@ -109,7 +109,8 @@ int sl_fgmres(sl_krylov *k, sl_krylov_apply_fn A, void *A_user, sl_krylov_apply_
         h[i] = t;
       }
       double den = hypot(h[j], h[j + 1]);
-      if (den == 0.0) return sl_diag_set(d, SL_EFAILED, "krylov: singular Hessenberg matrix at iteration %d", total + 1);
+      if (den == 0.0)
+        return sl_diag_set(d, SL_EFAILED, "krylov: singular Hessenberg matrix at iteration %d", total + 1);
       k->cs[j] = h[j] / den, k->sn[j] = h[j + 1] / den;
       h[j] = den, h[j + 1] = 0.0;
       g[j + 1] = -k->sn[j] * g[j];

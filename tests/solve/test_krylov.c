@@ -222,7 +222,8 @@ static void reuse(const char *name) {
   for (int32_t i = 0; i < n; ++i) r[i] -= b[i];
   printf("%s: the diagonal 0.25 %% larger: reused with %ld FGMRES iterations, residual %.2e\n", name,
          st->n_krylov_iterations, norm2(r, n) / norm2(b, n));
-  CHECK(st->n_numeric == 1 && st->n_reused == 1 && st->n_krylov_iterations >= 2 && st->n_krylov_iterations <= pol0.slow_iterations);
+  CHECK(st->n_numeric == 1 && st->n_reused == 1 && st->n_krylov_iterations >= 2 &&
+        st->n_krylov_iterations <= pol0.slow_iterations);
   CHECK(norm2(r, n) <= rtol * norm2(b, n));
   /* the same matrix again: still reused (its own factorisation is older) */
   CHECK(sl_linsolve_solve_rtol(ls, &A, b, x, rtol, &d) == 0 && st->n_reused == 2 && st->n_numeric == 1);
