@@ -797,7 +797,7 @@ static int transient(ns_run *r, const time_cfg *tc, const sl_ns_run_opts *o, dou
   int32_t n = r->th->n_dofs;
   int rc = sl_bdf_init(&b, tc->scheme, n, u, 0.0, d);
   if (rc) return rc;
-  sl_bdf_controller_init(&r->ctl, SL_BDF_CONTROL_PI);
+  sl_bdf_controller_init(&r->ctl, SL_BDF_CONTROL_H211PI);
   double *hist = malloc((size_t)n * sizeof *hist), *pred = malloc((size_t)n * sizeof *pred);
   double *trial = malloc((size_t)n * sizeof *trial), *rate = malloc((size_t)n * sizeof *rate);
   if (!hist || !pred || !trial || !rate) {

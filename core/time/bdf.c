@@ -16,6 +16,7 @@
 #include "core/time/bdf.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -105,11 +106,12 @@ void sl_bdf_accept(sl_bdf *b, const sl_bdf_step *s, const double *u) {
 
 void sl_bdf_controller_init(sl_bdf_controller *c, sl_bdf_control kind) {
   memset(c, 0, sizeof *c);
-  c->safety = 0.8, c->grow_max = 2.0, c->shrink_min = 0.2;
+  c->safety = 0.7, c->grow_max = 2.0, c->shrink_min = 0.2;
   switch (kind) {
   case SL_BDF_CONTROL_ELEMENTARY: c->b1 = 1.0; break;
+  case SL_BDF_CONTROL_PI: c->b1 = 0.7, c->b2 = -0.4; break;       /* Gustafsson 1991 */
   case SL_BDF_CONTROL_H211B: c->b1 = c->b2 = c->a2 = 0.25; break; /* Soderlind 2003, H211b with b = 4 */
-  default: c->b1 = 0.7, c->b2 = -0.4;                             /* Gustafsson 1991 */
+  default: c->b1 = c->b2 = 1.0 / 6.0;                             /* Soderlind 2003, H211PI */
   }
 }
 
@@ -132,6 +134,9 @@ double sl_bdf_controller_accept(sl_bdf_controller *c, const sl_bdf_step *s, doub
   }
   if (!isfinite(ratio)) ratio = grow;
   ratio = clampd(ratio, c->shrink_min, grow);
+  if (getenv("SLUICE_STEP_TRACE"))
+    fprintf(stderr, "  step %ld: BDF%d h %.4g, error %.3g: accepted, next h %.4g\n", c->accepted, s->order, s->h,
+            s->estimated ? err : NAN, s->h * ratio);
   c->err_prev = s->estimated ? e : 0.0;
   c->ratio_prev = ratio;
   c->after_reject = 0;
@@ -150,13 +155,20 @@ double sl_bdf_controller_reject(sl_bdf_controller *c, const sl_bdf_step *s, doub
   c->rej_h = s->h, c->rej_err = err;
   double f = pow(c->safety / err, 1.0 / k);
   if (!isfinite(f)) f = lo;
-  return s->h * clampd(f, lo, 0.9);
+  f = clampd(f, lo, 0.9);
+  if (getenv("SLUICE_STEP_TRACE"))
+    fprintf(stderr, "  step %ld: BDF%d h %.4g, error %.3g: rejected, retry with h %.4g\n", c->accepted + 1, s->order,
+            s->h, err, s->h * f);
+  return s->h * f;
 }
 
 double sl_bdf_controller_fail(sl_bdf_controller *c, const sl_bdf_step *s) {
   ++c->failed;
   c->after_reject = 1;
   c->rej_h = c->rej_err = 0.0;
+  if (getenv("SLUICE_STEP_TRACE"))
+    fprintf(stderr, "  step %ld: BDF%d h %.4g: the nonlinear solve failed, retry with h %.4g\n", c->accepted + 1,
+            s->order, s->h, 0.25 * s->h);
   return 0.25 * s->h;
 }
 
