@@ -13,6 +13,9 @@
 
 const char *sluice_version(void) { return sl_version(); }
 
+_Static_assert(SLUICE_REFACTOR_REASONS == SL_REFACTOR_N, "sluice_linear.refactor_reason has a slot per reason");
+const char *sluice_refactor_reason_name(int k) { return sl_refactor_reason_name(k); }
+
 struct sluice {
   sl_ini *ini;
   sl_registry *reg;
@@ -167,8 +170,21 @@ static void summarise(const sl_run_result *res, sluice_summary *sum) {
   sum->roundoff_accepted = m->roundoff_accepted;
   sum->solves_skipped = m->solves_skipped;
   const sl_linsolve_stats *ls = &m->linear;
-  sum->linear = (sluice_linear){ls->n_symbolic, ls->n_numeric, ls->n_refactor, ls->n_refactor_redo,
-                                ls->n_numeric_skipped, ls->n_solves, ls->t_symbolic, ls->t_numeric, ls->t_solve};
+  sum->linear = (sluice_linear){.n_symbolic = ls->n_symbolic,
+                                .n_numeric = ls->n_numeric,
+                                .n_refactor = ls->n_refactor,
+                                .n_refactor_redo = ls->n_refactor_redo,
+                                .n_numeric_skipped = ls->n_numeric_skipped,
+                                .n_solves = ls->n_solves,
+                                .t_symbolic = ls->t_symbolic,
+                                .t_numeric = ls->t_numeric,
+                                .t_solve = ls->t_solve,
+                                .n_reused = ls->n_reused,
+                                .n_krylov_failed = ls->n_krylov_failed,
+                                .n_krylov_iterations = ls->n_krylov_iterations,
+                                .krylov_max = ls->krylov_max,
+                                .t_krylov = ls->t_krylov};
+  for (int k = 0; k < SLUICE_REFACTOR_REASONS; ++k) sum->linear.refactor_reason[k] = ls->refactor_reason[k];
   sum->assembly = m->assembly, sum->factorisation = res->factorisation, sum->solve = res->solve;
   sum->output = res->output;
   sum->cpu_setup = res->cpu_setup, sum->cpu_flow = m->cpu_flow, sum->cpu_coupled = m->cpu_coupled;

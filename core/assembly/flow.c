@@ -160,7 +160,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
                     const double *force) {
   const sl_fe_values *fv = w->fv;
   int c = fv->cell, nc = th->n_comp, nb = th->vel->dofs_per_cell, np = th->pres->dofs_per_cell;
-  int dim = th->mesh->dim, nv = nc * nb, n = nv + np, axi = o->axisymmetric;
+  int dim = th->mesh->dim, nv = nc * nb, n = nv + np, axi = o->axisymmetric, planar2 = !axi && nc == 2 && dim == 2;
   const int32_t *vd = th->vel->cell_dofs + (size_t)c * nb;
   int matrix = lin == SL_FLOW_NEWTON || lin == SL_FLOW_PICARD, newton = lin == SL_FLOW_NEWTON;
   if (matrix) memset(w->Ke, 0, (size_t)n * n * sizeof *w->Ke);
@@ -254,22 +254,28 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       visc2 = 4.0 * dmq * gam;
       for (int k = 0; k < nv; ++k) s_ia[k] = sym_dot(&Du, &bv[k].D) / gam;
     }
-    double rm = rq * o->mass_coef;
+    double rm = rq * o->mass_coef, w2mu = 2.0 * wq * mq;
     for (int ki = 0; ki < nv; ++ki) {
       const basis_vec *vi = &bv[ki];
       double *row = w->Ke + (size_t)ki * n;
-      double wphi = wq * vi->phi;
-      for (int kj = 0; kj < nv; ++kj) {
+      double wphi = wq * vi->phi, wsi = visc2 != 0.0 ? wq * visc2 * s_ia[ki] : 0.0;
+      /* The symmetric part (viscous, generalized-Newtonian, mass), once per pair and mirrored. Planar with two
+         components, D(phi e_a) has only its 00, 11 and 01 entries. */
+      for (int kj = ki; kj < nv; ++kj) {
         const basis_vec *vj = &bv[kj];
-        double val = 2.0 * mq * sym_dot(&vi->D, &vj->D);
-        if (visc2 != 0.0) val += visc2 * s_ia[ki] * s_ia[kj];
-        val *= wq;
-        /* rho (mass + C + convection) tested with phi_i in direction A_i */
-        double lin_v = (vi->A == vj->A ? rm : 0.0) + rq * C[vi->A][vj->A];
-        if (K && vi->A < dim && vj->A < dim) lin_v += K[2 * vi->A + vj->A];
-        val += wphi * lin_v * vj->phi;
+        double dd = planar2 ? vi->D.v[0] * vj->D.v[0] + vi->D.v[1] * vj->D.v[1] + 2.0 * vi->D.v[3] * vj->D.v[3]
+                            : sym_dot(&vi->D, &vj->D);
+        double val = w2mu * dd;
+        if (wsi != 0.0) val += wsi * s_ia[kj];
+        if (vi->A == vj->A) val += wphi * rm * vj->phi; /* rho mass_coef, tested with phi_i e_A */
         row[kj] += val;
+        if (kj != ki) w->Ke[(size_t)kj * n + ki] += val;
       }
+      if (o->omega != 0.0) /* rho C, antisymmetric */
+        for (int kj = 0; kj < nv; ++kj) row[kj] += wphi * rq * C[vi->A][bv[kj].A] * bv[kj].phi;
+      if (K && vi->A < dim) /* the cell's momentum sink K (in-plane axes; not symmetric) */
+        for (int kj = 0; kj < nv; ++kj)
+          if (bv[kj].A < dim) row[kj] += wphi * K[2 * vi->A + bv[kj].A] * bv[kj].phi;
       for (int k = 0; k < np; ++k) {
         double bval = -wq * psi[k] * vi->div;
         row[nv + k] += bval;

@@ -59,6 +59,20 @@ static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, do
                "skipped (matrix unchanged); %ld solves (%.3g s)\n",
             p, ls->n_symbolic, ls->t_symbolic, ls->n_numeric, ls->t_numeric, ls->n_refactor, ls->n_numeric_skipped,
             ls->n_solves, ls->t_solve);
+  if (ls->n_numeric > 0) {
+    fprintf(f, "%s numeric factorisations by reason:", p);
+    for (int k = 0, first = 1; k < SLUICE_REFACTOR_REASONS; ++k)
+      if (ls->refactor_reason[k] > 0)
+        fprintf(f, "%s %s %ld", first ? "" : ",", sluice_refactor_reason_name(k), ls->refactor_reason[k]), first = 0;
+    fputc('\n', f);
+  }
+  if (ls->n_reused + ls->n_krylov_failed > 0)
+    fprintf(f,
+            "%s factorisation reuse: %ld of %ld solves by FGMRES with an older factorisation, %.1f iterations a solve "
+            "(at most %d), %ld attempts refactorised; %.3g s in FGMRES\n",
+            p, ls->n_reused, ls->n_solves,
+            (double)ls->n_krylov_iterations / (double)(ls->n_reused + ls->n_krylov_failed),
+            ls->krylov_max, ls->n_krylov_failed, ls->t_krylov);
   if (m->solves_skipped > 0)
     fprintf(f, "%s %ld flow solve%s skipped (the flow known: at rest, or at a fixed point)\n", p, m->solves_skipped,
             m->solves_skipped == 1 ? "" : "s");

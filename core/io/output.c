@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "core/io/h5util.h"
+#include "core/util/blas.h"
 #include "core/io/output.h"
 
 static const struct {
@@ -460,6 +461,7 @@ int sl_output_write_provenance(sl_output *o, const sl_provenance *p, sl_diag *d)
   hid_t g = H5Gcreate2(o->file, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), cg = -1;
   if (g < 0) return sl_h5_fail(d, SL_EFAILED, path, "cannot create group", "/provenance");
   int rc = sl_h5_attr_string(g, "sluice_version", p->sluice_version, path, "/provenance", d);
+  if (!rc) rc = sl_h5_attr_string(g, "blas", sl_blas_description(), path, "/provenance", d);
   if (!rc) rc = sl_h5_dataset_string(g, "ini", p->ini_text, path, "/provenance/ini", d);
   if (!rc && (cg = H5Gcreate2(g, "closures", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)) < 0)
     rc = sl_h5_fail(d, SL_EFAILED, path, "cannot create group", "/provenance/closures");

@@ -6,7 +6,7 @@
  *   /mesh/topology              n_cells x nodes_per_cell, I32LE; attribute topology_type, dim
  *   /step_NNNNNN/<field>        n or n x 3, F64LE; attributes centring, components
  *   /step_NNNNNN                attributes time (F64LE), index (I32LE)
- *   /provenance                 attribute sluice_version; dataset ini; closures/closure_NNN
+ *   /provenance                 attributes sluice_version, blas (which BLAS ran); dataset ini; closures/closure_NNN
  *   /checkpoint                 two slots, attribute current: the last complete one
  * After every step the file is flushed and OUT.xmf (next to OUT.h5, same stem)
  * is rewritten atomically (temporary file + rename), so a run killed between

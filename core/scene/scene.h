@@ -41,6 +41,7 @@ typedef struct sl_solver_config {
   double continuation_from;
   long continuation_steps;
   int skip_known; /* skip the solves whose result is known (a flow at rest, at a fixed point) */
+  int reuse;      /* factorisation reuse: 0 auto, 1 never */
 } sl_solver_config;
 
 /* [output] */

@@ -5,13 +5,19 @@
 
 static const char *const orderings[] = {"auto", "amd", "colamd", "metis"};
 
-int sl_scene_linsolve(const sl_scene *sc, sl_linsolve **ls, const char **name, sl_diag *d) {
+int sl_scene_linsolve(const sl_scene *sc, int32_t n, sl_linsolve **ls, const char **name, sl_diag *d) {
   *ls = NULL;
-  int n = 0;
-  const char *const *names = sl_linsolve_names(&n);
-  *name = sc->solver.linear >= 0 && sc->solver.linear < n ? names[sc->solver.linear] : names[0];
+  int n_names = 0;
+  const char *const *names = sl_linsolve_names(&n_names);
+  int which = sc->solver.linear; /* 0: auto, else names[which - 1] */
+  *name = which > 0 && which <= n_names ? names[which - 1] : sl_linsolve_default_name(n);
   int rc = sl_linsolve_create(ls, *name, d);
   if (rc) return rc;
+  if (sc->solver.reuse && (rc = sl_linsolve_set_reuse_name(*ls, "never", d))) {
+    sl_linsolve_destroy(*ls);
+    *ls = NULL;
+    return rc;
+  }
   const sl_key *k = sl_schema_key(sc->schema, "solver", "ordering");
   int given = sl_scene_given(sc, &sc->solver.ordering);
   int ordering = given ? sc->solver.ordering : (k && strcmp(*name, "klu") == 0 ? (int)k->def : 0);

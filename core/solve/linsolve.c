@@ -6,6 +6,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "core/util/blas.h"
+
 struct sl_linsolve {
   const sl_linsolve_ops *ops;
   void *backend;
@@ -20,12 +22,35 @@ struct sl_linsolve {
                        unchanged matrix (a constant operator) is not refactorised */
   int32_t n_factored;
   sl_linsolve_stats st;
+  /* factorisation reuse */
+  sl_linsolve_reuse reuse;
+  int reason;        /* of the next numeric factorisation, when set by the reuse path (else -1) */
+  int refactor_next; /* the last reuse was slow: refactorise at the next solve */
+  int fresh_pending; /* sl_linsolve_drop_numeric was called (see settle_fresh) */
+  int numeric_since_symbolic;
+  sl_krylov kry;
+  double *kry_b;     /* copy of b for in-place solves through FGMRES */
 };
+
+static const sl_linsolve_reuse reuse_defaults = {.enabled = 1, .max_iterations = 20, .slow_iterations = 7};
+
+static const char *const reason_names[SL_REFACTOR_N] = {"first", "pattern",    "direct", "forced",   "iterations",
+                                                        "stagnation", "slow", "breakdown", "fresh"};
+
+const char *sl_refactor_reason_name(int reason) {
+  return reason >= 0 && reason < SL_REFACTOR_N ? reason_names[reason] : "unknown";
+}
 
 static const char *const solver_names[] = {"umfpack", "klu", "cholmod"};
 static const sl_linsolve_ops *const solver_ops[] = {&sl_linsolve_umfpack_ops, &sl_linsolve_klu_ops,
                                                     &sl_linsolve_cholmod_ops};
 enum { N_SOLVERS = (int)(sizeof solver_names / sizeof solver_names[0]) };
+
+const char *sl_linsolve_default_name(int32_t n) {
+  const char *blas = sl_blas_description();
+  int reference = !strncmp(blas, "reference", 9) || !strncmp(blas, "none", 4);
+  return n < SL_LINSOLVE_KLU_MAX_UNKNOWNS || reference ? "klu" : "umfpack";
+}
 
 const char *const *sl_linsolve_names(int *n) {
   if (n) *n = N_SOLVERS;
@@ -43,6 +68,8 @@ int sl_linsolve_create_ops(sl_linsolve **ls, const sl_linsolve_ops *ops, sl_diag
   sl_linsolve *s = calloc(1, sizeof *s);
   if (!s) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", ops->name);
   s->ops = ops;
+  s->reuse = reuse_defaults;
+  s->reason = -1;
   int rc = ops->create(&s->backend, d);
   if (rc) {
     free(s);
@@ -69,6 +96,8 @@ void sl_linsolve_destroy(sl_linsolve *ls) {
   ls->ops->destroy(ls->backend);
   free(ls->work);
   free(ls->factored);
+  sl_krylov_free(&ls->kry);
+  free(ls->kry_b);
   free(ls);
 }
 
@@ -90,18 +119,44 @@ int sl_linsolve_set_ordering(sl_linsolve *ls, const char *name, sl_diag *d) {
 }
 
 void sl_linsolve_values_changed(sl_linsolve *ls) { ls->force_numeric = 1; }
+
+void sl_linsolve_drop_numeric(sl_linsolve *ls) {
+  if (ls && ls->have_symbolic) ls->fresh_pending = 1;
+}
+
+/* After sl_linsolve_drop_numeric, at the next factorisation or solve: start
+ * as a new solver would, unless the factorisation in hand is what a new
+ * solver would compute for A (A's values bitwise those factorised, the
+ * first numeric factorisation after the analysis of those same values: a
+ * constant operator then stays factorised once). */
+static void settle_fresh(sl_linsolve *ls, const sl_csr *A) {
+  if (!ls->fresh_pending) return;
+  ls->fresh_pending = 0;
+  int same = ls->have_numeric && ls->numeric_since_symbolic == 1 && ls->pattern_id == A->pattern_id &&
+             ls->n == A->n_rows && ls->factored && ls->n_factored == A->nnz &&
+             memcmp(ls->factored, A->values, (size_t)A->nnz * sizeof *A->values) == 0;
+  ls->refactor_next = 0;
+  if (same) return;
+  ls->have_symbolic = ls->have_numeric = 0;
+  ls->reason = SL_REFACTOR_FRESH;
+}
 const char *sl_linsolve_name(const sl_linsolve *ls) { return ls->ops->name; }
 const char *sl_linsolve_description(const sl_linsolve *ls) { return ls->ops->description; }
 const sl_linsolve_stats *sl_linsolve_get_stats(const sl_linsolve *ls) { return &ls->st; }
 
 void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len) {
   const sl_linsolve_stats *s = &ls->st;
-  int k = snprintf(buf, len, "%s: %ld symbolic %.3g s, %ld numeric %.3g s", ls->ops->name, s->n_symbolic, s->t_symbolic,
-                   s->n_numeric, s->t_numeric);
+  int k = snprintf(buf, len, "%s%s%s%s: %ld symbolic %.3g s, %ld numeric %.3g s", ls->ops->name,
+                   s->ordering ? " (" : "", s->ordering ? s->ordering : "", s->ordering ? " ordering)" : "",
+                   s->n_symbolic, s->t_symbolic, s->n_numeric, s->t_numeric);
   if (k >= 0 && (size_t)k < len && s->n_numeric_skipped > 0)
     k += snprintf(buf + k, len - (size_t)k, " (%ld skipped: matrix unchanged)", s->n_numeric_skipped);
   if (k >= 0 && (size_t)k < len && s->n_refactor > 0)
     k += snprintf(buf + k, len - (size_t)k, " (%ld refactor, %ld redone)", s->n_refactor, s->n_refactor_redo);
+  if (k >= 0 && (size_t)k < len && s->n_reused + s->n_krylov_failed > 0)
+    k += snprintf(buf + k, len - (size_t)k, ", %ld reused (FGMRES %.1f iterations a solve, %ld refactorised) %.3g s",
+                  s->n_reused, (double)s->n_krylov_iterations / (double)(s->n_reused + s->n_krylov_failed),
+                  s->n_krylov_failed, s->t_krylov);
   if (k >= 0 && (size_t)k < len) snprintf(buf + k, len - (size_t)k, ", %ld solves %.3g s", s->n_solves, s->t_solve);
 }
 
@@ -111,13 +166,18 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "%s: matrix is %d x %d, not square", name, (int)A->n_rows, (int)A->n_cols);
   if (A->n_rows <= 0 || !A->row_ptr) return sl_diag_set(d, SL_EBADINPUT, "%s: empty matrix", name);
 
+  settle_fresh(ls, A);
+  int reason = ls->reason;
+  ls->reason = -1;
   if (!ls->have_symbolic || ls->pattern_id != A->pattern_id || ls->n != A->n_rows) {
+    if (reason != SL_REFACTOR_FRESH) reason = ls->st.n_numeric == 0 ? SL_REFACTOR_FIRST : SL_REFACTOR_PATTERN;
     ls->have_symbolic = ls->have_numeric = 0;
     double t0 = now();
     int rc = ls->ops->symbolic(ls->backend, A, d);
     ls->st.t_symbolic += now() - t0;
     if (rc) return rc;
     ++ls->st.n_symbolic;
+    ls->numeric_since_symbolic = 0;
     ls->have_symbolic = 1;
     ls->pattern_id = A->pattern_id;
     ls->n = A->n_rows;
@@ -132,6 +192,8 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
     stale = 0;
   }
   if (stale) {
+    if (reason < 0) reason = !ls->have_numeric ? SL_REFACTOR_FIRST : ls->force_numeric ? SL_REFACTOR_FORCED
+                                                                                      : SL_REFACTOR_DIRECT;
     ls->have_numeric = 0;
     /* A NaN from a closure would otherwise surface as a misleading "singular". */
     for (int32_t i = 0; i < A->n_rows; ++i)
@@ -144,6 +206,9 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
     ls->st.t_numeric += now() - t0;
     if (rc) return rc; /* stays without a numeric factorisation: the next call retries */
     ++ls->st.n_numeric;
+    ++ls->st.refactor_reason[reason];
+    ++ls->numeric_since_symbolic;
+    ls->refactor_next = 0;
     ls->have_numeric = 1;
     ls->force_numeric = 0;
     ls->values_gen = A->values_gen;
@@ -181,4 +246,104 @@ int sl_linsolve_solve(sl_linsolve *ls, const sl_csr *A, const double *b, double 
       return sl_diag_set(d, SL_EFAILED, "%s: solution is not finite (x[%d] = %g; rcond %.3g)", ls->ops->name, (int)i,
                          x[i], ls->st.rcond);
   return 0;
+}
+
+void sl_linsolve_set_reuse(sl_linsolve *ls, const sl_linsolve_reuse *policy) {
+  ls->reuse = *policy;
+  if (ls->reuse.max_iterations <= 0) ls->reuse.max_iterations = reuse_defaults.max_iterations;
+  if (ls->reuse.slow_iterations <= 0) ls->reuse.slow_iterations = reuse_defaults.slow_iterations;
+  ls->refactor_next = 0;
+}
+
+sl_linsolve_reuse sl_linsolve_get_reuse(const sl_linsolve *ls) { return ls->reuse; }
+
+int sl_linsolve_set_reuse_name(sl_linsolve *ls, const char *name, sl_diag *d) {
+  static const char *const names[] = {"auto", "never"};
+  for (int i = 0; i < 2; ++i)
+    if (strcmp(name, names[i]) == 0) {
+      sl_linsolve_reuse r = reuse_defaults;
+      r.enabled = i == 0;
+      sl_linsolve_set_reuse(ls, &r);
+      return 0;
+    }
+  const char *hint = sl_suggest(name, names, 2);
+  return sl_diag_set(d, SL_EBADINPUT, "unknown factorisation reuse '%s'%s%s%s; known: auto, never", name,
+                     hint ? " (did you mean '" : "", hint ? hint : "", hint ? "'?)" : "");
+}
+
+typedef struct reuse_ctx {
+  sl_linsolve *ls;
+  const sl_csr *A;
+  sl_csr factored; /* A's pattern with the values the factorisation was computed from */
+} reuse_ctx;
+
+static int apply_matrix(void *user, const double *x, double *y, sl_diag *d) {
+  (void)d;
+  sl_csr_matvec(((reuse_ctx *)user)->A, x, y);
+  return 0;
+}
+
+static int apply_factor(void *user, const double *x, double *y, sl_diag *d) {
+  reuse_ctx *c = user;
+  const sl_linsolve_ops *ops = c->ls->ops;
+  return (ops->precond ? ops->precond : ops->solve)(c->ls->backend, &c->factored, x, y, d);
+}
+
+int sl_linsolve_solve_rtol(sl_linsolve *ls, const sl_csr *A, const double *b, double *x, double rtol, sl_diag *d) {
+  if (A->n_rows == A->n_cols && A->row_ptr) settle_fresh(ls, A);
+  if (!(rtol > 0.0) || !ls->reuse.enabled || !ls->have_symbolic || !ls->have_numeric || ls->force_numeric ||
+      ls->pattern_id != A->pattern_id || ls->n != A->n_rows || A->n_rows != A->n_cols || !ls->factored ||
+      ls->n_factored != A->nnz)
+    return sl_linsolve_solve(ls, A, b, x, d);
+  int current = ls->values_gen == A->values_gen && ls->matrix == A && ls->values == A->values;
+  if (current || memcmp(ls->factored, A->values, (size_t)A->nnz * sizeof *A->values) == 0)
+    return sl_linsolve_solve(ls, A, b, x, d); /* the factorisation is that of A: direct */
+  if (ls->refactor_next) {
+    ls->reason = SL_REFACTOR_SLOW;
+    return sl_linsolve_solve(ls, A, b, x, d);
+  }
+  int32_t n = A->n_rows;
+  int m = ls->reuse.max_iterations;
+  if (ls->kry.n != n || ls->kry.m < m) {
+    sl_krylov_free(&ls->kry);
+    free(ls->kry_b);
+    ls->kry_b = NULL;
+    int rc = sl_krylov_init(&ls->kry, n, m, d);
+    if (!rc && !(ls->kry_b = malloc((size_t)n * sizeof *ls->kry_b)))
+      rc = sl_diag_set(d, SL_EFAILED, "%s: out of memory", ls->ops->name);
+    if (rc) {
+      sl_krylov_free(&ls->kry);
+      return rc;
+    }
+  }
+  if (x == b) {
+    memcpy(ls->kry_b, b, (size_t)n * sizeof *b);
+    b = ls->kry_b;
+  }
+  reuse_ctx c = {ls, A, *A};
+  c.factored.values = ls->factored;
+  for (int32_t i = 0; i < n; ++i) x[i] = 0.0;
+  sl_krylov_opts ko = {.rtol = rtol, .restart = m, .max_iterations = m, .predict = 1};
+  sl_krylov_result kr;
+  sl_diag dk;
+  double t0 = now();
+  int rc = sl_fgmres(&ls->kry, apply_matrix, &c, apply_factor, &c, b, x, &ko, &kr, &dk);
+  ls->st.t_krylov += now() - t0;
+  ls->st.t_solve += now() - t0;
+  ls->st.n_krylov_iterations += kr.iterations;
+  if (!rc && kr.status == SL_KRYLOV_CONVERGED) {
+    for (int32_t i = 0; i < n; ++i)
+      if (!isfinite(x[i])) rc = SL_EFAILED;
+    if (!rc) {
+      ++ls->st.n_reused, ++ls->st.n_solves;
+      if (kr.iterations > ls->st.krylov_max) ls->st.krylov_max = kr.iterations;
+      if (kr.iterations > ls->reuse.slow_iterations) ls->refactor_next = 1;
+      return 0;
+    }
+  }
+  /* the old factorisation is too far from A (or FGMRES broke down): factorise A and solve directly */
+  ++ls->st.n_krylov_failed;
+  ls->reason = rc ? SL_REFACTOR_BREAKDOWN
+               : kr.status == SL_KRYLOV_STAGNATED ? SL_REFACTOR_STAGNATION : SL_REFACTOR_ITERATIONS;
+  return sl_linsolve_solve(ls, A, b, x, d);
 }

@@ -1,20 +1,50 @@
 /* Direct sparse linear solvers behind one ops table (SUNDIALS style), one
- * backend per SuiteSparse package: "umfpack" (default, general LU), "klu"
- * (LU with cheap refactorisation) and "cholmod" (symmetric positive definite).
+ * backend per SuiteSparse package: "umfpack" (general multifrontal LU), "klu"
+ * (LU with cheap refactorisation) and "cholmod" (symmetric positive definite);
+ * the scenes' default by size and BLAS, sl_linsolve_default_name.
  *
  * The solver remembers the pattern and the values generation of the matrix it
  * factorised: the symbolic analysis runs once per pattern, the numeric
  * factorisation only when the values changed (or the caller says so). A
  * matrix re-assembled with bitwise the same values (a constant operator of a
  * linear problem) is recognised by comparison with a copy of the factorised
- * values and not factorised again. */
+ * values and not factorised again.
+ *
+ * Factorisation reuse (sl_linsolve_solve_rtol): a caller that can take an
+ * approximate solution, to a relative residual rtol (Newton's corrections),
+ * gets one from FGMRES (core/solve/krylov.h) preconditioned with the last
+ * factorisation when only the matrix values changed since it was computed:
+ * a slowly varying matrix (a Newton Jacobian, one time step to the next)
+ * is then factorised a few times per run instead of at every solve. The
+ * solve is refactorised and done directly when FGMRES does not reach rtol
+ * within its budget or its rate says it will not (the preconditioner has
+ * drifted too far), and at the next solve after one that needed more than
+ * slow_iterations. Why each factorisation was computed is counted. */
 #ifndef SLUICE_SOLVE_LINSOLVE_H
 #define SLUICE_SOLVE_LINSOLVE_H
 
 #include <stdint.h>
 
+#include "core/solve/krylov.h"
 #include "core/solve/sparse.h"
 #include "core/util/diag.h"
+
+/* Why a numeric factorisation was computed (sl_linsolve_stats.refactor_reason). */
+typedef enum sl_refactor_reason {
+  SL_REFACTOR_FIRST = 0,  /* no factorisation yet, or the last one failed */
+  SL_REFACTOR_PATTERN,    /* a new sparsity pattern or ordering */
+  SL_REFACTOR_DIRECT,     /* new values and a direct solve: reuse off, an exact solve asked for, sl_linsolve_factor */
+  SL_REFACTOR_FORCED,     /* sl_linsolve_values_changed */
+  SL_REFACTOR_ITERATIONS, /* FGMRES with the old factorisation used its budget without converging */
+  SL_REFACTOR_STAGNATION, /* its convergence rate could not reach the tolerance within the budget */
+  SL_REFACTOR_SLOW,       /* the previous reuse needed more than slow_iterations */
+  SL_REFACTOR_BREAKDOWN,  /* FGMRES failed (a vector not finite) */
+  SL_REFACTOR_FRESH,      /* after sl_linsolve_drop_numeric (a checkpoint) */
+  SL_REFACTOR_N
+} sl_refactor_reason;
+
+/* "first", "pattern", "direct", "forced", "iterations", "stagnation", "slow", "breakdown", "fresh" */
+const char *sl_refactor_reason_name(int reason);
 
 typedef struct sl_linsolve_stats {
   long n_symbolic;      /* symbolic analyses (orderings) */
@@ -22,10 +52,17 @@ typedef struct sl_linsolve_stats {
   long n_refactor;      /* of those, klu_refactor reusing the old pivots */
   long n_refactor_redo; /* klu_refactor results thrown away for a fresh klu_factor (rcond degraded) */
   long n_numeric_skipped; /* re-assembled matrices found bitwise unchanged: not refactorised */
-  long n_solves;
+  long n_solves; /* systems solved, reused ones included (t_solve: FGMRES included) */
   double t_symbolic, t_numeric, t_solve; /* wall-clock seconds */
   double rcond;                          /* last reciprocal condition estimate (backend's own, crude) */
   const char *ordering; /* the last fill-reducing ordering, where the backend says ("amd", "metis"), else NULL */
+  /* factorisation reuse (sl_linsolve_solve_rtol) */
+  long n_reused;            /* solves answered by FGMRES with an older factorisation */
+  long n_krylov_failed;     /* FGMRES attempts that ended in a refactorisation */
+  long n_krylov_iterations; /* FGMRES iterations in all, failed attempts included */
+  int krylov_max;           /* most iterations of one accepted reuse */
+  long refactor_reason[SL_REFACTOR_N]; /* numeric factorisations by reason; they sum to n_numeric */
+  double t_krylov; /* of t_solve, the wall-clock seconds in FGMRES (its preconditioner solves, failed attempts) */
 } sl_linsolve_stats;
 
 /* A backend. Every function returns 0 or an SL_E* code with d set. The
@@ -45,6 +82,9 @@ typedef struct sl_linsolve_ops {
   /* Optional: the fill-reducing ordering of later symbolic analyses
    * (SL_ORDERING_*); NULL when the backend chooses its own. */
   int (*set_ordering)(void *backend, int ordering, sl_diag *d);
+  /* Optional: as solve, for a preconditioner application (A holds the
+   * factorised values): no iterative refinement. NULL: solve. */
+  int (*precond)(void *backend, const sl_csr *A, const double *b, double *x, sl_diag *d);
 } sl_linsolve_ops;
 
 /* Fill-reducing orderings a backend may be told to use. AUTO is the
@@ -67,6 +107,17 @@ int sl_linsolve_create(sl_linsolve **ls, const char *name, sl_diag *d);
 int sl_linsolve_create_ops(sl_linsolve **ls, const sl_linsolve_ops *ops, sl_diag *d);
 void sl_linsolve_destroy(sl_linsolve *ls);
 
+/* The default solver for n unknowns, chosen by measurement (bench_transient_cost,
+ * docs/transient_cost.md): "klu" below SL_LINSOLVE_KLU_MAX_UNKNOWNS, where its
+ * cheaper refactorisations and back-substitutions win (the 2-D scenes with
+ * factorisation reuse: 13-25 % less CPU than UMFPACK), and at every size
+ * when the process runs on the reference BLAS (UMFPACK then takes 3-4 times
+ * longer); "umfpack" from there with an optimised BLAS, whose supernodal
+ * kernels win the large factorisations (the Stokes cavity on 128 x 128
+ * cells, 149 k unknowns: 6.9 s against KLU's 10.5 s; equal at 28 k). */
+enum { SL_LINSOLVE_KLU_MAX_UNKNOWNS = 20000 };
+const char *sl_linsolve_default_name(int32_t n);
+
 /* The names accepted by sl_linsolve_create, for help text. */
 const char *const *sl_linsolve_names(int *n);
 
@@ -82,6 +133,33 @@ int sl_linsolve_solve(sl_linsolve *ls, const sl_csr *A, const double *b, double 
  * sl_csr_touch). */
 void sl_linsolve_values_changed(sl_linsolve *ls);
 
+/* The next factorisation or solve starts as a new solver would (analysis
+ * and factorisation afresh, no reuse pending), unless the factorisation in
+ * hand is exactly what a new solver would compute for that matrix (the
+ * first after the analysis of the same values: a constant operator stays
+ * factorised once). A run restarted from a checkpoint starts with a new
+ * solver; the run that writes the checkpoint calls this, so that both go
+ * on bit for bit the same (reuse and KLU's refactorisation depend on what
+ * came before). */
+void sl_linsolve_drop_numeric(sl_linsolve *ls);
+
+/* x with |b - A x|_2 <= rtol |b|_2: when only A's values changed since the
+ * last factorisation and reuse is on, by FGMRES preconditioned with that
+ * factorisation; otherwise (rtol <= 0, reuse off, a new pattern, no
+ * factorisation yet, FGMRES failing) as sl_linsolve_solve. */
+int sl_linsolve_solve_rtol(sl_linsolve *ls, const sl_csr *A, const double *b, double *x, double rtol, sl_diag *d);
+
+/* The reuse policy. On by default (it only acts in sl_linsolve_solve_rtol). */
+typedef struct sl_linsolve_reuse {
+  int enabled;
+  int max_iterations;  /* FGMRES budget of one solve (no restart); default 20 */
+  int slow_iterations; /* a reuse needing more refactorises at the next solve; default 7 */
+} sl_linsolve_reuse;
+void sl_linsolve_set_reuse(sl_linsolve *ls, const sl_linsolve_reuse *policy);
+sl_linsolve_reuse sl_linsolve_get_reuse(const sl_linsolve *ls);
+/* "auto" (the defaults) | "never"; SL_EBADINPUT with a did-you-mean otherwise. */
+int sl_linsolve_set_reuse_name(sl_linsolve *ls, const char *name, sl_diag *d);
+
 /* The ordering by name ("auto" | "amd" | "colamd" | "metis"), for the next
  * symbolic analysis. SL_EBADINPUT for an unknown name (with a did-you-mean)
  * or a backend that takes no ordering (umfpack, cholmod). */
@@ -92,7 +170,9 @@ const char *sl_linsolve_name(const sl_linsolve *ls);
 const char *sl_linsolve_description(const sl_linsolve *ls);
 const sl_linsolve_stats *sl_linsolve_get_stats(const sl_linsolve *ls);
 /* One line for the run summary, e.g.
- * "umfpack: 1 symbolic 0.012 s, 3 numeric 0.150 s, 40 solves 0.020 s". */
+ * "umfpack: 1 symbolic 0.012 s, 3 numeric 0.150 s, 40 solves 0.020 s" or
+ * "klu (amd ordering): 1 symbolic ..., 13 numeric ..., 159 reused (FGMRES
+ * 7.5 iterations a solve, 0 refactorised) ..., 172 solves ...". */
 void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len);
 
 #endif

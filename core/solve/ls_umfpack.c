@@ -114,6 +114,18 @@ static int umf_solve(void *backend, const sl_csr *A, const double *b, double *x,
   return 0;
 }
 
+/* A preconditioner application: the factorisation's own solve, without
+ * UMFPACK's iterative refinement (default up to 2 steps, each a product
+ * with A and a solve), which FGMRES does better. */
+static int umf_precond(void *backend, const sl_csr *A, const double *b, double *x, sl_diag *d) {
+  umf_state *s = backend;
+  double irstep = s->control[UMFPACK_IRSTEP];
+  s->control[UMFPACK_IRSTEP] = 0;
+  int rc = umf_solve(backend, A, b, x, d);
+  s->control[UMFPACK_IRSTEP] = irstep;
+  return rc;
+}
+
 static void umf_destroy(void *backend) {
   umf_state *s = backend;
   if (!s) return;
@@ -129,4 +141,5 @@ const sl_linsolve_ops sl_linsolve_umfpack_ops = {
     .numeric = umf_numeric,
     .solve = umf_solve,
     .destroy = umf_destroy,
+    .precond = umf_precond,
 };

@@ -57,6 +57,8 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
   if (o.max_iterations <= 0) o.max_iterations = 30;
   if (o.picard_fallback <= 0) o.picard_fallback = 5;
   if (!(o.min_step > 0)) o.min_step = 1.0 / 64.0;
+  /* a linear problem's one solve is exact: its residual b - A du is computed, not solved for */
+  double linear_rtol = o.linear || o.linear_rtol < 0 ? 0.0 : o.linear_rtol > 0 ? o.linear_rtol : SL_NEWTON_LINEAR_RTOL;
   int32_t n_check = o.n_check > 0 && o.n_check <= n ? o.n_check : n;
   memset(st, 0, sizeof *st);
   nl_ctx c = {A, b, n, fn, user, st};
@@ -79,7 +81,12 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
       break;
     }
     if (st->iterations == o.max_iterations) break;
-    if ((rc = sl_linsolve_solve(ls, A, b, du, d))) break;
+    /* The same absolute accuracy for every correction, |b - A du| <= linear_rtol |b0| (at most 1e-4 of |b|):
+       a later correction, of a residual already reduced, needs fewer digits of its own (the forcing term
+       follows the residual's decrease, Eisenstat & Walker 1996, SIAM J. Sci. Comput. 17:16). */
+    double eta = linear_rtol;
+    if (eta > 0.0 && res > 0.0) eta = fmin(1e-4, fmax(linear_rtol, linear_rtol * st->residual0 / res));
+    if ((rc = sl_linsolve_solve_rtol(ls, A, b, du, eta, d))) break;
     ++st->iterations;
     if (mode == SL_NL_PICARD) ++st->picard_iterations;
     st->correction = norm_inf(du, n_check) / fmax(norm_inf(u, n_check), o.scale);

@@ -15,6 +15,10 @@
  * finds no decrease switches to Picard iterations (robust, linearly
  * convergent) for picard_fallback iterations, then back to Newton.
  *
+ * The corrections are solved to a relative residual linear_rtol, which lets
+ * the linear solver answer with FGMRES preconditioned by an older
+ * factorisation (see linsolve.h) instead of factorising every iteration.
+ *
  * A linear problem (opts.linear) takes one solve, which is exact; the
  * residual it reports is b - A du, computed with the matrix (no second
  * assembly), so A must be the exact operator. When A already holds that
@@ -50,7 +54,17 @@ typedef struct sl_newton_opts {
   int linear;           /* the problem is linear: one solve, then the residual b - A du is reported */
   int matrix_current;   /* with linear: A already holds the operator; assemble the residual only */
   double min_step;      /* smallest line-search factor; default 1/64 */
+  double linear_rtol;   /* each correction's relative residual |b - A du|_2 <= linear_rtol |b|_2, so that
+                           the solver may reuse an older factorisation (sl_linsolve_solve_rtol); default
+                           SL_NEWTON_LINEAR_RTOL; negative: direct solves. A linear problem solves directly. */
 } sl_newton_opts;
+
+/* The default linear_rtol: far below any Newton tolerance, so that the
+ * corrections are those of direct solves to every digit the convergence
+ * test sees: with forcing term eta, the error of inexact Newton contracts
+ * by about eta per iteration on top of Newton's quadratic term (Dembo,
+ * Eisenstat & Steihaug 1982, SIAM J. Numer. Anal. 19:400). */
+#define SL_NEWTON_LINEAR_RTOL 1e-10
 
 enum { SL_NEWTON_HISTORY = 32 };
 

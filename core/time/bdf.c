@@ -16,6 +16,7 @@
 #include "core/time/bdf.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -99,4 +100,82 @@ void sl_bdf_accept(sl_bdf *b, const sl_bdf_step *s, const double *u) {
   b->h_past[1] = b->h_past[0], b->h_past[0] = s->h;
   b->t += s->h;
   if (b->n_past < 3) ++b->n_past;
+}
+
+/* ---- step-size controller (see bdf.h) ----------------------------------------- */
+
+void sl_bdf_controller_init(sl_bdf_controller *c, sl_bdf_control kind) {
+  memset(c, 0, sizeof *c);
+  c->safety = 0.7, c->grow_max = 2.0, c->shrink_min = 0.2;
+  switch (kind) {
+  case SL_BDF_CONTROL_ELEMENTARY: c->b1 = 1.0; break;
+  case SL_BDF_CONTROL_PI: c->b1 = 0.7, c->b2 = -0.4; break;       /* Gustafsson 1991 */
+  case SL_BDF_CONTROL_H211B: c->b1 = c->b2 = c->a2 = 0.25; break; /* Soderlind 2003, H211b with b = 4 */
+  default: c->b1 = c->b2 = 1.0 / 6.0;                             /* Soderlind 2003, H211PI */
+  }
+}
+
+static double clampd(double x, double lo, double hi) { return x < lo ? lo : x > hi ? hi : x; }
+
+double sl_bdf_controller_accept(sl_bdf_controller *c, const sl_bdf_step *s, double err) {
+  ++c->accepted;
+  double k = s->order + 1, q = c->safety;
+  double grow = c->after_reject ? 1.0 : c->grow_max;
+  /* an unestimated step (the first) or an error at round-off: grow as allowed */
+  double e = err > 1e-10 ? err : 1e-10;
+  double ratio;
+  if (!s->estimated) {
+    ratio = grow;
+  } else if (c->err_prev > 0.0 && !c->after_reject) {
+    ratio = pow(q / e, c->b1 / k) * pow(q / c->err_prev, c->b2 / k);
+    if (c->a2 != 0.0 && c->ratio_prev > 0.0) ratio *= pow(c->ratio_prev, -c->a2);
+  } else {
+    ratio = pow(q / e, 1.0 / k);
+  }
+  if (!isfinite(ratio)) ratio = grow;
+  ratio = clampd(ratio, c->shrink_min, grow);
+  if (getenv("SLUICE_STEP_TRACE"))
+    fprintf(stderr, "  step %ld: BDF%d h %.4g, error %.3g: accepted, next h %.4g\n", c->accepted, s->order, s->h,
+            s->estimated ? err : NAN, s->h * ratio);
+  c->err_prev = s->estimated ? e : 0.0;
+  c->ratio_prev = ratio;
+  c->after_reject = 0;
+  c->rej_h = c->rej_err = 0.0;
+  return s->h * ratio;
+}
+
+double sl_bdf_controller_reject(sl_bdf_controller *c, const sl_bdf_step *s, double err) {
+  ++c->rejected;
+  c->after_reject = 1;
+  double k = s->order + 1, lo = c->shrink_min;
+  if (c->rej_h > s->h && c->rej_err > err) { /* rejected again: the exponent the two attempts show */
+    double kappa = log(c->rej_err / err) / log(c->rej_h / s->h);
+    if (isfinite(kappa)) k = clampd(kappa, 0.5, k), lo = 0.02;
+  }
+  c->rej_h = s->h, c->rej_err = err;
+  double f = pow(c->safety / err, 1.0 / k);
+  if (!isfinite(f)) f = lo;
+  f = clampd(f, lo, 0.9);
+  if (getenv("SLUICE_STEP_TRACE"))
+    fprintf(stderr, "  step %ld: BDF%d h %.4g, error %.3g: rejected, retry with h %.4g\n", c->accepted + 1, s->order,
+            s->h, err, s->h * f);
+  return s->h * f;
+}
+
+double sl_bdf_controller_fail(sl_bdf_controller *c, const sl_bdf_step *s) {
+  ++c->failed;
+  c->after_reject = 1;
+  c->rej_h = c->rej_err = 0.0;
+  if (getenv("SLUICE_STEP_TRACE"))
+    fprintf(stderr, "  step %ld: BDF%d h %.4g: the nonlinear solve failed, retry with h %.4g\n", c->accepted + 1,
+            s->order, s->h, 0.25 * s->h);
+  return 0.25 * s->h;
+}
+
+void sl_bdf_controller_save(const sl_bdf_controller *c, double *state) {
+  state[0] = c->err_prev, state[1] = c->ratio_prev, state[2] = c->after_reject;
+}
+
+void sl_bdf_controller_restore(sl_bdf_controller *c, const double *state) {
+  c->err_prev = state[0], c->ratio_prev = state[1], c->after_reject = state[2] != 0.0;
 }

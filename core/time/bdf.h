@@ -70,4 +70,72 @@ double sl_bdf_next_h(const sl_bdf_step *s, double err);
 /* Accepts u as u_{n+1}: shifts the history, t += h. */
 void sl_bdf_accept(sl_bdf *b, const sl_bdf_step *s, const double *u);
 
+/* ---- step-size controller ----------------------------------------------------
+ *
+ * A digital filter on the scaled error estimates (Soderlind 2003, ACM TOMS
+ * 29:1, "Digital filters in adaptive time-stepping", the H211 family):
+ *   h_{n+1} / h_n = (q / e_n)^(b1/k) (q / e_{n-1})^(b2/k) (h_n / h_{n-1})^(-a2)
+ * with e the scaled error of sl_bdf_error (accept when e <= 1), k = order + 1
+ * and q the safety factor: the controller aims at q, below the tolerance,
+ * so that the error's step-to-step noise does not reject.
+ *  - H211PI, b1 = b2 = 1/6 (Soderlind 2003, section 5), the default: a PI
+ *    controller whose two equal weights cancel an error that alternates
+ *    from step to step (a zero of the filter at z = -1); the mixture scenes'
+ *    estimates do (migration_couette's alternate between 0.46 and 0.09 at
+ *    the same step, where the PI controller below rejects 19 % of the steps
+ *    and H211PI 5 %);
+ *  - PI, b1 = 0.7, b2 = -0.4 (Gustafsson 1991, ACM TOMS 17:533): follows a
+ *    trend fastest, and damps the elementary controller's oscillation where
+ *    the step is set by stability (doubles, is rejected, halves, ...);
+ *  - H211b, b1 = b2 = a2 = 1/4: smoother, slower to follow a trend;
+ *  - elementary, b1 = 1: h (q/e)^(1/k).
+ * Safety q = 0.7. The proposal is limited to [shrink_min, grow_max] of the
+ * step, and to no growth right after a rejection. A rejected step (e > 1)
+ * is retried elementarily, h (q/e)^(1/k), at least shrink_min and at most
+ * 0.9 of its size; a failed nonlinear solve with a quarter of it. The first
+ * estimated step, and the first after a rejection or a failure, are
+ * elementary (no trend yet). Measured per scene in docs/transient_cost.md.
+ *
+ * A step rejected again is retried with the exponent its two attempts
+ * show, e ~ h^kappa, kappa = log(e1/e2) / log(h1/h2) in [1/2, k], down to
+ * a fiftieth of the step: where the history is not smooth (a flow starting
+ * from rest, whose past is all zero, so that the relative estimate is
+ * err_factor / tol at any h), the error falls like h, not h^k, and the
+ * elementary retry would need many rejections to find the step.
+ *
+ * SLUICE_STEP_TRACE=1 in the environment prints every decision on stderr. */
+typedef enum sl_bdf_control {
+  SL_BDF_CONTROL_H211PI = 0,
+  SL_BDF_CONTROL_PI,
+  SL_BDF_CONTROL_H211B,
+  SL_BDF_CONTROL_ELEMENTARY
+} sl_bdf_control;
+
+typedef struct sl_bdf_controller {
+  double b1, b2, a2; /* the filter (see above) */
+  double safety;     /* q; default 0.7 */
+  double grow_max, shrink_min;
+  /* state: the last accepted step's scaled error and step ratio (0: none) */
+  double err_prev, ratio_prev;
+  int after_reject;          /* the step being taken follows a rejection or a failure */
+  double rej_h, rej_err;     /* the last rejected attempt of this step (0: none) */
+  long accepted, rejected, failed;
+} sl_bdf_controller;
+
+/* The filter (see above) and the defaults. */
+void sl_bdf_controller_init(sl_bdf_controller *c, sl_bdf_control kind);
+
+/* The state a restart needs to continue as the uninterrupted run does
+ * (SL_BDF_CONTROLLER_STATE values). */
+enum { SL_BDF_CONTROLLER_STATE = 3 };
+void sl_bdf_controller_save(const sl_bdf_controller *c, double *state);
+void sl_bdf_controller_restore(sl_bdf_controller *c, const double *state);
+
+/* After an accepted step with scaled error err: the next step. */
+double sl_bdf_controller_accept(sl_bdf_controller *c, const sl_bdf_step *s, double err);
+/* After a rejected step (err > 1): the step to retry with. */
+double sl_bdf_controller_reject(sl_bdf_controller *c, const sl_bdf_step *s, double err);
+/* After a failed nonlinear solve: the step to retry with. */
+double sl_bdf_controller_fail(sl_bdf_controller *c, const sl_bdf_step *s);
+
 #endif

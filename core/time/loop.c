@@ -26,6 +26,7 @@ int sl_time_loop_init(sl_time_loop *L, const sl_model_info *info, const sl_time_
   L->info = info, L->tc = tc;
   L->h = tc->dt;
   if (info->integrator != SL_INTEGRATE_BDF) return 0;
+  sl_bdf_controller_init(&L->ctl, (sl_bdf_control)tc->controller);
   int order = tc->scheme == SL_SCHEME_STEADY ? 1 : tc->scheme;
   return sl_bdf_init(&L->bdf, order, info->n, info->u, 0.0, d);
 }
@@ -60,6 +61,8 @@ int sl_time_loop_restore(sl_time_loop *L, const sl_checkpoint *ck, sl_diag *d) {
     if (L->tc->scheme == SL_SCHEME_STEADY) return 0; /* a steady solve starts from the state */
     const sl_checkpoint_array *hp = sl_checkpoint_find(ck, "h_past");
     if (hp && hp->n == 2) L->bdf.h_past[0] = hp->data[0], L->bdf.h_past[1] = hp->data[1];
+    const sl_checkpoint_array *sc = sl_checkpoint_find(ck, "step_control"); /* steps go on as the run's did */
+    if (sc && sc->n == SL_BDF_CONTROLLER_STATE) sl_bdf_controller_restore(&L->ctl, sc->data);
     L->bdf.n_past = (int)np, L->bdf.t = ck->time;
   }
   L->t = ck->time, L->h = ck->dt, L->step = (long)ck->step;
@@ -76,7 +79,8 @@ static int write_state(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_
   if (!rc) rc = sl_output_end_step(out, d);
   if (!rc) {
     sl_checkpoint_array arr[MAX_ARRAYS];
-    int na = ops->checkpoint ? ops->checkpoint(self, arr, MAX_ARRAYS - 4) : 0;
+    int na = ops->checkpoint ? ops->checkpoint(self, arr, MAX_ARRAYS - 5) : 0;
+    double ctl[SL_BDF_CONTROLLER_STATE];
     sl_checkpoint ck = {.time = t, .dt = dt_next, .step = L->step};
     if (history) {
       for (int k = 0; k < history->n_past; ++k) {
@@ -86,6 +90,9 @@ static int write_state(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_
       }
       snprintf(arr[na].name, sizeof arr[na].name, "h_past");
       arr[na].n = 2, arr[na].data = history->h_past, ++na;
+      sl_bdf_controller_save(&L->ctl, ctl);
+      snprintf(arr[na].name, sizeof arr[na].name, "step_control");
+      arr[na].n = SL_BDF_CONTROLLER_STATE, arr[na].data = ctl, ++na;
       snprintf(ck.int_names[ck.n_ints], SL_CHECKPOINT_NAME_MAX, "n_past");
       ck.ints[ck.n_ints++] = history->n_past;
     }
@@ -183,7 +190,7 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
     }
     if (nrc != 0 || err > 1.0) {
       L->rejected++;
-      h = nrc ? 0.25 * hh : sl_bdf_next_h(&s, err);
+      h = nrc ? sl_bdf_controller_fail(&L->ctl, &s) : sl_bdf_controller_reject(&L->ctl, &s, err);
       limit_count[coupled_failed ? 5 : nrc ? 1 : 0]++;
       if (nrc < 0) {
         rc = sl_diag_set(d, -nrc, "%s", dn.msg);
@@ -208,7 +215,7 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
     }
     ++step, ++steps_here;
     L->step = step;
-    double h_next = tc->adaptive ? sl_bdf_next_h(&s, err) : tc->dt;
+    double h_next = tc->adaptive ? sl_bdf_controller_accept(&L->ctl, &s, err) : tc->dt;
     if (h_next > tc->dt_max) h_next = tc->dt_max, limit = 2;
     if (limit != 3) h = h_next; /* a step shortened to hit the end keeps the proposal */
     limit_count[limit]++;

@@ -12,6 +12,7 @@ typedef struct sl_time_config {
   int adaptive;
   double dt_min, dt_max; /* resolved by the scene: dt_min defaults to dt 1e-6, dt_max to end/10 (adaptive) or dt */
   long max_steps;        /* steps of this run before it stops with a checkpoint */
+  int controller;        /* adaptive BDF: the step controller, sl_bdf_control (core/time/bdf.h) */
   double every;          /* output interval, s (0: the start and the end only) */
 } sl_time_config;
 

@@ -85,9 +85,20 @@ typedef struct sluice_run_opts {
   struct sluice_summary *live;      /* when not NULL: kept up to date before each progress call */
 } sluice_run_opts;
 
+/* Why a numeric factorisation was computed: sluice_refactor_reason_name(k) for k < SLUICE_REFACTOR_REASONS
+ * ("first", "pattern", "direct", "forced", "iterations", "stagnation", "slow", "breakdown", "fresh"). */
+#define SLUICE_REFACTOR_REASONS 9
+const char *sluice_refactor_reason_name(int k);
+
 typedef struct sluice_linear {
   long n_symbolic, n_numeric, n_refactor, n_refactor_redo, n_numeric_skipped, n_solves;
   double t_symbolic, t_numeric, t_solve; /* wall seconds */
+  /* factorisation reuse: solves by FGMRES with an older factorisation, attempts that ended in a
+   * refactorisation, their iterations, the most of one accepted reuse, wall seconds in FGMRES */
+  long n_reused, n_krylov_failed, n_krylov_iterations;
+  int krylov_max;
+  double t_krylov;
+  long refactor_reason[SLUICE_REFACTOR_REASONS]; /* numeric factorisations by reason; they sum to n_numeric */
 } sluice_linear;
 
 /* What a run did. */

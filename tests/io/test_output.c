@@ -13,6 +13,7 @@
 #include <hdf5.h>
 
 #include "core/io/output.h"
+#include "core/util/blas.h"
 #include "io_util.h"
 #include "testing.h"
 
@@ -146,6 +147,9 @@ static void test_provenance(void) {
   CHECK(sl_output_read_text(path, "/provenance/ini", &s, &d) == 0 && s && strcmp(s, ini) == 0);
   free(s);
   CHECK(sl_output_read_text(path, "/provenance@sluice_version", &s, &d) == 0 && s && strcmp(s, "0.1.0") == 0);
+  free(s);
+  /* the BLAS the process runs on ("none loaded" here: this program calls no solver) */
+  CHECK(sl_output_read_text(path, "/provenance@blas", &s, &d) == 0 && s && strcmp(s, sl_blas_description()) == 0);
   free(s);
   CHECK(sl_output_read_text(path, "/provenance/closures/closure_000@library", &s, &d) == 0 && s &&
         strcmp(s, "/opt/x/rz.so") == 0);

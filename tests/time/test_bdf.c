@@ -5,7 +5,13 @@
  *    for several step ratios;
  *  - adaptive runs: controlling the local error per step to tol makes the
  *    global error scale as tol^(p/(p+1)) and the step count as
- *    tol^(-1/(p+1)). */
+ *    tol^(-1/(p+1));
+ *  - the step controller (sl_bdf_controller): the same scaling with each
+ *    filter; on a problem whose step is set by the stability of a lagged
+ *    (explicit) stiff term, the filters reject fewer steps than the
+ *    elementary controller; a step whose error falls like h (a
+ *    non-smooth history) is found in three retries; the saved state
+ *    continues the proposals exactly. */
 #include <math.h>
 #include <stdio.h>
 
@@ -154,9 +160,129 @@ static void adaptive(void) {
   }
 }
 
+/* ---- the step controller ----------------------------------------------------------- */
+
+static const char *const control_names[4] = {"H211PI", "PI", "H211b", "elementary"};
+
+/* Adaptive integration to t_end with the controller; the lagged term -mu (y_n - g(t_n)) is explicit (mu = 0:
+ * none). Returns the final error. */
+static double run_controlled(sl_bdf_control kind, int order, double tol, double mu, double t_end, int *steps,
+                             int *rejected) {
+  sl_bdf b;
+  double y = exact(0.0), hist, pred;
+  if (sl_bdf_init(&b, order, 1, &y, 0.0, NULL)) return NAN;
+  sl_bdf_controller c;
+  sl_bdf_controller_init(&c, kind);
+  double h = 1e-4;
+  *steps = *rejected = 0;
+  while (b.t < t_end - 1e-12) {
+    h = fmin(h, t_end - b.t);
+    sl_bdf_step s;
+    sl_bdf_prepare(&b, h, &s, &hist, &pred);
+    double t = b.t + h, yn = b.past[0][0];
+    /* the exact solution of y' = lambda (y - g) + g' - mu (y - g) from y(0) = g(0) is g */
+    double ynew = (-hist - lambda * g(t) + dg(t) - mu * (yn - g(b.t))) / (s.mass_coef - lambda);
+    if (mu == 0.0) ynew = stage(&s, hist, t);
+    double err = sl_bdf_error(&s, &ynew, &pred, 1, tol, 1e-12);
+    if (err > 1.0) {
+      h = sl_bdf_controller_reject(&c, &s, err);
+      ++*rejected;
+      continue;
+    }
+    sl_bdf_accept(&b, &s, &ynew);
+    h = sl_bdf_controller_accept(&c, &s, err);
+    ++*steps;
+  }
+  CHECK(c.accepted == *steps && c.rejected == *rejected && c.failed == 0);
+  double e = fabs(b.past[0][0] - (mu == 0.0 ? exact(b.t) : g(b.t)));
+  sl_bdf_free(&b);
+  return e;
+}
+
+static void controlled(void) {
+  for (int kind = 0; kind < 4; ++kind) {
+    double e[3];
+    int n[3], rej[3];
+    for (int k = 0; k < 3; ++k) {
+      e[k] = run_controlled(kind, 2, 1e-4 * pow(0.1, k), 0.0, 3.0, &n[k], &rej[k]);
+      printf("BDF2, %s control, tol %.0e: %d steps, %d rejected, final error %.3e\n", control_names[kind],
+             1e-4 * pow(0.1, k), n[k], rej[k], e[k]);
+      CHECK_MSG(10 * rej[k] <= n[k], "%s: %d rejections in %d steps of a smooth problem", control_names[kind], rej[k],
+                n[k]);
+      if (k > 0) {
+        double growth = (double)n[k] / n[k - 1], expect = pow(10.0, 1.0 / 3.0);
+        CHECK_MSG(growth > 0.7 * expect && growth < 1.5 * expect, "%s: step growth %.2f", control_names[kind], growth);
+        CHECK(e[k] < e[k - 1]);
+      }
+    }
+    double ratio = e[0] / e[2], expect = pow(100.0, 2.0 / 3.0);
+    CHECK_MSG(ratio > expect / 1.3 && ratio < expect * 1.3, "%s: error ratio %.2f over a 100-fold tolerance change",
+              control_names[kind], ratio);
+  }
+  /* A lagged stiff term (mu = 100): stable while h mu stays below about 2, so the step is set by stability,
+     where the elementary controller grows the step into instability, is rejected, shrinks, grows again. */
+  int n[4], rej[4];
+  double e[4];
+  for (int kind = 0; kind < 4; ++kind) {
+    e[kind] = run_controlled(kind, 2, 1e-4, 100.0, 10.0, &n[kind], &rej[kind]);
+    printf("BDF2 with a lagged stiff term, %s control: %d steps, %d rejected (%.0f %%), error %.2e\n",
+           control_names[kind], n[kind], rej[kind], 100.0 * rej[kind] / (n[kind] + rej[kind]), e[kind]);
+  }
+  CHECK_MSG(4 * rej[1] <= 3 * rej[3] && 4 * rej[2] <= 3 * rej[3], "rejections: PI %d, H211b %d, elementary %d", rej[1],
+            rej[2], rej[3]);
+}
+
+/* A step whose error goes as 400 (h / 2e-3): the retries with the observed exponent find it in three; the
+ * elementary retry (h^(1/2) for BDF1, at least a fifth of the step) would take six. */
+static void retry_exponent(void) {
+  sl_bdf_controller c;
+  sl_bdf_controller_init(&c, SL_BDF_CONTROL_PI);
+  sl_bdf_step s = {.order = 1, .estimated = 1, .h = 2e-3};
+  int tries = 0;
+  double err;
+  while ((err = 400.0 * s.h / 2e-3) > 1.0 && tries < 20) s.h = sl_bdf_controller_reject(&c, &s, err), ++tries;
+  int elementary = 0;
+  for (double h = 2e-3; 400.0 * h / 2e-3 > 1.0 && elementary < 20; ++elementary)
+    h *= fmin(0.9, fmax(0.2, pow(0.8 / (400.0 * h / 2e-3), 0.5)));
+  printf("retries of a step whose error falls like h: %d (elementary: %d), accepted at h = %.3g, error %.3f\n", tries,
+         elementary, s.h, err);
+  CHECK(tries == 3 && elementary == 6 && err > 0.1);
+  /* after the rejections: no growth; an unestimated step grows by grow_max */
+  CHECK(sl_bdf_controller_accept(&c, &s, err) <= s.h);
+  sl_bdf_step first = {.order = 1, .estimated = 0, .h = 1e-3};
+  CHECK(sl_bdf_controller_accept(&c, &first, 0.0) == c.grow_max * first.h);
+  CHECK(sl_bdf_controller_fail(&c, &first) == 0.25 * first.h && c.failed == 1);
+}
+
+/* The saved state continues the proposals exactly (a restart). */
+static void controller_state(void) {
+  sl_bdf_controller a, b;
+  sl_bdf_controller_init(&a, SL_BDF_CONTROL_H211B);
+  sl_bdf_step s = {.order = 2, .estimated = 1, .h = 0.01};
+  const double errs[] = {0.3, 0.5, 0.2, 1.7, 0.6, 0.4, 0.45};
+  double state[SL_BDF_CONTROLLER_STATE], ha = 0.0, hb = 0.0;
+  for (int k = 0; k < 7; ++k) {
+    if (k == 4) {
+      sl_bdf_controller_save(&a, state);
+      sl_bdf_controller_init(&b, SL_BDF_CONTROL_H211B);
+      sl_bdf_controller_restore(&b, state);
+    }
+    sl_bdf_step sb = s;
+    ha = errs[k] > 1.0 ? sl_bdf_controller_reject(&a, &s, errs[k]) : sl_bdf_controller_accept(&a, &s, errs[k]);
+    if (k >= 4) {
+      hb = errs[k] > 1.0 ? sl_bdf_controller_reject(&b, &sb, errs[k]) : sl_bdf_controller_accept(&b, &sb, errs[k]);
+      CHECK_MSG(ha == hb, "step %d: %.17g, restored %.17g", k, ha, hb);
+    }
+    s.h = ha;
+  }
+}
+
 int main(void) {
   orders();
   estimates();
   adaptive();
+  controlled();
+  retry_exponent();
+  controller_state();
   return sl_test_summary();
 }

@@ -525,6 +525,8 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
 }
 
 int sl_flow_checkpoint(sl_flow *f, sl_checkpoint_array *a, int max) {
+  /* a restart starts with a fresh factorisation: so does the run that goes on, bit for bit the same */
+  sl_linsolve_drop_numeric(f->ls);
   if (max < 1) return 0;
   snprintf(a[0].name, sizeof a[0].name, "newton_scale"); /* a restart tests convergence as the run did */
   a[0].n = 2, a[0].data = f->newton_scale;
@@ -759,7 +761,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
       f->prob.traction[f->prob.n_tractions++] = (sl_flow_traction){f->bcs.b[i].name, traction_fn, &f->bcs.b[i]};
     }
   if ((rc = bc_apply(&f->bcs, f->th, &f->prob.bc, 0.0, f->datum, d))) goto fail;
-  if ((rc = sl_scene_linsolve(sc, &f->ls, &f->linear, d))) goto fail;
+  if ((rc = sl_scene_linsolve(sc, f->th->n_dofs, &f->ls, &f->linear, d))) goto fail;
   f->nopts = (sl_newton_opts){.rtol = sc->solver.nonlinear_tolerance,
                               .max_iterations = (int)sc->solver.max_iterations,
                               .picard_only = sc->solver.nonlinear == 1,

@@ -47,6 +47,10 @@ static const sl_key time_keys[] = {
      .min = 1e-14, .max = 1.0, .help = "local error tolerance of adaptive steps (relative to the largest velocity)"},
     {.section = "time", .name = "adaptive", .type = SL_KEY_BOOL, SL_AT_SCENE(time.adaptive), .def = 1,
      .help = "adapt the step to the local error estimate"},
+    {.section = "time", .name = "controller", .type = SL_KEY_CHOICE, SL_AT_SCENE(time.controller),
+     .choices = "h211pi|pi|h211b|elementary",
+     .help = "the adaptive step's controller: digital filters of the error estimates (Soderlind 2003; PI: "
+             "Gustafsson 1991)"},
     {.section = "time", .name = "dt_min", .type = SL_KEY_REAL, SL_AT_SCENE(time.dt_min), .min = 0.0, .max = 1e9,
      .units = "s", .def_doc = "dt x 1e-6", .help = "smallest step before the run gives up"},
     {.section = "time", .name = "dt_max", .type = SL_KEY_REAL, SL_AT_SCENE(time.dt_max), .min = 1e-15, .max = 1e12,
@@ -58,7 +62,12 @@ TABLE(sl_flow_keys_time, time_keys);
 
 static const sl_key solver_keys[] = {
     {.section = "solver", .name = "linear", .type = SL_KEY_CHOICE, SL_AT_SCENE(solver.linear),
-     .choices = SL_SCENE_LINEAR_CHOICES, .help = "the sparse direct solver"},
+     .choices = SL_SCENE_LINEAR_CHOICES,
+     .help = "the sparse direct solver (auto: klu below 20 000 unknowns or on the reference BLAS, else umfpack)"},
+    {.section = "solver", .name = "reuse", .type = SL_KEY_CHOICE, SL_AT_SCENE(solver.reuse),
+     .choices = SL_SCENE_REUSE_CHOICES,
+     .help = "Newton's corrections by FGMRES preconditioned with an older factorisation (auto) or a factorisation "
+             "per changed matrix (never)"},
     {.section = "solver", .name = "ordering", .type = SL_KEY_CHOICE, SL_AT_SCENE(solver.ordering),
      .choices = SL_SCENE_ORDERING_CHOICES,
      .help = "klu's fill-reducing ordering (auto: AMD, METIS from 30 000 unknowns)"},

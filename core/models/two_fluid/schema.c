@@ -150,7 +150,7 @@ static const sl_key plane_keys[] = {
      .def_list = (const double[]){0.0, -9.81}, .n_def = 2, .units = "m s^-2", .help = "gravity (x, y)"},
     {.section = "flow", .name = "convection", .type = SL_KEY_BOOL, SL_AT_SCENE(flow.convection),
      .help = "the phases' convective acceleration rho alpha (u.grad)u"},
-    {.section = "solver", .name = "linear", .type = SL_KEY_CHOICE, SL_AT_SCENE(solver.linear), .def = 1,
+    {.section = "solver", .name = "linear", .type = SL_KEY_CHOICE, SL_AT_SCENE(solver.linear), .def = 2,
      .choices = SL_SCENE_LINEAR_CHOICES, .help = "the sparse direct solver of the coupled system"},
     {.section = "solver", .name = "ordering", .type = SL_KEY_CHOICE, SL_AT_SCENE(solver.ordering), .def = 2,
      .choices = SL_SCENE_ORDERING_CHOICES, .help = "klu's fill-reducing ordering"},

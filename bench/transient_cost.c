@@ -1,0 +1,298 @@
+/* What a run of the shipped 2-D scenes costs, and what it cost before:
+ * CPU seconds, accepted and rejected steps, Newton iterations, numeric
+ * factorisations and reused solves, per scene and per variant, the
+ * variants interleaved round by round (other jobs on the machine load them
+ * alike) and each the fastest of --repeat R rounds.
+ *
+ * The variants run `sluice run` as a child process (its CPU time from
+ * wait4, user + system) and read its summary lines:
+ *   after          this build's sluice as it is (the defaults);
+ *   umfpack        ... with [solver] linear = umfpack;
+ *   klu            ... with [solver] linear = klu;
+ *   no reuse       ... with [solver] reuse = never (a factorisation per changed matrix);
+ *   before         --before BIN: another build (e.g. of the commit before the change), with its defaults;
+ *   before, ref. BLAS  the same with --reference-blas DIR first on LD_LIBRARY_PATH (Debian's reference
+ *                  libblas.so.3, e.g. /usr/lib/x86_64-linux-gnu/blas).
+ * The cases: boycott to t = 0.1 and 0.8 (its 24 x 32 mesh), spinup to t = 25
+ * on the mesh of its test (48 x 24, nonlinear tolerance 1e-6), the Bingham
+ * cavity's continuation (steady), wave_bed as shipped (two wave periods),
+ * the Re = 100 cavity (steady Newton) and the Stokes cavity on 128 x 128
+ * cells (one solve, 149 k unknowns); --quick leaves out boycott to 0.8,
+ * spinup and wave_bed.
+ *
+ *   bench_transient_cost [SOURCE_DIR] [--before BIN [--before-label TEXT]] [--reference-blas DIR]
+ *                        [--repeat R] [--quick] [--case NAME]... [--variant NAME]...
+ *                        [--markdown PATH [--append]]
+ *
+ * A markdown table on stdout (and in --markdown PATH, e.g. docs/transient_cost.md): per case and variant the
+ * counts, the CPU time and its ratio to the first variant of the case (before, where given); --append adds
+ * the table to PATH under a heading of its own (a second run with other cases or repeats). Progress on
+ * stderr. The exit status is 1 when a run failed. */
+#define _DEFAULT_SOURCE /* mkstemp, setenv, wait4 */
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/time.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "bench_machine.h"
+
+enum { MAX_SETS = 8, MAX_VARIANTS = 8, MAX_CASES = 8 };
+
+typedef struct bench_case {
+  const char *name, *scene, *what;
+  const char *sets[MAX_SETS];
+  int quick; /* in --quick */
+} bench_case;
+
+static const bench_case cases[] = {
+    {"boycott_0.1", "boycott", "boycott to t = 0.1, 24 x 32 cells", {"time.end=0.1", NULL}, 1},
+    {"boycott_0.8", "boycott", "boycott to t = 0.8, 24 x 32 cells", {"time.end=0.8", NULL}, 0},
+    {"spinup_25", "spinup", "spinup to t = 25, 48 x 24 cells (its test's)",
+     {"time.end=25", "mesh.cells=48,24", "solver.nonlinear_tolerance=1e-6", NULL}, 0},
+    {"bingham_cavity", "bingham_cavity", "bingham_cavity, steady continuation in eps, 32 x 32 cells", {NULL}, 1},
+    {"wave_bed", "wave_bed", "wave_bed as shipped, two wave periods, 32 x 24 cells", {NULL}, 0},
+    {"cavity_re100", "cavity_re100", "cavity_re100, steady Newton, 32 x 32 cells", {NULL}, 1},
+    {"cavity_stokes_128", "cavity_stokes", "cavity_stokes, one direct solve, 128 x 128 cells",
+     {"mesh.cells=128,128", NULL}, 1},
+};
+enum { N_CASES = (int)(sizeof cases / sizeof cases[0]) };
+
+typedef struct variant {
+  const char *name;
+  const char *set; /* an override, or NULL */
+  int before;      /* runs --before BIN */
+  int ref_blas;    /* with --reference-blas first on LD_LIBRARY_PATH */
+} variant;
+
+static const variant variants[] = {
+    {"before, ref. BLAS", NULL, 1, 1},
+    {"before", NULL, 1, 0},
+    {"no reuse", "solver.reuse=never", 0, 0},
+    {"umfpack", "solver.linear=umfpack", 0, 0},
+    {"klu", "solver.linear=klu", 0, 0},
+    {"after", NULL, 0, 0},
+};
+enum { N_VARIANTS = (int)(sizeof variants / sizeof variants[0]) };
+
+typedef struct result {
+  int ok, steps_known;
+  double cpu;
+  long steps, rejected, newton, numeric, reused;
+  char linear[32], why[256];
+} result;
+
+/* The summary lines of `sluice run` (core/cli/progress.c, cmd_run.c). */
+static void parse(const char *text, result *r) {
+  const char *p = strstr(text, "sluice: ");
+  for (; p; p = strstr(p + 1, "sluice: ")) {
+    long a, b, c;
+    if (sscanf(p, "sluice: %ld steps (%ld rejected), %ld", &a, &b, &c) == 3 ||
+        sscanf(p, "sluice: %ld step (%ld rejected), %ld", &a, &b, &c) == 3) {
+      r->steps = a, r->rejected = b, r->newton = c, r->steps_known = 1;
+    }
+    if (!strncmp(p, "sluice: output ", 15)) {
+      const char *q = strchr(p, '(');
+      if (q) {
+        sscanf(q + 1, "%31[a-z]", r->linear);
+        /* "N numeric", "N reused": the count before the word */
+        const char *words[2] = {" numeric", " reused"};
+        long *into[2] = {&r->numeric, &r->reused};
+        for (int w = 0; w < 2; ++w) {
+          const char *s = strstr(q, words[w]);
+          if (!s) continue;
+          while (s > q && s[-1] >= '0' && s[-1] <= '9') --s;
+          *into[w] = strtol(s, NULL, 10);
+        }
+      }
+    }
+  }
+}
+
+/* Runs bin with args, stderr and stdout into a temporary file; CPU from wait4. */
+static int run(const char *bin, char *const *args, const char *ld_path, result *r) {
+  char log[] = "/tmp/sluice_bench_transient_XXXXXX";
+  int fd = mkstemp(log);
+  if (fd < 0) {
+    snprintf(r->why, sizeof r->why, "mkstemp: %s", strerror(errno));
+    return -1;
+  }
+  fflush(NULL);
+  pid_t pid = fork();
+  if (pid < 0) {
+    snprintf(r->why, sizeof r->why, "fork: %s", strerror(errno));
+    close(fd), unlink(log);
+    return -1;
+  }
+  if (pid == 0) {
+    dup2(fd, 1), dup2(fd, 2);
+    if (ld_path) {
+      const char *old = getenv("LD_LIBRARY_PATH");
+      char buf[4096];
+      snprintf(buf, sizeof buf, "%s%s%s", ld_path, old ? ":" : "", old ? old : "");
+      setenv("LD_LIBRARY_PATH", buf, 1);
+    }
+    execv(bin, args);
+    _exit(127);
+  }
+  close(fd);
+  int status = 0;
+  struct rusage ru;
+  while (wait4(pid, &status, 0, &ru) < 0)
+    if (errno != EINTR) {
+      snprintf(r->why, sizeof r->why, "wait4: %s", strerror(errno));
+      unlink(log);
+      return -1;
+    }
+  r->cpu = (double)ru.ru_utime.tv_sec + 1e-6 * (double)ru.ru_utime.tv_usec + (double)ru.ru_stime.tv_sec +
+           1e-6 * (double)ru.ru_stime.tv_usec;
+  FILE *f = fopen(log, "r");
+  char *text = NULL;
+  size_t n = 0;
+  if (f) {
+    fseek(f, 0, SEEK_END);
+    long len = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    text = calloc((size_t)(len > 0 ? len : 0) + 1, 1);
+    if (text && len > 0) n = fread(text, 1, (size_t)len, f);
+    fclose(f);
+  }
+  unlink(log);
+  if (text) text[n] = 0;
+  r->ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  if (text) parse(text, r);
+  if (!r->ok) {
+    const char *e = text ? strstr(text, "error") : NULL;
+    snprintf(r->why, sizeof r->why, "exit status %d%s%.200s", WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+             e ? ": " : "", e ? e : "");
+  } else if (!r->steps_known) {
+    r->ok = 0;
+    snprintf(r->why, sizeof r->why, "no summary line");
+  }
+  free(text);
+  return r->ok ? 0 : -1;
+}
+
+int main(int argc, char **argv) {
+  const char *src = SLUICE_SOURCE_DIR, *before = NULL, *before_label = NULL, *ref_blas = NULL, *markdown = NULL;
+  int repeat = 2, quick = 0, append = 0, n_case_sel = 0, n_var_sel = 0;
+  const char *case_sel[MAX_CASES], *var_sel[MAX_VARIANTS];
+  for (int i = 1; i < argc; ++i) {
+    if (!strcmp(argv[i], "--before") && i + 1 < argc) before = argv[++i];
+    else if (!strcmp(argv[i], "--before-label") && i + 1 < argc) before_label = argv[++i];
+    else if (!strcmp(argv[i], "--reference-blas") && i + 1 < argc) ref_blas = argv[++i];
+    else if (!strcmp(argv[i], "--repeat") && i + 1 < argc) repeat = atoi(argv[++i]);
+    else if (!strcmp(argv[i], "--markdown") && i + 1 < argc) markdown = argv[++i];
+    else if (!strcmp(argv[i], "--quick")) quick = 1;
+    else if (!strcmp(argv[i], "--append")) append = 1;
+    else if (!strcmp(argv[i], "--case") && i + 1 < argc && n_case_sel < MAX_CASES)
+      case_sel[n_case_sel++] = argv[++i];
+    else if (!strcmp(argv[i], "--variant") && i + 1 < argc && n_var_sel < MAX_VARIANTS)
+      var_sel[n_var_sel++] = argv[++i];
+    else if (argv[i][0] != '-') src = argv[i];
+    else {
+      fprintf(stderr, "usage: bench_transient_cost [SOURCE_DIR] [--before BIN [--before-label TEXT]] "
+                      "[--reference-blas DIR] [--repeat R] [--quick] [--case NAME]... [--variant NAME]... "
+                      "[--markdown PATH [--append]]\n");
+      return 2;
+    }
+  }
+  if (repeat < 1) repeat = 1;
+  char self[4096];
+  snprintf(self, sizeof self, "%s", SLUICE_EXECUTABLE);
+  int use_case[N_CASES], use_var[N_VARIANTS];
+  for (int c = 0; c < N_CASES; ++c) {
+    use_case[c] = n_case_sel == 0 ? (!quick || cases[c].quick) : 0;
+    for (int k = 0; k < n_case_sel; ++k) use_case[c] |= !strcmp(case_sel[k], cases[c].name);
+  }
+  for (int v = 0; v < N_VARIANTS; ++v) {
+    use_var[v] = n_var_sel == 0;
+    for (int k = 0; k < n_var_sel; ++k) use_var[v] |= !strcmp(var_sel[k], variants[v].name);
+    if (variants[v].before && !before) use_var[v] = 0;
+    if (variants[v].ref_blas && !ref_blas) use_var[v] = 0;
+  }
+  static result best[N_CASES][N_VARIANTS];
+  int failed = 0;
+  char out[256];
+  snprintf(out, sizeof out, "/tmp/sluice_bench_transient_%ld.h5", (long)getpid());
+  for (int round = 0; round < repeat; ++round)
+    for (int c = 0; c < N_CASES; ++c) {
+      if (!use_case[c]) continue;
+      for (int v = 0; v < N_VARIANTS; ++v) {
+        if (!use_var[v]) continue;
+        char scene[4096];
+        snprintf(scene, sizeof scene, "%s/configs/%s.ini", src, cases[c].scene);
+        char *args[4 + 2 * MAX_SETS + 4];
+        int na = 0;
+        args[na++] = (char *)(variants[v].before ? before : self);
+        args[na++] = "run";
+        args[na++] = scene;
+        for (int k = 0; cases[c].sets[k]; ++k) args[na++] = "--set", args[na++] = (char *)cases[c].sets[k];
+        if (variants[v].set) args[na++] = "--set", args[na++] = (char *)variants[v].set;
+        args[na++] = "-o", args[na++] = out;
+        args[na] = NULL;
+        result r = {0};
+        fprintf(stderr, "round %d: %s, %s ... ", round + 1, cases[c].name, variants[v].name);
+        int rc = run(args[0], args, variants[v].ref_blas ? ref_blas : NULL, &r);
+        char xmf[300];
+        snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)strlen(out) - 3, out);
+        remove(out), remove(xmf);
+        if (rc) {
+          fprintf(stderr, "failed: %s\n", r.why);
+          ++failed;
+          continue;
+        }
+        fprintf(stderr, "%.2f s CPU, %ld steps (%ld rejected), %ld Newton, %ld numeric, %ld reused\n", r.cpu, r.steps,
+                r.rejected, r.newton, r.numeric, r.reused);
+        result *b = &best[c][v];
+        if (!b->ok || r.cpu < b->cpu) *b = r;
+      }
+    }
+  char machine[512];
+  bench_machine_describe(machine, sizeof machine);
+  FILE *md = markdown ? fopen(markdown, append ? "a" : "w") : NULL;
+  if (markdown && !md) fprintf(stderr, "cannot write %s: %s\n", markdown, strerror(errno));
+  FILE *sinks[2] = {stdout, md};
+  for (int s = 0; s < 2; ++s) {
+    FILE *f = sinks[s];
+    if (!f) continue;
+    if (f == md && append) fprintf(f, "\n## A further run\n\n");
+    else fprintf(f, "# Benchmarks: the cost of the 2-D scenes\n\n");
+    fprintf(f, "Written by `bench_transient_cost` (bench/transient_cost.c). %s; each time the fastest of %d "
+               "interleaved round%s, CPU seconds of the whole `sluice run` (user + system). \"before\" is `%s`%s.\n\n",
+            machine, repeat, repeat == 1 ? "" : "s", before_label ? before_label : before ? before : "(not run)",
+            ref_blas ? ", \"ref. BLAS\" the same with the reference BLAS first on LD_LIBRARY_PATH" : "");
+    fprintf(f, "| case | variant | solver | CPU s | ratio | steps | rejected | rejected %% | Newton | numeric "
+               "factorisations | reused solves |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (int c = 0; c < N_CASES; ++c) {
+      if (!use_case[c]) continue;
+      double ref = NAN;
+      for (int v = 0; v < N_VARIANTS && isnan(ref); ++v)
+        if (use_var[v] && best[c][v].ok) ref = best[c][v].cpu;
+      for (int v = 0; v < N_VARIANTS; ++v) {
+        const result *r = &best[c][v];
+        if (!use_var[v]) continue;
+        if (!r->ok) {
+          fprintf(f, "| %s | %s | | failed | | | | | | | |\n", cases[c].what, variants[v].name);
+          continue;
+        }
+        long att = r->steps + r->rejected;
+        fprintf(f, "| %s | %s | %s | %.2f | %.2f | %ld | %ld | %.1f | %ld | %ld | %ld |\n", cases[c].what,
+                variants[v].name, r->linear, r->cpu, ref / r->cpu, r->steps, r->rejected,
+                att > 0 ? 100.0 * (double)r->rejected / (double)att : 0.0, r->newton, r->numeric, r->reused);
+      }
+    }
+    fprintf(f, "\n\"ratio\" is the first variant's CPU time over the row's (how many times faster). \"rejected %%\" "
+               "is of all attempted steps. \"Newton\" counts the linear solves of the nonlinear iterations; "
+               "\"reused solves\" those answered by FGMRES with an older factorisation (core/solve/linsolve.h).\n");
+  }
+  if (md) fclose(md);
+  return failed ? 1 : 0;
+}
