@@ -12,7 +12,7 @@ static const char usage[] =
     "\n"
     "commands:\n"
     "  run SCENE.ini [--set section.key=value]... [--print-config] [-o OUT.h5]\n"
-    "                                  validate a scene and resolve its closures\n"
+    "                                  run a scene (--check: validate it and stop)\n"
     "  model list | describe NAME      the models, and the sections and keys each reads\n"
     "  closures                        list every closure found (kind, name, version, library)\n"
     "  closure describe NAME|--all     schema, units, ranges, reference, an INI stanza\n"

@@ -32,5 +32,17 @@ out=$("$work/embed" "$src/configs/cavity_stokes.ini" "$work/embed.h5" mesh.cells
       time.dt=0.1 time.end=0.4 output.every=0 2>&1 || true)
 check "embedded run: 4 steps, each seen by the progress callback" 'grep -q "4 steps (4 seen by the progress callback), 0 rejected; reached the end time t = 0.4" <<<"$out"'
 check "embedded run: its output file, two output times" 'grep -q "embed.h5: 2 output times" <<<"$out"'
+# The installed tree is complete: the scenes run from it, the documentation, the licences, the man page and the
+# bash completion are there.
+share="$work/prefix/share"
+check "an installed scene runs" \
+  '(cd "$work" && "$sluice" run "$share/sluice/configs/cavity_stokes.ini" --set mesh.cells=4 -o "$work/installed_scene.h5" > "$work/installed_scene.log" 2>&1)'
+check "the documentation and licences" \
+  '[ -f "$share/doc/sluice/README.md" ] && [ -f "$share/doc/sluice/scenes.md" ] && [ -f "$share/doc/sluice/models/mixture.md" ] && [ -f "$share/doc/sluice/COPYING" ] && [ -f "$share/doc/sluice/COPYING.MIT" ] && [ -f "$share/doc/sluice/CHANGELOG.md" ] && [ -f "$share/doc/sluice/CITATION.cff" ]'
+check "the examples" '[ -f "$share/sluice/examples/embed/embed.c" ] && [ -f "$share/sluice/examples/my_closure/CMakeLists.txt" ]'
+check "the man page names every command" \
+  'for c in run model closures closure check-closure sample bench version; do grep -q "^\.SS $c\$" "$share/man/man1/sluice.1" || exit 1; done'
+check "the bash completion completes a command" \
+  '[ "$(bash -c "source \"$share/bash-completion/completions/sluice\"; COMP_WORDS=(sluice che); COMP_CWORD=1; _sluice; echo \${COMPREPLY[*]}")" = "check-closure" ]'
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
