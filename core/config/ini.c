@@ -19,6 +19,8 @@
 
 #include "core/config/ini.h"
 
+#include "core/config/expr.h"
+
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -880,6 +882,26 @@ int sl_parse_real(const char *s, double *out) {
   return 0;
 }
 
+int sl_parse_real_expr(const char *s, double *out, char *why, size_t why_len) {
+  if (why && why_len) why[0] = '\0';
+  if (sl_parse_real(s, out) == 0) return 0;
+  if (!s || !*s) return SL_EBADINPUT;
+  sl_expr *e = NULL;
+  sl_diag d;
+  if (sl_expr_compile(s, NULL, 0, &e, &d)) {
+    if (why) snprintf(why, why_len, "%s", d.msg);
+    return SL_EBADINPUT;
+  }
+  double v = sl_expr_eval(e, NULL);
+  sl_expr_free(e);
+  if (!isfinite(v)) {
+    if (why) snprintf(why, why_len, "its value %g is not finite", v);
+    return SL_EBADINPUT;
+  }
+  if (out) *out = v;
+  return 0;
+}
+
 int sl_parse_long(const char *s, long *out) {
   if (!s || !*s) return SL_EBADINPUT;
   for (const char *p = s; *p; ++p)
@@ -969,7 +991,10 @@ int sl_ini_get_real(const sl_ini *ini, const char *section, const char *key, int
   }
   if (!e->value[0] && !e->quoted) return empty_err(e, section, d, "a real number");
   double v;
-  if (sl_parse_real(e->value, &v)) return value_err(e, section, 0, d, ": expected a real number (like 2, 0.5 or 1e-3)");
+  char why[200];
+  if (sl_parse_real_expr(e->value, &v, why, sizeof why))
+    return value_err(e, section, 0, d, ": expected a real number or a constant expression (like 2, 0.5, 1e-3 or 2*pi)%s%s",
+                     why[0] ? ": " : "", why);
   if (v < min || v > max) {
     char a[40], b[40];
     return value_err(e, section, 0, d, " is outside the allowed range [%s, %s]", fmt_real(min, a), fmt_real(max, b));
@@ -1091,8 +1116,8 @@ int sl_ini_get_real_list(const sl_ini *ini, const char *section, const char *key
   const char *v = e->value;
   int count = 0;
   for (const char *p = v;;) {
-    const char *end = strchr(p, ',');
-    if (!end) end = p + strlen(p);
+    const char *end = p; /* the next comma outside parentheses: atan2(1, 2) is one item */
+    for (int depth = 0; *end && !(*end == ',' && depth == 0); ++end) depth += *end == '(' ? 1 : *end == ')' ? -1 : 0;
     const char *s = p, *t = end;
     while (s < t && is_blank(*s)) ++s;
     while (t > s && is_blank(t[-1])) --t;
@@ -1102,14 +1127,15 @@ int sl_ini_get_real_list(const sl_ini *ini, const char *section, const char *key
     if (count >= cap)
       return value_err(e, section, col, d, ": more than %d values (at most %d are allowed)", cap < 0 ? 0 : cap,
                        cap < 0 ? 0 : cap);
-    char item[64];
+    char item[256], why[200];
     size_t len = (size_t)(t - s);
     double x;
     if (len >= sizeof item) return value_err(e, section, col, d, ": item %d is not a real number", count + 1);
     memcpy(item, s, len);
     item[len] = '\0';
-    if (sl_parse_real(item, &x))
-      return value_err(e, section, col, d, ": item %d ('%s') is not a real number", count + 1, item);
+    if (sl_parse_real_expr(item, &x, why, sizeof why))
+      return value_err(e, section, col, d, ": item %d ('%s') is not a real number or a constant expression%s%s",
+                       count + 1, item, why[0] ? ": " : "", why);
     if (vals) vals[count] = x;
     ++count;
     if (*end == '\0') break;

@@ -80,6 +80,11 @@ int sl_ini_get_real_list(const sl_ini *ini, const char *section, const char *key
 /* Number parsing shared with the command line: the whole string must be a
  * finite number. Return 0 on success. */
 int sl_parse_real(const char *s, double *out);
+/* A real number as a scene may write it: a decimal number, or a constant
+ * expression of the expression language (core/config/expr.h: 2*pi, 1/3,
+ * sqrt(2)/2, 10^-4) whose value is finite. SL_EBADINPUT with the reason in
+ * why (the expression's own error, column in s) otherwise. */
+int sl_parse_real_expr(const char *s, double *out, char *why, size_t why_len);
 int sl_parse_long(const char *s, long *out);
 int sl_parse_bool(const char *s, int *out);
 

@@ -100,8 +100,10 @@ int sl_params_set(const sl_closure_desc *desc, void *params, const char *key, co
   switch (p->type) {
     case SL_PARAM_REAL: {
       double v;
-      if (sl_parse_real(value, &v))
-        return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not a number", key, value);
+      char why[200];
+      if (sl_parse_real_expr(value, &v, why, sizeof why))
+        return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not a number or a constant expression%s%s", key, value,
+                           why[0] ? ": " : "", why);
       if (v < p->min || v > p->max)
         return sl_diag_set(d, SL_EBADINPUT, "%s = %s is outside the allowed range [%g, %g] %s", key, value, p->min,
                            p->max, p->units);

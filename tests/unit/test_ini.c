@@ -4,6 +4,7 @@
  * "file:line:col:" prefix, since users navigate by it. Include files are
  * written into the working directory (the test's build folder) at run time. */
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -477,7 +478,8 @@ static void test_getters(void) {
   /* Lists: the bad item is pointed at. */
   rc = sl_ini_get_real_list(ini, "mesh", "sizes", 1, v, 8, &n, &d);
   CHECK_MSG(rc == SL_EBADINPUT &&
-                strcmp(d.msg, "scene.ini:7:12: error: [mesh] sizes = 1, x, 3: item 2 ('x') is not a real number") == 0,
+                strcmp(d.msg, "scene.ini:7:12: error: [mesh] sizes = 1, x, 3: item 2 ('x') is not a real number or a constant "
+                              "expression: column 1: unknown name 'x' (this value takes no variables)") == 0,
             "got \"%s\"", d.msg);
   rc = sl_ini_get_real_list(ini, "time", "list", 1, v, 8, &n, &d);
   CHECK_ERR(rc, d, "scene.ini:18:10: error: ", "[time] list = 1,,2: item 2 is empty");
@@ -760,6 +762,34 @@ static void test_round_trip(void) {
   }
 }
 
+/* Numbers written as constant expressions: exact values where the arithmetic is exact, the expression's own
+ * error (with a did-you-mean) when it does not parse, refusal when the value is not finite; list items split at
+ * commas outside parentheses. */
+static void test_constant_expressions(void) {
+  double v = 0.0;
+  char why[200];
+  CHECK(sl_parse_real_expr("0.125", &v, why, sizeof why) == 0 && v == 0.125);
+  CHECK(sl_parse_real_expr("2*pi", &v, why, sizeof why) == 0 && v == 2.0 * 3.14159265358979323846);
+  CHECK(sl_parse_real_expr("10^-4", &v, why, sizeof why) == 0 && v == 1e-4);
+  CHECK(sl_parse_real_expr("3/4 + 1/8", &v, why, sizeof why) == 0 && v == 0.875);
+  CHECK(sl_parse_real_expr("2*pie", &v, why, sizeof why) == SL_EBADINPUT && strstr(why, "did you mean 'pi'"));
+  CHECK(sl_parse_real_expr("1/0", &v, why, sizeof why) == SL_EBADINPUT && strstr(why, "not finite"));
+  CHECK(sl_parse_real_expr("x + 1", &v, why, sizeof why) == SL_EBADINPUT && strstr(why, "unknown name 'x'"));
+  sl_ini *ini = NULL;
+  sl_diag d = {{0}};
+  CHECK(parse_str("[mesh]\nx = -pi, atan2(1, 1)*4, 2^3\nh = sqrt(2)/2\nbad = 1, 2*e3\n", "expr.ini", &ini, &d) == 0);
+  double xs[4];
+  int n = 0;
+  CHECK(sl_ini_get_real_list(ini, "mesh", "x", 1, xs, 4, &n, &d) == 0 && n == 3);
+  CHECK(n == 3 && xs[0] == -3.14159265358979323846 && xs[1] == 3.14159265358979323846 && xs[2] == 8.0);
+  CHECK(sl_ini_get_real(ini, "mesh", "h", 1, 0.0, 0.0, 1.0, &v, &d) == 0 && v == sqrt(2.0) / 2.0);
+  int rc = sl_ini_get_real_list(ini, "mesh", "bad", 1, xs, 4, &n, &d);
+  CHECK_MSG(rc == SL_EBADINPUT && strstr(d.msg, "expr.ini:4:") && strstr(d.msg, "item 2 ('2*e3')") &&
+                strstr(d.msg, "unknown name 'e3'"),
+            "%s", d.msg);
+  sl_ini_free(ini);
+}
+
 int main(void) {
   mkdir(DIR, 0777); /* may exist from an earlier run */
   mkdir(DIR "/variants", 0777);
@@ -770,5 +800,6 @@ int main(void) {
   test_unknown();
   test_overrides();
   test_round_trip();
+  test_constant_expressions();
   return sl_test_summary();
 }
