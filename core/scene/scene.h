@@ -74,7 +74,8 @@ typedef struct sl_scene {
   } solid;
   struct {
     int third_component, convection;
-    sl_reals gravity, body_force, rotation_centre;
+    sl_reals gravity, rotation_centre;
+    sl_scene_exprs body_force; /* of x, y, t */
     double rotation;
   } flow;
   sl_time_config time; /* [time] and [output] every */

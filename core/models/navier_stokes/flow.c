@@ -42,6 +42,9 @@ typedef struct physics {
   double *buf;         /* phi, density, mu, d mu / d gamma at the points of one batch */
   int cap;
   double gravity[MAX_COMP], body_force[MAX_COMP];
+  const sl_expr *force_expr[MAX_COMP]; /* components of the body force that vary (x, y, t); NULL: body_force[c] */
+  int force_varies;
+  double t; /* the time the body force is evaluated at (the end of the step being solved) */
   int has_force;
   int riding;                /* a solids fraction rides on the flow: variable density, buoyancy, phi input */
   const sl_flow_rider *rider;
@@ -88,11 +91,20 @@ static int viscosity_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *
  * carries (buoyant_phi is the rest). */
 static int force_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
   const physics *ph = user;
-  (void)d;
   const double *phi = ph->riding ? ph->rider->buoyant_phi ? ph->rider->buoyant_phi : ph->rider->phi : NULL;
   for (int q = 0; q < b->n; ++q) {
     double rho = phi ? phi[b->cell[q]] * (ph->rider->rho_solid - ph->density) : ph->density;
     for (int c = 0; c < ph->n_comp; ++c) out[q * ph->n_comp + c] = rho * ph->gravity[c] + ph->body_force[c];
+    if (!ph->force_varies) continue;
+    double xyt[3] = {b->x[q][0], b->x[q][1], ph->t};
+    for (int c = 0; c < ph->n_comp; ++c)
+      if (ph->force_expr[c]) {
+        double f = sl_expr_eval(ph->force_expr[c], xyt);
+        if (!isfinite(f))
+          return sl_diag_set(d, SL_EBADINPUT, "[flow] body_force component %d is %g at (%g, %g), t = %g", c + 1, f,
+                             xyt[0], xyt[1], xyt[2]);
+        out[q * ph->n_comp + c] = rho * ph->gravity[c] + f;
+      }
   }
   return 0;
 }
@@ -123,11 +135,21 @@ static int physics_setup(const sl_scene *sc, int n_comp, int dim, int axi, int r
   ph->n_comp = n_comp, ph->dim = dim, ph->axisymmetric = axi, ph->riding = riding;
   ph->density = sc->fluid.density, ph->viscosity = sc->fluid.viscosity;
   int rc = vec_get(sc, &sc->flow.gravity, n_comp, ph->gravity, d);
-  if (!rc) rc = vec_get(sc, &sc->flow.body_force, n_comp, ph->body_force, d);
   if (rc) return rc;
+  const sl_scene_exprs *bf = &sc->flow.body_force;
+  if (bf->n > n_comp) {
+    char at[400];
+    return sl_diag_set(d, SL_EBADINPUT, "%s: %d components given, the scene has %d velocity components",
+                       sl_scene_where(sc, bf, at, sizeof at), bf->n, n_comp);
+  }
+  for (int c = 0; c < bf->n; ++c) { /* constant components as numbers: the same arithmetic as before expressions */
+    double v;
+    if (sl_expr_is_constant(bf->e[c], &v)) ph->body_force[c] = v;
+    else ph->force_expr[c] = bf->e[c], ph->force_varies = 1, ph->has_force = 1;
+  }
   for (int c = 0; c < MAX_COMP; ++c) ph->has_force |= ph->gravity[c] != 0.0 || ph->body_force[c] != 0.0;
   if (riding && rho_solid == ph->density) { /* neutrally buoyant: gravity acts on nothing */
-    ph->has_force = 0;
+    ph->has_force = ph->force_varies;
     for (int c = 0; c < MAX_COMP; ++c) ph->has_force |= ph->body_force[c] != 0.0;
   }
   if (!(ph->visc = sl_scene_closure(sc, "viscosity"))) return 0;
@@ -576,6 +598,12 @@ static int solve(sl_flow *f, double *u, int *iterations, sl_diag *d) {
   return rc;
 }
 
+static int force_depends_on_t(const physics *ph) {
+  for (int c = 0; c < MAX_COMP; ++c)
+    if (ph->force_expr[c] && sl_expr_uses(ph->force_expr[c], 2)) return 1;
+  return 0;
+}
+
 int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
   f->prob.opts.mass_coef = s->mass_coef;
   f->prob.opts.history = s->history;
@@ -584,6 +612,7 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
     return -rc;
   size_t bytes = (size_t)f->th->n_dofs * sizeof *s->u;
   f->solved = 0;
+  f->ph.t = s->t + s->dt;
   /* Skip what is known: a vessel at rest under no load stays at rest; a closed column's velocity is 0 and its
      pressure is needed only when written; a flow at a fixed point whose phi has not changed gives itself again. */
   if (f->sc->solver.skip_known && s->state) {
@@ -595,7 +624,7 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
       f->st.solves_skipped++;
       return 0;
     }
-    if ((f->column_at_rest && !(s->writes && (f->fields & F_PRESSURE))) || (f->fixed_point && !f->bcs.time_dependent)) {
+    if ((f->column_at_rest && !(s->writes && (f->fields & F_PRESSURE))) || (f->fixed_point && !f->bcs.time_dependent && !force_depends_on_t(&f->ph))) {
       memcpy(s->u, s->state, bytes);
       f->st.solves_skipped++;
       return 0;
@@ -690,6 +719,25 @@ void sl_flow_stats(sl_flow *f, sl_model_stats *st) {
 
 /* ---- set-up and teardown ---------------------------------------------------- */
 
+/* A body force that is not finite somewhere at t = 0 is bad input, found before the output opens (at the
+ * vertices: where a log or a division would fail first). */
+static int check_body_force(const sl_scene *sc, const physics *ph, sl_diag *d) {
+  if (!ph->force_varies) return 0;
+  const sl_mesh *m = sc->mesh;
+  for (int v = 0; v < m->n_vertices; ++v) {
+    double xyt[3] = {m->xy[2 * v], m->xy[2 * v + 1], 0.0};
+    for (int c = 0; c < ph->n_comp; ++c) {
+      double f = ph->force_expr[c] ? sl_expr_eval(ph->force_expr[c], xyt) : 0.0;
+      if (!isfinite(f)) {
+        char at[400];
+        return sl_diag_set(d, SL_EBADINPUT, "%s: component %d is %g at (%g, %g), t = 0",
+                           sl_scene_where(sc, &sc->flow.body_force, at, sizeof at), c + 1, f, xyt[0], xyt[1]);
+      }
+    }
+  }
+  return 0;
+}
+
 static int initial_velocity(const sl_scene *sc, const sl_flow_config *fc, const sl_th_space *th, double *u,
                             sl_diag *d) {
   const sl_scene_exprs *v = &fc->velocity;
@@ -749,7 +797,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
   f->datum = !f->bcs.has_natural;
   f->column_at_rest = dim == 1 && f->th->n_comp == 1 && f->bcs.n > 0;
   f->unforced = f->prob.opts.omega == 0.0;
-  for (int c = 0; c < MAX_COMP; ++c) f->unforced &= f->ph.body_force[c] == 0.0;
+  for (int c = 0; c < MAX_COMP; ++c) f->unforced &= f->ph.body_force[c] == 0.0 && !f->ph.force_expr[c];
   for (int i = 0; i < f->bcs.n; ++i) {
     int ty = f->bcs.b[i].type;
     f->column_at_rest &= ty == NS_WALL;
@@ -778,6 +826,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
     rc = sl_diag_set(d, SL_ENOMEM, "out of memory for %d unknowns", (int)f->th->n_dofs);
     goto fail;
   }
+  if ((rc = check_body_force(sc, &f->ph, d))) goto fail;
   if ((rc = initial_velocity(sc, fc, f->th, f->u, d))) goto fail;
   *info = (sl_model_info){.integrator = SL_INTEGRATE_BDF, .n = f->th->n_dofs, .n_err = f->th->p_offset, .u = f->u,
                           .has_steady = 1, .state_name = "velocity"};

@@ -24,8 +24,10 @@ static const sl_key flow_keys[] = {
      .help = "include rho (u.grad)u (false: Stokes flow)"},
     {.section = "flow", .name = "gravity", .type = SL_KEY_REALS, SL_AT_SCENE(flow.gravity), .max_n = 3,
      .units = "m s^-2", .help = "gravitational acceleration per velocity component (default none)"},
-    {.section = "flow", .name = "body_force", .type = SL_KEY_REALS, SL_AT_SCENE(flow.body_force), .max_n = 3,
-     .units = "N m^-3", .help = "body force per unit volume per component (e.g. -dp/dz of a fully developed flow)"},
+    {.section = "flow", .name = "body_force", .type = SL_KEY_EXPRS, SL_AT_SCENE(flow.body_force), .vars = "x,y,t",
+     .units = "N m^-3",
+     .help = "body force per unit volume per component, numbers or expressions of x, y, t (e.g. -dp/dz of a fully "
+             "developed flow, or a manufactured solution's forcing)"},
     {.section = "flow", .name = "rotation", .type = SL_KEY_REAL, SL_AT_SCENE(flow.rotation), .min = -1e6, .max = 1e6,
      .units = "rad s^-1", .help = "angular velocity of the frame (planar: about rotation_centre; axisymmetric: the "
                                   "axis): Coriolis and centrifugal forces"},
