@@ -82,6 +82,30 @@ static void cavity_re100(void) {
             mesh, dmax);
   CHECK_MSG(dmean < 2e-3, "Re 100: mean deviation from Ghia %.3g", dmean);
   CHECK_MSG(dmax < 5.5e-3, "Re 100: max deviation from Ghia %.3g", dmax);
+  /* The stream function from the conservative face fluxes: the primary vortex's -0.103423 and the bottom-right
+   * secondary vortex's 1.25374e-5 (Ghia, Ghia & Shin 1982, Table III, Re = 100), at the nodes of the 32 x 32 mesh;
+   * zero on the walls (a closed cavity) to round-off. */
+  sl_output_field psi;
+  sl_output_mesh m;
+  sl_diag d = {{0}};
+  if (sl_output_read_field("re100_32.h5", "stream_function", INFINITY, &psi, &d) ||
+      sl_output_read_mesh("re100_32.h5", &m, &d)) {
+    CHECK_MSG(0, "re100_32.h5: %s", d.msg);
+    return;
+  }
+  double lo = INFINITY, hi = -INFINITY, wall = 0.0;
+  for (int32_t i = 0; i < psi.n; ++i) {
+    lo = fmin(lo, psi.values[i]), hi = fmax(hi, psi.values[i]);
+    const double *x = m.coords + 3 * (size_t)i;
+    if (x[0] == 0.0 || x[0] == 1.0 || x[1] == 0.0 || x[1] == 1.0) wall = fmax(wall, fabs(psi.values[i]));
+  }
+  printf("Re 100: stream function min %.6f (Ghia -0.103423), max %.4e (Ghia 1.25374e-5), on the walls %.1e\n", lo,
+         hi, wall);
+  CHECK_MSG(fabs(lo + 0.103423) < 2e-4, "Re 100: primary vortex psi %.6f", lo);
+  CHECK_MSG(fabs(hi - 1.25374e-5) < 0.05 * 1.25374e-5, "Re 100: secondary vortex psi %.4e", hi);
+  CHECK_MSG(wall < 1e-12, "Re 100: psi on the walls %.2e", wall);
+  sl_output_field_free(&psi);
+  sl_output_mesh_free(&m);
 }
 
 static double centreline_min(const char *file) {

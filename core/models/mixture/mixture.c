@@ -12,7 +12,6 @@
 #include "core/config/expr.h"
 #include "core/fe/field.h"
 #include "core/fv/face_flux.h"
-#include "core/models/mixture/stream_function.h"
 #include "core/models/navier_stokes/flow.h"
 #include "core/plugin/instance.h"
 #include "core/plugin/kinds.h"
@@ -77,8 +76,6 @@ typedef struct mixture {
   sl_face_flux *ff;
   double *phi, *trial, *q, *w; /* cells, cells, faces, faces */
   double *q_acc;               /* [n_faces] the conservative fluxes of the last accepted step */
-  double *psi, *node_psi;      /* [n_vertices], [velocity nodes]: the stream function (2-D) */
-  sl_stream_graph pg;
   unsigned fields; /* bit k: field_names[k] is written */
   double inventory0, inflow, trial_inflow;
   double inventory; /* of the current state */
@@ -529,7 +526,7 @@ static int periodic_setup(mixture *x, const unsigned char *open, const sl_period
 }
 
 /* The mixture's output fields (after the flow's in [output] fields). */
-enum { F_PHI = 1, F_STREAM = 2 };
+enum { F_PHI = 1 };
 
 /* The solids fraction on the flow f: the settling closure, the transport,
  * the diagnostics and the initial phi. */
@@ -585,12 +582,6 @@ static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag
   x->w = calloc((size_t)nf, sizeof *x->w);
   x->q_acc = calloc((size_t)nf, sizeof *x->q_acc);
   if (!x->phi || !x->trial || !x->q || !x->w || !x->q_acc) return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
-  if (x->m->dim == 2 && (x->fields & F_STREAM)) {
-    x->psi = malloc((size_t)x->m->n_vertices * sizeof *x->psi);
-    x->node_psi = malloc((size_t)th->vel->n_nodes * sizeof *x->node_psi);
-    if (!x->psi || !x->node_psi || sl_stream_graph_build(&x->pg, x->m))
-      return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
-  }
   if (x->slip_acceleration) {
     x->acc = calloc((size_t)2 * nc, sizeof *x->acc);
     x->b_face = malloc((size_t)2 * nf * sizeof *x->b_face);
@@ -665,29 +656,6 @@ static void accept(mixture *x) {
 
 static int write(mixture *x, sl_output *out, sl_diag *d) {
   int rc = x->fields & F_PHI ? sl_output_write_field(out, "phi", SL_CENTRE_CELL, 1, x->phi, d) : 0;
-  if (!rc && x->psi) {
-    /* at the velocity nodes: vertices as computed, edge and centre nodes the mean of their cell's vertices
-       (exact on edge midpoints for psi linear along the edge) */
-    sl_stream_function(x->m, &x->pg, x->q_acc, x->psi);
-    const sl_mesh *m = x->m;
-    int nb = x->th->vel->dofs_per_cell, nvc = m->nv_per_cell;
-    for (int c = 0; c < m->n_cells; ++c) {
-      const int32_t *vd = x->th->vel->cell_nodes + (size_t)c * nb;
-      const int *cv = m->cell_vertices + (size_t)c * nvc;
-      for (int k = 0; k < nb; ++k) {
-        double v = 0.0;
-        if (k < nvc) {
-          v = x->psi[cv[k]];
-        } else if (k - nvc < nvc) {
-          v = 0.5 * (x->psi[cv[k - nvc]] + x->psi[cv[(k - nvc + 1) % nvc]]);
-        } else {
-          for (int j = 0; j < nvc; ++j) v += x->psi[cv[j]] / nvc;
-        }
-        x->node_psi[vd[k]] = v;
-      }
-    }
-    rc = sl_output_write_field(out, "stream_function", SL_CENTRE_NODE, 1, x->node_psi, d);
-  }
   double inv = sl_transport_mass(x->tr, x->phi);
   double err = x->inventory0 + x->inflow > 0.0 ? (inv - x->inventory0 - x->inflow) / (x->inventory0 + x->inflow) : 0.0;
   if (!rc) rc = sl_output_write_scalar(out, "solids_inventory", inv, d);
@@ -739,12 +707,10 @@ static int restore(mixture *x, const sl_checkpoint *ck, sl_diag *d) {
 static void mixture_free(mixture *x) {
   sl_transport_destroy(x->tr);
   sl_face_flux_destroy(x->ff);
-  free(x->phi), free(x->trial), free(x->q), free(x->w), free(x->q_acc), free(x->acc), free(x->b_face), free(x->psi),
-      free(x->node_psi);
+  free(x->phi), free(x->trial), free(x->q), free(x->w), free(x->q_acc), free(x->acc), free(x->b_face);
   free(x->cell_stress), free(x->settle_speed), free(x->node_stress), free(x->node_weight);
   free(x->cell_drag), free(x->grad_phi), free(x->buoy_phi), free(x->p_hydro);
   sl_hydrostatic_destroy(x->hs);
-  sl_stream_graph_free(&x->pg);
   sl_point_release(&x->st.pc);
   sl_migration_destroy(x->mg);
   free(x->shear);
@@ -809,8 +775,8 @@ static const sl_key extra_keys[] = {
 };
 TABLE(mixture_extra_keys, extra_keys);
 
-static const char *const mixture_fields[] = {"velocity", "pressure", "shear_rate", "viscosity", "yielded", "phi",
-                                             "stream_function"};
+static const char *const mixture_fields[] = {"velocity",        "pressure", "shear_rate", "viscosity", "yielded",
+                                             "stream_function", "phi"};
 
 const sl_schema sl_mixture_schema = {
     .model = "mixture",
@@ -849,7 +815,8 @@ static int mx_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) 
   mixture *x = calloc(1, sizeof *x);
   if (!x) return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
   x->sc = sc, x->cfg = sc->config, x->rho_solid = sc->solid.density, x->phi_max = sc->solid.phi_max;
-  unsigned mask, def = 1u | 2u | (sl_scene_closure(sc, "viscosity") ? 4u | 8u | 16u : 0u) | (3u << SL_FLOW_N_FIELDS);
+  unsigned mask, def = 1u | 2u | (sl_scene_closure(sc, "viscosity") ? 4u | 8u | 16u : 0u) | SL_FLOW_STREAM_FUNCTION |
+                        (1u << SL_FLOW_N_FIELDS);
   int rc = sl_scene_output_fields(sc, def, &mask, d);
   if (!rc) rc = sl_flow_create(sc, &x->cfg->flow, x->rho_solid, mask & ((1u << SL_FLOW_N_FIELDS) - 1u), &x->flow_model,
                                info, d);
@@ -866,6 +833,7 @@ static int mx_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) 
                          .prepare = x->cell_drag ? prepare : NULL,
                          .buoyant_phi = x->hs ? x->buoy_phi : NULL,
                          .pressure_shift = x->hs ? x->p_hydro : NULL,
+                         .face_flux = x->q_acc,
                          .unchanged = unchanged,
                          .at_rest = at_rest};
   sl_flow_ride(x->flow_model, &rider);

@@ -9,6 +9,8 @@
 #include <time.h>
 
 #include "core/fe/field.h"
+#include "core/fv/face_flux.h"
+#include "core/fv/stream_function.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/point_eval.h"
 #include "core/scene/solver.h"
@@ -21,9 +23,9 @@ static double cpu(void) {
 
 enum { MAX_COMP = 3 };
 
-const char *const sl_flow_field_names[SL_FLOW_N_FIELDS] = {"velocity", "pressure", "shear_rate", "viscosity",
-                                                           "yielded"};
-enum { F_VELOCITY = 1, F_PRESSURE = 2, F_SHEAR = 4, F_VISCOSITY = 8, F_YIELDED = 16 };
+const char *const sl_flow_field_names[SL_FLOW_N_FIELDS] = {"velocity",  "pressure", "shear_rate",
+                                                           "viscosity", "yielded",  "stream_function"};
+enum { F_VELOCITY = 1, F_PRESSURE = 2, F_SHEAR = 4, F_VISCOSITY = 8, F_YIELDED = 16, F_STREAM = SL_FLOW_STREAM_FUNCTION };
 
 /* ---- physics: fluid properties, the viscosity closure, forces ------------ */
 
@@ -439,6 +441,10 @@ struct sl_flow {
   double *u;    /* the state: velocity and pressure */
   double *work; /* n_vel * 3 */
   double *cellbuf;
+  /* the stream function (2-D, when written): from the rider's face fluxes, else from the flow's own */
+  sl_stream_graph pg;
+  sl_face_flux *ff;
+  double *q, *psi, *node_psi;
   int datum;
   int riding;
   double rho_solid;
@@ -542,6 +548,14 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
     if (!rc && (f->fields & F_SHEAR)) rc = sl_output_write_field(out, "shear_rate", SL_CENTRE_CELL, 1, g, d);
     if (!rc && (f->fields & F_VISCOSITY)) rc = sl_output_write_field(out, "viscosity", SL_CENTRE_CELL, 1, mu, d);
     if (!rc && (f->fields & F_YIELDED)) rc = sl_output_write_field(out, "yielded", SL_CENTRE_CELL, 1, y, d);
+  }
+  if (!rc && f->psi) {
+    const double *q = f->riding ? f->rider.face_flux : f->q;
+    if (!f->riding) rc = sl_face_flux_conservative(f->ff, u, 0.0, f->q, NULL, d);
+    if (!rc && q) {
+      sl_stream_function_nodes(th, &f->pg, q, f->psi, f->node_psi);
+      rc = sl_output_write_field(out, "stream_function", SL_CENTRE_NODE, 1, f->node_psi, d);
+    }
   }
   return rc;
 }
@@ -738,6 +752,23 @@ static int check_body_force(const sl_scene *sc, const physics *ph, sl_diag *d) {
   return 0;
 }
 
+/* The stream function's storage (2-D, when written). Without a rider the fluxes are the flow's own, made
+ * conservative cell by cell (core/fv/face_flux.h); a periodic pair would make psi multivalued there. */
+static int stream_setup(sl_flow *f, sl_diag *d) {
+  const sl_mesh *m = f->mesh;
+  if (!(f->fields & F_STREAM) || m->dim != 2) return 0;
+  if (!f->riding && f->bcs.n_pairs > 0)
+    return sl_diag_set(d, SL_EBADINPUT, "[output] fields = stream_function: not with periodic boundaries (the "
+                                        "stream function would not be periodic)");
+  f->psi = malloc((size_t)m->n_vertices * sizeof *f->psi);
+  f->node_psi = malloc((size_t)f->th->vel->n_nodes * sizeof *f->node_psi);
+  if (!f->riding) f->q = malloc((size_t)m->n_faces * sizeof *f->q);
+  if (!f->psi || !f->node_psi || (!f->riding && !f->q) || sl_stream_graph_build(&f->pg, m))
+    return sl_diag_set(d, SL_ENOMEM, "stream function: out of memory");
+  if (f->riding) return 0;
+  return sl_face_flux_create(f->th, f->prob.opts.axisymmetric, f->bcs.open, NULL, 0, &f->ff, d);
+}
+
 static int initial_velocity(const sl_scene *sc, const sl_flow_config *fc, const sl_th_space *th, double *u,
                             sl_diag *d) {
   const sl_scene_exprs *v = &fc->velocity;
@@ -826,6 +857,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
     rc = sl_diag_set(d, SL_ENOMEM, "out of memory for %d unknowns", (int)f->th->n_dofs);
     goto fail;
   }
+  if ((rc = stream_setup(f, d))) goto fail;
   if ((rc = check_body_force(sc, &f->ph, d))) goto fail;
   if ((rc = initial_velocity(sc, fc, f->th, f->u, d))) goto fail;
   *info = (sl_model_info){.integrator = SL_INTEGRATE_BDF, .n = f->th->n_dofs, .n_err = f->th->p_offset, .u = f->u,
@@ -840,6 +872,9 @@ fail:
 void sl_flow_destroy(sl_flow *f) {
   if (!f) return;
   free(f->u), free(f->work), free(f->cellbuf);
+  free(f->q), free(f->psi), free(f->node_psi);
+  sl_stream_graph_free(&f->pg);
+  sl_face_flux_destroy(f->ff);
   sl_linsolve_destroy(f->ls);
   sl_flow_problem_free(&f->prob);
   bc_set_free(&f->bcs);

@@ -85,10 +85,13 @@ typedef struct sl_flow_rider {
    * scale, and no stress of its own): a flow at rest between walls at rest then stays at rest and is not solved
    * (NULL: never). */
   int (*at_rest)(void *user);
+  /* The conservative face fluxes the rider moves phi with (per mesh face), for the stream function; NULL: the
+   * flow's own. */
+  const double *face_flux;
 } sl_flow_rider;
 
 /* The flow's output fields, in [output] fields' order; the rider's follow them. */
-enum { SL_FLOW_N_FIELDS = 5 };
+enum { SL_FLOW_N_FIELDS = 6, SL_FLOW_STREAM_FUNCTION = 32 };
 extern const char *const sl_flow_field_names[SL_FLOW_N_FIELDS];
 
 /* The flow from the scene: mesh, boundaries, space, physics, solver.

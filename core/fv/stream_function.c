@@ -1,5 +1,5 @@
 /* The stream function of conservative face fluxes (stream_function.h). */
-#include "core/models/mixture/stream_function.h"
+#include "core/fv/stream_function.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -41,3 +41,25 @@ void sl_stream_function(const sl_mesh *m, sl_stream_graph *g, const double *q, d
   }
 }
 
+
+void sl_stream_function_nodes(const sl_th_space *th, sl_stream_graph *g, const double *q, double *psi,
+                              double *node_psi) {
+  const sl_mesh *m = th->mesh;
+  sl_stream_function(m, g, q, psi);
+  int nb = th->vel->dofs_per_cell, nvc = m->nv_per_cell;
+  for (int c = 0; c < m->n_cells; ++c) {
+    const int32_t *vd = th->vel->cell_nodes + (size_t)c * nb;
+    const int *cv = m->cell_vertices + (size_t)c * nvc;
+    for (int k = 0; k < nb; ++k) {
+      double v = 0.0;
+      if (k < nvc) {
+        v = psi[cv[k]];
+      } else if (k - nvc < nvc) {
+        v = 0.5 * (psi[cv[k - nvc]] + psi[cv[(k - nvc + 1) % nvc]]);
+      } else {
+        for (int j = 0; j < nvc; ++j) v += psi[cv[j]] / nvc;
+      }
+      node_psi[vd[k]] = v;
+    }
+  }
+}

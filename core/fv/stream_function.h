@@ -5,9 +5,10 @@
  * (r-weighted fluxes, per radian) when axisymmetric. Well defined because
  * the fluxes of every cell sum to zero (and the mesh is connected): a
  * breadth-first walk over the vertex-face graph visits each vertex once. */
-#ifndef SLUICE_MODELS_STREAM_FUNCTION_H
-#define SLUICE_MODELS_STREAM_FUNCTION_H
+#ifndef SLUICE_FV_STREAM_FUNCTION_H
+#define SLUICE_FV_STREAM_FUNCTION_H
 
+#include "core/fe/dofmap.h"
 #include "core/mesh/mesh.h"
 
 typedef struct sl_stream_graph {
@@ -22,5 +23,11 @@ void sl_stream_graph_free(sl_stream_graph *g);
 
 /* psi[n_vertices] from the face fluxes q[n_faces]. */
 void sl_stream_function(const sl_mesh *m, sl_stream_graph *g, const double *q, double *psi);
+
+/* The same at the velocity nodes of th (node_psi[th->vel->n_nodes]), as the output writes node fields: the
+ * vertices as computed, edge and centre nodes the mean of their cell's vertices (exact on edge midpoints for psi
+ * linear along the edge). psi[n_vertices] is the scratch (and the vertex values). */
+void sl_stream_function_nodes(const sl_th_space *th, sl_stream_graph *g, const double *q, double *psi,
+                              double *node_psi);
 
 #endif
