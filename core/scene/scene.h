@@ -71,6 +71,7 @@ typedef struct sl_scene {
   } fluid;
   struct {
     double density, diameter, phi_max, sphericity, porosity_max, viscosity;
+    double vessel_diameter; /* the mixture: D of a settling law's wall term d/D (0: none given, D infinite) */
   } solid;
   struct {
     int third_component, convection;

@@ -668,6 +668,33 @@ static void spinup_part(void) {
 
 /* argv[1] names one part (its own ctest entry, so that the parts run in
  * parallel); none: all but spinup. */
+/* [solid] vessel_diameter reaches the settling law: Richardson & Zaki's (1954) exponent for 0.2 <= Re_t < 1 is
+ * n = (4.35 + 17.5 d/D) Re_t^-0.03, and the top interface of kynch_settling falls at u_t (1 - phi0)^n (1 -
+ * phi0/phi_max) until the sediment meets it. With D = 0.01 m (d/D = 0.01) against an unbounded vessel the fall
+ * after 40 s shrinks by (1 - phi0)^(17.5 * 0.01 * Re_t^-0.03), Re_t from Stokes' u_t: 0.98167. */
+static void vessel_wall_term(void) {
+  const char *unbounded[] = {"closure.hindered_settling.exponent=richardson_zaki_1954", "time.end=40", NULL};
+  const char *narrow[] = {"closure.hindered_settling.exponent=richardson_zaki_1954", "time.end=40",
+                          "solid.vessel_diameter=0.01", NULL};
+  if (run_ok("kynch_settling", NULL, NULL, unbounded, "vessel_unbounded.h5") ||
+      run_ok("kynch_settling", NULL, NULL, narrow, "vessel_narrow.h5"))
+    return;
+  double h0, h1, t0, t1;
+  sl_diag d = {{0}};
+  if (sl_output_read_scalar("vessel_unbounded.h5", "interface_height_0", 40.0, &h0, &t0, &d) ||
+      sl_output_read_scalar("vessel_narrow.h5", "interface_height_0", 40.0, &h1, &t1, &d)) {
+    CHECK_MSG(0, "%s", d.msg);
+    return;
+  }
+  double u_t = (2650.0 - 1000.0) * 9.81 * 1e-8 / (18.0 * 1e-3), re = 1000.0 * u_t * 1e-4 / 1e-3;
+  double expected = pow(0.9, 17.5 * 0.01 * pow(re, -0.03)), got = (0.5 - h1) / (0.5 - h0);
+  printf("vessel wall term: fall in 40 s %.6f m (unbounded), %.6f m (D = 0.01 m): ratio %.5f, Richardson-Zaki "
+         "%.5f\n",
+         0.5 - h0, 0.5 - h1, got, expected);
+  CHECK_MSG(t0 == 40.0 && t1 == 40.0 && fabs(got / expected - 1.0) < 0.003, "ratio %.5f, expected %.5f", got,
+            expected);
+}
+
 int main(int argc, char **argv) {
   const char *src = getenv("SLUICE_SOURCE_DIR");
   snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
@@ -675,11 +702,11 @@ int main(int argc, char **argv) {
     const char *name;
     void (*run)(void);
   } parts[] = {{"kynch", kynch_part}, {"migration", migration}, {"wave_bed", wave_bed}, {"boycott", boycott_part},
-               {"spinup", spinup_part}};
+               {"spinup", spinup_part}, {"vessel", vessel_wall_term}};
   int ran = 0;
   for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
     if (argc < 2 ? strcmp(parts[k].name, "spinup") != 0 : strcmp(argv[1], parts[k].name) == 0)
       parts[k].run(), ++ran;
-  if (!ran) return fprintf(stderr, "unknown part '%s' (kynch, migration, wave_bed, boycott, spinup)\n", argv[1]), 2;
+  if (!ran) return fprintf(stderr, "unknown part '%s' (kynch, migration, wave_bed, boycott, spinup, vessel)\n", argv[1]), 2;
   return sl_test_summary();
 }

@@ -135,7 +135,8 @@ static int settling_setup(mixture *x, sl_diag *d) {
   double dp = 0.0;
   if (sl_point_has_input(&s->pc, "d_p") && (rc = solid_diameter(sc, &dp, d)))
     return sl_diag_prefix(d, rc, "[closure.hindered_settling] %s needs d_p", label);
-  const double constants[Q_N] = {0.0, 0.0, dp, sc->solid.sphericity, x->rho_solid, x->rho_f, x->mu_f, x->g_ref, HUGE_VAL};
+  double vessel = sc->solid.vessel_diameter > 0.0 ? sc->solid.vessel_diameter : HUGE_VAL;
+  const double constants[Q_N] = {0.0, 0.0, dp, sc->solid.sphericity, x->rho_solid, x->rho_f, x->mu_f, x->g_ref, vessel};
   for (int k = Q_D_P; k < Q_N; ++k) sl_point_constant(&s->pc, quantity_names[k], constants[k]);
   /* phi_max: the closure's packing parameter unless the scene sets [solid] phi_max; both must agree */
   int k = sl_params_find(c, "phi_max");
@@ -733,6 +734,9 @@ static const sl_key solid_keys[] = {
      .max = 1.0, .def_doc = "the settling closure's phi_max, else 0.64", .help = "maximum packing fraction"},
     {.section = "solid", .name = "sphericity", .type = SL_KEY_REAL, SL_AT_SCENE(solid.sphericity), .def = 1.0,
      .min = 0.01, .max = 1.0, .help = "particle sphericity"},
+    {.section = "solid", .name = "vessel_diameter", .type = SL_KEY_REAL, SL_AT_SCENE(solid.vessel_diameter),
+     .min = 1e-6, .max = 1e6, .units = "m", .def_doc = "none (no wall term)",
+     .help = "the vessel (column, pipe) diameter D a settling law's wall term d/D uses (Richardson & Zaki 1954)"},
 };
 TABLE(mixture_solid_keys, solid_keys);
 
