@@ -111,6 +111,17 @@ static void ktgf_shear(void) {
   printf("ktgf_shear: steady theta %.12e, algebraic equilibrium %.12e\n", th, theta_eq);
   CHECK_CLOSE(th, theta_eq, 1e-8);
   CHECK(spread < 1e-10);
+  /* the solids pressure written beside: Lun et al.'s (1984) rho_s phi theta (1 + 2 (1 + e) phi g0) at the
+   * equilibrium theta, in every cell */
+  int n_ps = 0;
+  double *ps = node_field("ktgf.h5", "solids_pressure", INFINITY, &n_ps), worst = 0.0;
+  double ps_eq = rho_phi * theta_eq * (1.0 + 2.0 * (1.0 + ktgf.e) * ktgf.phi * g0_lun_savage(&ktgf));
+  for (int k = 0; ps && k < n_ps; ++k) worst = fmax(worst, fabs(ps[k] - ps_eq) / ps_eq);
+  printf("ktgf_shear: solids pressure %.10g Pa in %d cells (Lun et al. %.10g), largest relative difference %.2e\n",
+         ps && n_ps ? ps[0] : NAN, n_ps, ps_eq, worst);
+  CHECK_MSG(ps && n_ps == 20 && worst < 1e-8, "solids pressure: %d cells, worst relative difference %.2e", n_ps,
+            worst);
+  free(ps);
   /* the solids stress mu_s gdot on the walls, the fluid's (1 - phi) mu_f gdot */
   double tau_s = mu0 * sqrt(theta_eq) * gdot, tau_f = 0.7 * 1.002e-3 * gdot;
   CHECK_CLOSE(scalar("ktgf.h5", "wall_shear_stress_solid_left", INFINITY), tau_s, 1e-7);

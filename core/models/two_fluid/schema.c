@@ -239,7 +239,7 @@ static const sl_key shear_keys[] = {
 };
 TABLE(tf_shear_keys, shear_keys);
 
-static const char *const shear_fields[] = {"phi", "velocity_fluid", "velocity_solid", "theta"};
+static const char *const shear_fields[] = {"phi", "velocity_fluid", "velocity_solid", "theta", "solids_pressure"};
 
 const sl_schema sl_two_fluid_shear_schema = {
     .model = "two_fluid",
@@ -261,5 +261,5 @@ const sl_schema sl_two_fluid_shear_schema = {
     .config_size = sizeof(tf_config),
     .boundary_size = sizeof(sh_boundary),
     .fields = shear_fields,
-    .n_fields = 4,
+    .n_fields = 5,
 };

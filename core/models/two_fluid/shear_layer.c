@@ -17,8 +17,8 @@
 #include "core/scene/mesh.h"
 
 enum { SOLIDS_NO_SLIP = 0, SOLIDS_FREE_SLIP = 1, SOLIDS_WALL_STRESS = 2 };
-enum { F_PHI = 1, F_UF = 2, F_US = 4, F_THETA = 8 };
-static const char *const field_names[] = {"phi", "velocity_fluid", "velocity_solid", "theta"};
+enum { F_PHI = 1, F_UF = 2, F_US = 4, F_THETA = 8, F_PS = 16 };
+static const char *const field_names[] = {"phi", "velocity_fluid", "velocity_solid", "theta", "solids_pressure"};
 
 /* The quantities the layer offers its closures, by input name. */
 enum { Q_PHI, Q_SLIP, Q_THETA, Q_RHO_F, Q_MU_F, Q_RHO_S, Q_D_P, Q_SPHERICITY, Q_GRAVITY, Q_SLIP_WALL, Q_WALL_DISTANCE,
@@ -71,6 +71,7 @@ typedef struct sh_layer {
   long iterations, advances;
   int fields;
   double *node_out, *cell_out;
+  double *psc; /* cells: the kinetic theory's solids pressure, when written */
   char steady_text[96];
 } sh_layer;
 
@@ -727,6 +728,16 @@ static int write_state(sh_layer *L, sl_output *out, sl_diag *d) {
     for (int k = 0; k <= L->n; ++k) L->node_out[L->vertex[k]] = nf[f][k];
     rc = sl_output_write_field(out, field_names[f + 1], SL_CENTRE_NODE, 1, L->node_out, d);
   }
+  if (!rc && (L->fields & F_PS)) { /* p_s(phi, theta) of [closure.granular], theta the mean of the cell's nodes */
+    for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th[i] + L->th[i + 1]), THETA_FLOOR);
+    const double *v[Q_N];
+    point_values(L, v, L->phi, NULL, L->thc);
+    v[Q_SHEAR_RATE] = L->gdc, v[Q_DENSITY] = L->rhoc;
+    sl_point_request rq = {"p_s", L->psc, NULL, NULL};
+    rc = sl_point_eval(&L->gran, L->n, v, &rq, 1, d);
+    for (int i = 0; i < L->n && !rc; ++i) L->cell_out[L->cell_of[i]] = L->psc[i];
+    if (!rc) rc = sl_output_write_field(out, "solids_pressure", SL_CENTRE_CELL, 1, L->cell_out, d);
+  }
   for (int side = 0; side < 2 && !rc; ++side) {
     const sh_wall *w = &L->wall_at[side];
     char name[300];
@@ -827,7 +838,8 @@ static void release(sh_layer *L) {
   double *all[] = {L->uf_old, L->us_old, L->x,    L->h,    L->W,    L->gm,   L->gt,   L->V,     L->a,
                    L->s,      L->phi,    L->phin, L->uf,   L->us,   L->th,   L->uf1,  L->us1,   L->th1,
                    L->K,      L->dK,     L->slip, L->muc,  L->muk,  L->dmuc, L->kapc, L->thc,   L->gdc,
-                   L->rhoc,   L->mumc,   L->prod, L->gam,  L->dgam, L->work, L->blk,  L->node_out, L->cell_out};
+                   L->rhoc,   L->mumc,   L->prod, L->gam,  L->dgam, L->work, L->blk,  L->node_out, L->cell_out,
+                   L->psc};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   for (int k = 0; k < Q_N; ++k) free(L->qv[k]);
   sl_point_release(&L->drag), sl_point_release(&L->gran), sl_point_release(&L->wall), sl_point_release(&L->visc);
@@ -852,12 +864,22 @@ static int layer_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   if (!rc) rc = walls(L, d);
   if (!rc) rc = initial_state(L, d);
   unsigned mask = 0;
-  if (!rc) rc = sl_scene_output_fields(sc, F_PHI | F_UF | F_US | (L->granular ? F_THETA : 0u), &mask, d);
+  int has_ps = L->granular && sl_point_has_output(&L->gran, "p_s");
+  if (!rc)
+    rc = sl_scene_output_fields(sc, F_PHI | F_UF | F_US | (L->granular ? F_THETA : 0u) | (has_ps ? F_PS : 0u), &mask,
+                                d);
   if (!rc && (mask & F_THETA) && !L->granular) {
     char at[400];
     rc = sl_diag_set(d, SL_EBADINPUT, "%s: theta needs [closure.granular]",
                      sl_scene_where(sc, &sc->output.fields, at, sizeof at));
   }
+  if (!rc && (mask & F_PS) && !has_ps) {
+    char at[400];
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: solids_pressure needs a [closure.granular] with the output p_s",
+                     sl_scene_where(sc, &sc->output.fields, at, sizeof at));
+  }
+  if (!rc && (mask & F_PS) && !(L->psc = malloc((size_t)L->n * sizeof *L->psc)))
+    rc = sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   L->fields = (int)mask;
   if (rc) {
     release(L);
