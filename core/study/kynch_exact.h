@@ -52,6 +52,12 @@ static inline kx_law kx_richardson_zaki(double u_t, double n, double phi_max) {
   return l;
 }
 
+/* The same with the flux truncated at phi_max (a step to zero there) instead of the factor (1 - phi/phi_max). */
+static inline kx_law kx_richardson_zaki_step(double u_t, double n, double phi_max) {
+  kx_law l = {u_t, n, phi_max, 0.0, 0.0, 1};
+  return l;
+}
+
 static inline kx_law kx_nigam(double u_t, double K, double alpha_m) {
   kx_law l = {u_t, 2.0, alpha_m, K * alpha_m, 0.0, 0};
   return l;

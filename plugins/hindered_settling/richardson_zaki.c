@@ -16,9 +16,13 @@
  * not touch d/dphi), or from Garside & Al-Dibouni (1977), Ind. Eng. Chem.
  * Process Des. Dev. 16:206: n = (5.1 + 0.27 Re_t^0.9) / (1 + 0.1 Re_t^0.9),
  * smooth from 5.1 (Re_t -> 0) to 2.7 (Re_t -> infinity).
- * Optional packing cut-off (not in Richardson & Zaki): f = (1-phi)^n
- * (1 - phi/phi_max), so that the flux vanishes at phi_max and a sediment
- * forms without a separate sediment model; phi > phi_max is then refused.
+ * Optional packing cut-off (not in Richardson & Zaki), so that the flux
+ * vanishes at phi_max and a sediment forms without a separate sediment
+ * model; phi > phi_max is then refused:
+ *   packing_cutoff = true:  f = (1-phi)^n (1 - phi/phi_max) (multiplicative);
+ *   packing_cutoff = step:  f = (1-phi)^n below phi_max and 0 at phi_max (a
+ *                           flux truncated at the maximum concentration,
+ *                           which Kynch's (1952) theory admits).
  *
  * u_t, the terminal velocity of one particle (d = sphericity d_p), is
  * signed: positive along the body force for rho_s > rho_f, negative for
@@ -36,7 +40,7 @@
 typedef struct rz_params {
   int32_t exponent;          /* 0 given, 1 richardson_zaki_1954, 2 garside_al_dibouni_1977 */
   double n;                  /* 4.65 */
-  int32_t packing_cutoff;    /* bool */
+  int32_t packing_cutoff;    /* 0 none, 1 multiplicative, 2 step */
   double phi_max;            /* 0.64 */
   int32_t terminal_velocity; /* SL_UT_* */
   double u_t;                /* given terminal velocity */
@@ -50,7 +54,8 @@ static const sl_param_desc params[] = {
                      "where n comes from: the parameter n, the Richardson-Zaki (1954) Re_t and d/D correlation, or "
                      "Garside & Al-Dibouni (1977)"),
     SL_PARAM_REAL_OF(rz_params, n, 4.65, 1.0, 20.0, "1", "Richardson-Zaki exponent when exponent = given"),
-    SL_PARAM_BOOL_OF(rz_params, packing_cutoff, 0, "multiply by (1 - phi/phi_max) so that settling stops at phi_max"),
+    SL_PARAM_ENUM_OF(rz_params, packing_cutoff, 0, "false|true|step",
+                     "settling stops at phi_max: true multiplies by (1 - phi/phi_max), step drops to 0 there"),
     SL_PARAM_REAL_OF(rz_params, phi_max, 0.64, 0.3, 1.0, "1", "maximum packing fraction of the packing cut-off"),
     SL_PARAM_ENUM_OF(rz_params, terminal_velocity, SL_UT_STOKES, SL_UT_CHOICES,
                      "single-particle terminal velocity: given (u_t), stokes, schiller_naumann or rowe (the same C_D)"),
@@ -122,10 +127,12 @@ static int evaluate(const void *state, const sl_eval_args *a) {
     }
     double eps = 1.0 - phi[q];
     double f = pow(eps, n), f_phi = -n * pow(eps, n - 1.0);
-    if (p->packing_cutoff) {
+    if (p->packing_cutoff == 1) {
       double c = 1.0 - phi[q] / p->phi_max;
       f_phi = f_phi * c - f / p->phi_max;
       f *= c;
+    } else if (p->packing_cutoff == 2 && phi[q] >= p->phi_max) {
+      f = f_phi = 0.0;
     }
     vs[q] = ut * f;
     if (dvs) dvs[q] = ut * f_phi;
@@ -144,7 +151,8 @@ static const sl_closure_desc richardson_zaki = {
     .version = "1.0.0",
     .summary = "Richardson-Zaki (1954) hindered settling u_t (1-phi)^n, n given or from Re_t",
     .formula =
-        "settling_velocity = u_t f(phi),  f = (1 - phi)^n  [x (1 - phi/phi_max) with packing_cutoff];\n"
+        "settling_velocity = u_t f(phi),  f = (1 - phi)^n  [x (1 - phi/phi_max) with packing_cutoff = true; 0 at "
+        "phi_max with packing_cutoff = step];\n"
         "n given, or Richardson-Zaki (1954): 4.65 + 19.5 d/D (Re_t < 0.2), (4.35 + 17.5 d/D) Re_t^-0.03 (< 1), "
         "(4.45 + 18 d/D) Re_t^-0.1 (< 200), 4.45 Re_t^-0.1 (< 500), 2.39 (>= 500);\n"
         "or Garside & Al-Dibouni (1977): n = (5.1 + 0.27 Re_t^0.9)/(1 + 0.1 Re_t^0.9);  Re_t = rho_f |u_t| "

@@ -154,6 +154,22 @@ static void richardson_zaki(void) {
   }
 }
 
+/* The flux truncated at phi_max (packing_cutoff = step): the bottom shock jumps from phi0 straight to phi_max with
+ * the speed phi0 u_t (1-phi0)^n / (phi_max - phi0), faster than with the smooth cut-off's sediment. */
+static void richardson_zaki_step(void) {
+  kynch k;
+  CHECK(kx_init(&k, kx_richardson_zaki_step(stokes_ut(), 4.65, phi_max), H, 0.1) == 0);
+  char every[64], end[64];
+  set_every(every, sizeof every, k.t1 / 10);
+  snprintf(end, sizeof end, "time.end=%.17g", k.t1 * 0.95);
+  const char *sets[] = {"closure.hindered_settling.packing_cutoff=step", every, end, "output.interface=0.05", NULL};
+  double sigma = 0.1 * stokes_ut() * pow(0.9, 4.65) / (phi_max - 0.1);
+  printf("  Richardson-Zaki truncated at phi_max: exact bottom shock %.6g m/s (the formula's %.6g)\n", k.sigma, sigma);
+  CHECK_MSG(fabs(k.sigma / sigma - 1.0) < 1e-12, "exact solution's shock %.10g, the jump condition's %.10g", k.sigma,
+            sigma);
+  column("Richardson-Zaki truncated, phi0 = 0.10", &k, NULL, sets, "kynch_rz_step.h5", 200, 1, NULL);
+}
+
 static void nigam_fan(void) {
   kynch k;
   CHECK(kx_init(&k, kx_nigam(stokes_ut(), 2.5, 0.68), H, 0.1) == 0);
@@ -646,6 +662,7 @@ static void bad_input(void) {
 
 static void kynch_part(void) {
   richardson_zaki();
+  richardson_zaki_step();
   nigam_fan();
   refinement();
   bad_input();
