@@ -248,7 +248,7 @@ static void test_richardson_zaki(void) {
     sl_tc_close(c);
   }
   /* Packing cut-off: f = (1-phi)^n (1 - phi/phi_max), 0 at phi_max, refused above. */
-  sl_tc *pc = sl_tc_open("hindered_settling", "richardson_zaki", "packing_cutoff=1", "phi_max=0.6", NULL);
+  sl_tc *pc = sl_tc_open("hindered_settling", "richardson_zaki", "packing_cutoff=true", "phi_max=0.6", NULL);
   const double pphi[] = {0.0, 0.1, 0.35, 0.59};
   for (int i = 0; i < 4; ++i) {
     hs s = H(pphi[i], 1e-4, 2600.0, 1000.0, 1e-3);
