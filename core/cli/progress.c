@@ -26,6 +26,7 @@ enum { LINE_MAX_CHARS = 160 };
 #define REDRAW_INTERVAL 0.1 /* s: at most 10 redraws per second */
 #define RATE_SAMPLE 0.5     /* s: shortest interval a rate is measured over */
 #define RATE_MEMORY 5.0     /* s: time constant of the rate's smoothing */
+#define LOG_INTERVAL 10.0   /* s: between lines of the log when the output is not a terminal */
 
 void sl_progress_begin(sl_progress *p, FILE *f, double t_start, double t_end) {
   memset(p, 0, sizeof *p);
@@ -34,15 +35,25 @@ void sl_progress_begin(sl_progress *p, FILE *f, double t_start, double t_end) {
   p->now = sl_wall_seconds;
   p->last_draw = -INFINITY;
   p->mark_t = p->mark_wall = NAN;
-  const char *env = getenv("SLUICE_PROGRESS");
+  p->started = NAN;
+  const char *env = getenv("SLUICE_PROGRESS"), *every = getenv("SLUICE_PROGRESS_EVERY");
+  p->interval = LOG_INTERVAL;
+  if (every) {
+    char *end;
+    double v = strtod(every, &end);
+    if (end != every && *end == '\0' && v > 0 && isfinite(v)) p->interval = v;
+  }
   if (!f)
     p->enabled = 0;
   else if (env && strcmp(env, "1") == 0)
     p->enabled = 1;
   else if (env && strcmp(env, "0") == 0)
     p->enabled = 0;
+  else if (env && strcmp(env, "lines") == 0)
+    p->enabled = p->lines = 1;
   else
-    p->enabled = isatty(fileno(f)) == 1;
+    p->enabled = 1, p->lines = isatty(fileno(f)) != 1;
+  if (p->lines) p->last_draw = NAN; /* the first line after one interval */
 }
 
 /* "--", "42 s", "3 min 05 s", "2 h 07 min", "3 d 04 h". */
@@ -76,10 +87,35 @@ static void sample_rate(sl_progress *p, double t, double now) {
   p->mark_t = t, p->mark_wall = now;
 }
 
+/* A line of the log: what the line in place shows, with the wall time spent, on a line of its own. */
+static void log_line(sl_progress *p, double t, double dt, long step, int nonlinear_iterations, double now) {
+  if (isnan(p->last_draw)) p->last_draw = now;
+  if (!(now - p->last_draw >= p->interval)) return;
+  p->last_draw = now;
+  char left[32], spent[32];
+  format_left(now - p->started, spent, sizeof spent);
+  double span = p->t_end - p->t_start;
+  int ok;
+  if (span > 0 && isfinite(span)) {
+    format_left(p->rate > 0 ? (p->t_end - t) / p->rate : NAN, left, sizeof left);
+    ok = fprintf(p->f, "sluice: t = %.6g of %.6g s (%.1f %%), step %ld, dt %.3g s, %d iterations; %s spent, %s left\n",
+                 t, p->t_end, 100.0 * (t - p->t_start) / span, step, dt, nonlinear_iterations, spent, left) >= 0;
+  } else {
+    ok = fprintf(p->f, "sluice: t = %.6g s, step %ld, dt %.3g s, %d iterations; %s spent\n", t, step, dt,
+                 nonlinear_iterations, spent) >= 0;
+  }
+  if (!ok || fflush(p->f) != 0) p->enabled = 0;
+}
+
 void sl_progress_update(sl_progress *p, double t, double dt, long step, int nonlinear_iterations) {
   if (!p->enabled) return;
   double now = p->now();
+  if (isnan(p->started)) p->started = now;
   sample_rate(p, t, now);
+  if (p->lines) {
+    log_line(p, t, dt, step, nonlinear_iterations, now);
+    return;
+  }
   if (!(now - p->last_draw >= REDRAW_INTERVAL)) return;
   p->last_draw = now;
 
@@ -102,7 +138,7 @@ void sl_progress_update(sl_progress *p, double t, double dt, long step, int nonl
 }
 
 void sl_progress_end(sl_progress *p) {
-  if (p->enabled && p->width > 0) {
+  if (p->enabled && !p->lines && p->width > 0) {
     if (fprintf(p->f, "\r%*s\r", p->width, "") < 0 || fflush(p->f) != 0) p->enabled = 0;
   }
   p->width = 0;
@@ -168,18 +204,20 @@ void sl_run_summary_format(const sl_run_summary *s, char *buf, size_t len) {
   put(&o, "sluice: %ld step%s (%ld rejected), %ld ", s->steps, s->steps == 1 ? "" : "s", s->rejected_steps,
       s->nonlinear_iterations);
   put_text(&o, nl);
-  put(&o, " iteration%s; CPU %.1f s (wall %.1f s)", s->nonlinear_iterations == 1 ? "" : "s", nonneg(s->cpu_seconds),
+  put(&o, " iteration%s; CPU %.1f s, wall %.1f s", s->nonlinear_iterations == 1 ? "" : "s", nonneg(s->cpu_seconds),
       nonneg(s->wall_seconds));
 
+  /* the phases are timed by the wall clock: their shares are of the wall time */
   static const char *const names[5] = {"assembly", "factorisation", "solve", "output", "other"};
   double v[5] = {nonneg(s->assembly), nonneg(s->factorisation), nonneg(s->solve), nonneg(s->output), 0.0};
   double parts = v[0] + v[1] + v[2] + v[3];
-  v[4] = nonneg(s->cpu_seconds) > parts ? nonneg(s->cpu_seconds) - parts : 0.0;
-  double total = parts + v[4]; /* the CPU total, or the parts' sum if the clocks disagree */
+  v[4] = nonneg(s->wall_seconds) > parts ? nonneg(s->wall_seconds) - parts : 0.0;
+  double total = parts + v[4]; /* the wall total, or the parts' sum if the clocks disagree */
   if (total > 0) {
     int pct[5];
     percentages(v, 5, total, pct);
-    for (int i = 0; i < 5; ++i) put(&o, "%s%s %.1f s (%d %%)", i ? ", " : ": ", names[i], v[i], pct[i]);
+    for (int i = 0; i < 5; ++i) put(&o, "%s%s %.1f s (%d %%)", i ? ", " : " (wall: ", names[i], v[i], pct[i]);
+    put(&o, ")");
   }
   if (s->step_limit && *s->step_limit) {
     put(&o, "; step limited by ");

@@ -20,9 +20,14 @@ typedef struct sl_progress {
   double rate;           /* simulated seconds per wall second, smoothed; 0 until known */
   double mark_t, mark_wall; /* simulated and wall time where the current rate sample began */
   int width;             /* characters of the line on screen, to blank them */
+  int lines;             /* one line per interval (a log, not a terminal) instead of a line redrawn in place */
+  double interval;       /* seconds between lines of the log */
+  double started;        /* wall time of the first update */
 } sl_progress;
 
-/* Enabled when f is a terminal; SLUICE_PROGRESS=1 forces it on, =0 off. */
+/* On a terminal, a line redrawn in place; otherwise (a log file, a pipe) one
+ * line every 10 s of wall time (SLUICE_PROGRESS_EVERY=seconds). SLUICE_PROGRESS=0
+ * turns it off, =1 forces the line in place, =lines the log lines. */
 void sl_progress_begin(sl_progress *p, FILE *f, double t_start, double t_end);
 /* After each step: redraws the line with '\r', at most 10 times per wall
  * second. Shows t, dt, the step, the nonlinear iterations of that step and
@@ -38,16 +43,16 @@ typedef struct sl_run_summary {
   long nonlinear_iterations;  /* all steps, rejected ones included */
   const char *nonlinear_name; /* e.g. "Newton", "Picard"; NULL: "nonlinear" */
   double wall_seconds, cpu_seconds; /* the whole run */
-  /* CPU seconds per phase (sl_cpu_seconds); the rest of cpu_seconds is
-   * reported as "other". */
+  /* wall seconds per phase; the rest of wall_seconds is reported as "other" */
   double assembly, factorisation, solve, output;
   const char *step_limit; /* what limited the step most often, or NULL */
 } sl_run_summary;
 
 /* One line, no newline, e.g. "sluice: 120 steps (3 rejected), 410 Newton
- * iterations; CPU 12.3 s (wall 12.5 s): assembly 1.2 s (10 %), ...,
- * other 0.5 s (4 %); step limited by error estimate". The percentages are
- * rounded so that they add up to 100. Truncated to fit len. */
+ * iterations; CPU 12.3 s, wall 12.5 s (wall: assembly 1.2 s (10 %), ...,
+ * other 0.6 s (5 %)); step limited by error estimate": the phases are
+ * wall-clock times, their percentages of the wall time, rounded so that
+ * they add up to 100. Truncated to fit len. */
 void sl_run_summary_format(const sl_run_summary *s, char *buf, size_t len);
 
 #endif
