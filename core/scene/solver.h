@@ -8,7 +8,7 @@
 #include "core/scene/scene.h"
 #include "core/solve/linsolve.h"
 
-#define SL_SCENE_LINEAR_CHOICES "auto|umfpack|klu|cholmod"
+#define SL_SCENE_LINEAR_CHOICES "auto|umfpack|klu|cholmod|petsc"
 #define SL_SCENE_REUSE_CHOICES "auto|never"
 #define SL_SCENE_ORDERING_CHOICES "auto|amd|colamd|metis"
 

@@ -41,10 +41,30 @@ const char *sl_refactor_reason_name(int reason) {
   return reason >= 0 && reason < SL_REFACTOR_N ? reason_names[reason] : "unknown";
 }
 
-static const char *const solver_names[] = {"umfpack", "klu", "cholmod"};
+static const char *const solver_names[] = {"umfpack", "klu", "cholmod", "petsc"};
 static const sl_linsolve_ops *const solver_ops[] = {&sl_linsolve_umfpack_ops, &sl_linsolve_klu_ops,
-                                                    &sl_linsolve_cholmod_ops};
+                                                    &sl_linsolve_cholmod_ops, &sl_linsolve_petsc_ops};
+
+#ifndef SLUICE_WITH_PETSC
+static int no_petsc(void **backend, sl_diag *d) {
+  *backend = NULL;
+  return sl_diag_set(d, SL_EBADINPUT, "linear solver petsc: this sluice was built without PETSc (configure with "
+                                      "-DSLUICE_WITH_PETSC=ON; Debian: libpetsc-real-dev)");
+}
+static void no_destroy(void *backend) { (void)backend; }
+const sl_linsolve_ops sl_linsolve_petsc_ops = {.name = "petsc", .create = no_petsc, .destroy = no_destroy};
+int sl_linsolve_petsc_options(const char *options, sl_diag *d) {
+  if (!options || !*options) return 0;
+  return no_petsc(&(void *){NULL}, d);
+}
+#endif
 enum { N_SOLVERS = (int)(sizeof solver_names / sizeof solver_names[0]) };
+/* sl_linsolve_names lists what this build can run; petsc is last and named even without it for a clear error. */
+#ifdef SLUICE_WITH_PETSC
+enum { N_BUILT = N_SOLVERS };
+#else
+enum { N_BUILT = N_SOLVERS - 1 };
+#endif
 
 const char *sl_linsolve_default_name(int32_t n) {
   const char *blas = sl_blas_description();
@@ -53,7 +73,7 @@ const char *sl_linsolve_default_name(int32_t n) {
 }
 
 const char *const *sl_linsolve_names(int *n) {
-  if (n) *n = N_SOLVERS;
+  if (n) *n = N_BUILT;
   return solver_names;
 }
 
@@ -86,9 +106,9 @@ int sl_linsolve_create(sl_linsolve **ls, const char *name, sl_diag *d) {
     if (strcmp(name, solver_names[i]) == 0) return sl_linsolve_create_ops(ls, solver_ops[i], d);
   const char *hint = sl_suggest(name, solver_names, N_SOLVERS);
   if (hint)
-    return sl_diag_set(d, SL_EBADINPUT, "unknown linear solver '%s' (did you mean '%s'?); known: umfpack, klu, cholmod",
-                       name, hint);
-  return sl_diag_set(d, SL_EBADINPUT, "unknown linear solver '%s'; known: umfpack, klu, cholmod", name);
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "unknown linear solver '%s' (did you mean '%s'?); known: umfpack, klu, cholmod, petsc", name, hint);
+  return sl_diag_set(d, SL_EBADINPUT, "unknown linear solver '%s'; known: umfpack, klu, cholmod, petsc", name);
 }
 
 void sl_linsolve_destroy(sl_linsolve *ls) {
@@ -157,7 +177,16 @@ void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len) {
     k += snprintf(buf + k, len - (size_t)k, ", %ld reused (FGMRES %.1f iterations a solve, %ld refactorised) %.3g s",
                   s->n_reused, (double)s->n_krylov_iterations / (double)(s->n_reused + s->n_krylov_failed),
                   s->n_krylov_failed, s->t_krylov);
-  if (k >= 0 && (size_t)k < len) snprintf(buf + k, len - (size_t)k, ", %ld solves %.3g s", s->n_solves, s->t_solve);
+  if (k >= 0 && (size_t)k < len) k += snprintf(buf + k, len - (size_t)k, ", %ld solves %.3g s", s->n_solves, s->t_solve);
+  if (k >= 0 && (size_t)k < len && ls->ops->describe) {
+    char what[160];
+    ls->ops->describe(ls->backend, what, sizeof what);
+    snprintf(buf + k, len - (size_t)k, " (%s)", what);
+  }
+}
+
+int sl_linsolve_set_blocks(sl_linsolve *ls, int32_t split, sl_diag *d) {
+  return ls->ops->set_blocks ? ls->ops->set_blocks(ls->backend, split, d) : 0;
 }
 
 int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
@@ -290,6 +319,22 @@ static int apply_factor(void *user, const double *x, double *y, sl_diag *d) {
 }
 
 int sl_linsolve_solve_rtol(sl_linsolve *ls, const sl_csr *A, const double *b, double *x, double rtol, sl_diag *d) {
+  if (ls->ops->solve_rtol && rtol > 0.0) { /* an iterative backend: its own preconditioner, the caller's tolerance */
+    int rc = sl_linsolve_factor(ls, A, d);
+    if (rc) return rc;
+    if (x == b) {
+      double *w = realloc(ls->work, (size_t)A->n_rows * sizeof *w);
+      if (!w) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", ls->ops->name);
+      ls->work = w;
+      memcpy(w, b, (size_t)A->n_rows * sizeof *w);
+      b = w;
+    }
+    double t0 = now();
+    rc = ls->ops->solve_rtol(ls->backend, A, b, x, rtol, d);
+    ls->st.t_solve += now() - t0;
+    if (!rc) ++ls->st.n_solves;
+    return rc;
+  }
   if (A->n_rows == A->n_cols && A->row_ptr) settle_fresh(ls, A);
   if (!(rtol > 0.0) || !ls->reuse.enabled || !ls->have_symbolic || !ls->have_numeric || ls->force_numeric ||
       ls->pattern_id != A->pattern_id || ls->n != A->n_rows || A->n_rows != A->n_cols || !ls->factored ||

@@ -85,6 +85,13 @@ typedef struct sl_linsolve_ops {
   /* Optional: as solve, for a preconditioner application (A holds the
    * factorised values): no iterative refinement. NULL: solve. */
   int (*precond)(void *backend, const sl_csr *A, const double *b, double *x, sl_diag *d);
+  /* Optional, an iterative backend: x to a relative residual rtol (solve: to the backend's own tight one);
+   * sl_linsolve_solve_rtol then calls it instead of reusing an older factorisation. */
+  int (*solve_rtol)(void *backend, const sl_csr *A, const double *b, double *x, double rtol, sl_diag *d);
+  /* Optional: the unknowns [0, split) and [split, n) are the two fields of a saddle point (velocity, pressure). */
+  int (*set_blocks)(void *backend, int32_t split, sl_diag *d);
+  /* Optional: what the backend does, for the run's summary ("fgmres/fieldsplit, 120 iterations"). */
+  void (*describe)(void *backend, char *buf, size_t len);
 } sl_linsolve_ops;
 
 /* Fill-reducing orderings a backend may be told to use. AUTO is the
@@ -98,10 +105,16 @@ enum { SL_ORDERING_AUTO = 0, SL_ORDERING_AMD, SL_ORDERING_COLAMD, SL_ORDERING_ME
 extern const sl_linsolve_ops sl_linsolve_umfpack_ops;
 extern const sl_linsolve_ops sl_linsolve_klu_ops;
 extern const sl_linsolve_ops sl_linsolve_cholmod_ops;
+/* With SLUICE_WITH_PETSC: PETSc's KSP on one rank (core/solve/ls_petsc.c); without, its create says how to
+ * build it. */
+extern const sl_linsolve_ops sl_linsolve_petsc_ops;
+/* PETSc options (as on a PETSc command line: "-ksp_type gmres -pc_type ilu"), read before the next solver is
+ * created; PETSC_OPTIONS in the environment is read as well. SL_EBADINPUT without PETSc. */
+int sl_linsolve_petsc_options(const char *options, sl_diag *d);
 
 typedef struct sl_linsolve sl_linsolve;
 
-/* By name: "umfpack" | "klu" | "cholmod"; NULL or "" gives "umfpack".
+/* By name: "umfpack" | "klu" | "cholmod" | "petsc"; NULL or "" gives "umfpack".
  * Unknown names: SL_EBADINPUT with a did-you-mean. */
 int sl_linsolve_create(sl_linsolve **ls, const char *name, sl_diag *d);
 int sl_linsolve_create_ops(sl_linsolve **ls, const sl_linsolve_ops *ops, sl_diag *d);
@@ -129,6 +142,10 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d);
 /* Factorise as needed, then x = A^-1 b. x may be b (solved in place). A
  * non-finite solution is SL_EFAILED. */
 int sl_linsolve_solve(sl_linsolve *ls, const sl_csr *A, const double *b, double *x, sl_diag *d);
+/* The system is a saddle point whose first `split` unknowns are one field (the velocity) and the rest the
+ * other (the pressure): a backend that can use it (PETSc's field split) does; the direct ones ignore it. */
+int sl_linsolve_set_blocks(sl_linsolve *ls, int32_t split, sl_diag *d);
+
 /* Force a numeric factorisation at the next solve (values written without
  * sl_csr_touch). */
 void sl_linsolve_values_changed(sl_linsolve *ls);

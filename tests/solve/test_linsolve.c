@@ -235,16 +235,29 @@ static void names(void) {
   CHECK_CONTAINS(d.msg, "did you mean 'umfpack'");
   CHECK(sl_linsolve_create(&ls, "cholmd", &d) == SL_EBADINPUT);
   CHECK_CONTAINS(d.msg, "did you mean 'cholmod'");
-  CHECK(sl_linsolve_create(&ls, "petsc", &d) == SL_EBADINPUT);
+  CHECK(sl_linsolve_create(&ls, "pardiso", &d) == SL_EBADINPUT);
   CHECK(strstr(d.msg, "did you mean") == NULL);
-  CHECK_CONTAINS(d.msg, "umfpack, klu, cholmod");
+  CHECK_CONTAINS(d.msg, "umfpack, klu, cholmod, petsc");
+#ifdef SLUICE_WITH_PETSC
+  CHECK(sl_linsolve_create(&ls, "petsc", &d) == 0);
+  sl_linsolve_destroy(ls);
+  ls = NULL;
+#else
+  CHECK(sl_linsolve_create(&ls, "petsc", &d) == SL_EBADINPUT);
+  CHECK(ls == NULL);
+  CHECK_CONTAINS(d.msg, "built without PETSc");
+#endif
   CHECK(sl_linsolve_create(&ls, NULL, &d) == 0);
   CHECK(strcmp(sl_linsolve_name(ls), "umfpack") == 0);
   CHECK_CONTAINS(sl_linsolve_description(ls), "UMFPACK V5");
   sl_linsolve_destroy(ls);
   int n = 0;
   const char *const *all = sl_linsolve_names(&n);
+#ifdef SLUICE_WITH_PETSC
+  CHECK(n == 4 && strcmp(all[3], "petsc") == 0);
+#else
   CHECK(n == 3 && strcmp(all[1], "klu") == 0);
+#endif
   sl_linsolve_destroy(NULL);
 
   /* Shape errors are bad input. */
