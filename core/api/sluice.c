@@ -71,6 +71,12 @@ static sluice *create(const char *path, sluice_error *e) {
   return s;
 }
 
+int sluice_ranks(int *rank, int *size, sluice_error *e) {
+  sl_diag d;
+  int rc = sl_linsolve_ranks(rank, size, &d);
+  return rc ? from_diag(e, rc, &d) : 0;
+}
+
 int sluice_open(const char *path, const sluice_open_opts *o, sluice **out, sluice_error *e) {
   *out = NULL;
   sluice *s = create(path, e);

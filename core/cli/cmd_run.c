@@ -1,10 +1,12 @@
 /* sluice run SCENE.ini: parse and validate a scene, resolve its closures,
  * and run it (models navier_stokes, mixture and two_fluid). */
+#include <dirent.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/cli/cli.h"
 #include "core/cli/progress.h"
@@ -147,6 +149,21 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
   return rc;
 }
 
+/* Removes a rank's private output folder and what it holds. */
+static void remove_rank_folder(const char *dir) {
+  DIR *dp = opendir(dir);
+  if (dp) {
+    for (struct dirent *de; (de = readdir(dp));) {
+      if (!strcmp(de->d_name, ".") || !strcmp(de->d_name, "..")) continue;
+      char path[512];
+      snprintf(path, sizeof path, "%s/%s", dir, de->d_name);
+      remove(path);
+    }
+    closedir(dp);
+  }
+  rmdir(dir);
+}
+
 int sl_cmd_run(int argc, char **argv) {
   if (sl_cli_wants_help(argc, argv)) {
     puts(run_usage);
@@ -190,6 +207,20 @@ int sl_cmd_run(int argc, char **argv) {
 
   sluice *sc = NULL;
   sluice_error e = {0, ""};
+  /* under mpirun the ranks share the linear solves; rank 0 prints and writes, the others write into a private
+     folder of the working folder that goes at the end */
+  int rank = 0, ranks = 1;
+  char rank_dir[64] = "", rank_out[96] = "";
+  if (sluice_ranks(&rank, &ranks, &e)) return sl_cli_error(e.code, "%s", e.msg);
+  if (rank > 0) {
+    snprintf(rank_dir, sizeof rank_dir, ".sluice-rank%d-XXXXXX", rank);
+    if (!mkdtemp(rank_dir)) return sl_cli_error(SL_EFAILED, "rank %d: cannot make a folder for its output", rank);
+    snprintf(rank_out, sizeof rank_out, "%s/out.h5", rank_dir);
+    if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) {
+      remove_rank_folder(rank_dir);
+      return 1;
+    }
+  }
   const char *set_list[MAX_SETS + 1];
   for (int i = 0; i < n_sets; ++i) set_list[i] = sets[i];
   set_list[n_sets] = NULL;
@@ -202,9 +233,10 @@ int sl_cmd_run(int argc, char **argv) {
   } else if (!rc && check_only) {
     rc = sluice_check(sc, stdout, &e);
   } else if (!rc) {
-    rc = simulate(sc, scene, out_file, restart, profile, &e);
+    rc = simulate(sc, scene, rank > 0 ? rank_out : out_file, restart, profile, &e);
   }
   sluice_close(sc);
   if (rc) fprintf(stderr, "%s\n", e.msg);
+  if (rank > 0) remove_rank_folder(rank_dir);
   return rc;
 }

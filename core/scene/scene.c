@@ -506,6 +506,23 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
                      "Debian: libpetsc-real-dev); this build has umfpack, klu and cholmod",
                      sl_scene_where(sc, &sc->solver.linear, at, sizeof at));
   }
+  int rank = 0, ranks = 1;
+  if (!rc) rc = sl_linsolve_ranks(&rank, &ranks, d);
+  if (!rc && ranks > 1) { /* several ranks share the linear solves (PETSc), each keeps the whole state */
+    char at[400];
+    if (!sl_linsolve_built("petsc"))
+      rc = sl_diag_set(d, SL_EBADINPUT,
+                       "launched on %d ranks (mpirun), but this sluice was built without PETSc and MPI: it runs on "
+                       "one (configure with -DSLUICE_WITH_PETSC=ON to run on several)", ranks);
+    else if (!sl_schema_key(schema, "solver", "linear"))
+      rc = sl_diag_set(d, SL_EBADINPUT, "launched on %d ranks (mpirun): the %s cannot run on several ranks yet; run "
+                       "it on one", ranks, schema->title);
+    else if (sl_scene_given(sc, &sc->solver.linear) && sc->solver.linear != 4)
+      rc = sl_diag_set(d, SL_EBADINPUT,
+                       "%s: launched on %d ranks (mpirun), the linear solves must be PETSc's (linear = petsc or "
+                       "auto); the direct solvers run on one rank",
+                       sl_scene_where(sc, &sc->solver.linear, at, sizeof at), ranks);
+  }
   if (!rc && o->build_mesh && sl_schema_has_section(schema, "mesh")) rc = sl_scene_mesh_build(sc, &sc->mesh, d);
   if (!rc && o->build_mesh && schema->boundary_size) rc = fill_boundaries(&b, d);
   /* every entry outside the closures' sections is read by now */

@@ -72,8 +72,11 @@ int sl_scene_linsolve(const sl_scene *sc, int32_t n, sl_linsolve **ls, const cha
   *ls = NULL;
   int which = sc->solver.linear; /* 0: auto, else linear_names[which - 1] */
   int n_names = (int)(sizeof linear_names / sizeof *linear_names);
-  *name = which > 0 && which <= n_names ? linear_names[which - 1] : sl_linsolve_default_name(n);
-  int rc = 0;
+  int rank = 0, ranks = 1;
+  int rc = sl_linsolve_ranks(&rank, &ranks, d);
+  if (rc) return rc;
+  /* auto: PETSc when launched on several ranks (the scene's validation refused a direct solver there) */
+  *name = which > 0 && which <= n_names ? linear_names[which - 1] : ranks > 1 ? "petsc" : sl_linsolve_default_name(n);
   if (strcmp(*name, "petsc") == 0 && (rc = sl_linsolve_petsc_scene_options(sc->solver.petsc_options, d))) return rc;
   if ((rc = sl_linsolve_create(ls, *name, d))) return rc;
   if (sc->solver.reuse && (rc = sl_linsolve_set_reuse_name(*ls, "never", d))) {
