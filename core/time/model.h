@@ -77,6 +77,8 @@ typedef struct sl_model_stats {
   long solves_skipped; /* steps whose result was known without a solve */
   int converged;             /* steady: the (last) solve converged */
   double correction, residual0, residual;
+  double term_scale; /* the last solve's residual scale set by its terms (core/solve/newton.h) */
+  int roundoff;      /* the last solve converged with its residual at the round-off of its terms */
   char coupling_summary[256]; /* the model's own one line, or "" */
   char linear_summary[256];
   char stop_reason[256];      /* a steady solve's: set by the model */

@@ -450,9 +450,6 @@ struct sl_flow {
   double rho_solid;
   sl_flow_rider rider;
   const char *linear; /* the solver's name */
-  /* The residual's round-off (see solve): the largest initial residual of
-   * the run, and whether a solve has already ended there. */
-  double newton_scale[2];
   /* Solves whose result is known ([solver] skip_known): */
   int column_at_rest; /* a 1-D column between walls: div u = 0 makes u = 0 whatever the load */
   int unforced;       /* walls at rest all round, no body force, no rotation: only the rider loads it */
@@ -562,48 +559,26 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
 
 int sl_flow_checkpoint(sl_flow *f, sl_checkpoint_array *a, int max) {
   /* a restart starts with a fresh factorisation: so does the run that goes on, bit for bit the same */
+  (void)a, (void)max;
   sl_linsolve_drop_numeric(f->ls);
-  if (max < 1) return 0;
-  snprintf(a[0].name, sizeof a[0].name, "newton_scale"); /* a restart tests convergence as the run did */
-  a[0].n = 2, a[0].data = f->newton_scale;
-  return 1;
+  return 0;
 }
 
 int sl_flow_restore(sl_flow *f, const sl_checkpoint *ck, sl_diag *d) {
-  (void)d;
-  const sl_checkpoint_array *ns = sl_checkpoint_find(ck, "newton_scale");
-  if (ns && ns->n == 2) f->newton_scale[0] = ns->data[0], f->newton_scale[1] = ns->data[1];
+  (void)f, (void)ck, (void)d;
   return 0;
 }
 
 /* ---- solves ---------------------------------------------------------------- */
 
-/* A residual this far below the largest initial residual of the run (its
- * forcing: the lid, the buoyancy) is at round-off. A flow nearly at rest
- * under a large load that the pressure carries (a suspension close to
- * packing) gets there in one iteration, and then no relative test can pass:
- * the corrections are noise and the predictor's residual, the reference of
- * the relative residual test, is already tiny. Such a solve is converged.
- * Ordinary solves pass their own tests first and are not touched; once one
- * has ended at round-off, the later ones stop there (atol). */
-#define NEWTON_ROUNDOFF 1e-13
-
 static int solve(sl_flow *f, double *u, int *iterations, sl_diag *d) {
   sl_newton_stats st;
   double c0 = cpu();
-  double *scale = &f->newton_scale[0], *engaged = &f->newton_scale[1];
-  f->nopts.atol = *engaged ? NEWTON_ROUNDOFF * *scale : 0.0;
   int rc = sl_flow_problem_solve(&f->prob, u, f->ls, &f->nopts, &st, d);
-  if (isfinite(st.residual0) && st.residual0 > *scale) *scale = st.residual0;
-  if (rc == SL_EFAILED && st.iterations > 0 && isfinite(st.residual) && st.residual <= NEWTON_ROUNDOFF * *scale) {
-    rc = 0; /* u is the last iterate, whose residual st.residual is */
-    *engaged = 1.0;
-    f->st.roundoff_accepted++;
-  } else if (rc == 0 && f->nopts.atol > 0.0 && st.residual <= f->nopts.atol) {
-    f->st.roundoff_accepted++;
-  }
+  if (rc == 0 && st.roundoff) f->st.roundoff_accepted++;
   if (iterations) *iterations = st.iterations;
   f->st.correction = st.correction;
+  f->st.roundoff = st.roundoff, f->st.term_scale = st.term_scale;
   f->st.residual0 = st.residual0, f->st.residual = st.residual;
   f->st.matrix_assemblies += st.assemblies, f->st.residual_assemblies += st.residuals;
   f->st.assembly += st.t_assembly;
@@ -672,7 +647,26 @@ static int rebuild_physics(sl_flow *f, sl_diag *d) {
   return 0;
 }
 
+/* How the last solve converged, in words that agree with the numbers: the
+ * last correction against the tolerance, the residual against its terms'
+ * scale; or the residual at round-off (the correction then measures noise). */
+static const char *converged_text(const sl_flow *f, char *buf, size_t cap) {
+  const sl_model_stats *r = &f->st;
+  double rel = r->term_scale > 0 ? r->residual / r->term_scale : 0.0;
+  if (r->roundoff)
+    snprintf(buf, cap,
+             "the residual %.2g at the round-off of its terms' scale %.2g (%.2g of it), where the corrections are "
+             "noise; residual from %.2g",
+             r->residual, r->term_scale, rel, r->residual0);
+  else
+    snprintf(buf, cap,
+             "last relative correction %.2g <= tolerance %g; residual %.2g from %.2g, %.2g of its terms' scale",
+             r->correction, f->nopts.rtol, r->residual, r->residual0, rel);
+  return buf;
+}
+
 int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag *d) {
+  char tb[200];
   const sl_solver_config *sv = &f->sc->solver;
   sl_model_stats *r = &f->st;
   const char *key = sv->continuation ? sv->continuation : "";
@@ -688,10 +682,8 @@ int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag
       snprintf(r->stop_reason, sizeof r->stop_reason, "steady state solved: a linear problem, one solve (residual %.2g)",
                r->residual);
     else
-      snprintf(r->stop_reason, sizeof r->stop_reason,
-               "steady state converged in %d Newton iteration%s (last relative correction %.2g, tolerance %g; "
-               "residual %.2g from %.2g)",
-               its, its == 1 ? "" : "s", r->correction, f->nopts.rtol, r->residual, r->residual0);
+      snprintf(r->stop_reason, sizeof r->stop_reason, "steady state converged in %d Newton iteration%s (%s)", its,
+               its == 1 ? "" : "s", converged_text(f, tb, sizeof tb));
     return 0;
   }
   /* continuation: section.key from continuation_from to its scene value (checked at set-up) */
@@ -713,10 +705,8 @@ int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag
     if (!rc && k == n_stages) {
       r->converged = 1;
       snprintf(r->stop_reason, sizeof r->stop_reason,
-               "steady state converged at %s = %g, the last of %ld continuation stages, in %d Newton iteration%s "
-               "(last relative correction %.2g, tolerance %g; residual %.2g from %.2g)",
-               key, v, n_stages + 1, its, its == 1 ? "" : "s", r->correction, f->nopts.rtol, r->residual,
-               r->residual0);
+               "steady state converged at %s = %g, the last of %ld continuation stages, in %d Newton iteration%s (%s)",
+               key, v, n_stages + 1, its, its == 1 ? "" : "s", converged_text(f, tb, sizeof tb));
     }
   }
   return rc;
@@ -847,8 +837,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
                               .picard_only = sc->solver.nonlinear == 1,
                               .picard_first = (int)sc->solver.picard_first,
                               .linear = !sc->flow.convection && !f->ph.visc,
-                              .scale = 1e-12,
-                              .rtol_residual = 1e-10};
+                              .scale = 1e-12};
   f->u = calloc((size_t)f->th->n_dofs, sizeof *f->u);
   f->work = malloc((size_t)f->th->vel->n_nodes * 3 * sizeof *f->work);
   /* the cell diagnostics only when written */
