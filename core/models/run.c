@@ -38,6 +38,7 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
   sl_scene_provenance pv = {0};
   int rc = sl_model_scene(ini, reg, 1, 1, &entry, &sc, d);
   const sl_model_ops *ops = entry ? entry->ops : NULL;
+  if (!rc) sc->hooks = (sl_run_hooks){.nonlinear = o->nonlinear, .user = o->nonlinear_user, .interrupt = o->interrupt};
   if (!rc) rc = ops->setup(&self, sc, &info, d);
   if (!rc && !(rc = sl_time_loop_init(&loop, &info, &sc->time, d))) have_loop = 1;
   /* a restart is checked against the scene before anything is written */

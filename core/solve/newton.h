@@ -9,7 +9,8 @@
  *
  * The iteration converges when the correction is small,
  *   max |du_i| <= rtol * max(max |u_i|, scale)   over i < n_check
- * (that last correction is applied) AND the residual at u is small against
+ * (that last correction is applied; or the next correction, estimated as
+ * the last one times the residual's decrease after a full step, is) AND the residual at u is small against
  * the scale the solution's own terms set,
  *   |b|_2 <= rtol_residual * T,  T = |t|_2,  t_i = sum_j |A_ij u_j|
  * over the rows that are equations (not constrained): a residual small only
@@ -41,6 +42,8 @@
 #ifndef SLUICE_SOLVE_NEWTON_H
 #define SLUICE_SOLVE_NEWTON_H
 
+#include <signal.h>
+
 #include "core/solve/linsolve.h"
 #include "core/solve/sparse.h"
 #include "core/util/diag.h"
@@ -71,6 +74,9 @@ typedef struct sl_newton_opts {
      it is a Picard one, its relative correction, the residual at u and the terms' scale. May be NULL. */
   void (*monitor)(void *user, int iteration, int picard, double correction, double residual, double terms);
   void *monitor_user;
+  /* When set (asynchronously, a signal): stop before the next iteration with SL_EFAILED, u the last iterate
+     (steady solves; a transient step finishes and the loop stops after it). NULL: none. */
+  volatile sig_atomic_t *interrupt;
 } sl_newton_opts;
 
 /* The residual's default tolerance against the terms' scale (with rtol, the larger), and the level at which
@@ -98,6 +104,8 @@ typedef struct sl_newton_stats {
   double correction;          /* the last relative correction */
   double term_scale;          /* T of the last iterate (see above) */
   int roundoff;               /* converged with the residual at the round-off of its terms */
+  int estimated;              /* correction is the next one's estimate (the last one times the residual's
+                                 decrease), below the tolerance, and no further solve was made */
   double history[SL_NEWTON_HISTORY]; /* relative correction of each iteration */
   double t_assembly;          /* wall seconds in the callback */
 } sl_newton_stats;

@@ -455,6 +455,9 @@ struct sl_flow {
   int unforced;       /* walls at rest all round, no body force, no rotation: only the rider loads it */
   int fixed_point;    /* the last accepted solve returned its start and the rider's phi has not changed since */
   int solved, solved_to_start; /* the last step's: solved (not skipped), and its result was its start */
+  /* what the nonlinear iterations are reported with (sc->hooks): the time solved for, the continuation stage */
+  double t_solve;
+  long stage, n_stages;
   sl_model_stats st;
 };
 
@@ -571,14 +574,26 @@ int sl_flow_restore(sl_flow *f, const sl_checkpoint *ck, sl_diag *d) {
 
 /* ---- solves ---------------------------------------------------------------- */
 
-static int solve(sl_flow *f, double *u, int *iterations, sl_diag *d) {
+static void report_iteration(void *user, int iteration, int picard, double correction, double residual,
+                             double terms) {
+  const sl_flow *f = user;
+  sl_nl_report r = {.t = f->t_solve, .stage = f->stage, .n_stages = f->n_stages, .iteration = iteration,
+                    .picard = picard, .correction = correction, .residual = residual, .terms = terms};
+  f->sc->hooks.nonlinear(f->sc->hooks.user, &r);
+}
+
+/* A steady solve stops at an interrupt between its iterations; a transient step is finished first. */
+static int solve_opts(sl_flow *f, double *u, int *iterations, int steady, sl_diag *d) {
   sl_newton_stats st;
   double c0 = cpu();
-  int rc = sl_flow_problem_solve(&f->prob, u, f->ls, &f->nopts, &st, d);
+  sl_newton_opts o = f->nopts;
+  if (f->sc->hooks.nonlinear) o.monitor = report_iteration, o.monitor_user = f;
+  if (steady) o.interrupt = f->sc->hooks.interrupt;
+  int rc = sl_flow_problem_solve(&f->prob, u, f->ls, &o, &st, d);
   if (rc == 0 && st.roundoff) f->st.roundoff_accepted++;
   if (iterations) *iterations = st.iterations;
   f->st.correction = st.correction;
-  f->st.roundoff = st.roundoff, f->st.term_scale = st.term_scale;
+  f->st.roundoff = st.roundoff, f->st.term_scale = st.term_scale, f->st.estimated = st.estimated;
   f->st.residual0 = st.residual0, f->st.residual = st.residual;
   f->st.matrix_assemblies += st.assemblies, f->st.residual_assemblies += st.residuals;
   f->st.assembly += st.t_assembly;
@@ -586,6 +601,8 @@ static int solve(sl_flow *f, double *u, int *iterations, sl_diag *d) {
   f->st.cpu_flow += cpu() - c0;
   return rc;
 }
+
+static int solve(sl_flow *f, double *u, int *iterations, sl_diag *d) { return solve_opts(f, u, iterations, 0, d); }
 
 static int force_depends_on_t(const physics *ph) {
   for (int c = 0; c < MAX_COMP; ++c)
@@ -601,7 +618,7 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
     return -rc;
   size_t bytes = (size_t)f->th->n_dofs * sizeof *s->u;
   f->solved = 0;
-  f->ph.t = s->t + s->dt;
+  f->ph.t = f->t_solve = s->t + s->dt;
   /* Skip what is known: a vessel at rest under no load stays at rest; a closed column's velocity is 0 and its
      pressure is needed only when written; a flow at a fixed point whose phi has not changed gives itself again. */
   if (f->sc->solver.skip_known && s->state) {
@@ -654,29 +671,37 @@ static const char *converged_text(const sl_flow *f, char *buf, size_t cap) {
   const sl_model_stats *r = &f->st;
   double rel = r->term_scale > 0 ? r->residual / r->term_scale : 0.0;
   if (r->roundoff)
-    snprintf(buf, cap,
-             "the residual %.2g at the round-off of its terms' scale %.2g (%.2g of it), where the corrections are "
-             "noise; residual from %.2g",
-             r->residual, r->term_scale, rel, r->residual0);
+    snprintf(buf, cap, "residual %.2g from %.2g: at the round-off of its terms' scale %.2g, the corrections noise",
+             r->residual, r->residual0, r->term_scale);
   else
-    snprintf(buf, cap,
-             "last relative correction %.2g <= tolerance %g; residual %.2g from %.2g, %.2g of its terms' scale",
-             r->correction, f->nopts.rtol, r->residual, r->residual0, rel);
+    snprintf(buf, cap, "relative correction %.2g%s <= tolerance %g; residual %.2g from %.2g, %.2g of its terms' scale",
+             r->correction, r->estimated ? " (the next one's, estimated)" : "", f->nopts.rtol, r->residual,
+             r->residual0, rel);
   return buf;
 }
 
+static int diag_append(sl_diag *d, int rc, const char *tail) {
+  char msg[sizeof d->msg];
+  memcpy(msg, d->msg, sizeof msg);
+  return sl_diag_set(d, rc, "%.1700s%s", msg, tail);
+}
+
 int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag *d) {
-  char tb[200];
+  char tb[240];
   const sl_solver_config *sv = &f->sc->solver;
   sl_model_stats *r = &f->st;
   const char *key = sv->continuation ? sv->continuation : "";
   int rc = 0;
   *steps = 0, *iterations = 0;
+  f->t_solve = 0.0, f->stage = f->n_stages = 0;
   if (!*key) {
     int its = 0;
-    rc = solve(f, u, &its, d);
+    rc = solve_opts(f, u, &its, 1, d);
     *steps = 1, *iterations = its;
-    if (rc) return sl_diag_prefix(d, rc, "steady solve");
+    if (rc) {
+      sl_diag_prefix(d, rc, "steady solve");
+      return diag_append(d, rc, "; the state saved is the last Newton iterate, not a solution");
+    }
     r->converged = 1;
     if (f->nopts.linear)
       snprintf(r->stop_reason, sizeof r->stop_reason, "steady state solved: a linear problem, one solve (residual %.2g)",
@@ -686,22 +711,34 @@ int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag
                its == 1 ? "" : "s", converged_text(f, tb, sizeof tb));
     return 0;
   }
-  /* continuation: section.key from continuation_from to its scene value (checked at set-up) */
+  /* continuation: section.key from continuation_from to its scene value (checked at set-up); a stage that
+     fails leaves the state of the last converged one */
   double target, from = sv->continuation_from;
   long n_stages = sv->continuation_steps;
   if ((rc = sl_scene_get_real(f->sc, key, &target, d))) return rc;
+  size_t bytes = (size_t)f->th->n_dofs * sizeof *u;
+  double *good = malloc(bytes), v_good = NAN;
+  if (!good) return sl_diag_set(d, SL_ENOMEM, "continuation: out of memory");
   int geometric = from > 0 && target > 0;
+  f->n_stages = n_stages + 1;
   for (long k = 0; k <= n_stages && !rc; ++k) {
     double s = (double)k / (double)n_stages;
     double v = geometric ? from * pow(target / from, s) : from + (target - from) * s;
     if (k == n_stages) v = target;
+    f->stage = k + 1;
+    if (f->sc->hooks.interrupt && *f->sc->hooks.interrupt) {
+      rc = sl_diag_set(d, SL_EFAILED, "interrupted before continuation stage %ld of %ld (%s = %g)", k + 1,
+                       n_stages + 1, key, v);
+      break;
+    }
     if ((rc = sl_scene_set_real(f->sc, key, v, d))) break;
     if ((rc = rebuild_physics(f, d))) break;
     int its = 0;
-    rc = solve(f, u, &its, d);
+    rc = solve_opts(f, u, &its, 1, d);
     *iterations += its;
-    if (rc) rc = sl_diag_prefix(d, rc, "continuation stage %ld of %ld (%s = %g)", k, n_stages, key, v);
+    if (rc) rc = sl_diag_prefix(d, rc, "continuation stage %ld of %ld (%s = %g)", k + 1, n_stages + 1, key, v);
     (*steps)++;
+    if (!rc) memcpy(good, u, bytes), v_good = v;
     if (!rc && k == n_stages) {
       r->converged = 1;
       snprintf(r->stop_reason, sizeof r->stop_reason,
@@ -709,6 +746,15 @@ int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag
                key, v, n_stages + 1, its, its == 1 ? "" : "s", converged_text(f, tb, sizeof tb));
     }
   }
+  if (rc && isfinite(v_good)) {
+    memcpy(u, good, bytes);
+    char tail[300];
+    snprintf(tail, sizeof tail, "; the state saved is the last converged stage's, %s = %g", key, v_good);
+    diag_append(d, rc, tail);
+  } else if (rc) {
+    diag_append(d, rc, "; the state saved is the last Newton iterate, not a solution");
+  }
+  free(good);
   return rc;
 }
 
