@@ -197,7 +197,9 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
   }
   if (rc == SLUICE_FAILED && m.output_path[0]) {
     char msg[sizeof e->msg];
-    if (m.saved_time_valid)
+    if (m.saved_time_valid && !(t1 > t0)) /* steady: the model's message says which state */
+      snprintf(msg, sizeof msg, "run failed; its state is saved in %.900s: %.1000s", m.output_path, e->msg);
+    else if (m.saved_time_valid)
       snprintf(msg, sizeof msg, "run failed at t = %.9g; the last accepted state, t = %.9g, is saved in %.900s: %.1000s",
                m.t_reached, m.saved_time, m.output_path, e->msg);
     else
