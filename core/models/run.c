@@ -4,6 +4,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "core/scene/restart.h"
 #include "core/time/loop.h"
 
 static double cpu(void) {
@@ -44,6 +45,7 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
   /* a restart is checked against the scene before anything is written */
   if (!rc && o->restart) {
     if (!(rc = sl_checkpoint_read(o->restart, &ck, d))) have_ck = 1;
+    if (!rc) rc = sl_scene_check_restart(sc, o->restart, ck.time, d);
     if (!rc && ops->restore) rc = ops->restore(self, &ck, d);
     if (!rc) rc = sl_time_loop_restore(&loop, &ck, d);
   }

@@ -76,5 +76,36 @@ sigint_continuation)
   has "SIGINT: stopped at t = 0; the state at t = 0 is saved in steady.h5 \(.*the state saved is the last converged stage's, closure.viscosity.eps = [0-9.e-]+\)"
   "$S" sample steady.h5 --list 2>&1 | grep -Eq "times \(1 steps?\): 0" || fail "no state in the file"
   pass ;;
+blowup)
+  # Issue 25 item 8: adaptive BDF2 at Re = 1e7 on an 8 x 8 cavity let |u| grow from 1 to 1.9e5 under a lid of 1 and
+  # saved that as the last good state. The step past 100 times the data's speed is rejected and the run stops.
+  run 1 run "$C/cavity_re100.ini" --set mesh.cells=8 --set fluid.viscosity=1e-7 --set time.scheme=bdf2 \
+    --set time.end=10 --set time.dt=0.01 --set output.every=1 -o blowup.h5
+  has "the velocity grew without bound in the step to t = [0-9.]+: \|u\| = [0-9.e+]+ \(unknown [0-9]+\) exceeds 100 times the speed the data set, 1 \(the boundary speed\)"
+  has "the last accepted state, t = [0-9.]+, is saved in blowup.h5"
+  u=$(sample_max blowup.h5 velocity 0,0:1,1)
+  lt "$u" 100 || fail "the state saved has |u| = $u"
+  pass ;;
+restart_scene)
+  # Issue 25 item 10: a restart with another viscosity, domain or scheme went on with exit 0; an end time before
+  # the checkpoint's said "reached the end time" and left an empty file. Now exit 2, before any file is opened.
+  a=(--set mesh.cells=4 --set time.scheme=bdf2 --set time.dt=0.1 --set output.every=0.5)
+  run 0 run "$C/cavity_re100.ini" "${a[@]}" --set time.end=1 -o ck.h5
+  run 0 run "$C/cavity_re100.ini" "${a[@]}" --set time.end=1 -o kept.h5
+  sum=$(cksum < kept.h5)
+  run 2 run "$C/cavity_re100.ini" "${a[@]}" --set time.end=2 --set fluid.viscosity=0.02 --restart ck.h5 -o kept.h5
+  has "\[fluid\] viscosity = 0.02: the checkpoint in ck.h5 was run with 0.01; a restart continues the same scene \(what may change: \[time\] end, dt"
+  run 2 run "$C/cavity_re100.ini" "${a[@]}" --set time.end=2 --set "mesh.x=0, 2" --restart ck.h5 -o kept.h5
+  has "\[mesh\] x = 0, 2: the checkpoint in ck.h5 was run with 0, 1"
+  run 2 run "$C/cavity_re100.ini" "${a[@]}" --set time.end=2 --set time.scheme=bdf1 --restart ck.h5 -o kept.h5
+  has "\[time\] scheme = bdf1: the checkpoint in ck.h5 was run with bdf2"
+  run 2 run "$C/cavity_re100.ini" "${a[@]}" --set time.end=0.5 --restart ck.h5 -o kept.h5
+  has "\[time\] end = 0.5 is not after the checkpoint's time t = 1 in ck.h5: nothing to run"
+  [ "$(cksum < kept.h5)" = "$sum" ] || fail "a refused restart changed kept.h5"
+  # what may change: the end, the output interval, the linear solver; the same viscosity written otherwise
+  run 0 run "$C/cavity_re100.ini" "${a[@]}" --set time.end=2 --set output.every=0.25 --set solver.linear=umfpack \
+    --set fluid.viscosity=1e-2 --restart ck.h5 -o continued.h5
+  has "reached the end time t = 2"
+  pass ;;
 *) fail "unknown case" ;;
 esac

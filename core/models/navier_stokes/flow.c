@@ -458,6 +458,10 @@ struct sl_flow {
   /* what the nonlinear iterations are reported with (sc->hooks): the time solved for, the continuation stage */
   double t_solve;
   long stage, n_stages;
+  /* the velocity a transient step may reach: SL_FLOW_GROWTH_FACTOR times the scale the data set, without the
+     boundary speeds (measured per step at the constrained dofs); see velocity_scale */
+  double u_data;
+  const char *u_data_what;
   sl_model_stats st;
 };
 
@@ -610,6 +614,39 @@ static int force_depends_on_t(const physics *ph) {
   return 0;
 }
 
+/* A transient step whose velocity grows without bound is rejected and the run stops: |u| above
+ * SL_FLOW_GROWTH_FACTOR times the largest speed the data set, the boundary speeds at the step's end (the
+ * constrained dofs), the initial velocity, the free-fall speed sqrt(2 F L / rho) of the body force and the
+ * buoyancy F over the domain's size L, the Bernoulli speed sqrt(2 |p| / rho) of a given pressure or traction and
+ * the frame's |omega| L. A flow the data drive does not leave these by two orders of magnitude (a lid-driven
+ * cavity stays below its lid's speed at any Re; a 10:1 contraction speeds its inflow up tenfold); an unstable
+ * time integration or an unresolved flow does (issue 25: |u| 1.9e5 under a lid of 1). */
+#define SL_FLOW_GROWTH_FACTOR 100.0
+
+static int check_growth(const sl_flow *f, const double *u, double t, sl_diag *d) {
+  const sl_flow_problem *p = &f->prob;
+  int32_t nv = f->th->p_offset;
+  double u_bc = 0.0, umax = 0.0;
+  for (int32_t k = 0; k < p->n_fixed; ++k)
+    if (p->fixed[k] < nv) u_bc = fmax(u_bc, fabs(u[p->fixed[k]]));
+  int32_t at = 0;
+  for (int32_t i = 0; i < nv; ++i)
+    if (fabs(u[i]) > umax || !(fabs(u[i]) <= umax)) {
+      umax = fabs(u[i]), at = i;
+      if (!isfinite(umax)) break;
+    }
+  double scale = fmax(u_bc, f->u_data), bound = SL_FLOW_GROWTH_FACTOR * scale;
+  if (scale > 0.0 && umax <= bound) return 0;
+  if (scale == 0.0 && umax == 0.0) return 0; /* nothing drives it, nothing moves */
+  if (scale == 0.0 && isfinite(umax)) return 0; /* no scale to judge by (round-off of a vessel at rest) */
+  return sl_diag_set(d, SL_EFAILED,
+                     "the velocity grew without bound in the step to t = %.6g: |u| = %.3g (unknown %d) exceeds %g "
+                     "times the speed the data set, %.3g (%s); the step is rejected (a smaller dt, a finer mesh or "
+                     "a viscosity closure may resolve the flow)",
+                     t, umax, (int)at, SL_FLOW_GROWTH_FACTOR, scale,
+                     u_bc >= f->u_data ? "the boundary speed" : f->u_data_what);
+}
+
 int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
   f->prob.opts.mass_coef = s->mass_coef;
   f->prob.opts.history = s->history;
@@ -638,6 +675,7 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
   }
   if (f->riding && f->rider.prepare && (rc = f->rider.prepare(f->rider.user, s->dt, d))) return sl_step_code(rc);
   rc = solve(f, s->u, iterations, d);
+  if (rc == 0 && (rc = check_growth(f, s->u, s->t + s->dt, d))) return -rc;
   f->solved = 1;
   if (rc == 0 && f->column_at_rest) memset(s->u, 0, (size_t)f->th->p_offset * sizeof *s->u);
   f->solved_to_start = rc == 0 && s->state && memcmp(s->u, s->state, bytes) == 0;
@@ -820,6 +858,39 @@ static int initial_velocity(const sl_scene *sc, const sl_flow_config *fc, const 
   return 0;
 }
 
+/* The speed the data set besides the boundary speeds (check_growth): the initial velocity, the free fall
+ * of the body force and buoyancy over the domain, the Bernoulli speed of given pressures, the frame's. */
+static void velocity_scale(sl_flow *f) {
+  const sl_mesh *m = f->mesh;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (int v = 0; v < m->n_vertices; ++v)
+    for (int k = 0; k < 2; ++k) lo[k] = fmin(lo[k], m->xy[2 * v + k]), hi[k] = fmax(hi[k], m->xy[2 * v + k]);
+  double L = hypot(hi[0] - lo[0], m->dim > 1 ? hi[1] - lo[1] : 0.0);
+  const physics *ph = &f->ph;
+  double rho = ph->density > 0 ? ph->density : 1.0;
+  /* buoyancy: the whole density without solids (the pressure carries it, but it is what a wrong pressure
+     would accelerate); with solids the contrast */
+  double rho_g = f->riding ? fabs(f->rho_solid - ph->density) : ph->density;
+  double F = 0.0, g = 0.0;
+  for (int c = 0; c < MAX_COMP; ++c) g += ph->gravity[c] * ph->gravity[c], F = fmax(F, fabs(ph->body_force[c]));
+  for (int v = 0; v < m->n_vertices && ph->force_varies; ++v) {
+    double xyt[3] = {m->xy[2 * v], m->xy[2 * v + 1], 0.0};
+    for (int c = 0; c < ph->n_comp; ++c)
+      if (ph->force_expr[c]) F = fmax(F, fabs(sl_expr_eval(ph->force_expr[c], xyt)));
+  }
+  F += rho_g * sqrt(g);
+  double u0 = 0.0, p = 0.0;
+  for (int32_t i = 0; i < f->th->p_offset; ++i) u0 = fmax(u0, fabs(f->u[i]));
+  for (int i = 0; i < f->bcs.n; ++i)
+    for (int c = 0; c < MAX_COMP; ++c) p = fmax(p, fabs(f->bcs.b[i].traction[c]));
+  double cand[4] = {u0, sqrt(2.0 * F * L / rho), sqrt(2.0 * p / rho), fabs(f->prob.opts.omega) * L};
+  static const char *const what[4] = {"the initial velocity", "the free fall of the body force and buoyancy",
+                                      "the Bernoulli speed of the given pressure", "the frame's rotation"};
+  f->u_data = 0.0, f->u_data_what = what[0];
+  for (int k = 0; k < 4; ++k)
+    if (cand[k] > f->u_data) f->u_data = cand[k], f->u_data_what = what[k];
+}
+
 /* [solver] continuation names a real value the flow can vary, and its start. */
 static int check_continuation(const sl_scene *sc, sl_diag *d) {
   const sl_solver_config *sv = &sc->solver;
@@ -896,6 +967,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
   if ((rc = stream_setup(f, d))) goto fail;
   if ((rc = check_body_force(sc, &f->ph, d))) goto fail;
   if ((rc = initial_velocity(sc, fc, f->th, f->u, d))) goto fail;
+  velocity_scale(f);
   *info = (sl_model_info){.integrator = SL_INTEGRATE_BDF, .n = f->th->n_dofs, .n_err = f->th->p_offset, .u = f->u,
                           .has_steady = 1, .state_name = "velocity"};
   *out = f;
