@@ -126,18 +126,16 @@ int sluice_time_span(sluice *s, double *t0, double *t1, sluice_error *e) {
   return rc;
 }
 
-int sluice_check(sluice *s, FILE *report, sluice_error *e) {
+int sluice_check(sluice *s, FILE *report, sluice_error *e) { return sluice_check_restart(s, NULL, report, e); }
+
+int sluice_check_restart(sluice *s, const char *restart, FILE *report, sluice_error *e) {
   sl_diag d;
   const sl_model_entry *entry;
   sl_scene_free(s->scene), s->scene = NULL;
-  int rc = sl_model_scene(s->ini, s->reg, 1, 1, &entry, &s->scene, &d);
+  /* every check a run makes before it writes anything: the model's own set-up and a restart too */
+  int rc = sl_model_check(s->ini, s->reg, restart, &entry, &s->scene, &d);
   if (rc) return from_diag(e, rc, &d);
   s->scene_full = 1;
-  /* every check a run makes before it writes anything: the model's own set-up too */
-  void *self = NULL;
-  sl_model_info info;
-  if ((rc = entry->ops->setup(&self, s->scene, &info, &d))) return from_diag(e, rc, &d);
-  entry->ops->destroy(self);
   if (!report) return 0;
   const sl_schema *schema = entry->schema;
   int n_closures = 0;

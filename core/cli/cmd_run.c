@@ -261,7 +261,7 @@ int sl_cmd_run(int argc, char **argv) {
     double t0, t1;
     if (!(rc = sluice_time_span(sc, &t0, &t1, &e))) rc = sluice_write_config(sc, stdout, &e);
   } else if (!rc && check_only) {
-    rc = sluice_check(sc, stdout, &e);
+    rc = sluice_check_restart(sc, restart, stdout, &e);
   } else if (!rc) {
     rc = simulate(sc, scene, out_file, restart, profile, show_iterations, &e);
   }

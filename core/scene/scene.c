@@ -305,6 +305,30 @@ static int resolve_time(builder *b, sl_diag *d) {
   }
   if (!sl_scene_given(sc, &t->dt_min)) t->dt_min = t->dt * 1e-6;
   if (!sl_scene_given(sc, &t->dt_max)) t->dt_max = t->adaptive && t->end > 0 ? t->end / 10 : t->dt;
+  if (t->scheme == SL_SCHEME_STEADY) return 0;
+  /* the step's bounds agree with each other, and the output interval with them */
+  char a[400], c[400];
+  if (sl_scene_given(sc, &t->dt_min) && t->dt_min > t->dt)
+    return sl_diag_set(d, SL_EBADINPUT, "%s = %g is larger than %s = %g: the first step would be below the smallest",
+                       sl_scene_where(sc, &t->dt_min, a, sizeof a), t->dt_min, sl_scene_where(sc, &t->dt, c, sizeof c),
+                       t->dt);
+  if (t->dt_max < t->dt_min)
+    return sl_diag_set(d, SL_EBADINPUT, "%s = %g is smaller than %s = %g: no step fits between them",
+                       sl_scene_where(sc, &t->dt_max, a, sizeof a), t->dt_max,
+                       sl_scene_where(sc, &t->dt_min, c, sizeof c), t->dt_min);
+  if (t->every > 0 && t->every < t->dt_min)
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s = %g is below %s = %g: the steps that land on every output time would be shorter than the "
+                       "smallest step the run allows",
+                       sl_scene_where(sc, &t->every, a, sizeof a), t->every,
+                       sl_scene_where(sc, &t->dt_min, c, sizeof c), t->dt_min);
+  if (t->every > 0 && t->end / t->every > SL_SCENE_OUTPUT_TIMES_MAX)
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s = %g would write %.3g output times before the end t = %g (at most %g, each a full set of "
+                       "fields and a checkpoint): allowed every >= end / %g = %g",
+                       sl_scene_where(sc, &t->every, a, sizeof a), t->every, t->end / t->every, t->end,
+                       (double)SL_SCENE_OUTPUT_TIMES_MAX, (double)SL_SCENE_OUTPUT_TIMES_MAX,
+                       t->end / SL_SCENE_OUTPUT_TIMES_MAX);
   return 0;
 }
 

@@ -144,6 +144,9 @@ typedef struct sl_scene_opts {
  * first variant when none does: its keys then say what is wrong). */
 int sl_scene_select(const sl_ini *ini, const sl_schema *const *schemas, int n, int *index, sl_diag *d);
 
+/* The most output times a transient scene may ask for ([output] every against [time] end). */
+#define SL_SCENE_OUTPUT_TIMES_MAX 100000
+
 /* Builds the scene of `ini` for the schema. 0 or SL_EBADINPUT with
  * file:line; SL_EFAILED for memory. *out is NULL on failure. */
 int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o, sl_scene **out, sl_diag *d);

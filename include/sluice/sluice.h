@@ -69,6 +69,8 @@ int sluice_write_config(const sluice *s, FILE *f, sluice_error *e);
  * model's schema, the closures created, the mesh built, the model set up),
  * without running. With report, a summary of the closures and the mesh. */
 int sluice_check(sluice *s, FILE *report, sluice_error *e);
+/* The same with a restart's checkpoint read and checked against the scene (restart NULL: none). */
+int sluice_check_restart(sluice *s, const char *restart, FILE *report, sluice_error *e);
 
 /* The simulated time the run spans, for a progress display (after sluice_check or sluice_run). */
 int sluice_time_span(sluice *s, double *t0, double *t1, sluice_error *e);

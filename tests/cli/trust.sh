@@ -107,5 +107,11 @@ restart_scene)
     --set fluid.viscosity=1e-2 --restart ck.h5 -o continued.h5
   has "reached the end time t = 2"
   pass ;;
+check_mesh_error)
+  # Issue 25 item 15: a mesh error under --check is the error alone, not "scene valid" first.
+  run 2 run "$C/cavity_re100.ini" --set mesh.generator=gmsh --set mesh.file=/nonexistent.msh --check
+  has "cannot open the mesh file"
+  hasnt "scene valid"
+  pass ;;
 *) fail "unknown case" ;;
 esac

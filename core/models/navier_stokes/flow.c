@@ -854,6 +854,16 @@ static int initial_velocity(const sl_scene *sc, const sl_flow_config *fc, const 
   for (int c = 0; c < v->n; ++c) {
     bc_eval be = {v->e[c], 0.0};
     sl_fe_interpolate(th->vel, bc_value, &be, u + sl_th_vel_dof(th, c, 0));
+    /* evaluated once, here: a value that is not finite is bad input, found before anything is written */
+    for (int32_t i = 0; i < th->vel->n_nodes; ++i) {
+      double ui = u[sl_th_vel_dof(th, c, th->vel->node_dof[i])];
+      if (!isfinite(ui)) {
+        char at[400];
+        return sl_diag_set(d, SL_EBADINPUT, "%s: component %d is %g at (%g, %g): not a finite velocity",
+                           sl_scene_where(sc, v, at, sizeof at), c + 1, ui, th->vel->node_xy[2 * i],
+                           th->vel->node_xy[2 * i + 1]);
+      }
+    }
   }
   return 0;
 }
