@@ -5,6 +5,23 @@
 
 static const char *const orderings[] = {"auto", "amd", "colamd", "metis"};
 
+int sl_scene_linsolve_general(const sl_scene *sc, int32_t n, const char *why, sl_linsolve **ls, const char **name,
+                              sl_diag *d) {
+  int n_names = 0;
+  const char *const *names = sl_linsolve_names(&n_names);
+  int which = sc->solver.linear;
+  if (which > 0 && which <= n_names && strcmp(names[which - 1], "cholmod") == 0) {
+    *ls = NULL;
+    char at[400];
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s = cholmod: Cholesky needs a symmetric positive definite matrix, and %s; allowed here: auto, "
+                       "umfpack, klu%s",
+                       sl_scene_where(sc, &sc->solver.linear, at, sizeof at), why,
+                       strstr(SL_SCENE_LINEAR_CHOICES, "petsc") ? ", petsc" : "");
+  }
+  return sl_scene_linsolve(sc, n, ls, name, d);
+}
+
 int sl_scene_linsolve(const sl_scene *sc, int32_t n, sl_linsolve **ls, const char **name, sl_diag *d) {
   *ls = NULL;
   int n_names = 0;

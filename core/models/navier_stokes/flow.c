@@ -957,7 +957,11 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
       f->prob.traction[f->prob.n_tractions++] = (sl_flow_traction){f->bcs.b[i].name, traction_fn, &f->bcs.b[i]};
     }
   if ((rc = bc_apply(&f->bcs, f->th, &f->prob.bc, 0.0, f->datum, d))) goto fail;
-  if ((rc = sl_scene_linsolve(sc, f->th->n_dofs, &f->ls, &f->linear, d))) goto fail;
+  if ((rc = sl_scene_linsolve_general(sc, f->th->n_dofs,
+                                       "the flow's matrix couples velocity and pressure (a saddle point: symmetric "
+                                       "indefinite without convection, nonsymmetric with it)",
+                                       &f->ls, &f->linear, d)))
+    goto fail;
   if ((rc = sl_linsolve_set_blocks(f->ls, f->th->p_offset, d))) goto fail; /* velocity, then pressure */
   f->nopts = (sl_newton_opts){.rtol = sc->solver.nonlinear_tolerance,
                               .max_iterations = (int)sc->solver.max_iterations,
