@@ -210,6 +210,7 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
       continue;
     }
     sl_bdf_accept(b, &s, trial);
+    if (fabs(b->t - t_stop) <= eps_t) b->t = t_stop; /* on the output time or the end exactly, as above */
     if (ops->accept) {
       int steady = 0;
       ops->accept(self, &st, &steady);
@@ -302,7 +303,10 @@ static int run_fixed(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_ou
       continue;
     }
     if (ops->accept) ops->accept(self, &st, &steady);
-    t += hh, ++step, ++steps_here;
+    /* a step that ends on an output time or the end up to round-off ends there exactly: the times written are
+       the scene's (60, not 59.99999999999663 after 1200 steps of 0.05) */
+    t = fabs(t + hh - t_stop) <= eps_t ? t_stop : t + hh;
+    ++step, ++steps_here;
     L->t = t, L->step = step;
     if (h < dt_cfg) h = fmin(dt_cfg, 2.0 * h);
     if (o->monitor) {
