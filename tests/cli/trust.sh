@@ -120,5 +120,26 @@ output_times_exact)
   times=$(/usr/bin/python3 -c "import h5py; h = h5py.File('times.h5', 'r'); print(' '.join(repr(float(h[k].attrs['time'])) for k in sorted(h) if k.startswith('step_')))")
   [ "$times" = "0.0 10.0 20.0 30.0 40.0 50.0 60.0" ] || fail "output times $times"
   pass ;;
+steady_progress)
+  # Issue 26: a steady solve showed no progress at all; in a log it gives a line per Newton iteration and
+  # continuation stage, and the stop reason agrees with its numbers.
+  SLUICE_PROGRESS=lines "$S" run "$C/bingham_cavity.ini" --set mesh.cells=8 -o steady.h5 > out.txt 2>&1 || fail "exit status $?"
+  has "^sluice: steady: stage 1 of 7, Newton iteration 1: correction [0-9.e+-]+, residual [0-9.e+-]+ \([0-9.e+-]+ of its terms\); [0-9]+ s spent$"
+  has "^sluice: steady: stage 7 of 7, (Newton|Picard) iteration [0-9]+: "
+  n=$(grep -c "^sluice: steady: stage" out.txt)
+  its=$(sed -n 's/^sluice: [0-9]* steps (0 rejected), \([0-9]*\) Newton.*/\1/p' out.txt)
+  [ "$n" = "$its" ] || fail "$n progress lines for $its iterations"
+  has "steady state converged at closure.viscosity.eps = 0.001, the last of 7 continuation stages, in [0-9]+ Newton iterations \((relative correction [0-9.e+-]+( \(the next one's, estimated\))? <= tolerance 1e-09|residual .* at the round-off)"
+  pass ;;
+monitor)
+  # Issue 26: --monitor prints the nonlinear residuals of every iteration, with the time of a transient step.
+  run 0 run "$C/cavity_re100.ini" --set mesh.cells=4 --set time.scheme=bdf2 --set time.end=0.2 --set time.dt=0.1 \
+    --set time.adaptive=false --monitor -o monitor.h5
+  has "^sluice: monitor: t = 0.1, picard 1: relative correction [0-9.e+-]+, residual [0-9.e+-]+ \([0-9.e+-]+ of its terms' scale [0-9.e+-]+\)$"
+  has "^sluice: monitor: t = 0.2, newton [0-9]+: "
+  n=$(grep -c "^sluice: monitor:" out.txt)
+  its=$(sed -n 's/^sluice: [0-9]* steps (0 rejected), \([0-9]*\) Newton.*/\1/p' out.txt)
+  [ "$n" = "$its" ] || fail "$n monitor lines for $its iterations"
+  pass ;;
 *) fail "unknown case" ;;
 esac
