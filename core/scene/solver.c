@@ -68,6 +68,21 @@ int sl_scene_petsc_section(const sl_ini_section *sec, char **options, sl_diag *d
   return 0;
 }
 
+int sl_scene_linsolve_general(const sl_scene *sc, int32_t n, const char *why, sl_linsolve **ls, const char **name,
+                              sl_diag *d) {
+  int which = sc->solver.linear;
+  if (which > 0 && which <= (int)(sizeof linear_names / sizeof *linear_names) &&
+      strcmp(linear_names[which - 1], "cholmod") == 0) {
+    *ls = NULL;
+    char at[400];
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s = cholmod: Cholesky needs a symmetric positive definite matrix, and %s; allowed here: auto, "
+                       "umfpack, klu, petsc",
+                       sl_scene_where(sc, &sc->solver.linear, at, sizeof at), why);
+  }
+  return sl_scene_linsolve(sc, n, ls, name, d);
+}
+
 int sl_scene_linsolve(const sl_scene *sc, int32_t n, sl_linsolve **ls, const char **name, sl_diag *d) {
   *ls = NULL;
   int which = sc->solver.linear; /* 0: auto, else linear_names[which - 1] */
