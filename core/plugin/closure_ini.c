@@ -63,6 +63,7 @@ int sl_closure_from_ini(const sl_registry *r, const sl_ini *ini, const char *sec
   if (rc) return rc;
   rc = sl_closure_create(entry, params, out, d);
   if (rc) return located(d, rc, sl_ini_find(ini, section, "model"));
+  snprintf((*out)->role, sizeof (*out)->role, "%s", section);
   return 0;
 }
 
