@@ -8,11 +8,14 @@
 
 #include "core/cli/cli.h"
 #include "core/cli/progress.h"
+#include "core/plugin/guard.h"
+#include "core/plugin/isolate.h"
 #include "sluice/sluice.h"
 
 static const char run_usage[] =
     "usage: sluice run SCENE.ini [--set section.key=value]... [--print-config] [-o OUT.h5]\n"
     "                            [--restart FILE.h5] [--check] [--profile]\n"
+    "                            [--allow-plugin-path] [--closure-time-limit SECONDS]\n"
     "Reads a scene, applies the --set overrides, checks every section and key\n"
     "(unknown ones are errors with a suggestion), loads and validates each\n"
     "[closure.<kind>] against the closure's own schema, and runs it.\n"
@@ -27,6 +30,11 @@ static const char run_usage[] =
     "                   factorisations (and reuses), closure calls and points per\n"
     "                   closure with their time, the plugin libraries loaded, the\n"
     "                   output written, and the CPU time of each phase\n"
+    "  --allow-plugin-path  load closure libraries from the folders the scene's\n"
+    "                   [plugins] path names (refused without it: docs/trust-plugins.md)\n"
+    "  --closure-time-limit S  stop a closure call that has not returned after S\n"
+    "                   seconds (the run fails naming it; default: no limit)\n"
+    "--check and --print-config run closure library code only in a child process.\n"
     "Progress: on a terminal a line redrawn in place; otherwise (a log) a line\n"
     "every 10 s (SLUICE_PROGRESS_EVERY=seconds; SLUICE_PROGRESS=0 off, 1 in place,\n"
     "lines the log lines). The run ends with a one-line summary (CPU and wall\n"
@@ -38,8 +46,8 @@ static const char run_usage[] =
 
 static volatile sig_atomic_t interrupted;
 static void on_sigint(int sig) {
-  (void)sig;
   interrupted = 1;
+  sl_guard_interrupt(sig); /* inside a closure call (a looping one): leave it */
 }
 
 static void monitor(void *user, double t, double dt, long step, int nl) {
@@ -143,13 +151,55 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
   return rc;
 }
 
+/* --check and --print-config: closure library code (constructors, create())
+ * runs in a child process, never in this one; the child prints the report. */
+typedef struct check_job {
+  sluice *sc;
+  int print_config;
+} check_job;
+
+static int check_in_child(void *user, int fd) {
+  (void)fd;
+  check_job *j = user;
+  sluice_error e = {0, ""};
+  int rc;
+  if (j->print_config) {
+    double t0, t1; /* the keys and the closures are checked first (bad input: exit 2, nothing printed) */
+    if (!(rc = sluice_time_span(j->sc, &t0, &t1, &e))) rc = sluice_write_config(j->sc, stdout, &e);
+  } else {
+    rc = sluice_check(j->sc, stdout, &e);
+  }
+  if (rc) fprintf(stderr, "%s\n", e.msg);
+  return rc;
+}
+
+static int check_isolated(sluice *sc, int print_config, const char *scene, sluice_error *e) {
+  check_job j = {sc, print_config};
+  sl_child_outcome o;
+  if (sl_isolate(check_in_child, &j, NULL, NULL, 0.0, &o)) {
+    snprintf(e->msg, sizeof e->msg, "sluice: cannot start the checking process");
+    return SLUICE_FAILED;
+  }
+  if (o.exited) {
+    e->msg[0] = '\0'; /* the child said it */
+    return o.status;
+  }
+  snprintf(e->msg, sizeof e->msg,
+           "sluice: %s: %s stopped by %s while checking the scene (closure library code runs in a child process "
+           "under %s; nothing was loaded into sluice)",
+           scene, print_config ? "--print-config" : "--check", sl_signal_name(o.signal),
+           print_config ? "--print-config" : "--check");
+  return SLUICE_FAILED;
+}
+
 int sl_cmd_run(int argc, char **argv) {
   if (sl_cli_wants_help(argc, argv)) {
     puts(run_usage);
     return 0;
   }
   const char *scene = NULL, *out_file = NULL, *restart = NULL;
-  int print_config = 0, check_only = 0, profile = 0;
+  int print_config = 0, check_only = 0, profile = 0, allow_plugin_path = 0;
+  double closure_time_limit = 0.0;
   enum { MAX_SETS = 256 };
   const char *sets[MAX_SETS];
   int n_sets = 0;
@@ -170,6 +220,13 @@ int sl_cmd_run(int argc, char **argv) {
       check_only = 1;
     } else if (strcmp(argv[i], "--profile") == 0) {
       profile = 1;
+    } else if (strcmp(argv[i], "--allow-plugin-path") == 0) {
+      allow_plugin_path = 1;
+    } else if (strcmp(argv[i], "--closure-time-limit") == 0 && i + 1 < argc) {
+      char *end;
+      closure_time_limit = strtod(argv[++i], &end);
+      if (*end || !(closure_time_limit > 0) || closure_time_limit > 1e6)
+        return sl_cli_error(SL_EBADINPUT, "run: --closure-time-limit %s: seconds in (0, 1e6] expected", argv[i]);
     } else if (argv[i][0] == '-') {
       return sl_cli_error(SL_EBADINPUT, "run: unknown option or missing value '%s' (sluice run --help)", argv[i]);
     } else if (!scene) {
@@ -185,18 +242,15 @@ int sl_cmd_run(int argc, char **argv) {
   const char *set_list[MAX_SETS + 1];
   for (int i = 0; i < n_sets; ++i) set_list[i] = sets[i];
   set_list[n_sets] = NULL;
-  sluice_open_opts oo = {.sets = set_list, .timing = profile};
+  sluice_open_opts oo = {.sets = set_list, .timing = profile, .allow_plugin_path = allow_plugin_path,
+                         .closure_time_limit = closure_time_limit};
   int rc = sluice_open(scene, &oo, &sc, &e);
-  if (!rc && print_config) {
-    /* the keys and the closures are checked first (bad input: exit 2, nothing printed) */
-    double t0, t1;
-    if (!(rc = sluice_time_span(sc, &t0, &t1, &e))) rc = sluice_write_config(sc, stdout, &e);
-  } else if (!rc && check_only) {
-    rc = sluice_check(sc, stdout, &e);
+  if (!rc && (print_config || check_only)) {
+    rc = check_isolated(sc, print_config, scene, &e);
   } else if (!rc) {
     rc = simulate(sc, scene, out_file, restart, profile, &e);
   }
   sluice_close(sc);
-  if (rc) fprintf(stderr, "%s\n", e.msg);
+  if (rc && e.msg[0]) fprintf(stderr, "%s\n", e.msg);
   return rc;
 }

@@ -80,7 +80,7 @@ static void at_exit(void) {
   int n = snprintf(msg, sizeof msg,
                    "sluice: closure %s%s%s%s called exit() inside its evaluation; the run did not finish "
                    "(exit status 1)\n",
-                   call_label ? call_label : "?", role ? " (" : "", role ? role : "", role ? ")" : "");
+                   call_label ? call_label : "?", role ? " [" : "", role ? role : "", role ? "]" : "");
   fflush(stdout);
   if (n > 0) {
     ssize_t w = write(STDERR_FILENO, msg, (size_t)n < sizeof msg ? (size_t)n : sizeof msg - 1);

@@ -49,6 +49,11 @@ typedef struct sluice_open_opts {
    * the scene names (the default). */
   int scan_all;
   int timing; /* time each closure call (what sluice run --profile reports) */
+  /* The scene's [plugins] path names folders of libraries to load: refused (bad input, the key named) unless this
+   * is set (sluice run --allow-plugin-path). */
+  int allow_plugin_path;
+  /* Each batched closure call is stopped after this many seconds (0: no limit), and the run fails naming it. */
+  double closure_time_limit;
 } sluice_open_opts;
 
 /* Reads the scene file (its includes, the overrides) and finds its model:
