@@ -146,5 +146,12 @@ expect "check-closure: the good one passes" 0 "^10 passed, 0 failed" -- "$sluice
 # ---- a folder without an index: what its libraries hold is read in a child -------------------------
 SLUICE_PLUGIN_PATH="$unindexed" expect "unindexed folder: found by its descriptors" 0 "viscosity +marked .*marked.so" -- \
   "$sluice" run m.ini --check
+mkdir -p ix && cp "$unindexed/marked.so" ix/
+expect "closure index writes the folder's index" 0 "ix/closures.index: 1 closure" -- "$sluice" closure index ix
+grep -qx "viscosity marked marked.so" ix/closures.index && ok || bad "the index line"
+rm -f marker
+SLUICE_PLUGIN_PATH="$work/ix" expect "an indexed folder: a misspelt name" 2 "did you mean 'marked'" -- \
+  "$sluice" run m.ini --check --set closure.viscosity.model=marke
+[ ! -e marker ] && ok || bad "no library opened for a misspelt name in an indexed folder"
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
