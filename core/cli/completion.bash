@@ -34,7 +34,7 @@ _sluice() {
       ;;
     bench)
       [ "$prev" = -o ] && { COMPREPLY=($(compgen -d -- "$cur")); return; }
-      COMPREPLY=($(compgen -W "-o --keep --check --help" -- "$cur"))
+      COMPREPLY=($(compgen -W "-o --keep --check --allow-plugin-path --help" -- "$cur"))
       [[ $cur != -* ]] && COMPREPLY+=($(compgen -f -X '!*.ini' -- "$cur") $(compgen -d -- "$cur"))
       ;;
     model)

@@ -74,6 +74,25 @@ expect "[plugins] path refused for a run, nothing written" 2 "\[plugins\] path" 
 [ ! -e p.h5 ] && ok || bad "no output file for a refused scene"
 expect "--allow-plugin-path" 0 "scene valid; 1 closure resolved" -- "$sluice" run pathscene.ini --check --allow-plugin-path
 
+# a study's scene the same (its runs too: they are child processes of bench)
+cat > study.ini <<INI
+[study]
+scene = pathscene.ini
+
+[points.time]
+end = 0.1 | 0.2
+
+[measure]
+field = velocity
+component = 2
+line = -1:1
+n = 3
+reduce = max
+value = 0
+INI
+expect "bench: [plugins] path refused" 2 "pathscene.ini:$line: error: \[plugins\] path" -- "$sluice" bench study.ini --check
+expect "bench --allow-plugin-path, its runs too" 0 "2 of 2 runs measured" -- "$sluice" bench study.ini -o bench_out --allow-plugin-path
+
 export SLUICE_PLUGIN_PATH="$faulty" SLUICE_TEST_MARKER="$work/marker"
 # ---- a look-up opens the library that holds the name, and no other ---------------------------------
 scene s.ini none 0 ""
