@@ -355,6 +355,7 @@ int sl_time_loop_run(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_ou
                      sl_run_result *res, sl_diag *d) {
   res->rejected_steps = L->rejected;
   sl_guard_clear_fatal();
+  sl_guard_set_clock(L->info->integrator == SL_INTEGRATE_BDF ? L->bdf.t : L->t, 0.0); /* until the first step */
   int rc;
   if (L->tc->scheme == SL_SCHEME_STEADY && L->info->has_steady) rc = run_steady(L, ops, self, out, res, d);
   else if (L->info->integrator == SL_INTEGRATE_BDF) rc = run_bdf(L, ops, self, out, o, res, d);

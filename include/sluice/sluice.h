@@ -72,7 +72,9 @@ int sluice_write_config(const sluice *s, FILE *f, sluice_error *e);
 
 /* Every check a run makes before it writes anything (the keys against the
  * model's schema, the closures created, the mesh built, the model set up),
- * without running. With report, a summary of the closures and the mesh. */
+ * without running. With report, a summary of the closures and the mesh.
+ * The closures' code runs in the calling process: `sluice run --check` calls
+ * this in a child process (docs/trust-plugins.md). */
 int sluice_check(sluice *s, FILE *report, sluice_error *e);
 
 /* The simulated time the run spans, for a progress display (after sluice_check or sluice_run). */

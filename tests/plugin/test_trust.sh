@@ -147,6 +147,12 @@ expect "a looping closure stopped by the call time limit" 1 \
 sleep 2; kill -INT $pid; for _ in $(seq 50); do kill -0 $pid 2> /dev/null || break; sleep 0.2; done
 if kill -0 $pid 2> /dev/null; then kill -KILL $pid; bad "Ctrl-C stops a looping closure"
 else wait $pid; st=$?; [ $st != 0 ] && grep -q "interrupted by SIGINT inside its evaluation" out.log && ok || bad "Ctrl-C: exit $st"; fi
+# a steady solve: the same, the state reached saved
+scene steady.ini segv 0 ""
+sed -i '/^\[time\]/,/^end = /d' steady.ini
+expect "steady: a segfault fails the solve by name" 1 \
+  "closure viscosity/faulty \[closure.viscosity\] failed \(fatal, code -3\): crashed with SIGSEGV" -- \
+  "$sluice" run steady.ini -o steady.h5
 # ---- t and dt: the time level being solved and its step ----------------------------------------------
 scene clock.ini clock 0 ""
 expect "the closure sees t and dt" 0 "closure info: t = 0.5 dt = 0.05" -- "$sluice" run clock.ini -o clock.h5
