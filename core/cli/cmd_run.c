@@ -15,7 +15,8 @@
 static const char run_usage[] =
     "usage: sluice run SCENE.ini [--set section.key=value]... [--print-config] [-o OUT.h5]\n"
     "                            [--restart FILE.h5] [--check] [--profile]\n"
-    "                            [--allow-plugin-path] [--closure-time-limit SECONDS]\n"
+    "                            [--petsc \"PETSC OPTIONS\"] [--allow-plugin-path]\n"
+    "                            [--closure-time-limit SECONDS]\n"
     "Reads a scene, applies the --set overrides, checks every section and key\n"
     "(unknown ones are errors with a suggestion), loads and validates each\n"
     "[closure.<kind>] against the closure's own schema, and runs it.\n"
@@ -30,6 +31,9 @@ static const char run_usage[] =
     "                   factorisations (and reuses), closure calls and points per\n"
     "                   closure with their time, the plugin libraries loaded, the\n"
     "                   output written, and the CPU time of each phase\n"
+    "  --petsc \"OPTS\"   PETSc options for [solver] linear = petsc, over the scene's\n"
+    "                   [solver.petsc] (PETSC_OPTIONS over both), as \"-ksp_monitor\",\n"
+    "                   \"-log_view\" or \"-pc_type lu\"\n"
     "  --allow-plugin-path  load closure libraries from the folders the scene's\n"
     "                   [plugins] path names (refused without it: docs/trust-plugins.md)\n"
     "  --closure-time-limit S  stop a closure call that has not returned after S\n"
@@ -197,7 +201,7 @@ int sl_cmd_run(int argc, char **argv) {
     puts(run_usage);
     return 0;
   }
-  const char *scene = NULL, *out_file = NULL, *restart = NULL;
+  const char *scene = NULL, *out_file = NULL, *restart = NULL, *petsc = NULL;
   int print_config = 0, check_only = 0, profile = 0, allow_plugin_path = 0;
   double closure_time_limit = 0.0;
   enum { MAX_SETS = 256 };
@@ -220,6 +224,10 @@ int sl_cmd_run(int argc, char **argv) {
       check_only = 1;
     } else if (strcmp(argv[i], "--profile") == 0) {
       profile = 1;
+    } else if (strcmp(argv[i], "--petsc") == 0 && i + 1 < argc) {
+      petsc = argv[++i];
+    } else if (strncmp(argv[i], "--petsc=", 8) == 0) {
+      petsc = argv[i] + 8;
     } else if (strcmp(argv[i], "--allow-plugin-path") == 0) {
       allow_plugin_path = 1;
     } else if (strcmp(argv[i], "--closure-time-limit") == 0 && i + 1 < argc) {
@@ -242,8 +250,8 @@ int sl_cmd_run(int argc, char **argv) {
   const char *set_list[MAX_SETS + 1];
   for (int i = 0; i < n_sets; ++i) set_list[i] = sets[i];
   set_list[n_sets] = NULL;
-  sluice_open_opts oo = {.sets = set_list, .timing = profile, .allow_plugin_path = allow_plugin_path,
-                         .closure_time_limit = closure_time_limit};
+  sluice_open_opts oo = {.sets = set_list, .timing = profile, .petsc_options = petsc,
+                         .allow_plugin_path = allow_plugin_path, .closure_time_limit = closure_time_limit};
   int rc = sluice_open(scene, &oo, &sc, &e);
   if (!rc && (print_config || check_only)) {
     rc = check_isolated(sc, print_config, scene, &e);

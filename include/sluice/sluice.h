@@ -49,6 +49,9 @@ typedef struct sluice_open_opts {
    * the scene names (the default). */
   int scan_all;
   int timing; /* time each closure call (what sluice run --profile reports) */
+  /* PETSc options for [solver] linear = petsc ("-ksp_monitor -pc_type lu"), over the scene's [solver.petsc];
+   * bad input when sluice was built without PETSc (NULL: none) */
+  const char *petsc_options;
   /* The scene's [plugins] path names folders of libraries to load: refused (bad input, the key named) unless this
    * is set (sluice run --allow-plugin-path). */
   int allow_plugin_path;
