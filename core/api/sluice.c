@@ -8,6 +8,7 @@
 #include "core/config/ini.h"
 #include "core/models/run.h"
 #include "core/plugin/closure_ini.h"
+#include "core/plugin/guard.h"
 #include "core/plugin/kinds.h"
 #include "core/time/loop.h"
 #include "core/util/version.h"
@@ -45,7 +46,9 @@ static int finish_open(sluice *s, const sluice_open_opts *o, sluice_error *e) {
   sl_diag d;
   int rc = 0;
   for (int i = 0; o && o->sets && o->sets[i] && !rc; ++i) rc = sl_closure_ini_apply_override(s->ini, o->sets[i], &d);
+  if (!rc) rc = sl_plugin_dirs_allowed(s->ini, o && o->allow_plugin_path, &d);
   if (!rc) rc = sl_plugin_dirs_from_ini(s->ini, &s->dirs, &s->n_dirs, &d);
+  if (!rc) sl_guard_set_call_time_limit(o ? o->closure_time_limit : 0.0);
   if (!rc) rc = sl_registry_create(&s->reg, (const char *const *)s->dirs, s->n_dirs, &d);
   /* only the libraries of the closures the scene names are loaded, unless asked */
   if (!rc) rc = o && o->scan_all ? sl_registry_scan(s->reg, &d) : sl_registry_index(s->reg, &d);
