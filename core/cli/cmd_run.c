@@ -8,11 +8,13 @@
 
 #include "core/cli/cli.h"
 #include "core/cli/progress.h"
+#include "core/cli/summary_json.h"
 #include "sluice/sluice.h"
 
 static const char run_usage[] =
     "usage: sluice run SCENE.ini [--set section.key=value]... [--print-config] [-o OUT.h5]\n"
-    "                            [--restart FILE.h5] [--check] [--profile]\n"
+    "                            [--restart FILE.h5] [--check] [--profile] [--overwrite]\n"
+    "                            [--summary-json FILE]\n"
     "Reads a scene, applies the --set overrides, checks every section and key\n"
     "(unknown ones are errors with a suggestion), loads and validates each\n"
     "[closure.<kind>] against the closure's own schema, and runs it.\n"
@@ -23,6 +25,9 @@ static const char run_usage[] =
     "                   largest, angles), and stop\n"
     "  -o OUT.h5        output file (default: [output] file, else SCENE.h5)\n"
     "  --restart F.h5   continue from the last checkpoint in F.h5\n"
+    "  --overwrite      the output may replace files sluice did not write (without\n"
+    "                   it such a file is refused, exit 2; the scene file never)\n"
+    "  --summary-json F what the run did (status, steps, times, output) as JSON in F\n"
     "  --profile        after the summary, what the run did and skipped: assemblies,\n"
     "                   factorisations (and reuses), closure calls and points per\n"
     "                   closure with their time, the plugin libraries loaded, the\n"
@@ -98,14 +103,15 @@ static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, do
 }
 
 static int simulate(sluice *sc, const char *scene, const char *out_file, const char *restart, int profile,
-                    sluice_error *e) {
+                    int overwrite, const char *summary_json, sluice_error *e) {
   double t0, t1;
   int rc = sluice_time_span(sc, &t0, &t1, e);
   if (rc) return rc;
   sl_progress prog;
   sl_progress_begin(&prog, stderr, t0, t1);
   sluice_run_opts o = {.scene_path = scene, .output = out_file, .restart = restart,
-                       .progress = monitor, .progress_user = &prog, .interrupt = &interrupted};
+                       .progress = monitor, .progress_user = &prog, .interrupt = &interrupted,
+                       .overwrite = overwrite};
   sluice_summary m;
   double w0 = sl_wall_seconds(), c0 = sl_cpu_seconds();
   void (*old)(int) = signal(SIGINT, on_sigint);
@@ -140,6 +146,9 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
              e->msg);
     memcpy(e->msg, msg, sizeof msg);
   }
+  if (summary_json &&
+      sl_summary_json_write(summary_json, scene, sluice_model(sc), rc, e->msg, &m, s.wall_seconds, s.cpu_seconds))
+    fprintf(stderr, "sluice: cannot write the summary '%s'\n", summary_json);
   return rc;
 }
 
@@ -148,8 +157,8 @@ int sl_cmd_run(int argc, char **argv) {
     puts(run_usage);
     return 0;
   }
-  const char *scene = NULL, *out_file = NULL, *restart = NULL;
-  int print_config = 0, check_only = 0, profile = 0;
+  const char *scene = NULL, *out_file = NULL, *restart = NULL, *summary_json = NULL;
+  int print_config = 0, check_only = 0, profile = 0, overwrite = 0;
   enum { MAX_SETS = 256 };
   const char *sets[MAX_SETS];
   int n_sets = 0;
@@ -170,6 +179,10 @@ int sl_cmd_run(int argc, char **argv) {
       check_only = 1;
     } else if (strcmp(argv[i], "--profile") == 0) {
       profile = 1;
+    } else if (strcmp(argv[i], "--overwrite") == 0) {
+      overwrite = 1;
+    } else if (strcmp(argv[i], "--summary-json") == 0 && i + 1 < argc) {
+      summary_json = argv[++i];
     } else if (argv[i][0] == '-') {
       return sl_cli_error(SL_EBADINPUT, "run: unknown option or missing value '%s' (sluice run --help)", argv[i]);
     } else if (!scene) {
@@ -194,8 +207,12 @@ int sl_cmd_run(int argc, char **argv) {
   } else if (!rc && check_only) {
     rc = sluice_check(sc, stdout, &e);
   } else if (!rc) {
-    rc = simulate(sc, scene, out_file, restart, profile, &e);
+    rc = simulate(sc, scene, out_file, restart, profile, overwrite, summary_json, &e);
+    summary_json = NULL; /* written */
   }
+  if (summary_json && !print_config && !check_only && rc &&
+      sl_summary_json_write(summary_json, scene, sc ? sluice_model(sc) : "", rc, e.msg, NULL, 0.0, 0.0))
+    fprintf(stderr, "sluice: cannot write the summary '%s'\n", summary_json);
   sluice_close(sc);
   if (rc) fprintf(stderr, "%s\n", e.msg);
   return rc;

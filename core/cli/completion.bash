@@ -15,6 +15,7 @@ _sluice() {
     run)
       case $prev in
         -o|--restart) COMPREPLY=($(compgen -f -X '!*.h5' -- "$cur")); return ;;
+        --summary-json) COMPREPLY=($(compgen -f -- "$cur")); return ;;
         --set)
           local scene w
           for w in "${COMP_WORDS[@]:2}"; do case $w in *.ini) scene=$w ;; esac; done
@@ -24,11 +25,11 @@ _sluice() {
           fi
           return ;;
       esac
-      COMPREPLY=($(compgen -W "--set --print-config --check --profile --restart -o --help" -- "$cur"))
+      COMPREPLY=($(compgen -W "--set --print-config --check --profile --restart -o --overwrite --summary-json --help" -- "$cur"))
       [[ $cur != -* ]] && COMPREPLY+=($(compgen -f -X '!*.ini' -- "$cur") $(compgen -d -- "$cur"))
       ;;
     sample)
-      COMPREPLY=($(compgen -W "--field --time --line --n --point --list --help" -- "$cur"))
+      COMPREPLY=($(compgen -W "--field --time --line --n --point --list --scalars --help" -- "$cur"))
       [[ $cur != -* ]] && COMPREPLY+=($(compgen -f -X '!*.h5' -- "$cur") $(compgen -d -- "$cur"))
       ;;
     bench)

@@ -161,6 +161,7 @@ int sl_output_write_checkpoint(sl_output *o, const sl_checkpoint *ck, sl_diag *d
   if (!rc && H5Fflush(o->file, H5F_SCOPE_GLOBAL) < 0)
     rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot flush", "/checkpoint");
   if (!rc) o->ck_current = s;
+  if (!rc) rc = sl_output_commit(o, d); /* a restartable state is a result */
   return rc;
 }
 

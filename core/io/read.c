@@ -319,24 +319,10 @@ int sl_output_read_text(const char *path, const char *what, char **text, sl_diag
   } else {
     type = H5Dget_type(o);
   }
-  if (!rc && (type < 0 || H5Tget_class(type) != H5T_STRING || H5Tis_variable_str(type) != 0))
-    rc = sl_diag_set(d, SL_EBADINPUT, "%s: %s is not a fixed-length string", path, what);
-  if (!rc) {
-    size_t sz = H5Tget_size(type);
-    char *buf = malloc(sz + 1);
-    if (!buf) {
-      rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading %s", path, what);
-    } else {
-      herr_t st = at ? H5Aread(a, type, buf) : H5Dread(o, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf);
-      if (st < 0) {
-        rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot read", what);
-        free(buf);
-      } else {
-        buf[sz] = 0;
-        *text = buf;
-      }
-    }
-  }
+  if (!rc && (type < 0 || H5Tget_class(type) != H5T_STRING))
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: %s is not a string", path, what);
+  if (!rc && sl_h5_read_string(at ? a : o, at != NULL, text) != 0)
+    rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot read", what);
   if (type >= 0) H5Tclose(type);
   if (a >= 0) H5Aclose(a);
   H5Oclose(o);

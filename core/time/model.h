@@ -124,6 +124,7 @@ typedef struct sl_run_opts {
   void (*monitor)(void *user, double t, double dt, long step, int nonlinear_iterations);
   void *monitor_user;
   volatile sig_atomic_t *interrupt; /* set asynchronously (Ctrl-C): stop after the step, save */
+  int overwrite;                    /* the output may replace files sluice did not write */
 } sl_run_opts;
 
 /* What a run did. */

@@ -83,6 +83,7 @@ typedef struct sluice_run_opts {
   void *progress_user;
   volatile sig_atomic_t *interrupt; /* set asynchronously: stop after the step and save */
   struct sluice_summary *live;      /* when not NULL: kept up to date before each progress call */
+  int overwrite; /* the output may replace files sluice did not write (never the scene file itself) */
 } sluice_run_opts;
 
 /* Why a numeric factorisation was computed: sluice_refactor_reason_name(k) for k < SLUICE_REFACTOR_REASONS
