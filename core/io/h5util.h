@@ -119,6 +119,10 @@ int sl_io_is_sluice_h5(const char *path);
  * malloc'ed; SL_ENOMEM (all NULL) on no memory. */
 int sl_io_output_names(const char *path, char **xmf, char **csv, char **tmp);
 
+/* space.c: SL_EFAILED with a message when the file system or the file size
+ * limit has no room for `bytes` more (what: "the mesh", "field 'phi'", ...). */
+int sl_io_space_check(const sl_output *o, double bytes, const char *what, sl_diag *d);
+
 /* units.c: the unit of a field or scalar known by name, "" if not known. */
 const char *sl_io_default_unit(const char *name);
 

@@ -216,6 +216,9 @@ int sl_output_write_mesh(sl_output *o, int dim, int32_t n_vertices, const double
                          (long long)(k / nodes_per_cell), (int)cells[k], (int)n_vertices);
 
   /* ParaView wants XYZ: pad 1-D and 2-D coordinates with zeros. */
+  /* coordinates, cell centres, topology */
+  int src = sl_io_space_check(o, 24.0 * n_vertices + (24.0 + 4.0 * nodes_per_cell) * n_cells, "the mesh", d);
+  if (src) return src;
   double *xyz = malloc((size_t)n_vertices * 3 * sizeof *xyz);
   if (!xyz) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory for the mesh", o->path);
   for (int32_t v = 0; v < n_vertices; ++v)
@@ -254,7 +257,14 @@ int sl_output_begin_step(sl_output *o, double t, sl_diag *d) {
   if (t != t) return sl_diag_set(d, SL_EBADINPUT, "%s: output time is NaN", o->path);
   char name[32];
   snprintf(name, sizeof name, "/step_%06d", o->next_index);
-  hid_t g = H5Gcreate2(o->file, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  /* the scalars' attributes keep the order they were written in (readers list them so) */
+  hid_t gcpl = H5Pcreate(H5P_GROUP_CREATE);
+  if (gcpl < 0 || H5Pset_attr_creation_order(gcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED) < 0) {
+    if (gcpl >= 0) H5Pclose(gcpl);
+    return sl_h5_fail(d, SL_EFAILED, o->path, "cannot prepare group", name);
+  }
+  hid_t g = H5Gcreate2(o->file, name, H5P_DEFAULT, gcpl, H5P_DEFAULT);
+  H5Pclose(gcpl);
   if (g < 0) return sl_h5_fail(d, SL_EFAILED, o->path, "cannot create group", name);
   int rc = sl_h5_attr_double(g, "time", t, o->path, name, d);
   if (!rc) rc = sl_h5_attr_int32(g, "index", o->next_index, o->path, name, d);
@@ -306,6 +316,9 @@ int sl_output_write_field_unit(sl_output *o, const char *name, const char *unit,
                          o->path, name, o->step_time, values[i], (long long)(i / (size_t)components),
                          (int)(i % (size_t)components));
 
+  char what[300];
+  snprintf(what, sizeof what, "field '%s'", name);
+  if ((rc = sl_io_space_check(o, (double)n * stored * sizeof(double), what, d))) return rc;
   const double *buf = values;
   double *pad = NULL;
   if (components == 2) { /* ParaView's vectors have 3 components */
@@ -376,6 +389,10 @@ int sl_output_write_provenance(sl_output *o, const sl_provenance *p, sl_diag *d)
   if (ex < 0) return sl_h5_fail(d, SL_EFAILED, path, "cannot query", "/provenance");
   if (ex > 0 && H5Ldelete(o->file, "provenance", H5P_DEFAULT) < 0)
     return sl_h5_fail(d, SL_EFAILED, path, "cannot replace", "/provenance");
+  double text = (double)strlen(p->ini_text ? p->ini_text : "");
+  for (int i = 0; i < p->n_closures; ++i) text += 1024.0 + strlen(p->closures[i].parameters ? p->closures[i].parameters : "");
+  int src = sl_io_space_check(o, text, "the provenance", d);
+  if (src) return src;
   hid_t g = H5Gcreate2(o->file, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), cg = -1;
   if (g < 0) return sl_h5_fail(d, SL_EFAILED, path, "cannot create group", "/provenance");
   int rc = sl_h5_attr_string(g, "sluice_version", p->sluice_version, path, "/provenance", d);
@@ -408,6 +425,39 @@ int sl_output_write_provenance(sl_output *o, const sl_provenance *p, sl_diag *d)
   return rc;
 }
 
+/* Closes every object of the file still open, then the file: after a
+ * failed write a dataset whose close failed stays open. (A file whose close
+ * failed cannot be closed again: HDF5 1.10 crashes trying, also in its exit
+ * handler; space.c keeps writes from failing, main.c keeps the handler from
+ * running.) Returns H5Fclose's status. */
+static herr_t close_file(hid_t file) {
+  herr_t st = 0;
+  for (int pass = 0; pass < 1; ++pass) {
+    ssize_t n = H5Fget_obj_count(file, H5F_OBJ_DATASET | H5F_OBJ_GROUP | H5F_OBJ_DATATYPE | H5F_OBJ_ATTR |
+                                           H5F_OBJ_LOCAL);
+    if (n > 0) {
+      hid_t *ids = malloc((size_t)n * sizeof *ids);
+      if (ids) {
+        ssize_t k = H5Fget_obj_ids(file, H5F_OBJ_DATASET | H5F_OBJ_GROUP | H5F_OBJ_DATATYPE | H5F_OBJ_ATTR |
+                                             H5F_OBJ_LOCAL,
+                                   (size_t)n, ids);
+        for (ssize_t i = 0; i < k; ++i) {
+          H5I_type_t t = H5Iget_type(ids[i]);
+          if (t == H5I_DATASET) H5Dclose(ids[i]);
+          else if (t == H5I_GROUP) H5Gclose(ids[i]);
+          else if (t == H5I_DATATYPE) H5Tclose(ids[i]);
+          else if (t == H5I_ATTR) H5Aclose(ids[i]);
+        }
+        free(ids);
+      }
+    }
+    st = H5Fclose(file);
+    break;
+  }
+  H5Eclear2(H5E_DEFAULT);
+  return st;
+}
+
 int sl_output_close(sl_output *o, sl_diag *d) {
   if (!o) return 0;
   int rc = 0;
@@ -422,7 +472,7 @@ int sl_output_close(sl_output *o, sl_diag *d) {
     if (!o->committed && !rc) rc = sl_output_commit(o, d);
     /* closed even when a flush failed (a full disk): HDF5 must not find the
      * file still open when the process exits */
-    if (H5Fclose(o->file) < 0 && !rc) rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot close", "the file");
+    if (close_file(o->file) < 0 && !rc) rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot close", "the file");
     o->file = -1;
   }
   if (!o->committed) unlink(o->tmp_path);
@@ -430,18 +480,19 @@ int sl_output_close(sl_output *o, sl_diag *d) {
   return rc;
 }
 
-void sl_output_abort(sl_output *o) {
-  if (!o) return;
+int sl_output_abort(sl_output *o) {
+  if (!o) return 0;
   if (o->in_step) H5Gclose(o->step_group);
   o->in_step = 0;
   if (o->file >= 0) {
     if (o->committed) H5Fflush(o->file, H5F_SCOPE_GLOBAL);
-    H5Fclose(o->file);
-    H5Eclear2(H5E_DEFAULT);
+    close_file(o->file);
     o->file = -1;
   }
-  if (!o->committed) unlink(o->tmp_path); /* the earlier result stays */
+  int kept = o->committed;
+  if (!kept) unlink(o->tmp_path); /* the earlier result stays */
   free_output(o);
+  return kept;
 }
 
 static int add_scalar(sl_output *o, const char *name, const char *unit, double value, sl_diag *d) {

@@ -67,8 +67,9 @@ int sl_output_open_opts(sl_output **out, const char *path, const sl_output_opts 
 /* With the default opts: not from a scene, no overwrite. */
 int sl_output_open(sl_output **out, const char *path, sl_diag *d);
 /* The run failed: closes and frees. Before the first complete output time
- * the new file is removed and what was there before stays. */
-void sl_output_abort(sl_output *out);
+ * (or checkpoint) the new file is removed and what was there before stays:
+ * returns 0 then, 1 when the file was kept. */
+int sl_output_abort(sl_output *out);
 
 /* Once, before the first step. coords: n_vertices x dim (dim 1..3), cells:
  * n_cells x nodes_per_cell, 0-based. topology: the XDMF name, one of
@@ -146,6 +147,11 @@ void sl_output_stats(const sl_output *out, long *times, long *datasets, double *
 /* Flushes, closes and frees (also after failures); a file with no complete
  * output time yet is renamed to its name now. */
 int sl_output_close(sl_output *out, sl_diag *d);
+
+/* For a program's main(), before any other HDF5 call: HDF5's exit handler
+ * is not installed (every file sluice opens it closes; after a failed write
+ * HDF5 1.10 crashes in that handler). */
+void sl_io_process_start(void);
 
 /* ---- readers: each opens the file read-only and closes it again. They do
  * not take HDF5's file lock, so a running simulation's output can be read

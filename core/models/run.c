@@ -79,9 +79,9 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
     memcpy(res->stop_reason, res->model.stop_reason, sizeof res->stop_reason);
   if (out) {
     sl_output_stats(out, &res->output_times, &res->output_datasets, &res->output_bytes);
-    if (rc) /* before the first complete output time, what was there stays */
-      sl_output_abort(out);
-    else
+    if (rc) { /* before the first complete output time, what was there stays */
+      if (!sl_output_abort(out)) res->output_path[0] = '\0';
+    } else
       rc = sl_output_close(out, d);
   } else {
     res->output_path[0] = '\0';

@@ -465,6 +465,16 @@ static void *target_base(sl_scene *sc, const sl_key *k) {
   return k->target == SL_IN_SCENE ? (void *)sc : k->target == SL_IN_MODEL ? sc->config : NULL;
 }
 
+/* [output] file = "" names no file: refused rather than taken as the default. */
+static int check_output_file(const sl_scene *sc, sl_diag *d) {
+  const sl_src *e = sl_scene_src(sc, &sc->output.file);
+  if (!e || (sc->output.file && *sc->output.file)) return 0;
+  return sl_diag_set(d, SL_EBADINPUT,
+                     "%s:%d: error: [output] file is empty; name the output file (e.g. file = result.h5) or leave "
+                     "the key out for the default (the scene's name with .h5, in the working folder)",
+                     e->file, e->line);
+}
+
 int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o, sl_scene **out, sl_diag *d) {
   *out = NULL;
   sl_scene *sc = calloc(1, sizeof *sc);
@@ -492,6 +502,7 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
       }
   }
   if (!rc) rc = resolve_time(&b, d);
+  if (!rc) rc = check_output_file(sc, d);
   if (!rc && o->build_mesh && sl_schema_has_section(schema, "mesh")) rc = sl_scene_mesh_build(sc, &sc->mesh, d);
   if (!rc && o->build_mesh && schema->boundary_size) rc = fill_boundaries(&b, d);
   /* every entry outside the closures' sections is read by now */
