@@ -229,7 +229,7 @@ static int add_columns(sl_output *o, int *grew, sl_diag *d) {
         if (!r) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", o->csv_path);
         for (long k = 0; k < o->n_rows; ++k)
           for (int j = 0; j < stride; ++j)
-            r[k * stride + j] = j < o->row_stride ? o->rows[k * o->row_stride + j] : NAN;
+            r[k * stride + j] = j < o->row_stride ? o->rows[k * o->row_stride + j] : -NAN;
         free(o->rows);
         o->rows = r, o->cap_rows = o->n_rows;
       }
@@ -271,6 +271,7 @@ static int csv_step(sl_output *o, double t, sl_diag *d) {
   }
   double *row = o->rows + o->n_rows * o->row_stride;
   row[0] = t;
+  for (int c = o->n_cols; c + 1 < o->row_stride; ++c) row[1 + c] = -NAN; /* columns to come */
   for (int c = 0; c < o->n_cols; ++c) {
     row[1 + c] = -NAN;
     for (int i = 0; i < o->n_scalars; ++i)
