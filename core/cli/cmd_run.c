@@ -106,7 +106,11 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
                     int overwrite, const char *summary_json, sluice_error *e) {
   double t0, t1;
   int rc = sluice_time_span(sc, &t0, &t1, e);
-  if (rc) return rc;
+  if (rc) {
+    if (summary_json && sl_summary_json_write(summary_json, scene, sluice_model(sc), rc, e->msg, NULL, 0.0, 0.0))
+      fprintf(stderr, "sluice: cannot write the summary '%s'\n", summary_json);
+    return rc;
+  }
   sl_progress prog;
   sl_progress_begin(&prog, stderr, t0, t1);
   sluice_run_opts o = {.scene_path = scene, .output = out_file, .restart = restart,
