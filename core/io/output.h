@@ -148,6 +148,10 @@ void sl_output_stats(const sl_output *out, long *times, long *datasets, double *
  * output time yet is renamed to its name now. */
 int sl_output_close(sl_output *out, sl_diag *d);
 
+/* Removes an output: OUT.h5, OUT.xmf, OUT_scalars.csv and a temporary
+ * OUT.h5.tmp (those that exist). */
+void sl_output_remove(const char *path);
+
 /* For a program's main(), before any other HDF5 call: HDF5's exit handler
  * is not installed (every file sluice opens it closes; after a failed write
  * HDF5 1.10 crashes in that handler). */

@@ -182,3 +182,13 @@ int sl_output_check_path(const char *path, const sl_output_opts *opts, sl_diag *
   free(xmf), free(csv), free(tmpname);
   return rc;
 }
+
+void sl_output_remove(const char *path) {
+  char *xmf = NULL, *csv = NULL, *tmp = NULL;
+  remove(path);
+  if (sl_io_output_names(path, &xmf, &csv, &tmp)) return;
+  if (strcmp(xmf, path) != 0) remove(xmf);
+  remove(csv);
+  remove(tmp);
+  free(xmf), free(csv), free(tmp);
+}
