@@ -14,7 +14,7 @@
 static const char run_usage[] =
     "usage: sluice run SCENE.ini [--set section.key=value]... [--print-config] [-o OUT.h5]\n"
     "                            [--restart FILE.h5] [--check] [--profile] [--overwrite]\n"
-    "                            [--summary-json FILE]\n"
+    "                            [--summary-json FILE] [--petsc \"PETSC OPTIONS\"]\n"
     "Reads a scene, applies the --set overrides, checks every section and key\n"
     "(unknown ones are errors with a suggestion), loads and validates each\n"
     "[closure.<kind>] against the closure's own schema, and runs it.\n"
@@ -32,6 +32,9 @@ static const char run_usage[] =
     "                   factorisations (and reuses), closure calls and points per\n"
     "                   closure with their time, the plugin libraries loaded, the\n"
     "                   output written, and the CPU time of each phase\n"
+    "  --petsc \"OPTS\"   PETSc options for [solver] linear = petsc, over the scene's\n"
+    "                   [solver.petsc] (PETSC_OPTIONS over both), as \"-ksp_monitor\",\n"
+    "                   \"-log_view\" or \"-pc_type lu\"\n"
     "Progress: on a terminal a line redrawn in place; otherwise (a log) a line\n"
     "every 10 s (SLUICE_PROGRESS_EVERY=seconds; SLUICE_PROGRESS=0 off, 1 in place,\n"
     "lines the log lines). The run ends with a one-line summary (CPU and wall\n"
@@ -161,7 +164,7 @@ int sl_cmd_run(int argc, char **argv) {
     puts(run_usage);
     return 0;
   }
-  const char *scene = NULL, *out_file = NULL, *restart = NULL, *summary_json = NULL;
+  const char *scene = NULL, *out_file = NULL, *restart = NULL, *summary_json = NULL, *petsc = NULL;
   int print_config = 0, check_only = 0, profile = 0, overwrite = 0;
   enum { MAX_SETS = 256 };
   const char *sets[MAX_SETS];
@@ -187,6 +190,10 @@ int sl_cmd_run(int argc, char **argv) {
       overwrite = 1;
     } else if (strcmp(argv[i], "--summary-json") == 0 && i + 1 < argc) {
       summary_json = argv[++i];
+    } else if (strcmp(argv[i], "--petsc") == 0 && i + 1 < argc) {
+      petsc = argv[++i];
+    } else if (strncmp(argv[i], "--petsc=", 8) == 0) {
+      petsc = argv[i] + 8;
     } else if (argv[i][0] == '-') {
       return sl_cli_error(SL_EBADINPUT, "run: unknown option or missing value '%s' (sluice run --help)", argv[i]);
     } else if (!scene) {
@@ -202,7 +209,7 @@ int sl_cmd_run(int argc, char **argv) {
   const char *set_list[MAX_SETS + 1];
   for (int i = 0; i < n_sets; ++i) set_list[i] = sets[i];
   set_list[n_sets] = NULL;
-  sluice_open_opts oo = {.sets = set_list, .timing = profile};
+  sluice_open_opts oo = {.sets = set_list, .timing = profile, .petsc_options = petsc};
   int rc = sluice_open(scene, &oo, &sc, &e);
   if (!rc && print_config) {
     /* the keys and the closures are checked first (bad input: exit 2, nothing printed) */

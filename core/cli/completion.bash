@@ -25,7 +25,7 @@ _sluice() {
           fi
           return ;;
       esac
-      COMPREPLY=($(compgen -W "--set --print-config --check --profile --restart -o --overwrite --summary-json --help" -- "$cur"))
+      COMPREPLY=($(compgen -W "--set --print-config --check --profile --petsc --restart -o --overwrite --summary-json --help" -- "$cur"))
       [[ $cur != -* ]] && COMPREPLY+=($(compgen -f -X '!*.ini' -- "$cur") $(compgen -d -- "$cur"))
       ;;
     sample)

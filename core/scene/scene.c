@@ -1,5 +1,6 @@
 /* The typed scene: the INI file read once through a model's schema (scene.h). */
 #include "core/scene/scene.h"
+#include "core/scene/solver.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -231,6 +232,11 @@ static int check_sections(builder *b, sl_diag *d) {
   for (int i = 0; i < ini->n_sections; ++i) {
     const sl_ini_section *sec = &ini->sections[i];
     if (strcmp(sec->name, "plugins") == 0) continue;
+    if (strcmp(sec->name, "solver.petsc") == 0 && sl_schema_key(s, "solver", "linear")) {
+      int rc = sl_scene_petsc_section(sec, &b->sc->solver.petsc_options, d);
+      if (rc) return rc;
+      continue;
+    }
     if (strncmp(sec->name, "boundary.", 9) == 0 && sec->name[9]) {
       if (!s->boundary_size)
         return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the %s takes no boundary conditions", sec->file, sec->line,
@@ -487,6 +493,7 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
   for (int i = 0; i < ini->n_sections && !rc; ++i) {
     const sl_ini_section *sec = &ini->sections[i];
     if (strncmp(sec->name, "boundary.", 9) == 0 || strncmp(sec->name, "closure.", 8) == 0) continue;
+    if (strcmp(sec->name, "solver.petsc") == 0) continue; /* checked with the sections */
     rc = check_keys(&b, sec, sec->name, d);
   }
   /* the values the file gives first (their types and ranges), then the closures, then what the file leaves to
@@ -503,6 +510,13 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
   }
   if (!rc) rc = resolve_time(&b, d);
   if (!rc) rc = check_output_file(sc, d);
+  if (!rc && sc->solver.linear == 4 && !sl_linsolve_built("petsc")) { /* SL_SCENE_LINEAR_CHOICES */
+    char at[400];
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s: this sluice was built without PETSc (configure with -DSLUICE_WITH_PETSC=ON; "
+                     "Debian: libpetsc-real-dev); this build has umfpack, klu and cholmod",
+                     sl_scene_where(sc, &sc->solver.linear, at, sizeof at));
+  }
   if (!rc && o->build_mesh && sl_schema_has_section(schema, "mesh")) rc = sl_scene_mesh_build(sc, &sc->mesh, d);
   if (!rc && o->build_mesh && schema->boundary_size) rc = fill_boundaries(&b, d);
   /* every entry outside the closures' sections is read by now */
@@ -526,6 +540,7 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
 
 void sl_scene_free(sl_scene *sc) {
   if (!sc) return;
+  free(sc->solver.petsc_options);
   for (int i = 0; i < sc->n_exprs; ++i) sl_expr_free(sc->exprs[i]);
   free(sc->exprs);
   for (int r = 0; r < SL_SCHEMA_MAX_ROLES; ++r) sl_closure_destroy(sc->closures[r]);

@@ -34,15 +34,24 @@ typedef struct petsc_state {
   KSP ksp;
   Vec b, x;
   int32_t n, split; /* split > 0: unknowns [0, split) and [split, n) are a saddle point's two fields */
+  int transient;    /* the velocity block has a mass term */
   int configured;   /* the KSP has its type and options */
+  int user_tolerances; /* -ksp_rtol or -ksp_max_it given: they replace the exact solve's */
   long iterations;
 } petsc_state;
 
 static int petsc_started;
 
+/* The option levels, lowest first: a scene's, the user's (--petsc), the environment's (PETSC_OPTIONS, also read
+ * by PetscInitialize). They are inserted in that order before a solver is configured, so a higher level wins. */
+static char *scene_options, *user_options;
+
 static void petsc_finish(void) {
   if (petsc_started) PetscFinalize();
   petsc_started = 0;
+  free(scene_options);
+  free(user_options);
+  scene_options = user_options = NULL;
 }
 
 static int petsc_fail(PetscErrorCode e, const char *what, sl_diag *d) {
@@ -57,46 +66,54 @@ static int petsc_fail(PetscErrorCode e, const char *what, sl_diag *d) {
     if (e_) return petsc_fail(e_, (what), d);     \
   } while (0)
 
-/* Options given by sl_linsolve_petsc_options before PETSc starts. */
-static char *pending_options;
-
-int sl_linsolve_petsc_options(const char *options, sl_diag *d) {
+static int keep(char **level, const char *options, sl_diag *d) {
+  free(*level);
+  *level = NULL;
   if (!options || !*options) return 0;
-  if (petsc_started) {
-    PetscErrorCode e = PetscOptionsInsertString(NULL, options);
-    return e ? petsc_fail(e, "reading the options", d) : 0;
+  if (!(*level = strdup(options))) return sl_diag_set(d, SL_ENOMEM, "petsc: out of memory");
+  return 0;
+}
+
+int sl_linsolve_petsc_options(const char *options, sl_diag *d) { return keep(&user_options, options, d); }
+int sl_linsolve_petsc_scene_options(const char *options, sl_diag *d) { return keep(&scene_options, options, d); }
+
+static int insert_levels(sl_diag *d) {
+  const char *levels[3] = {scene_options, user_options, getenv("PETSC_OPTIONS")};
+  static const char *const names[3] = {"[solver.petsc]", "--petsc", "PETSC_OPTIONS"};
+  for (int i = 0; i < 3; ++i) {
+    if (!levels[i] || !*levels[i]) continue;
+    PetscErrorCode e = PetscOptionsInsertString(NULL, levels[i]);
+    if (e) return sl_diag_set(d, SL_EBADINPUT, "petsc: cannot read the options of %s (\"%s\")", names[i], levels[i]);
   }
-  size_t have = pending_options ? strlen(pending_options) : 0, add = strlen(options);
-  char *p = realloc(pending_options, have + add + 2);
-  if (!p) return sl_diag_set(d, SL_ENOMEM, "petsc: out of memory");
-  if (have) p[have++] = ' ';
-  memcpy(p + have, options, add + 1);
-  pending_options = p;
   return 0;
 }
 
 static int petsc_start(sl_diag *d) {
   if (petsc_started) return 0;
-  /* PETSC_OPTIONS (the environment) is read by PetscInitialize */
-  PetscErrorCode e = PetscInitialize(NULL, NULL, NULL, NULL);
+  PetscErrorCode e = PetscInitializeNoArguments();
   if (e) return sl_diag_set(d, SL_EFAILED, "petsc: PetscInitialize failed (error %d)", (int)e);
   petsc_started = 1;
   atexit(petsc_finish);
-  if (pending_options) {
-    e = PetscOptionsInsertString(NULL, pending_options);
-    free(pending_options);
-    pending_options = NULL;
-    if (e) return petsc_fail(e, "reading the options", d);
-  }
   return 0;
 }
 
-/* An option's default, unless the user gave it. */
+/* An option's default, unless the user gave it. The defaults are set in PETSc's global options only while one
+ * solver is configured (cleared after its KSPSetUp), so each solver gets its own and a user's stays the user's. */
+enum { MAX_DEFAULTS = 8 };
+static const char *defaults_set[MAX_DEFAULTS];
+static int n_defaults_set;
+
 static PetscErrorCode option_default(const char *name, const char *value) {
   PetscBool set = PETSC_FALSE;
   PetscErrorCode e = PetscOptionsHasName(NULL, NULL, name, &set);
-  if (e || set) return e;
+  if (e || set || n_defaults_set == MAX_DEFAULTS) return e;
+  defaults_set[n_defaults_set++] = name;
   return PetscOptionsSetValue(NULL, name, value);
+}
+
+static void clear_defaults(void) {
+  for (int i = 0; i < n_defaults_set; ++i) PetscOptionsClearValue(NULL, defaults_set[i]);
+  n_defaults_set = 0;
 }
 
 static int petsc_create(void **backend, sl_diag *d) {
@@ -123,16 +140,19 @@ static void petsc_destroy(void *backend) {
   free(s);
 }
 
-static int petsc_set_blocks(void *backend, int32_t split, sl_diag *d) {
+static int petsc_set_blocks(void *backend, int32_t split, int transient, sl_diag *d) {
   (void)d;
   petsc_state *s = backend;
   s->split = split;
+  s->transient = transient;
   s->configured = 0;
   return 0;
 }
 
 /* The KSP's type and preconditioner for the system's structure, then the user's options over them. */
 static int configure(petsc_state *s, sl_diag *d) {
+  int rc = insert_levels(d);
+  if (rc) return rc;
   PC pc;
   TRY(KSPGetPC(s->ksp, &pc), "KSPGetPC");
   if (s->split > 0 && s->split < s->n) {
@@ -153,15 +173,31 @@ static int configure(petsc_state *s, sl_diag *d) {
     TRY(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, NULL), "PCFieldSplitSetSchurPre");
     TRY(option_default("-fieldsplit_u_ksp_type", "preonly"), "options");
     TRY(option_default("-fieldsplit_u_pc_type", hypre ? "hypre" : "gamg"), "options");
+    /* BoomerAMG's default strength threshold (0.25, for 2-D scalar Laplacians) coarsens the coupled velocity block
+     * of 2 mu D(u):D(v) badly: 359 FGMRES iterations on the 32 x 32 Stokes cavity, against 47 with 0.7, which
+     * stays mesh-independent (47, 47, 49 at 32, 64, 128 cells a side) */
+    if (hypre) TRY(option_default("-fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.7"), "options");
     TRY(option_default("-fieldsplit_p_ksp_type", "preonly"), "options");
-    TRY(option_default("-fieldsplit_p_pc_type", "jacobi"), "options");
+    /* selfp is B diag(A)^-1 B^T. Steady (viscous) A: S = B A^-1 B^T is spectrally a pressure mass matrix over
+     * mu, which Jacobi of selfp matches (47 iterations on the Stokes cavity at any mesh; BoomerAMG on selfp
+     * does not converge there); a transient step's mass-dominated A makes S and selfp both a pressure
+     * Laplacian, which needs AMG (16 iterations a solve on the boycott vessel; Jacobi does not converge) */
+    TRY(option_default("-fieldsplit_p_pc_type", !s->transient ? "jacobi" : hypre ? "hypre" : "gamg"), "options");
   } else {
     TRY(KSPSetType(s->ksp, KSPGMRES), "KSPSetType");
     TRY(PCSetType(pc, PCILU), "PCSetType");
   }
   TRY(KSPSetPCSide(s->ksp, PC_RIGHT), "KSPSetPCSide");
   TRY(KSPSetNormType(s->ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
-  TRY(KSPSetFromOptions(s->ksp), "KSPSetFromOptions");
+  PetscBool rtol_given = PETSC_FALSE, max_it_given = PETSC_FALSE;
+  TRY(PetscOptionsHasName(NULL, NULL, "-ksp_rtol", &rtol_given), "options");
+  TRY(PetscOptionsHasName(NULL, NULL, "-ksp_max_it", &max_it_given), "options");
+  s->user_tolerances = rtol_given || max_it_given;
+  TRY(KSPSetTolerances(s->ksp, PETSC_EXACT_RTOL, 0.0, PETSC_DEFAULT, PETSC_EXACT_MAX_IT), "KSPSetTolerances");
+  PetscErrorCode e = KSPSetFromOptions(s->ksp);
+  if (!e) e = KSPSetUp(s->ksp); /* the field split's inner solvers read their options here */
+  clear_defaults();
+  if (e) return petsc_fail(e, "setting up the solver", d);
   s->configured = 1;
   return 0;
 }
@@ -193,7 +229,10 @@ static int petsc_numeric(void *backend, const sl_csr *A, sl_linsolve_stats *st, 
 }
 
 static int solve_to(petsc_state *s, const double *b, double *x, double rtol, sl_diag *d) {
-  TRY(KSPSetTolerances(s->ksp, rtol, 0.0, PETSC_DEFAULT, PETSC_EXACT_MAX_IT), "KSPSetTolerances");
+  if (!s->user_tolerances)
+    TRY(KSPSetTolerances(s->ksp, rtol, 0.0, PETSC_DEFAULT, PETSC_EXACT_MAX_IT), "KSPSetTolerances");
+  else
+    KSPGetTolerances(s->ksp, &rtol, NULL, NULL, NULL);
   TRY(VecPlaceArray(s->b, b), "VecPlaceArray");
   TRY(VecPlaceArray(s->x, x), "VecPlaceArray");
   PetscErrorCode e = KSPSolve(s->ksp, s->b, s->x);

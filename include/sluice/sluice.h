@@ -49,6 +49,9 @@ typedef struct sluice_open_opts {
    * the scene names (the default). */
   int scan_all;
   int timing; /* time each closure call (what sluice run --profile reports) */
+  /* PETSc options for [solver] linear = petsc ("-ksp_monitor -pc_type lu"), over the scene's [solver.petsc];
+   * bad input when sluice was built without PETSc (NULL: none) */
+  const char *petsc_options;
 } sluice_open_opts;
 
 /* Reads the scene file (its includes, the overrides) and finds its model:
