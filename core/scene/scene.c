@@ -558,11 +558,6 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
                        "auto); the direct solvers run on one rank",
                        sl_scene_where(sc, &sc->solver.linear, at, sizeof at), ranks);
   }
-  if (!rc && sl_scene_given(sc, &sc->output.file) && (!sc->output.file || !*sc->output.file)) {
-    char at[400];
-    rc = sl_diag_set(d, SL_EBADINPUT, "%s = \"\": an empty file name (leave the key out for the scene's name with .h5)",
-                     sl_scene_where(sc, &sc->output.file, at, sizeof at));
-  }
   if (!rc && o->build_mesh && sl_schema_has_section(schema, "mesh")) rc = sl_scene_mesh_build(sc, &sc->mesh, d);
   if (!rc && o->build_mesh && schema->boundary_size) rc = fill_boundaries(&b, d);
   /* every entry outside the closures' sections is read by now */
