@@ -111,7 +111,7 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
        smaller, and the corrections are noise (a flow at rest whose pressure carries the load) */
     /* the correction the next iteration would make, from the last one and the residual's decrease (error
        and residual contract alike near the solution, Kelley 1995, Iterative Methods for Linear and Nonlinear
-       Equations, sec. 5.1): below the tolerance at a residual small against its terms, the solve is done
+       Equations, ch. 5): below the tolerance at a residual small against its terms, the solve is done
        without one more solve to measure it */
     if (!o.linear && st->iterations > 1 && last_full && res <= rtol_terms * T && res_prev > 0) {
       double next = st->correction * res / res_prev;
