@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/solve/linsolve.h"
 #include "core/config/ini.h"
 #include "core/models/run.h"
 #include "core/plugin/closure_ini.h"
@@ -49,6 +50,7 @@ static int finish_open(sluice *s, const sluice_open_opts *o, sluice_error *e) {
   /* only the libraries of the closures the scene names are loaded, unless asked */
   if (!rc) rc = o && o->scan_all ? sl_registry_scan(s->reg, &d) : sl_registry_index(s->reg, &d);
   if (!rc && o && o->timing) sl_registry_set_timing(s->reg, 1);
+  if (!rc && o && o->petsc_options) rc = sl_linsolve_petsc_options(o->petsc_options, &d);
   if (!rc) rc = sl_model_select(s->ini, &s->entry, &d);
   if (!rc) {
     const sl_schema *sc = s->entry->schema;
@@ -67,6 +69,12 @@ static sluice *create(const char *path, sluice_error *e) {
     return NULL;
   }
   return s;
+}
+
+int sluice_ranks(int *rank, int *size, sluice_error *e) {
+  sl_diag d;
+  int rc = sl_linsolve_ranks(rank, size, &d);
+  return rc ? from_diag(e, rc, &d) : 0;
 }
 
 int sluice_open(const char *path, const sluice_open_opts *o, sluice **out, sluice_error *e) {

@@ -1,10 +1,12 @@
 /* sluice run SCENE.ini: parse and validate a scene, resolve its closures,
  * and run it (models navier_stokes, mixture and two_fluid). */
+#include <dirent.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/cli/cli.h"
 #include "core/cli/progress.h"
@@ -13,6 +15,7 @@
 static const char run_usage[] =
     "usage: sluice run SCENE.ini [--set section.key=value]... [--print-config] [-o OUT.h5]\n"
     "                            [--restart FILE.h5] [--check] [--profile] [--monitor]\n"
+    "                            [--petsc \"PETSC OPTIONS\"]\n"
     "Reads a scene, applies the --set overrides, checks every section and key\n"
     "(unknown ones are errors with a suggestion), loads and validates each\n"
     "[closure.<kind>] against the closure's own schema, and runs it.\n"
@@ -27,6 +30,9 @@ static const char run_usage[] =
     "                   factorisations (and reuses), closure calls and points per\n"
     "                   closure with their time, the plugin libraries loaded, the\n"
     "                   output written, and the CPU time of each phase\n"
+    "  --petsc \"OPTS\"   PETSc options for [solver] linear = petsc, over the scene's\n"
+    "                   [solver.petsc] (PETSC_OPTIONS over both), as \"-ksp_monitor\",\n"
+    "                   \"-log_view\" or \"-pc_type lu\"\n"
     "  --monitor        every nonlinear iteration on a line of its own: the time\n"
     "                   (or the continuation stage), its relative correction, the\n"
     "                   residual and the residual against its terms' scale\n"
@@ -210,12 +216,27 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
   return rc;
 }
 
+/* Removes a rank's private output folder and what it holds. */
+static void remove_rank_folder(const char *dir) {
+  DIR *dp = opendir(dir);
+  if (dp) {
+    for (struct dirent *de; (de = readdir(dp));) {
+      if (!strcmp(de->d_name, ".") || !strcmp(de->d_name, "..")) continue;
+      char path[512];
+      snprintf(path, sizeof path, "%s/%s", dir, de->d_name);
+      remove(path);
+    }
+    closedir(dp);
+  }
+  rmdir(dir);
+}
+
 int sl_cmd_run(int argc, char **argv) {
   if (sl_cli_wants_help(argc, argv)) {
     puts(run_usage);
     return 0;
   }
-  const char *scene = NULL, *out_file = NULL, *restart = NULL;
+  const char *scene = NULL, *out_file = NULL, *restart = NULL, *petsc = NULL;
   int print_config = 0, check_only = 0, profile = 0, show_iterations = 0;
   enum { MAX_SETS = 256 };
   const char *sets[MAX_SETS];
@@ -237,6 +258,10 @@ int sl_cmd_run(int argc, char **argv) {
       check_only = 1;
     } else if (strcmp(argv[i], "--profile") == 0) {
       profile = 1;
+    } else if (strcmp(argv[i], "--petsc") == 0 && i + 1 < argc) {
+      petsc = argv[++i];
+    } else if (strncmp(argv[i], "--petsc=", 8) == 0) {
+      petsc = argv[i] + 8;
     } else if (strcmp(argv[i], "--monitor") == 0) {
       show_iterations = 1;
     } else if (argv[i][0] == '-') {
@@ -251,10 +276,24 @@ int sl_cmd_run(int argc, char **argv) {
 
   sluice *sc = NULL;
   sluice_error e = {0, ""};
+  /* under mpirun the ranks share the linear solves; rank 0 prints and writes, the others write into a private
+     folder of the working folder that goes at the end */
+  int rank = 0, ranks = 1;
+  char rank_dir[64] = "", rank_out[96] = "";
+  if (sluice_ranks(&rank, &ranks, &e)) return sl_cli_error(e.code, "%s", e.msg);
+  if (rank > 0) {
+    snprintf(rank_dir, sizeof rank_dir, ".sluice-rank%d-XXXXXX", rank);
+    if (!mkdtemp(rank_dir)) return sl_cli_error(SL_EFAILED, "rank %d: cannot make a folder for its output", rank);
+    snprintf(rank_out, sizeof rank_out, "%s/out.h5", rank_dir);
+    if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) {
+      remove_rank_folder(rank_dir);
+      return 1;
+    }
+  }
   const char *set_list[MAX_SETS + 1];
   for (int i = 0; i < n_sets; ++i) set_list[i] = sets[i];
   set_list[n_sets] = NULL;
-  sluice_open_opts oo = {.sets = set_list, .timing = profile};
+  sluice_open_opts oo = {.sets = set_list, .timing = profile, .petsc_options = petsc};
   int rc = sluice_open(scene, &oo, &sc, &e);
   if (!rc && print_config) {
     /* the keys and the closures are checked first (bad input: exit 2, nothing printed) */
@@ -263,9 +302,10 @@ int sl_cmd_run(int argc, char **argv) {
   } else if (!rc && check_only) {
     rc = sluice_check_restart(sc, restart, stdout, &e);
   } else if (!rc) {
-    rc = simulate(sc, scene, out_file, restart, profile, show_iterations, &e);
+    rc = simulate(sc, scene, rank > 0 ? rank_out : out_file, restart, profile, show_iterations, &e);
   }
   sluice_close(sc);
   if (rc) fprintf(stderr, "%s\n", e.msg);
+  if (rank > 0) remove_rank_folder(rank_dir);
   return rc;
 }

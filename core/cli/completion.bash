@@ -24,7 +24,7 @@ _sluice() {
           fi
           return ;;
       esac
-      COMPREPLY=($(compgen -W "--set --print-config --check --profile --monitor --restart -o --help" -- "$cur"))
+      COMPREPLY=($(compgen -W "--set --print-config --check --profile --monitor --petsc --restart -o --help" -- "$cur"))
       [[ $cur != -* ]] && COMPREPLY+=($(compgen -f -X '!*.ini' -- "$cur") $(compgen -d -- "$cur"))
       ;;
     sample)

@@ -1,5 +1,6 @@
 /* The typed scene: the INI file read once through a model's schema (scene.h). */
 #include "core/scene/scene.h"
+#include "core/scene/solver.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -231,6 +232,11 @@ static int check_sections(builder *b, sl_diag *d) {
   for (int i = 0; i < ini->n_sections; ++i) {
     const sl_ini_section *sec = &ini->sections[i];
     if (strcmp(sec->name, "plugins") == 0) continue;
+    if (strcmp(sec->name, "solver.petsc") == 0 && sl_schema_key(s, "solver", "linear")) {
+      int rc = sl_scene_petsc_section(sec, &b->sc->solver.petsc_options, d);
+      if (rc) return rc;
+      continue;
+    }
     if (strncmp(sec->name, "boundary.", 9) == 0 && sec->name[9]) {
       if (!s->boundary_size)
         return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the %s takes no boundary conditions", sec->file, sec->line,
@@ -501,6 +507,7 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
   for (int i = 0; i < ini->n_sections && !rc; ++i) {
     const sl_ini_section *sec = &ini->sections[i];
     if (strncmp(sec->name, "boundary.", 9) == 0 || strncmp(sec->name, "closure.", 8) == 0) continue;
+    if (strcmp(sec->name, "solver.petsc") == 0) continue; /* checked with the sections */
     rc = check_keys(&b, sec, sec->name, d);
   }
   /* the values the file gives first (their types and ranges), then the closures, then what the file leaves to
@@ -516,6 +523,30 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
       }
   }
   if (!rc) rc = resolve_time(&b, d);
+  if (!rc && sc->solver.linear == 4 && !sl_linsolve_built("petsc")) { /* SL_SCENE_LINEAR_CHOICES */
+    char at[400];
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s: this sluice was built without PETSc (configure with -DSLUICE_WITH_PETSC=ON; "
+                     "Debian: libpetsc-real-dev); this build has umfpack, klu and cholmod",
+                     sl_scene_where(sc, &sc->solver.linear, at, sizeof at));
+  }
+  int rank = 0, ranks = 1;
+  if (!rc) rc = sl_linsolve_ranks(&rank, &ranks, d);
+  if (!rc && ranks > 1) { /* several ranks share the linear solves (PETSc), each keeps the whole state */
+    char at[400];
+    if (!sl_linsolve_built("petsc"))
+      rc = sl_diag_set(d, SL_EBADINPUT,
+                       "launched on %d ranks (mpirun), but this sluice was built without PETSc and MPI: it runs on "
+                       "one (configure with -DSLUICE_WITH_PETSC=ON to run on several)", ranks);
+    else if (!sl_schema_key(schema, "solver", "linear"))
+      rc = sl_diag_set(d, SL_EBADINPUT, "launched on %d ranks (mpirun): the %s cannot run on several ranks yet; run "
+                       "it on one", ranks, schema->title);
+    else if (sl_scene_given(sc, &sc->solver.linear) && sc->solver.linear != 4)
+      rc = sl_diag_set(d, SL_EBADINPUT,
+                       "%s: launched on %d ranks (mpirun), the linear solves must be PETSc's (linear = petsc or "
+                       "auto); the direct solvers run on one rank",
+                       sl_scene_where(sc, &sc->solver.linear, at, sizeof at), ranks);
+  }
   if (!rc && sl_scene_given(sc, &sc->output.file) && (!sc->output.file || !*sc->output.file)) {
     char at[400];
     rc = sl_diag_set(d, SL_EBADINPUT, "%s = \"\": an empty file name (leave the key out for the scene's name with .h5)",
@@ -544,6 +575,7 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
 
 void sl_scene_free(sl_scene *sc) {
   if (!sc) return;
+  free(sc->solver.petsc_options);
   for (int i = 0; i < sc->n_exprs; ++i) sl_expr_free(sc->exprs[i]);
   free(sc->exprs);
   for (int r = 0; r < SL_SCHEMA_MAX_ROLES; ++r) sl_closure_destroy(sc->closures[r]);

@@ -33,7 +33,7 @@ typedef struct sl_mesh_config {
 
 /* [solver] */
 typedef struct sl_solver_config {
-  int linear;   /* index in sl_linsolve_names(): umfpack | klu | cholmod */
+  int linear;   /* 0 auto, then umfpack | klu | cholmod | petsc (SL_SCENE_LINEAR_CHOICES) */
   int ordering; /* auto | amd | colamd | metis */
   int nonlinear; /* newton | picard */
   double nonlinear_tolerance;
@@ -43,6 +43,7 @@ typedef struct sl_solver_config {
   long continuation_steps;
   int skip_known; /* skip the solves whose result is known (a flow at rest, at a fixed point) */
   int reuse;      /* factorisation reuse: 0 auto, 1 never */
+  char *petsc_options; /* [solver.petsc] as PETSc options ("-ksp_type gmres ..."), NULL: none */
 } sl_solver_config;
 
 /* [output] */

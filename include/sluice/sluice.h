@@ -49,7 +49,15 @@ typedef struct sluice_open_opts {
    * the scene names (the default). */
   int scan_all;
   int timing; /* time each closure call (what sluice run --profile reports) */
+  /* PETSc options for [solver] linear = petsc ("-ksp_monitor -pc_type lu"), over the scene's [solver.petsc];
+   * bad input when sluice was built without PETSc (NULL: none) */
+  const char *petsc_options;
 } sluice_open_opts;
+
+/* The process's rank and the number of ranks it was launched with by mpirun (0 and 1 otherwise). With PETSc,
+ * the ranks share the linear solves and every rank keeps the whole state; rank 0 alone should write output.
+ * Starts MPI when launched by mpirun; call it before sluice_open. */
+int sluice_ranks(int *rank, int *size, sluice_error *e);
 
 /* Reads the scene file (its includes, the overrides) and finds its model:
  * an unreadable file, an unknown model or a bad override is bad input. */

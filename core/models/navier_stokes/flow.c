@@ -962,7 +962,8 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
                                        "indefinite without convection, nonsymmetric with it)",
                                        &f->ls, &f->linear, d)))
     goto fail;
-  if ((rc = sl_linsolve_set_blocks(f->ls, f->th->p_offset, d))) goto fail; /* velocity, then pressure */
+  /* velocity, then pressure */
+  if ((rc = sl_linsolve_set_blocks(f->ls, f->th->p_offset, sc->time.scheme != SL_SCHEME_STEADY, d))) goto fail;
   f->nopts = (sl_newton_opts){.rtol = sc->solver.nonlinear_tolerance,
                               .max_iterations = (int)sc->solver.max_iterations,
                               .picard_only = sc->solver.nonlinear == 1,
