@@ -141,5 +141,13 @@ monitor)
   its=$(sed -n 's/^sluice: [0-9]* steps (0 rejected), \([0-9]*\) Newton.*/\1/p' out.txt)
   [ "$n" = "$its" ] || fail "$n monitor lines for $its iterations"
   pass ;;
+boundary_not_finite_later)
+  # Issue 25 item 13: a boundary value that stops being finite during the run names its section and the time
+  # (it was "residual is not finite (entry 16)"), and the run keeps the last accepted state.
+  run 1 run "$C/cavity_stokes.ini" --set mesh.cells=4 --set time.scheme=bdf2 --set time.end=1 --set time.dt=0.05 \
+    --set output.every=0.2 --set "boundary.top.velocity=t < 0.25 ? 1 : log(-1), 0" -o later.h5
+  has "the last accepted state, t = 0\.2[0-9]*, is saved in later.h5: .*\[boundary.top\] velocity: component 1 is -?nan at \([0-9.]+, 1\), t = 0\.2[5-9][0-9]*: not a finite velocity"
+  hasnt "residual is not finite"
+  pass ;;
 *) fail "unknown case" ;;
 esac

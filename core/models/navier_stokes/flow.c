@@ -213,6 +213,7 @@ typedef struct bc_set {
   int n_pairs;     /* periodic pairs (boundary, partner), each once */
   sl_periodic_pair *pairs;
   unsigned char *open; /* [n]: the velocity is free there */
+  const sl_scene *sc;  /* for the location of a value in messages */
 } bc_set;
 
 static void bc_set_free(bc_set *s) {
@@ -248,7 +249,7 @@ static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag 
   s->pairs = calloc((size_t)m->n_boundaries + 1, sizeof *s->pairs);
   s->open = calloc((size_t)m->n_boundaries + 1, 1);
   if (!s->b || !s->pairs || !s->open) return sl_diag_set(d, SL_ENOMEM, "out of memory");
-  s->n = m->n_boundaries;
+  s->n = m->n_boundaries, s->sc = sc;
   for (int i = 0; i < s->n; ++i) {
     bc *b = &s->b[i];
     b->name = m->boundary_names[i], b->in = sl_scene_boundary(sc, i), b->type = NS_WALL, b->n_comp = n_comp;
@@ -373,12 +374,15 @@ static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag 
 typedef struct bc_eval {
   const sl_expr *e;
   double t;
+  int bad;          /* a value was not finite: the first one and where */
+  double bad_v, bad_x[2];
 } bc_eval;
 
 static void bc_value(void *user, const double x[2], double *v, double g[2]) {
-  const bc_eval *b = user;
+  bc_eval *b = user;
   double vals[3] = {x[0], x[1], b->t};
   *v = sl_expr_eval(b->e, vals);
+  if (!isfinite(*v) && !b->bad) b->bad = 1, b->bad_v = *v, b->bad_x[0] = x[0], b->bad_x[1] = x[1];
   if (g) g[0] = g[1] = 0.0;
 }
 
@@ -402,8 +406,14 @@ static int bc_apply(const bc_set *s, const sl_th_space *th, sl_constraints *con,
             rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, c, 0), NULL, NULL, 0.0, d);
             continue;
           }
-          bc_eval be = {b->in->velocity.e[c], t};
+          bc_eval be = {b->in->velocity.e[c], t, 0, 0.0, {0.0, 0.0}};
           rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, c, 0), bc_value, &be, 0.0, d);
+          if (!rc && be.bad) { /* a time-dependent value that stops being finite: the run cannot go on */
+            char at[400];
+            rc = sl_diag_set(d, SL_EFAILED, "%s: component %d is %g at (%g, %g), t = %.9g: not a finite velocity",
+                             sl_scene_where(s->sc, &b->in->velocity, at, sizeof at), c + 1, be.bad_v, be.bad_x[0],
+                             be.bad_x[1], t);
+          }
         }
       if (pass == 2 && b->type == NS_WALL) /* periodic boundaries carry no condition */
         for (int c = 0; c < th->n_comp && !rc; ++c)
@@ -858,7 +868,7 @@ static int initial_velocity(const sl_scene *sc, const sl_flow_config *fc, const 
                        sl_scene_where(sc, v, at, sizeof at), v->n, th->n_comp);
   }
   for (int c = 0; c < v->n; ++c) {
-    bc_eval be = {v->e[c], 0.0};
+    bc_eval be = {v->e[c], 0.0, 0, 0.0, {0.0, 0.0}};
     sl_fe_interpolate(th->vel, bc_value, &be, u + sl_th_vel_dof(th, c, 0));
     /* evaluated once, here: a value that is not finite is bad input, found before anything is written */
     for (int32_t i = 0; i < th->vel->n_nodes; ++i) {
