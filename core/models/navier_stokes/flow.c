@@ -48,6 +48,7 @@ typedef struct physics {
   int force_varies;
   double t; /* the time the body force is evaluated at (the end of the step being solved) */
   int has_force;
+  char force_where[400]; /* file:line of [flow] body_force, for messages */
   int riding;                /* a solids fraction rides on the flow: variable density, buoyancy, phi input */
   const sl_flow_rider *rider;
 } physics;
@@ -102,9 +103,9 @@ static int force_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
     for (int c = 0; c < ph->n_comp; ++c)
       if (ph->force_expr[c]) {
         double f = sl_expr_eval(ph->force_expr[c], xyt);
-        if (!isfinite(f))
-          return sl_diag_set(d, SL_EBADINPUT, "[flow] body_force component %d is %g at (%g, %g), t = %g", c + 1, f,
-                             xyt[0], xyt[1], xyt[2]);
+        if (!isfinite(f)) /* finite at t = 0 (checked at set-up): the run cannot go on */
+          return sl_diag_set(d, SL_EFAILED, "%s: component %d is %g at (%g, %g), t = %.9g: not a finite force",
+                             ph->force_where, c + 1, f, xyt[0], xyt[1], xyt[2]);
         out[q * ph->n_comp + c] = rho * ph->gravity[c] + f;
       }
   }
@@ -139,6 +140,7 @@ static int physics_setup(const sl_scene *sc, int n_comp, int dim, int axi, int r
   int rc = vec_get(sc, &sc->flow.gravity, n_comp, ph->gravity, d);
   if (rc) return rc;
   const sl_scene_exprs *bf = &sc->flow.body_force;
+  sl_scene_where(sc, bf, ph->force_where, sizeof ph->force_where);
   if (bf->n > n_comp) {
     char at[400];
     return sl_diag_set(d, SL_EBADINPUT, "%s: %d components given, the scene has %d velocity components",
