@@ -102,6 +102,10 @@ restart_scene)
   run 2 run "$C/cavity_re100.ini" "${a[@]}" --set time.end=0.5 --restart ck.h5 -o kept.h5
   has "\[time\] end = 0.5 is not after the checkpoint's time t = 1 in ck.h5: nothing to run"
   [ "$(cksum < kept.h5)" = "$sum" ] || fail "a refused restart changed kept.h5"
+  # a closure parameter
+  run 0 run "$C/kynch_settling.ini" --set time.end=20 -o settling.h5
+  run 2 run "$C/kynch_settling.ini" --set time.end=40 --set closure.hindered_settling.n=5 --restart settling.h5 -o more.h5
+  has "\[closure.hindered_settling\] n = 5: the checkpoint in settling.h5 was run with 4.65"
   # what may change: the end, the output interval, the linear solver; the same viscosity written otherwise
   run 0 run "$C/cavity_re100.ini" "${a[@]}" --set time.end=2 --set output.every=0.25 --set solver.linear=umfpack \
     --set fluid.viscosity=1e-2 --restart ck.h5 -o continued.h5
