@@ -114,7 +114,9 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
        Equations, ch. 5): below the tolerance at a residual small against its terms, the solve is done
        without one more solve to measure it */
     if (!o.linear && st->iterations > 1 && last_full && res <= rtol_terms * T && res_prev > 0) {
-      double next = st->correction * res / res_prev;
+      /* with a contraction r per iteration the error left after this iterate is the next correction summed
+         over the rest, c r / (1 - r): for Newton r is tiny, for Picard it need not be */
+      double r = res / res_prev, next = r < 1.0 ? st->correction * r / (1.0 - r) : INFINITY;
       if (next <= o.rtol) {
         st->correction = next, st->estimated = 1;
         converged = 1;
