@@ -8,6 +8,7 @@
 #include "core/config/ini.h"
 #include "core/models/run.h"
 #include "core/plugin/closure_ini.h"
+#include "core/plugin/guard.h"
 #include "core/plugin/kinds.h"
 #include "core/time/loop.h"
 #include "core/util/version.h"
@@ -45,7 +46,9 @@ static int finish_open(sluice *s, const sluice_open_opts *o, sluice_error *e) {
   sl_diag d;
   int rc = 0;
   for (int i = 0; o && o->sets && o->sets[i] && !rc; ++i) rc = sl_closure_ini_apply_override(s->ini, o->sets[i], &d);
+  if (!rc) rc = sl_plugin_dirs_allowed(s->ini, o && o->allow_plugin_path, &d);
   if (!rc) rc = sl_plugin_dirs_from_ini(s->ini, &s->dirs, &s->n_dirs, &d);
+  if (!rc) sl_guard_set_call_time_limit(o ? o->closure_time_limit : 0.0);
   if (!rc) rc = sl_registry_create(&s->reg, (const char *const *)s->dirs, s->n_dirs, &d);
   /* only the libraries of the closures the scene names are loaded, unless asked */
   if (!rc) rc = o && o->scan_all ? sl_registry_scan(s->reg, &d) : sl_registry_index(s->reg, &d);
@@ -144,6 +147,14 @@ int sluice_check_restart(sluice *s, const char *restart, FILE *report, sluice_er
   int rc = sl_model_check(s->ini, s->reg, restart, &entry, &s->scene, &d);
   if (rc) return from_diag(e, rc, &d);
   s->scene_full = 1;
+  /* where [output] file may write (the folder rule; whether an existing
+   * file may be replaced is decided by the run, which knows -o and --overwrite) */
+  char out[4096], dir[4096];
+  sl_scene_output_path(s->scene, NULL, s->path, out, sizeof out);
+  sl_run_opts ro = {.scene_path = s->path, .overwrite = 1};
+  sl_output_opts oo;
+  sl_run_output_opts(&ro, dir, sizeof dir, &oo);
+  if ((rc = sl_output_check_path(out, &oo, &d))) return from_diag(e, rc, &d);
   if (!report) return 0;
   const sl_schema *schema = entry->schema;
   int n_closures = 0;
@@ -233,7 +244,8 @@ int sluice_run(sluice *s, const sluice_run_opts *o, sluice_summary *sum, sluice_
                     .monitor_user = &rl,
                     .interrupt = o ? o->interrupt : NULL,
                     .nonlinear = o && o->nonlinear ? relay_nonlinear : NULL,
-                    .nonlinear_user = (void *)o};
+                    .nonlinear_user = (void *)o,
+                    .overwrite = o ? o->overwrite : 0};
   sl_diag d;
   int rc = sl_model_run(s->ini, s->reg, &ro, &res, &d);
   summarise(&res, sum);

@@ -10,12 +10,16 @@
 
 #include "core/cli/cli.h"
 #include "core/cli/progress.h"
+#include "core/plugin/guard.h"
+#include "core/plugin/isolate.h"
+#include "core/cli/summary_json.h"
 #include "sluice/sluice.h"
 
 static const char run_usage[] =
     "usage: sluice run SCENE.ini [--set section.key=value]... [--print-config] [-o OUT.h5]\n"
     "                            [--restart FILE.h5] [--check] [--profile] [--monitor]\n"
-    "                            [--petsc \"PETSC OPTIONS\"]\n"
+    "                            [--overwrite] [--summary-json FILE] [--petsc \"PETSC OPTIONS\"]\n"
+    "                            [--allow-plugin-path] [--closure-time-limit SECONDS]\n"
     "Reads a scene, applies the --set overrides, checks every section and key\n"
     "(unknown ones are errors with a suggestion), loads and validates each\n"
     "[closure.<kind>] against the closure's own schema, and runs it.\n"
@@ -26,6 +30,9 @@ static const char run_usage[] =
     "                   largest, angles), and stop\n"
     "  -o OUT.h5        output file (default: [output] file, else SCENE.h5)\n"
     "  --restart F.h5   continue from the last checkpoint in F.h5\n"
+    "  --overwrite      the output may replace files sluice did not write (without\n"
+    "                   it such a file is refused, exit 2; the scene file never)\n"
+    "  --summary-json F what the run did (status, steps, times, output) as JSON in F\n"
     "  --profile        after the summary, what the run did and skipped: assemblies,\n"
     "                   factorisations (and reuses), closure calls and points per\n"
     "                   closure with their time, the plugin libraries loaded, the\n"
@@ -36,6 +43,11 @@ static const char run_usage[] =
     "  --monitor        every nonlinear iteration on a line of its own: the time\n"
     "                   (or the continuation stage), its relative correction, the\n"
     "                   residual and the residual against its terms' scale\n"
+    "  --allow-plugin-path  load closure libraries from the folders the scene's\n"
+    "                   [plugins] path names (refused without it: docs/trust-plugins.md)\n"
+    "  --closure-time-limit S  stop a closure call that has not returned after S\n"
+    "                   seconds (the run fails naming it; default: no limit)\n"
+    "--check and --print-config run closure library code only in a child process.\n"
     "Progress: on a terminal a line redrawn in place; otherwise (a log) a line\n"
     "every 10 s (SLUICE_PROGRESS_EVERY=seconds; SLUICE_PROGRESS=0 off, 1 in place,\n"
     "lines the log lines). The run ends with a one-line summary (CPU and wall\n"
@@ -59,6 +71,7 @@ static volatile sig_atomic_t interrupted, signals_seen;
 static void on_signal(int sig) {
   if (!interrupted) interrupted = sig;
   signals_seen = signals_seen + 1;
+  sl_guard_interrupt(sig); /* inside a closure call (a looping one): leave it */
 }
 
 typedef struct run_view {
@@ -142,16 +155,21 @@ static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, do
 }
 
 static int simulate(sluice *sc, const char *scene, const char *out_file, const char *restart, int profile,
-                    int show_iterations, sluice_error *e) {
+                    int show_iterations, int overwrite, const char *summary_json, sluice_error *e) {
   double t0, t1;
   int rc = sluice_time_span(sc, &t0, &t1, e);
-  if (rc) return rc;
+  if (rc) {
+    if (summary_json && sl_summary_json_write(summary_json, scene, sluice_model(sc), rc, e->msg, NULL, 0.0, 0.0))
+      fprintf(stderr, "sluice: cannot write the summary '%s'\n", summary_json);
+    return rc;
+  }
   sl_progress prog;
   sl_progress_begin(&prog, stderr, t0, t1);
   run_view view = {.prog = &prog, .steady = !(t1 > t0), .monitor = show_iterations};
   sluice_run_opts o = {.scene_path = scene, .output = out_file, .restart = restart,
                        .progress = monitor, .progress_user = &view, .interrupt = &interrupted,
-                       .nonlinear = view.monitor || view.steady ? nonlinear : NULL, .nonlinear_user = &view};
+                       .nonlinear = view.monitor || view.steady ? nonlinear : NULL, .nonlinear_user = &view,
+                       .overwrite = overwrite};
   sluice_summary m;
   double w0 = sl_wall_seconds(), c0 = sl_cpu_seconds();
   struct sigaction sa, old_int, old_term;
@@ -213,6 +231,9 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
                m.output_path, e->msg);
     memcpy(e->msg, msg, sizeof msg);
   }
+  if (summary_json &&
+      sl_summary_json_write(summary_json, scene, sluice_model(sc), rc, e->msg, &m, s.wall_seconds, s.cpu_seconds))
+    fprintf(stderr, "sluice: cannot write the summary '%s'\n", summary_json);
   return rc;
 }
 
@@ -231,13 +252,56 @@ static void remove_rank_folder(const char *dir) {
   rmdir(dir);
 }
 
+/* --check and --print-config: closure library code (constructors, create())
+ * runs in a child process, never in this one; the child prints the report. */
+typedef struct check_job {
+  sluice *sc;
+  int print_config;
+  const char *restart; /* --check: a restart's checkpoint is checked against the scene too */
+} check_job;
+
+static int check_in_child(void *user, int fd) {
+  (void)fd;
+  check_job *j = user;
+  sluice_error e = {0, ""};
+  int rc;
+  if (j->print_config) {
+    double t0, t1; /* the keys and the closures are checked first (bad input: exit 2, nothing printed) */
+    if (!(rc = sluice_time_span(j->sc, &t0, &t1, &e))) rc = sluice_write_config(j->sc, stdout, &e);
+  } else {
+    rc = sluice_check_restart(j->sc, j->restart, stdout, &e);
+  }
+  if (rc) fprintf(stderr, "%s\n", e.msg);
+  return rc;
+}
+
+static int check_isolated(sluice *sc, int print_config, const char *restart, const char *scene, sluice_error *e) {
+  check_job j = {sc, print_config, restart};
+  sl_child_outcome o;
+  if (sl_isolate(check_in_child, &j, NULL, NULL, 0.0, &o)) {
+    snprintf(e->msg, sizeof e->msg, "sluice: cannot start the checking process");
+    return SLUICE_FAILED;
+  }
+  if (o.exited) {
+    e->msg[0] = '\0'; /* the child said it */
+    return o.status;
+  }
+  snprintf(e->msg, sizeof e->msg,
+           "sluice: %s: %s stopped by %s while checking the scene (closure library code runs in a child process "
+           "under %s; nothing was loaded into sluice)",
+           scene, print_config ? "--print-config" : "--check", sl_signal_name(o.signal),
+           print_config ? "--print-config" : "--check");
+  return SLUICE_FAILED;
+}
+
 int sl_cmd_run(int argc, char **argv) {
   if (sl_cli_wants_help(argc, argv)) {
     puts(run_usage);
     return 0;
   }
-  const char *scene = NULL, *out_file = NULL, *restart = NULL, *petsc = NULL;
-  int print_config = 0, check_only = 0, profile = 0, show_iterations = 0;
+  const char *scene = NULL, *out_file = NULL, *restart = NULL, *summary_json = NULL, *petsc = NULL;
+  int print_config = 0, check_only = 0, profile = 0, show_iterations = 0, allow_plugin_path = 0, overwrite = 0;
+  double closure_time_limit = 0.0;
   enum { MAX_SETS = 256 };
   const char *sets[MAX_SETS];
   int n_sets = 0;
@@ -258,12 +322,23 @@ int sl_cmd_run(int argc, char **argv) {
       check_only = 1;
     } else if (strcmp(argv[i], "--profile") == 0) {
       profile = 1;
+    } else if (strcmp(argv[i], "--overwrite") == 0) {
+      overwrite = 1;
+    } else if (strcmp(argv[i], "--summary-json") == 0 && i + 1 < argc) {
+      summary_json = argv[++i];
     } else if (strcmp(argv[i], "--petsc") == 0 && i + 1 < argc) {
       petsc = argv[++i];
     } else if (strncmp(argv[i], "--petsc=", 8) == 0) {
       petsc = argv[i] + 8;
     } else if (strcmp(argv[i], "--monitor") == 0) {
       show_iterations = 1;
+    } else if (strcmp(argv[i], "--allow-plugin-path") == 0) {
+      allow_plugin_path = 1;
+    } else if (strcmp(argv[i], "--closure-time-limit") == 0 && i + 1 < argc) {
+      char *end;
+      closure_time_limit = strtod(argv[++i], &end);
+      if (*end || !(closure_time_limit > 0) || closure_time_limit > 1e6)
+        return sl_cli_error(SL_EBADINPUT, "run: --closure-time-limit %s: seconds in (0, 1e6] expected", argv[i]);
     } else if (argv[i][0] == '-') {
       return sl_cli_error(SL_EBADINPUT, "run: unknown option or missing value '%s' (sluice run --help)", argv[i]);
     } else if (!scene) {
@@ -293,19 +368,21 @@ int sl_cmd_run(int argc, char **argv) {
   const char *set_list[MAX_SETS + 1];
   for (int i = 0; i < n_sets; ++i) set_list[i] = sets[i];
   set_list[n_sets] = NULL;
-  sluice_open_opts oo = {.sets = set_list, .timing = profile, .petsc_options = petsc};
+  sluice_open_opts oo = {.sets = set_list, .timing = profile, .petsc_options = petsc,
+                         .allow_plugin_path = allow_plugin_path, .closure_time_limit = closure_time_limit};
   int rc = sluice_open(scene, &oo, &sc, &e);
-  if (!rc && print_config) {
-    /* the keys and the closures are checked first (bad input: exit 2, nothing printed) */
-    double t0, t1;
-    if (!(rc = sluice_time_span(sc, &t0, &t1, &e))) rc = sluice_write_config(sc, stdout, &e);
-  } else if (!rc && check_only) {
-    rc = sluice_check_restart(sc, restart, stdout, &e);
+  if (!rc && (print_config || check_only)) {
+    rc = check_isolated(sc, print_config, restart, scene, &e);
   } else if (!rc) {
-    rc = simulate(sc, scene, rank > 0 ? rank_out : out_file, restart, profile, show_iterations, &e);
+    rc = simulate(sc, scene, rank > 0 ? rank_out : out_file, restart, profile, show_iterations, overwrite,
+                  rank > 0 ? NULL : summary_json, &e);
+    summary_json = NULL; /* written */
   }
+  if (summary_json && !print_config && !check_only && rc &&
+      sl_summary_json_write(summary_json, scene, sc ? sluice_model(sc) : "", rc, e.msg, NULL, 0.0, 0.0))
+    fprintf(stderr, "sluice: cannot write the summary '%s'\n", summary_json);
   sluice_close(sc);
-  if (rc) fprintf(stderr, "%s\n", e.msg);
+  if (rc && e.msg[0]) fprintf(stderr, "%s\n", e.msg);
   if (rank > 0) remove_rank_folder(rank_dir);
   return rc;
 }

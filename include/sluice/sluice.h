@@ -52,6 +52,11 @@ typedef struct sluice_open_opts {
   /* PETSc options for [solver] linear = petsc ("-ksp_monitor -pc_type lu"), over the scene's [solver.petsc];
    * bad input when sluice was built without PETSc (NULL: none) */
   const char *petsc_options;
+  /* The scene's [plugins] path names folders of libraries to load: refused (bad input, the key named) unless this
+   * is set (sluice run --allow-plugin-path). */
+  int allow_plugin_path;
+  /* Each batched closure call is stopped after this many seconds (0: no limit), and the run fails naming it. */
+  double closure_time_limit;
 } sluice_open_opts;
 
 /* The process's rank and the number of ranks it was launched with by mpirun (0 and 1 otherwise). With PETSc,
@@ -75,7 +80,9 @@ int sluice_write_config(const sluice *s, FILE *f, sluice_error *e);
 
 /* Every check a run makes before it writes anything (the keys against the
  * model's schema, the closures created, the mesh built, the model set up),
- * without running. With report, a summary of the closures and the mesh. */
+ * without running. With report, a summary of the closures and the mesh.
+ * The closures' code runs in the calling process: `sluice run --check` calls
+ * this in a child process (docs/trust-plugins.md). */
 int sluice_check(sluice *s, FILE *report, sluice_error *e);
 /* The same with a restart's checkpoint read and checked against the scene (restart NULL: none). */
 int sluice_check_restart(sluice *s, const char *restart, FILE *report, sluice_error *e);
@@ -106,6 +113,7 @@ typedef struct sluice_run_opts {
   /* at every nonlinear iteration (NULL: not called) */
   void (*nonlinear)(void *user, const struct sluice_nonlinear *r);
   void *nonlinear_user;
+  int overwrite; /* the output may replace files sluice did not write (never the scene file itself) */
 } sluice_run_opts;
 
 
