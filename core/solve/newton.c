@@ -107,8 +107,6 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
       converged = 1;
       break;
     }
-    /* the residual at the round-off of its own terms and no longer falling: no iteration can make it
-       smaller, and the corrections are noise (a flow at rest whose pressure carries the load) */
     /* the correction the next iteration would make, from the last one and the residual's decrease (error
        and residual contract alike near the solution, Kelley 1995, Iterative Methods for Linear and Nonlinear
        Equations, ch. 5): below the tolerance at a residual small against its terms, the solve is done
@@ -123,6 +121,8 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
         break;
       }
     }
+    /* the residual at the round-off of its own terms and no longer falling: no iteration can make it
+       smaller, and the corrections are noise (a flow at rest whose pressure carries the load) */
     if (!o.linear && st->iterations > 1 && res > 0.5 * res_prev && res <= SL_NEWTON_ROUNDOFF * T) {
       converged = 1, st->roundoff = 1;
       break;
