@@ -318,7 +318,7 @@ static int resolve_time(builder *b, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "%s = %g is larger than %s = %g: the first step would be below the smallest",
                        sl_scene_where(sc, &t->dt_min, a, sizeof a), t->dt_min, sl_scene_where(sc, &t->dt, c, sizeof c),
                        t->dt);
-  if (t->dt_max < t->dt_min)
+  if (sl_scene_given(sc, &t->dt_max) && t->dt_max < t->dt_min)
     return sl_diag_set(d, SL_EBADINPUT, "%s = %g is smaller than %s = %g: no step fits between them",
                        sl_scene_where(sc, &t->dt_max, a, sizeof a), t->dt_max,
                        sl_scene_where(sc, &t->dt_min, c, sizeof c), t->dt_min);
