@@ -178,5 +178,13 @@ rm -f marker
 SLUICE_PLUGIN_PATH="$work/ix" expect "an indexed folder: a misspelt name" 2 "did you mean 'marked'" -- \
   "$sluice" run m.ini --check --set closure.viscosity.model=marke
 [ ! -e marker ] && ok || bad "no library opened for a misspelt name in an indexed folder"
+# an index that names a library that is not there, or does not hold the name
+mkdir -p stale && cp "$unindexed/marked.so" stale/
+printf 'viscosity marked gone.so\nviscosity other marked.so\n' > stale/closures.index
+SLUICE_PLUGIN_PATH="$work/stale" expect "a stale index: the missing library named" 2 \
+  "viscosity closure 'marked': its index names .*stale/gone.so, which cannot be used: cannot load" -- "$sluice" run m.ini --check
+sed 's/^model = marked$/model = other/' m.ini > other.ini
+SLUICE_PLUGIN_PATH="$work/stale" expect "a stale index: the library does not hold it" 2 \
+  "viscosity closure 'other': its index names .*stale/marked.so, which does not hold it" -- "$sluice" run other.ini --check
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
