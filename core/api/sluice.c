@@ -74,6 +74,12 @@ static sluice *create(const char *path, sluice_error *e) {
   return s;
 }
 
+int sluice_ranks(int *rank, int *size, sluice_error *e) {
+  sl_diag d;
+  int rc = sl_linsolve_ranks(rank, size, &d);
+  return rc ? from_diag(e, rc, &d) : 0;
+}
+
 int sluice_open(const char *path, const sluice_open_opts *o, sluice **out, sluice_error *e) {
   *out = NULL;
   sluice *s = create(path, e);
@@ -131,18 +137,16 @@ int sluice_time_span(sluice *s, double *t0, double *t1, sluice_error *e) {
   return rc;
 }
 
-int sluice_check(sluice *s, FILE *report, sluice_error *e) {
+int sluice_check(sluice *s, FILE *report, sluice_error *e) { return sluice_check_restart(s, NULL, report, e); }
+
+int sluice_check_restart(sluice *s, const char *restart, FILE *report, sluice_error *e) {
   sl_diag d;
   const sl_model_entry *entry;
   sl_scene_free(s->scene), s->scene = NULL;
-  int rc = sl_model_scene(s->ini, s->reg, 1, 1, &entry, &s->scene, &d);
+  /* every check a run makes before it writes anything: the model's own set-up and a restart too */
+  int rc = sl_model_check(s->ini, s->reg, restart, &entry, &s->scene, &d);
   if (rc) return from_diag(e, rc, &d);
   s->scene_full = 1;
-  /* every check a run makes before it writes anything: the model's own set-up too */
-  void *self = NULL;
-  sl_model_info info;
-  if ((rc = entry->ops->setup(&self, s->scene, &info, &d))) return from_diag(e, rc, &d);
-  entry->ops->destroy(self);
   if (!report) return 0;
   const sl_schema *schema = entry->schema;
   int n_closures = 0;
@@ -164,6 +168,7 @@ static void summarise(const sl_run_result *res, sluice_summary *sum) {
   sum->steps = res->steps, sum->rejected_steps = res->rejected_steps;
   sum->nonlinear_iterations = res->nonlinear_iterations;
   sum->t_start = res->t_start, sum->t_end = res->t_end, sum->t_reached = res->t_reached;
+  sum->saved_time = res->saved_time, sum->saved_time_valid = res->saved_time_valid;
   sum->step_limit = res->step_limit;
   memcpy(sum->output_path, res->output_path, sizeof sum->output_path);
   memcpy(sum->stop_reason, res->stop_reason, sizeof sum->stop_reason);
@@ -210,6 +215,14 @@ static void relay(void *user, double t, double dt, long step, int its) {
   if (r->o->progress) r->o->progress(r->o->progress_user, t, dt, step, its);
 }
 
+static void relay_nonlinear(void *user, const sl_nl_report *r) {
+  const sluice_run_opts *o = user;
+  sluice_nonlinear n = {.t = r->t, .stage = r->stage, .n_stages = r->n_stages, .iteration = r->iteration,
+                        .picard = r->picard, .correction = r->correction, .residual = r->residual,
+                        .terms = r->terms};
+  o->nonlinear(o->nonlinear_user, &n);
+}
+
 int sluice_run(sluice *s, const sluice_run_opts *o, sluice_summary *sum, sluice_error *e) {
   memset(sum, 0, sizeof *sum);
   sl_scene_free(s->scene), s->scene = NULL; /* the run builds its own */
@@ -221,7 +234,9 @@ int sluice_run(sluice *s, const sluice_run_opts *o, sluice_summary *sum, sluice_
                     .sluice_version = o && o->version ? o->version : sl_version(),
                     .monitor = o && (o->progress || o->live) ? relay : NULL,
                     .monitor_user = &rl,
-                    .interrupt = o ? o->interrupt : NULL};
+                    .interrupt = o ? o->interrupt : NULL,
+                    .nonlinear = o && o->nonlinear ? relay_nonlinear : NULL,
+                    .nonlinear_user = (void *)o};
   sl_diag d;
   int rc = sl_model_run(s->ini, s->reg, &ro, &res, &d);
   summarise(&res, sum);

@@ -25,7 +25,7 @@ _sluice() {
           fi
           return ;;
       esac
-      COMPREPLY=($(compgen -W "--set --print-config --check --profile --petsc --restart -o --allow-plugin-path --closure-time-limit --help" -- "$cur"))
+      COMPREPLY=($(compgen -W "--set --print-config --check --profile --monitor --petsc --restart -o --allow-plugin-path --closure-time-limit --help" -- "$cur"))
       [[ $cur != -* ]] && COMPREPLY+=($(compgen -f -X '!*.ini' -- "$cur") $(compgen -d -- "$cur"))
       ;;
     sample)

@@ -23,4 +23,11 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
 int sl_model_scene(sl_ini *ini, const sl_registry *reg, int create_closures, int build_mesh,
                    const sl_model_entry **entry, sl_scene **sc, sl_diag *d);
 
+/* Every check a run makes before it opens a file (the scene, the model's
+ * set-up, a restart's checkpoint against the scene) without running:
+ * `sluice run --check`. The scene is returned for its report (free with
+ * sl_scene_free). */
+int sl_model_check(sl_ini *ini, const sl_registry *reg, const char *restart, const sl_model_entry **entry,
+                   sl_scene **sc, sl_diag *d);
+
 #endif

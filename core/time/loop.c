@@ -103,6 +103,7 @@ static int write_state(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_
     ck.n_arrays = na, ck.arrays = arr;
     rc = sl_output_write_checkpoint(out, &ck, d);
   }
+  if (!rc) res->saved_time = t, res->saved_time_valid = 1;
   res->output += wall_now() - w0;
   res->cpu_output += cpu_now() - c0;
   return rc;
@@ -220,6 +221,7 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
       continue;
     }
     sl_bdf_accept(b, &s, trial);
+    if (fabs(b->t - t_stop) <= eps_t) b->t = t_stop; /* on the output time or the end exactly, as above */
     if (ops->accept) {
       int steady = 0;
       ops->accept(self, &st, &steady);
@@ -253,8 +255,8 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
   long best = 0;
   for (int k = 0; k < N_LIMITS; ++k)
     if (limit_count[k] > best) best = limit_count[k], res->step_limit = limits[k];
-  if (rc == SL_EFAILED || rc == SL_ENOMEM) { /* keep the last good state */
-    sl_diag d2;
+  if ((rc == SL_EFAILED || rc == SL_ENOMEM) && !(res->saved_time_valid && res->saved_time == b->t)) {
+    sl_diag d2; /* keep the last accepted state (unless it is the one just written) */
     write_state(L, ops, self, out, b->t, b->past[0], h, b, res, &d2);
   }
 out:
@@ -318,7 +320,10 @@ static int run_fixed(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_ou
       continue;
     }
     if (ops->accept) ops->accept(self, &st, &steady);
-    t += hh, ++step, ++steps_here;
+    /* a step that ends on an output time or the end up to round-off ends there exactly: the times written are
+       the scene's (60, not 59.99999999999663 after 1200 steps of 0.05) */
+    t = fabs(t + hh - t_stop) <= eps_t ? t_stop : t + hh;
+    ++step, ++steps_here;
     L->t = t, L->step = step;
     if (h < dt_cfg) h = fmin(dt_cfg, 2.0 * h);
     if (o->monitor) {
@@ -344,8 +349,8 @@ static int run_fixed(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_ou
     snprintf(res->stop_reason, sizeof res->stop_reason,
              "stopped after max_steps = %ld steps at t = %.6g, before the end time %g (checkpoint saved)",
              tc->max_steps, t, end);
-  if (rc == SL_EFAILED || rc == SL_ENOMEM) { /* keep the last good state */
-    sl_diag d2;
+  if ((rc == SL_EFAILED || rc == SL_ENOMEM) && !(res->saved_time_valid && res->saved_time == t)) {
+    sl_diag d2; /* keep the last accepted state (unless it is the one just written) */
     write_state(L, ops, self, out, t, NULL, h, NULL, res, &d2);
   }
   return rc;

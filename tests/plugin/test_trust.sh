@@ -127,7 +127,7 @@ for f in segv:"crashed with SIGSEGV" fpe:"crashed with SIGFPE" fatal:"the test c
   name=${f%%:*} msg=${f#*:}
   scene $name.ini $name 0.175 ""
   expect "$name: exit 1, the closure named" 1 \
-    "run failed at t = 0.15; last state saved in $name.h5: at t = 0.15: closure viscosity/faulty \[closure.viscosity\] failed \(fatal, code -3\): $msg" \
+    "run failed at t = 0.15; the last accepted state, t = 0.15, is saved in $name.h5: at t = 0.15: closure viscosity/faulty \[closure.viscosity\] failed \(fatal, code -3\): $msg" \
     -- "$sluice" run $name.ini -o $name.h5
   grep -q "3 steps (0 rejected)" out.log && ok || bad "$name: stopped at once, no step retried"
   [ "$(last_time $name.h5)" = "t = 0.15" ] && ok || bad "$name: the last good state t = 0.15 saved (got '$(last_time $name.h5)')"
