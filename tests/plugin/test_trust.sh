@@ -157,6 +157,12 @@ expect "steady: a segfault fails the solve by name" 1 \
 scene clock.ini clock 0 ""
 expect "the closure sees t and dt" 0 "closure info: t = 0.5 dt = 0.05" -- "$sluice" run clock.ini -o clock.h5
 for t in 0.05 0.1 0.15 0.2 0.25 0.3 0.35 0.4 0.45; do grep -q "closure info: t = $t dt = 0.05\$" out.log || bad "t = $t seen"; done
+# the mixture model too (the Kynch column of configs/, 3 steps of 1 s)
+sed -e 's/^end = 120/end = 3/' -e 's/^every = 10/every = 1/' -e 's/^cells = 200/cells = 20/' \
+  "$src/../../configs/kynch_settling.ini" > mix.ini
+printf '\n[closure.viscosity]\nmodel = faulty\nfault = clock\nmu0 = 1e-3\n' >> mix.ini
+expect "mixture: the closure sees t and dt" 0 "closure info: t = 3 dt = 1" -- "$sluice" run mix.ini -o mix.h5
+grep -q "closure info: t = 1 dt = 1$" out.log && grep -q "closure info: t = 2 dt = 1$" out.log && ok || bad "mixture: t = 1, 2"
 
 # ---- check-closure isolates the battery --------------------------------------------------------------
 expect "check-closure: a segfault named" 1 "FAIL viscosity/segv +outputs written: crashed with SIGSEGV \(signal 11\)" -- \
