@@ -642,6 +642,16 @@ int sl_registry_find(const sl_registry *r, sl_kind kind, const char *name, const
   if ((rc = load_candidates(cache, kind, name, library, d))) return rc;
   if ((rc = find_loaded(r, kind, name, library, entry, d)) == 0) return 0;
   if (rc != SL_EBADINPUT || strstr(d->msg, "provided by two libraries")) return rc;
+  /* `library` picks among the libraries of the search path, never adds one. */
+  if (library) {
+    int on_path = 0;
+    for (int i = 0; i < r->n_files && !on_path; ++i) on_path = file_matches(r->files[i], library);
+    if (!on_path)
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "library = %s is not a library on the plugin search path (it only says which of the "
+                         "libraries there provides %s closure '%s'; a scene cannot add one)",
+                         library, sl_kind_name(kind), name);
+  }
   /* An index names a library for it that could not be used: say why. */
   for (int i = 0; i < r->n_index; ++i) {
     const struct sl_index_entry *e = &r->index[i];

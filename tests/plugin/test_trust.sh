@@ -106,6 +106,11 @@ line=$(grep -n '^model = fauty' typo.ini | cut -d: -f1)
 expect "a misspelt name: did you mean" 2 "typo.ini:$line:[0-9]+: error: no viscosity closure 'fauty'; did you mean 'faulty'\?" -- \
   "$sluice" run typo.ini --check
 [ ! -e marker ] && ok || bad "a misspelt name opened no library"
+# `library = FILE` outside the plugin path adds no library
+sed 's|^model = faulty$|model = marked\nlibrary = '"$unindexed"'/marked.so|' s.ini > lib.ini
+expect "library = a file off the path" 2 "lib.ini:[0-9]+:[0-9]+: error: library = .*unindexed/marked.so is not a library on the plugin search path" -- \
+  "$sluice" run lib.ini -o lib.h5
+[ ! -e marker ] && [ ! -e lib.h5 ] && ok || bad "library = off the path opened nothing, wrote nothing"
 # ---- --check and --print-config: library code only in a child process --------------------------------
 cat > m.ini <<INI
 $(sed 's/^model = faulty$/model = marked/' s.ini)
