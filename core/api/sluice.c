@@ -147,6 +147,14 @@ int sluice_check_restart(sluice *s, const char *restart, FILE *report, sluice_er
   int rc = sl_model_check(s->ini, s->reg, restart, &entry, &s->scene, &d);
   if (rc) return from_diag(e, rc, &d);
   s->scene_full = 1;
+  /* where [output] file may write (the folder rule; whether an existing
+   * file may be replaced is decided by the run, which knows -o and --overwrite) */
+  char out[4096], dir[4096];
+  sl_scene_output_path(s->scene, NULL, s->path, out, sizeof out);
+  sl_run_opts ro = {.scene_path = s->path, .overwrite = 1};
+  sl_output_opts oo;
+  sl_run_output_opts(&ro, dir, sizeof dir, &oo);
+  if ((rc = sl_output_check_path(out, &oo, &d))) return from_diag(e, rc, &d);
   if (!report) return 0;
   const sl_schema *schema = entry->schema;
   int n_closures = 0;
@@ -236,7 +244,8 @@ int sluice_run(sluice *s, const sluice_run_opts *o, sluice_summary *sum, sluice_
                     .monitor_user = &rl,
                     .interrupt = o ? o->interrupt : NULL,
                     .nonlinear = o && o->nonlinear ? relay_nonlinear : NULL,
-                    .nonlinear_user = (void *)o};
+                    .nonlinear_user = (void *)o,
+                    .overwrite = o ? o->overwrite : 0};
   sl_diag d;
   int rc = sl_model_run(s->ini, s->reg, &ro, &res, &d);
   summarise(&res, sum);

@@ -16,6 +16,7 @@
 #include "core/study/runner.h"
 #include "core/study/study.h"
 #include "core/cli/cli.h"
+#include "core/io/output.h"
 #include "core/util/version.h"
 #include "core/cli/progress.h"
 #include "core/models/run.h"
@@ -165,15 +166,7 @@ static void progress_line(const sl_bench_row *r, const sl_study *s) {
   else fputc('\n', stderr);
 }
 
-static void remove_outputs(const char *h5) {
-  char xmf[4200];
-  remove(h5);
-  size_t n = strlen(h5);
-  if (n > 3 && n < sizeof xmf && !strcmp(h5 + n - 3, ".h5")) {
-    snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)(n - 3), h5);
-    remove(xmf);
-  }
-}
+static void remove_outputs(const char *h5) { sl_output_remove(h5); }
 
 /* `sluice bench STUDY.ini --run-one V P OUT.h5`: one run of the study, as
  * the study's child process (fork and exec of this command) runs it, with

@@ -12,13 +12,14 @@
 #include "core/cli/progress.h"
 #include "core/plugin/guard.h"
 #include "core/plugin/isolate.h"
+#include "core/cli/summary_json.h"
 #include "sluice/sluice.h"
 
 static const char run_usage[] =
     "usage: sluice run SCENE.ini [--set section.key=value]... [--print-config] [-o OUT.h5]\n"
     "                            [--restart FILE.h5] [--check] [--profile] [--monitor]\n"
-    "                            [--petsc \"PETSC OPTIONS\"] [--allow-plugin-path]\n"
-    "                            [--closure-time-limit SECONDS]\n"
+    "                            [--overwrite] [--summary-json FILE] [--petsc \"PETSC OPTIONS\"]\n"
+    "                            [--allow-plugin-path] [--closure-time-limit SECONDS]\n"
     "Reads a scene, applies the --set overrides, checks every section and key\n"
     "(unknown ones are errors with a suggestion), loads and validates each\n"
     "[closure.<kind>] against the closure's own schema, and runs it.\n"
@@ -29,6 +30,9 @@ static const char run_usage[] =
     "                   largest, angles), and stop\n"
     "  -o OUT.h5        output file (default: [output] file, else SCENE.h5)\n"
     "  --restart F.h5   continue from the last checkpoint in F.h5\n"
+    "  --overwrite      the output may replace files sluice did not write (without\n"
+    "                   it such a file is refused, exit 2; the scene file never)\n"
+    "  --summary-json F what the run did (status, steps, times, output) as JSON in F\n"
     "  --profile        after the summary, what the run did and skipped: assemblies,\n"
     "                   factorisations (and reuses), closure calls and points per\n"
     "                   closure with their time, the plugin libraries loaded, the\n"
@@ -151,16 +155,21 @@ static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, do
 }
 
 static int simulate(sluice *sc, const char *scene, const char *out_file, const char *restart, int profile,
-                    int show_iterations, sluice_error *e) {
+                    int show_iterations, int overwrite, const char *summary_json, sluice_error *e) {
   double t0, t1;
   int rc = sluice_time_span(sc, &t0, &t1, e);
-  if (rc) return rc;
+  if (rc) {
+    if (summary_json && sl_summary_json_write(summary_json, scene, sluice_model(sc), rc, e->msg, NULL, 0.0, 0.0))
+      fprintf(stderr, "sluice: cannot write the summary '%s'\n", summary_json);
+    return rc;
+  }
   sl_progress prog;
   sl_progress_begin(&prog, stderr, t0, t1);
   run_view view = {.prog = &prog, .steady = !(t1 > t0), .monitor = show_iterations};
   sluice_run_opts o = {.scene_path = scene, .output = out_file, .restart = restart,
                        .progress = monitor, .progress_user = &view, .interrupt = &interrupted,
-                       .nonlinear = view.monitor || view.steady ? nonlinear : NULL, .nonlinear_user = &view};
+                       .nonlinear = view.monitor || view.steady ? nonlinear : NULL, .nonlinear_user = &view,
+                       .overwrite = overwrite};
   sluice_summary m;
   double w0 = sl_wall_seconds(), c0 = sl_cpu_seconds();
   struct sigaction sa, old_int, old_term;
@@ -222,6 +231,9 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
                m.output_path, e->msg);
     memcpy(e->msg, msg, sizeof msg);
   }
+  if (summary_json &&
+      sl_summary_json_write(summary_json, scene, sluice_model(sc), rc, e->msg, &m, s.wall_seconds, s.cpu_seconds))
+    fprintf(stderr, "sluice: cannot write the summary '%s'\n", summary_json);
   return rc;
 }
 
@@ -287,8 +299,8 @@ int sl_cmd_run(int argc, char **argv) {
     puts(run_usage);
     return 0;
   }
-  const char *scene = NULL, *out_file = NULL, *restart = NULL, *petsc = NULL;
-  int print_config = 0, check_only = 0, profile = 0, show_iterations = 0, allow_plugin_path = 0;
+  const char *scene = NULL, *out_file = NULL, *restart = NULL, *summary_json = NULL, *petsc = NULL;
+  int print_config = 0, check_only = 0, profile = 0, show_iterations = 0, allow_plugin_path = 0, overwrite = 0;
   double closure_time_limit = 0.0;
   enum { MAX_SETS = 256 };
   const char *sets[MAX_SETS];
@@ -310,6 +322,10 @@ int sl_cmd_run(int argc, char **argv) {
       check_only = 1;
     } else if (strcmp(argv[i], "--profile") == 0) {
       profile = 1;
+    } else if (strcmp(argv[i], "--overwrite") == 0) {
+      overwrite = 1;
+    } else if (strcmp(argv[i], "--summary-json") == 0 && i + 1 < argc) {
+      summary_json = argv[++i];
     } else if (strcmp(argv[i], "--petsc") == 0 && i + 1 < argc) {
       petsc = argv[++i];
     } else if (strncmp(argv[i], "--petsc=", 8) == 0) {
@@ -358,8 +374,13 @@ int sl_cmd_run(int argc, char **argv) {
   if (!rc && (print_config || check_only)) {
     rc = check_isolated(sc, print_config, restart, scene, &e);
   } else if (!rc) {
-    rc = simulate(sc, scene, rank > 0 ? rank_out : out_file, restart, profile, show_iterations, &e);
+    rc = simulate(sc, scene, rank > 0 ? rank_out : out_file, restart, profile, show_iterations, overwrite,
+                  rank > 0 ? NULL : summary_json, &e);
+    summary_json = NULL; /* written */
   }
+  if (summary_json && !print_config && !check_only && rc &&
+      sl_summary_json_write(summary_json, scene, sc ? sluice_model(sc) : "", rc, e.msg, NULL, 0.0, 0.0))
+    fprintf(stderr, "sluice: cannot write the summary '%s'\n", summary_json);
   sluice_close(sc);
   if (rc && e.msg[0]) fprintf(stderr, "%s\n", e.msg);
   if (rank > 0) remove_rank_folder(rank_dir);

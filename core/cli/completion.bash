@@ -16,6 +16,7 @@ _sluice() {
       case $prev in
         -o|--restart) COMPREPLY=($(compgen -f -X '!*.h5' -- "$cur")); return ;;
         --closure-time-limit) return ;;
+        --summary-json) COMPREPLY=($(compgen -f -- "$cur")); return ;;
         --set)
           local scene w
           for w in "${COMP_WORDS[@]:2}"; do case $w in *.ini) scene=$w ;; esac; done
@@ -25,11 +26,11 @@ _sluice() {
           fi
           return ;;
       esac
-      COMPREPLY=($(compgen -W "--set --print-config --check --profile --monitor --petsc --restart -o --allow-plugin-path --closure-time-limit --help" -- "$cur"))
+      COMPREPLY=($(compgen -W "--set --print-config --check --profile --monitor --petsc --restart -o --overwrite --summary-json --allow-plugin-path --closure-time-limit --help" -- "$cur"))
       [[ $cur != -* ]] && COMPREPLY+=($(compgen -f -X '!*.ini' -- "$cur") $(compgen -d -- "$cur"))
       ;;
     sample)
-      COMPREPLY=($(compgen -W "--field --time --line --n --point --list --help" -- "$cur"))
+      COMPREPLY=($(compgen -W "--field --time --line --n --point --list --scalars --help" -- "$cur"))
       [[ $cur != -* ]] && COMPREPLY+=($(compgen -f -X '!*.h5' -- "$cur") $(compgen -d -- "$cur"))
       ;;
     bench)

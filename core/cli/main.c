@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "core/cli/cli.h"
+#include "core/io/output.h"
 #include "core/util/diag.h"
 
 static const char usage[] =
@@ -72,6 +73,7 @@ static const command commands[] = {
 };
 
 int main(int argc, char **argv) {
+  sl_io_process_start();
   if (argc < 2) {
     fputs(usage, stderr);
     return SL_EBADINPUT;

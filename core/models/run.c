@@ -2,6 +2,7 @@
 #include "core/models/run.h"
 
 #include <ctype.h>
+#include <stdio.h>
 #include <string.h>
 #include <time.h>
 
@@ -105,6 +106,17 @@ int sl_model_check(sl_ini *ini, const sl_registry *reg, const char *restart, con
   return rc;
 }
 
+void sl_run_output_opts(const sl_run_opts *o, char *dir, size_t cap, sl_output_opts *oo) {
+  /* the scene's folder: where a path from the scene file may write (besides the working folder) */
+  const char *slash = o->scene_path ? strrchr(o->scene_path, '/') : NULL;
+  if (slash)
+    snprintf(dir, cap, "%.*s", slash == o->scene_path ? 1 : (int)(slash - o->scene_path), o->scene_path);
+  else
+    snprintf(dir, cap, ".");
+  *oo = (sl_output_opts){.from_scene = o->output == NULL, .scene_dir = dir, .overwrite = o->overwrite,
+                         .protect = o->scene_path};
+}
+
 int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_run_result *res, sl_diag *d) {
   memset(res, 0, sizeof *res);
   double c_setup = cpu();
@@ -118,7 +130,10 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
   const sl_model_info info = p.info;
   if (!rc) {
     sl_scene_output_path(sc, o->output, o->scene_path, res->output_path, sizeof res->output_path);
-    rc = sl_output_open(&out, res->output_path, d);
+    sl_output_opts oo;
+    char dir[4096];
+    sl_run_output_opts(o, dir, sizeof dir, &oo);
+    rc = sl_output_open_opts(&out, res->output_path, &oo, d);
   }
   if (!rc) rc = ops->write_mesh(self, out, d);
   if (!rc) rc = sl_scene_provenance_make(sc, o->sluice_version, &pv, d);
@@ -134,9 +149,10 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
     memcpy(res->stop_reason, res->model.stop_reason, sizeof res->stop_reason);
   if (out) {
     sl_output_stats(out, &res->output_times, &res->output_datasets, &res->output_bytes);
-    sl_diag d2;
-    int crc = sl_output_close(out, rc ? &d2 : d);
-    if (!rc) rc = crc;
+    if (rc) { /* before the first complete output time, what was there stays */
+      if (!sl_output_abort(out)) res->output_path[0] = '\0';
+    } else
+      rc = sl_output_close(out, d);
   } else {
     res->output_path[0] = '\0';
   }

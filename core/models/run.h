@@ -16,6 +16,11 @@
  * the message says where and why). res is filled in every case. */
 int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_run_result *res, sl_diag *d);
 
+/* What the run's output may replace (core/io/output.h): a path from the
+ * scene file (no o->output) only in the scene's folder (dir, of cap bytes,
+ * receives it) or the working folder; the scene file itself never. */
+void sl_run_output_opts(const sl_run_opts *o, char *dir, size_t cap, sl_output_opts *oo);
+
 /* The scene of an INI file without running it (`sluice run --check`,
  * --print-config): the model's entry and its typed scene. Closures are
  * created with create_closures, else only found and checked; the mesh is

@@ -131,6 +131,7 @@ typedef struct sl_run_opts {
   /* Called at every nonlinear iteration (core/scene/scene.h's sl_nl_report); may be NULL. */
   void (*nonlinear)(void *user, const struct sl_nl_report *r);
   void *nonlinear_user;
+  int overwrite;                    /* the output may replace files sluice did not write */
 } sl_run_opts;
 
 /* What a run did. */

@@ -113,6 +113,7 @@ typedef struct sluice_run_opts {
   /* at every nonlinear iteration (NULL: not called) */
   void (*nonlinear)(void *user, const struct sluice_nonlinear *r);
   void *nonlinear_user;
+  int overwrite; /* the output may replace files sluice did not write (never the scene file itself) */
 } sluice_run_opts;
 
 

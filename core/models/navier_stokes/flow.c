@@ -500,12 +500,18 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
   const sl_th_space *th = f->th;
   int rc = 0;
   if (f->fields & F_VELOCITY) {
-    /* in the frame: in-plane components, then the out-of-plane/swirl one as component 2 */
+    /* in the frame: in-plane components, then the out-of-plane one as component 2; axisymmetric, the
+     * swirl is not a direction of the (r, z) plane: velocity (u_r, u_z, 0) and u_theta beside it */
+    int swirl = f->ph.axisymmetric && th->n_comp == 3 && th->mesh->dim == 2;
     memset(f->work, 0, (size_t)th->vel->n_nodes * 3 * sizeof *f->work);
     for (int32_t i = 0; i < th->vel->n_nodes; ++i)
-      for (int c = 0; c < th->n_comp; ++c)
+      for (int c = 0; c < th->n_comp - swirl; ++c)
         f->work[3 * i + (c < th->mesh->dim ? c : 2)] = u[sl_th_vel_dof(th, c, th->vel->node_dof[i])];
     rc = sl_output_write_field(out, "velocity", SL_CENTRE_NODE, 3, f->work, d);
+    if (!rc && swirl) {
+      for (int32_t i = 0; i < th->vel->n_nodes; ++i) f->work[i] = u[sl_th_vel_dof(th, 2, th->vel->node_dof[i])];
+      rc = sl_output_write_field(out, "u_theta", SL_CENTRE_NODE, 1, f->work, d);
+    }
   }
   if (!rc && (f->fields & F_PRESSURE)) {
     /* P1 pressure at every velocity node: the vertices carry their values,
@@ -558,7 +564,9 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
     if (!f->riding) rc = sl_face_flux_conservative(f->ff, u, 0.0, f->q, NULL, d);
     if (!rc && q) {
       sl_stream_function_nodes(th, &f->pg, q, f->psi, f->node_psi);
-      rc = sl_output_write_field(out, "stream_function", SL_CENTRE_NODE, 1, f->node_psi, d);
+      /* Stokes' stream function of the (r, z) plane has the units of a flow rate per radian */
+      rc = sl_output_write_field_unit(out, "stream_function", f->ph.axisymmetric ? "m^3/s" : "m^2/s",
+                                      SL_CENTRE_NODE, 1, f->node_psi, d);
     }
   }
   return rc;
