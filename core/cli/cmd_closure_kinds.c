@@ -60,7 +60,7 @@ static void kind_text(sl_kind k) {
 
 static void kind_markdown(sl_kind k) {
   const sl_kind_info *c = sl_kind_info_of(k);
-  printf("## %s\n\n%s.\n\n", sl_kind_name(k), c->summary);
+  printf("## %s\n\nA %s closure gives the %s.\n\n", sl_kind_name(k), sl_kind_name(k), c->summary);
   printf("| input | units | meaning | typical | supplied in |\n|---|---|---|---|---|\n");
   for (int i = 0; i < SL_KIND_MAX_INPUTS && c->required[i]; ++i) input_text(c->required[i], c->diff_mask >> i & 1u, 1);
   for (int i = 0; i < SL_KIND_MAX_INPUTS && c->usual[i]; ++i) input_text(c->usual[i], 0, 1);

@@ -114,8 +114,8 @@ static const sl_kind_info contracts[] = {
          "two_fluid 2-D model and shear layer: mu_s, gamma and kappa of (phi, theta) (the 2-D model with the "
          "algebraic theta reads no kappa); p_s when present (the kinetic pressure)"},
     [SL_KIND_MIGRATION] =
-        {"shear-induced migration of the solids: the diffusion coefficients of the collision and viscosity-gradient "
-         "fluxes (Phillips et al. 1992)",
+        {"diffusion coefficients of the shear-induced migration of the solids, the collision and the "
+         "viscosity-gradient fluxes (Phillips et al. 1992)",
          {"phi"},
          0u,
          {"shear_rate", "d_p"},
