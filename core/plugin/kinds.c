@@ -35,8 +35,8 @@ static const char *const input_names[] = {
 _Static_assert(sizeof input_names / sizeof input_names[0] == sizeof inputs / sizeof inputs[0],
                "one name per input of the dictionary");
 
-/* The kinds' contracts (closure-abi.md "Kind contracts"; what the models in
- * core/models read is checked where they bind the closure). */
+/* The kinds' contracts (`sluice closure kinds`, docs/closure-kinds.md); what
+ * the models in core/models read is checked where they bind the closure. */
 static const sl_kind_info contracts[] = {
     [SL_KIND_DRAG] =
         {"momentum-exchange coefficient K between fluid and solids: the force on the solids per unit volume is "

@@ -1,4 +1,4 @@
-/* Closure kinds: their names and contracts (closure-abi.md, "Kind contracts"),
+/* Closure kinds: their names and contracts (docs/closure-kinds.md is generated from them),
  * and the dictionary of input names the host knows how to supply. */
 #ifndef SLUICE_PLUGIN_KINDS_H
 #define SLUICE_PLUGIN_KINDS_H
