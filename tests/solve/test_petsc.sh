@@ -71,6 +71,9 @@ check "PETSC_OPTIONS wins over both" grep -q "(bcgs/fieldsplit" e.log
 "$sluice" run "$cav" --set solver.linear=petsc -o u.h5 --petsc "-ksp_monitor" > mon.log 2>&1
 check "--petsc -ksp_monitor prints PETSc's residuals" grep -q "KSP Residual norm" mon.log
 
+"$sluice" run "$cav" --set solver.linear=petsc -o u.h5 --petsc "-log_view :log_view.txt" > lv.log 2>&1
+check "--petsc -log_view writes PETSc's performance summary (exit 0)" grep -q "^KSPSolve" log_view.txt
+
 # a scene may not write or print through PETSc, nor pass anything but a solver option
 for bad in "ksp_monitor = true" "log_view = true" "ksp_view = ascii:/tmp/x" "fieldsplit_u_ksp_view_solution = binary" \
            "options_file = x" "on_error_attach_debugger = gdb" "pc_type = lu:x"; do
