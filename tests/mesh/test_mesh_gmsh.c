@@ -132,6 +132,18 @@ static void test_clockwise(void) {
   sl_mesh_destroy(m);
 }
 
+/* Second-order elements on straight edges (Gmsh -order 2 of a polygon): the
+ * face nodes sit at the edge midpoints, so the mesh keeps the linear map. */
+static void test_p2_straight(void) {
+  sl_mesh *m = read("p2_straight_22.msh");
+  if (!m) return;
+  CHECK(m->n_cells == 2 && m->n_vertices == 3 + 1 && m->cell_type == SL_CELL_TRI3);
+  CHECK(m->geom_order == 1 && m->face_mid == NULL);
+  CHECK_CLOSE(total_area(m), 0.5, 1e-14);
+  check_mesh_invariants(m);
+  sl_mesh_destroy(m);
+}
+
 /* Each malformed file: SL_EBADINPUT, "file:line:" and the key words. */
 static void bad_file(const char *file, int line, const char *words) {
   sl_mesh *m = (sl_mesh *)&d; /* must be reset to NULL */
@@ -147,8 +159,7 @@ static void bad_file(const char *file, int line, const char *words) {
 static void test_bad_files(void) {
   bad_file("bad_version_30.msh", 2, "version 3.0 is not supported; sluice reads ASCII MSH 2.2 and 4.1");
   bad_file("bad_truncated_41.msh", 60, "unexpected end of file in $Nodes");
-  bad_file("bad_p2_22.msh", 23, "type 8 (3-node line), which is not supported; supported types: 1 (2-node line)");
-  bad_file("bad_mixed_41.msh", 78, "mix triangles and quadrangles are not supported");
+  bad_file("bad_mixed_41.msh", 78, "a mesh of both triangles and quadrangles is not supported");
   bad_file("bad_untagged_41.msh", 60, "line element 8 is in no physical group");
   bad_file("bad_twogroups_22.msh", 37, "element 2 repeats element 1 (line 36) with physical group 5");
   bad_file("bad_twogroups_41.msh", 19, "curve 1 is in 2 physical groups (tags 1, 5)");
@@ -231,11 +242,13 @@ static void test_bad_texts(void) {
   sl_mesh_destroy(m);
 
   bad_text(variant(2, "4.0 0 8", 0), 2, "version 4.0 is not supported");
-  bad_text(variant(2, "2.2 1 8", 0), 2, "binary MSH files are not supported");
+  bad_text(variant(2, "2.2 1 8", 0), 2, "binary MSH 2.2 files are not supported");
   bad_text(variant(1, "hello", 0), 1, "not a Gmsh MSH file");
-  bad_text(variant(22, "5 9 2 2 1 1 2 3 5 6 7", 0), 22, "type 9 (6-node triangle)");
+  bad_text(variant(22, "5 9 2 2 1 1 2 3 5 6 7", 0), 22, "element 5 refers to node 5, which is not in $Nodes");
+  bad_text(variant(22, "5 21 2 2 1 1 2 3 5 6 7 8 9 10 11", 0), 22,
+           "type 21 (10-node triangle), which is not supported; supported types: 1 (2-node line)");
   bad_text(variant(22, "5 4 2 2 1 1 2 3 4", 0), 22, "3-D meshes are not supported");
-  bad_text(variant(23, "6 3 2 2 1 1 3 4 2", 0), 23, "mix triangles and quadrangles");
+  bad_text(variant(23, "6 3 2 2 1 1 3 4 2", 0), 23, "a mesh of both triangles and quadrangles");
   bad_text(variant(20, "3 1 2 0 1 3 4", 0), 20, "line element 3 is in no physical group");
   bad_text(variant(19, "2 1 2 3 1 2 3", 0), 19, "physical group 3 of dimension 1, which has no name");
   bad_text(variant(22, "5 2 2 2 1 1 2 9", 0), 22, "refers to node 9, which is not in $Nodes");
@@ -321,7 +334,7 @@ static void test_41(void) {
   /* The curve is in two physical groups. */
   bad_text(replace41("1 0 0 0 1 1 0 1 1 0\n", "1 0 0 0 1 1 0 2 1 3 0\n"), 11, "curve 1 is in 2 physical groups");
   /* An unsupported element type is named at its block header. */
-  bad_text(replace41("2 1 2 2\n", "2 1 9 2\n"), 33, "type 9 (6-node triangle)");
+  bad_text(replace41("2 1 2 2\n", "2 1 9 2\n"), 34, "element 5 (6-node triangle) needs 6 node tags, found 3");
   /* Node block counts that do not add up. */
   bad_text(replace41("1 4 1 4\n", "1 5 1 4\n"), 24, "announces 5 nodes but its blocks hold 4");
   bad_text(replace41("2 6 1 6\n", "2 7 1 6\n"), 35, "announces 7 elements but its blocks hold 6");
@@ -333,6 +346,7 @@ int main(void) {
   test_box_quad();
   test_line();
   test_clockwise();
+  test_p2_straight();
   test_bad_files();
   test_bad_texts();
   test_41();
