@@ -1,5 +1,9 @@
 /* Gmsh reader: 2.2 and 4.1 files of the same geometry give the same mesh;
  * every malformed file gives SL_EBADINPUT with the right file:line. */
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
 #include "mesh_checks.h"
 
 static sl_diag d;
@@ -130,6 +134,44 @@ static void test_clockwise(void) {
   CHECK_CLOSE(total_area(m), 2.0, 1e-14);
   check_mesh_invariants(m);
   sl_mesh_destroy(m);
+}
+
+/* Only regular files are read, and at most SLUICE_MESH_MAX_BYTES of them:
+ * a FIFO without a writer, /dev/zero and /dev/stdin are refused at once. */
+static void test_not_regular(void) {
+  sl_mesh *m = NULL;
+  CHECK(sl_mesh_read_gmsh("/dev/zero", &m, &d) == SL_EBADINPUT && m == NULL);
+  CHECK_CONTAINS(d.msg, "/dev/zero: the mesh file is a character device; a Gmsh mesh must be a regular file");
+  const char *fifo = "test_mesh_gmsh.fifo";
+  remove(fifo);
+  if (mkfifo(fifo, 0600) == 0) {
+    CHECK(sl_mesh_read_gmsh(fifo, &m, &d) == SL_EBADINPUT && m == NULL);
+    CHECK_CONTAINS(d.msg, "is a FIFO (named pipe)");
+    remove(fifo);
+  }
+  CHECK(sl_mesh_read_gmsh(".", &m, &d) == SL_EBADINPUT && m == NULL);
+  CHECK_CONTAINS(d.msg, "is a directory");
+  setenv("SLUICE_MESH_MAX_BYTES", "100", 1);
+  CHECK(sl_mesh_read_gmsh(data("box_tri_41.msh"), &m, &d) == SL_EBADINPUT && m == NULL);
+  CHECK_CONTAINS(d.msg, "more than the limit of 100");
+  unsetenv("SLUICE_MESH_MAX_BYTES");
+  CHECK(sl_mesh_read_gmsh(data("box_tri_41.msh"), &m, &d) == 0 && m != NULL);
+  sl_mesh_destroy(m);
+}
+
+/* Physical names as a scene addresses them (sl_mesh_scene_name). */
+static void test_scene_names(void) {
+  char out[64];
+  CHECK(sl_mesh_scene_name("left wall", out, sizeof out) == 1 && strcmp(out, "left_wall") == 0);
+  CHECK(sl_mesh_scene_name("inlet (1)", out, sizeof out) == 1 && strcmp(out, "inlet__1_") == 0);
+  CHECK(sl_mesh_scene_name("wall-2.top", out, sizeof out) == 0 && strcmp(out, "wall-2.top") == 0);
+  CHECK(sl_mesh_scene_name(".a..b.", out, sizeof out) == 1 && strcmp(out, "_a__b_") == 0);
+  const char *text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 1 \"left wall\"\n"
+                     "1 2 \"left_wall\"\n2 3 \"fluid\"\n$EndPhysicalNames\n";
+  sl_mesh *m = NULL;
+  CHECK(sl_mesh_read_gmsh_string(text, strlen(text), "t.msh", &m, &d) == SL_EBADINPUT && m == NULL);
+  CHECK_CONTAINS(d.msg, "t.msh:7: physical name \"left_wall\" is addressed in a scene as left_wall, and so is the "
+                        "name of physical group 1 (line 6)");
 }
 
 /* Second-order elements on straight edges (Gmsh -order 2 of a polygon): the
@@ -347,6 +389,8 @@ int main(void) {
   test_line();
   test_clockwise();
   test_p2_straight();
+  test_not_regular();
+  test_scene_names();
   test_bad_files();
   test_bad_texts();
   test_41();
