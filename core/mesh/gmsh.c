@@ -764,7 +764,7 @@ static int resolve_group(gmsh *g, const g_elem *e, int dim, int *index) {
   return 0;
 }
 
-static int build(gmsh *g, sl_mesh **out) {
+static int build(gmsh *g, const sl_gmsh_opts *opts, sl_mesh **out) {
   int rc = 0, dim = 0, cell_type = 0, first_cell_line = 0;
   /* Dimension and cell type from the elements present. */
   for (int i = 0; i < g->n_el; ++i)
@@ -812,7 +812,7 @@ static int build(gmsh *g, sl_mesh **out) {
       if (!cell_type) {
         cell_type = e->type;
         first_cell_line = e->line;
-      } else if (dim == 2 && is_tri(e->type) != is_tri(cell_type)) {
+      } else if (dim == 2 && is_tri(e->type) != is_tri(cell_type) && !opts->split_quads) {
         char where_first[64];
         if (first_cell_line < 0)
           snprintf(where_first, sizeof where_first, "byte %d", -first_cell_line - 1);
@@ -821,7 +821,8 @@ static int build(gmsh *g, sl_mesh **out) {
         rc = err(g, e->line,
                  "element %ld is a %s but the cells before it are %ss (%s): a mesh of both triangles and "
                  "quadrangles is not supported (sluice's meshes have one cell type, and its Taylor-Hood pairs are "
-                 "P2/P1 on triangles or Q2/Q1 on quadrangles); make all cells quadrangles (Mesh.RecombineAll = 1; "
+                 "P2/P1 on triangles or Q2/Q1 on quadrangles); set [mesh] split_quads = true to split each "
+                 "quadrangle into two triangles, or make all cells quadrangles (Mesh.RecombineAll = 1; "
                  "Mesh.SubdivisionAlgorithm = 1 subdivides what does not recombine) or all triangles (no Recombine)",
                  e->tag, type_name(e->type), type_name(cell_type), where_first);
         goto done;
@@ -869,9 +870,12 @@ static int build(gmsh *g, sl_mesh **out) {
     }
 
   /* Nodes by tag; then vertex numbers for the corner nodes of the cells. */
-  const int nvc = dim == 2 ? (is_tri(cell_type) ? 3 : 4) : 2, per_side = dim == 2 ? 2 : 1;
-  int curved = 0;
-  for (int c = 0; c < n_cells && dim == 2; ++c) curved |= second_order(cells[c]->type);
+  /* split_quads: every quadrangle becomes two triangles (split in the cell loop below) */
+  int n_quads = 0, curved = 0;
+  for (int c = 0; c < n_cells && dim == 2; ++c) curved |= second_order(cells[c]->type), n_quads += is_quad(cells[c]->type);
+  const int split = dim == 2 && opts->split_quads && n_quads > 0;
+  const int nvc = dim == 2 ? (split || is_tri(cell_type) ? 3 : 4) : 2, per_side = dim == 2 ? 2 : 1;
+  const int n_out = n_cells + (split ? n_quads : 0);
   qsort(g->nodes, (size_t)g->n_nodes, sizeof *g->nodes, cmp_node);
   for (int i = 1; i < g->n_nodes; ++i)
     if (g->nodes[i].tag == g->nodes[i - 1].tag) {
@@ -897,7 +901,8 @@ static int build(gmsh *g, sl_mesh **out) {
           goto done;
         }
         list[i]->nodes[k] = idx;
-        if (!pass && k < nvc) vmap[idx] = 0; /* the corners are the vertices; face and centre nodes are not */
+        /* the corners are the vertices; face and centre nodes are not */
+        if (!pass && k < (dim == 1 ? 2 : is_tri(list[i]->type) ? 3 : 4)) vmap[idx] = 0;
       }
   }
   int nv = 0;
@@ -957,27 +962,97 @@ static int build(gmsh *g, sl_mesh **out) {
     if (g->names[i].dim == dim) rnames[n_rnames++] = g->names[i].name;
   }
 
-  cv = malloc((size_t)n_cells * nvc * sizeof *cv);
-  cell_line = malloc((size_t)n_cells * sizeof *cell_line);
-  cell_region = malloc((size_t)n_cells * sizeof *cell_region);
+  cv = malloc((size_t)n_out * nvc * sizeof *cv);
+  cell_line = malloc((size_t)n_out * sizeof *cell_line);
+  cell_region = malloc((size_t)n_out * sizeof *cell_region);
+  if (curved) {
+    emid = malloc(2 * (size_t)n_out * nvc * sizeof *emid);
+    centre = malloc(2 * (size_t)n_out * sizeof *centre);
+  }
   sv = malloc(2 * ((size_t)n_sides + 1) * sizeof *sv);
   side_tag = malloc(((size_t)n_sides + 1) * sizeof *side_tag);
   side_line = malloc(((size_t)n_sides + 1) * sizeof *side_line);
-  if (!cv || !cell_line || !cell_region || !sv || !side_tag || !side_line) {
+  if (!cv || !cell_line || !cell_region || !sv || !side_tag || !side_line || (curved && (!emid || !centre))) {
     rc = oom(g);
     goto done;
   }
-  int any_region = 0;
+  /* The cells, their face nodes (straight midpoints for first-order cells among second-order ones) and the centres
+   * of quadrangles (an 8-node quad's: its serendipity map at the reference centre, -1/4 sum corners + 1/2 sum face
+   * nodes; Zienkiewicz & Taylor 2000, sec. 8.5). Split quadrangles: two triangles along the shorter diagonal, whose
+   * node is the quad's centre (second-order) or the diagonal's midpoint. */
+  int any_region = 0, oc = 0;
   for (int c = 0; c < n_cells; ++c) {
     const g_elem *e = cells[c];
-    for (int k = 0; k < nvc; ++k) cv[c * nvc + k] = (int)vmap[e->nodes[k]];
-    cell_line[c] = e->line;
-    cell_region[c] = -1;
+    const int nve = dim == 1 ? 2 : is_tri(e->type) ? 3 : 4;
+    int v[4];
+    double m[4][2] = {{0, 0}}, ce[2] = {0, 0};
+    for (int k = 0; k < nve; ++k) v[k] = (int)vmap[e->nodes[k]];
+    int region = -1;
     if (e->phys != 0) {
-      if ((rc = resolve_group(g, e, dim, &cell_region[c]))) goto done;
+      if ((rc = resolve_group(g, e, dim, &region))) goto done;
       any_region = 1;
     }
+    if (curved) {
+      for (int k = 0; k < nve; ++k) {
+        if (second_order(e->type)) {
+          const g_node *p = g->nodes + e->nodes[nve + k];
+          if (fabs(p->z - z0) > 1e-10 * scale) {
+            rc = err(g, p->line, "node %ld has z = %g but others z = %g: only planar meshes (constant z) are supported",
+                     p->tag, p->z, z0);
+            goto done;
+          }
+          m[k][0] = p->x, m[k][1] = p->y;
+        } else {
+          const double *a = xy + 2 * v[k], *b = xy + 2 * v[(k + 1) % nve];
+          m[k][0] = 0.5 * (a[0] + b[0]), m[k][1] = 0.5 * (a[1] + b[1]);
+        }
+      }
+      if (e->type == 10) {
+        ce[0] = g->nodes[e->nodes[8]].x, ce[1] = g->nodes[e->nodes[8]].y;
+      } else if (nve == 4) {
+        double w = e->type == 16 ? -0.25 : 0.25;
+        for (int k = 0; k < 4; ++k) {
+          ce[0] += w * xy[2 * v[k]], ce[1] += w * xy[2 * v[k] + 1];
+          if (e->type == 16) ce[0] += 0.5 * m[k][0], ce[1] += 0.5 * m[k][1];
+        }
+      }
+    }
+    /* the output cells of this element: itself, or (split) two triangles given by their corners k of the quad and
+       the quad's face of each triangle edge (-1: the diagonal) */
+    int tri[2][3], face[2][3], n_tri = 1;
+    if (nve == 4 && split) {
+      double d02 = hypot(xy[2 * v[2]] - xy[2 * v[0]], xy[2 * v[2] + 1] - xy[2 * v[0] + 1]);
+      double d13 = hypot(xy[2 * v[3]] - xy[2 * v[1]], xy[2 * v[3] + 1] - xy[2 * v[1] + 1]);
+      static const int t02[2][3] = {{0, 1, 2}, {0, 2, 3}}, f02[2][3] = {{0, 1, -1}, {-1, 2, 3}};
+      static const int t13[2][3] = {{0, 1, 3}, {1, 2, 3}}, f13[2][3] = {{0, -1, 3}, {1, 2, -1}};
+      memcpy(tri, d02 <= d13 ? t02 : t13, sizeof tri);
+      memcpy(face, d02 <= d13 ? f02 : f13, sizeof face);
+      n_tri = 2;
+    } else {
+      for (int k = 0; k < 3; ++k) tri[0][k] = k, face[0][k] = k;
+    }
+    for (int t = 0; t < n_tri; ++t, ++oc) {
+      const int nk = n_tri == 2 ? 3 : nve;
+      for (int k = 0; k < nk; ++k) cv[oc * nvc + k] = n_tri == 2 ? v[tri[t][k]] : v[k];
+      cell_line[oc] = e->line;
+      cell_region[oc] = region;
+      if (!curved) continue;
+      double *em = emid + 2 * (size_t)oc * nvc;
+      for (int k = 0; k < nk; ++k) {
+        int f = n_tri == 2 ? face[t][k] : k;
+        if (f >= 0) {
+          em[2 * k] = m[f][0], em[2 * k + 1] = m[f][1];
+        } else if (second_order(e->type)) {
+          em[2 * k] = ce[0], em[2 * k + 1] = ce[1];
+        } else { /* the straight diagonal */
+          const double *a = xy + 2 * cv[oc * nvc + k], *b = xy + 2 * cv[oc * nvc + (k + 1) % 3];
+          em[2 * k] = 0.5 * (a[0] + b[0]), em[2 * k + 1] = 0.5 * (a[1] + b[1]);
+        }
+      }
+      centre[2 * (size_t)oc] = ce[0], centre[2 * (size_t)oc + 1] = ce[1];
+    }
   }
+  n_cells = n_out;
   for (int i = 0; i < n_sides; ++i) {
     const g_elem *e = sides[i];
     for (int k = 0; k < per_side; ++k) sv[i * per_side + k] = (int)vmap[e->nodes[k]];
@@ -990,50 +1065,6 @@ static int build(gmsh *g, sl_mesh **out) {
              "(Physical %s(\"name\") = {...})",
              dim == 2 ? "curve" : "point", dim == 2 ? "Curve" : "Point");
     goto done;
-  }
-
-  /* Second-order geometry: the face nodes in the cell's face order (straight
-   * midpoints for first-order cells among second-order ones) and the centres
-   * of quadrangles (an 8-node quad's: its serendipity map at the reference
-   * centre, -1/4 sum corners + 1/2 sum face nodes; Zienkiewicz & Taylor 2000,
-   * sec. 8.5). */
-  if (curved) {
-    emid = malloc(2 * (size_t)n_cells * nvc * sizeof *emid);
-    centre = malloc(2 * (size_t)n_cells * sizeof *centre);
-    if (!emid || !centre) {
-      rc = oom(g);
-      goto done;
-    }
-    for (int c = 0; c < n_cells; ++c) {
-      const g_elem *e = cells[c];
-      double *em = emid + 2 * (size_t)c * nvc;
-      for (int k = 0; k < nvc; ++k) {
-        if (second_order(e->type)) {
-          const g_node *p = g->nodes + e->nodes[nvc + k];
-          if (fabs(p->z - z0) > 1e-10 * scale) {
-            rc = err(g, p->line, "node %ld has z = %g but others z = %g: only planar meshes (constant z) are supported",
-                     p->tag, p->z, z0);
-            goto done;
-          }
-          em[2 * k] = p->x, em[2 * k + 1] = p->y;
-        } else {
-          const double *a = xy + 2 * cv[c * nvc + k], *b = xy + 2 * cv[c * nvc + (k + 1) % nvc];
-          em[2 * k] = 0.5 * (a[0] + b[0]), em[2 * k + 1] = 0.5 * (a[1] + b[1]);
-        }
-      }
-      double *ce = centre + 2 * (size_t)c;
-      ce[0] = ce[1] = 0;
-      if (e->type == 10) {
-        ce[0] = g->nodes[e->nodes[8]].x, ce[1] = g->nodes[e->nodes[8]].y;
-      } else if (is_quad(e->type)) {
-        double w = e->type == 16 ? -0.25 : 0.25;
-        for (int k = 0; k < 4; ++k) {
-          const double *a = xy + 2 * cv[c * nvc + k];
-          ce[0] += w * a[0], ce[1] += w * a[1];
-          if (e->type == 16) ce[0] += 0.5 * em[2 * k], ce[1] += 0.5 * em[2 * k + 1];
-        }
-      }
-    }
   }
 
   /* Orientation: 1-D cells towards +x; 2-D cells counter-clockwise. A mesh
@@ -1074,7 +1105,7 @@ static int build(gmsh *g, sl_mesh **out) {
   }
 
   sl_mesh_spec s = {.dim = dim,
-                    .cell_type = dim == 1 ? SL_CELL_LINE2 : is_tri(cell_type) ? SL_CELL_TRI3 : SL_CELL_QUAD4,
+                    .cell_type = dim == 1 ? SL_CELL_LINE2 : nvc == 3 ? SL_CELL_TRI3 : SL_CELL_QUAD4,
                     .n_vertices = nv,
                     .xy = xy,
                     .n_cells = n_cells,
@@ -1111,7 +1142,10 @@ done:
   return rc;
 }
 
-int sl_mesh_read_gmsh_string(const char *text, size_t len, const char *name, sl_mesh **out, sl_diag *d) {
+int sl_mesh_read_gmsh_string_opts(const char *text, size_t len, const char *name, const sl_gmsh_opts *opts,
+                                  sl_mesh **out, sl_diag *d) {
+  static const sl_gmsh_opts none = {0};
+  if (!opts) opts = &none;
   *out = NULL;
   gmsh g;
   memset(&g, 0, sizeof g);
@@ -1120,7 +1154,7 @@ int sl_mesh_read_gmsh_string(const char *text, size_t len, const char *name, sl_
   g.len = len;
   g.d = d;
   int rc = parse(&g);
-  if (!rc) rc = build(&g, out);
+  if (!rc) rc = build(&g, opts, out);
   free(g.buf);
   free(g.nodes);
   free(g.el);
@@ -1141,7 +1175,13 @@ static long max_bytes(void) {
   return SL_MESH_GMSH_MAX_BYTES;
 }
 
-int sl_mesh_read_gmsh(const char *path, sl_mesh **out, sl_diag *d) {
+int sl_mesh_read_gmsh_string(const char *text, size_t len, const char *name, sl_mesh **out, sl_diag *d) {
+  return sl_mesh_read_gmsh_string_opts(text, len, name, NULL, out, d);
+}
+
+int sl_mesh_read_gmsh(const char *path, sl_mesh **out, sl_diag *d) { return sl_mesh_read_gmsh_opts(path, NULL, out, d); }
+
+int sl_mesh_read_gmsh_opts(const char *path, const sl_gmsh_opts *opts, sl_mesh **out, sl_diag *d) {
   *out = NULL;
   /* O_NONBLOCK: opening a FIFO without a writer must not wait; the type is checked before any read */
   int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
@@ -1196,7 +1236,7 @@ int sl_mesh_read_gmsh(const char *path, sl_mesh **out, sl_diag *d) {
     free(text);
     return sl_diag_set(d, SL_EBADINPUT, "%s: %s", path, bad ? "read error" : "the mesh file grew while it was read");
   }
-  int rc = sl_mesh_read_gmsh_string(text, len, path, out, d);
+  int rc = sl_mesh_read_gmsh_string_opts(text, len, path, opts, out, d);
   free(text);
   return rc;
 }

@@ -206,7 +206,10 @@ int sl_mesh_inclined_box(double x0, double y0, double width, double height, doub
  * 2-D. Second-order cells give the mesh second-order geometry
  * (geom_order 2); in 1-D the mid node of a 3-node line is dropped (the
  * cell is the straight segment either way). Triangles and quadrangles in
- * one mesh are refused (one cell type per mesh).
+ * one mesh are refused (one cell type per mesh) unless split_quads is set
+ * (sl_mesh_read_gmsh_opts): each quadrangle then becomes two triangles
+ * along its shorter diagonal (second-order quads: the diagonal's node is
+ * the quad's centre node).
  * Only regular files of at most SL_MESH_GMSH_MAX_BYTES are read (a FIFO,
  * a device or a terminal is refused before anything is read from it).
  * Physical names become boundary and region names with the scene rule
@@ -228,6 +231,13 @@ int sl_mesh_read_gmsh(const char *path, sl_mesh **out, sl_diag *d);
 #define SL_MESH_GMSH_MAX_BYTES (1024L * 1024 * 1024)
 /* The same from text in memory; `name` is used in diagnostics. */
 int sl_mesh_read_gmsh_string(const char *text, size_t len, const char *name, sl_mesh **out, sl_diag *d);
+/* Reader options (zero-initialised: the defaults; NULL: the defaults). */
+typedef struct sl_gmsh_opts {
+  int split_quads; /* split every quadrangle into two triangles */
+} sl_gmsh_opts;
+int sl_mesh_read_gmsh_opts(const char *path, const sl_gmsh_opts *opts, sl_mesh **out, sl_diag *d);
+int sl_mesh_read_gmsh_string_opts(const char *text, size_t len, const char *name, const sl_gmsh_opts *opts,
+                                  sl_mesh **out, sl_diag *d);
 
 /* ---- names ------------------------------------------------------------- */
 

@@ -258,7 +258,8 @@ int sl_scene_mesh_build(const sl_scene *sc, sl_mesh **out, sl_diag *d) {
       if (!e) return missing(sc, "file", d);
       char *path = sl_ini_path_relative(e->file, c->file);
       if (!path) return sl_diag_set(d, SL_ENOMEM, "mesh: out of memory");
-      rc = sl_mesh_read_gmsh(path, out, d);
+      sl_gmsh_opts go = {.split_quads = c->split_quads};
+      rc = sl_mesh_read_gmsh_opts(path, &go, out, d);
       if (!rc && (rc = check_read_mesh(path, *out, d))) sl_mesh_destroy(*out), *out = NULL;
       if (!rc) warn_unnamed(sc, path, *out);
       free(path);

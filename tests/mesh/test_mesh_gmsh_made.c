@@ -170,12 +170,13 @@ static void check_binary(void) {
 
 /* Triangles and quadrangles in one mesh: refused with the reason. */
 static void check_mixed(void) {
-  /* a second surface beside the first, recombined into quadrangles */
-  const char *extra = "Point(10) = {0.6, -0.2, 0, h}; Point(11) = {0.6, 0.2, 0, h};\n"
-                      "Line(9) = {2, 10}; Line(10) = {10, 11}; Line(11) = {11, 3};\n"
-                      "Curve Loop(3) = {9, 10, 11, -2}; Plane Surface(2) = {3};\n"
+  /* a second surface, apart from the first, recombined into quadrangles */
+  const char *extra = "Point(10) = {0.3, -0.2, 0, h}; Point(11) = {0.7, -0.2, 0, h}; Point(12) = {0.7, 0.2, 0, h};\n"
+                      "Point(13) = {0.3, 0.2, 0, h};\n"
+                      "Line(9) = {10, 11}; Line(10) = {11, 12}; Line(11) = {12, 13}; Line(12) = {13, 10};\n"
+                      "Curve Loop(3) = {9, 10, 11, 12}; Plane Surface(2) = {3};\n"
                       "Transfinite Surface{2}; Recombine Surface{2};\n"
-                      "Physical Curve(\"right\") = {9, 10, 11}; Physical Surface(\"solid\") = {2};";
+                      "Physical Curve(\"right\") = {9, 10, 11, 12}; Physical Surface(\"solid\") = {2};";
   if (make("mixed", extra, "-order 1 -format msh41") != 0) {
     CHECK_MSG(0, "gmsh failed (mixed.log)");
     return;
@@ -185,6 +186,44 @@ static void check_mixed(void) {
   CHECK(rc == SL_EBADINPUT && m == NULL);
   CHECK_CONTAINS(d.msg, "mixed.msh:");
   CHECK_CONTAINS(d.msg, "a mesh of both triangles and quadrangles is not supported");
+  CHECK_CONTAINS(d.msg, "split_quads = true");
+  /* split: all triangles, the same area (two 0.4 x 0.4 squares less the hole's polygon), every cell valid */
+  sl_gmsh_opts o = {.split_quads = 1};
+  int n_quads = 0, n_tris = 0;
+  rc = sl_mesh_read_gmsh_opts("mixed.msh", &o, &m, &d);
+  CHECK_MSG(rc == 0, "split: %s", d.msg);
+  if (m) {
+    CHECK(m->cell_type == SL_CELL_TRI3 && m->geom_order == 1);
+    double a = 0;
+    for (int c = 0; c < m->n_cells; ++c) a += sl_mesh_cell_area(m, c);
+    int nh = 0;
+    hole_length(m, "hole", &nh);
+    const double pi = acos(-1.0), polygon_area = 0.5 * nh * R * R * sin(2 * pi / nh);
+    CHECK_CLOSE(a, 2 * L * L - polygon_area, 1e-12);
+    int solid;
+    CHECK(sl_mesh_region_id(m, "solid", &solid, &d) == 0);
+    for (int c = 0; c < m->n_cells; ++c) n_quads += m->cell_region[c] == solid, n_tris += m->cell_region[c] != solid;
+    printf("mixed, split: %d triangles (%d from quadrangles), area %.12f\n", m->n_cells, n_quads, a);
+    CHECK(n_quads > 0 && n_quads % 2 == 0 && n_tris > 0);
+    check_mesh_invariants(m);
+  }
+  sl_mesh_destroy(m);
+  /* second order: the quads' centre nodes become the diagonals' nodes; the hole stays curved */
+  if (make("mixed2", extra, "-order 2 -format msh41") != 0) {
+    CHECK_MSG(0, "gmsh failed (mixed2.log)");
+    return;
+  }
+  rc = sl_mesh_read_gmsh_opts("mixed2.msh", &o, &m, &d);
+  CHECK_MSG(rc == 0, "split, order 2: %s", d.msg);
+  if (m) {
+    CHECK(m->cell_type == SL_CELL_TRI3 && m->geom_order == 2);
+    int nh = 0;
+    CHECK(fabs(hole_length(m, "hole", &nh) - 2 * acos(-1.0) * R) < 1e-5);
+    double a = fe_area(m), exact = 2 * L * L - acos(-1.0) * R * R;
+    printf("mixed, split, order 2: area %.10f (exact %.10f)\n", a, exact);
+    CHECK_MSG(fabs(a - exact) < 1e-6 * exact, "area %.10f, exact %.10f", a, exact);
+    check_mesh_invariants(m);
+  }
   sl_mesh_destroy(m);
 }
 
