@@ -134,7 +134,10 @@ static int check_cells(const sl_mesh *m, const char *source, const int *cell_lin
   return 0;
 }
 
-int sl_mesh_check(const sl_mesh *m, sl_diag *d) { return check_cells(m, NULL, NULL, d); }
+int sl_mesh_check(const sl_mesh *m, sl_diag *d) {
+  int rc = check_cells(m, NULL, NULL, d);
+  return rc ? rc : sl_mesh_check_curved(m, NULL, NULL, d);
+}
 
 /* ---- faces -------------------------------------------------------------- */
 

@@ -340,8 +340,9 @@ typedef struct sl_mesh_quality {
 
 void sl_mesh_quality_compute(const sl_mesh *m, sl_mesh_quality *q);
 /* Refuses inverted (negative Jacobian at a corner) and degenerate (zero
- * area, zero-length edge or straight angle) cells: SL_EBADINPUT with the
- * cell index and its vertices' coordinates. sl_mesh_create calls it; call it
+ * area, zero-length edge or straight angle) cells, and second-order cells
+ * whose map folds (sl_mesh_check_curved): SL_EBADINPUT with the cell index
+ * and its vertices' coordinates. sl_mesh_create calls it; call it
  * again after moving vertices. */
 int sl_mesh_check(const sl_mesh *m, sl_diag *d);
 /* A few lines: sizes, boundaries with face counts and lengths, quality. */

@@ -4,6 +4,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "core/fe/geometry.h"
 #include "mesh_checks.h"
 
 static sl_diag d;
@@ -172,6 +173,49 @@ static void test_scene_names(void) {
   CHECK(sl_mesh_read_gmsh_string(text, strlen(text), "t.msh", &m, &d) == SL_EBADINPUT && m == NULL);
   CHECK_CONTAINS(d.msg, "t.msh:7: physical name \"left_wall\" is addressed in a scene as left_wall, and so is the "
                         "name of physical group 1 (line 6)");
+}
+
+/* One 6-node triangle, (0,0), (1,0), (0,1), its hypotenuse's node moved out
+ * by delta along (1, 1): the parabolic segment adds 2/3 chord x height =
+ * 2/3 sqrt(2) (delta sqrt(2)) = 4 delta / 3 to the area 1/2 (Archimedes).
+ * The area is exact under the P2 map: from the mesh and from the FE
+ * integration context. A node moved too far folds the cell: refused. */
+static char *tri6(double mx, double my) {
+  static char buf[1024];
+  snprintf(buf, sizeof buf,
+           "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n1 1 \"wall\"\n2 2 \"fluid\"\n"
+           "$EndPhysicalNames\n$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0.5 0 0\n5 %.17g %.17g 0\n6 0 0.5 0\n"
+           "$EndNodes\n$Elements\n4\n1 8 2 1 1 1 2 4\n2 8 2 1 1 2 3 5\n3 8 2 1 1 3 1 6\n"
+           "4 9 2 2 1 1 2 3 4 5 6\n$EndElements\n",
+           mx, my);
+  return buf;
+}
+
+static void test_curved_triangle(void) {
+  const double delta = 0.1, exact = 0.5 + 4 * delta / 3;
+  const char *t = tri6(0.5 + delta, 0.5 + delta);
+  sl_mesh *m = NULL;
+  CHECK(sl_mesh_read_gmsh_string(t, strlen(t), "t.msh", &m, &d) == 0);
+  if (!m) return;
+  CHECK(m->geom_order == 2 && m->n_cells == 1);
+  CHECK_CLOSE(sl_mesh_cell_curved_area(m, 0), exact, 1e-14);
+  const sl_element *p2 = sl_element_lagrange(SL_CELL_TRI3, 2);
+  sl_fe_values *fv;
+  if (sl_fe_values_create(&fv, m, 1, &p2, 2, 0, &d) == 0) {
+    double a = 0;
+    CHECK(sl_fe_values_reinit(fv, 0, &d) == 0);
+    for (int q = 0; q < fv->quad.n; ++q) a += fv->JxW[q];
+    CHECK_CLOSE(a, exact, 1e-14);
+    /* the hypotenuse's midpoint maps onto its node */
+    double x[2];
+    sl_fe_map_point(m, 0, (const double[2]){0.5, 0.5}, x);
+    CHECK_CLOSE(x[0], 0.5 + delta, 1e-15);
+    sl_fe_values_destroy(fv);
+  }
+  sl_mesh_destroy(m);
+  t = tri6(0.2, 0.2); /* the node pulled in most of the way to the far corner: det J < 0 near the corners */
+  CHECK(sl_mesh_read_gmsh_string(t, strlen(t), "t.msh", &m, &d) == SL_EBADINPUT && m == NULL);
+  CHECK_CONTAINS(d.msg, "t.msh:23: cell 0 folds under its second-order map: det J = -0.2 at the reference point (1, 0)");
 }
 
 /* Second-order elements on straight edges (Gmsh -order 2 of a polygon): the
@@ -389,6 +433,7 @@ int main(void) {
   test_line();
   test_clockwise();
   test_p2_straight();
+  test_curved_triangle();
   test_not_regular();
   test_scene_names();
   test_bad_files();
