@@ -669,8 +669,9 @@ static int read_elements_bin(gmsh *g) {
 }
 
 /* Skips an unknown section up to its $End line. */
-static int skip_section(gmsh *g, const char *head) {
-  char end[128];
+static int skip_section(gmsh *g, const char *line) {
+  char end[128], head[104];
+  snprintf(head, sizeof head, "%.100s", line); /* line is the line buffer, which the next line may move */
   snprintf(end, sizeof end, "$End%.100s", head + 1);
   size_t n = strcspn(end, " \t");
   end[n] = '\0';
@@ -678,6 +679,8 @@ static int skip_section(gmsh *g, const char *head) {
   const char *l;
   while ((l = next_line(g)))
     if (strncmp(l, end, n) == 0 && is_end(l[n])) return 0;
+  if (start < 0)
+    return err(g, g->line, "unexpected end of file: section %.100s opened at byte %d has no %s", head, -start - 1, end);
   return err(g, g->line, "unexpected end of file: section %.100s opened on line %d has no %s", head, start, end);
 }
 

@@ -137,6 +137,34 @@ static void test_clockwise(void) {
   sl_mesh_destroy(m);
 }
 
+/* The quarter ring 0.5 < r < 1 in 6-node triangles: curved walls of length
+ * pi/4 and pi/2, area 3 pi / 16; the binary file gives the ASCII file's mesh. */
+static void test_ring(void) {
+  sl_mesh *a = read("ring_p2_41.msh"), *b = read("ring_p2_41_bin.msh");
+  if (!a || !b) goto done;
+  const double pi = acos(-1.0);
+  CHECK(a->geom_order == 2 && b->geom_order == 2);
+  int in, out;
+  CHECK(sl_mesh_boundary_id(a, "inner_wall", &in, &d) == 0 && sl_mesh_boundary_id(a, "outer_wall", &out, &d) == 0);
+  double li = 0, lo = 0, area = 0;
+  for (int k = a->bface_start[in]; k < a->bface_start[in + 1]; ++k) li += sl_mesh_face_arc_length(a, a->bface[k]);
+  for (int k = a->bface_start[out]; k < a->bface_start[out + 1]; ++k) lo += sl_mesh_face_arc_length(a, a->bface[k]);
+  for (int c = 0; c < a->n_cells; ++c) area += sl_mesh_cell_curved_area(a, c);
+  printf("ring: %d cells, inner wall %.8f (pi/4 %.8f), outer %.8f (pi/2 %.8f), area %.8f (3 pi/16 %.8f)\n", a->n_cells,
+         li, pi / 4, lo, pi / 2, area, 3 * pi / 16);
+  CHECK(fabs(li - pi / 4) < 1e-4 && fabs(lo - pi / 2) < 1e-4 && fabs(area - 3 * pi / 16) < 1e-4);
+  CHECK(a->n_cells == b->n_cells && a->n_vertices == b->n_vertices && a->n_faces == b->n_faces);
+  if (a->n_cells == b->n_cells && a->n_faces == b->n_faces) {
+    double dm = 0;
+    for (int i = 0; i < 2 * a->n_faces; ++i) dm = fmax(dm, fabs(a->face_mid[i] - b->face_mid[i]));
+    CHECK(dm < 1e-15);
+    CHECK(memcmp(a->cell_vertices, b->cell_vertices, 3 * (size_t)a->n_cells * sizeof *a->cell_vertices) == 0);
+  }
+done:
+  sl_mesh_destroy(a);
+  sl_mesh_destroy(b);
+}
+
 /* Only regular files are read, and at most SLUICE_MESH_MAX_BYTES of them:
  * a FIFO without a writer, /dev/zero and /dev/stdin are refused at once. */
 static void test_not_regular(void) {
@@ -435,6 +463,7 @@ int main(void) {
   test_p2_straight();
   test_curved_triangle();
   test_not_regular();
+  test_ring();
   test_scene_names();
   test_bad_files();
   test_bad_texts();
