@@ -10,7 +10,13 @@
  *    c_L = 0.010618948146, dp = 0.11752016697 (John 2004, Table 3), the
  *    curved (isoparametric) mesh's drag is at least 10 times closer than that
  *    of the same mesh with straight sides (gmsh -order 1), whose polygonal
- *    cylinder is smaller than the circle. */
+ *    cylinder is smaller than the circle;
+ *  - the forces' normalisation and sign, where they are known exactly: a
+ *    channel and a pipe, periodic along the flow and driven by a body force
+ *    f, hold the fluid against the walls alone, so the walls carry the whole
+ *    load, f L H planar (half on each wall, the Poiseuille wall stress
+ *    f H / 2 times L) and f pi R^2 L on the pipe's wall (axisymmetric: the
+ *    2 pi of the revolution included). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -56,6 +62,48 @@ static int run(const char *configs, const char *mesh, const char *out, dfg *r) {
   return 0;
 }
 
+/* A scene written into the working folder and run; the scalar `name` of its output. */
+static double periodic_force(const char *scene, const char *text, const char *name) {
+  char path[256];
+  snprintf(path, sizeof path, "%s.ini", scene);
+  FILE *f = fopen(path, "w");
+  if (!f) return NAN;
+  fputs(text, f);
+  fclose(f);
+  char out[256];
+  snprintf(out, sizeof out, "%s.h5", scene);
+  scene_request q = {.configs = ".", .scene = scene, .out = out};
+  sl_diag d = {{0}};
+  int rc = scene_run(&q, NULL, &d);
+  CHECK_MSG(rc == 0, "%s: %s", scene, d.msg);
+  double v = NAN, t;
+  if (!rc && sl_output_read_scalar(out, name, INFINITY, &v, &t, &d)) CHECK_MSG(0, "%s: %s", out, d.msg);
+  return v;
+}
+
+static void force_balance(void) {
+  const char *channel = "[scene]\nmodel = navier_stokes\ngeometry = planar\n"
+                        "[mesh]\ngenerator = rectangle\nx = 0, 1\ny = 0, 0.5\ncells = 6, 5\n"
+                        "[fluid]\ndensity = 1\nviscosity = 0.1\n[flow]\nconvection = false\nbody_force = 2, 0\n"
+                        "[boundary.left]\ntype = periodic\npartner = right\n"
+                        "[boundary.bottom]\nforce = true\n[boundary.top]\nforce = true\n";
+  double fb = periodic_force("force_channel", channel, "force_x_bottom");
+  double ft = periodic_force("force_channel", channel, "force_x_top");
+  double fy = periodic_force("force_channel", channel, "force_y_bottom");
+  printf("channel: force_x bottom %.15g, top %.15g (f L H / 2 = 0.5), force_y bottom %.3g\n", fb, ft, fy);
+  CHECK_CLOSE(fb, 0.5, 1e-10);
+  CHECK_CLOSE(ft, 0.5, 1e-10);
+  CHECK(fabs(fy) < 1e-10);
+  const char *pipe = "[scene]\nmodel = navier_stokes\ngeometry = axisymmetric\n"
+                     "[mesh]\ngenerator = annulus\nr = 0, 0.5\nz = 0, 2\ncells = 5, 4\n"
+                     "[fluid]\ndensity = 1\nviscosity = 0.1\n[flow]\nconvection = false\nbody_force = 0, 3\n"
+                     "[boundary.bottom]\ntype = periodic\npartner = top\n[boundary.outer]\nforce = true\n";
+  double fz = periodic_force("force_pipe", pipe, "force_z_outer");
+  const double exact = 3 * acos(-1.0) * 0.25 * 2;
+  printf("pipe: force_z outer %.15g (f pi R^2 L = %.15g)\n", fz, exact);
+  CHECK_CLOSE(fz, exact, 1e-10);
+}
+
 /* file in the working folder, as an absolute path (the scene resolves relative ones against configs/). */
 static int getcwd_path(char *buf, size_t n, const char *file) {
   char cwd[4096];
@@ -84,6 +132,7 @@ int main(void) {
   if (curved) {
     if (!getcwd_path(mesh, sizeof mesh, curved)) snprintf(mesh, sizeof mesh, "%s", curved);
   }
+  force_balance();
   dfg a;
   if (run(configs, curved ? mesh : NULL, "dfg_p2.h5", &a)) return sl_test_summary();
   CHECK_MSG(a.cd >= 5.57 && a.cd <= 5.59, "c_D %.6f outside [5.57, 5.59]", a.cd);

@@ -456,9 +456,9 @@ struct sl_flow {
   int unforced;       /* walls at rest all round, no body force, no rotation: only the rider loads it */
   int fixed_point;    /* the last accepted solve returned its start and the rider's phi has not changed since */
   int solved, solved_to_start; /* the last step's: solved (not skipped), and its result was its start */
-  /* The forces on the boundaries with a prescribed velocity (forces.h), written with every output of the
-   * navier_stokes model: computed after the solve of a step that writes (its mass term and history are then at
-   * hand), or at the write from the steady residual (the initial state) */
+  /* The forces on the boundaries with force = true (forces.h), written with every output: computed after the
+   * solve of a step that writes (its mass term and history are then at hand), or at the write from the steady
+   * residual (the initial state) */
   unsigned char *force_want, *force_work;
   double *force;
   int force_valid;
@@ -524,7 +524,9 @@ static int write_forces(sl_flow *f, sl_output *out, const double *u, sl_diag *d)
     for (int i = 0; i < m->dim && !rc; ++i) {
       char name[300];
       snprintf(name, sizeof name, "force_%c_%s", axes[i], m->boundary_names[b]);
-      rc = sl_output_write_scalar(out, name, f->force[f->th->n_comp * b + i], d);
+      /* planar: per metre of depth; axisymmetric: on the whole surface of revolution */
+      rc = sl_output_write_scalar_unit(out, name, f->prob.opts.axisymmetric ? "N" : "N/m", f->force[f->th->n_comp * b + i],
+                                       d);
     }
   }
   f->force_valid = 0;
@@ -1026,11 +1028,11 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
     goto fail;
   }
   if ((rc = stream_setup(f, d))) goto fail;
-  if (!f->riding && dim == 2) { /* the navier_stokes model: forces on the boundaries with a prescribed velocity */
+  if (dim == 2) { /* the forces on the boundaries that ask for them ([boundary.NAME] force = true) */
     int any = 0;
     f->force_want = calloc((size_t)f->bcs.n + 1, 1);
     for (int i = 0; i < f->bcs.n && f->force_want; ++i)
-      any |= f->force_want[i] = f->bcs.b[i].type == NS_WALL || f->bcs.b[i].type == NS_VELOCITY;
+      any |= f->force_want[i] = (f->bcs.b[i].type == NS_WALL || f->bcs.b[i].type == NS_VELOCITY) && f->bcs.b[i].in->force;
     f->force = calloc((size_t)f->th->n_comp * (f->bcs.n + 1), sizeof *f->force);
     f->force_work = malloc((size_t)f->th->n_vel + 1);
     if (!f->force_want || !f->force || !f->force_work) {
