@@ -119,8 +119,9 @@ static int check_read_mesh(const char *path, const sl_mesh *m, sl_diag *d) {
   return 0;
 }
 
-/* A physical boundary the scene does not name gets the model's default type
- * (a wall for the flow models): say so, once per boundary. */
+/* A physical boundary the scene does not name (by its own section or as the
+ * partner of a periodic pair) gets the model's default type (a wall for the
+ * flow models): say so, once per boundary. */
 static void warn_unnamed(const sl_scene *sc, const char *path, const sl_mesh *m) {
   const sl_key *type = sc->schema ? sl_schema_key(sc->schema, "boundary", "type") : NULL;
   char def[64] = "its default";
@@ -133,6 +134,14 @@ static void warn_unnamed(const sl_scene *sc, const char *path, const sl_mesh *m)
     char name[300];
     snprintf(name, sizeof name, "boundary.%s", m->boundary_names[b]);
     if (sl_ini_find_section(sc->ini, name)) continue;
+    int partner = 0; /* the partner of a periodic pair takes its type from the pair */
+    for (int i = 0; i < sc->ini->n_sections && !partner; ++i) {
+      const sl_ini_section *sec = &sc->ini->sections[i];
+      if (strncmp(sec->name, "boundary.", 9) != 0) continue;
+      const sl_ini_entry *e = sl_ini_find(sc->ini, sec->name, "partner");
+      partner = e && strcmp(e->value, m->boundary_names[b]) == 0;
+    }
+    if (partner) continue;
     fprintf(stderr,
             "sluice: warning: %s: the physical boundary '%s' has no [%s] section in the scene: it gets %s\n",
             path, m->boundary_names[b], name, def);
