@@ -48,7 +48,8 @@ static const sl_key mesh_keys[] = {
      .help = "gmsh: the mesh file (MSH 2.2 ASCII, 4.1 ASCII or binary; order 1 or 2), relative to the scene"},
     {.section = "mesh", .name = "memory_limit", .type = SL_KEY_REAL, SL_AT_SCENE(mesh_config.memory_limit), .min = 0.0,
      .max = 1e18, .units = "B", .def_doc = "the machine's memory (MemTotal in /proc/meminfo)",
-     .help = "refuse a generated mesh whose run needs more (estimated before anything is allocated)"},
+     .help = "refuse a mesh whose run needs more (estimated before anything is allocated: at least 16 kB a cell in "
+             "2-D, 1 kB in 1-D)"},
     {.section = "mesh", .name = "split_quads", .type = SL_KEY_BOOL, SL_AT_SCENE(mesh_config.split_quads),
      .help = "gmsh: split each quadrangle into two triangles along its shorter diagonal (a mesh of triangles and "
              "quadrangles then runs on P2/P1)"},

@@ -41,17 +41,22 @@ static double machine_memory(void) {
 
 /* Refuses, before anything is allocated, a mesh whose run cannot fit: the
  * estimate against [mesh] memory_limit, or the machine's memory. */
-static int check_memory(const sl_scene *sc, double n_cells, int dim, sl_diag *d) {
+static int check_memory_at(const sl_scene *sc, const char *where, double n_cells, int dim, sl_diag *d) {
   double need = n_cells * (dim == 1 ? BYTES_PER_CELL_1D : BYTES_PER_CELL_2D);
   double limit = sc->mesh_config.memory_limit, have = limit > 0 ? limit : machine_memory();
   if (!(have > 0) || need <= have) return 0;
-  const sl_src *e = sl_scene_src(sc, &sc->mesh_config.cells);
   return sl_diag_set(d, SL_EBADINPUT,
-                     "%s:%d: [mesh] cells: %.0f cells need at least %.3g GB (%.0f kB a cell; a direct solver's "
-                     "factorisation needs several times more), more than the %.3g GB %s; set [mesh] memory_limit = "
-                     "<bytes> to allow it",
-                     e ? e->file : "?", e ? e->line : 0, n_cells, need / 1e9, need / n_cells / 1024, have / 1e9,
+                     "%s: %.0f cells need at least %.3g GB (%.0f kB a cell; a direct solver's factorisation needs "
+                     "several times more), more than the %.3g GB %s; set [mesh] memory_limit = <bytes> to allow it",
+                     where, n_cells, need / 1e9, need / n_cells / 1024, have / 1e9,
                      limit > 0 ? "of [mesh] memory_limit" : "this machine has (MemTotal in /proc/meminfo)");
+}
+
+static int check_memory(const sl_scene *sc, double n_cells, int dim, sl_diag *d) {
+  const sl_src *e = sl_scene_src(sc, &sc->mesh_config.cells);
+  char where[600];
+  snprintf(where, sizeof where, "%s:%d: [mesh] cells", e ? e->file : "?", e ? e->line : 0);
+  return check_memory_at(sc, where, n_cells, dim, d);
 }
 
 /* The graded points of one direction must give cells of a size the solver
@@ -269,7 +274,10 @@ int sl_scene_mesh_build(const sl_scene *sc, sl_mesh **out, sl_diag *d) {
       if (!path) return sl_diag_set(d, SL_ENOMEM, "mesh: out of memory");
       sl_gmsh_opts go = {.split_quads = c->split_quads};
       rc = sl_mesh_read_gmsh_opts(path, &go, out, d);
-      if (!rc && (rc = check_read_mesh(path, *out, d))) sl_mesh_destroy(*out), *out = NULL;
+      /* a mesh file's run: estimated once the mesh is read, before the model allocates its systems */
+      if (!rc && ((rc = check_read_mesh(path, *out, d)) ||
+                  (rc = check_memory_at(sc, path, (*out)->n_cells, (*out)->dim, d))))
+        sl_mesh_destroy(*out), *out = NULL;
       if (!rc) warn_unnamed(sc, path, *out);
       free(path);
       return rc;
