@@ -11,6 +11,7 @@
 #include "core/fe/field.h"
 #include "core/fv/face_flux.h"
 #include "core/fv/stream_function.h"
+#include "core/models/navier_stokes/forces.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/point_eval.h"
 #include "core/scene/solver.h"
@@ -467,6 +468,12 @@ struct sl_flow {
   int unforced;       /* walls at rest all round, no body force, no rotation: only the rider loads it */
   int fixed_point;    /* the last accepted solve returned its start and the rider's phi has not changed since */
   int solved, solved_to_start; /* the last step's: solved (not skipped), and its result was its start */
+  /* The forces on the boundaries with force = true (forces.h), written with every output: computed after the
+   * solve of a step that writes (its mass term and history are then at hand), or at the write from the steady
+   * residual (the initial state) */
+  unsigned char *force_want, *force_work;
+  double *force;
+  int force_valid;
   /* what the nonlinear iterations are reported with (sc->hooks): the time solved for, the continuation stage */
   double t_solve;
   long stage, n_stages;
@@ -509,9 +516,39 @@ int sl_flow_write_mesh(sl_flow *f, sl_output *out, sl_diag *d) {
                               th->vel->dofs_per_cell, th->vel->cell_nodes, topo[th->mesh->cell_type], d);
 }
 
+/* The forces of u into f->force; steady: without the time derivative. */
+static int compute_forces(sl_flow *f, const double *u, int steady, sl_diag *d) {
+  double mass = f->prob.opts.mass_coef;
+  const double *history = f->prob.opts.history;
+  if (steady) f->prob.opts.mass_coef = 0.0, f->prob.opts.history = NULL;
+  int rc = sl_flow_forces(&f->prob, u, f->force_want, f->force_work, f->force, d);
+  f->prob.opts.mass_coef = mass, f->prob.opts.history = history;
+  f->force_valid = rc == 0;
+  return rc;
+}
+
+static int write_forces(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
+  if (!f->force) return 0;
+  int rc = f->force_valid ? 0 : compute_forces(f, u, 1, d);
+  const sl_mesh *m = f->mesh;
+  const char *axes = f->prob.opts.axisymmetric ? "rz" : "xy";
+  for (int b = 0; b < m->n_boundaries && !rc; ++b) {
+    if (!f->force_want[b]) continue;
+    for (int i = 0; i < m->dim && !rc; ++i) {
+      char name[300];
+      snprintf(name, sizeof name, "force_%c_%s", axes[i], m->boundary_names[b]);
+      /* planar: per metre of depth; axisymmetric: on the whole surface of revolution */
+      rc = sl_output_write_scalar_unit(out, name, f->prob.opts.axisymmetric ? "N" : "N/m", f->force[f->th->n_comp * b + i],
+                                       d);
+    }
+  }
+  f->force_valid = 0;
+  return rc;
+}
+
 int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
   const sl_th_space *th = f->th;
-  int rc = 0;
+  int rc = write_forces(f, out, u, d);
   if (f->fields & F_VELOCITY) {
     /* in the frame: in-plane components, then the out-of-plane one as component 2; axisymmetric, the
      * swirl is not a direction of the (r, z) plane: velocity (u_r, u_z, 0) and u_theta beside it */
@@ -681,6 +718,7 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
     return -rc;
   size_t bytes = (size_t)f->th->n_dofs * sizeof *s->u;
   f->solved = 0;
+  f->force_valid = 0;
   f->ph.t = f->t_solve = s->t + s->dt;
   /* Skip what is known: a vessel at rest under no load stays at rest; a closed column's velocity is 0 and its
      pressure is needed only when written; a flow at a fixed point whose phi has not changed gives itself again. */
@@ -703,6 +741,7 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
   rc = solve(f, s->u, iterations, d);
   if (rc == 0 && (rc = check_growth(f, s->u, s->t + s->dt, d))) return -rc;
   f->solved = 1;
+  if (rc == 0 && f->force && s->writes && (rc = compute_forces(f, s->u, 0, d))) return -rc;
   if (rc == 0 && f->column_at_rest) memset(s->u, 0, (size_t)f->th->p_offset * sizeof *s->u);
   f->solved_to_start = rc == 0 && s->state && memcmp(s->u, s->state, bytes) == 0;
   return sl_step_code(rc);
@@ -766,6 +805,7 @@ int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag
       sl_diag_prefix(d, rc, "steady solve");
       return diag_append(d, rc, "; the state saved is the last Newton iterate, not a solution");
     }
+    f->force_valid = 0;
     r->converged = 1;
     if (f->nopts.linear)
       snprintf(r->stop_reason, sizeof r->stop_reason, "steady state solved: a linear problem, one solve (residual %.2g)",
@@ -1007,6 +1047,19 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
     goto fail;
   }
   if ((rc = stream_setup(f, d))) goto fail;
+  if (dim == 2) { /* the forces on the boundaries that ask for them ([boundary.NAME] force = true) */
+    int any = 0;
+    f->force_want = calloc((size_t)f->bcs.n + 1, 1);
+    for (int i = 0; i < f->bcs.n && f->force_want; ++i)
+      any |= f->force_want[i] = (f->bcs.b[i].type == NS_WALL || f->bcs.b[i].type == NS_VELOCITY) && f->bcs.b[i].in->force;
+    f->force = calloc((size_t)f->th->n_comp * (f->bcs.n + 1), sizeof *f->force);
+    f->force_work = malloc((size_t)f->th->n_vel + 1);
+    if (!f->force_want || !f->force || !f->force_work) {
+      rc = sl_diag_set(d, SL_ENOMEM, "out of memory");
+      goto fail;
+    }
+    if (!any) free(f->force_want), free(f->force), free(f->force_work), f->force_want = f->force_work = NULL, f->force = NULL;
+  }
   if ((rc = check_body_force(sc, &f->ph, d))) goto fail;
   if ((rc = initial_velocity(sc, fc, f->th, f->u, d))) goto fail;
   velocity_scale(f);
@@ -1023,6 +1076,7 @@ void sl_flow_destroy(sl_flow *f) {
   if (!f) return;
   free(f->u), free(f->work), free(f->cellbuf);
   free(f->q), free(f->psi), free(f->node_psi);
+  free(f->force_want), free(f->force_work), free(f->force);
   sl_stream_graph_free(&f->pg);
   sl_face_flux_destroy(f->ff);
   sl_linsolve_destroy(f->ls);

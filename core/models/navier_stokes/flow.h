@@ -14,7 +14,8 @@
  *            rotation_centre
  *   [boundary.NAME] type = wall | velocity | slip | axis | open | pressure
  *            | traction | periodic; velocity = expressions of x, y, t;
- *            pressure; traction; partner
+ *            pressure; traction; partner; force (wall, velocity: the
+ *            boundary force as the output scalars force_x_NAME, force_y_NAME)
  *   [initial] velocity = expressions of x, y
  *   [time]   scheme = steady | bdf1 | bdf2, end, dt, tolerance, adaptive,
  *            dt_min, dt_max, max_steps
@@ -44,6 +45,7 @@ typedef struct ns_boundary {
   sl_reals traction;
   const char *partner;
   double phi; /* the mixture: the solids fraction of inflow on an open boundary */
+  int force;  /* write the force of the fluid on this boundary (wall, velocity) with every output */
 } ns_boundary;
 
 /* The key tables the two models share (navier_stokes.c). */

@@ -109,6 +109,10 @@ static const sl_key boundary_keys[] = {
      .when_type = ON(NS_TRACTION), .help = "the traction per component"},
     {.section = "boundary", .name = "partner", .type = SL_KEY_STRING, B(partner), .def_text = "",
      .when_type = ON(NS_PERIODIC), .help = "the opposite boundary of a periodic pair (on one side of the pair)"},
+    {.section = "boundary", .name = "force", .type = SL_KEY_BOOL, B(force), .when_type = ON(NS_WALL) | ON(NS_VELOCITY),
+     .help = "write the force of the fluid on this boundary with every output, as the scalars force_x_NAME and "
+             "force_y_NAME (force_r_, force_z_ axisymmetric; N/m planar, N axisymmetric): minus the momentum "
+             "residual on its nodes (John 2004)"},
 };
 TABLE(sl_flow_keys_boundary, boundary_keys);
 
