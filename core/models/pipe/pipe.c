@@ -26,7 +26,7 @@ static double wall_grading(double R, double w, int n) {
 
 static void release(pipe *p) {
   double **a[] = {&p->uf, &p->us, &p->phi, &p->k, &p->eps, &p->theta, &p->mu_t, &p->mu_tk, &p->mu_te,
-                  &p->eps_prod, &p->eps_sink, &p->K, &p->mu_s, &p->rhs, &p->x, &p->face_flux};
+                  &p->eps_prod, &p->eps_sink, &p->K, &p->mu_s, &p->rhs, &p->x, &p->face_flux, &p->Kd, &p->slip0};
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i) free(*a[i]);
   for (int i = 0; i < 12; ++i) free(p->buf[i]);
   sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls};
@@ -40,11 +40,25 @@ static void release(pipe *p) {
   free(p);
 }
 
+/* Churchill (1977), the Fanning friction factor of a smooth pipe (Krampa 2009 eqs 2.12-2.13 with k = 0). */
+static double churchill(double Re) {
+  double A = pow(-2.457 * log(pow(7.0 / Re, 0.9)), 16.0), B = pow(37530.0 / Re, 16.0);
+  return 2.0 * pow(pow(8.0 / Re, 12.0) + pow(A + B, -1.5), 1.0 / 12.0);
+}
+
 static int build_grid(pipe *p, sl_diag *d) {
   const pipe_config *c = p->cfg;
   int n = p->n;
   double w = sl_scene_given(p->sc, &c->wall_cell) ? c->wall_cell : p->R / n;
-  char at[400];
+  char at[400], at2[400];
+  if (sl_scene_given(p->sc, &c->wall_y_plus)) {
+    if (sl_scene_given(p->sc, &c->wall_cell))
+      return sl_diag_set(d, SL_EBADINPUT, "%s and %s: give one of the two",
+                         sl_scene_where(p->sc, &c->wall_cell, at, sizeof at),
+                         sl_scene_where(p->sc, &c->wall_y_plus, at2, sizeof at2));
+    double V = c->bulk_velocity, nu = p->mu_f / p->rho_f, ut = V * sqrt(0.5 * churchill(V * c->diameter / nu));
+    w = 2.0 * c->wall_y_plus * nu / ut;
+  }
   if (w > 0.5 * p->R)
     return sl_diag_set(d, SL_EBADINPUT, "%s = %g: the wall cell must be at most half the radius, %g",
                        sl_scene_where(p->sc, &c->wall_cell, at, sizeof at), w, 0.5 * p->R);
@@ -84,7 +98,7 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
   const int n = p->n;
   if (!rc) {
     double **a[] = {&p->uf, &p->us, &p->phi, &p->k, &p->eps, &p->theta, &p->mu_t, &p->mu_tk, &p->mu_te,
-                    &p->eps_prod, &p->eps_sink, &p->K, &p->mu_s};
+                    &p->eps_prod, &p->eps_sink, &p->K, &p->mu_s, &p->Kd, &p->slip0};
     for (size_t i = 0; i < sizeof a / sizeof a[0] && !rc; ++i)
       if (!(*a[i] = calloc((size_t)n, sizeof(double)))) rc = sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
     for (int i = 0; i < 12 && !rc; ++i)

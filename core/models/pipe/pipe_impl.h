@@ -14,7 +14,7 @@
 enum { PIPE_NO_SLIP = 0, PIPE_FREE_SLIP, PIPE_WALL_STRESS };
 
 typedef struct pipe_config {
-  double diameter, bulk_velocity, solids_fraction, wall_cell;
+  double diameter, bulk_velocity, solids_fraction, wall_cell, wall_y_plus;
   long cells, iterations;
   double tolerance, relaxation, pseudo_step;
   int solids_wall;
@@ -41,6 +41,7 @@ typedef struct pipe {
   double G; /* dP/dz */
   /* coefficients (cells) */
   double *mu_t, *mu_tk, *mu_te, *eps_prod, *eps_sink, *K, *mu_s;
+  double *Kd, *slip0; /* d(K s)/ds at the last slip, and that slip u_f - u_s (the drag's Newton linearisation) */
   double c_mu;
   /* wall */
   double tau_fw, tau_sw, u_tau, y_plus, k_wall, eps_wall, a_fw, a_sw;

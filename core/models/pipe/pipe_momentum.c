@@ -2,6 +2,7 @@
  * pressure gradient G in one bordered linear system, the viscosities, the
  * drag and the wall coefficients of the last iterate:
  *   sum_faces a (u_i - u_nb) + A_w a_w u_i + K V (u_i - u_other) + c V G = c rho g_z V   (each phase)
+ * with the drag K(s)(u_f - u_s) linearised about the last slip (Newton in the drag alone),
  *   sum_cells V (c_f u_f + c_s u_s) = V_bulk sum_cells V                                   (the flow rate)
  * a = the face's mean of the cells' effective viscosities times area over
  * distance, a_w the wall's tau_w/u of the wall cell (the wall function or the
@@ -65,10 +66,11 @@ int pipe_momentum_solve(pipe *p, sl_diag *d) {
     int f = 2 * i, s = 2 * i + 1;
     add(A, f, iG, cf * V), b[f] = cf * p->rho_f * p->gz * V;
     if (p->two_phase) {
-      double KV = p->K[i] * V;
-      add(A, f, f, KV), add(A, f, s, -KV);
+      /* the drag K(s)(u_f - u_s) about the last slip s0: Kd (u_f - u_s) + (K - Kd) s0 */
+      double KV = p->Kd[i] * V, F0 = (p->K[i] - p->Kd[i]) * p->slip0[i] * V;
+      add(A, f, f, KV), add(A, f, s, -KV), b[f] -= F0;
       add(A, s, s, KV), add(A, s, f, -KV);
-      add(A, s, iG, cs * V), b[s] = cs * p->rho_s * p->gz * V;
+      add(A, s, iG, cs * V), b[s] = cs * p->rho_s * p->gz * V + F0;
     } else { /* no solids: u_s follows u_f */
       double a = muf[i] * g->area[i + 1] / g->dist[i + 1] + 1e-300;
       add(A, s, s, a), add(A, s, f, -a);

@@ -13,7 +13,7 @@ static const sl_key pipe_keys[] = {
     {.section = "pipe", .name = "bulk_velocity", .type = SL_KEY_REAL, C(bulk_velocity), .flags = SL_KEY_REQUIRED,
      .min = 1e-3, .max = 100.0, .units = "m s^-1",
      .help = "the mixture's bulk velocity V = Q/A along the flow (the pressure gradient is what meets it)"},
-    {.section = "pipe", .name = "solids_fraction", .type = SL_KEY_REAL, C(solids_fraction), .min = 0.0, .max = 0.6,
+    {.section = "pipe", .name = "solids_fraction", .type = SL_KEY_REAL, C(solids_fraction), .min = 0.0, .max = 0.73,
      .help = "the section-mean solids fraction, held (0: water alone)"},
     {.section = "pipe", .name = "cells", .type = SL_KEY_INT, C(cells), .def = 40, .min = 4, .max = 4000,
      .help = "radial cells"},
@@ -21,6 +21,9 @@ static const sl_key pipe_keys[] = {
      .def_doc = "R / cells (uniform)",
      .help = "the width of the cell at the wall; the others grow geometrically towards the axis (its centre is the "
              "wall function's node: y+ of 30-200)"},
+    {.section = "pipe", .name = "wall_y_plus", .type = SL_KEY_REAL, C(wall_y_plus), .min = 1.0, .max = 1e4,
+     .help = "instead of wall_cell: the wall cell's centre at this y+ of water alone at the bulk velocity (u_tau from "
+             "Churchill's 1977 smooth-pipe friction factor)"},
     {.section = "pipe", .name = "iterations", .type = SL_KEY_INT, C(iterations), .def = 5000, .min = 1, .max = 1000000,
      .help = "most outer iterations of the steady solve"},
     {.section = "pipe", .name = "tolerance", .type = SL_KEY_REAL, C(tolerance), .def = 1e-8, .min = 1e-14,

@@ -26,7 +26,8 @@
 
 #include "core/models/pipe/pipe_impl.h"
 
-/* |du_s/dr| in the cells, from the face gradients (zero at the axis; the wall face's from the wall stress). */
+/* |du_s/dr| in the cells, from the face gradients (zero at the axis; the wall face's from the last wall stress
+   over the last solids viscosity: called before mu_s is renewed). */
 static void solids_shear(const pipe *p, double *gd) {
   const sl_fv_grid *g = &p->g;
   const int n = p->n;
@@ -56,24 +57,28 @@ static int granular_theta(pipe *p, const double *gd, sl_diag *d) {
       else hi[i] = 0.5 * (lo[i] + hi[i]);
     }
   }
-  for (int i = 0; i < n; ++i) p->theta[i] = exp(0.5 * (lo[i] + hi[i]));
+  const double w = p->iterations > 0 ? p->cfg->relaxation : 1.0; /* under-relaxed as the velocities */
+  for (int i = 0; i < n; ++i) p->theta[i] += w * (exp(0.5 * (lo[i] + hi[i])) - p->theta[i]);
   return 0;
 }
 
 int pipe_solids_coefficients(pipe *p, sl_diag *d) {
   const int n = p->n;
-  double *slip = p->buf[0], *gd = p->buf[4];
-  for (int i = 0; i < n; ++i) slip[i] = fabs(p->uf[i] - p->us[i]);
+  double *slip = p->buf[0], *gd = p->buf[4], *dK = p->buf[1];
+  for (int i = 0; i < n; ++i) p->slip0[i] = p->uf[i] - p->us[i], slip[i] = fabs(p->slip0[i]);
   const double *v[PQ_N] = {0};
   v[PQ_PHI] = p->phi, v[PQ_SLIP] = slip;
-  sl_point_request rq = {"K", p->K, NULL, NULL};
+  sl_point_request rq = {"K", p->K, dK, "slip"};
   int rc = sl_point_eval(&p->drag, n, v, &rq, 1, d);
   if (rc) return sl_diag_prefix(d, rc, "[closure.drag]");
+  /* the drag force K(s) s linearised about the last slip: its slope d(K s)/ds = K + s dK/ds (the lagged K alone
+     oscillates where K grows with s, K ~ s at high particle Reynolds numbers) */
+  for (int i = 0; i < n; ++i) p->Kd[i] = fmax(p->K[i] + slip[i] * dK[i], p->K[i] * 1e-3);
   /* mu_s: the dispersed phase's eddy viscosity, the constant, the kinetic theory's */
+  if (p->have_gran) solids_shear(p, gd);
   for (int i = 0; i < n; ++i)
     p->mu_s[i] = p->phi[i] * p->rho_s * (p->mu_t[i] / p->rho_f) / p->cfg->solids_schmidt + p->sc->solid.viscosity;
   if (p->have_gran) {
-    solids_shear(p, gd);
     if ((rc = granular_theta(p, gd, d))) return rc;
     double *mu = p->buf[5];
     v[PQ_THETA] = p->theta;
