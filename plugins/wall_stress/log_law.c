@@ -9,7 +9,12 @@
  *   k = u_tau^2 / sqrt(C_mu),  epsilon = u_tau^3 / (kappa y).
  * E = 9.793 (Krampa 2009 eq 4.84, CFX-4's); kappa 0.41 (0.4187 is CFX-4's
  * pairing with E = 9.793). The law holds for y+ of about 30-200 (Krampa
- * 2009 section 2.9); a model warns outside it. */
+ * 2009 section 2.9); a model warns outside it. A rough wall (sand-grain
+ * height k_s = roughness) shifts the law down by
+ *   Delta B = (1/kappa) ln(1 + C_s k_s+),  k_s+ = rho u_tau k_s / mu,
+ * i.e. E becomes E/(1 + C_s k_s+) (Cebeci & Bradshaw 1977, Momentum Transfer
+ * in Boundary Layers, their fully rough form; C_s = 0.5 for uniform sand
+ * grains). */
 #include <math.h>
 #include <stddef.h>
 #include <sluice/closure.h>
@@ -17,7 +22,7 @@
 #include "granular/inputs.h"
 
 typedef struct log_law_params {
-  double kappa, e, c_mu;
+  double kappa, e, c_mu, roughness, roughness_constant;
 } log_law_params;
 
 enum { IN_SLIP_WALL, IN_WALL_DISTANCE, IN_RHO_F, IN_MU_F, N_IN };
@@ -28,6 +33,9 @@ static const sl_param_desc params[] = {
     SL_PARAM_REAL_OF(log_law_params, e, 9.793, 1.0, 30.0, "1", "E of the smooth-wall log law"),
     SL_PARAM_REAL_OF(log_law_params, c_mu, 0.09, 1e-3, 1.0, "1",
                      "C_mu of the k-epsilon model, in k at the wall node"),
+    SL_PARAM_REAL_OF(log_law_params, roughness, 0.0, 0.0, 1.0, "m", "equivalent sand-grain roughness k_s (0: smooth)"),
+    SL_PARAM_REAL_OF(log_law_params, roughness_constant, 0.5, 0.0, 10.0, "1",
+                     "C_s of the roughness shift ln(1 + C_s k_s+)/kappa"),
 };
 
 static const sl_field_desc inputs[] = {
@@ -76,15 +84,21 @@ static int evaluate(const void *state, const sl_eval_args *a) {
     double nu = mu[q] / rho[q], u = U[q], h = y[q];
     double ut = sqrt(nu * u / h), dtau_du = mu[q] / h; /* the sublayer's */
     if (ut * h / nu > yc) {
-      /* Newton on F(ut) = ut ln(E h ut/nu) - kappa U from the sublayer's ut (F is increasing and convex there) */
-      for (int it = 0; it < 100; ++it) {
-        double L = log(p->e * h * ut / nu), F = ut * L - p->kappa * u, dF = L + 1.0;
-        double step = F / dF;
-        ut -= step;
+      /* Newton on F(ut) = ut [ln(E h ut/nu) - ln(1 + C_s k_s ut/nu)] - kappa U from the sublayer's ut (the bracket
+         grows with ut: one root), a step never more than to a tenth of ut */
+      const double cr = p->roughness_constant * p->roughness / nu;
+      double dF = 1.0;
+      for (int it = 0; it < 200; ++it) {
+        double L = log(p->e * h * ut / nu) - log1p(cr * ut), F = ut * L - p->kappa * u;
+        dF = L + 1.0 - cr * ut / (1.0 + cr * ut);
+        double next = dF > 0.0 ? ut - F / dF : 0.1 * ut;
+        if (next < 0.1 * ut) next = 0.1 * ut;
+        double step = ut - next;
+        ut = next;
         if (fabs(step) <= 1e-15 * ut) break;
       }
-      double f = log(p->e * h * ut / nu) / p->kappa; /* U = ut f(ut), dU/dut = f + 1/kappa */
-      dtau_du = 2.0 * rho[q] * ut / (f + 1.0 / p->kappa);
+      dF = log(p->e * h * ut / nu) - log1p(cr * ut) + 1.0 - cr * ut / (1.0 + cr * ut); /* kappa dU/dut */
+      dtau_du = 2.0 * rho[q] * ut * p->kappa / dF;
     }
     double tau = rho[q] * ut * ut;
     if (!(ut >= 0.0) || !isfinite(tau)) return sl_fail(a->err, SL_RECOVERABLE, q, "the log law has no root for U = %g", u);
@@ -111,10 +125,12 @@ static const sl_closure_desc log_law = {
     .version = "1.0.0",
     .summary = "standard wall function (Launder & Spalding 1974): the fluid's wall shear stress from the smooth-wall "
                "log law, with k and epsilon at the wall node",
-    .formula = "slip_wall/u_tau = ln(e y+)/kappa, y+ = rho_f u_tau wall_distance/mu_f (y+ above the crossover with "
+    .formula = "slip_wall/u_tau = ln(e y+/(1 + roughness_constant k_s+))/kappa, y+ = rho_f u_tau wall_distance/mu_f, "
+               "k_s+ = rho_f u_tau roughness/mu_f (y+ above the crossover with "
                "U+ = y+; below it tau_w = mu_f slip_wall/wall_distance)\n"
                "tau_w = rho_f u_tau^2, k_wall = u_tau^2/sqrt(c_mu), epsilon_wall = u_tau^3/(kappa wall_distance)",
-    .reference = "Launder & Spalding (1974) Comput. Methods Appl. Mech. Eng. 3:269; Krampa (2009) eqs 4.84-4.86",
+    .reference = "Launder & Spalding (1974) Comput. Methods Appl. Mech. Eng. 3:269; Krampa (2009) eqs 4.84-4.86; "
+                 "Cebeci & Bradshaw (1977) for the roughness",
     .validity = "a smooth wall with the first node in the log layer, y+ of about 30-200 (the sublayer's linear law "
                 "below the crossover)",
     .n_params = SL_COUNT_OF(params),

@@ -12,9 +12,9 @@
  *    carries the particles' excess weight in the pressure gradient,
  *      K s = -c_s (rho_s - rho_f) G / rho_f / (1 + c_s rho_s/(c_f rho_f)),
  *    checked at the axis with Stokes drag (K = 18 mu phi/d^2) within 1 %;
- *  - with the kinetic theory (Lun et al. 1984), the granular temperature is
- *    highest at the wall and its pressure drives solids from the wall: phi
- *    at the wall below the mean, the mean held;
+ *  - with the kinetic theory's pressure (Lun et al. 1984; kinetic_pressure =
+ *    true), the granular temperature is highest at the wall and its pressure
+ *    drives solids from the wall: phi at the wall below the mean;
  *  - a solids fraction above phi_max - 0.01 is refused before the run. */
 #include <math.h>
 #include <stdio.h>
@@ -162,8 +162,9 @@ static void dispersion_alone(void) {
 }
 
 static void kinetic_theory(void) {
+  const char *sets[] = {"pipe.kinetic_pressure=true", NULL};
   sluice_error e = {0, ""};
-  if (run(NULL, NULL, NULL, "pipe_kt.h5", &e)) {
+  if (run(NULL, NULL, sets, "pipe_kt.h5", &e)) {
     CHECK_MSG(0, "%s", e.msg);
     return;
   }

@@ -17,7 +17,7 @@ typedef struct pipe_config {
   double diameter, bulk_velocity, solids_fraction, wall_cell, wall_y_plus;
   long cells, iterations;
   double tolerance, relaxation, pseudo_step;
-  int solids_wall;
+  int solids_wall, kinetic_pressure;
   double solids_schmidt, dispersion_schmidt;
 } pipe_config;
 

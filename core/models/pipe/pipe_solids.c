@@ -19,7 +19,11 @@
  *   phi v - D phi' = 0,  D = nu_t/sigma_d + c_s c_f^2 (dp_s/dphi)/K,
  *   v = -c_f^2 (dp_s/dtheta) theta'/K,
  * a cell scalar (core/fv/cell_scalar.h) with no flux through the axis and the
- * wall. Its pseudo-time step keeps the section's solids inventory; phi is
+ * wall. The kinetic theory's pressure joins with [pipe] kinetic_pressure:
+ * where phi is small its theta grows as 1/phi^2 (the dissipation falls with
+ * phi^2, the dilute viscosity does not) and rho_s phi theta with it, so that
+ * it drives solids from where they are fewest; in dilute flow (5 %) this runs
+ * away near the wall and the steady solve does not converge. Its pseudo-time step keeps the section's solids inventory; phi is
  * kept below phi_max - 0.01 and the inventory restored to the given mean. */
 #include <math.h>
 #include <string.h>
@@ -128,7 +132,8 @@ int pipe_solids_update(pipe *p, sl_diag *d) {
     if ((rc = sl_point_eval(&p->psol, n, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.solids_pressure]");
     for (int i = 0; i < n; ++i) B[i] += dps[i];
   }
-  if (p->have_gran) {
+  const int kinetic = p->have_gran && p->cfg->kinetic_pressure;
+  if (kinetic) {
     double *ps = p->buf[4], *dph = p->buf[7];
     sl_point_request rq[2] = {{"p_s", ps, dph, "phi"}, {"p_s", ps, Pt, "theta"}};
     if ((rc = sl_point_eval(&p->gran, n, v, rq, 2, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
@@ -142,14 +147,14 @@ int pipe_solids_update(pipe *p, sl_diag *d) {
     cap[i] = 1.0;
   }
   memset(flux, 0, (size_t)g->nf * sizeof *flux);
-  for (int i = 0; i + 1 < n && p->have_gran; ++i) {
+  for (int i = 0; i + 1 < n && kinetic; ++i) {
     int f = i + 1;
     double cf = 1.0 - 0.5 * (p->phi[i] + p->phi[i + 1]), K = 0.5 * (p->K[i] + p->K[i + 1]);
     double vr = -cf * cf * 0.5 * (Pt[i] + Pt[i + 1]) * (p->theta[i + 1] - p->theta[i]) / g->dist[f] / K;
     flux[f] = vr * g->area[f];
   }
   sl_cell_scalar_terms t = {.dt = 1e3 * p->R * p->R / fmax(Dmax, 1e-300), .cap = cap, .s_old = p->phi, .k = D,
-                            .flux = p->have_gran ? flux : NULL};
+                            .flux = kinetic ? flux : NULL};
   rc = sl_cell_scalar_solve(&p->cs, &t, s, d);
   if (rc) return sl_diag_prefix(d, rc, "pipe: the radial solids balance");
   /* bound and restore the inventory */
