@@ -15,6 +15,9 @@
  *  - with the kinetic theory's pressure (Lun et al. 1984; kinetic_pressure =
  *    true), the granular temperature is highest at the wall and its pressure
  *    drives solids from the wall: phi at the wall below the mean;
+ *  - stability: 2.4 mm sand at 30 % (up-flow at 3.02 m/s, down-flow at 1
+ *    m/s) and 0.5 mm beads at phi_max - 0.01 = 0.62 (up at 2 m/s, down at 1
+ *    m/s) converge, with a finite state and the mixture's momentum held;
  *  - a solids fraction above phi_max - 0.01 is refused before the run. */
 #include <math.h>
 #include <stdio.h>
@@ -177,6 +180,38 @@ static void kinetic_theory(void) {
   CHECK_MSG(pp.v[n - 1] < 0.25 && pp.v[0] > 0.25, "the solids are not driven from the wall");
 }
 
+static void stability(void) {
+  static const struct {
+    const char *name, *sets[6];
+    double gz, rho_s;
+  } cases[4] = {
+      {"2.4 mm sand, 30 %, up, 3.02 m/s",
+       {"solid.diameter=2.4e-3", "solid.density=2650", "pipe.solids_fraction=0.3", "flow.gravity=-9.81", NULL},
+       -9.81, 2650.0},
+      {"2.4 mm sand, 30 %, down, 1 m/s",
+       {"solid.diameter=2.4e-3", "solid.density=2650", "pipe.solids_fraction=0.3", "flow.gravity=9.81",
+        "pipe.bulk_velocity=1", NULL},
+       9.81, 2650.0},
+      {"0.5 mm, 62 %, up, 2 m/s", {"pipe.solids_fraction=0.62", "pipe.bulk_velocity=2", "flow.gravity=-9.81", NULL},
+       -9.81, 2500.0},
+      {"0.5 mm, 62 %, down, 1 m/s", {"pipe.solids_fraction=0.62", "pipe.bulk_velocity=1", "flow.gravity=9.81", NULL},
+       9.81, 2500.0}};
+  for (int k = 0; k < 4; ++k) {
+    sluice_error e = {0, ""};
+    if (run(NULL, NULL, cases[k].sets, "pipe_stab.h5", &e)) {
+      CHECK_MSG(0, "%s: %s", cases[k].name, e.msg);
+      continue;
+    }
+    double it = scalar("pipe_stab.h5", "iterations"), dp = scalar("pipe_stab.h5", "pressure_gradient");
+    double phi = scalar("pipe_stab.h5", "phi_mean"), rho_m = phi * cases[k].rho_s + (1.0 - phi) * rho_f;
+    double tau = scalar("pipe_stab.h5", "wall_shear_stress_fluid") + scalar("pipe_stab.h5", "wall_shear_stress_solid");
+    double bal = 4.0 * tau / D - rho_m * cases[k].gz;
+    printf("%s: converged in %.0f iterations, -dP/dz %.2f Pa/m (balance %.1e)\n", cases[k].name, it, dp,
+           dp / bal - 1.0);
+    CHECK_MSG(isfinite(dp) && fabs(dp / bal - 1.0) < 1e-6, "%s: -dP/dz %g against %g", cases[k].name, dp, bal);
+  }
+}
+
 static void refused(void) {
   const char *sets[] = {"pipe.solids_fraction=0.625", NULL};
   sluice_error e = {0, ""};
@@ -190,6 +225,7 @@ int main(void) {
   balances();
   dispersion_alone();
   kinetic_theory();
+  stability();
   refused();
   return sl_test_summary();
 }

@@ -186,7 +186,7 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
   if (!rc && (p->y_plus < 30.0 || p->y_plus > 200.0) && !p->warned_yplus) {
     p->warned_yplus = 1;
     fprintf(stderr,
-            "warning: pipe: the wall cell's centre is at y+ = %.3g, outside the wall function's 30-200 (Krampa "
+            "sluice: warning: pipe: the wall cell's centre is at y+ = %.3g, outside the wall function's 30-200 (Krampa "
             "2009 section 2.9): set [pipe] wall_cell\n",
             p->y_plus);
   }
