@@ -90,20 +90,26 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
     if ((rc = sl_point_eval(&p->gran, n, v, &r2, 1, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
     for (int i = 0; i < n; ++i) p->mu_s[i] += mu[i];
   }
-  /* the solids' wall: tau_sw = a_sw u_s of the wall cell */
+  /* the solids' wall: tau_sw = a_sw u_s of the wall cell. Across the wall cell the solids' eddy viscosity
+     c_s rho_s nu_t/sigma is bridged by the fluid's wall function, as the fluid's own is (nu_t of the log layer,
+     the same for both phases but for sigma: tau = (c_s rho_s/(sigma rho_f)) a_fw u_s), the rest of mu_s (the
+     constant, the kinetic theory's) linearly (mu/y) */
   const int w = n - 1;
   const double yp = p->R - p->g.xc[w];
+  const double turb_w = p->phi[w] * p->rho_s * (p->mu_t[w] / p->rho_f) / p->cfg->solids_schmidt;
+  const double a_ns = p->phi[w] * p->rho_s / (p->cfg->solids_schmidt * p->rho_f) * p->a_fw +
+                      fmax(p->mu_s[w] - turb_w, 0.0) / yp;
   switch (p->cfg->solids_wall) {
-  case PIPE_NO_SLIP: p->a_sw = p->mu_s[w] / yp; break;
+  case PIPE_NO_SLIP: p->a_sw = a_ns; break;
   case PIPE_FREE_SLIP: p->a_sw = 0.0; break;
   default: {
     /* a wall function (a wall_distance input: Bartosik, Bagnold) takes the wall cell's speed; a slip law
-       (Johnson & Jackson, Navier slip) the speed at the wall, u_w = mu u_p/(mu + a y), a = tau/u_w lagged */
-    double U = fabs(p->us[w]), a_old = p->a_sw > 0.0 ? p->a_sw : p->mu_s[w] / yp, uw = U, tau, dtau;
-    if (!p->walls_at_node) {
-      double a_w = a_old * p->mu_s[w] / fmax(p->mu_s[w] - a_old * yp, 1e-300); /* invert a_sw = a mu/(mu + a y) */
-      if (!(a_w > 0.0) || !isfinite(a_w)) a_w = 1e12;
-      uw = U * p->mu_s[w] / (p->mu_s[w] + a_w * yp);
+       (Johnson & Jackson, Navier slip) the speed at the wall: the bridge and the law in series, u_w = a_ns u_p/
+       (a_ns + a), a_sw = a a_ns/(a_ns + a), a = tau/u_w of the last iterate */
+    double U = fabs(p->us[w]), uw = U, tau, dtau;
+    if (!p->walls_at_node && p->a_sw > 0.0) {
+      double a = p->a_sw < a_ns ? p->a_sw * a_ns / (a_ns - p->a_sw) : 1e12 * a_ns; /* invert a_sw */
+      uw = U * a_ns / (a_ns + a);
     }
     const double *vw[PQ_N] = {0};
     double phw = p->phi[w], thw = p->theta[w], gdw = U / yp;
@@ -111,7 +117,7 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
     sl_point_request rw = {"tau_w", &tau, &dtau, "slip_wall"};
     if ((rc = sl_point_eval(&p->walls, 1, vw, &rw, 1, d))) return sl_diag_prefix(d, rc, "[closure.wall_stress.solids]");
     double a = uw > 0.0 ? tau / uw : dtau;
-    p->a_sw = p->walls_at_node ? a : a * p->mu_s[w] / (p->mu_s[w] + a * yp);
+    p->a_sw = p->walls_at_node ? a : a * a_ns / (a_ns + a);
   }
   }
   return 0;
