@@ -12,7 +12,13 @@
  * the log law that minimises the squared relative errors of its average
  * gradients (golden section in log k_s). The 5 % table is the one the thesis
  * says equals water, 12-24 % above a smooth pipe. Then every table is run
- * with it. Asserted, with the targets of the thesis's digest: the
+ * with it. Two variants of the solids stress, each calibrated on its own:
+ * Krampa's model B as configs/vertical_pipe.ini gives it (the solids' eddy
+ * viscosity and Lun et al.'s kinetic viscosity; the solids' k_s-eps_s of his
+ * model is the dispersed phase's zero-equation model here) and his model A
+ * (no kinetic theory; Bouillard's solids pressure, gidaspow_elastic with G0 =
+ * 1 Pa, C = 600, phi_max = 0.63; mu_s = 1e-8 Pa s). Asserted for both, with
+ * the targets of the thesis's digest: the
  * calibration's own table has every average within 10 % at V >= 2.5 m/s and
  * 20 % below; in every other table (25-45 %, not used in the fit) up-flow
  * and down-flow are each within 10 % of their difference; every run
@@ -38,7 +44,8 @@ typedef struct row {
 
 static row rows[MAX_ROWS];
 static int n_rows;
-static char scene[8192];
+static char scene_b[8192], scene_a[8192];
+static const char *scene = scene_b;
 static long runs, failures;
 
 static int read_file(const char *rel, char *buf, size_t cap) {
@@ -55,7 +62,7 @@ static int read_file(const char *rel, char *buf, size_t cap) {
 
 static int load(void) {
   static char csv[1 << 16];
-  if (read_file("configs/vertical_pipe.ini", scene, sizeof scene) ||
+  if (read_file("configs/vertical_pipe.ini", scene_b, sizeof scene_b) ||
       read_file("configs/data/krampa_2009_tables_c.csv", csv, sizeof csv))
     return 1;
   for (char *line = strtok(csv, "\n"); line; line = strtok(NULL, "\n")) {
@@ -66,6 +73,14 @@ static int load(void) {
       ++n_rows;
   }
   CHECK_MSG(n_rows == 76, "%d rows read (Tables C.1-C.7 have 76)", n_rows);
+  /* model A: the scene without the kinetic theory, Bouillard's solids pressure and a constant solids viscosity */
+  char *gran = strstr(scene_b, "\n[closure.granular]");
+  CHECK_MSG(gran != NULL, "vertical_pipe.ini has no [closure.granular]");
+  if (!gran) return 1;
+  snprintf(scene_a, sizeof scene_a,
+           "%.*s\n[closure.solids_pressure]\nmodel = gidaspow_elastic\nmodulus_ref = 1\ncompaction = 600\n"
+           "phi_max = 0.63\n",
+           (int)(gran - scene_b), scene_b);
   return n_rows == 76 ? 0 : 1;
 }
 
@@ -93,7 +108,7 @@ static double run_row(const row *r, int down, double ks, double *us) {
   snprintf(s[3], 80, "pipe.solids_fraction=%.10g", r->c);
   snprintf(s[4], 80, "flow.gravity=%s", down ? "9.81" : "-9.81");
   snprintf(s[5], 80, "closure.wall_stress.fluid.roughness=%.10g", ks);
-  const char *sets[] = {s[0], s[1], s[2], s[3], s[4], s[5], NULL};
+  const char *sets[] = {s[0], s[1], s[2], s[3], s[4], s[5], scene == scene_a ? "solid.viscosity=1e-8" : NULL, NULL};
   sluice *sl = NULL;
   sluice_error e = {0, ""};
   sluice_open_opts oo = {.sets = sets};
@@ -167,17 +182,18 @@ static score table_score(const char *table) {
   return s;
 }
 
-int main(void) {
-  if (load()) return sl_test_summary();
+/* Calibrates, runs every row, writes the CSV, prints the table; returns the counts asserted. */
+static void model(const char *label, const char *csv, int assert_targets) {
+  runs = 0, failures = 0;
   double ks = calibrate();
-  printf("roughness calibrated on Table C.1 (5 %%) alone: k_s = %.3g m (%.3g um)\n", ks, 1e6 * ks);
+  printf("%s: roughness calibrated on Table C.1 (5 %%) alone: k_s = %.3g m (%.3g um)\n", label, ks, 1e6 * ks);
   CHECK_MSG(ks > 1.1e-7 && ks < 3.0e-4, "k_s = %g m at the end of the search interval", ks);
   long fit_runs = runs;
   failures = 0;
   run_rows(NULL, ks);
   printf("%ld runs in the fit, %ld with every row (%ld failed)\n", fit_runs, runs - fit_runs, failures);
   CHECK_MSG(failures == 0, "%ld runs failed", failures);
-  FILE *f = fopen("krampa_tables_c_predicted.csv", "w");
+  FILE *f = fopen(csv, "w");
   if (f) {
     fprintf(f, "table,c,v,t,up,down,avg,up_model,down_model,avg_model,avg_error,up_error_of_difference,"
                "down_error_of_difference,solids_mean_velocity_up\n");
@@ -199,6 +215,7 @@ int main(void) {
     printf("| %s | %d %% | %d | %+.1f %% | %+.1f %% | %d of %d | %+.1f %%, %+.1f %% | %.1f %% | %d of %d |\n", tables[k],
            pct[k], s.n, 100.0 * s.mean_avg, 100.0 * s.worst_avg, s.n_avg_ok, s.n, 100.0 * s.mean_up,
            100.0 * s.mean_down, 100.0 * s.worst_ud, s.n_ud_ok, s.n);
+    if (!assert_targets) continue;
     if (k == 0) CHECK_MSG(s.n_avg_ok == s.n, "%s: %d of %d averages within the target", tables[k], s.n_avg_ok, s.n);
     else
       CHECK_MSG(s.n_ud_ok == s.n, "%s: %d of %d up and down within 10 %% of their difference", tables[k], s.n_ud_ok,
@@ -213,5 +230,14 @@ int main(void) {
     printf("25 %%, up-flow, V = %.0f m/s: mean solids velocity %.3f m/s, L-probe %.2f (%+.1f %%)\n", vv[k], us,
            meas[k], 100.0 * (us / meas[k] - 1.0));
   }
+}
+
+int main(void) {
+  if (load()) return sl_test_summary();
+  scene = scene_b;
+  model("model B (vertical_pipe.ini: the kinetic viscosity of Lun et al.)", "krampa_tables_c_predicted.csv", 1);
+  scene = scene_a;
+  model("model A (no kinetic theory: Bouillard's solids pressure, mu_s = 1e-8 Pa s)",
+        "krampa_tables_c_predicted_model_a.csv", 1);
   return sl_test_summary();
 }
