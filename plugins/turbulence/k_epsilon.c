@@ -15,8 +15,8 @@
  * wall function. A model that phase-weights the equations (Krampa 2009 eqs
  * 4.82-4.83: c_f times each term) multiplies them by c_f itself. */
 #include <math.h>
-#include <stddef.h>
 #include <sluice/closure.h>
+#include <stddef.h>
 
 #include "granular/inputs.h"
 
@@ -101,14 +101,18 @@ static const sl_closure_desc k_epsilon = {
     .kind = SL_KIND_TURBULENCE,
     .name = "k_epsilon",
     .version = "1.0.0",
-    .summary = "standard k-epsilon model (Launder & Spalding 1974): eddy viscosity and the coefficients of the k and "
-               "epsilon equations",
-    .formula = "mu_t = c_mu rho_f k^2/epsilon, mu_t_k = mu_t/sigma_k, mu_t_eps = mu_t/sigma_eps\n"
-               "eps_production = c_eps1 epsilon/k (times P_k), eps_sink = c_eps2 rho_f epsilon/k (times epsilon)",
-    .reference = "Launder & Spalding (1974) Comput. Methods Appl. Mech. Eng. 3:269; Krampa (2009) eqs 4.74-4.83, "
-                 "Table 4.1",
-    .validity = "fully turbulent flow away from walls (high Reynolds number form: a model bridges the wall with a "
-                "wall function); k > 0, epsilon > 0",
+    .summary =
+        "standard k-epsilon model (Launder & Spalding 1974): eddy viscosity and the coefficients of the k and "
+        "epsilon equations",
+    .formula =
+        "mu_t = c_mu rho_f k^2/epsilon, mu_t_k = mu_t/sigma_k, mu_t_eps = mu_t/sigma_eps\n"
+        "eps_production = c_eps1 epsilon/k (times P_k), eps_sink = c_eps2 rho_f epsilon/k (times epsilon)",
+    .reference =
+        "Launder & Spalding (1974) Comput. Methods Appl. Mech. Eng. 3:269; Krampa (2009) eqs 4.74-4.83, "
+        "Table 4.1",
+    .validity =
+        "fully turbulent flow away from walls (high Reynolds number form: a model bridges the wall with a "
+        "wall function); k > 0, epsilon > 0",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(ke_params),

@@ -16,8 +16,8 @@
  * in Boundary Layers, their fully rough form; C_s = 0.5 for uniform sand
  * grains). */
 #include <math.h>
-#include <stddef.h>
 #include <sluice/closure.h>
+#include <stddef.h>
 
 #include "granular/inputs.h"
 
@@ -31,8 +31,7 @@ enum { OUT_TAU_W, OUT_U_TAU, OUT_Y_PLUS, OUT_K_WALL, OUT_EPS_WALL, N_OUT };
 static const sl_param_desc params[] = {
     SL_PARAM_REAL_OF(log_law_params, kappa, 0.41, 0.3, 0.5, "1", "von Karman constant"),
     SL_PARAM_REAL_OF(log_law_params, e, 9.793, 1.0, 30.0, "1", "E of the smooth-wall log law"),
-    SL_PARAM_REAL_OF(log_law_params, c_mu, 0.09, 1e-3, 1.0, "1",
-                     "C_mu of the k-epsilon model, in k at the wall node"),
+    SL_PARAM_REAL_OF(log_law_params, c_mu, 0.09, 1e-3, 1.0, "1", "C_mu of the k-epsilon model, in k at the wall node"),
     SL_PARAM_REAL_OF(log_law_params, roughness, 0.0, 0.0, 1.0, "m", "equivalent sand-grain roughness k_s (0: smooth)"),
     SL_PARAM_REAL_OF(log_law_params, roughness_constant, 0.5, 0.0, 10.0, "1",
                      "C_s of the roughness shift ln(1 + C_s k_s+)/kappa"),
@@ -58,8 +57,9 @@ static const double check_log[N_IN] = {0.7553281524593665, 1e-3, 1000.0, 1e-3};
 /* in the sublayer: U = 0.01 m/s at y = 0.1 mm, y+ = 1: tau = mu U / y = 0.1 Pa */
 static const double check_lam[N_IN] = {0.01, 1e-4, 1000.0, 1e-3};
 static const sl_check_point checks[] = {
-    {check_log, OUT_TAU_W, 2.5, 1e-10, "log law U+ = ln(E y+)/kappa (Launder & Spalding 1974; Krampa 2009 eq 4.84) "
-                                       "at y+ = 50, u_tau = 0.05 m/s, hand-evaluated"},
+    {check_log, OUT_TAU_W, 2.5, 1e-10,
+     "log law U+ = ln(E y+)/kappa (Launder & Spalding 1974; Krampa 2009 eq 4.84) "
+     "at y+ = 50, u_tau = 0.05 m/s, hand-evaluated"},
     {check_log, OUT_Y_PLUS, 50.0, 1e-10, "y+ = rho u_tau y/mu (Krampa 2009 eq 4.84)"},
     {check_log, OUT_K_WALL, 0.0025 / 0.3, 1e-10, "k = u_tau^2/sqrt(C_mu) (Krampa 2009 eq 4.85)"},
     {check_log, OUT_EPS_WALL, 1.25e-4 / 0.41e-3, 1e-10, "epsilon = u_tau^3/(kappa y) (Krampa 2009 eq 4.86)"},
@@ -101,7 +101,8 @@ static int evaluate(const void *state, const sl_eval_args *a) {
       dtau_du = 2.0 * rho[q] * ut * p->kappa / dF;
     }
     double tau = rho[q] * ut * ut;
-    if (!(ut >= 0.0) || !isfinite(tau)) return sl_fail(a->err, SL_RECOVERABLE, q, "the log law has no root for U = %g", u);
+    if (!(ut >= 0.0) || !isfinite(tau))
+      return sl_fail(a->err, SL_RECOVERABLE, q, "the log law has no root for U = %g", u);
     a->out[OUT_TAU_W][q] = tau;
     gr_set(dtau, q, dtau_du);
     gr_set(a->out[OUT_U_TAU], q, ut);
@@ -123,16 +124,20 @@ static const sl_closure_desc log_law = {
     .kind = SL_KIND_WALL_STRESS,
     .name = "log_law",
     .version = "1.0.0",
-    .summary = "standard wall function (Launder & Spalding 1974): the fluid's wall shear stress from the smooth-wall "
-               "log law, with k and epsilon at the wall node",
-    .formula = "slip_wall/u_tau = ln(e y+/(1 + roughness_constant k_s+))/kappa, y+ = rho_f u_tau wall_distance/mu_f, "
-               "k_s+ = rho_f u_tau roughness/mu_f (y+ above the crossover with "
-               "U+ = y+; below it tau_w = mu_f slip_wall/wall_distance)\n"
-               "tau_w = rho_f u_tau^2, k_wall = u_tau^2/sqrt(c_mu), epsilon_wall = u_tau^3/(kappa wall_distance)",
-    .reference = "Launder & Spalding (1974) Comput. Methods Appl. Mech. Eng. 3:269; Krampa (2009) eqs 4.84-4.86; "
-                 "Cebeci & Bradshaw (1977) for the roughness",
-    .validity = "a smooth wall with the first node in the log layer, y+ of about 30-200 (the sublayer's linear law "
-                "below the crossover)",
+    .summary =
+        "standard wall function (Launder & Spalding 1974): the fluid's wall shear stress from the smooth-wall "
+        "log law, with k and epsilon at the wall node",
+    .formula =
+        "slip_wall/u_tau = ln(e y+/(1 + roughness_constant k_s+))/kappa, y+ = rho_f u_tau wall_distance/mu_f, "
+        "k_s+ = rho_f u_tau roughness/mu_f (y+ above the crossover with "
+        "U+ = y+; below it tau_w = mu_f slip_wall/wall_distance)\n"
+        "tau_w = rho_f u_tau^2, k_wall = u_tau^2/sqrt(c_mu), epsilon_wall = u_tau^3/(kappa wall_distance)",
+    .reference =
+        "Launder & Spalding (1974) Comput. Methods Appl. Mech. Eng. 3:269; Krampa (2009) eqs 4.84-4.86; "
+        "Cebeci & Bradshaw (1977) for the roughness",
+    .validity =
+        "a smooth wall with the first node in the log layer, y+ of about 30-200 (the sublayer's linear law "
+        "below the crossover)",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(log_law_params),

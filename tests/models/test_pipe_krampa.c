@@ -195,8 +195,9 @@ static void model(const char *label, const char *csv, int assert_targets) {
   CHECK_MSG(failures == 0, "%ld runs failed", failures);
   FILE *f = fopen(csv, "w");
   if (f) {
-    fprintf(f, "table,c,v,t,up,down,avg,up_model,down_model,avg_model,avg_error,up_error_of_difference,"
-               "down_error_of_difference,solids_mean_velocity_up\n");
+    fprintf(f,
+            "table,c,v,t,up,down,avg,up_model,down_model,avg_model,avg_error,up_error_of_difference,"
+            "down_error_of_difference,solids_mean_velocity_up\n");
     for (int i = 0; i < n_rows; ++i) {
       const row *r = &rows[i];
       double avg = 0.5 * (r->p_up + r->p_down), diff = r->up - r->down;
@@ -206,14 +207,15 @@ static void model(const char *label, const char *csv, int assert_targets) {
     }
     fclose(f);
   }
-  printf("| table | C | rows | average: mean error | worst | rows within target | up, down: mean error / (up - down) | "
-         "worst | rows within 10 %% |\n|---|---|---|---|---|---|---|---|---|\n");
+  printf(
+      "| table | C | rows | average: mean error | worst | rows within target | up, down: mean error / (up - down) | "
+      "worst | rows within 10 %% |\n|---|---|---|---|---|---|---|---|---|\n");
   const char *tables[7] = {"C.1", "C.2", "C.3", "C.4", "C.5", "C.6", "C.7"};
   const int pct[7] = {5, 25, 30, 35, 40, 45, 45};
   for (int k = 0; k < 7; ++k) {
     score s = table_score(tables[k]);
-    printf("| %s | %d %% | %d | %+.1f %% | %+.1f %% | %d of %d | %+.1f %%, %+.1f %% | %.1f %% | %d of %d |\n", tables[k],
-           pct[k], s.n, 100.0 * s.mean_avg, 100.0 * s.worst_avg, s.n_avg_ok, s.n, 100.0 * s.mean_up,
+    printf("| %s | %d %% | %d | %+.1f %% | %+.1f %% | %d of %d | %+.1f %%, %+.1f %% | %.1f %% | %d of %d |\n",
+           tables[k], pct[k], s.n, 100.0 * s.mean_avg, 100.0 * s.worst_avg, s.n_avg_ok, s.n, 100.0 * s.mean_up,
            100.0 * s.mean_down, 100.0 * s.worst_ud, s.n_ud_ok, s.n);
     if (!assert_targets) continue;
     if (k == 0) CHECK_MSG(s.n_avg_ok == s.n, "%s: %d of %d averages within the target", tables[k], s.n_avg_ok, s.n);
@@ -227,8 +229,8 @@ static void model(const char *label, const char *csv, int assert_targets) {
     row r = {.c = 0.25, .t = 22.8, .v = vv[k]};
     double us = NAN;
     run_row(&r, 0, ks, &us);
-    printf("25 %%, up-flow, V = %.0f m/s: mean solids velocity %.3f m/s, L-probe %.2f (%+.1f %%)\n", vv[k], us,
-           meas[k], 100.0 * (us / meas[k] - 1.0));
+    printf("25 %%, up-flow, V = %.0f m/s: mean solids velocity %.3f m/s, L-probe %.2f (%+.1f %%)\n", vv[k], us, meas[k],
+           100.0 * (us / meas[k] - 1.0));
   }
 }
 

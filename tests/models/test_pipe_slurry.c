@@ -121,11 +121,12 @@ static void balances(void) {
       continue;
     }
     double gz = k ? g : -g, phi = scalar("pipe_slurry.h5", "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f;
-    double tau = scalar("pipe_slurry.h5", "wall_shear_stress_fluid") + scalar("pipe_slurry.h5", "wall_shear_stress_solid");
+    double tau =
+        scalar("pipe_slurry.h5", "wall_shear_stress_fluid") + scalar("pipe_slurry.h5", "wall_shear_stress_solid");
     double dp = scalar("pipe_slurry.h5", "pressure_gradient"), bal = 4.0 * tau / D - rho_m * gz;
     profile pf, ps, pp;
-    if (read_profile("pipe_slurry.h5", "velocity_fluid", &pf) || read_profile("pipe_slurry.h5", "velocity_solid", &ps) ||
-        read_profile("pipe_slurry.h5", "phi", &pp))
+    if (read_profile("pipe_slurry.h5", "velocity_fluid", &pf) ||
+        read_profile("pipe_slurry.h5", "velocity_solid", &ps) || read_profile("pipe_slurry.h5", "phi", &pp))
       continue;
     /* the bulk velocity over the cells' areas r dr */
     double q = 0.0, A = 0.0;
@@ -134,7 +135,8 @@ static void balances(void) {
       q += w * ((1.0 - pp.v[i]) * pf.v[i] + pp.v[i] * ps.v[i]), A += w;
     }
     printf("%s: -dP/dz %.4f Pa/m, 4 tau_w/D - rho_m g_z %.4f (%.2e), V %.9f, phi_mean %.12f, manometric %.2f\n",
-           k ? "down-flow" : "up-flow", dp, bal, dp / bal - 1.0, q / A, phi, scalar("pipe_slurry.h5", "manometric_gradient"));
+           k ? "down-flow" : "up-flow", dp, bal, dp / bal - 1.0, q / A, phi,
+           scalar("pipe_slurry.h5", "manometric_gradient"));
     CHECK_MSG(fabs(dp / bal - 1.0) < 1e-6, "the mixture momentum: %.9g against %.9g", dp, bal);
     CHECK_MSG(fabs(q / A - 3.02) < 1e-6, "the bulk velocity %.9g", q / A);
     CHECK_MSG(fabs(phi - 0.25) < 1e-12, "the solids inventory %.15g", phi);
@@ -158,8 +160,9 @@ static void dispersion_alone(void) {
   double G = -scalar("pipe_disp.h5", "pressure_gradient"), cs = 0.25, cf = 0.75, mu = 0.9347e-3, d = 1e-4;
   double K = 18.0 * mu * cs / (d * d), s = -cs * (rho_s - rho_f) * G / rho_f / (1.0 + cs * rho_s / (cf * rho_f)) / K;
   double s_axis = pf.v[0] - ps.v[0];
-  printf("dispersion alone: max |phi - 0.25| = %.2e; slip at the axis %.6f m/s, uniform-slip solution %.6f (%+.3f %%)\n",
-         dev, s_axis, s, 100.0 * (s_axis / s - 1.0));
+  printf(
+      "dispersion alone: max |phi - 0.25| = %.2e; slip at the axis %.6f m/s, uniform-slip solution %.6f (%+.3f %%)\n",
+      dev, s_axis, s, 100.0 * (s_axis / s - 1.0));
   CHECK_MSG(dev < 1e-12, "phi is not uniform: %.3e", dev);
   CHECK_MSG(fabs(s_axis / s - 1.0) < 0.01, "slip %.6g against %.6g", s_axis, s);
 }
@@ -187,15 +190,21 @@ static void stability(void) {
   } cases[4] = {
       {"2.4 mm sand, 30 %, up, 3.02 m/s",
        {"solid.diameter=2.4e-3", "solid.density=2650", "pipe.solids_fraction=0.3", "flow.gravity=-9.81", NULL},
-       -9.81, 2650.0},
+       -9.81,
+       2650.0},
       {"2.4 mm sand, 30 %, down, 1 m/s",
        {"solid.diameter=2.4e-3", "solid.density=2650", "pipe.solids_fraction=0.3", "flow.gravity=9.81",
         "pipe.bulk_velocity=1", NULL},
-       9.81, 2650.0},
-      {"0.5 mm, 62 %, up, 2 m/s", {"pipe.solids_fraction=0.62", "pipe.bulk_velocity=2", "flow.gravity=-9.81", NULL},
-       -9.81, 2500.0},
-      {"0.5 mm, 62 %, down, 1 m/s", {"pipe.solids_fraction=0.62", "pipe.bulk_velocity=1", "flow.gravity=9.81", NULL},
-       9.81, 2500.0}};
+       9.81,
+       2650.0},
+      {"0.5 mm, 62 %, up, 2 m/s",
+       {"pipe.solids_fraction=0.62", "pipe.bulk_velocity=2", "flow.gravity=-9.81", NULL},
+       -9.81,
+       2500.0},
+      {"0.5 mm, 62 %, down, 1 m/s",
+       {"pipe.solids_fraction=0.62", "pipe.bulk_velocity=1", "flow.gravity=9.81", NULL},
+       9.81,
+       2500.0}};
   for (int k = 0; k < 4; ++k) {
     sluice_error e = {0, ""};
     if (run(NULL, NULL, cases[k].sets, "pipe_stab.h5", &e)) {

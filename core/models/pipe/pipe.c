@@ -25,8 +25,9 @@ static double wall_grading(double R, double w, int n) {
 }
 
 static void release(pipe *p) {
-  double **a[] = {&p->uf, &p->us, &p->phi, &p->k, &p->eps, &p->theta, &p->mu_t, &p->mu_tk, &p->mu_te,
-                  &p->eps_prod, &p->eps_sink, &p->K, &p->mu_s, &p->rhs, &p->x, &p->face_flux, &p->Kd, &p->slip0};
+  double **a[] = {&p->uf,   &p->us,    &p->phi,   &p->k,         &p->eps,      &p->theta,
+                  &p->mu_t, &p->mu_tk, &p->mu_te, &p->eps_prod,  &p->eps_sink, &p->K,
+                  &p->mu_s, &p->rhs,   &p->x,     &p->face_flux, &p->Kd,       &p->slip0};
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i) free(*a[i]);
   for (int i = 0; i < 12; ++i) free(p->buf[i]);
   sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls};
@@ -92,13 +93,14 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
     rc = sl_diag_set(d, SL_EBADINPUT, "%s = wall_stress needs [closure.wall_stress.solids]",
                      sl_scene_where(sc, &c->solids_wall, at, sizeof at));
   if (!rc && c->solids_wall != PIPE_WALL_STRESS && sl_scene_closure(sc, "wall_stress.solids"))
-    rc = sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress.solids] is read with [pipe] solids_wall = wall_stress "
-                                      "only; did you mean solids_wall = wall_stress?");
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "[closure.wall_stress.solids] is read with [pipe] solids_wall = wall_stress "
+                     "only; did you mean solids_wall = wall_stress?");
   if (!rc) rc = build_grid(p, d);
   const int n = p->n;
   if (!rc) {
-    double **a[] = {&p->uf, &p->us, &p->phi, &p->k, &p->eps, &p->theta, &p->mu_t, &p->mu_tk, &p->mu_te,
-                    &p->eps_prod, &p->eps_sink, &p->K, &p->mu_s, &p->Kd, &p->slip0};
+    double **a[] = {&p->uf,    &p->us,       &p->phi,      &p->k, &p->eps,  &p->theta, &p->mu_t, &p->mu_tk,
+                    &p->mu_te, &p->eps_prod, &p->eps_sink, &p->K, &p->mu_s, &p->Kd,    &p->slip0};
     for (size_t i = 0; i < sizeof a / sizeof a[0] && !rc; ++i)
       if (!(*a[i] = calloc((size_t)n, sizeof(double)))) rc = sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
     for (int i = 0; i < 12 && !rc; ++i)
@@ -121,8 +123,8 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
     p->k[i] = k0, p->eps[i] = pow(0.09, 0.75) * pow(k0, 1.5) / l0;
     p->phi[i] = c->solids_fraction, p->theta[i] = 1e-4;
   }
-  *info = (sl_model_info){.integrator = SL_INTEGRATE_BDF, .n = n, .n_err = n, .u = p->uf, .has_steady = 1,
-                          .state_name = "velocity"};
+  *info = (sl_model_info){
+      .integrator = SL_INTEGRATE_BDF, .n = n, .n_err = n, .u = p->uf, .has_steady = 1, .state_name = "velocity"};
   *self = p;
   return 0;
 }
@@ -161,8 +163,8 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
     for (int i = 0; i < n; ++i)
       if (!isfinite(p->uf[i]) || !isfinite(p->us[i]) || !isfinite(p->k[i]) || !isfinite(p->eps[i]) ||
           !isfinite(p->phi[i]))
-        rc = sl_diag_set(d, SL_EFAILED, "pipe: the solution is not finite at r = %g after %ld iterations",
-                         p->g.xc[i], it);
+        rc = sl_diag_set(d, SL_EFAILED, "pipe: the solution is not finite at r = %g after %ld iterations", p->g.xc[i],
+                         it);
     if (!rc && it > 2 && ch < c->tolerance) {
       p->converged = 1;
       break;
@@ -265,8 +267,8 @@ static void pipe_stats(void *self, const sl_run_result *res, sl_model_stats *st)
   if (p->ls) st->linear = *sl_linsolve_get_stats(p->ls), st->has_linear = 1;
   double tau = p->tau_fw + p->tau_sw, V = p->cfg->bulk_velocity;
   snprintf(st->coupling_summary, sizeof st->coupling_summary,
-           "pipe: -dP/dz %.6g Pa/m (manometric %.6g), tau_w %.4g Pa (fluid %.4g, solids %.4g), f %.5g, y+ %.3g",
-           -p->G, -p->G + p->rho_f * p->gz, tau, p->tau_fw, p->tau_sw, tau / (0.5 * p->rho_f * V * V), p->y_plus);
+           "pipe: -dP/dz %.6g Pa/m (manometric %.6g), tau_w %.4g Pa (fluid %.4g, solids %.4g), f %.5g, y+ %.3g", -p->G,
+           -p->G + p->rho_f * p->gz, tau, p->tau_fw, p->tau_sw, tau / (0.5 * p->rho_f * V * V), p->y_plus);
   snprintf(st->linear_summary, sizeof st->linear_summary, "klu, %d radial cells", p->n);
 }
 

@@ -22,8 +22,24 @@ typedef struct pipe_config {
 } pipe_config;
 
 /* The host's quantities the closures bind to. */
-enum { PQ_PHI, PQ_SLIP, PQ_K, PQ_EPS, PQ_THETA, PQ_SHEAR, PQ_RHO_F, PQ_MU_F, PQ_RHO_S, PQ_D_P, PQ_SPHERICITY,
-       PQ_SLIP_WALL, PQ_WALL_DISTANCE, PQ_D_VESSEL, PQ_GRAVITY, PQ_N };
+enum {
+  PQ_PHI,
+  PQ_SLIP,
+  PQ_K,
+  PQ_EPS,
+  PQ_THETA,
+  PQ_SHEAR,
+  PQ_RHO_F,
+  PQ_MU_F,
+  PQ_RHO_S,
+  PQ_D_P,
+  PQ_SPHERICITY,
+  PQ_SLIP_WALL,
+  PQ_WALL_DISTANCE,
+  PQ_D_VESSEL,
+  PQ_GRAVITY,
+  PQ_N
+};
 extern const char *const pipe_quantity_names[PQ_N];
 
 typedef struct pipe {
@@ -32,8 +48,8 @@ typedef struct pipe {
   sl_mesh *mesh;
   sl_tensor_grid tg;
   sl_fv_grid g;
-  int n;            /* radial cells */
-  double R, gz;     /* radius, gravity along the flow */
+  int n;        /* radial cells */
+  double R, gz; /* radius, gravity along the flow */
   double rho_f, mu_f, rho_s, d_p, phi_max;
   int two_phase;
   /* state (cells) */
@@ -52,9 +68,9 @@ typedef struct pipe {
   sl_cell_scalar cs;
   sl_csr A;
   sl_linsolve *ls;
-  double *face_flux; /* [nf] */
+  double *face_flux;         /* [nf] */
   double *rhs, *x, *buf[12]; /* buf[0..7] scratch, buf[8..11] the steady solve's last state */
-  double dirichlet; /* the value the wall cell's k or epsilon is held at (the cell-scalar hook's) */
+  double dirichlet;          /* the value the wall cell's k or epsilon is held at (the cell-scalar hook's) */
   long iterations;
   double change;
   int converged, warned_yplus;

@@ -23,8 +23,9 @@
  * where phi is small its theta grows as 1/phi^2 (the dissipation falls with
  * phi^2, the dilute viscosity does not) and rho_s phi theta with it, so that
  * it drives solids from where they are fewest; in dilute flow (5 %) this runs
- * away near the wall and the steady solve does not converge. Its pseudo-time step keeps the section's solids inventory; phi is
- * kept below phi_max - 0.01 and the inventory restored to the given mean. */
+ * away near the wall and the steady solve does not converge. The pseudo-time
+ * step keeps the section's solids inventory; phi is kept below phi_max - 0.01
+ * and the inventory restored to the given mean. */
 #include <math.h>
 #include <string.h>
 
@@ -97,28 +98,33 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
   const int w = n - 1;
   const double yp = p->R - p->g.xc[w];
   const double turb_w = p->phi[w] * p->rho_s * (p->mu_t[w] / p->rho_f) / p->cfg->solids_schmidt;
-  const double a_ns = p->phi[w] * p->rho_s / (p->cfg->solids_schmidt * p->rho_f) * p->a_fw +
-                      fmax(p->mu_s[w] - turb_w, 0.0) / yp;
+  const double a_ns =
+      p->phi[w] * p->rho_s / (p->cfg->solids_schmidt * p->rho_f) * p->a_fw + fmax(p->mu_s[w] - turb_w, 0.0) / yp;
   switch (p->cfg->solids_wall) {
-  case PIPE_NO_SLIP: p->a_sw = a_ns; break;
-  case PIPE_FREE_SLIP: p->a_sw = 0.0; break;
-  default: {
-    /* a wall function (a wall_distance input: Bartosik, Bagnold) takes the wall cell's speed; a slip law
+    case PIPE_NO_SLIP:
+      p->a_sw = a_ns;
+      break;
+    case PIPE_FREE_SLIP:
+      p->a_sw = 0.0;
+      break;
+    default: {
+      /* a wall function (a wall_distance input: Bartosik, Bagnold) takes the wall cell's speed; a slip law
        (Johnson & Jackson, Navier slip) the speed at the wall: the bridge and the law in series, u_w = a_ns u_p/
        (a_ns + a), a_sw = a a_ns/(a_ns + a), a = tau/u_w of the last iterate */
-    double U = fabs(p->us[w]), uw = U, tau, dtau;
-    if (!p->walls_at_node && p->a_sw > 0.0) {
-      double a = p->a_sw < a_ns ? p->a_sw * a_ns / (a_ns - p->a_sw) : 1e12 * a_ns; /* invert a_sw */
-      uw = U * a_ns / (a_ns + a);
+      double U = fabs(p->us[w]), uw = U, tau, dtau;
+      if (!p->walls_at_node && p->a_sw > 0.0) {
+        double a = p->a_sw < a_ns ? p->a_sw * a_ns / (a_ns - p->a_sw) : 1e12 * a_ns; /* invert a_sw */
+        uw = U * a_ns / (a_ns + a);
+      }
+      const double *vw[PQ_N] = {0};
+      double phw = p->phi[w], thw = p->theta[w], gdw = U / yp;
+      vw[PQ_SLIP_WALL] = &uw, vw[PQ_PHI] = &phw, vw[PQ_THETA] = &thw, vw[PQ_SHEAR] = &gdw;
+      sl_point_request rw = {"tau_w", &tau, &dtau, "slip_wall"};
+      if ((rc = sl_point_eval(&p->walls, 1, vw, &rw, 1, d)))
+        return sl_diag_prefix(d, rc, "[closure.wall_stress.solids]");
+      double a = uw > 0.0 ? tau / uw : dtau;
+      p->a_sw = p->walls_at_node ? a : a * a_ns / (a_ns + a);
     }
-    const double *vw[PQ_N] = {0};
-    double phw = p->phi[w], thw = p->theta[w], gdw = U / yp;
-    vw[PQ_SLIP_WALL] = &uw, vw[PQ_PHI] = &phw, vw[PQ_THETA] = &thw, vw[PQ_SHEAR] = &gdw;
-    sl_point_request rw = {"tau_w", &tau, &dtau, "slip_wall"};
-    if ((rc = sl_point_eval(&p->walls, 1, vw, &rw, 1, d))) return sl_diag_prefix(d, rc, "[closure.wall_stress.solids]");
-    double a = uw > 0.0 ? tau / uw : dtau;
-    p->a_sw = p->walls_at_node ? a : a * a_ns / (a_ns + a);
-  }
   }
   return 0;
 }
@@ -159,8 +165,8 @@ int pipe_solids_update(pipe *p, sl_diag *d) {
     double vr = -cf * cf * 0.5 * (Pt[i] + Pt[i + 1]) * (p->theta[i + 1] - p->theta[i]) / g->dist[f] / K;
     flux[f] = vr * g->area[f];
   }
-  sl_cell_scalar_terms t = {.dt = 1e3 * p->R * p->R / fmax(Dmax, 1e-300), .cap = cap, .s_old = p->phi, .k = D,
-                            .flux = kinetic ? flux : NULL};
+  sl_cell_scalar_terms t = {
+      .dt = 1e3 * p->R * p->R / fmax(Dmax, 1e-300), .cap = cap, .s_old = p->phi, .k = D, .flux = kinetic ? flux : NULL};
   rc = sl_cell_scalar_solve(&p->cs, &t, s, d);
   if (rc) return sl_diag_prefix(d, rc, "pipe: the radial solids balance");
   /* bound and restore the inventory */

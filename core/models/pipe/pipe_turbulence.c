@@ -17,9 +17,9 @@ int pipe_turbulence_coefficients(pipe *p, sl_diag *d) {
   const double *v[PQ_N] = {0};
   v[PQ_K] = p->k, v[PQ_EPS] = p->eps;
   double *cmu = p->buf[0];
-  sl_point_request rq[6] = {{"mu_t", p->mu_t, NULL, NULL},           {"mu_t_k", p->mu_tk, NULL, NULL},
-                            {"mu_t_eps", p->mu_te, NULL, NULL},      {"eps_production", p->eps_prod, NULL, NULL},
-                            {"eps_sink", p->eps_sink, NULL, NULL},   {"c_mu", cmu, NULL, NULL}};
+  sl_point_request rq[6] = {{"mu_t", p->mu_t, NULL, NULL},         {"mu_t_k", p->mu_tk, NULL, NULL},
+                            {"mu_t_eps", p->mu_te, NULL, NULL},    {"eps_production", p->eps_prod, NULL, NULL},
+                            {"eps_sink", p->eps_sink, NULL, NULL}, {"c_mu", cmu, NULL, NULL}};
   int rc = sl_point_eval(&p->turb, p->n, v, rq, 6, d);
   if (rc) return sl_diag_prefix(d, rc, "[closure.turbulence]");
   p->c_mu = cmu[0];
@@ -31,8 +31,10 @@ int pipe_wall_function(pipe *p, sl_diag *d) {
   double U = fabs(p->uf[w]), tau, dtau, ut, yp, kw, ew;
   const double *v[PQ_N] = {0};
   v[PQ_SLIP_WALL] = &U;
-  sl_point_request rq[5] = {{"tau_w", &tau, &dtau, "slip_wall"}, {"u_tau", &ut, NULL, NULL},
-                            {"y_plus", &yp, NULL, NULL},        {"k_wall", &kw, NULL, NULL},
+  sl_point_request rq[5] = {{"tau_w", &tau, &dtau, "slip_wall"},
+                            {"u_tau", &ut, NULL, NULL},
+                            {"y_plus", &yp, NULL, NULL},
+                            {"k_wall", &kw, NULL, NULL},
                             {"epsilon_wall", &ew, NULL, NULL}};
   int rc = sl_point_eval(&p->wallf, 1, v, rq, 5, d);
   if (rc) return sl_diag_prefix(d, rc, "[closure.wall_stress.fluid]");
@@ -63,8 +65,8 @@ int pipe_turbulence_update(pipe *p, sl_diag *d) {
     P[i] = p->mu_t[i] * 0.5 * (gw * gw + ge * ge);
   }
   const double a = p->cfg->pseudo_step;
-  sl_cell_scalar_terms t = {.dt = 1.0, .cap = cap, .k = kd, .source = src, .sink = snk, .boundary = hold_wall,
-                            .boundary_user = p};
+  sl_cell_scalar_terms t = {
+      .dt = 1.0, .cap = cap, .k = kd, .source = src, .sink = snk, .boundary = hold_wall, .boundary_user = p};
   /* k */
   for (int i = 0; i < n; ++i) {
     double cf = 1.0 - p->phi[i];
