@@ -189,7 +189,7 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
     p->warned_yplus = 1;
     fprintf(stderr,
             "sluice: warning: pipe: the wall cell's centre is at y+ = %.3g, outside the wall function's 30-200 (Krampa "
-            "2009 section 2.9): set [pipe] wall_cell\n",
+            "2009 section 2.9): set [pipe] wall_cell or wall_y_plus\n",
             p->y_plus);
   }
   return rc;
