@@ -15,6 +15,10 @@
  *  - with the kinetic theory's pressure (Lun et al. 1984; kinetic_pressure =
  *    true), the granular temperature is highest at the wall and its pressure
  *    drives solids from the wall: phi at the wall below the mean;
+ *  - no-slip solids without the kinetic theory: the solids' eddy viscosity
+ *    is bridged across the wall cell by the fluid's wall function, so
+ *    tau_sw/tau_fw = (c_s rho_s/(sigma rho_f)) u_s/u_f of the wall cell, to
+ *    the steady solve's tolerance (1e-8);
  *  - stability: 2.4 mm sand at 30 % (up-flow at 3.02 m/s, down-flow at 1
  *    m/s) and 0.5 mm beads at phi_max - 0.01 = 0.62 (up at 2 m/s, down at 1
  *    m/s) converge, with a finite state and the mixture's momentum held;
@@ -183,6 +187,25 @@ static void kinetic_theory(void) {
   CHECK_MSG(pp.v[n - 1] < 0.25 && pp.v[0] > 0.25, "the solids are not driven from the wall");
 }
 
+static void no_slip_bridge(void) {
+  const char *sets[] = {"pipe.solids_wall=no_slip", NULL};
+  sluice_error e = {0, ""};
+  if (run("closure.granular", "", sets, "pipe_ns.h5", &e)) {
+    CHECK_MSG(0, "%s", e.msg);
+    return;
+  }
+  profile pf, ps, pp;
+  if (read_profile("pipe_ns.h5", "velocity_fluid", &pf) || read_profile("pipe_ns.h5", "velocity_solid", &ps) ||
+      read_profile("pipe_ns.h5", "phi", &pp))
+    return;
+  int w = pf.n - 1;
+  double tf = scalar("pipe_ns.h5", "wall_shear_stress_fluid"), ts = scalar("pipe_ns.h5", "wall_shear_stress_solid");
+  double ratio = pp.v[w] * rho_s / rho_f * ps.v[w] / pf.v[w];
+  printf("no-slip solids: tau_fw %.4f Pa, tau_sw %.4f Pa, ratio %.6f against (c_s rho_s/rho_f) u_s/u_f %.6f\n", tf, ts,
+         ts / tf, ratio);
+  CHECK_MSG(fabs(ts / tf / ratio - 1.0) < 1e-7, "tau_sw/tau_fw %.9g against %.9g", ts / tf, ratio);
+}
+
 static void stability(void) {
   static const struct {
     const char *name, *sets[6];
@@ -234,6 +257,7 @@ int main(void) {
   balances();
   dispersion_alone();
   kinetic_theory();
+  no_slip_bridge();
   stability();
   refused();
   return sl_test_summary();
