@@ -12,13 +12,15 @@
 #include "core/solve/sparse.h"
 
 enum { PIPE_NO_SLIP = 0, PIPE_FREE_SLIP, PIPE_WALL_STRESS };
+enum { PIPE_DISPERSION_GRADIENT = 0, PIPE_DISPERSION_SIMONIN };
 
 typedef struct pipe_config {
   double diameter, bulk_velocity, solids_fraction, wall_cell, wall_y_plus;
   long cells, iterations;
   double tolerance, relaxation, pseudo_step;
   int solids_wall, kinetic_pressure;
-  double solids_schmidt, dispersion_schmidt;
+  double solids_schmidt, dispersion_schmidt, crossing_trajectory;
+  int dispersion; /* PIPE_DISPERSION_* */
 } pipe_config;
 
 /* The host's quantities the closures bind to. */

@@ -41,6 +41,12 @@ static const sl_key pipe_keys[] = {
      .max = 1e3, .help = "sigma of the solids' eddy viscosity c_s rho_s nu_t/sigma (Krampa 2009 eq 6.20)"},
     {.section = "pipe", .name = "dispersion_schmidt", .type = SL_KEY_REAL, C(dispersion_schmidt), .def = 1.0,
      .min = 1e-3, .max = 1e3, .help = "sigma of the turbulent dispersion nu_t/sigma (Krampa 2009 eq 4.59: 1)"},
+    {.section = "pipe", .name = "dispersion", .type = SL_KEY_CHOICE, C(dispersion), .choices = "gradient|simonin",
+     .help = "the turbulent dispersivity: nu_t/sigma (gradient) or t_fs k_fs/3 with the crossing-trajectory time "
+             "(simonin; Krampa 2009 eqs 4.61-4.63)"},
+    {.section = "pipe", .name = "crossing_trajectory", .type = SL_KEY_REAL, C(crossing_trajectory), .def = 0.45,
+     .min = 0.0, .max = 10.0,
+     .help = "simonin: C_beta of t_fs (Csanady 1963: 1.8 - 1.35 cos^2, the slip along the mean motion)"},
     {.section = "solid", .name = "density", .type = SL_KEY_REAL, SL_AT_SCENE(solid.density), .def = 2500.0,
      .min = 1e-3, .max = 1e5, .units = "kg m^-3", .help = "particle density"},
     {.section = "solid", .name = "diameter", .type = SL_KEY_REAL, SL_AT_SCENE(solid.diameter), .def = 5e-4,

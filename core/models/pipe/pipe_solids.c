@@ -19,7 +19,15 @@
  *   phi v - D phi' = 0,  D = nu_t/sigma_d + c_s c_f^2 (dp_s/dphi)/K,
  *   v = -c_f^2 (dp_s/dtheta) theta'/K,
  * a cell scalar (core/fv/cell_scalar.h) with no flux through the axis and the
- * wall. The kinetic theory's pressure joins with [pipe] kinetic_pressure:
+ * wall. With `dispersion = simonin` the dispersivity nu_t/sigma_d is replaced
+ * by Simonin's D_fs = t_fs k_fs/3 (Krampa 2009 eq 4.63, Enwald et al. 1996)
+ * with the eddy-particle interaction time seen by a particle crossing the
+ * eddies (Csanady 1963; Krampa eq 4.61),
+ *   t_fs = C_mu (3k/(2 eps)) [1 + C_beta 3 |u_f - u_s|^2/(2k)]^(-1/2),
+ * and the fluid-particle covariance of Tchen's equilibrium for heavy
+ * particles, k_fs = 2 k eta/(1 + eta), eta = t_fs/t_p, t_p = c_s rho_s/K
+ * (Krampa eq 4.58): fine particles (eta large) disperse as the fluid, D_fs ->
+ * C_mu k^2/eps = nu_t. The kinetic theory's pressure joins with [pipe] kinetic_pressure:
  * where phi is small its theta grows as 1/phi^2 (the dissipation falls with
  * phi^2, the dilute viscosity does not) and rho_s phi theta with it, so that
  * it drives solids from where they are fewest; in dilute flow (5 %) this runs
@@ -53,7 +61,7 @@ static int granular_theta(pipe *p, const double *gd, sl_diag *d) {
   v[PQ_PHI] = p->phi, v[PQ_THETA] = th;
   sl_point_request rq[2] = {{"mu_s", mu, NULL, NULL}, {"gamma", gam, NULL, NULL}};
   for (int it = 0; it < 60; ++it) {
-    for (int i = 0; i < n; ++i) th[i] = exp(0.5 * (lo[i] + hi[i]));
+    for (int i = 0; i < n; ++i) th[i] = fmax(exp(0.5 * (lo[i] + hi[i])), 1e-12); /* the closure's floor */
     int rc = sl_point_eval(&p->gran, n, v, rq, 2, d);
     if (rc) return sl_diag_prefix(d, rc, "[closure.granular]");
     for (int i = 0; i < n; ++i) {
@@ -63,7 +71,8 @@ static int granular_theta(pipe *p, const double *gd, sl_diag *d) {
     }
   }
   const double w = p->iterations > 0 ? p->cfg->relaxation : 1.0; /* under-relaxed as the velocities */
-  for (int i = 0; i < n; ++i) p->theta[i] += w * (exp(0.5 * (lo[i] + hi[i])) - p->theta[i]);
+  for (int i = 0; i < n; ++i)
+    p->theta[i] = fmax(p->theta[i] + w * (exp(0.5 * (lo[i] + hi[i])) - p->theta[i]), 1e-12); /* the closure's floor */
   return 0;
 }
 
@@ -153,8 +162,14 @@ int pipe_solids_update(pipe *p, sl_diag *d) {
   }
   double Dmax = 0.0;
   for (int i = 0; i < n; ++i) {
-    double cs = p->phi[i], cf = 1.0 - cs;
-    D[i] = p->mu_t[i] / p->rho_f / p->cfg->dispersion_schmidt + cs * cf * cf * B[i] / p->K[i];
+    double cs = p->phi[i], cf = 1.0 - cs, Dt = p->mu_t[i] / p->rho_f / p->cfg->dispersion_schmidt;
+    if (p->cfg->dispersion == PIPE_DISPERSION_SIMONIN) {
+      double k = p->k[i], s2 = (p->uf[i] - p->us[i]) * (p->uf[i] - p->us[i]);
+      double tfs = p->c_mu * 1.5 * k / p->eps[i] / sqrt(1.0 + p->cfg->crossing_trajectory * 1.5 * s2 / k);
+      double tp = cs * p->rho_s / p->K[i], eta = tfs / tp, kfs = 2.0 * k * eta / (1.0 + eta);
+      Dt = tfs * kfs / 3.0;
+    }
+    D[i] = Dt + cs * cf * cf * B[i] / p->K[i];
     Dmax = fmax(Dmax, D[i]);
     cap[i] = 1.0;
   }
