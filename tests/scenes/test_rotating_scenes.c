@@ -10,13 +10,21 @@
  *    (U = Re W, V = -Im W) and the flux of 4.144 at E1 = 1, 0.01 and 100 (the
  *    Poiseuille limit) to 1e-3 of max|W|, the pressure drop -G ln 2 + the
  *    centrifugal 3/2 to 1e-3 of G ln 2, and the observed order of the
- *    profiles' error at E1 = 1 over three meshes (Q2: 3 or more). */
+ *    profiles' error at E1 = 1 over three meshes (Q2: 3 or more);
+ *  - waves: the exact initial state of Nigam's (1999) travelling waves in a
+ *    rotating cylinder (eqs 4.191-4.193, m = n = 1) written by
+ *    configs/rotating_waves.ini through the expression language's Bessel
+ *    functions: psi(0) = 0.03946, max|psi| = 0.0459, alpha in [0.1235,
+ *    0.2000], omega(0.6, 0) = -0.480 of the thesis to 1e-3, the velocity
+ *    against the state coded here in C, and the phase of the m = 1 pattern. */
 #include <complex.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/config/special.h"
+#include "core/io/output.h"
 #include "core/io/sample.h"
 #include "scene_runner.h"
 #include "testing.h"
@@ -161,14 +169,119 @@ static void ekman_channel(void) {
   CHECK_MSG(o2 > 2.8, "observed order %.2f (Q2 velocity: 3 or more)", o2);
 }
 
+/* ---- the travelling waves' initial state --------------------------------------------------------------------- */
+
+static const double WAVE_C = 0.0324, WAVE_A11 = 0.0162, WAVE_ALPHA0 = 0.2;
+
+/* Nigam (1999) eq 4.191 with zeta = pi: B(r), s = pi r^2. */
+static double wave_B(double r) {
+  double z = M_PI, s = fmax(z * r * r, 1e-300);
+  double IJz = sl_bessel_int_j0(z), IYz = sl_bessel_int_y0(z);
+  return -sl_bessel_j0(s) / sl_bessel_j0(z) +
+         M_PI / (2 * z) *
+             (sl_bessel_y0(z) / sl_bessel_j0(z) * sl_bessel_j0(s) * IJz - sl_bessel_y0(s) * sl_bessel_int_j0(s) -
+              sl_bessel_j0(s) * (IYz - sl_bessel_int_y0(s)));
+}
+
+/* psi at t = 0 (the thesis's sign: j = k x grad psi) and phi = psi - c r^2 / 2. */
+static double wave_psi(double x, double y) {
+  double r = hypot(x, y), th = atan2(y, x);
+  return WAVE_C / 2 * (r * r + wave_B(r)) + WAVE_A11 * sl_bessel_jhalf(M_PI * r * r) * cos(th);
+}
+static double wave_alpha(double x, double y) {
+  double phi = wave_psi(x, y) - WAVE_C / 2 * (x * x + y * y);
+  return WAVE_ALPHA0 - 4 * M_PI * M_PI * phi * phi; /* eq 4.193, A = 4 zeta^2 */
+}
+
+static void waves_initial(void) {
+  set_configs("configs");
+  /* the state coded here reproduces the thesis's numbers (the digest's sanity values) */
+  double psi_max = 0.0, a_min = 1.0, a_max = 0.0;
+  for (int i = 0; i <= 400; ++i)
+    for (int j = 0; j < 720; ++j) {
+      double r = i / 400.0, th = 2 * M_PI * j / 720.0, x = r * cos(th), y = r * sin(th);
+      psi_max = fmax(psi_max, fabs(wave_psi(x, y)));
+      a_min = fmin(a_min, wave_alpha(x, y)), a_max = fmax(a_max, wave_alpha(x, y));
+    }
+  double h = 1e-4, om = (wave_psi(0.6 + h, 0) + wave_psi(0.6 - h, 0) + wave_psi(0.6, h) + wave_psi(0.6, -h) -
+                         4 * wave_psi(0.6, 0)) / (h * h);
+  printf("travelling wave (4.191-4.193): B(0) = %.5f, B(1) = %.5f, psi(0) = %.5f, max|psi| = %.5f, alpha in [%.5f, "
+         "%.5f], alpha(1) = %.5f, omega(0.6, 0) = %.4f\n",
+         wave_B(0.0), wave_B(1.0), wave_psi(0, 0), psi_max, a_min, a_max, wave_alpha(1, 0), om);
+  CHECK(fabs(wave_B(0.0) - 2.4358) < 1e-4 && fabs(wave_B(1.0) + 1.0) < 1e-12);
+  CHECK(fabs(wave_psi(0, 0) - 0.03946) < 1e-5 && fabs(psi_max - 0.0459) < 1e-4);
+  CHECK(fabs(a_min - 0.1235) < 1e-4 && fabs(a_max - 0.2) < 1e-6 && fabs(wave_alpha(1, 0) - 0.18964) < 1e-5);
+  CHECK(fabs(om + 0.480) < 1e-3);
+  /* the scene's state at t = 0 */
+  const char *sets[] = {"time.end=1e-6", "time.dt=1e-6", "time.adaptive=false", NULL};
+  if (run_ok("rotating_waves", NULL, NULL, sets, "rotating_waves_0.h5")) return;
+  const char *out = "rotating_waves_0.h5";
+  sl_sample s;
+  sl_diag d = {{0}};
+  double o[2] = {0.0, 0.0};
+  if (sl_sample_points(out, "stream_function", 0.0, 1, o, &s, &d)) {
+    CHECK_MSG(0, "%s", d.msg);
+    return;
+  }
+  double psi0 = -s.values[0]; /* sluice's psi has u = psi_y: the thesis's with the opposite sign */
+  sl_sample_free(&s);
+  double smin = 0.0, phase = 0.0, tf;
+  CHECK(sl_output_read_scalar(out, "stream_function_min", 0.0, &smin, &tf, &d) == 0 &&
+        sl_output_read_scalar(out, "stream_function_phase", 0.0, &phase, &tf, &d) == 0);
+  sl_output_field f;
+  if (sl_output_read_field(out, "phi", 0.0, &f, &d)) {
+    CHECK_MSG(0, "%s", d.msg);
+    return;
+  }
+  double fmin_ = 1.0, fmax_ = 0.0;
+  for (int c = 0; c < f.n; ++c) fmin_ = fmin(fmin_, f.values[c]), fmax_ = fmax(fmax_, f.values[c]);
+  sl_output_field_free(&f);
+  /* the velocity (-psi_y, psi_x) at the nodes (all but the wall's, which hold the no-slip condition), and omega(0.6,
+     0) by differences of the field */
+  sl_output_mesh mesh;
+  if (sl_output_read_mesh(out, &mesh, &d) || sl_output_read_field(out, "velocity", 0.0, &f, &d)) {
+    CHECK_MSG(0, "%s", d.msg);
+    return;
+  }
+  double e_u = 0.0, u_max = 0.0;
+  for (int i = 0; i < mesh.n_vertices; ++i) {
+    double x = mesh.coords[3 * i], y = mesh.coords[3 * i + 1];
+    if (hypot(x, y) > 1.0 - 1e-9) continue;
+    /* 4th-order differences of psi: their error, 1e-14, is below the check */
+    double ue = -(-wave_psi(x, y + 2 * h) + 8 * wave_psi(x, y + h) - 8 * wave_psi(x, y - h) + wave_psi(x, y - 2 * h)) /
+                (12 * h);
+    double ve = (-wave_psi(x + 2 * h, y) + 8 * wave_psi(x + h, y) - 8 * wave_psi(x - h, y) + wave_psi(x - 2 * h, y)) /
+                (12 * h);
+    e_u = fmax(e_u, hypot(f.values[3 * i] - ue, f.values[3 * i + 1] - ve));
+    u_max = fmax(u_max, hypot(ue, ve));
+  }
+  sl_output_mesh_free(&mesh);
+  sl_output_field_free(&f);
+  double hd = 0.01, xy[8] = {0.6 + hd, 0, 0.6 - hd, 0, 0.6, hd, 0.6, -hd}, v[12];
+  if (sample(out, "velocity", 4, xy, v)) return;
+  /* omega = dv/dx - du/dy */
+  double om_field = (v[1] - v[4]) / (2 * hd) - (v[6] - v[9]) / (2 * hd);
+  printf("rotating_waves.ini at t = 0: psi(0) = %.5f, max|psi| = %.5f, phi in [%.5f, %.5f] (cells), velocity at the "
+         "nodes %.1e of its largest %.4f, omega(0.6, 0) = %.4f, phase of the m = 1 pattern %.6f\n",
+         psi0, -smin, fmin_, fmax_, e_u, u_max, om_field, phase);
+  CHECK_MSG(fabs(psi0 / 0.03946 - 1) < 1e-3 && fabs(-smin / 0.0459 - 1) < 1e-3, "psi(0) %.5f, max|psi| %.5f", psi0,
+            -smin);
+  CHECK_MSG(fabs(fmin_ / 0.1235 - 1) < 1e-3 && fmax_ <= 0.2 && fmax_ > 0.2 * (1 - 1e-3), "phi in [%.5f, %.5f]",
+            fmin_, fmax_);
+  CHECK_MSG(e_u < 1e-9 * u_max, "velocity error %.2e", e_u);
+  CHECK_MSG(fabs(om_field / -0.480 - 1) < 1e-3, "omega(0.6, 0) = %.4f", om_field);
+  /* the thesis's a11 J cos(theta) is at phase 0; sluice's psi has the opposite sign: pi */
+  CHECK_MSG(fabs(fabs(phase) - M_PI) < 1e-6, "phase %.8f", phase);
+}
+
 int main(int argc, char **argv) {
   static const struct {
     const char *name;
     void (*run)(void);
-  } parts[] = {{"frame", frame}, {"ekman", ekman_channel}};
+  } parts[] = {{"frame", frame}, {"ekman", ekman_channel}, {"waves", waves_initial}};
   int ran = 0;
   for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
     if (argc < 2 || strcmp(argv[1], parts[k].name) == 0) parts[k].run(), ++ran;
-  if (!ran) return fprintf(stderr, "unknown part '%s' (frame, ekman)\n", argv[1]), 2;
+  if (!ran) return fprintf(stderr, "unknown part '%s' (frame, ekman, waves)\n", argv[1]), 2;
   return sl_test_summary();
 }

@@ -446,6 +446,7 @@ struct sl_flow {
   sl_face_flux *ff;
   double *q, *psi, *node_psi;
   int datum;
+  int stream_stats; /* [output] stream_function_stats */
   int riding;
   double rho_solid;
   sl_flow_rider rider;
@@ -490,6 +491,38 @@ int sl_flow_write_mesh(sl_flow *f, sl_output *out, sl_diag *d) {
   }
   return sl_output_write_mesh(out, th->mesh->dim, th->vel->n_nodes, coords, th->mesh->n_cells,
                               th->vel->dofs_per_cell, th->vel->cell_nodes, topo[th->mesh->cell_type], d);
+}
+
+/* The stream function's extremes over the vertices and the phase of its first azimuthal mode about the rotation
+ * centre, arg int psi e^(i theta) dA (each cell: the mean of its vertices' psi, its centroid, its area), for
+ * patterns that turn, such as Nigam's (1999, section 4.4) travelling waves psi = f(r) + g(r) cos(theta - c t),
+ * whose phase is c t exactly. Sluice's psi is the thesis's with the opposite sign (u = psi_y here): the same
+ * pattern has the phase shifted by pi. */
+static int write_stream_stats(sl_flow *f, sl_output *out, sl_diag *d) {
+  const sl_mesh *m = f->mesh;
+  const double *psi = f->psi, *c0 = f->prob.opts.rotation_centre;
+  double mx = -INFINITY, mn = INFINITY, re = 0.0, im = 0.0;
+  for (int v = 0; v < m->n_vertices; ++v) mx = fmax(mx, psi[v]), mn = fmin(mn, psi[v]);
+  int nv = m->nv_per_cell;
+  for (int c = 0; c < m->n_cells; ++c) {
+    const int *cv = m->cell_vertices + (size_t)nv * c;
+    double area = 0.0, cx = 0.0, cy = 0.0, pm = 0.0;
+    for (int k = 0; k < nv; ++k) { /* the polygon's area and centroid (shoelace) */
+      const double *a = m->xy + 2 * cv[k], *b = m->xy + 2 * cv[(k + 1) % nv];
+      double cr = (a[0] - c0[0]) * (b[1] - c0[1]) - (b[0] - c0[0]) * (a[1] - c0[1]);
+      area += 0.5 * cr;
+      cx += cr * (a[0] + b[0] - 2.0 * c0[0]) / 6.0, cy += cr * (a[1] + b[1] - 2.0 * c0[1]) / 6.0;
+      pm += psi[cv[k]] / nv;
+    }
+    if (area == 0.0) continue;
+    cx /= area, cy /= area;
+    double r = hypot(cx, cy);
+    if (r > 0.0) re += pm * area * cx / r, im += pm * area * cy / r;
+  }
+  int rc = sl_output_write_scalar(out, "stream_function_max", mx, d);
+  if (!rc) rc = sl_output_write_scalar(out, "stream_function_min", mn, d);
+  if (!rc) rc = sl_output_write_scalar(out, "stream_function_phase", atan2(im, re), d);
+  return rc;
 }
 
 int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
@@ -555,6 +588,7 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
     if (!rc && q) {
       sl_stream_function_nodes(th, &f->pg, q, f->psi, f->node_psi);
       rc = sl_output_write_field(out, "stream_function", SL_CENTRE_NODE, 1, f->node_psi, d);
+      if (!rc && f->stream_stats) rc = write_stream_stats(f, out, d);
     }
   }
   return rc;
@@ -805,7 +839,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
   *out = NULL;
   sl_flow *f = calloc(1, sizeof *f);
   if (!f) return sl_diag_set(d, SL_ENOMEM, "out of memory");
-  f->sc = sc, f->mesh = sc->mesh, f->fields = fields;
+  f->sc = sc, f->mesh = sc->mesh, f->fields = fields, f->stream_stats = fc->stream_stats;
   f->riding = rho_solid >= 0.0, f->rho_solid = rho_solid;
   int geometry = sc->geometry, third = sc->flow.third_component, rc;
   int dim = f->mesh->dim, axi = geometry == 2;
