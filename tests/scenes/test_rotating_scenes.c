@@ -11,6 +11,9 @@
  *    Poiseuille limit) to 1e-3 of max|W|, the pressure drop -G ln 2 + the
  *    centrifugal 3/2 to 1e-3 of G ln 2, and the observed order of the
  *    profiles' error at E1 = 1 over three meshes (Q2: 3 or more);
+ *  - settling: heavy particles in a disc turning about its centre settle
+ *    along the centrifugal acceleration; inside, the uniform suspension thins
+ *    as d phi/dt = -2 u_t f(phi) phi (tests/scenes/rotating_settling.ini);
  *  - waves: the exact initial state of Nigam's (1999) travelling waves in a
  *    rotating cylinder (eqs 4.191-4.193, m = n = 1) written by
  *    configs/rotating_waves.ini through the expression language's Bessel
@@ -169,6 +172,42 @@ static void ekman_channel(void) {
   CHECK_MSG(o2 > 2.8, "observed order %.2f (Q2 velocity: 3 or more)", o2);
 }
 
+/* ---- centrifugal settling in the planar rotating frame --------------------------------------------------------- */
+
+/* Nigam's hindrance (1 - phi)^2 / mu_r, mu_r = (1 - phi/0.68)^(-2.5 * 0.68) (eq 2.36, Krieger). */
+static double nigam_f(double phi) { return (1 - phi) * (1 - phi) * pow(1 - phi / 0.68, 2.5 * 0.68); }
+
+/* tests/scenes/rotating_settling.ini: inside a uniform suspension in a disc turning about its centre the slip along
+ * Omega^2 r has the divergence 2 u_t f(phi) phi, so d phi/dt = -2 u_t f(phi) phi there (RK4 here), while the
+ * suspension empties outward. */
+static void settling(void) {
+  set_configs("tests/scenes");
+  if (run_ok("rotating_settling", NULL, NULL, NULL, "rotating_settling.h5")) return;
+  const double ut = 0.01;
+  double phi = 0.2, t = 0.0, worst = 0.0, drop = 0.0;
+  for (int k = 1; k <= 5; ++k) {
+    for (int i = 0; i < 1000; ++i, t += 1e-3) {
+      double h = 1e-3, k1 = -2 * ut * nigam_f(phi) * phi, p2 = phi + h / 2 * k1, k2 = -2 * ut * nigam_f(p2) * p2;
+      double p3 = phi + h / 2 * k2, k3 = -2 * ut * nigam_f(p3) * p3, p4 = phi + h * k3, k4 = -2 * ut * nigam_f(p4) * p4;
+      phi += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+    }
+    sl_sample s;
+    sl_diag d = {{0}};
+    double xy[2] = {0.01, 0.01};
+    if (sl_sample_points("rotating_settling.h5", "phi", (double)k, 1, xy, &s, &d)) {
+      CHECK_MSG(0, "%s", d.msg);
+      return;
+    }
+    worst = fmax(worst, fabs(s.values[0] - phi));
+    drop = 0.2 - phi;
+    printf("rotating settling t = %d: phi at the centre %.7f, d phi/dt = -2 u_t f(phi) phi gives %.7f\n", k,
+           s.values[0], phi);
+    sl_sample_free(&s);
+  }
+  printf("rotating settling: largest difference %.2e of the drop %.4f\n", worst, drop);
+  CHECK_MSG(worst < 1e-6 * drop, "phi at the centre off by %.2e (the drop %.4f)", worst, drop);
+}
+
 /* ---- the travelling waves' initial state --------------------------------------------------------------------- */
 
 static const double WAVE_C = 0.0324, WAVE_A11 = 0.0162, WAVE_ALPHA0 = 0.2;
@@ -213,7 +252,8 @@ static void waves_initial(void) {
   CHECK(fabs(a_min - 0.1235) < 1e-4 && fabs(a_max - 0.2) < 1e-6 && fabs(wave_alpha(1, 0) - 0.18964) < 1e-5);
   CHECK(fabs(om + 0.480) < 1e-3);
   /* the scene's state at t = 0 */
-  const char *sets[] = {"time.end=1e-6", "time.dt=1e-6", "time.adaptive=false", NULL};
+  const char *sets[] = {"time.end=1e-6", "time.dt=1e-6", "time.adaptive=false", "output.inventory_regions=disc",
+                        "output.inventory_where=x > 0, x < 0", NULL};
   if (run_ok("rotating_waves", NULL, NULL, sets, "rotating_waves_0.h5")) return;
   const char *out = "rotating_waves_0.h5";
   sl_sample s;
@@ -272,16 +312,43 @@ static void waves_initial(void) {
   CHECK_MSG(fabs(om_field / -0.480 - 1) < 1e-3, "omega(0.6, 0) = %.4f", om_field);
   /* the thesis's a11 J cos(theta) is at phase 0; sluice's psi has the opposite sign: pi */
   CHECK_MSG(fabs(fabs(phase) - M_PI) < 1e-6, "phase %.8f", phase);
+  /* inventories: the mesh region "disc" is all of it; the halves x > 0 and x < 0 add up to it and each is int alpha
+     dA over its half (midpoint rule in r and theta on the true half disc; the mesh's polygon misses 4e-4 of the
+     area near the wall) */
+  double inv = 0, inv_disc = 0, inv_r = 0, inv_l = 0;
+  CHECK(sl_output_read_scalar(out, "solids_inventory", 0.0, &inv, &tf, &d) == 0 &&
+        sl_output_read_scalar(out, "solids_inventory_disc", 0.0, &inv_disc, &tf, &d) == 0 &&
+        sl_output_read_scalar(out, "solids_inventory_where_0", 0.0, &inv_r, &tf, &d) == 0 &&
+        sl_output_read_scalar(out, "solids_inventory_where_1", 0.0, &inv_l, &tf, &d) == 0);
+  double ex_r = 0.0, ex_l = 0.0;
+  enum { NR = 400, NT = 800 };
+  for (int i = 0; i < NR; ++i)
+    for (int j = 0; j < NT; ++j) {
+      double r = (i + 0.5) / NR, th = 2 * M_PI * (j + 0.5) / NT, dA = r * (1.0 / NR) * (2 * M_PI / NT);
+      double a = wave_alpha(r * cos(th), r * sin(th)) * dA;
+      if (cos(th) > 0) ex_r += a;
+      else ex_l += a;
+    }
+  printf("inventories: disc %.8f (all %.8f), x > 0: %.6f (int alpha dA %.6f), x < 0: %.6f (%.6f)\n", inv_disc, inv,
+         inv_r, ex_r, inv_l, ex_l);
+  CHECK(inv_disc == inv && fabs(inv_r + inv_l - inv) < 1e-14 * inv);
+  CHECK_MSG(fabs(inv_r / ex_r - 1) < 1e-3 && fabs(inv_l / ex_l - 1) < 1e-3 && fabs(inv_r - inv_l) > 1e-3 * inv,
+            "halves %.6f %.6f against %.6f %.6f", inv_r, inv_l, ex_r, ex_l);
+  /* an unknown region: an error naming the nearest */
+  const char *bad[] = {"time.end=1e-6", "time.dt=1e-6", "output.inventory_regions=disk", NULL};
+  int rc = run_scene("rotating_waves", NULL, NULL, bad, "rotating_waves_bad.h5", &d);
+  CHECK_MSG(rc == SL_EBADINPUT && strstr(d.msg, "did you mean 'disc'") && strstr(d.msg, "inventory_regions"),
+            "rc %d: %s", rc, d.msg);
 }
 
 int main(int argc, char **argv) {
   static const struct {
     const char *name;
     void (*run)(void);
-  } parts[] = {{"frame", frame}, {"ekman", ekman_channel}, {"waves", waves_initial}};
+  } parts[] = {{"frame", frame}, {"ekman", ekman_channel}, {"waves", waves_initial}, {"settling", settling}};
   int ran = 0;
   for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
     if (argc < 2 || strcmp(argv[1], parts[k].name) == 0) parts[k].run(), ++ran;
-  if (!ran) return fprintf(stderr, "unknown part '%s' (frame, ekman, waves)\n", argv[1]), 2;
+  if (!ran) return fprintf(stderr, "unknown part '%s' (frame, ekman, waves, settling)\n", argv[1]), 2;
   return sl_test_summary();
 }
