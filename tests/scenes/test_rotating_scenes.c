@@ -1,5 +1,9 @@
 /* The rotating frames of the flow engine against exact solutions:
- *  - frame: plane Poiseuille flow in a frame rotating about the axis normal to
+ *  - frame: solid-body rotation at rest in the rotating frame (a cylinder
+ *    with an open side, axisymmetric, and a closed disc, planar): rest and the
+ *    pressure rho Omega^2 r^2 / 2 to round-off (the centrifugal force of the
+ *    fluid's density is taken by the pressure exactly, sl_flow_opts
+ *    centrifugal_density); plane Poiseuille flow in a frame rotating about the axis normal to
  *    the plane (tests/scenes/rotating_poiseuille.ini): the velocity is the
  *    inertial frame's, the pressure carries the Coriolis and centrifugal
  *    forces exactly, p = -2 x + (x^2 + y^2)/2 - 2 (y - y^3/3); its error at
@@ -79,8 +83,56 @@ static int rotating_poiseuille(int cells, double *ep, double *eu) {
   return 0;
 }
 
+/* The largest |u| and |p - p_exact| over the nodes of out (p_exact of r = |x| or x[0], up to a constant when
+ * closed: then p - p(node 0) against p_exact - p_exact(node 0)). */
+static int rest_errors(const char *out, int axi, double rho_omega2, int closed, double *eu, double *ep) {
+  sl_output_mesh m;
+  sl_output_field u, p;
+  sl_diag d = {{0}};
+  if (sl_output_read_mesh(out, &m, &d)) {
+    CHECK_MSG(0, "%s", d.msg);
+    return 1;
+  }
+  if (sl_output_read_field(out, "velocity", INFINITY, &u, &d) || sl_output_read_field(out, "pressure", INFINITY, &p, &d)) {
+    sl_output_mesh_free(&m);
+    CHECK_MSG(0, "%s", d.msg);
+    return 1;
+  }
+  *eu = *ep = 0.0;
+  /* the pressure at the cells' corners (their first four nodes; the others carry its Q1 interpolant) */
+  int i0 = m.cells[0];
+  double x0 = m.coords[3 * i0], y0_ = m.coords[3 * i0 + 1];
+  double p0 = closed ? p.values[i0] : 0.0, e0 = closed ? 0.5 * rho_omega2 * (axi ? x0 * x0 : x0 * x0 + y0_ * y0_) : 0.0;
+  for (int c = 0; c < m.n_cells; ++c)
+    for (int k = 0; k < 4; ++k) {
+      int i = m.cells[(size_t)c * m.nodes_per_cell + k];
+      double x = m.coords[3 * i], y = m.coords[3 * i + 1], r2 = axi ? x * x : x * x + y * y;
+      double pe = 0.5 * rho_omega2 * (r2 - (closed ? 0.0 : 1.0));
+      *ep = fmax(*ep, fabs(p.values[i] - p0 - (pe - e0)));
+    }
+  for (int i = 0; i < m.n_vertices; ++i)
+    for (int c = 0; c < 3; ++c) *eu = fmax(*eu, fabs(u.values[3 * i + c]));
+  sl_output_mesh_free(&m);
+  sl_output_field_free(&u), sl_output_field_free(&p);
+  return 0;
+}
+
 static void frame(void) {
   set_configs("tests/scenes");
+  /* solid-body rotation at rest in the frame, Omega = 10, rho = 2, R = 1: rest and p = rho Omega^2 (r^2 - 1)/2 */
+  double eu0, ep0;
+  if (run_ok("rotating_rest_axi", NULL, NULL, NULL, "rotating_rest_axi.h5") ||
+      rest_errors("rotating_rest_axi.h5", 1, 200.0, 0, &eu0, &ep0))
+    return;
+  printf("at rest in the rotating frame, axisymmetric, open side: |u| up to %.1e of Omega R, pressure error %.1e of "
+         "rho Omega^2 R^2\n", eu0 / 10.0, ep0 / 200.0);
+  CHECK_MSG(eu0 < 1e-12 * 10.0 && ep0 < 1e-12 * 200.0, "|u| %.2e, pressure error %.2e", eu0, ep0);
+  if (run_ok("rotating_rest_disc", NULL, NULL, NULL, "rotating_rest_disc.h5") ||
+      rest_errors("rotating_rest_disc.h5", 0, 200.0, 1, &eu0, &ep0))
+    return;
+  printf("at rest in the rotating frame, closed disc: |u| up to %.1e of Omega R, pressure error %.1e of "
+         "rho Omega^2 R^2\n", eu0 / 10.0, ep0 / 200.0);
+  CHECK_MSG(eu0 < 1e-12 * 10.0 && ep0 < 1e-12 * 200.0, "|u| %.2e, pressure error %.2e", eu0, ep0);
   static const int cells[3] = {8, 16, 32};
   double ep[3], eu[3];
   for (int k = 0; k < 3; ++k)

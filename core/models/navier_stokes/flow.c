@@ -192,6 +192,14 @@ static void physics_opts(physics *ph, sl_flow_opts *o) {
   o->body_force_user = ph;
   o->extra_stress = ph->riding && ph->rider ? ph->rider->extra_stress : NULL;
   o->cell_drag = ph->riding && ph->rider ? ph->rider->cell_drag : NULL;
+  o->centrifugal_density = ph->density; /* rho_f Omega^2 r goes into the pressure (sl_flow_opts) */
+}
+
+/* P_ref = rho_f Omega^2 |x - c|^2 / 2 (axisymmetric: rho_f Omega^2 r^2 / 2), the pressure of the fluid's
+ * centrifugal force, which the solved pressure leaves out (sl_flow_opts centrifugal_density). */
+static double centrifugal_pressure(const sl_flow_opts *o, const double *x) {
+  double dx = x[0] - (o->axisymmetric ? 0.0 : o->rotation_centre[0]), dy = o->axisymmetric ? 0.0 : x[1] - o->rotation_centre[1];
+  return 0.5 * o->centrifugal_density * o->omega * o->omega * (dx * dx + dy * dy);
 }
 
 /* ---- boundary conditions ------------------------------------------------- */
@@ -203,6 +211,7 @@ typedef struct bc {
   int slip_comp;             /* the velocity component normal to a slip boundary */
   double traction[MAX_COMP]; /* traction; or -p n for pressure (p in traction[0]) */
   int n_comp;
+  const sl_flow_opts *frame; /* a rotating frame: natural boundaries also get P_ref n (centrifugal_pressure) */
 } bc;
 
 typedef struct bc_set {
@@ -420,7 +429,10 @@ static int traction_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d
     for (int c = 0; c < bc_->n_comp; ++c) {
       double v;
       if (bc_->type == NS_PRESSURE) v = c < 2 ? -bc_->traction[0] * b->normal[q][c] : 0.0;
+      else if (bc_->type == NS_OPEN) v = 0.0;
       else v = bc_->traction[c];
+      /* the solved pressure is p - P_ref: sigma n = t becomes (sigma - ...) n = t + P_ref n */
+      if (bc_->frame && c < 2) v += centrifugal_pressure(bc_->frame, b->x[q]) * b->normal[q][c];
       out[q * bc_->n_comp + c] = v;
     }
   return 0;
@@ -542,9 +554,12 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
      * linear pressure on edge midpoints and the Q1 cell centre). */
     const double *p = u + th->p_offset;
     const double *shift = f->riding ? f->rider.pressure_shift : NULL;
-    if (shift) { /* the pressure of what the rider kept out of the load */
+    const sl_flow_opts *o = &f->prob.opts;
+    int frame = o->omega != 0.0 && o->centrifugal_density != 0.0;
+    if (shift || frame) { /* the pressure of what the rider kept out of the load, and of the frame's P_ref */
       double *ps = f->work + th->vel->n_nodes;
-      for (int32_t i = 0; i < th->pres->n_dofs; ++i) ps[i] = p[i] + shift[i];
+      for (int32_t i = 0; i < th->pres->n_dofs; ++i)
+        ps[i] = p[i] + (shift ? shift[i] : 0.0) + (frame ? centrifugal_pressure(o, th->pres->xy + 2 * i) : 0.0);
       p = ps;
     }
     double mean = 0.0, area = 0.0;
@@ -868,11 +883,14 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
     f->column_at_rest &= ty == NS_WALL;
     f->unforced &= ty == NS_WALL || ty == NS_SLIP || ty == NS_AXIS || ty == NS_PERIODIC;
   }
-  for (int i = 0; i < f->bcs.n; ++i)
-    if (f->bcs.b[i].type == NS_PRESSURE || f->bcs.b[i].type == NS_TRACTION) {
+  for (int i = 0; i < f->bcs.n; ++i) {
+    int ty = f->bcs.b[i].type;
+    f->bcs.b[i].frame = f->prob.opts.omega != 0.0 && f->prob.opts.centrifugal_density != 0.0 ? &f->prob.opts : NULL;
+    if (ty == NS_PRESSURE || ty == NS_TRACTION || (ty == NS_OPEN && f->bcs.b[i].frame)) {
       if (f->prob.n_tractions == SL_FLOW_MAX_TRACTIONS) break;
       f->prob.traction[f->prob.n_tractions++] = (sl_flow_traction){f->bcs.b[i].name, traction_fn, &f->bcs.b[i]};
     }
+  }
   if ((rc = bc_apply(&f->bcs, f->th, &f->prob.bc, 0.0, f->datum, d))) goto fail;
   if ((rc = sl_scene_linsolve(sc, f->th->n_dofs, &f->ls, &f->linear, d))) goto fail;
   if ((rc = sl_linsolve_set_blocks(f->ls, f->th->p_offset, d))) goto fail; /* velocity, then pressure */
