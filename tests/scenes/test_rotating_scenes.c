@@ -114,6 +114,16 @@ static int rest_errors(const char *out, int axi, double rho_omega2, int closed, 
     }
   for (int i = 0; i < m.n_vertices; ++i)
     for (int c = 0; c < 3; ++c) *eu = fmax(*eu, fabs(u.values[3 * i + c]));
+  if (axi) { /* the swirl beside the velocity */
+    sl_output_field_free(&u);
+    if (sl_output_read_field(out, "u_theta", INFINITY, &u, &d)) {
+      sl_output_mesh_free(&m);
+      sl_output_field_free(&p);
+      CHECK_MSG(0, "%s", d.msg);
+      return 1;
+    }
+    for (int i = 0; i < m.n_vertices; ++i) *eu = fmax(*eu, fabs(u.values[i]));
+  }
   sl_output_mesh_free(&m);
   sl_output_field_free(&u), sl_output_field_free(&p);
   return 0;
@@ -177,9 +187,11 @@ static int ekman(const char *scene, double E1, const char *cells, ekman_result *
   const char *sets[] = {set, NULL};
   if (run_ok(scene, NULL, NULL, cells ? sets : NULL, out)) return 1;
   enum { N = 401 }; /* Simpson's rule across the channel */
-  static double xy[2 * N], v[3 * N];
+  static double xy[2 * N], v[3 * N], sw[3 * N];
   for (int i = 0; i < N; ++i) xy[2 * i] = r, xy[2 * i + 1] = -1.0 + 2.0 * i / (N - 1);
-  if (sample(out, "velocity", N, xy, v)) return 1;
+  /* axisymmetric output: velocity (u_r, u_z, 0), the swirl beside it */
+  if (sample(out, "velocity", N, xy, v) || sample(out, "u_theta", N, xy, sw)) return 1;
+  for (int i = 0; i < N; ++i) v[3 * i + 2] = sw[3 * i];
   double e = 0.0, wmax = 0.0, q = 0.0;
   for (int i = 0; i < N; ++i) {
     double complex W = ekman_W(xy[2 * i + 1], E1, G);

@@ -723,12 +723,14 @@ static int write(mixture *x, sl_output *out, sl_diag *d) {
   int rc = x->fields & F_PHI ? sl_output_write_field(out, "phi", SL_CENTRE_CELL, 1, x->phi, d) : 0;
   double inv = sl_transport_mass(x->tr, x->phi);
   double err = x->inventory0 + x->inflow > 0.0 ? (inv - x->inventory0 - x->inflow) / (x->inventory0 + x->inflow) : 0.0;
-  if (!rc) rc = sl_output_write_scalar(out, "solids_inventory", inv, d);
+  /* the solids volume per unit depth (planar) or per radian (axisymmetric) */
+  if (!rc) rc = sl_output_write_scalar_unit(out, "solids_inventory", x->axi ? "m^3/rad" : "m^2", inv, d);
   if (!rc) rc = sl_output_write_scalar(out, "solids_conservation_error", err, d);
   for (int k = 0; k < x->n_inv && !rc; ++k) {
     const unsigned char *mask = x->inv_mask + (size_t)k * x->m->n_cells;
     for (int c = 0; c < x->m->n_cells; ++c) x->inv_phi[c] = mask[c] ? x->phi[c] : 0.0;
-    rc = sl_output_write_scalar(out, x->inv_name[k], sl_transport_mass(x->tr, x->inv_phi), d);
+    rc = sl_output_write_scalar_unit(out, x->inv_name[k], x->axi ? "m^3/rad" : "m^2",
+                                     sl_transport_mass(x->tr, x->inv_phi), d);
   }
   for (int k = 0; k < x->n_levels && !rc; ++k) {
     char name[64];
