@@ -35,6 +35,8 @@ check "[output] file outside the scene's folder and the working folder refused" 
   '[ $rc = 2 ] && grep -q "outside the scene.s folder scenes and the working folder" out5.txt && [ ! -e "$other/bed.h5" ]'
 "$S" run scenes/bed.ini -o "$other/bed.h5" > out6.txt 2>&1; rc=$?
 check "the same path with -o is the user's choice" '[ $rc = 0 ] && [ -e "$other/bed.h5" ]'
+"$S" run scenes/bed.ini --set "output.file=$other/bed2.h5" --check > out5b.txt 2>&1; rc=$?
+check "--check finds it too" '[ $rc = 2 ] && grep -q "outside the scene.s folder" out5b.txt'
 rm -rf "$other"
 "$S" run scenes/bed.ini --set "output.file=scenes/bed_out.h5" > out7.txt 2>&1; rc=$?
 check "[output] file in the scene's folder" '[ $rc = 0 ] && [ -e scenes/bed_out.h5 ] && [ -e scenes/bed_out_scalars.csv ]'
@@ -50,6 +52,7 @@ fi
 check "--summary-json of bad input" '[ $rc = 2 ] && grep -q "\"status\": \"bad input\"" bad.json && grep -q "nosuch" bad.json'
 "$S" sample bed.h5 --scalars > scalars.txt 2> /dev/null; rc=$?
 check "sample --scalars prints OUT_scalars.csv" '[ $rc = 0 ] && cmp -s scalars.txt bed_scalars.csv'
+check "sample --list names the scalars" '"$S" sample bed.h5 --list | grep -q "^scalars (3; --scalars prints them): solids_inventory \[m\],"'
 check "the scalars' header has units" 'head -1 bed_scalars.csv | grep -q "^time \[s\],solids_inventory \[m\],"'
 check "the .xmf has the scalars as grid attributes" 'grep -q "Name=\"solids_inventory\" AttributeType=\"Scalar\" Center=\"Grid\"" bed.xmf'
 check "no temporaries left" '[ -z "$(ls *.tmp scenes/*.tmp 2> /dev/null)" ]'
