@@ -29,6 +29,13 @@ for flag in "" --overwrite; do
   check "-o SCENE.ini $flag leaves the scene" 'cmp -s scenes/bed.ini keep.ini'
 done
 
+printf '[output]\nevery = 10\n' > scenes/common.ini
+printf 'include = common.ini\n' | cat - scenes/bed.ini > scenes/with_include.ini
+cp scenes/common.ini common_keep.ini
+"$S" run scenes/with_include.ini -o scenes/common.ini --overwrite > out4b.txt 2>&1; rc=$?
+check "-o an included file refused, also with --overwrite" \
+  '[ $rc = 2 ] && grep -q "which the scene includes: it is never replaced" out4b.txt && cmp -s scenes/common.ini common_keep.ini'
+
 other=$(mktemp -d)
 "$S" run scenes/bed.ini --set "output.file=$other/bed.h5" > out5.txt 2>&1; rc=$?
 check "[output] file outside the scene's folder and the working folder refused" \
