@@ -21,6 +21,7 @@ except ImportError as e:
     sys.exit(77)
 
 S, SRC, WORK = sys.argv[1], sys.argv[2], sys.argv[3]
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(SRC, "python"))
 import sluice  # noqa: E402
 
