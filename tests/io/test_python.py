@@ -106,9 +106,13 @@ except sluice.SluiceError as e:
     check(e.summary["status"] == "bad input" and not os.path.exists("never.h5"), "bad input summary")
 
 # ---- pip install ./python (offline: no build isolation), then import from there
-target = os.path.join(WORK, "site")
+import shutil  # noqa: E402
+
+target, copy = os.path.join(WORK, "site"), os.path.join(WORK, "python_src")  # the build leaves files beside the source
+shutil.rmtree(copy, ignore_errors=True)
+shutil.copytree(os.path.join(SRC, "python"), copy, ignore=shutil.ignore_patterns("__pycache__", "build", "*.egg-info"))
 r = subprocess.run([sys.executable, "-m", "pip", "install", "--quiet", "--no-build-isolation", "--no-deps",
-                    "--target", target, os.path.join(SRC, "python")], capture_output=True, text=True)
+                    "--target", target, copy], capture_output=True, text=True)
 if r.returncode == 0:
     r = subprocess.run([sys.executable, "-c", "import sluice, sys; print(sluice.__file__)"], capture_output=True,
                        text=True, env=dict(os.environ, PYTHONPATH=target))
