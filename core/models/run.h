@@ -28,4 +28,11 @@ void sl_run_output_opts(const sl_run_opts *o, char *dir, size_t cap, sl_output_o
 int sl_model_scene(sl_ini *ini, const sl_registry *reg, int create_closures, int build_mesh,
                    const sl_model_entry **entry, sl_scene **sc, sl_diag *d);
 
+/* Every check a run makes before it opens a file (the scene, the model's
+ * set-up, a restart's checkpoint against the scene) without running:
+ * `sluice run --check`. The scene is returned for its report (free with
+ * sl_scene_free). */
+int sl_model_check(sl_ini *ini, const sl_registry *reg, const char *restart, const sl_model_entry **entry,
+                   sl_scene **sc, sl_diag *d);
+
 #endif

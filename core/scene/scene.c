@@ -311,6 +311,30 @@ static int resolve_time(builder *b, sl_diag *d) {
   }
   if (!sl_scene_given(sc, &t->dt_min)) t->dt_min = t->dt * 1e-6;
   if (!sl_scene_given(sc, &t->dt_max)) t->dt_max = t->adaptive && t->end > 0 ? t->end / 10 : t->dt;
+  if (t->scheme == SL_SCHEME_STEADY) return 0;
+  /* the step's bounds agree with each other, and the output interval with them */
+  char a[400], c[400];
+  if (sl_scene_given(sc, &t->dt_min) && t->dt_min > t->dt)
+    return sl_diag_set(d, SL_EBADINPUT, "%s = %g is larger than %s = %g: the first step would be below the smallest",
+                       sl_scene_where(sc, &t->dt_min, a, sizeof a), t->dt_min, sl_scene_where(sc, &t->dt, c, sizeof c),
+                       t->dt);
+  if (t->dt_max < t->dt_min)
+    return sl_diag_set(d, SL_EBADINPUT, "%s = %g is smaller than %s = %g: no step fits between them",
+                       sl_scene_where(sc, &t->dt_max, a, sizeof a), t->dt_max,
+                       sl_scene_where(sc, &t->dt_min, c, sizeof c), t->dt_min);
+  if (t->every > 0 && t->every < t->dt_min)
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s = %g is below %s = %g: the steps that land on every output time would be shorter than the "
+                       "smallest step the run allows",
+                       sl_scene_where(sc, &t->every, a, sizeof a), t->every,
+                       sl_scene_where(sc, &t->dt_min, c, sizeof c), t->dt_min);
+  if (t->every > 0 && t->end / t->every > SL_SCENE_OUTPUT_TIMES_MAX)
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s = %g would write %.3g output times before the end t = %g (at most %g, each a full set of "
+                       "fields and a checkpoint): allowed every >= end / %g = %g",
+                       sl_scene_where(sc, &t->every, a, sizeof a), t->every, t->end / t->every, t->end,
+                       (double)SL_SCENE_OUTPUT_TIMES_MAX, (double)SL_SCENE_OUTPUT_TIMES_MAX,
+                       t->end / SL_SCENE_OUTPUT_TIMES_MAX);
   return 0;
 }
 
@@ -516,6 +540,28 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
                      "%s: this sluice was built without PETSc (configure with -DSLUICE_WITH_PETSC=ON; "
                      "Debian: libpetsc-real-dev); this build has umfpack, klu and cholmod",
                      sl_scene_where(sc, &sc->solver.linear, at, sizeof at));
+  }
+  int rank = 0, ranks = 1;
+  if (!rc) rc = sl_linsolve_ranks(&rank, &ranks, d);
+  if (!rc && ranks > 1) { /* several ranks share the linear solves (PETSc), each keeps the whole state */
+    char at[400];
+    if (!sl_linsolve_built("petsc"))
+      rc = sl_diag_set(d, SL_EBADINPUT,
+                       "launched on %d ranks (mpirun), but this sluice was built without PETSc and MPI: it runs on "
+                       "one (configure with -DSLUICE_WITH_PETSC=ON to run on several)", ranks);
+    else if (!sl_schema_key(schema, "solver", "linear"))
+      rc = sl_diag_set(d, SL_EBADINPUT, "launched on %d ranks (mpirun): the %s cannot run on several ranks yet; run "
+                       "it on one", ranks, schema->title);
+    else if (sl_scene_given(sc, &sc->solver.linear) && sc->solver.linear != 4)
+      rc = sl_diag_set(d, SL_EBADINPUT,
+                       "%s: launched on %d ranks (mpirun), the linear solves must be PETSc's (linear = petsc or "
+                       "auto); the direct solvers run on one rank",
+                       sl_scene_where(sc, &sc->solver.linear, at, sizeof at), ranks);
+  }
+  if (!rc && sl_scene_given(sc, &sc->output.file) && (!sc->output.file || !*sc->output.file)) {
+    char at[400];
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s = \"\": an empty file name (leave the key out for the scene's name with .h5)",
+                     sl_scene_where(sc, &sc->output.file, at, sizeof at));
   }
   if (!rc && o->build_mesh && sl_schema_has_section(schema, "mesh")) rc = sl_scene_mesh_build(sc, &sc->mesh, d);
   if (!rc && o->build_mesh && schema->boundary_size) rc = fill_boundaries(&b, d);

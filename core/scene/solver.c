@@ -68,12 +68,30 @@ int sl_scene_petsc_section(const sl_ini_section *sec, char **options, sl_diag *d
   return 0;
 }
 
+int sl_scene_linsolve_general(const sl_scene *sc, int32_t n, const char *why, sl_linsolve **ls, const char **name,
+                              sl_diag *d) {
+  int which = sc->solver.linear;
+  if (which > 0 && which <= (int)(sizeof linear_names / sizeof *linear_names) &&
+      strcmp(linear_names[which - 1], "cholmod") == 0) {
+    *ls = NULL;
+    char at[400];
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s = cholmod: Cholesky needs a symmetric positive definite matrix, and %s; allowed here: auto, "
+                       "umfpack, klu, petsc",
+                       sl_scene_where(sc, &sc->solver.linear, at, sizeof at), why);
+  }
+  return sl_scene_linsolve(sc, n, ls, name, d);
+}
+
 int sl_scene_linsolve(const sl_scene *sc, int32_t n, sl_linsolve **ls, const char **name, sl_diag *d) {
   *ls = NULL;
   int which = sc->solver.linear; /* 0: auto, else linear_names[which - 1] */
   int n_names = (int)(sizeof linear_names / sizeof *linear_names);
-  *name = which > 0 && which <= n_names ? linear_names[which - 1] : sl_linsolve_default_name(n);
-  int rc = 0;
+  int rank = 0, ranks = 1;
+  int rc = sl_linsolve_ranks(&rank, &ranks, d);
+  if (rc) return rc;
+  /* auto: PETSc when launched on several ranks (the scene's validation refused a direct solver there) */
+  *name = which > 0 && which <= n_names ? linear_names[which - 1] : ranks > 1 ? "petsc" : sl_linsolve_default_name(n);
   if (strcmp(*name, "petsc") == 0 && (rc = sl_linsolve_petsc_scene_options(sc->solver.petsc_options, d))) return rc;
   if ((rc = sl_linsolve_create(ls, *name, d))) return rc;
   if (sc->solver.reuse && (rc = sl_linsolve_set_reuse_name(*ls, "never", d))) {

@@ -58,6 +58,14 @@ int sl_linsolve_petsc_options(const char *options, sl_diag *d) {
   return no_petsc(&(void *){NULL}, d);
 }
 int sl_linsolve_petsc_scene_options(const char *options, sl_diag *d) { return sl_linsolve_petsc_options(options, d); }
+int sl_linsolve_ranks(int *rank, int *size, sl_diag *d) {
+  (void)d;
+  const char *r = getenv("OMPI_COMM_WORLD_RANK"), *n = getenv("OMPI_COMM_WORLD_SIZE");
+  if (!n) r = getenv("PMI_RANK"), n = getenv("PMI_SIZE");
+  *rank = r ? atoi(r) : 0;
+  *size = n && atoi(n) > 0 ? atoi(n) : 1;
+  return 0;
+}
 #endif
 enum { N_SOLVERS = (int)(sizeof solver_names / sizeof solver_names[0]) };
 /* sl_linsolve_names lists what this build can run; petsc is last and named even without it for a clear error. */

@@ -114,6 +114,10 @@ extern const sl_linsolve_ops sl_linsolve_petsc_ops;
  * replaces that level's options for the solvers created afterwards. SL_EBADINPUT without PETSc. */
 int sl_linsolve_petsc_options(const char *options, sl_diag *d);
 int sl_linsolve_petsc_scene_options(const char *options, sl_diag *d);
+/* This process's rank and the number of ranks it was launched with (mpirun sets OMPI_COMM_WORLD_SIZE or
+ * PMI_SIZE). With PETSc and a launcher, MPI starts here (through PETSc); without PETSc, *size is the
+ * launcher's so that a caller can refuse to run the same scene N times. */
+int sl_linsolve_ranks(int *rank, int *size, sl_diag *d);
 
 typedef struct sl_linsolve sl_linsolve;
 

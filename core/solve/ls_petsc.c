@@ -32,7 +32,11 @@ enum { PETSC_EXACT_MAX_IT = 10000 };
 typedef struct petsc_state {
   Mat A;
   KSP ksp;
-  Vec b, x;
+  Vec b, x;          /* this rank's rows */
+  Vec x_all;         /* every rank: the whole solution (several ranks) */
+  VecScatter to_all; /* x -> x_all */
+  int32_t r0, r1;    /* the rows this rank owns: [r0, r1) */
+  int size;          /* ranks in PETSC_COMM_WORLD */
   int32_t n, split; /* split > 0: unknowns [0, split) and [split, n) are a saddle point's two fields */
   int transient;    /* the velocity block has a mass term */
   int configured;   /* the KSP has its type and options */
@@ -52,6 +56,20 @@ static void petsc_finish(void) {
   free(scene_options);
   free(user_options);
   scene_options = user_options = NULL;
+}
+
+static int petsc_start(sl_diag *d);
+
+int sl_linsolve_ranks(int *rank, int *size, sl_diag *d) {
+  *rank = 0, *size = 1;
+  if (!petsc_started && !getenv("OMPI_COMM_WORLD_SIZE") && !getenv("PMI_SIZE")) return 0; /* not launched */
+  int rc = petsc_start(d);
+  if (rc) return rc;
+  PetscMPIInt r = 0, n = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &r);
+  MPI_Comm_size(PETSC_COMM_WORLD, &n);
+  *rank = r, *size = n;
+  return 0;
 }
 
 static int petsc_fail(PetscErrorCode e, const char *what, sl_diag *d) {
@@ -126,6 +144,8 @@ static int petsc_create(void **backend, sl_diag *d) {
 }
 
 static void petsc_release(petsc_state *s) {
+  if (s->to_all) VecScatterDestroy(&s->to_all);
+  if (s->x_all) VecDestroy(&s->x_all);
   if (s->ksp) KSPDestroy(&s->ksp);
   if (s->A) MatDestroy(&s->A);
   if (s->b) VecDestroy(&s->b);
@@ -161,8 +181,10 @@ static int configure(petsc_state *s, sl_diag *d) {
     TRY(KSPSetType(s->ksp, KSPFGMRES), "KSPSetType");
     TRY(PCSetType(pc, PCFIELDSPLIT), "PCSetType");
     IS u, p;
-    TRY(ISCreateStride(PETSC_COMM_SELF, s->split, 0, 1, &u), "ISCreateStride");
-    TRY(ISCreateStride(PETSC_COMM_SELF, s->n - s->split, s->split, 1, &p), "ISCreateStride");
+    /* this rank's rows of each field */
+    int32_t u0 = s->r0, u1 = s->r1 < s->split ? s->r1 : s->split, p0 = s->r0 > s->split ? s->r0 : s->split;
+    TRY(ISCreateStride(PETSC_COMM_WORLD, u1 > u0 ? u1 - u0 : 0, u0, 1, &u), "ISCreateStride");
+    TRY(ISCreateStride(PETSC_COMM_WORLD, s->r1 > p0 ? s->r1 - p0 : 0, p0, 1, &p), "ISCreateStride");
     PetscErrorCode e = PCFieldSplitSetIS(pc, "u", u);
     if (!e) e = PCFieldSplitSetIS(pc, "p", p);
     ISDestroy(&u);
@@ -202,27 +224,72 @@ static int configure(petsc_state *s, sl_diag *d) {
   return 0;
 }
 
+/* The rows of rank `rank` of `size`: contiguous, with about as many nonzeros each. */
+static void owned_rows(const sl_csr *A, int rank, int size, int32_t *r0, int32_t *r1) {
+  int32_t lo = 0, hi = A->n_rows;
+  if (size > 1) {
+    int64_t nnz = A->row_ptr[A->n_rows];
+    int64_t want0 = nnz * rank / size, want1 = nnz * (rank + 1) / size;
+    while (lo < A->n_rows && A->row_ptr[lo] < want0) ++lo;
+    hi = lo;
+    while (hi < A->n_rows && A->row_ptr[hi] < want1) ++hi;
+    if (rank == size - 1) hi = A->n_rows;
+  }
+  *r0 = lo, *r1 = hi;
+}
+
 static int petsc_symbolic(void *backend, const sl_csr *A, sl_diag *d) {
   petsc_state *s = backend;
   petsc_release(s);
   s->n = A->n_rows;
-  TRY(MatCreate(PETSC_COMM_SELF, &s->A), "MatCreate");
-  TRY(MatSetSizes(s->A, A->n_rows, A->n_cols, A->n_rows, A->n_cols), "MatSetSizes");
-  TRY(MatSetType(s->A, MATSEQAIJ), "MatSetType");
-  TRY(MatSeqAIJSetPreallocationCSR(s->A, (const PetscInt *)A->row_ptr, (const PetscInt *)A->col_idx, A->values),
-      "MatSeqAIJSetPreallocationCSR");
-  TRY(MatCreateVecs(s->A, &s->x, &s->b), "MatCreateVecs");
-  TRY(KSPCreate(PETSC_COMM_SELF, &s->ksp), "KSPCreate");
+  PetscMPIInt rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  s->size = size;
+  owned_rows(A, rank, size, &s->r0, &s->r1);
+  int32_t nloc = s->r1 - s->r0;
+  TRY(MatCreate(PETSC_COMM_WORLD, &s->A), "MatCreate");
+  TRY(MatSetSizes(s->A, nloc, nloc, A->n_rows, A->n_cols), "MatSetSizes");
+  if (size == 1) {
+    TRY(MatSetType(s->A, MATSEQAIJ), "MatSetType");
+    TRY(MatSeqAIJSetPreallocationCSR(s->A, (const PetscInt *)A->row_ptr, (const PetscInt *)A->col_idx, A->values),
+        "MatSeqAIJSetPreallocationCSR");
+  } else { /* every rank holds the whole system; each hands PETSc its own rows */
+    PetscInt *ptr = malloc(((size_t)nloc + 1) * sizeof *ptr);
+    if (!ptr) return sl_diag_set(d, SL_ENOMEM, "petsc: out of memory");
+    for (int32_t i = 0; i <= nloc; ++i) ptr[i] = A->row_ptr[s->r0 + i] - A->row_ptr[s->r0];
+    PetscErrorCode e = MatSetType(s->A, MATMPIAIJ);
+    if (!e)
+      e = MatMPIAIJSetPreallocationCSR(s->A, ptr, (const PetscInt *)A->col_idx + A->row_ptr[s->r0],
+                                       A->values + A->row_ptr[s->r0]);
+    free(ptr);
+    if (e) return petsc_fail(e, "MatMPIAIJSetPreallocationCSR", d);
+    TRY(VecCreateMPI(PETSC_COMM_WORLD, nloc, A->n_rows, &s->b), "VecCreateMPI");
+    TRY(VecDuplicate(s->b, &s->x), "VecDuplicate");
+    TRY(VecScatterCreateToAll(s->x, &s->to_all, &s->x_all), "VecScatterCreateToAll");
+  }
+  if (size == 1) TRY(MatCreateVecs(s->A, &s->x, &s->b), "MatCreateVecs");
+  TRY(KSPCreate(PETSC_COMM_WORLD, &s->ksp), "KSPCreate");
   return 0;
 }
 
 static int petsc_numeric(void *backend, const sl_csr *A, sl_linsolve_stats *st, sl_diag *d) {
   (void)st;
   petsc_state *s = backend;
-  PetscScalar *v;
-  TRY(MatSeqAIJGetArray(s->A, &v), "MatSeqAIJGetArray");
-  memcpy(v, A->values, (size_t)A->nnz * sizeof *v); /* the same pattern, in the same order */
-  TRY(MatSeqAIJRestoreArray(s->A, &v), "MatSeqAIJRestoreArray");
+  if (s->size == 1) {
+    PetscScalar *v;
+    TRY(MatSeqAIJGetArray(s->A, &v), "MatSeqAIJGetArray");
+    memcpy(v, A->values, (size_t)A->nnz * sizeof *v); /* the same pattern, in the same order */
+    TRY(MatSeqAIJRestoreArray(s->A, &v), "MatSeqAIJRestoreArray");
+  } else {
+    for (int32_t i = s->r0; i < s->r1; ++i) {
+      PetscInt row = i, k0 = A->row_ptr[i], nc = A->row_ptr[i + 1] - k0;
+      TRY(MatSetValues(s->A, 1, &row, nc, (const PetscInt *)A->col_idx + k0, A->values + k0, INSERT_VALUES),
+          "MatSetValues");
+    }
+    TRY(MatAssemblyBegin(s->A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    TRY(MatAssemblyEnd(s->A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  }
   TRY(KSPSetOperators(s->ksp, s->A, s->A), "KSPSetOperators");
   if (!s->configured) return configure(s, d);
   return 0;
@@ -233,12 +300,22 @@ static int solve_to(petsc_state *s, const double *b, double *x, double rtol, sl_
     TRY(KSPSetTolerances(s->ksp, rtol, 0.0, PETSC_DEFAULT, PETSC_EXACT_MAX_IT), "KSPSetTolerances");
   else
     KSPGetTolerances(s->ksp, &rtol, NULL, NULL, NULL);
-  TRY(VecPlaceArray(s->b, b), "VecPlaceArray");
-  TRY(VecPlaceArray(s->x, x), "VecPlaceArray");
+  /* this rank's part of b (every rank has all of it); the solution gathered on every rank, so that every rank
+   * goes on with the same state */
+  TRY(VecPlaceArray(s->b, b + s->r0), "VecPlaceArray");
+  if (s->size == 1) TRY(VecPlaceArray(s->x, x), "VecPlaceArray");
   PetscErrorCode e = KSPSolve(s->ksp, s->b, s->x);
   VecResetArray(s->b);
-  VecResetArray(s->x);
+  if (s->size == 1) VecResetArray(s->x);
   if (e) return petsc_fail(e, "KSPSolve", d);
+  if (s->size > 1) {
+    TRY(VecScatterBegin(s->to_all, s->x, s->x_all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    TRY(VecScatterEnd(s->to_all, s->x, s->x_all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    const PetscScalar *all;
+    TRY(VecGetArrayRead(s->x_all, &all), "VecGetArrayRead");
+    memcpy(x, all, (size_t)s->n * sizeof *x);
+    TRY(VecRestoreArrayRead(s->x_all, &all), "VecRestoreArrayRead");
+  }
   KSPConvergedReason why;
   PetscInt its = 0;
   TRY(KSPGetConvergedReason(s->ksp, &why), "KSPGetConvergedReason");
@@ -269,7 +346,8 @@ static void petsc_describe(void *backend, char *buf, size_t len) {
   PCType pt = NULL;
   PC pc;
   if (s->ksp && !KSPGetType(s->ksp, &kt) && !KSPGetPC(s->ksp, &pc)) PCGetType(pc, &pt);
-  snprintf(buf, len, "%s/%s, %ld iterations", kt ? kt : "?", pt ? pt : "?", s->iterations);
+  int k = snprintf(buf, len, "%s/%s, %ld iterations", kt ? kt : "?", pt ? pt : "?", s->iterations);
+  if (s->size > 1 && k >= 0 && (size_t)k < len) snprintf(buf + k, len - (size_t)k, ", %d ranks", s->size);
 }
 
 const sl_linsolve_ops sl_linsolve_petsc_ops = {.name = "petsc",

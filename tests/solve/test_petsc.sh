@@ -32,6 +32,7 @@ check "cavity: petsc ran its default (fgmres/fieldsplit)" grep -q "fgmres/fields
 "$sluice" sample petsc.h5 --field velocity --line 0.5,0:0.5,1 --n 65 > p_velocity.csv 2>/dev/null
 "$sluice" sample klu.h5 --field pressure --line 0,0.75:1,0.75 --n 65 > k_pressure.csv 2>/dev/null
 "$sluice" sample petsc.h5 --field pressure --line 0,0.75:1,0.75 --n 65 > p_pressure.csv 2>/dev/null
+cp k_velocity.csv k_velocity_cav.csv
 dv=$(max_diff k_velocity.csv p_velocity.csv 6) dp=$(max_diff k_pressure.csv p_pressure.csv 4)
 echo "cavity: velocity on x = 1/2 differs by $dv, pressure on y = 3/4 by $dp (relative to the largest value)"
 check "cavity velocity agrees to the solver tolerance ($dv)" below "$dv" 1e-8
@@ -79,5 +80,29 @@ for bad in "ksp_monitor = true" "log_view = true" "ksp_view = ascii:/tmp/x" "fie
   check "its message names the file and line: $bad" grep -q "bad.ini:5" <<<"$out"
   check "nothing written for: $bad" test ! -e bad.h5
 done
+# several ranks (mpirun): the linear solves shared, rank 0 writing; the same answer as KLU on one rank
+if command -v mpirun > /dev/null; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  for n in 1 2 3; do
+    mpirun -n $n "$sluice" run "$cav" -o c$n.h5 > c$n.log 2>&1
+    "$sluice" sample c$n.h5 --field velocity --line 0.5,0:0.5,1 --n 65 > c$n.csv 2>/dev/null
+    dv=$(max_diff k_velocity_cav.csv c$n.csv 6)
+    echo "cavity on $n rank(s): velocity differs from KLU's by $dv"
+    check "cavity on $n rank(s) agrees with KLU ($dv)" below "$dv" 1e-7
+    mpirun -n $n "$sluice" run "$box" "${args[@]}" -o b$n.h5 > b$n.log 2>&1
+    "$sluice" sample b$n.h5 --field phi --line 0.5,0.1:1.2,0.9 --n 41 > b$n.csv 2>/dev/null
+    dphi=$(max_diff k_phi.csv b$n.csv 4)
+    echo "boycott on $n rank(s): phi differs from KLU's by $dphi"
+    check "boycott on $n rank(s) agrees with KLU ($dphi)" below "$dphi" 1e-9
+  done
+  check "the ranks' private output folders are gone" test -z "$(ls -A | grep sluice-rank)"
+  check "2 ranks say so in the summary" grep -q "2 ranks)" c2.log
+  out=$(mpirun -n 2 "$sluice" run "$cav" --set solver.linear=klu -o no.h5 2>&1); rc=$?
+  check "a direct solver on 2 ranks is refused (exit $rc)" test "$rc" != 0
+  check "... saying why" grep -q "the linear solves must be PETSc's" <<<"$out"
+  check "... before anything is written" test ! -e no.h5
+else
+  echo "mpirun not found: the runs on several ranks are not checked"
+fi
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
