@@ -96,6 +96,17 @@ except ImportError:
 else:
     m = meshio.read("cavity.xmf")
     check(m.point_data["velocity"].shape == (len(x), 3), "meshio.read")
+    # a transient navier_stokes run (no scalars): meshio's time-series reader
+    sluice.run(os.path.join(SRC, "configs/cavity_stokes.ini"),
+               set={"mesh.cells": [4, 4], "time.scheme": "bdf1", "time.adaptive": False, "time.dt": 0.1,
+                    "time.end": 0.3, "output.every": 0.1}, output="cavity_t.h5", binary=S)
+    with meshio.xdmf.TimeSeriesReader("cavity_t.xmf") as r:  # (h5py: one locking mode per file and process)
+        r.read_points_cells()
+        ts = [r.read_data(k)[0] for k in range(r.num_steps)]
+        u_last = r.read_data(r.num_steps - 1)[1]["velocity"]
+    with sluice.Output("cavity_t.h5") as out:
+        check(np.array_equal(ts, out.times) and len(ts) == 4, f"meshio times {ts}, file {out.times}")
+        check(np.array_equal(u_last, out.field("velocity")), "meshio reads the last velocity")
 
 # ---- bad input raises with the message; nothing is written
 try:
