@@ -26,7 +26,7 @@ static const char sample_usage[] =
     "                x0,y0:x1,y1, or x0:x1 on a 1-D mesh\n"
     "  --n N         points on the line, N >= 1 (default 101)\n"
     "  --point P     one point: x,y, or x on a 1-D mesh\n"
-    "  --list        the mesh, the fields and the output times of the file\n"
+    "  --list        the mesh, the fields, the output times and the scalars\n"
     "  --scalars     the model's scalars (solids inventory, interface heights, wall\n"
     "                stresses, ...) of every output time as CSV: time, then one\n"
     "                column per scalar, the units in the header (as OUT_scalars.csv)\n"
