@@ -48,6 +48,7 @@ typedef struct physics {
   int force_varies;
   double t; /* the time the body force is evaluated at (the end of the step being solved) */
   int has_force;
+  char force_where[400]; /* file:line of [flow] body_force, for messages */
   int riding;                /* a solids fraction rides on the flow: variable density, buoyancy, phi input */
   const sl_flow_rider *rider;
 } physics;
@@ -102,9 +103,9 @@ static int force_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
     for (int c = 0; c < ph->n_comp; ++c)
       if (ph->force_expr[c]) {
         double f = sl_expr_eval(ph->force_expr[c], xyt);
-        if (!isfinite(f))
-          return sl_diag_set(d, SL_EBADINPUT, "[flow] body_force component %d is %g at (%g, %g), t = %g", c + 1, f,
-                             xyt[0], xyt[1], xyt[2]);
+        if (!isfinite(f)) /* finite at t = 0 (checked at set-up): the run cannot go on */
+          return sl_diag_set(d, SL_EFAILED, "%s: component %d is %g at (%g, %g), t = %.9g: not a finite force",
+                             ph->force_where, c + 1, f, xyt[0], xyt[1], xyt[2]);
         out[q * ph->n_comp + c] = rho * ph->gravity[c] + f;
       }
   }
@@ -139,6 +140,7 @@ static int physics_setup(const sl_scene *sc, int n_comp, int dim, int axi, int r
   int rc = vec_get(sc, &sc->flow.gravity, n_comp, ph->gravity, d);
   if (rc) return rc;
   const sl_scene_exprs *bf = &sc->flow.body_force;
+  sl_scene_where(sc, bf, ph->force_where, sizeof ph->force_where);
   if (bf->n > n_comp) {
     char at[400];
     return sl_diag_set(d, SL_EBADINPUT, "%s: %d components given, the scene has %d velocity components",
@@ -213,6 +215,7 @@ typedef struct bc_set {
   int n_pairs;     /* periodic pairs (boundary, partner), each once */
   sl_periodic_pair *pairs;
   unsigned char *open; /* [n]: the velocity is free there */
+  const sl_scene *sc;  /* for the location of a value in messages */
 } bc_set;
 
 static void bc_set_free(bc_set *s) {
@@ -248,7 +251,7 @@ static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag 
   s->pairs = calloc((size_t)m->n_boundaries + 1, sizeof *s->pairs);
   s->open = calloc((size_t)m->n_boundaries + 1, 1);
   if (!s->b || !s->pairs || !s->open) return sl_diag_set(d, SL_ENOMEM, "out of memory");
-  s->n = m->n_boundaries;
+  s->n = m->n_boundaries, s->sc = sc;
   for (int i = 0; i < s->n; ++i) {
     bc *b = &s->b[i];
     b->name = m->boundary_names[i], b->in = sl_scene_boundary(sc, i), b->type = NS_WALL, b->n_comp = n_comp;
@@ -373,12 +376,15 @@ static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag 
 typedef struct bc_eval {
   const sl_expr *e;
   double t;
+  int bad;          /* a value was not finite: the first one and where */
+  double bad_v, bad_x[2];
 } bc_eval;
 
 static void bc_value(void *user, const double x[2], double *v, double g[2]) {
-  const bc_eval *b = user;
+  bc_eval *b = user;
   double vals[3] = {x[0], x[1], b->t};
   *v = sl_expr_eval(b->e, vals);
+  if (!isfinite(*v) && !b->bad) b->bad = 1, b->bad_v = *v, b->bad_x[0] = x[0], b->bad_x[1] = x[1];
   if (g) g[0] = g[1] = 0.0;
 }
 
@@ -402,8 +408,14 @@ static int bc_apply(const bc_set *s, const sl_th_space *th, sl_constraints *con,
             rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, c, 0), NULL, NULL, 0.0, d);
             continue;
           }
-          bc_eval be = {b->in->velocity.e[c], t};
+          bc_eval be = {b->in->velocity.e[c], t, 0, 0.0, {0.0, 0.0}};
           rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, c, 0), bc_value, &be, 0.0, d);
+          if (!rc && be.bad) { /* a time-dependent value that stops being finite: the run cannot go on */
+            char at[400];
+            rc = sl_diag_set(d, SL_EFAILED, "%s: component %d is %g at (%g, %g), t = %.9g: not a finite velocity",
+                             sl_scene_where(s->sc, &b->in->velocity, at, sizeof at), c + 1, be.bad_v, be.bad_x[0],
+                             be.bad_x[1], t);
+          }
         }
       if (pass == 2 && b->type == NS_WALL) /* periodic boundaries carry no condition */
         for (int c = 0; c < th->n_comp && !rc; ++c)
@@ -462,6 +474,7 @@ struct sl_flow {
      boundary speeds (measured per step at the constrained dofs); see velocity_scale */
   double u_data;
   const char *u_data_what;
+  double accel; /* the largest acceleration the forces give a fluid at rest, F / rho + |p| / (rho L) */
   sl_model_stats st;
 };
 
@@ -626,7 +639,9 @@ static int force_depends_on_t(const physics *ph) {
  * SL_FLOW_GROWTH_FACTOR times the largest speed the data set, the boundary speeds at the step's end (the
  * constrained dofs), the initial velocity, the free-fall speed sqrt(2 F L / rho) of the body force and the
  * buoyancy F over the domain's size L, the Bernoulli speed sqrt(2 |p| / rho) of a given pressure or traction and
- * the frame's |omega| L. A flow the data drive does not leave these by two orders of magnitude (a lid-driven
+ * the frame's |omega| L, and the speed those forces give a fluid from rest over the time t run (F t / rho: a
+ * periodic channel accelerates without a length to bound it). A flow the data drive does not leave these by two
+ * orders of magnitude (a lid-driven
  * cavity stays below its lid's speed at any Re; a 10:1 contraction speeds its inflow up tenfold); an unstable
  * time integration or an unresolved flow does (issue 25: |u| 1.9e5 under a lid of 1). */
 #define SL_FLOW_GROWTH_FACTOR 100.0
@@ -643,7 +658,8 @@ static int check_growth(const sl_flow *f, const double *u, double t, sl_diag *d)
       umax = fabs(u[i]), at = i;
       if (!isfinite(umax)) break;
     }
-  double scale = fmax(u_bc, f->u_data), bound = SL_FLOW_GROWTH_FACTOR * scale;
+  double u_acc = f->accel * t; /* a periodic channel's forcing accelerates for as long as the run lasts */
+  double scale = fmax(fmax(u_bc, f->u_data), u_acc), bound = SL_FLOW_GROWTH_FACTOR * scale;
   if (scale > 0.0 && umax <= bound) return 0;
   if (scale == 0.0 && umax == 0.0) return 0; /* nothing drives it, nothing moves */
   if (scale == 0.0 && isfinite(umax)) return 0; /* no scale to judge by (round-off of a vessel at rest) */
@@ -652,7 +668,9 @@ static int check_growth(const sl_flow *f, const double *u, double t, sl_diag *d)
                      "times the speed the data set, %.3g (%s); the step is rejected (a smaller dt, a finer mesh or "
                      "a viscosity closure may resolve the flow)",
                      t, umax, (int)at, SL_FLOW_GROWTH_FACTOR, scale,
-                     u_bc >= f->u_data ? "the boundary speed" : f->u_data_what);
+                     u_acc >= fmax(u_bc, f->u_data) ? "the forces' acceleration over the time run"
+                     : u_bc >= f->u_data                ? "the boundary speed"
+                                                        : f->u_data_what);
 }
 
 int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
@@ -860,7 +878,7 @@ static int initial_velocity(const sl_scene *sc, const sl_flow_config *fc, const 
                        sl_scene_where(sc, v, at, sizeof at), v->n, th->n_comp);
   }
   for (int c = 0; c < v->n; ++c) {
-    bc_eval be = {v->e[c], 0.0};
+    bc_eval be = {v->e[c], 0.0, 0, 0.0, {0.0, 0.0}};
     sl_fe_interpolate(th->vel, bc_value, &be, u + sl_th_vel_dof(th, c, 0));
     /* evaluated once, here: a value that is not finite is bad input, found before anything is written */
     for (int32_t i = 0; i < th->vel->n_nodes; ++i) {
@@ -904,6 +922,7 @@ static void velocity_scale(sl_flow *f) {
   double cand[4] = {u0, sqrt(2.0 * F * L / rho), sqrt(2.0 * p / rho), fabs(f->prob.opts.omega) * L};
   static const char *const what[4] = {"the initial velocity", "the free fall of the body force and buoyancy",
                                       "the Bernoulli speed of the given pressure", "the frame's rotation"};
+  f->accel = F / rho + (L > 0 ? p / (rho * L) : 0.0);
   f->u_data = 0.0, f->u_data_what = what[0];
   for (int k = 0; k < 4; ++k)
     if (cand[k] > f->u_data) f->u_data = cand[k], f->u_data_what = what[k];
