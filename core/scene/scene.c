@@ -495,6 +495,17 @@ static void *target_base(sl_scene *sc, const sl_key *k) {
   return k->target == SL_IN_SCENE ? (void *)sc : k->target == SL_IN_MODEL ? sc->config : NULL;
 }
 
+/* [output] file = "" names no file: refused rather than taken as the default. */
+static int check_output_file(const sl_scene *sc, sl_diag *d) {
+  const sl_src *e = sl_scene_src(sc, &sc->output.file);
+  if (!e || (sc->output.file && *sc->output.file)) return 0;
+  return sl_diag_set(d, SL_EBADINPUT,
+                     "%s:%d: error: [output] file = \"\": the file name is empty; name the output file (e.g. file = "
+                     "result.h5) or leave the key out for the default (the scene's name with .h5, in the working "
+                     "folder)",
+                     e->file, e->line);
+}
+
 int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o, sl_scene **out, sl_diag *d) {
   *out = NULL;
   sl_scene *sc = calloc(1, sizeof *sc);
@@ -523,6 +534,7 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
       }
   }
   if (!rc) rc = resolve_time(&b, d);
+  if (!rc) rc = check_output_file(sc, d);
   if (!rc && sc->solver.linear == 4 && !sl_linsolve_built("petsc")) { /* SL_SCENE_LINEAR_CHOICES */
     char at[400];
     rc = sl_diag_set(d, SL_EBADINPUT,

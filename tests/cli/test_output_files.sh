@@ -48,7 +48,7 @@ rm -rf "$other"
 "$S" run scenes/bed.ini --set "output.file=scenes/bed_out.h5" > out7.txt 2>&1; rc=$?
 check "[output] file in the scene's folder" '[ $rc = 0 ] && [ -e scenes/bed_out.h5 ] && [ -e scenes/bed_out_scalars.csv ]'
 "$S" run scenes/bed.ini --set 'output.file=""' > out8.txt 2>&1; rc=$?
-check "[output] file = \"\" refused" '[ $rc = 2 ] && grep -q "file = \"\": an empty file name" out8.txt'
+check "[output] file = \"\" refused" '[ $rc = 2 ] && grep -q "\[output\] file = \"\": the file name is empty" out8.txt'
 
 "$S" run scenes/bed.ini -o bed.h5 --summary-json bed.json > out9.txt 2>&1; rc=$?
 check "--summary-json" '[ $rc = 0 ] && grep -q "\"status\": \"done\"" bed.json && grep -q "\"output\": \"bed.h5\"" bed.json'
