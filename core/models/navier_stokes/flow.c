@@ -195,6 +195,14 @@ static void physics_opts(physics *ph, sl_flow_opts *o) {
   o->body_force_user = ph;
   o->extra_stress = ph->riding && ph->rider ? ph->rider->extra_stress : NULL;
   o->cell_drag = ph->riding && ph->rider ? ph->rider->cell_drag : NULL;
+  o->centrifugal_density = ph->density; /* rho_f Omega^2 r goes into the pressure (sl_flow_opts) */
+}
+
+/* P_ref = rho_f Omega^2 |x - c|^2 / 2 (axisymmetric: rho_f Omega^2 r^2 / 2), the pressure of the fluid's
+ * centrifugal force, which the solved pressure leaves out (sl_flow_opts centrifugal_density). */
+static double centrifugal_pressure(const sl_flow_opts *o, const double *x) {
+  double dx = x[0] - (o->axisymmetric ? 0.0 : o->rotation_centre[0]), dy = o->axisymmetric ? 0.0 : x[1] - o->rotation_centre[1];
+  return 0.5 * o->centrifugal_density * o->omega * o->omega * (dx * dx + dy * dy);
 }
 
 /* ---- boundary conditions ------------------------------------------------- */
@@ -206,6 +214,7 @@ typedef struct bc {
   int slip_comp;             /* the velocity component normal to a slip boundary */
   double traction[MAX_COMP]; /* traction; or -p n for pressure (p in traction[0]) */
   int n_comp;
+  const sl_flow_opts *frame; /* a rotating frame: natural boundaries also get P_ref n (centrifugal_pressure) */
 } bc;
 
 typedef struct bc_set {
@@ -433,7 +442,10 @@ static int traction_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d
     for (int c = 0; c < bc_->n_comp; ++c) {
       double v;
       if (bc_->type == NS_PRESSURE) v = c < 2 ? -bc_->traction[0] * b->normal[q][c] : 0.0;
+      else if (bc_->type == NS_OPEN) v = 0.0;
       else v = bc_->traction[c];
+      /* the solved pressure is p - P_ref: sigma n = t becomes (sigma - ...) n = t + P_ref n */
+      if (bc_->frame && c < 2) v += centrifugal_pressure(bc_->frame, b->x[q]) * b->normal[q][c];
       out[q * bc_->n_comp + c] = v;
     }
   return 0;
@@ -459,6 +471,7 @@ struct sl_flow {
   sl_face_flux *ff;
   double *q, *psi, *node_psi;
   int datum;
+  int stream_stats; /* [output] stream_function_stats */
   int riding;
   double rho_solid;
   sl_flow_rider rider;
@@ -546,6 +559,38 @@ static int write_forces(sl_flow *f, sl_output *out, const double *u, sl_diag *d)
   return rc;
 }
 
+/* The stream function's extremes over the vertices and the phase of its first azimuthal mode about the rotation
+ * centre, arg int psi e^(i theta) dA (each cell: the mean of its vertices' psi, its centroid, its area), for
+ * patterns that turn, such as Nigam's (1999, section 4.4) travelling waves psi = f(r) + g(r) cos(theta - c t),
+ * whose phase is c t exactly. Sluice's psi is the thesis's with the opposite sign (u = psi_y here): the same
+ * pattern has the phase shifted by pi. */
+static int write_stream_stats(sl_flow *f, sl_output *out, sl_diag *d) {
+  const sl_mesh *m = f->mesh;
+  const double *psi = f->psi, *c0 = f->prob.opts.rotation_centre;
+  double mx = -INFINITY, mn = INFINITY, re = 0.0, im = 0.0;
+  for (int v = 0; v < m->n_vertices; ++v) mx = fmax(mx, psi[v]), mn = fmin(mn, psi[v]);
+  int nv = m->nv_per_cell;
+  for (int c = 0; c < m->n_cells; ++c) {
+    const int *cv = m->cell_vertices + (size_t)nv * c;
+    double area = 0.0, cx = 0.0, cy = 0.0, pm = 0.0;
+    for (int k = 0; k < nv; ++k) { /* the polygon's area and centroid (shoelace) */
+      const double *a = m->xy + 2 * cv[k], *b = m->xy + 2 * cv[(k + 1) % nv];
+      double cr = (a[0] - c0[0]) * (b[1] - c0[1]) - (b[0] - c0[0]) * (a[1] - c0[1]);
+      area += 0.5 * cr;
+      cx += cr * (a[0] + b[0] - 2.0 * c0[0]) / 6.0, cy += cr * (a[1] + b[1] - 2.0 * c0[1]) / 6.0;
+      pm += psi[cv[k]] / nv;
+    }
+    if (area == 0.0) continue;
+    cx /= area, cy /= area;
+    double r = hypot(cx, cy);
+    if (r > 0.0) re += pm * area * cx / r, im += pm * area * cy / r;
+  }
+  int rc = sl_output_write_scalar_unit(out, "stream_function_max", "m^2/s", mx, d);
+  if (!rc) rc = sl_output_write_scalar_unit(out, "stream_function_min", "m^2/s", mn, d);
+  if (!rc) rc = sl_output_write_scalar_unit(out, "stream_function_phase", "rad", atan2(im, re), d);
+  return rc;
+}
+
 int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
   const sl_th_space *th = f->th;
   int rc = write_forces(f, out, u, d);
@@ -569,9 +614,12 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
      * linear pressure on edge midpoints and the Q1 cell centre). */
     const double *p = u + th->p_offset;
     const double *shift = f->riding ? f->rider.pressure_shift : NULL;
-    if (shift) { /* the pressure of what the rider kept out of the load */
+    const sl_flow_opts *o = &f->prob.opts;
+    int frame = o->omega != 0.0 && o->centrifugal_density != 0.0;
+    if (shift || frame) { /* the pressure of what the rider kept out of the load, and of the frame's P_ref */
       double *ps = f->work + th->vel->n_nodes;
-      for (int32_t i = 0; i < th->pres->n_dofs; ++i) ps[i] = p[i] + shift[i];
+      for (int32_t i = 0; i < th->pres->n_dofs; ++i)
+        ps[i] = p[i] + (shift ? shift[i] : 0.0) + (frame ? centrifugal_pressure(o, th->pres->xy + 2 * i) : 0.0);
       p = ps;
     }
     double mean = 0.0, area = 0.0;
@@ -617,6 +665,7 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
       /* Stokes' stream function of the (r, z) plane has the units of a flow rate per radian */
       rc = sl_output_write_field_unit(out, "stream_function", f->ph.axisymmetric ? "m^3/s" : "m^2/s",
                                       SL_CENTRE_NODE, 1, f->node_psi, d);
+      if (!rc && f->stream_stats) rc = write_stream_stats(f, out, d);
     }
   }
   return rc;
@@ -989,7 +1038,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
   *out = NULL;
   sl_flow *f = calloc(1, sizeof *f);
   if (!f) return sl_diag_set(d, SL_ENOMEM, "out of memory");
-  f->sc = sc, f->mesh = sc->mesh, f->fields = fields;
+  f->sc = sc, f->mesh = sc->mesh, f->fields = fields, f->stream_stats = fc->stream_stats;
   f->riding = rho_solid >= 0.0, f->rho_solid = rho_solid;
   int geometry = sc->geometry, third = sc->flow.third_component, rc;
   int dim = f->mesh->dim, axi = geometry == 2;
@@ -1018,11 +1067,14 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
     f->column_at_rest &= ty == NS_WALL;
     f->unforced &= ty == NS_WALL || ty == NS_SLIP || ty == NS_AXIS || ty == NS_PERIODIC;
   }
-  for (int i = 0; i < f->bcs.n; ++i)
-    if (f->bcs.b[i].type == NS_PRESSURE || f->bcs.b[i].type == NS_TRACTION) {
+  for (int i = 0; i < f->bcs.n; ++i) {
+    int ty = f->bcs.b[i].type;
+    f->bcs.b[i].frame = f->prob.opts.omega != 0.0 && f->prob.opts.centrifugal_density != 0.0 ? &f->prob.opts : NULL;
+    if (ty == NS_PRESSURE || ty == NS_TRACTION || (ty == NS_OPEN && f->bcs.b[i].frame)) {
       if (f->prob.n_tractions == SL_FLOW_MAX_TRACTIONS) break;
       f->prob.traction[f->prob.n_tractions++] = (sl_flow_traction){f->bcs.b[i].name, traction_fn, &f->bcs.b[i]};
     }
+  }
   if ((rc = bc_apply(&f->bcs, f->th, &f->prob.bc, 0.0, f->datum, d))) goto fail;
   if ((rc = sl_scene_linsolve_general(sc, f->th->n_dofs,
                                        "the flow's matrix couples velocity and pressure (a saddle point: symmetric "

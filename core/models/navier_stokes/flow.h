@@ -22,7 +22,8 @@
  *   [solver] linear, ordering, nonlinear, nonlinear_tolerance,
  *            max_iterations, picard_first, continuation, continuation_from,
  *            continuation_steps
- *   [output] file, every, fields */
+ *   [output] file, every, fields, stream_function_stats (the stream
+ *            function's extremes and the phase of its first azimuthal mode) */
 #ifndef SLUICE_MODELS_NAVIER_STOKES_FLOW_H
 #define SLUICE_MODELS_NAVIER_STOKES_FLOW_H
 
@@ -59,6 +60,7 @@ extern const sl_key_table sl_flow_keys_initial;  /* [initial] velocity */
 /* The model's configuration the flow reads ([initial] velocity). */
 typedef struct sl_flow_config {
   sl_scene_exprs velocity;
+  int stream_stats; /* [output] stream_function_stats */
 } sl_flow_config;
 
 typedef struct sl_flow sl_flow;
