@@ -32,7 +32,7 @@ typedef struct tparam {
   const char *units, *help;
 } tparam;
 
-enum { T_MAX_IN = 4, T_MAX_OUT = 3, T_MAX_PARAMS = 3 };
+enum { T_MAX_IN = 4, T_MAX_OUT = 6, T_MAX_PARAMS = 5 };
 
 /* The placeholder of one kind: the inputs it declares (bit i of diff: input i
  * differentiable), the outputs, parameters, the law as C lines (`setup`
@@ -181,6 +181,32 @@ static const ttemplate templates[] = {
      {0.5, 1.0, 2e-3},
      2.05e-7,
      "0.41 * (1e-3)^2 * 0.5"},
+    {SL_KIND_TURBULENCE,
+     {"k", "epsilon", "rho_f"},
+     0u,
+     {"mu_t", "mu_t_k", "mu_t_eps", "eps_production", "eps_sink", "c_mu"},
+     {{"c_mu", 0.09, 1e-3, 1.0, "1", "C_mu of the eddy viscosity"},
+      {"c_eps1", 1.44, 0.1, 5.0, "1", "C_eps1, on the production in the epsilon equation"},
+      {"c_eps2", 1.92, 0.1, 5.0, "1", "C_eps2, on the destruction in the epsilon equation"},
+      {"sigma_k", 1.0, 0.1, 10.0, "1", "turbulent Prandtl number of k"},
+      {"sigma_eps", 1.3, 0.1, 10.0, "1", "turbulent Prandtl number of epsilon"}},
+     "  double *mu_t = a->out[OUT_MU_T], *mu_t_k = a->out[OUT_MU_T_K], *mu_t_eps = a->out[OUT_MU_T_EPS];\n"
+     "  double *eps_production = a->out[OUT_EPS_PRODUCTION], *eps_sink = a->out[OUT_EPS_SINK];\n"
+     "  double *c_mu = a->out[OUT_C_MU];\n",
+     "    const double k = a->in[IN_K][q], eps = a->in[IN_EPSILON][q], rho = a->in[IN_RHO_F][q];\n"
+     "    mu_t[q] = p->c_mu * rho * k * k / eps;\n"
+     "    mu_t_k[q] = mu_t[q] / p->sigma_k;\n"
+     "    mu_t_eps[q] = mu_t[q] / p->sigma_eps;\n"
+     "    eps_production[q] = p->c_eps1 * eps / k;\n"
+     "    eps_sink[q] = p->c_eps2 * rho * eps / k;\n"
+     "    c_mu[q] = p->c_mu;\n",
+     "mu_t = c_mu rho_f k^2 / epsilon,  mu_t_k = mu_t / sigma_k,  mu_t_eps = mu_t / sigma_eps,\n"
+     "eps_production = c_eps1 epsilon / k,  eps_sink = c_eps2 rho_f epsilon / k",
+     "Launder & Spalding (1974), the standard k-epsilon model",
+     "fully turbulent flow away from walls (high Reynolds number)",
+     {1.0, 0.09, 1.0},
+     1.0,
+     "0.09 * 1 * 1^2 / 0.09"},
 };
 
 static const ttemplate *template_of(sl_kind k) {

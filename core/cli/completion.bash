@@ -49,7 +49,7 @@ _sluice() {
       if [ "$COMP_CWORD" -eq 2 ]; then
         COMPREPLY=($(compgen -W "describe eval kinds new index --help" -- "$cur"))
       elif [ "${COMP_WORDS[2]}" = kinds ] || { [ "${COMP_WORDS[2]}" = new ] && [ "$COMP_CWORD" -eq 3 ]; }; then
-        COMPREPLY=($(compgen -W "drag hindered_settling viscosity solids_pressure wall_stress granular migration --markdown" -- "$cur"))
+        COMPREPLY=($(compgen -W "$(sluice closure kinds 2>/dev/null | sed -n 's/^\([a-z_]*\): .*/\1/p') --markdown" -- "$cur"))
       elif [ "${COMP_WORDS[2]}" = new ]; then
         [ "$prev" = -o ] && { COMPREPLY=($(compgen -d -- "$cur")); return; }
         COMPREPLY=($(compgen -W "-o" -- "$cur"))

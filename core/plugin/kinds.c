@@ -4,7 +4,7 @@
 #include <string.h>
 
 static const char *const kind_names[] = {"drag",        "hindered_settling", "viscosity", "solids_pressure",
-                                         "wall_stress", "granular",          "migration"};
+                                         "wall_stress", "granular",          "migration", "turbulence"};
 
 /* The host's field dictionary (closure.h, "Canonical input names"): what the
  * models can supply, with the range they supply it in. The typical values are
@@ -26,12 +26,14 @@ static const sl_input_info inputs[] = {
     {"slip_wall", "m s^-1", "tangential solids speed at the first node off the wall", 1.0, 0.0, 100.0},
     {"u_t", "m s^-1", "terminal settling velocity of one particle", 1e-3, 0.0, 100.0},
     {"pressure", "Pa", "local pressure", 1e5, -1e12, 1e12},
+    {"k", "m^2 s^-2", "turbulent kinetic energy", 1e-2, 1e-30, 1e6},
+    {"epsilon", "m^2 s^-3", "dissipation rate of the turbulent kinetic energy", 1e-1, 1e-30, 1e9},
 };
 enum { N_INPUTS = (int)(sizeof inputs / sizeof inputs[0]) };
 /* The same names in the same order, for suggestions (sl_input_names). */
 static const char *const input_names[] = {
     "phi",      "slip",    "shear_rate", "theta",    "rho_f",         "mu_f",      "rho_s", "d_p",
-    "sphericity", "density", "gravity",  "d_vessel", "wall_distance", "slip_wall", "u_t",   "pressure"};
+    "sphericity", "density", "gravity",  "d_vessel", "wall_distance", "slip_wall", "u_t",   "pressure", "k",     "epsilon"};
 _Static_assert(sizeof input_names / sizeof input_names[0] == sizeof inputs / sizeof inputs[0],
                "one name per input of the dictionary");
 
@@ -49,7 +51,7 @@ static const sl_kind_info contracts[] = {
          "phi outside [0, the law's packing limit] (a dense law diverges as the fluid fraction goes to 0); "
          "slip < 0; a material input (rho_f, mu_f, d_p) outside its declared range; any NaN",
          "two_fluid (1-D column, 2-D model, shear layer): K and dK/dslip at each point; the shear layer gives no "
-         "shear_rate"},
+         "shear_rate; pipe: K of the fluid-solids exchange"},
     [SL_KIND_HINDERED_SETTLING] =
         {"settling speed of the solids relative to the mixture as a function of the solids fraction (positive "
          "along gravity)",
@@ -85,7 +87,7 @@ static const sl_kind_info contracts[] = {
          {{"p_s", "Pa", "solids pressure", 1}},
          0,
          "phi outside [0, 1] (or beyond the law's own limit); any NaN. The closure takes no slip",
-         "two_fluid (1-D column and 2-D model): p_s and dp_s/dphi"},
+         "two_fluid (1-D column and 2-D model): p_s and dp_s/dphi; pipe: p_s when the scene has one"},
     [SL_KIND_WALL_STRESS] =
         {"shear stress the wall exerts on the solids as a function of their tangential slip at the wall",
          {"slip_wall"},
@@ -93,11 +95,15 @@ static const sl_kind_info contracts[] = {
          {"phi", "theta", "wall_distance", "rho_s", "mu_f", "d_p"},
          {{"tau_w", "Pa", "solids wall shear stress (magnitude, opposing the slip)", 1},
           {"bagnold_number", "1", "Bagnold number at the wall (optional, written to the output)", 0},
-          {"theta_flux", "kg s^-3", "granular-energy flux through the wall (optional, with a transported theta)", 0}},
+          {"theta_flux", "kg s^-3", "granular-energy flux through the wall (optional, with a transported theta)", 0},
+          {"u_tau", "m s^-1", "friction velocity (a fluid wall function, pipe model)", 0},
+          {"y_plus", "1", "the node's distance in wall units (a fluid wall function)", 0}},
          0,
          "slip_wall < 0; phi outside [0, packing]; wall_distance <= 0; any NaN. The closure takes no shear_rate "
          "(slip_wall and wall_distance give the wall's shear rate)",
-         "two_fluid 2-D model and shear layer, on walls with solids = wall_stress: tau_w and dtau_w/dslip_wall"},
+         "two_fluid 2-D model and shear layer, on walls with solids = wall_stress: tau_w and dtau_w/dslip_wall; "
+         "pipe: [closure.wall_stress.solids] the same, and [closure.wall_stress.fluid] the fluid's wall function "
+         "(u_tau, y_plus, k_wall, epsilon_wall besides tau_w)"},
     [SL_KIND_GRANULAR] =
         {"kinetic-theory coefficients of the solids phase as functions of the solids fraction and the granular "
          "temperature",
@@ -112,7 +118,7 @@ static const sl_kind_info contracts[] = {
          1,
          "phi outside [0, phi_max) where the radial distribution function diverges; theta <= 0; any NaN",
          "two_fluid 2-D model and shear layer: mu_s, gamma and kappa of (phi, theta) (the 2-D model with the "
-         "algebraic theta reads no kappa); p_s when present (the kinetic pressure)"},
+         "algebraic theta reads no kappa); p_s when present (the kinetic pressure); pipe: mu_s, gamma and p_s"},
     [SL_KIND_MIGRATION] =
         {"diffusion coefficients of the shear-induced migration of the solids, the collision and the "
          "viscosity-gradient fluxes (Phillips et al. 1992)",
@@ -124,6 +130,22 @@ static const sl_kind_info contracts[] = {
          1,
          "phi outside [0, packing]; shear_rate < 0; any NaN",
          "mixture: D_c and D_mu of phi and shear_rate (and d_p), with [closure.viscosity] as the viscosity of phi"},
+    [SL_KIND_TURBULENCE] =
+        {"eddy viscosity of the fluid and the coefficients of a two-equation turbulence model as functions of the "
+         "turbulent kinetic energy k and its dissipation rate epsilon",
+         {"k", "epsilon"},
+         0u,
+         {"rho_f", "mu_f", "phi"},
+         {{"mu_t", "Pa s", "eddy viscosity", 1},
+          {"mu_t_k", "Pa s", "turbulent diffusivity of k, mu_t/sigma_k", 0},
+          {"mu_t_eps", "Pa s", "turbulent diffusivity of epsilon, mu_t/sigma_eps", 0},
+          {"eps_production", "s^-1", "the epsilon source per unit production of k, C_eps1 eps/k", 0},
+          {"eps_sink", "kg m^-3 s^-1", "the epsilon destruction over epsilon, C_eps2 rho eps/k", 0},
+          {"c_mu", "1", "C_mu, for the wall function's k and epsilon", 0}},
+         0,
+         "k <= 0 or epsilon <= 0 (the eddy viscosity k^2/eps and eps/k diverge); any NaN",
+         "pipe (Krampa 2009): mu_t, mu_t_k, mu_t_eps, eps_production, eps_sink and c_mu of (k, epsilon) in the "
+         "k-epsilon equations"},
 };
 
 const sl_kind_info *sl_kind_info_of(sl_kind kind) {
@@ -160,7 +182,7 @@ int sl_kind_from_name(const char *name, sl_kind *kind, sl_diag *d) {
   if (s) return sl_diag_set(d, SL_EBADINPUT, "unknown closure kind '%s'; did you mean '%s'?", name, s);
   return sl_diag_set(d, SL_EBADINPUT,
                      "unknown closure kind '%s' (kinds: drag, hindered_settling, viscosity, solids_pressure, "
-                     "wall_stress, granular, migration)",
+                     "wall_stress, granular, migration, turbulence)",
                      name);
 }
 

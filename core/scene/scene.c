@@ -500,8 +500,9 @@ static int check_output_file(const sl_scene *sc, sl_diag *d) {
   const sl_src *e = sl_scene_src(sc, &sc->output.file);
   if (!e || (sc->output.file && *sc->output.file)) return 0;
   return sl_diag_set(d, SL_EBADINPUT,
-                     "%s:%d: error: [output] file is empty; name the output file (e.g. file = result.h5) or leave "
-                     "the key out for the default (the scene's name with .h5, in the working folder)",
+                     "%s:%d: error: [output] file = \"\": the file name is empty; name the output file (e.g. file = "
+                     "result.h5) or leave the key out for the default (the scene's name with .h5, in the working "
+                     "folder)",
                      e->file, e->line);
 }
 

@@ -73,7 +73,8 @@ typedef enum sl_kind {
   SL_KIND_SOLIDS_PRESSURE = 4,
   SL_KIND_WALL_STRESS = 5,
   SL_KIND_GRANULAR = 6,
-  SL_KIND_MIGRATION = 7
+  SL_KIND_MIGRATION = 7,
+  SL_KIND_TURBULENCE = 8
 } sl_kind;
 
 /* ---- parameter schema ------------------------------------------------- */
@@ -113,6 +114,7 @@ typedef struct sl_param_desc {
  *   gravity     magnitude of the effective body force    m s^-2
  *   d_vessel    vessel (pipe, column) diameter           m
  *   wall_distance, slip_wall   distance to and tangential slip at a wall
+ *   k, epsilon  turbulent kinetic energy and its dissipation rate  m^2 s^-2, m^2 s^-3
  * Each input carries a typical value (used by `sluice closure eval` and the
  * conformance battery when no value is given) and its validity range. */
 typedef struct sl_field_desc {

@@ -7,7 +7,8 @@ sluice=$1 inc=$2 work=$3 cc=$4
 rm -rf "$work"; mkdir -p "$work"; cd "$work" || exit 1
 pass=0 fail=0
 kinds=$("$sluice" closure kinds | sed -n 's/^\([a-z_]*\): .*/\1/p')
-[ "$(wc -w <<<"$kinds")" = 7 ] || { echo "expected 7 kinds, got: $kinds"; exit 1; }
+n_kinds=$(wc -w <<<"$kinds")
+[ "$n_kinds" -ge 8 ] || { echo "expected every kind (8 or more), got: $kinds"; exit 1; }
 for k in $kinds; do
   if "$sluice" closure new "$k" "t_$k" -o "t_$k" > /dev/null &&
      "$cc" -std=c11 -Wall -Wextra -Werror -pedantic -shared -fPIC -fvisibility=hidden -I"$inc" "t_$k/t_$k.c" \
