@@ -489,6 +489,6 @@ int sl_cmd_closure_new(int argc, char **argv) {
          "next: replace the law between the PLACEHOLDER LAW lines of %s, then\n"
          "  cmake -S %s -B %s/build -DCMAKE_PREFIX_PATH=<sluice install prefix>\n"
          "  cmake --build %s/build && ctest --test-dir %s/build\n",
-         src, cm, kind_name, name, t->formula, src, dir, dir, dir, dir);
+         src, cm, kind_name, name, t->reference, src, dir, dir, dir, dir);
   return 0;
 }
