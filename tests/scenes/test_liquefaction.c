@@ -1,0 +1,145 @@
+/* configs/liquefaction.ini: a sand deposit built by settling in the 1-D
+ * two-fluid column, shaken at its base by the synthetic 6 s record, run to
+ * 3 minutes (Pringle 2001, thesis sections 5.4-5.5; digest of seed 000,
+ * 4.6-4.7). Checked:
+ * - the deposit at rest: the total vertical stress p + p_s of the base cell
+ *   against the weight of the column above its centre (O(h): the face takes
+ *   its gravity-side cell's solids fraction), solids and fluid conserved to
+ *   round-off over settling, shaking and consolidation;
+ * - the undrained load transfer: a uniform drop of nbar at t = 0 puts
+ *   1 - exp(-dnbar/(A phi)) of each cell's p_s0 on the fluid (Pringle's eq
+ *   4.30 at fixed phi); the onset criterion (excess = 0.95 p_s0) is reached
+ *   at the drop dnbar = A phi ln 20 the law predicts;
+ * - the base case (0.8 mm): onset (ratio >= 0.95) first at an intermediate
+ *   depth, neither at the surface nor at the base; the liquefied zone grows
+ *   after onset; settlement of the order of 3 % of the depth; a small excess
+ *   left at the base at 3 minutes; no step cut;
+ * - 0.08 mm: a thicker liquefied zone at 6 s (8 mm gravel: reported only, see docs/liquefaction.md). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene_fields.h"
+#include "scene_runner.h"
+#include "testing.h"
+
+static char configs[4096];
+SCENE_RUNNERS()
+
+static const double g = 9.81, rho_s = 2650.0, rho_f = 1000.0, A = 0.015;
+
+static void at_rest_and_conservation(const char *out) {
+  int n;
+  double *phi = field_at(out, "phi", 0.0, &n, NULL), *p = field_at(out, "pressure", 0.0, &n, NULL);
+  double *ps = field_at(out, "solids_pressure", 0.0, &n, NULL);
+  if (!phi || !p || !ps) return;
+  const double h = 17.0 / n;
+  double w = 0.5 * h * (phi[0] * rho_s + (1.0 - phi[0]) * rho_f) * g;
+  for (int i = 1; i < n; ++i) w += h * (phi[i] * rho_s + (1.0 - phi[i]) * rho_f) * g;
+  double total = p[0] + ps[0], err = (total - w) / w;
+  printf("  at rest: base cell p + p_s = %.1f Pa, weight above %.1f Pa (%.2e); p_s %.1f Pa\n", total, w, err, ps[0]);
+  CHECK_MSG(fabs(err) < 5e-3, "total vertical stress off the weight by %.3g", err); /* 68 cells: 4.3e-3 */
+  double es = scalar(out, "solids_conservation_error", INFINITY), ef = scalar(out, "fluid_conservation_error", INFINITY);
+  printf("  conservation at 186 s: solids %.2e, fluid %.2e\n", es, ef);
+  CHECK_MSG(fabs(es) < 1e-13 && fabs(ef) < 1e-13, "conservation %g %g", es, ef);
+  free(phi), free(p), free(ps);
+}
+
+/* The depth-time history of the pore pressure ratio: its first output with ratio >= 0.95 per cell. */
+static void base_case(const char *out) {
+  double H = scalar(out, "deposit_height", 0.0), t_on = scalar(out, "onset_time", INFINITY);
+  double z_on = scalar(out, "onset_depth", INFINITY);
+  printf("  base case: deposit %.2f m, onset at t = %.2f s, depth %.3f m (%.2f H)\n", H, t_on, z_on, z_on / H);
+  CHECK_MSG(isfinite(t_on) && t_on < 6.0, "no onset during the shaking (%g)", t_on);
+  CHECK_MSG(z_on > 0.2 * H && z_on < 0.8 * H, "onset at depth %g of %g: not intermediate", z_on, H);
+  /* the surface cell and the base cell never reach 0.95 */
+  double surf = 0.0, base = 0.0, thick_on = NAN, thick_max = 0.0;
+  for (double t = 0.0; t <= 186.0 + 1e-9; t += 0.5) {
+    int n;
+    double tf, *ru = field_at(out, "pore_pressure_ratio", t, &n, &tf);
+    if (!ru) return;
+    int top = (int)floor(H / (17.0 / n) + 0.5) - 1;
+    surf = fmax(surf, ru[top]), base = fmax(base, ru[0]);
+    double th = scalar(out, "liquefied_thickness", t);
+    if (isnan(thick_on) && t >= t_on) thick_on = th;
+    if (t <= 6.0) thick_max = fmax(thick_max, th);
+    free(ru);
+  }
+  printf("  largest ratio in the surface cell %.3f, in the base cell %.3f; liquefied %.2f m at onset, %.2f m at most "
+         "during shaking\n", surf, base, thick_on, thick_max);
+  CHECK_MSG(surf < 0.95 && base < 0.95, "surface %g or base %g liquefied", surf, base);
+  CHECK_MSG(thick_max > thick_on, "the liquefied zone did not grow after onset (%g -> %g)", thick_on, thick_max);
+  double s6 = scalar(out, "settlement", 6.0), s_end = scalar(out, "settlement", INFINITY);
+  printf("  settlement %.3f m at 6 s, %.3f m at 186 s (%.2f %% of the depth; thesis: nearly 40 cm, about 3 %%)\n", s6,
+         s_end, 100.0 * s_end / H);
+  CHECK_MSG(s_end > 0.01 * H && s_end < 0.05 * H, "settlement %g m of %g", s_end, H);
+  double peak = 0.0, t_peak = 0.0;
+  for (double t = 0.0; t <= 186.0 + 1e-9; t += 0.5) {
+    double v = scalar(out, "base_excess_pressure", t);
+    if (v > peak) peak = v, t_peak = t;
+  }
+  double left = scalar(out, "base_excess_pressure", INFINITY);
+  printf("  base excess pore pressure: peak %.0f Pa at %.1f s, %.0f Pa (%.2f %%) left at 186 s\n", peak, t_peak, left,
+         100.0 * left / peak);
+  CHECK_MSG(left > 0.0 && left < 0.05 * peak, "base excess at 3 min %g (peak %g)", left, peak);
+}
+
+static void variants(const char *base) {
+  const char *fine_sets[] = {"solid.diameter=8e-5", "deposit.settle=400000", "deposit.settle_dt=50", NULL};
+  const char *gravel_sets[] = {"solid.diameter=8e-3", NULL};
+  if (run_ok("liquefaction", NULL, NULL, fine_sets, "test_liquefaction_fine.h5")) return;
+  if (run_ok("liquefaction", NULL, NULL, gravel_sets, "test_liquefaction_gravel.h5")) return;
+  double tb = scalar(base, "liquefied_thickness", 6.0), tf = scalar("test_liquefaction_fine.h5", "liquefied_thickness", 6.0);
+  double rg = scalar("test_liquefaction_gravel.h5", "max_pore_pressure_ratio", INFINITY);
+  double tg = 0.0;
+  for (double t = 0.0; t <= 186.0 + 1e-9; t += 0.5)
+    tg = fmax(tg, scalar("test_liquefaction_gravel.h5", "liquefied_thickness", t));
+  printf("  liquefied at 6 s: 0.8 mm %.2f m, 0.08 mm %.2f m; 8 mm: largest ratio %.3f, liquefied %.2f m\n", tb, tf, rg,
+         tg);
+  CHECK_MSG(tf > tb, "0.08 mm liquefied %g m, not more than 0.8 mm's %g m", tf, tb);
+  /* NOT reproduced (docs/liquefaction.md): the thesis's gravel does not liquefy; here it reaches 0.957 while
+     settling 0.11 m during the shaking (reported, not asserted, until the cause is found) */
+}
+
+/* A uniform drop of nbar at t = 0, no shaking: after 0.2 s the excess of each deposit cell against Pringle's
+ * undrained transfer 1 - exp(-dnbar/(A phi)); with dnbar = A phi_c ln 20 cell c is at the onset ratio 0.95. */
+static void undrained_transfer(const char *base) {
+  int n;
+  double *phi = field_at(base, "phi", 0.0, &n, NULL);
+  if (!phi) return;
+  const int c = 20;
+  double drop = A * phi[c] * log(20.0);
+  char set_drop[128];
+  snprintf(set_drop, sizeof set_drop, "deposit.nbar_drop=%.17g", drop);
+  /* 0.2 s: long after the solids' drag relaxation rho_s phi / K (about 8 ms), short of drainage below 2.5 m */
+  const char *sets[] = {set_drop, "deposit.nbar_min=0.3", "time.end=0.2", "time.dt=1e-3", "output.every=0.2", NULL};
+  if (run_ok("liquefaction", "shaking", "[shaking]\nrecord = \"\"\n", sets, "test_liquefaction_drop.h5")) {
+    free(phi);
+    return;
+  }
+  double *ru = field_at("test_liquefaction_drop.h5", "pore_pressure_ratio", INFINITY, &n, NULL);
+  if (!ru) {
+    free(phi);
+    return;
+  }
+  double worst = 0.0;
+  for (int i = 2; i <= 40; ++i) worst = fmax(worst, fabs(ru[i] - (1.0 - exp(-drop / (A * phi[i])))));
+  printf("  undrained transfer after 0.2 s: cell %d ratio %.5f (onset 0.95 at dnbar = A phi ln 20 = %.5f); largest "
+         "deviation from 1 - exp(-dnbar/(A phi)) %.2e\n", c, ru[c], drop, worst);
+  CHECK_MSG(fabs(ru[c] - 0.95) < 1e-3, "ratio %g at the predicted onset drop", ru[c]);
+  CHECK_MSG(worst < 2e-3, "undrained transfer off by %g", worst);
+  free(phi), free(ru);
+}
+
+int main(void) {
+  const char *src = getenv("SLUICE_SOURCE_DIR");
+  snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
+  const char *out = "test_liquefaction.h5";
+  if (run_ok("liquefaction", NULL, NULL, NULL, out)) return sl_test_summary();
+  at_rest_and_conservation(out);
+  base_case(out);
+  undrained_transfer(out);
+  variants(out);
+  return sl_test_summary();
+}
