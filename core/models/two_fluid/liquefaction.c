@@ -25,6 +25,9 @@ struct tf_liquefaction {
   double z_surface0, zeta_surface, h_deposit, inventory_fluid0;
   long reversals;
   double ru_max, ru_max_depth, t_onset, onset_depth;
+  /* the run's history, step by step */
+  int surface_cell;                       /* the topmost deposit cell with p_s0 above ps_floor */
+  double ru_surface_max, ru_base_max, thick_onset, thick_shaking_max, base_peak, base_peak_time;
 };
 
 /* The quantities the model gives [closure.densification]. */
@@ -168,7 +171,10 @@ int tfl_start(tf_liquefaction *L, tf_column *c, sl_diag *d) {
   if (L->nbar_drop != 0.0)
     for (int i = 0; i < L->top; ++i) L->nbar[i] = fmax(L->nbar[i] - L->nbar_drop, L->nbar_min);
   for (int i = 0; i < L->n; ++i) L->nbar0[i] = L->nbar[i];
-  L->t_onset = NAN, L->onset_depth = NAN;
+  L->t_onset = NAN, L->onset_depth = NAN, L->thick_onset = NAN;
+  L->surface_cell = 0;
+  for (int i = 0; i < L->top; ++i)
+    if (L->ps0[i] > L->ps_floor) L->surface_cell = i;
   return 0;
 }
 
@@ -181,6 +187,22 @@ static void cell_shear(const tf_liquefaction *L, const tf_column *c, int i, doub
   *G = G0 > 0.0 && tmax > 0.0 ? G0 / (1.0 + G0 * g / tmax) : 0.0; /* Hardin & Drnevich (1972) */
   *eta = 2.0 * L->xi * G0 / L->omega_d + L->eta_res;
   *rho = L->solid_mass ? c->rho_s : c->phi[i] * c->rho_s + (1.0 - c->phi[i]) * c->rho_f;
+}
+
+/* The liquefied zone: the deposit's full cells (below the current surface) whose p_s fell below
+ * liquefied_ratio of p_s0; its top and bottom depths below the initial surface and its thickness. L->ps must
+ * hold p_s of the state. */
+static double liquefied_zone(tf_liquefaction *L, const tf_column *c, double *ztop, double *zbot) {
+  double thick = 0.0, zs = surface_height(L, c, L->zeta_surface);
+  *ztop = NAN, *zbot = NAN;
+  for (int i = 0; i < L->top; ++i)
+    if (L->ps0[i] > L->ps_floor && c->xf[i + 1] <= zs && L->ps[i] < L->liquefied_ratio * L->ps0[i]) {
+      double a = L->z_surface0 - c->xf[i + 1], b = L->z_surface0 - c->xf[i];
+      if (isnan(*ztop) || a < *ztop) *ztop = a;
+      if (isnan(*zbot) || b > *zbot) *zbot = b;
+      thick += c->h[i];
+    }
+  return thick;
 }
 
 int tfl_step(tf_liquefaction *L, tf_column *c, double t, double dt, sl_diag *d) {
@@ -256,7 +278,16 @@ int tfl_accept(tf_liquefaction *L, tf_column *c, double t, double dt, sl_diag *d
     double ru = L->ps0[i] > L->ps_floor ? (c->p[i] - L->p0[i]) / L->ps0[i] : 0.0;
     if (ru > L->ru_max) L->ru_max = ru, L->ru_max_depth = L->z_surface0 - c->xc[i];
     if (isnan(L->t_onset) && ru >= 0.95) L->t_onset = t + dt, L->onset_depth = L->z_surface0 - c->xc[i];
+    if (i == L->surface_cell) L->ru_surface_max = fmax(L->ru_surface_max, ru);
+    if (i == 0) L->ru_base_max = fmax(L->ru_base_max, ru);
   }
+  if (c->p[0] - L->p0[0] > L->base_peak) L->base_peak = c->p[0] - L->p0[0], L->base_peak_time = t + dt;
+  int rc = solids_pressure(L, c, c->phi, d);
+  if (rc) return rc;
+  double a, b, thick = liquefied_zone(L, c, &a, &b);
+  if (!isnan(L->t_onset) && isnan(L->thick_onset)) L->thick_onset = thick;
+  if (L->rec.n && t + dt <= L->start + tf_base_record_end(&L->rec) + 1e-9)
+    L->thick_shaking_max = fmax(L->thick_shaking_max, thick);
   return 0;
 }
 
@@ -290,14 +321,7 @@ int tfl_write(tf_liquefaction *L, tf_column *c, sl_output *out, const int *cell_
     rc = sl_output_write_field(out, f[k].name, SL_CENTRE_CELL, 1, cell, d);
   }
   /* the liquefied zone: deposit cells whose p_s fell below liquefied_ratio of p_s0 */
-  double ztop = NAN, zbot = NAN, thick = 0.0, zs = surface_height(L, c, L->zeta_surface);
-  for (int i = 0; i < top; ++i)
-    if (L->ps0[i] > L->ps_floor && c->xf[i + 1] <= zs && L->ps[i] < L->liquefied_ratio * L->ps0[i]) {
-      double a = L->z_surface0 - c->xf[i + 1], b = L->z_surface0 - c->xf[i];
-      if (isnan(ztop) || a < ztop) ztop = a;
-      if (isnan(zbot) || b > zbot) zbot = b;
-      thick += c->h[i];
-    }
+  double ztop, zbot, thick = liquefied_zone(L, c, &ztop, &zbot), zs = surface_height(L, c, L->zeta_surface);
   double fluid = 0.0;
   for (int i = 0; i < n; ++i) fluid += (1.0 - c->phi[i]) * c->h[i];
   double ag = L->rec.n ? tf_base_record_at(&L->rec, t - L->start) : 0.0;
@@ -316,6 +340,12 @@ int tfl_write(tf_liquefaction *L, tf_column *c, sl_output *out, const int *cell_
            {"max_pore_pressure_ratio", L->ru_max},
            {"max_pore_pressure_ratio_depth", L->ru_max_depth},
            {"onset_time", L->t_onset},
+           {"liquefied_thickness_at_onset", L->thick_onset},
+           {"liquefied_thickness_max_shaking", L->thick_shaking_max},
+           {"surface_cell_ratio_max", L->ru_surface_max},
+           {"base_cell_ratio_max", L->ru_base_max},
+           {"base_excess_pressure_peak", L->base_peak},
+           {"base_excess_pressure_peak_time", L->base_peak_time},
            {"onset_depth", L->onset_depth},
            {"base_acceleration", ag},
            {"surface_displacement", L->w[top]},
