@@ -14,6 +14,10 @@
  *   depth, neither at the surface nor at the base; the liquefied zone grows
  *   after onset; settlement of the order of 3 % of the depth; a small excess
  *   left at the base at 3 minutes; no step cut;
+ * - configs/terzaghi_consolidation.ini: the degree of consolidation (from
+ *   the solids inventory) and the base excess pore pressure against
+ *   Terzaghi's series, first order in h (the drained surface is resolved to
+ *   a cell);
  * - 0.08 mm: a thicker liquefied zone at 6 s (8 mm gravel: reported only, see docs/liquefaction.md). */
 #include <math.h>
 #include <stdio.h>
@@ -118,6 +122,60 @@ static void undrained_transfer(const char *base) {
   free(phi), free(ru);
 }
 
+/* Terzaghi (1925): u/u0 = sum (2/M) sin(M Z) exp(-M^2 T), U = 1 - sum (2/M^2) exp(-M^2 T), M = pi (2m+1)/2. */
+static double terzaghi_u(double Z, double T) {
+  double s = 0.0;
+  for (int m = 0; m < 2000; ++m) {
+    double M = M_PI * (2 * m + 1) / 2.0;
+    s += 2.0 / M * sin(M * Z) * exp(-M * M * T);
+  }
+  return s;
+}
+static double terzaghi_U(double T) {
+  double s = 0.0;
+  for (int m = 0; m < 2000; ++m) {
+    double M = M_PI * (2 * m + 1) / 2.0;
+    s += 2.0 / (M * M) * exp(-M * M * T);
+  }
+  return 1.0 - s;
+}
+
+/* configs/terzaghi_consolidation.ini on `cells`: the largest errors of U and of the base cell's u/u0 over the
+ * outputs 0.25 ... 5 s (T = 0.05 ... 1). */
+static int terzaghi_run(int cells, double *eU, double *eu) {
+  char set_cells[64];
+  snprintf(set_cells, sizeof set_cells, "mesh.cells=%d", cells);
+  const char *sets[] = {set_cells, NULL};
+  if (run_ok("terzaghi_consolidation", NULL, NULL, sets, "test_liquefaction_terzaghi.h5")) return 1;
+  /* c_v = M phibar (1 - phi)^3 d^2 / (150 mu phi^3) at phi = phibar = 0.55 (Ergun's viscous drag) */
+  const double M = 1e9, phib = 0.55, d_p = 1e-4, mu = 1e-3, H = 10.0, dn = 1e-7;
+  const double cv = M * phib * pow(1.0 - phib, 3) * d_p * d_p / (150.0 * mu * pow(phib, 3));
+  const double u0 = M * dn / phib, S_inf = H * dn / (phib + dn), h = 12.0 / cells;
+  *eU = *eu = 0.0;
+  for (int k = 1; k <= 20; ++k) {
+    double t = 0.25 * k, T = cv * t / (H * H);
+    double S = scalar("test_liquefaction_terzaghi.h5", "settlement", t);
+    double ub = scalar("test_liquefaction_terzaghi.h5", "base_excess_pressure", t);
+    *eU = fmax(*eU, fabs(S / S_inf - terzaghi_U(T)));
+    *eu = fmax(*eu, fabs(ub / u0 - terzaghi_u(1.0 - 0.5 * h / H, T)));
+  }
+  return 0;
+}
+
+static void terzaghi(void) {
+  double eU[3], eu[3];
+  const int cells[3] = {24, 48, 96};
+  for (int k = 0; k < 3; ++k)
+    if (terzaghi_run(cells[k], &eU[k], &eu[k])) return;
+  for (int k = 0; k < 3; ++k)
+    printf("  terzaghi, %3d cells (h = %.3f m): max |U - U_series| %.2e, max |u_base/u0 - series| %.2e\n", cells[k],
+           12.0 / cells[k], eU[k], eu[k]);
+  double pU = log2(eU[1] / eU[2]), pu = log2(eu[1] / eu[2]);
+  printf("  terzaghi: observed order %.2f (U), %.2f (base pore pressure)\n", pU, pu);
+  CHECK_MSG(eU[2] < 7e-3 && eu[2] < 7e-3, "Terzaghi errors %g %g on 96 cells", eU[2], eu[2]);
+  CHECK_MSG(pU > 0.9 && pu > 0.9 && log2(eU[0] / eU[1]) > 0.9, "Terzaghi order %g %g", pU, pu);
+}
+
 int main(void) {
   const char *src = getenv("SLUICE_SOURCE_DIR");
   snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
@@ -126,6 +184,7 @@ int main(void) {
   at_rest_and_conservation(out);
   base_case(out);
   undrained_transfer(out);
+  terzaghi();
   variants(out);
   return sl_test_summary();
 }

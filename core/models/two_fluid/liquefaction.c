@@ -115,13 +115,18 @@ static int solids_pressure(tf_liquefaction *L, tf_column *c, const double *phi, 
 }
 
 /* The height of the material surface holding the solids volume zeta below it (per unit area), from the
- * cumulative solids of the cells, linear within a cell. */
+ * cumulative solids of the cells: in the cell where the cumulative reaches zeta, its solids are taken as
+ * lying on the cell below at that cell's solids fraction (or its own, if denser), so that a partly emptied
+ * surface cell shows the surface inside it. */
 static double surface_height(tf_liquefaction *L, const tf_column *c, double zeta) {
   L->cum[0] = 0.0;
   for (int i = 0; i < c->n; ++i) L->cum[i + 1] = L->cum[i] + c->phi[i] * c->h[i];
-  const double target = zeta * (1.0 - 1e-12);
+  const double target = zeta * (1.0 - 1e-14);
   for (int i = 0; i < c->n; ++i)
-    if (L->cum[i + 1] >= target && c->phi[i] > 0.0) return c->xf[i] + (target - L->cum[i]) / c->phi[i];
+    if (L->cum[i + 1] >= target && c->phi[i] > 0.0) {
+      double dens = i > 0 ? fmax(c->phi[i], c->phi[i - 1]) : c->phi[i];
+      return c->xf[i] + (target - L->cum[i]) / dens;
+    }
   return c->xf[c->n];
 }
 
@@ -163,9 +168,9 @@ int tfl_start(tf_liquefaction *L, tf_column *c, sl_diag *d) {
     L->nbar_min = hi;
   }
   memcpy(L->p0, c->p, (size_t)L->n * sizeof *L->p0);
-  L->z_surface0 = c->xf[L->top], L->h_deposit = c->xf[L->top] - c->xf[0];
   L->zeta_surface = 0.0;
   for (int i = 0; i < L->top; ++i) L->zeta_surface += c->phi[i] * c->h[i];
+  L->z_surface0 = surface_height(L, c, L->zeta_surface), L->h_deposit = L->z_surface0 - c->xf[0];
   L->inventory_fluid0 = 0.0;
   for (int i = 0; i < c->n; ++i) L->inventory_fluid0 += (1.0 - c->phi[i]) * c->h[i];
   if (L->nbar_drop != 0.0)
