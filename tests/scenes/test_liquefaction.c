@@ -2,10 +2,12 @@
  * two-fluid column, shaken at its base by the synthetic 6 s record, run to
  * 3 minutes (Pringle 2001, thesis sections 5.4-5.5; digest of seed 000,
  * 4.6-4.7). Checked:
- * - the deposit at rest: the total vertical stress p + p_s of the base cell
- *   against the weight of the column above its centre (O(h): the face takes
- *   its gravity-side cell's solids fraction), solids and fluid conserved to
- *   round-off over settling, shaking and consolidation;
+ * - the deposit at rest: the discrete effective-stress balance face by face,
+ *   the pore pressure hydrostatic but for the weight of the surface cell's
+ *   solids, which the column's scheme holds on the fluid; the total vertical
+ *   stress p + p_s of the base cell against the weight of the column above
+ *   it; solids and fluid conserved to round-off over settling, shaking and
+ *   consolidation;
  * - the undrained load transfer: a uniform drop of nbar at t = 0 puts
  *   1 - exp(-dnbar/(A phi)) of each cell's p_s0 on the fluid (Pringle's eq
  *   4.30 at fixed phi); the onset criterion (excess = 0.95 p_s0) is reached
@@ -32,6 +34,34 @@ static char configs[4096];
 SCENE_RUNNERS()
 
 static const double g = 9.81, rho_s = 2650.0, rho_f = 1000.0, A = 0.015;
+
+/* The Terzaghi deposit at rest (no drop): the discrete effective-stress balance p_s(i-1) - p_s(i) = h phi_{i-1}
+ * (rho_s - rho_f) g at every face inside the deposit (two_fluid_step.c: a face takes its gravity-side cell's
+ * phi), and the pore pressure hydrostatic but for the surface cell, whose solids the column holds on the fluid
+ * (its face to the clear water carries them by drag; the scheme's surface cell, docs/liquefaction.md): a
+ * uniform static excess equal to their buoyant weight. */
+static void at_rest(void) {
+  const char *sets[] = {"deposit.nbar_drop=0", "time.end=0.1", "output.every=0.1", NULL};
+  if (run_ok("terzaghi_consolidation", NULL, NULL, sets, "test_liquefaction_rest.h5")) return;
+  int n;
+  double *phi = field_at("test_liquefaction_rest.h5", "phi", INFINITY, &n, NULL);
+  double *ps = field_at("test_liquefaction_rest.h5", "solids_pressure", INFINITY, &n, NULL);
+  double *p = field_at("test_liquefaction_rest.h5", "pressure", INFINITY, &n, NULL);
+  if (!phi || !ps || !p) return;
+  const double h = 12.0 / n, dr = (rho_s - rho_f) * g;
+  int top = 0;
+  while (top < n && phi[top] > 0.3) ++top;
+  double worst = 0.0;
+  for (int i = 1; i < top - 1; ++i) worst = fmax(worst, fabs(ps[i - 1] - ps[i] - h * phi[i - 1] * dr) / ps[0]);
+  double excess = scalar("test_liquefaction_rest.h5", "base_static_excess_pressure", INFINITY);
+  double held = h * phi[top - 1] * dr, hydro_top = p[n - 1];
+  printf("  at rest: effective-stress balance at every face within %.2e of p_s(base) = %.1f Pa; static excess %.2f Pa "
+         "= the surface cell's buoyant weight %.2f Pa (%.2e); top pressure %.3g Pa\n", worst, ps[0], excess, held,
+         fabs(excess - held) / held, hydro_top);
+  CHECK_MSG(worst < 1e-6, "effective-stress balance off by %g", worst);
+  CHECK_MSG(fabs(excess - held) < 1e-3 * held, "static excess %g, surface cell %g", excess, held);
+  free(phi), free(ps), free(p);
+}
 
 static void at_rest_and_conservation(const char *out) {
   int n;
@@ -185,6 +215,7 @@ int main(void) {
   base_case(out);
   undrained_transfer(out);
   terzaghi();
+  at_rest();
   variants(out);
   return sl_test_summary();
 }
