@@ -26,6 +26,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench/png_check.h"
+#include "core/study/chart.h"
+#include "core/study/font.h"
+#include "core/study/image.h"
+#include "core/study/png.h"
 #include "scene_fields.h"
 #include "scene_runner.h"
 #include "testing.h"
@@ -206,6 +211,84 @@ static void terzaghi(void) {
   CHECK_MSG(pU > 0.9 && pu > 0.9 && log2(eU[0] / eU[1]) > 0.9, "Terzaghi order %g %g", pU, pu);
 }
 
+/* A colour of the pore pressure ratio r in [0, 1]: white, yellow, orange, red, dark red. */
+static uint32_t ratio_colour(double r) {
+  static const double stop[5][3] = {{255, 255, 255}, {255, 230, 120}, {250, 150, 40}, {215, 40, 30}, {110, 0, 20}};
+  r = fmin(fmax(r, 0.0), 1.0) * 4.0;
+  int k = (int)fmin(floor(r), 3.0);
+  double w = r - k, c[3];
+  for (int j = 0; j < 3; ++j) c[j] = stop[k][j] + w * (stop[k + 1][j] - stop[k][j]);
+  return (uint32_t)c[0] << 16 | (uint32_t)c[1] << 8 | (uint32_t)c[2];
+}
+
+/* The depth-time map of the pore pressure ratio over the first 30 s (every output, 0.5 s) with the project's
+ * image and PNG code (core/study): liquefaction_ratio.png; and the base excess pore pressure and the settlement
+ * over the run as a chart: liquefaction_history.png. Both read back by the independent PNG checker. */
+static void pictures(const char *out) {
+  const int nt = 61, left = 70, top = 40, pw = 8, ph = 8;
+  int n;
+  double *ru0 = field_at(out, "pore_pressure_ratio", 0.0, &n, NULL);
+  if (!ru0) return;
+  free(ru0);
+  double H = scalar(out, "deposit_height", 0.0), h = 17.0 / n;
+  int cells = (int)floor(H / h + 0.5);
+  sl_image im;
+  if (sl_image_init(&im, left + nt * pw + 120, top + cells * ph + 60, 0xffffff)) return;
+  for (int k = 0; k < nt; ++k) {
+    double *ru = field_at(out, "pore_pressure_ratio", 0.5 * k, &n, NULL);
+    if (!ru) break;
+    for (int i = 0; i < cells; ++i) /* depth downwards: cell cells-1 at the top */
+      sl_image_fill(&im, left + k * pw, top + (cells - 1 - i) * ph, left + (k + 1) * pw - 1,
+                    top + (cells - i) * ph - 1, ratio_colour(ru[i]));
+    free(ru);
+  }
+  char txt[96];
+  sl_font_draw(&im, left, 8, "PORE PRESSURE RATIO (P - P0)/P_S0, 0.8 MM SAND, LIQUEFACTION.INI", 1, 0x000000, 0);
+  for (int k = 0; k <= 30; k += 6) {
+    snprintf(txt, sizeof txt, "%d", k);
+    sl_font_draw(&im, left + 2 * k * pw - 3, top + cells * ph + 6, txt, 1, 0x000000, 0);
+  }
+  sl_font_draw(&im, left + nt * pw / 2 - 30, top + cells * ph + 22, "TIME, S (SHAKING 0-6 S)", 1, 0x000000, 0);
+  for (int z = 0; z <= (int)H; z += 2) {
+    snprintf(txt, sizeof txt, "%d", z);
+    sl_font_draw(&im, left - 20, top + (int)(z / h * ph) - 3, txt, 1, 0x000000, 0);
+  }
+  sl_font_draw(&im, 12, top + cells * ph / 2 + 40, "DEPTH, M", 1, 0x000000, 1);
+  for (int j = 0; j <= 20; ++j) /* the colour bar */
+    sl_image_fill(&im, left + nt * pw + 30, top + (20 - j) * cells * ph / 21, left + nt * pw + 50,
+                  top + (21 - j) * cells * ph / 21 - 1, ratio_colour(j / 20.0));
+  sl_font_draw(&im, left + nt * pw + 56, top - 2, "1", 1, 0x000000, 0);
+  sl_font_draw(&im, left + nt * pw + 56, top + cells * ph - 8, "0", 1, 0x000000, 0);
+  sl_diag d = {{0}};
+  int rc = sl_png_write("liquefaction_ratio.png", im.rgb, im.w, im.h, &d);
+  CHECK_MSG(rc == 0, "liquefaction_ratio.png: %s", d.msg);
+  sl_image_free(&im);
+  int w, hh;
+  unsigned char *rgb = NULL;
+  const char *why = png_check_file("liquefaction_ratio.png", &w, &hh, &rgb);
+  CHECK_MSG(why == NULL, "liquefaction_ratio.png: %s", why ? why : "");
+  free(rgb);
+  /* the history chart */
+  enum { NH = 94 };
+  double t[NH], pb[NH], st[NH];
+  for (int k = 0; k < NH; ++k) {
+    t[k] = 2.0 * k;
+    pb[k] = 1e-3 * scalar(out, "base_excess_pressure", fmin(t[k], 186.0));
+    st[k] = 100.0 * scalar(out, "settlement", fmin(t[k], 186.0)); /* cm */
+  }
+  sl_chart_series se[2] = {{.name = "base excess pore pressure, kPa", .n = NH, .x = t, .y = pb, .marker_every = 8},
+                           {.name = "surface settlement, cm", .n = NH, .x = t, .y = st, .marker_every = 8, .dashed = 1}};
+  sl_chart ch = {.title = "liquefaction.ini: 0.8 mm sand, 6 s of shaking",
+                 .subtitle = "from the solids inventory and the fluid pressure over its pre-shaking value",
+                 .xlabel = "time, s", .ylabel = "kPa / cm", .n_series = 2, .series = se};
+  rc = sl_chart_write_png("liquefaction_history.png", &ch, 720, 420, &d);
+  CHECK_MSG(rc == 0, "liquefaction_history.png: %s", d.msg);
+  why = png_check_file("liquefaction_history.png", &w, &hh, &rgb);
+  CHECK_MSG(why == NULL, "liquefaction_history.png: %s", why ? why : "");
+  free(rgb);
+  printf("  pictures: liquefaction_ratio.png (depth-time map), liquefaction_history.png\n");
+}
+
 int main(void) {
   const char *src = getenv("SLUICE_SOURCE_DIR");
   snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
@@ -217,5 +300,6 @@ int main(void) {
   terzaghi();
   at_rest();
   variants(out);
+  pictures(out);
   return sl_test_summary();
 }
