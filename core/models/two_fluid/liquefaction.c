@@ -18,11 +18,12 @@ struct tf_liquefaction {
   double *w, *v, *w_new, *v_new;          /* [n+1] faces: displacement and velocity relative to the base */
   double *gam, *gam_rev, *path, *dir, *amp, *inc, *epsv, *nbar_new; /* [n] shear history */
   double *G, *eta, *a, *b, *tau0, *lo, *di, *up, *rhs;             /* [n+1] work */
+  double *nbar_ref;                       /* [n] nbar as the deposit was built (before a drop), for its height */
   double ps_floor;                         /* cells with p_s0 below it (the partly filled surface cell) have no ratio */
-  double *cum, *ph, *p0;                  /* ...; the fluid pressure at t = 0 */
-  int nbar_min_given;                       /* [n+1] cumulative solids from the base; the hydrostatic pressure */
+  double *ph, *p0;                        /* [n] the hydrostatic pressure; the fluid pressure at t = 0 */
+  int nbar_min_given;
   tf_closure dens;                        /* [closure.densification], c NULL: none */
-  double z_surface0, zeta_surface, h_deposit, inventory_fluid0;
+  double z_surface0, h_deposit, inventory_fluid0;
   long reversals;
   double ru_max, ru_max_depth, t_onset, onset_depth;
   /* the run's history, step by step */
@@ -59,10 +60,10 @@ int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, tf_liquef
   if (!L) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   const int n = c->n;
   L->n = n;
-  double **cells[] = {&L->nbar, &L->nbar0, &L->ps0, &L->ps, &L->dps, &L->gam, &L->gam_rev, &L->path, &L->dir,
+  double **cells[] = {&L->nbar_ref, &L->nbar, &L->nbar0, &L->ps0, &L->ps, &L->dps, &L->gam, &L->gam_rev, &L->path, &L->dir,
                       &L->amp, &L->inc, &L->epsv, &L->nbar_new};
   double **faces[] = {&L->w, &L->v, &L->w_new, &L->v_new, &L->G, &L->eta, &L->a, &L->b, &L->tau0,
-                      &L->lo, &L->di, &L->up, &L->rhs, &L->cum, &L->ph, &L->p0};
+                      &L->lo, &L->di, &L->up, &L->rhs, &L->ph, &L->p0};
   int rc = 0;
   for (size_t i = 0; i < sizeof cells / sizeof cells[0] && !rc; ++i)
     if (!(*cells[i] = vec((size_t)n))) rc = SL_ENOMEM;
@@ -114,20 +115,14 @@ static int solids_pressure(tf_liquefaction *L, tf_column *c, const double *phi, 
   return rc ? sl_diag_prefix(d, rc, "solids pressure") : 0;
 }
 
-/* The height of the material surface holding the solids volume zeta below it (per unit area), from the
- * cumulative solids of the cells: in the cell where the cumulative reaches zeta, its solids are taken as
- * lying on the cell below at that cell's solids fraction (or its own, if denser), so that a partly emptied
- * surface cell shows the surface inside it. */
-static double surface_height(tf_liquefaction *L, const tf_column *c, double zeta) {
-  L->cum[0] = 0.0;
-  for (int i = 0; i < c->n; ++i) L->cum[i + 1] = L->cum[i] + c->phi[i] * c->h[i];
-  const double target = zeta * (1.0 - 1e-14);
-  for (int i = 0; i < c->n; ++i)
-    if (L->cum[i + 1] >= target && c->phi[i] > 0.0) {
-      double dens = i > 0 ? fmax(c->phi[i], c->phi[i - 1]) : c->phi[i];
-      return c->xf[i] + (target - L->cum[i]) / dens;
-    }
-  return c->xf[c->n];
+/* The deposit's height from its solids inventory: each cell counts its height where the skeleton holds its
+ * solids at least at the reference fraction 1 - nbar the deposit was built with, and the height its solids
+ * would fill at that fraction where it is looser (a partly emptied surface cell, a settling suspension), so
+ * that the surface moves continuously as solids leave the top cells. */
+static double surface_height(tf_liquefaction *L, const tf_column *c) {
+  double z = c->xf[0];
+  for (int i = 0; i < c->n; ++i) z += c->h[i] * fmin(1.0, c->phi[i] / (1.0 - L->nbar_ref[i]));
+  return z;
 }
 
 /* The hydrostatic pressure in the cells by the column's own recursion (two_fluid_step.c) with dp/dx = rho_f g,
@@ -168,9 +163,8 @@ int tfl_start(tf_liquefaction *L, tf_column *c, sl_diag *d) {
     L->nbar_min = hi;
   }
   memcpy(L->p0, c->p, (size_t)L->n * sizeof *L->p0);
-  L->zeta_surface = 0.0;
-  for (int i = 0; i < L->top; ++i) L->zeta_surface += c->phi[i] * c->h[i];
-  L->z_surface0 = surface_height(L, c, L->zeta_surface), L->h_deposit = L->z_surface0 - c->xf[0];
+  memcpy(L->nbar_ref, L->nbar, (size_t)L->n * sizeof *L->nbar_ref);
+  L->z_surface0 = surface_height(L, c), L->h_deposit = L->z_surface0 - c->xf[0];
   L->inventory_fluid0 = 0.0;
   for (int i = 0; i < c->n; ++i) L->inventory_fluid0 += (1.0 - c->phi[i]) * c->h[i];
   if (L->nbar_drop != 0.0)
@@ -198,7 +192,7 @@ static void cell_shear(const tf_liquefaction *L, const tf_column *c, int i, doub
  * liquefied_ratio of p_s0; its top and bottom depths below the initial surface and its thickness. L->ps must
  * hold p_s of the state. */
 static double liquefied_zone(tf_liquefaction *L, const tf_column *c, double *ztop, double *zbot) {
-  double thick = 0.0, zs = surface_height(L, c, L->zeta_surface);
+  double thick = 0.0, zs = surface_height(L, c);
   *ztop = NAN, *zbot = NAN;
   for (int i = 0; i < L->top; ++i)
     if (L->ps0[i] > L->ps_floor && c->xf[i + 1] <= zs && L->ps[i] < L->liquefied_ratio * L->ps0[i]) {
@@ -326,7 +320,7 @@ int tfl_write(tf_liquefaction *L, tf_column *c, sl_output *out, const int *cell_
     rc = sl_output_write_field(out, f[k].name, SL_CENTRE_CELL, 1, cell, d);
   }
   /* the liquefied zone: deposit cells whose p_s fell below liquefied_ratio of p_s0 */
-  double ztop, zbot, thick = liquefied_zone(L, c, &ztop, &zbot), zs = surface_height(L, c, L->zeta_surface);
+  double ztop, zbot, thick = liquefied_zone(L, c, &ztop, &zbot), zs = surface_height(L, c);
   double fluid = 0.0;
   for (int i = 0; i < n; ++i) fluid += (1.0 - c->phi[i]) * c->h[i];
   double ag = L->rec.n ? tf_base_record_at(&L->rec, t - L->start) : 0.0;
@@ -367,9 +361,9 @@ void tfl_summary(const tf_liquefaction *L, char *buf, size_t len) {
 
 void tfl_free(tf_liquefaction *L) {
   if (!L) return;
-  double *all[] = {L->nbar, L->nbar0, L->ps0, L->ps, L->dps, L->gam, L->gam_rev, L->path, L->dir, L->amp, L->inc,
+  double *all[] = {L->nbar_ref, L->nbar, L->nbar0, L->ps0, L->ps, L->dps, L->gam, L->gam_rev, L->path, L->dir, L->amp, L->inc,
                    L->epsv, L->nbar_new, L->w, L->v, L->w_new, L->v_new, L->G, L->eta, L->a, L->b, L->tau0,
-                   L->lo, L->di, L->up, L->rhs, L->cum, L->ph, L->p0};
+                   L->lo, L->di, L->up, L->rhs, L->ph, L->p0};
   for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i) free(all[i]);
   tf_base_record_free(&L->rec);
   if (L->dens.c) sl_point_release(&L->dens.pc);
