@@ -132,7 +132,8 @@ static const sl_key column_keys[] = {
     {.section = "deposit", .name = "nbar_drop", .type = SL_KEY_REAL, C(lq.nbar_drop), .min = -0.5, .max = 0.5,
      .help = "lower nbar in the deposit by this at t = 0 (an instantaneous load: Terzaghi's consolidation)"},
     {.section = "deposit", .name = "nbar_min", .type = SL_KEY_REAL, C(lq.nbar_min), .min = 0.01, .max = 0.99,
-     .def_doc = "1 - phi_max + 0.02", .help = "the densest reference porosity densification may reach"},
+     .def_doc = "the nbar whose P_s at phi_max is twice the deposit's largest", .help = "the densest reference "
+                                                                               "porosity densification may reach"},
     {.section = "boundary", .name = "type", .type = SL_KEY_CHOICE, SL_AT_BOUNDARY(tfc_boundary, type),
      .choices = "wall|inlet|outlet", .help = "wall (closed), inlet (fluid enters, solids held), outlet (a pressure; "
                                              "solids leave when carried)"},
