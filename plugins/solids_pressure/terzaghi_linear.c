@@ -25,7 +25,7 @@ static const sl_param_desc params[] = {
 };
 
 static const sl_field_desc inputs[] = {
-    {"phi", "1", SL_FIELD_DIFF, 0.55, 0.0, 0.99, "solids volume fraction, 1 - porosity"},
+    {"phi", "1", SL_FIELD_DIFF, 0.56, 0.0, 0.99, "solids volume fraction, 1 - porosity"},
     {"nbar", "1", 0, 0.45, 0.01, 0.99, "the porosity at which the skeleton carries nothing"},
 };
 
