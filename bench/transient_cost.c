@@ -22,7 +22,9 @@
  *
  *   bench_transient_cost [SOURCE_DIR] [--before BIN [--before-label TEXT]] [--reference-blas DIR]
  *                        [--repeat R] [--quick] [--case NAME]... [--variant NAME]...
- *                        [--markdown PATH [--append]]
+ *                        [--markdown PATH [--append]] [--title TEXT]
+ * The cases marked large (the linear solvers at growing meshes) run only when named by --case; the variants
+ * "petsc" and "petsc, mumps" need a build with -DSLUICE_WITH_PETSC=ON (its bench_transient_cost).
  *
  * A markdown table on stdout (and in --markdown PATH, e.g. docs/transient_cost.md): per case and variant the
  * counts, the CPU time and its ratio to the first variant of the case (before, where given); --append adds
@@ -49,43 +51,60 @@ enum { MAX_SETS = 8, MAX_VARIANTS = 8, MAX_CASES = 8 };
 typedef struct bench_case {
   const char *name, *scene, *what;
   const char *sets[MAX_SETS];
-  int quick; /* in --quick */
+  int quick;          /* in --quick */
+  int iterative_only; /* too large for the direct solvers on this machine: only the petsc variants run it */
+  int large;          /* run only when asked for by --case */
 } bench_case;
 
 static const bench_case cases[] = {
-    {"boycott_0.1", "boycott", "boycott to t = 0.1, 24 x 32 cells", {"time.end=0.1", NULL}, 1},
-    {"boycott_0.8", "boycott", "boycott to t = 0.8, 24 x 32 cells", {"time.end=0.8", NULL}, 0},
+    {"boycott_0.1", "boycott", "boycott to t = 0.1, 24 x 32 cells", {"time.end=0.1", NULL}, 1, 0, 0},
+    {"boycott_0.8", "boycott", "boycott to t = 0.8, 24 x 32 cells", {"time.end=0.8", NULL}, 0, 0, 0},
     {"spinup_25", "spinup", "spinup to t = 25, 48 x 24 cells (its test's)",
-     {"time.end=25", "mesh.cells=48,24", "solver.nonlinear_tolerance=1e-6", NULL}, 0},
-    {"bingham_cavity", "bingham_cavity", "bingham_cavity, steady continuation in eps, 32 x 32 cells", {NULL}, 1},
-    {"wave_bed", "wave_bed", "wave_bed as shipped, two wave periods, 32 x 24 cells", {NULL}, 0},
-    {"cavity_re100", "cavity_re100", "cavity_re100, steady Newton, 32 x 32 cells", {NULL}, 1},
+     {"time.end=25", "mesh.cells=48,24", "solver.nonlinear_tolerance=1e-6", NULL}, 0, 0, 0},
+    {"bingham_cavity", "bingham_cavity", "bingham_cavity, steady continuation in eps, 32 x 32 cells", {NULL}, 1, 0, 0},
+    {"wave_bed", "wave_bed", "wave_bed as shipped, two wave periods, 32 x 24 cells", {NULL}, 0, 0, 0},
+    {"cavity_re100", "cavity_re100", "cavity_re100, steady Newton, 32 x 32 cells", {NULL}, 1, 0, 0},
     {"cavity_stokes_128", "cavity_stokes", "cavity_stokes, one direct solve, 128 x 128 cells",
-     {"mesh.cells=128,128", NULL}, 1},
+     {"mesh.cells=128,128", NULL}, 1, 0, 0},
+    /* the linear solvers at growing meshes (--case), PETSc's against the direct ones */
+    {"cavity_stokes_64", "cavity_stokes", "cavity_stokes, 64 x 64 cells (37 k unknowns)", {"mesh.cells=64,64", NULL},
+     0, 0, 1},
+    {"cavity_stokes_256", "cavity_stokes", "cavity_stokes, 256 x 256 cells (592 k unknowns)",
+     {"mesh.cells=256,256", NULL}, 0, 0, 1},
+    {"cavity_stokes_512", "cavity_stokes", "cavity_stokes, 512 x 512 cells (2.4 M unknowns)",
+     {"mesh.cells=512,512", NULL}, 0, 1, 1},
+    {"boycott_48x64", "boycott", "boycott, 50 fixed steps to t = 0.05, 48 x 64 cells",
+     {"mesh.cells=48,64", "time.end=0.05", "time.adaptive=false", "output.every=0.05", NULL}, 0, 0, 1},
+    {"boycott_96x128", "boycott", "boycott, 50 fixed steps to t = 0.05, 96 x 128 cells",
+     {"mesh.cells=96,128", "time.end=0.05", "time.adaptive=false", "output.every=0.05", NULL}, 0, 0, 1},
 };
 enum { N_CASES = (int)(sizeof cases / sizeof cases[0]) };
 
 typedef struct variant {
   const char *name;
-  const char *set; /* an override, or NULL */
+  const char *set;   /* an override, or NULL */
+  const char *petsc; /* --petsc options, or NULL */
   int before;      /* runs --before BIN */
   int ref_blas;    /* with --reference-blas first on LD_LIBRARY_PATH */
 } variant;
 
 static const variant variants[] = {
-    {"before, ref. BLAS", NULL, 1, 1},
-    {"before", NULL, 1, 0},
-    {"no reuse", "solver.reuse=never", 0, 0},
-    {"umfpack", "solver.linear=umfpack", 0, 0},
-    {"klu", "solver.linear=klu", 0, 0},
-    {"after", NULL, 0, 0},
+    {"before, ref. BLAS", NULL, NULL, 1, 1},
+    {"before", NULL, NULL, 1, 0},
+    {"no reuse", "solver.reuse=never", NULL, 0, 0},
+    {"umfpack", "solver.linear=umfpack", NULL, 0, 0},
+    {"klu", "solver.linear=klu", NULL, 0, 0},
+    {"after", NULL, NULL, 0, 0},
+    /* a build with -DSLUICE_WITH_PETSC=ON: its defaults, and MUMPS (parallel direct) through it */
+    {"petsc", "solver.linear=petsc", NULL, 0, 0},
+    {"petsc, mumps", "solver.linear=petsc", "-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps", 0, 0},
 };
 enum { N_VARIANTS = (int)(sizeof variants / sizeof variants[0]) };
 
 typedef struct result {
   int ok, steps_known;
-  double cpu;
-  long steps, rejected, newton, numeric, reused;
+  double cpu, peak_mb;
+  long steps, rejected, newton, numeric, reused, krylov;
   char linear[32], why[256];
 } result;
 
@@ -110,6 +129,12 @@ static void parse(const char *text, result *r) {
           if (!s) continue;
           while (s > q && s[-1] >= '0' && s[-1] <= '9') --s;
           *into[w] = strtol(s, NULL, 10);
+        }
+        /* an iterative backend's "(fgmres/fieldsplit, N iterations)" */
+        const char *it = strstr(q, " iterations)");
+        if (it) {
+          while (it > q && it[-1] >= '0' && it[-1] <= '9') --it;
+          r->krylov = strtol(it, NULL, 10);
         }
       }
     }
@@ -151,6 +176,7 @@ static int run(const char *bin, char *const *args, const char *ld_path, result *
       unlink(log);
       return -1;
     }
+  r->peak_mb = (double)ru.ru_maxrss / 1024.0;
   r->cpu = (double)ru.ru_utime.tv_sec + 1e-6 * (double)ru.ru_utime.tv_usec + (double)ru.ru_stime.tv_sec +
            1e-6 * (double)ru.ru_stime.tv_usec;
   FILE *f = fopen(log, "r");
@@ -181,7 +207,8 @@ static int run(const char *bin, char *const *args, const char *ld_path, result *
 }
 
 int main(int argc, char **argv) {
-  const char *src = SLUICE_SOURCE_DIR, *before = NULL, *before_label = NULL, *ref_blas = NULL, *markdown = NULL;
+  const char *src = SLUICE_SOURCE_DIR, *before = NULL, *before_label = NULL, *ref_blas = NULL, *markdown = NULL,
+             *title = "Benchmarks: the cost of the 2-D scenes";
   int repeat = 2, quick = 0, append = 0, n_case_sel = 0, n_var_sel = 0;
   const char *case_sel[MAX_CASES], *var_sel[MAX_VARIANTS];
   for (int i = 1; i < argc; ++i) {
@@ -190,6 +217,7 @@ int main(int argc, char **argv) {
     else if (!strcmp(argv[i], "--reference-blas") && i + 1 < argc) ref_blas = argv[++i];
     else if (!strcmp(argv[i], "--repeat") && i + 1 < argc) repeat = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--markdown") && i + 1 < argc) markdown = argv[++i];
+    else if (!strcmp(argv[i], "--title") && i + 1 < argc) title = argv[++i];
     else if (!strcmp(argv[i], "--quick")) quick = 1;
     else if (!strcmp(argv[i], "--append")) append = 1;
     else if (!strcmp(argv[i], "--case") && i + 1 < argc && n_case_sel < MAX_CASES)
@@ -200,7 +228,7 @@ int main(int argc, char **argv) {
     else {
       fprintf(stderr, "usage: bench_transient_cost [SOURCE_DIR] [--before BIN [--before-label TEXT]] "
                       "[--reference-blas DIR] [--repeat R] [--quick] [--case NAME]... [--variant NAME]... "
-                      "[--markdown PATH [--append]]\n");
+                      "[--markdown PATH [--append]] [--title TEXT]\n");
       return 2;
     }
   }
@@ -209,7 +237,7 @@ int main(int argc, char **argv) {
   snprintf(self, sizeof self, "%s", SLUICE_EXECUTABLE);
   int use_case[N_CASES], use_var[N_VARIANTS];
   for (int c = 0; c < N_CASES; ++c) {
-    use_case[c] = n_case_sel == 0 ? (!quick || cases[c].quick) : 0;
+    use_case[c] = n_case_sel == 0 ? (!quick || cases[c].quick) && !cases[c].large : 0;
     for (int k = 0; k < n_case_sel; ++k) use_case[c] |= !strcmp(case_sel[k], cases[c].name);
   }
   for (int v = 0; v < N_VARIANTS; ++v) {
@@ -226,7 +254,7 @@ int main(int argc, char **argv) {
     for (int c = 0; c < N_CASES; ++c) {
       if (!use_case[c]) continue;
       for (int v = 0; v < N_VARIANTS; ++v) {
-        if (!use_var[v]) continue;
+        if (!use_var[v] || (cases[c].iterative_only && strcmp(variants[v].name, "petsc") != 0)) continue;
         char scene[4096];
         snprintf(scene, sizeof scene, "%s/configs/%s.ini", src, cases[c].scene);
         char *args[4 + 2 * MAX_SETS + 4];
@@ -236,6 +264,7 @@ int main(int argc, char **argv) {
         args[na++] = scene;
         for (int k = 0; cases[c].sets[k]; ++k) args[na++] = "--set", args[na++] = (char *)cases[c].sets[k];
         if (variants[v].set) args[na++] = "--set", args[na++] = (char *)variants[v].set;
+        if (variants[v].petsc) args[na++] = "--petsc", args[na++] = (char *)variants[v].petsc;
         args[na++] = "-o", args[na++] = out;
         args[na] = NULL;
         result r = {0};
@@ -249,8 +278,8 @@ int main(int argc, char **argv) {
           ++failed;
           continue;
         }
-        fprintf(stderr, "%.2f s CPU, %ld steps (%ld rejected), %ld Newton, %ld numeric, %ld reused\n", r.cpu, r.steps,
-                r.rejected, r.newton, r.numeric, r.reused);
+        fprintf(stderr, "%.2f s CPU, %.0f MB, %ld steps (%ld rejected), %ld Newton, %ld numeric, %ld reused\n", r.cpu, r.peak_mb,
+                r.steps, r.rejected, r.newton, r.numeric, r.reused);
         result *b = &best[c][v];
         if (!b->ok || r.cpu < b->cpu) *b = r;
       }
@@ -264,13 +293,14 @@ int main(int argc, char **argv) {
     FILE *f = sinks[s];
     if (!f) continue;
     if (f == md && append) fprintf(f, "\n## A further run\n\n");
-    else fprintf(f, "# Benchmarks: the cost of the 2-D scenes\n\n");
+    else fprintf(f, "# %s\n\n", title);
     fprintf(f, "Written by `bench_transient_cost` (bench/transient_cost.c). %s; each time the fastest of %d "
                "interleaved round%s, CPU seconds of the whole `sluice run` (user + system). \"before\" is `%s`%s.\n\n",
             machine, repeat, repeat == 1 ? "" : "s", before_label ? before_label : before ? before : "(not run)",
             ref_blas ? ", \"ref. BLAS\" the same with the reference BLAS first on LD_LIBRARY_PATH" : "");
-    fprintf(f, "| case | variant | solver | CPU s | ratio | steps | rejected | rejected %% | Newton | numeric "
-               "factorisations | reused solves |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    fprintf(f, "| case | variant | solver | CPU s | ratio | peak MB | steps | rejected | rejected %% | Newton | numeric "
+               "factorisations | reused solves | Krylov iterations |\n"
+               "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int c = 0; c < N_CASES; ++c) {
       if (!use_case[c]) continue;
       double ref = NAN;
@@ -280,16 +310,18 @@ int main(int argc, char **argv) {
         const result *r = &best[c][v];
         if (!use_var[v]) continue;
         if (!r->ok) {
-          fprintf(f, "| %s | %s | | failed | | | | | | | |\n", cases[c].what, variants[v].name);
+          fprintf(f, "| %s | %s | | failed | | | | | | | | | |\n", cases[c].what, variants[v].name);
           continue;
         }
         long att = r->steps + r->rejected;
-        fprintf(f, "| %s | %s | %s | %.2f | %.2f | %ld | %ld | %.1f | %ld | %ld | %ld |\n", cases[c].what,
-                variants[v].name, r->linear, r->cpu, ref / r->cpu, r->steps, r->rejected,
-                att > 0 ? 100.0 * (double)r->rejected / (double)att : 0.0, r->newton, r->numeric, r->reused);
+        fprintf(f, "| %s | %s | %s | %.2f | %.2f | %.0f | %ld | %ld | %.1f | %ld | %ld | %ld | %ld |\n",
+                cases[c].what, variants[v].name, r->linear, r->cpu, ref / r->cpu, r->peak_mb, r->steps, r->rejected,
+                att > 0 ? 100.0 * (double)r->rejected / (double)att : 0.0, r->newton, r->numeric, r->reused,
+                r->krylov);
       }
     }
-    fprintf(f, "\n\"ratio\" is the first variant's CPU time over the row's (how many times faster). \"rejected %%\" "
+    fprintf(f, "\n\"ratio\" is the first variant's CPU time over the row's (how many times faster); \"peak MB\" the "
+               "run's largest resident set (wait4's ru_maxrss). \"rejected %%\" "
                "is of all attempted steps. \"Newton\" counts the linear solves of the nonlinear iterations; "
                "\"reused solves\" those answered by FGMRES with an older factorisation (core/solve/linsolve.h).\n");
   }

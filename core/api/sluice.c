@@ -4,9 +4,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/solve/linsolve.h"
 #include "core/config/ini.h"
 #include "core/models/run.h"
 #include "core/plugin/closure_ini.h"
+#include "core/plugin/guard.h"
 #include "core/plugin/kinds.h"
 #include "core/time/loop.h"
 #include "core/util/version.h"
@@ -44,11 +46,14 @@ static int finish_open(sluice *s, const sluice_open_opts *o, sluice_error *e) {
   sl_diag d;
   int rc = 0;
   for (int i = 0; o && o->sets && o->sets[i] && !rc; ++i) rc = sl_closure_ini_apply_override(s->ini, o->sets[i], &d);
+  if (!rc) rc = sl_plugin_dirs_allowed(s->ini, o && o->allow_plugin_path, &d);
   if (!rc) rc = sl_plugin_dirs_from_ini(s->ini, &s->dirs, &s->n_dirs, &d);
+  if (!rc) sl_guard_set_call_time_limit(o ? o->closure_time_limit : 0.0);
   if (!rc) rc = sl_registry_create(&s->reg, (const char *const *)s->dirs, s->n_dirs, &d);
   /* only the libraries of the closures the scene names are loaded, unless asked */
   if (!rc) rc = o && o->scan_all ? sl_registry_scan(s->reg, &d) : sl_registry_index(s->reg, &d);
   if (!rc && o && o->timing) sl_registry_set_timing(s->reg, 1);
+  if (!rc && o && o->petsc_options) rc = sl_linsolve_petsc_options(o->petsc_options, &d);
   if (!rc) rc = sl_model_select(s->ini, &s->entry, &d);
   if (!rc) {
     const sl_schema *sc = s->entry->schema;
@@ -67,6 +72,12 @@ static sluice *create(const char *path, sluice_error *e) {
     return NULL;
   }
   return s;
+}
+
+int sluice_ranks(int *rank, int *size, sluice_error *e) {
+  sl_diag d;
+  int rc = sl_linsolve_ranks(rank, size, &d);
+  return rc ? from_diag(e, rc, &d) : 0;
 }
 
 int sluice_open(const char *path, const sluice_open_opts *o, sluice **out, sluice_error *e) {
@@ -126,18 +137,24 @@ int sluice_time_span(sluice *s, double *t0, double *t1, sluice_error *e) {
   return rc;
 }
 
-int sluice_check(sluice *s, FILE *report, sluice_error *e) {
+int sluice_check(sluice *s, FILE *report, sluice_error *e) { return sluice_check_restart(s, NULL, report, e); }
+
+int sluice_check_restart(sluice *s, const char *restart, FILE *report, sluice_error *e) {
   sl_diag d;
   const sl_model_entry *entry;
   sl_scene_free(s->scene), s->scene = NULL;
-  int rc = sl_model_scene(s->ini, s->reg, 1, 1, &entry, &s->scene, &d);
+  /* every check a run makes before it writes anything: the model's own set-up and a restart too */
+  int rc = sl_model_check(s->ini, s->reg, restart, &entry, &s->scene, &d);
   if (rc) return from_diag(e, rc, &d);
   s->scene_full = 1;
-  /* every check a run makes before it writes anything: the model's own set-up too */
-  void *self = NULL;
-  sl_model_info info;
-  if ((rc = entry->ops->setup(&self, s->scene, &info, &d))) return from_diag(e, rc, &d);
-  entry->ops->destroy(self);
+  /* where [output] file may write (the folder rule; whether an existing
+   * file may be replaced is decided by the run, which knows -o and --overwrite) */
+  char out[4096], dir[4096];
+  sl_scene_output_path(s->scene, NULL, s->path, out, sizeof out);
+  sl_run_opts ro = {.scene_path = s->path, .overwrite = 1};
+  sl_output_opts oo;
+  sl_run_output_opts(&ro, dir, sizeof dir, &oo);
+  if ((rc = sl_output_check_path(out, &oo, &d))) return from_diag(e, rc, &d);
   if (!report) return 0;
   const sl_schema *schema = entry->schema;
   int n_closures = 0;
@@ -159,6 +176,7 @@ static void summarise(const sl_run_result *res, sluice_summary *sum) {
   sum->steps = res->steps, sum->rejected_steps = res->rejected_steps;
   sum->nonlinear_iterations = res->nonlinear_iterations;
   sum->t_start = res->t_start, sum->t_end = res->t_end, sum->t_reached = res->t_reached;
+  sum->saved_time = res->saved_time, sum->saved_time_valid = res->saved_time_valid;
   sum->step_limit = res->step_limit;
   memcpy(sum->output_path, res->output_path, sizeof sum->output_path);
   memcpy(sum->stop_reason, res->stop_reason, sizeof sum->stop_reason);
@@ -205,6 +223,14 @@ static void relay(void *user, double t, double dt, long step, int its) {
   if (r->o->progress) r->o->progress(r->o->progress_user, t, dt, step, its);
 }
 
+static void relay_nonlinear(void *user, const sl_nl_report *r) {
+  const sluice_run_opts *o = user;
+  sluice_nonlinear n = {.t = r->t, .stage = r->stage, .n_stages = r->n_stages, .iteration = r->iteration,
+                        .picard = r->picard, .correction = r->correction, .residual = r->residual,
+                        .terms = r->terms};
+  o->nonlinear(o->nonlinear_user, &n);
+}
+
 int sluice_run(sluice *s, const sluice_run_opts *o, sluice_summary *sum, sluice_error *e) {
   memset(sum, 0, sizeof *sum);
   sl_scene_free(s->scene), s->scene = NULL; /* the run builds its own */
@@ -216,7 +242,10 @@ int sluice_run(sluice *s, const sluice_run_opts *o, sluice_summary *sum, sluice_
                     .sluice_version = o && o->version ? o->version : sl_version(),
                     .monitor = o && (o->progress || o->live) ? relay : NULL,
                     .monitor_user = &rl,
-                    .interrupt = o ? o->interrupt : NULL};
+                    .interrupt = o ? o->interrupt : NULL,
+                    .nonlinear = o && o->nonlinear ? relay_nonlinear : NULL,
+                    .nonlinear_user = (void *)o,
+                    .overwrite = o ? o->overwrite : 0};
   sl_diag d;
   int rc = sl_model_run(s->ini, s->reg, &ro, &res, &d);
   summarise(&res, sum);

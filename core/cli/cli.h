@@ -28,4 +28,8 @@ int sl_cli_error(int code, const char *fmt, ...)
 #endif
     ;
 
+/* sluice closure index DIR (cmd_closure_index.c) */
+int sl_cmd_closure_index(int argc, char **argv);
+extern const char sl_closure_index_usage[];
+
 #endif

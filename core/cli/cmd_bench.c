@@ -16,13 +16,14 @@
 #include "core/study/runner.h"
 #include "core/study/study.h"
 #include "core/cli/cli.h"
+#include "core/io/output.h"
 #include "core/util/version.h"
 #include "core/cli/progress.h"
 #include "core/models/run.h"
 #include "core/plugin/closure_ini.h"
 
 static const char bench_usage[] =
-    "usage: sluice bench STUDY.ini [-o DIR] [--keep] [--check]\n"
+    "usage: sluice bench STUDY.ini [-o DIR] [--keep] [--check] [--allow-plugin-path]\n"
     "Runs a study: the study's scene once for every variant and point, each run\n"
     "in its own process; measures each output against an exact solution, a\n"
     "reference file, a value or the finest run (or, for a comparison, takes the\n"
@@ -37,6 +38,8 @@ static const char bench_usage[] =
     "  --keep   keep each run's output file and log in DIR/STUDY.runs/ (the logs of\n"
     "           failed runs are always kept)\n"
     "  --check  check the study and every run's scene and closures, and stop\n"
+    "  --allow-plugin-path  let the scene's [plugins] path name folders of closure\n"
+    "           libraries (refused without it: docs/trust-plugins.md)\n"
     "A failed, crashed or timed-out run is recorded and the study goes on. One line\n"
     "per run on stderr. Ctrl-C stops after the current run and writes what is done.\n"
     "Exit status: 0 every run measured, 1 one or more runs failed (see the CSV),\n"
@@ -69,6 +72,7 @@ typedef struct bench {
   sl_ini **inis;             /* per run, variant by variant */
   sl_bench_exact **exact;    /* per run, or NULL */
   sl_bench_table table;
+  int allow_plugin_path; /* --allow-plugin-path: the scene's [plugins] path may name folders */
 } bench;
 
 static void bench_free(bench *b) {
@@ -105,9 +109,11 @@ static int check_runs(bench *b, sl_diag *d) {
       if ((rc = sl_study_run_ini(s, v, p, &ini, d))) break;
       b->inis[i] = ini;
       if (i == 0) { /* the plugin folders of the scene */
+        if ((rc = sl_plugin_dirs_allowed(ini, b->allow_plugin_path, d))) break;
         if ((rc = sl_plugin_dirs_from_ini(ini, &b->dirs, &b->n_dirs, d))) break;
         if ((rc = sl_registry_create(&b->reg, (const char *const *)b->dirs, b->n_dirs, d))) break;
-        if ((rc = sl_registry_scan(b->reg, d))) break;
+        /* only the libraries that hold the closures named (docs/trust-plugins.md) */
+        if ((rc = sl_registry_index(b->reg, d))) break;
       }
       /* the scene as a run would take it: its keys, its closures created */
       const sl_model_entry *entry;
@@ -160,20 +166,12 @@ static void progress_line(const sl_bench_row *r, const sl_study *s) {
   else fputc('\n', stderr);
 }
 
-static void remove_outputs(const char *h5) {
-  char xmf[4200];
-  remove(h5);
-  size_t n = strlen(h5);
-  if (n > 3 && n < sizeof xmf && !strcmp(h5 + n - 3, ".h5")) {
-    snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)(n - 3), h5);
-    remove(xmf);
-  }
-}
+static void remove_outputs(const char *h5) { sl_output_remove(h5); }
 
 /* `sluice bench STUDY.ini --run-one V P OUT.h5`: one run of the study, as
  * the study's child process (fork and exec of this command) runs it, with
  * its outcome on file descriptor 3. Not for users: no --help entry. */
-static int run_one(const char *path, const char *v_text, const char *p_text, const char *out) {
+static int run_one(const char *path, const char *v_text, const char *p_text, const char *out, int allow_plugin_path) {
   sl_diag d = {{0}};
   sl_study *s = NULL;
   sl_ini *ini = NULL;
@@ -186,9 +184,10 @@ static int run_one(const char *path, const char *v_text, const char *p_text, con
               p >= s->n_points))
     rc = sl_diag_set(&d, SL_EBADINPUT, "bench --run-one: no run %s, %s in %s", v_text, p_text, path);
   if (!rc) rc = sl_study_run_ini(s, (int)v, (int)p, &ini, &d);
+  if (!rc) rc = sl_plugin_dirs_allowed(ini, allow_plugin_path, &d);
   if (!rc) rc = sl_plugin_dirs_from_ini(ini, &dirs, &n_dirs, &d);
   if (!rc) rc = sl_registry_create(&reg, (const char *const *)dirs, n_dirs, &d);
-  if (!rc) rc = sl_registry_scan(reg, &d);
+  if (!rc) rc = sl_registry_index(reg, &d);
   if (!rc) {
     const sl_model_entry *entry;
     sl_scene *sc = NULL;
@@ -219,10 +218,12 @@ int sl_cmd_bench(int argc, char **argv) {
     return 0;
   }
   const char *path = NULL, *dir = ".";
-  int keep = 0, check_only = 0;
-  if (argc == 5 && !strcmp(argv[1], "--run-one")) return run_one(argv[0], argv[2], argv[3], argv[4]);
+  int keep = 0, check_only = 0, allow_plugin_path = 0;
+  if ((argc == 5 || (argc == 6 && !strcmp(argv[5], "--allow-plugin-path"))) && !strcmp(argv[1], "--run-one"))
+    return run_one(argv[0], argv[2], argv[3], argv[4], argc == 6);
   for (int i = 0; i < argc; ++i) {
     if (!strcmp(argv[i], "-o") && i + 1 < argc) dir = argv[++i];
+    else if (!strcmp(argv[i], "--allow-plugin-path")) allow_plugin_path = 1;
     else if (!strcmp(argv[i], "--keep")) keep = 1;
     else if (!strcmp(argv[i], "--check")) check_only = 1;
     else if (argv[i][0] == '-')
@@ -234,6 +235,7 @@ int sl_cmd_bench(int argc, char **argv) {
 
   bench b;
   memset(&b, 0, sizeof b);
+  b.allow_plugin_path = allow_plugin_path;
   sl_diag d = {{0}};
   int rc = sl_study_load(path, &b.study, &d);
   if (!rc) rc = check_runs(&b, &d);
@@ -282,7 +284,8 @@ int sl_cmd_bench(int argc, char **argv) {
       /* the child execs this command for the one run: its memory and clocks are its own */
       char v_text[16], p_text[16];
       snprintf(v_text, sizeof v_text, "%d", v), snprintf(p_text, sizeof p_text, "%d", p);
-      char *child_argv[] = {"/proc/self/exe", "bench", (char *)path, "--run-one", v_text, p_text, file, NULL};
+      char *child_argv[] = {"/proc/self/exe", "bench", (char *)path, "--run-one", v_text, p_text, file,
+                            allow_plugin_path ? "--allow-plugin-path" : NULL, NULL};
       sl_bench_run_opts o = {.argv = child_argv, .log = log, .timeout = s->timeout, .interrupt = &interrupted};
       if (sl_bench_run(&o, &row->run)) {
         fprintf(stderr, "cannot start: %s\n", row->run.message);

@@ -14,6 +14,7 @@ static const char sample_usage[] =
     "usage: sluice sample OUT.h5 --field F [--time T] --line x0,y0:x1,y1 [--n N]\n"
     "       sluice sample OUT.h5 --field F [--time T] --point x,y\n"
     "       sluice sample OUT.h5 --list\n"
+    "       sluice sample OUT.h5 --scalars\n"
     "Prints field F of an output file at points, as CSV: a header line, then one\n"
     "row per point: its coordinates x,y (only x on a 1-D mesh), its arc length s\n"
     "from the start of the line, and the value (F) or the components of a vector\n"
@@ -26,6 +27,9 @@ static const char sample_usage[] =
     "  --n N         points on the line, N >= 1 (default 101)\n"
     "  --point P     one point: x,y, or x on a 1-D mesh\n"
     "  --list        the mesh, the fields and the output times of the file\n"
+    "  --scalars     the model's scalars (solids inventory, interface heights, wall\n"
+    "                stresses, ...) of every output time as CSV: time, then one\n"
+    "                column per scalar, the units in the header (as OUT_scalars.csv)\n"
     "Node fields are interpolated with their cell's own basis (linear or quadratic\n"
     "Lagrange); cell fields are constant on each cell. A point outside the mesh\n"
     "gets nan and a warning on stderr; it is not an error.";
@@ -134,13 +138,42 @@ static int list_file(const char *path) {
   return 0;
 }
 
+static int print_scalars(const char *path) {
+  sl_diag d;
+  sl_output_scalars s;
+  int rc = sl_output_read_scalars(path, &s, &d);
+  if (rc) return sl_cli_error(rc, "sample: %s", d.msg);
+  if (s.n_names == 0) fprintf(stderr, "sluice: sample: %s holds no scalars (only the output times)\n", path);
+  fputs("time [s]", stdout);
+  for (int c = 0; c < s.n_names; ++c) {
+    printf(",%s", s.names[c]);
+    if (s.units[c][0]) printf(" [%s]", s.units[c]);
+  }
+  putchar('\n');
+  for (int i = 0; i < s.n_times; ++i) {
+    printf("%.17g", s.times[i]);
+    for (int c = 0; c < s.n_names; ++c) {
+      putchar(',');
+      double v = s.values[(size_t)i * s.n_names + c];
+      if (isnan(v))
+        fputs("nan", stdout);
+      else
+        printf("%.17g", v);
+    }
+    putchar('\n');
+  }
+  sl_output_scalars_free(&s);
+  if (fflush(stdout) != 0 || ferror(stdout)) return sl_cli_error(SL_EFAILED, "sample: cannot write the scalars");
+  return 0;
+}
+
 int sl_cmd_sample(int argc, char **argv) {
   if (sl_cli_wants_help(argc, argv)) {
     puts(sample_usage);
     return 0;
   }
   const char *path = NULL, *field = NULL, *time_arg = NULL, *line_arg = NULL, *n_arg = NULL, *point_arg = NULL;
-  int list = 0;
+  int list = 0, scalars = 0;
   for (int i = 0; i < argc; ++i) {
     const char *a = argv[i];
     const char **slot = strcmp(a, "--field") == 0   ? &field
@@ -154,6 +187,8 @@ int sl_cmd_sample(int argc, char **argv) {
       *slot = argv[++i];
     } else if (strcmp(a, "--list") == 0) {
       list = 1;
+    } else if (strcmp(a, "--scalars") == 0) {
+      scalars = 1;
     } else if (a[0] == '-' && a[1] != '\0') {
       return sl_cli_error(SL_EBADINPUT, "sample: unknown option or missing value '%s' (sluice sample --help)", a);
     } else if (!path) {
@@ -164,6 +199,7 @@ int sl_cmd_sample(int argc, char **argv) {
   }
   if (!path) return sl_cli_error(SL_EBADINPUT, "sample: which output file?\n%s", sample_usage);
   if (list) return list_file(path);
+  if (scalars) return print_scalars(path);
   if (!field) return sl_cli_error(SL_EBADINPUT, "sample: which field? (--field F; --list shows them)");
   if (!line_arg == !point_arg)
     return sl_cli_error(SL_EBADINPUT, "sample: give either --line x0,y0:x1,y1 or --point x,y (sluice sample --help)");

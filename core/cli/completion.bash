@@ -15,6 +15,8 @@ _sluice() {
     run)
       case $prev in
         -o|--restart) COMPREPLY=($(compgen -f -X '!*.h5' -- "$cur")); return ;;
+        --closure-time-limit) return ;;
+        --summary-json) COMPREPLY=($(compgen -f -- "$cur")); return ;;
         --set)
           local scene w
           for w in "${COMP_WORDS[@]:2}"; do case $w in *.ini) scene=$w ;; esac; done
@@ -24,16 +26,16 @@ _sluice() {
           fi
           return ;;
       esac
-      COMPREPLY=($(compgen -W "--set --print-config --check --profile --restart -o --help" -- "$cur"))
+      COMPREPLY=($(compgen -W "--set --print-config --check --profile --monitor --petsc --restart -o --overwrite --summary-json --allow-plugin-path --closure-time-limit --help" -- "$cur"))
       [[ $cur != -* ]] && COMPREPLY+=($(compgen -f -X '!*.ini' -- "$cur") $(compgen -d -- "$cur"))
       ;;
     sample)
-      COMPREPLY=($(compgen -W "--field --time --line --n --point --list --help" -- "$cur"))
+      COMPREPLY=($(compgen -W "--field --time --line --n --point --list --scalars --help" -- "$cur"))
       [[ $cur != -* ]] && COMPREPLY+=($(compgen -f -X '!*.h5' -- "$cur") $(compgen -d -- "$cur"))
       ;;
     bench)
       [ "$prev" = -o ] && { COMPREPLY=($(compgen -d -- "$cur")); return; }
-      COMPREPLY=($(compgen -W "-o --keep --check --help" -- "$cur"))
+      COMPREPLY=($(compgen -W "-o --keep --check --allow-plugin-path --help" -- "$cur"))
       [[ $cur != -* ]] && COMPREPLY+=($(compgen -f -X '!*.ini' -- "$cur") $(compgen -d -- "$cur"))
       ;;
     model)
@@ -45,13 +47,13 @@ _sluice() {
       ;;
     closure)
       if [ "$COMP_CWORD" -eq 2 ]; then
-        COMPREPLY=($(compgen -W "describe eval --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "describe eval index --help" -- "$cur"))
       else
         COMPREPLY=($(compgen -W "$(sluice closures 2>/dev/null | awk 'NR > 1 {print $2}') --all --markdown --at --set --deriv" -- "$cur"))
       fi
       ;;
     check-closure)
-      COMPREPLY=($(compgen -W "--quiet --help" -- "$cur"))
+      COMPREPLY=($(compgen -W "--quiet --time-limit --help" -- "$cur"))
       [[ $cur != -* ]] && COMPREPLY+=($(compgen -f -X '!*.so' -- "$cur") $(compgen -d -- "$cur"))
       ;;
   esac

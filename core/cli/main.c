@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "core/cli/cli.h"
+#include "core/io/output.h"
 #include "core/util/diag.h"
 
 static const char usage[] =
@@ -17,6 +18,7 @@ static const char usage[] =
     "  closures                        list every closure found (kind, name, version, library)\n"
     "  closure describe NAME|--all     schema, units, ranges, reference, an INI stanza\n"
     "  closure eval NAME --at SPEC     evaluate a closure without a mesh (CSV)\n"
+    "  closure index DIR               write DIR/closures.index (which library holds which closure)\n"
     "  check-closure LIB.so            run the conformance battery on a closure library\n"
     "  sample OUT.h5 --field F --line x0,y0:x1,y1 [--n N] [--time T]\n"
     "                                  a field of an output file along a line (CSV);\n"
@@ -25,9 +27,9 @@ static const char usage[] =
     "                                  every run in its own process; CSV and PNG\n"
     "  version                         print the version\n"
     "\n"
-    "Each command takes --help. Closures are searched in the folders named by the\n"
-    "scene's [plugins] path, then SLUICE_PLUGIN_PATH (colon-separated), then\n"
-    "sluice's own plugin folder.\n"
+    "Each command takes --help. Closures are searched in SLUICE_PLUGIN_PATH\n"
+    "(colon-separated), then sluice's own plugin folder; the folders a scene's\n"
+    "[plugins] path names come first only with run --allow-plugin-path.\n"
     "Exit status: 0 success, 1 the run failed, 2 bad usage or bad input.\n";
 
 int sl_cli_error(int code, const char *fmt, ...) {
@@ -71,6 +73,7 @@ static const command commands[] = {
 };
 
 int main(int argc, char **argv) {
+  sl_io_process_start();
   if (argc < 2) {
     fputs(usage, stderr);
     return SL_EBADINPUT;

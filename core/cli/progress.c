@@ -137,6 +137,31 @@ void sl_progress_update(sl_progress *p, double t, double dt, long step, int nonl
   if (!ok) p->enabled = 0;
 }
 
+void sl_progress_iteration(sl_progress *p, long stage, long n_stages, int iteration, int picard, double correction,
+                           double residual, double terms) {
+  if (!p->enabled) return;
+  double now = p->now();
+  if (isnan(p->started)) p->started = now;
+  char line[LINE_MAX_CHARS], st[64] = "", spent[32];
+  if (n_stages > 0) snprintf(st, sizeof st, "stage %ld of %ld, ", stage, n_stages);
+  format_left(now - p->started, spent, sizeof spent);
+  int n = snprintf(line, sizeof line, "steady: %s%s iteration %d: correction %.3g, residual %.3g (%.3g of its terms)",
+                   st, picard ? "Picard" : "Newton", iteration, correction, residual,
+                   terms > 0 ? residual / terms : 0.0);
+  if (n < 0) return;
+  int ok;
+  if (p->lines) {
+    ok = fprintf(p->f, "sluice: %s; %s spent\n", line, spent) >= 0 && fflush(p->f) == 0;
+  } else {
+    if (!(now - p->last_draw >= REDRAW_INTERVAL)) return;
+    p->last_draw = now;
+    int len = n < (int)sizeof line ? n : (int)sizeof line - 1;
+    ok = fprintf(p->f, "\r%s%*s", line, p->width > len ? p->width - len : 0, "") >= 0 && fflush(p->f) == 0;
+    p->width = len;
+  }
+  if (!ok) p->enabled = 0;
+}
+
 void sl_progress_end(sl_progress *p) {
   if (p->enabled && !p->lines && p->width > 0) {
     if (fprintf(p->f, "\r%*s\r", p->width, "") < 0 || fflush(p->f) != 0) p->enabled = 0;

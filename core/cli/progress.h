@@ -34,6 +34,11 @@ void sl_progress_begin(sl_progress *p, FILE *f, double t_start, double t_end);
  * the wall time left (from the simulated-time rate; "--" until known). A
  * write error disables the display; the run goes on. */
 void sl_progress_update(sl_progress *p, double t, double dt, long step, int nonlinear_iterations);
+/* A nonlinear iteration of a steady solve (a run with no time span): on a
+ * terminal the line in place, otherwise one line per iteration, with the
+ * continuation stage when there are stages (n_stages > 0). */
+void sl_progress_iteration(sl_progress *p, long stage, long n_stages, int iteration, int picard, double correction,
+                           double residual, double terms);
 /* Clears the line (call before printing anything else). */
 void sl_progress_end(sl_progress *p);
 

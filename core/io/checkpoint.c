@@ -141,6 +141,9 @@ static int write_slot(const sl_output *o, hid_t slot, const char *sname, const s
 int sl_output_write_checkpoint(sl_output *o, const sl_checkpoint *ck, sl_diag *d) {
   int rc = check_checkpoint(o, ck, d);
   if (rc) return rc;
+  double bytes = 0.0;
+  for (int i = 0; i < ck->n_arrays; ++i) bytes += 8.0 * (double)ck->arrays[i].n;
+  if ((rc = sl_io_space_check(o, bytes, "the checkpoint", d))) return rc;
   int s = o->ck_current == 0 ? 1 : 0;
   char sname[32], rel[16];
   snprintf(rel, sizeof rel, "slot_%d", s);
@@ -161,6 +164,7 @@ int sl_output_write_checkpoint(sl_output *o, const sl_checkpoint *ck, sl_diag *d
   if (!rc && H5Fflush(o->file, H5F_SCOPE_GLOBAL) < 0)
     rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot flush", "/checkpoint");
   if (!rc) o->ck_current = s;
+  if (!rc) rc = sl_output_commit(o, d); /* a restartable state is a result */
   return rc;
 }
 

@@ -72,12 +72,12 @@ int sl_h5_attr_int32(hid_t loc, const char *name, int32_t v, const char *file, c
   return attr_write(loc, name, H5T_STD_I32LE, H5T_NATIVE_INT32, &v, file, obj, d);
 }
 
-/* Fixed-length, NULL-terminated UTF-8: h5dump prints it as text. */
-static hid_t string_type(const char *s) {
+/* Variable-length UTF-8: h5dump prints it as text, h5py returns a str
+ * (fixed-length strings come back as bytes). */
+static hid_t string_type(void) {
   hid_t t = H5Tcopy(H5T_C_S1);
   if (t < 0) return t;
-  if (H5Tset_size(t, strlen(s) + 1) < 0 || H5Tset_strpad(t, H5T_STR_NULLTERM) < 0 ||
-      H5Tset_cset(t, H5T_CSET_UTF8) < 0) {
+  if (H5Tset_size(t, H5T_VARIABLE) < 0 || H5Tset_cset(t, H5T_CSET_UTF8) < 0) {
     H5Tclose(t);
     return -1;
   }
@@ -86,16 +86,16 @@ static hid_t string_type(const char *s) {
 
 int sl_h5_attr_string(hid_t loc, const char *name, const char *s, const char *file, const char *obj, sl_diag *d) {
   if (!s) s = "";
-  hid_t t = string_type(s);
+  hid_t t = string_type();
   if (t < 0) return sl_h5_fail(d, SL_EFAILED, file, "cannot make a string type for", obj);
-  int rc = attr_write(loc, name, t, t, s, file, obj, d);
+  int rc = attr_write(loc, name, t, t, &s, file, obj, d);
   H5Tclose(t);
   return rc;
 }
 
 int sl_h5_dataset_string(hid_t loc, const char *name, const char *s, const char *file, const char *obj, sl_diag *d) {
   if (!s) s = "";
-  hid_t t = string_type(s), space = H5Screate(H5S_SCALAR), ds = -1;
+  hid_t t = string_type(), space = H5Screate(H5S_SCALAR), ds = -1;
   int rc = 0;
   if (t < 0 || space < 0) {
     rc = sl_h5_fail(d, SL_EFAILED, file, "cannot make a string type for", obj);
@@ -106,12 +106,49 @@ int sl_h5_dataset_string(hid_t loc, const char *name, const char *s, const char 
     rc = sl_h5_fail(d, SL_EFAILED, file, "cannot create dataset", obj);
     goto done;
   }
-  if (H5Dwrite(ds, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, s) < 0)
+  if (H5Dwrite(ds, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, &s) < 0)
     rc = sl_h5_fail(d, SL_EFAILED, file, "cannot write dataset", obj);
 done:
   if (ds >= 0 && H5Dclose(ds) < 0 && !rc) rc = sl_h5_fail(d, SL_EFAILED, file, "cannot close dataset", obj);
   if (space >= 0) H5Sclose(space);
   if (t >= 0) H5Tclose(t);
+  return rc;
+}
+
+int sl_h5_read_string(hid_t obj, int is_attr, char **text) {
+  *text = NULL;
+  hid_t ft = is_attr ? H5Aget_type(obj) : H5Dget_type(obj);
+  if (ft < 0) return -1;
+  int rc = -1;
+  if (H5Tget_class(ft) == H5T_STRING) {
+    htri_t vl = H5Tis_variable_str(ft);
+    if (vl > 0) {
+      hid_t mt = H5Tcopy(H5T_C_S1);
+      char *p = NULL;
+      if (mt >= 0 && H5Tset_size(mt, H5T_VARIABLE) >= 0 && H5Tset_cset(mt, H5Tget_cset(ft)) >= 0 &&
+          (is_attr ? H5Aread(obj, mt, &p) : H5Dread(obj, mt, H5S_ALL, H5S_ALL, H5P_DEFAULT, &p)) >= 0) {
+        size_t n = p ? strlen(p) : 0;
+        if ((*text = malloc(n + 1))) {
+          if (n) memcpy(*text, p, n);
+          (*text)[n] = 0;
+          rc = 0;
+        }
+        if (p) H5free_memory(p);
+      }
+      if (mt >= 0) H5Tclose(mt);
+    } else if (vl == 0) { /* fixed length: files of sluice before 0.2 */
+      size_t sz = H5Tget_size(ft);
+      char *buf = malloc(sz + 1);
+      if (buf && (is_attr ? H5Aread(obj, ft, buf) : H5Dread(obj, ft, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf)) >= 0) {
+        buf[sz] = 0;
+        *text = buf;
+        rc = 0;
+      } else {
+        free(buf);
+      }
+    }
+  }
+  H5Tclose(ft);
   return rc;
 }
 
@@ -147,26 +184,13 @@ int sl_h5_read_attr_string(hid_t loc, const char *name, char *buf, size_t len, c
     H5Eclear2(H5E_DEFAULT);
     return sl_diag_set(d, SL_EBADINPUT, "%s: attribute %s is missing", file, where);
   }
-  hid_t ft = H5Aget_type(a);
+  char *text = NULL;
   int rc = 0;
-  if (ft < 0 || H5Tget_class(ft) != H5T_STRING || H5Tis_variable_str(ft) != 0) {
-    rc = sl_diag_set(d, SL_EBADINPUT, "%s: attribute %s is not a fixed-length string", file, where);
-  } else {
-    size_t sz = H5Tget_size(ft);
-    char *tmp = malloc(sz + 1);
-    hid_t mt = H5Tcopy(ft);
-    if (!tmp || mt < 0) {
-      rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading %s", file, where);
-    } else if (H5Aread(a, mt, tmp) < 0) {
-      rc = sl_h5_fail(d, SL_EBADINPUT, file, "cannot read attribute", where);
-    } else {
-      tmp[sz] = 0;
-      snprintf(buf, len, "%s", tmp);
-    }
-    if (mt >= 0) H5Tclose(mt);
-    free(tmp);
-  }
-  if (ft >= 0) H5Tclose(ft);
+  if (sl_h5_read_string(a, 1, &text) != 0)
+    rc = sl_h5_fail(d, SL_EBADINPUT, file, "cannot read the string attribute", where);
+  else
+    snprintf(buf, len, "%s", text);
+  free(text);
   H5Aclose(a);
   return rc;
 }

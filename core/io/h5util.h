@@ -25,11 +25,15 @@ int sl_h5_attr_double(hid_t loc, const char *name, double v, const char *file, c
 int sl_h5_attr_int64(hid_t loc, const char *name, int64_t v, const char *file, const char *obj, sl_diag *d);
 int sl_h5_attr_int32(hid_t loc, const char *name, int32_t v, const char *file, const char *obj, sl_diag *d);
 int sl_h5_attr_string(hid_t loc, const char *name, const char *s, const char *file, const char *obj, sl_diag *d);
-/* A scalar fixed-length string dataset (NULL-terminated, UTF-8). */
+/* A scalar string dataset (variable-length UTF-8). */
 int sl_h5_dataset_string(hid_t loc, const char *name, const char *s, const char *file, const char *obj, sl_diag *d);
 
 int sl_h5_read_attr_double(hid_t loc, const char *name, double *v, const char *file, const char *obj, sl_diag *d);
 int sl_h5_read_attr_int64(hid_t loc, const char *name, int64_t *v, const char *file, const char *obj, sl_diag *d);
+/* A string attribute (is_attr) or dataset, variable or fixed length, into a
+ * malloc'ed text; -1 when obj holds no string (the HDF5 error stack is left
+ * for sl_h5_fail). */
+int sl_h5_read_string(hid_t obj, int is_attr, char **text);
 /* Reads a string attribute into buf (truncated to len - 1). */
 int sl_h5_read_attr_string(hid_t loc, const char *name, char *buf, size_t len, const char *file, const char *obj,
                            sl_diag *d);
@@ -41,13 +45,8 @@ int sl_h5_open_read(const char *path, hid_t *file, sl_diag *d);
 int sl_h5_list(hid_t group, char ***names, int *n, const char *file, const char *obj, sl_diag *d);
 void sl_io_free_names(char **names, int n);
 
-/* The writer (output.c); checkpoint.c writes into the same file. */
-typedef struct sl_out_step {
-  int index;
-  double time;
-  char *xml; /* this step's <Grid> for the sidecar */
-} sl_out_step;
-
+/* The writer (output.c); checkpoint.c writes into the same file, sidecar.c
+ * the XDMF and CSV files beside it, policy.c decides what may be replaced. */
 typedef struct sl_out_field {
   char *name;
   sl_centring centring;
@@ -55,9 +54,18 @@ typedef struct sl_out_field {
   int32_t n;
 } sl_out_field;
 
+typedef struct sl_out_scalar {
+  char *name;
+  char unit[SL_OUTPUT_UNIT_MAX];
+  double value;
+} sl_out_scalar;
+
 struct sl_output {
-  char *path, *xmf_path, *xmf_tmp;
+  char *path;          /* the name the user gave: messages, the final name */
+  char *tmp_path;      /* written under this name until the first output time is complete */
+  char *xmf_path, *csv_path;
   const char *h5_name; /* base name of path, used inside the sidecar */
+  int committed;       /* renamed to path: the old result is gone */
   hid_t file;
   int have_mesh, dim, nodes_per_cell;
   int32_t n_vertices, n_cells;
@@ -67,11 +75,55 @@ struct sl_output {
   hid_t step_group;
   int n_fields, cap_fields; /* the fields of the open step */
   sl_out_field *fields;
-  int n_steps, cap_steps; /* completed steps, for the sidecar */
-  sl_out_step *steps;
-  int ck_current; /* slot of the last complete checkpoint, -1 for none */
+  int n_scalars, cap_scalars; /* the scalars of the open step */
+  sl_out_scalar *scalars;
+  long n_steps;    /* completed steps */
+  int ck_current;  /* slot of the last complete checkpoint, -1 for none */
   long n_datasets; /* fields written, over all steps */
   double bytes;    /* their values, as stored */
+  /* sidecar.c: the .xmf, rewritten whole only for its first two output
+   * times, then extended in place; the CSV of the scalars */
+  int xmf_fd;
+  long xmf_tail;    /* offset of the closing tags */
+  char *first_grid; /* the first output time's grid body, until the second */
+  double first_time;
+  int first_index;
+  int csv_fd;
+  int n_cols, cap_cols; /* scalar names of all output times, in order of appearance */
+  char **col_names;
+  char (*col_units)[SL_OUTPUT_UNIT_MAX];
+  long n_rows, cap_rows; /* one row per output time: time, then n_cols values (NaN: absent) */
+  double *rows;
+  int row_stride; /* of rows: 1 + n_cols when they were stored */
+  long csv_end;
 };
+
+/* output.c: the file takes its name (the first complete output time or
+ * checkpoint); the old sidecars go. */
+int sl_output_commit(sl_output *o, sl_diag *d);
+
+/* sidecar.c */
+/* The open step's grid body (Topology, Geometry, Attributes), NULL on no memory. */
+char *sl_sidecar_grid(const sl_output *o, int index);
+/* After a step is complete: the .xmf and the CSV brought up to date. */
+int sl_sidecar_step(sl_output *o, sl_diag *d);
+void sl_sidecar_free(sl_output *o);
+
+/* policy.c */
+/* Files sluice wrote: an HDF5 file with the root attribute format =
+ * "sluice-output ..." (or, older, /provenance@sluice_version), an .xmf
+ * naming itself written by sluice or pointing at its h5, a CSV whose header
+ * starts "time [s]". */
+int sl_io_is_sluice_h5(const char *path);
+/* OUT.h5 -> OUT.xmf, OUT_scalars.csv and the temporary OUT.h5.tmp, each
+ * malloc'ed; SL_ENOMEM (all NULL) on no memory. */
+int sl_io_output_names(const char *path, char **xmf, char **csv, char **tmp);
+
+/* space.c: SL_EFAILED with a message when the file system or the file size
+ * limit has no room for `bytes` more (what: "the mesh", "field 'phi'", ...). */
+int sl_io_space_check(const sl_output *o, double bytes, const char *what, sl_diag *d);
+
+/* units.c: the unit of a field or scalar known by name, "" if not known. */
+const char *sl_io_default_unit(const char *name);
 
 #endif

@@ -30,141 +30,83 @@ static char *dup_str(const char *s) {
   return c;
 }
 
-/* printf into a growing buffer (the sidecar text). */
-typedef struct sbuf {
-  char *s;
-  size_t len, cap;
-  int oom;
-} sbuf;
-
-#if defined(__GNUC__)
-__attribute__((format(printf, 2, 3)))
-#endif
-static void
-sb_printf(sbuf *b, const char *fmt, ...) {
-  if (b->oom) return;
-  for (;;) {
-    va_list ap;
-    va_start(ap, fmt);
-    size_t room = b->cap - b->len;
-    int k = vsnprintf(b->s ? b->s + b->len : NULL, b->s ? room : 0, fmt, ap);
-    va_end(ap);
-    if (k < 0) {
-      b->oom = 1;
-      return;
-    }
-    if ((size_t)k < room) {
-      b->len += (size_t)k;
-      return;
-    }
-    size_t cap = b->cap ? b->cap : 1024;
-    while (cap - b->len <= (size_t)k) cap *= 2;
-    char *s = realloc(b->s, cap);
-    if (!s) {
-      b->oom = 1;
-      return;
-    }
-    b->s = s, b->cap = cap;
-  }
-}
-
-/* XML text and attribute escaping (names are checked, but the file name is
- * the user's). */
-static void sb_xml(sbuf *b, const char *s) {
-  for (; *s; ++s) {
-    switch (*s) {
-      case '&': sb_printf(b, "&amp;"); break;
-      case '<': sb_printf(b, "&lt;"); break;
-      case '>': sb_printf(b, "&gt;"); break;
-      case '"': sb_printf(b, "&quot;"); break;
-      case '\'': sb_printf(b, "&apos;"); break;
-      default: sb_printf(b, "%c", *s);
-    }
-  }
-}
-
 static void free_fields(sl_output *o) {
   for (int i = 0; i < o->n_fields; ++i) free(o->fields[i].name);
   o->n_fields = 0;
 }
 
+static void free_scalars(sl_output *o) {
+  for (int i = 0; i < o->n_scalars; ++i) free(o->scalars[i].name);
+  o->n_scalars = 0;
+}
+
 static void free_output(sl_output *o) {
   free_fields(o);
   free(o->fields);
-  for (int i = 0; i < o->n_steps; ++i) free(o->steps[i].xml);
-  free(o->steps);
+  free_scalars(o);
+  free(o->scalars);
+  sl_sidecar_free(o);
   free(o->path);
+  free(o->tmp_path);
   free(o->xmf_path);
-  free(o->xmf_tmp);
+  free(o->csv_path);
   free(o);
 }
 
-int sl_output_open(sl_output **out, const char *path, sl_diag *d) {
+int sl_output_open(sl_output **out, const char *path, sl_diag *d) { return sl_output_open_opts(out, path, NULL, d); }
+
+int sl_output_open_opts(sl_output **out, const char *path, const sl_output_opts *opts, sl_diag *d) {
   *out = NULL;
   sl_h5_quiet();
-  if (!path || !*path) return sl_diag_set(d, SL_EBADINPUT, "output file name is empty");
-
-  /* A missing directory is the common mistake: say so plainly. */
-  char *tmp = dup_str(path);
-  if (!tmp) return sl_diag_set(d, SL_ENOMEM, "out of memory");
-  const char *dir = dirname(tmp);
-  struct stat sb;
-  int rc = 0;
-  if (stat(dir, &sb) != 0)
-    rc = sl_diag_set(d, SL_EBADINPUT, "cannot create output file '%s': directory '%s' %s", path, dir,
-                     errno == ENOENT ? "does not exist" : strerror(errno));
-  else if (!S_ISDIR(sb.st_mode))
-    rc = sl_diag_set(d, SL_EBADINPUT, "cannot create output file '%s': '%s' is not a directory", path, dir);
-  else if (access(dir, W_OK | X_OK) != 0)
-    rc = sl_diag_set(d, SL_EBADINPUT, "cannot create output file '%s': directory '%s' is not writable", path, dir);
-  free(tmp);
+  int rc = sl_output_check_path(path, opts, d);
   if (rc) return rc;
-
   sl_output *o = calloc(1, sizeof *o);
   if (!o) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   o->file = o->step_group = -1;
   o->ck_current = -1;
+  o->xmf_fd = o->csv_fd = -1;
   o->path = dup_str(path);
-  /* OUT.h5 -> OUT.xmf next to it: strip the extension of the base name */
-  size_t len = strlen(path);
-  const char *base = strrchr(path, '/');
-  base = base ? base + 1 : path;
-  const char *dot = strrchr(base, '.');
-  size_t stem = dot && dot != base ? (size_t)(dot - path) : len;
-  o->xmf_path = malloc(stem + 5);
-  o->xmf_tmp = malloc(stem + 9);
-  if (!o->path || !o->xmf_path || !o->xmf_tmp) {
+  if (!o->path || sl_io_output_names(path, &o->xmf_path, &o->csv_path, &o->tmp_path)) {
     free_output(o);
     return sl_diag_set(d, SL_ENOMEM, "out of memory");
   }
-  memcpy(o->xmf_path, path, stem);
-  memcpy(o->xmf_path + stem, ".xmf", 5);
-  memcpy(o->xmf_tmp, path, stem);
-  memcpy(o->xmf_tmp + stem, ".xmf.tmp", 9);
-  o->h5_name = o->path + (base - path);
-  if (strcmp(o->xmf_path, path) == 0 || strchr(o->h5_name, ':')) {
-    rc = sl_diag_set(d, SL_EBADINPUT, "output file '%s': %s", path,
-                     strchr(o->h5_name, ':')
-                         ? "the name must not contain ':' (XDMF uses it to separate file and dataset)"
-                         : "an .xmf name is reserved for the sidecar; use .h5");
+  const char *base = strrchr(o->path, '/');
+  o->h5_name = base ? base + 1 : o->path;
+  /* a temporary of a run that was killed (sluice's own, checked above) */
+  if (unlink(o->tmp_path) != 0 && errno != ENOENT) {
+    rc = sl_diag_set(d, SL_EBADINPUT, "cannot remove the stale temporary '%s': %s", o->tmp_path, strerror(errno));
     free_output(o);
     return rc;
   }
-
-  o->file = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  o->file = H5Fcreate(o->tmp_path, H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT);
   if (o->file < 0) {
-    rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot create", "the output file");
+    rc = sl_h5_fail(d, SL_EBADINPUT, o->tmp_path, "cannot create", "the output file");
     free_output(o);
     return rc;
   }
-  /* A sidecar from an earlier run would point into the truncated file. */
-  if (unlink(o->xmf_path) != 0 && errno != ENOENT) {
-    rc = sl_diag_set(d, SL_EBADINPUT, "cannot remove the old sidecar '%s': %s", o->xmf_path, strerror(errno));
+  rc = sl_h5_attr_string(o->file, "format", "sluice-output 1", o->path, "/", d);
+  if (rc) {
     H5Fclose(o->file);
+    unlink(o->tmp_path);
     free_output(o);
     return rc;
   }
   *out = o;
+  return 0;
+}
+
+/* The first output time is complete: the new file takes the name. */
+int sl_output_commit(sl_output *o, sl_diag *d) {
+  if (o->committed) return 0;
+  if (H5Fflush(o->file, H5F_SCOPE_GLOBAL) < 0) return sl_h5_fail(d, SL_EFAILED, o->path, "cannot flush", "the file");
+  if (rename(o->tmp_path, o->path) != 0)
+    return sl_diag_set(d, SL_EFAILED, "cannot rename '%s' to '%s': %s", o->tmp_path, o->path, strerror(errno));
+  o->committed = 1;
+  /* the old sidecars would point into the new file */
+  if (unlink(o->xmf_path) != 0 && errno != ENOENT)
+    return sl_diag_set(d, SL_EFAILED, "cannot remove the old sidecar '%s': %s", o->xmf_path, strerror(errno));
+  if (unlink(o->csv_path) != 0 && errno != ENOENT)
+    return sl_diag_set(d, SL_EFAILED, "cannot remove the old '%s': %s", o->csv_path, strerror(errno));
   return 0;
 }
 
@@ -207,6 +149,43 @@ done:
   return rc;
 }
 
+/* /mesh/cell_centres: the centroid of the polygon through each cell's
+ * corner nodes (the first 2, 3 or 4 of its nodes), from the shoelace
+ * formula; the midpoint in 1-D. Where cell fields are given. */
+static int cell_centres(const sl_output *o, int dim, const double *coords, int32_t n_cells, int nodes_per_cell,
+                        const int32_t *cells, const char *topology, sl_diag *d) {
+  int corners = strncmp(topology, "Triangle", 8) == 0 ? 3 : strncmp(topology, "Quadrilateral", 13) == 0 ? 4 : 2;
+  double *c = calloc((size_t)n_cells * 3, sizeof *c);
+  if (!c) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory for the cell centres", o->path);
+  for (int32_t e = 0; e < n_cells; ++e) {
+    const int32_t *v = cells + (size_t)e * nodes_per_cell;
+    double mean[3] = {0, 0, 0};
+    for (int k = 0; k < corners; ++k)
+      for (int j = 0; j < dim; ++j) mean[j] += coords[(size_t)v[k] * dim + j] / corners;
+    double *out = c + 3 * (size_t)e;
+    for (int j = 0; j < dim; ++j) out[j] = mean[j];
+    if (dim == 2 && corners >= 3) {
+      double a = 0, cx = 0, cy = 0;
+      for (int k = 0; k < corners; ++k) {
+        const double *p = coords + 2 * (size_t)v[k], *q = coords + 2 * (size_t)v[(k + 1) % corners];
+        /* relative to the mean: no cancellation far from the origin */
+        double px = p[0] - mean[0], py = p[1] - mean[1], qx = q[0] - mean[0], qy = q[1] - mean[1];
+        double w = px * qy - qx * py;
+        a += w, cx += (px + qx) * w, cy += (py + qy) * w;
+      }
+      if (a != 0.0) out[0] = mean[0] + cx / (3.0 * a), out[1] = mean[1] + cy / (3.0 * a);
+    }
+  }
+  hsize_t dims[2] = {(hsize_t)n_cells, 3};
+  hid_t ds = -1;
+  int rc = write_array(o, o->file, "/mesh/cell_centres", "/mesh/cell_centres", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 2,
+                       dims, c, &ds, d);
+  free(c);
+  if (!rc) rc = sl_h5_attr_string(ds, "units", "m", o->path, "/mesh/cell_centres", d);
+  if (ds >= 0 && H5Dclose(ds) < 0 && !rc) rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot close", "/mesh/cell_centres");
+  return rc;
+}
+
 int sl_output_write_mesh(sl_output *o, int dim, int32_t n_vertices, const double *coords, int32_t n_cells,
                          int nodes_per_cell, const int32_t *cells, const char *topology, sl_diag *d) {
   if (o->have_mesh) return sl_diag_set(d, SL_EBADINPUT, "%s: the mesh is already written", o->path);
@@ -237,18 +216,26 @@ int sl_output_write_mesh(sl_output *o, int dim, int32_t n_vertices, const double
                          (long long)(k / nodes_per_cell), (int)cells[k], (int)n_vertices);
 
   /* ParaView wants XYZ: pad 1-D and 2-D coordinates with zeros. */
+  /* coordinates, cell centres, topology */
+  int src = sl_io_space_check(o, 24.0 * n_vertices + (24.0 + 4.0 * nodes_per_cell) * n_cells, "the mesh", d);
+  if (src) return src;
   double *xyz = malloc((size_t)n_vertices * 3 * sizeof *xyz);
   if (!xyz) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory for the mesh", o->path);
   for (int32_t v = 0; v < n_vertices; ++v)
     for (int c = 0; c < 3; ++c) xyz[3 * (size_t)v + c] = c < dim ? coords[(size_t)v * dim + c] : 0.0;
   hsize_t dc[2] = {(hsize_t)n_vertices, 3}, dt[2] = {(hsize_t)n_cells, (hsize_t)nodes_per_cell};
   hid_t top = -1;
+  hid_t cds = -1;
   int rc = write_array(o, o->file, "/mesh/coordinates", "/mesh/coordinates", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 2, dc,
-                       xyz, NULL, d);
+                       xyz, &cds, d);
   free(xyz);
+  if (!rc) rc = sl_h5_attr_string(cds, "units", "m", o->path, "/mesh/coordinates", d);
+  if (cds >= 0 && H5Dclose(cds) < 0 && !rc)
+    rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot close", "/mesh/coordinates");
   if (!rc)
     rc = write_array(o, o->file, "/mesh/topology", "/mesh/topology", H5T_STD_I32LE, H5T_NATIVE_INT32, 2, dt, cells,
                      &top, d);
+  if (!rc) rc = cell_centres(o, dim, coords, n_cells, nodes_per_cell, cells, topology, d);
   if (!rc) rc = sl_h5_attr_string(top, "topology_type", topology, o->path, "/mesh/topology", d);
   if (!rc) rc = sl_h5_attr_int32(top, "dim", dim, o->path, "/mesh/topology", d);
   if (top >= 0 && H5Dclose(top) < 0 && !rc) rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot close", "/mesh/topology");
@@ -270,7 +257,14 @@ int sl_output_begin_step(sl_output *o, double t, sl_diag *d) {
   if (t != t) return sl_diag_set(d, SL_EBADINPUT, "%s: output time is NaN", o->path);
   char name[32];
   snprintf(name, sizeof name, "/step_%06d", o->next_index);
-  hid_t g = H5Gcreate2(o->file, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  /* the scalars' attributes keep the order they were written in (readers list them so) */
+  hid_t gcpl = H5Pcreate(H5P_GROUP_CREATE);
+  if (gcpl < 0 || H5Pset_attr_creation_order(gcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED) < 0) {
+    if (gcpl >= 0) H5Pclose(gcpl);
+    return sl_h5_fail(d, SL_EFAILED, o->path, "cannot prepare group", name);
+  }
+  hid_t g = H5Gcreate2(o->file, name, H5P_DEFAULT, gcpl, H5P_DEFAULT);
+  H5Pclose(gcpl);
   if (g < 0) return sl_h5_fail(d, SL_EFAILED, o->path, "cannot create group", name);
   int rc = sl_h5_attr_double(g, "time", t, o->path, name, d);
   if (!rc) rc = sl_h5_attr_int32(g, "index", o->next_index, o->path, name, d);
@@ -287,6 +281,12 @@ int sl_output_begin_step(sl_output *o, double t, sl_diag *d) {
 
 int sl_output_write_field(sl_output *o, const char *name, sl_centring centring, int components, const double *values,
                           sl_diag *d) {
+  return sl_output_write_field_unit(o, name, sl_io_default_unit(name), centring, components, values, d);
+}
+
+int sl_output_write_field_unit(sl_output *o, const char *name, const char *unit, sl_centring centring,
+                               int components, const double *values, sl_diag *d) {
+  if (!unit) unit = "";
   if (!o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: field '%s' written outside a step", o->path, name);
   int rc = sl_io_check_name(name, 200, "field", d);
   if (rc) return sl_diag_prefix(d, rc, "%s", o->path);
@@ -316,6 +316,9 @@ int sl_output_write_field(sl_output *o, const char *name, sl_centring centring, 
                          o->path, name, o->step_time, values[i], (long long)(i / (size_t)components),
                          (int)(i % (size_t)components));
 
+  char what[300];
+  snprintf(what, sizeof what, "field '%s'", name);
+  if ((rc = sl_io_space_check(o, (double)n * stored * sizeof(double), what, d))) return rc;
   const double *buf = values;
   double *pad = NULL;
   if (components == 2) { /* ParaView's vectors have 3 components */
@@ -335,6 +338,7 @@ int sl_output_write_field(sl_output *o, const char *name, sl_centring centring, 
   free(pad);
   if (!rc) rc = sl_h5_attr_string(ds, "centring", centring == SL_CENTRE_NODE ? "node" : "cell", o->path, full, d);
   if (!rc) rc = sl_h5_attr_int32(ds, "components", stored, o->path, full, d);
+  if (!rc) rc = sl_h5_attr_string(ds, "units", unit, o->path, full, d);
   if (ds >= 0 && H5Dclose(ds) < 0 && !rc) rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot close dataset", full);
   if (rc) return rc;
   sl_out_field *f = &o->fields[o->n_fields];
@@ -350,71 +354,6 @@ int sl_output_write_field(sl_output *o, const char *name, sl_centring centring, 
 
 void sl_output_stats(const sl_output *o, long *times, long *datasets, double *bytes) {
   *times = o->n_steps, *datasets = o->n_datasets, *bytes = o->bytes;
-}
-
-/* One <Grid> of the temporal collection. The mesh DataItems are repeated in
- * every step: they only reference the datasets. */
-static char *render_step(const sl_output *o, int index, double t) {
-  sbuf b = {0};
-  sb_printf(&b, "   <Grid Name=\"step_%06d\" GridType=\"Uniform\">\n", index);
-  sb_printf(&b, "    <Time Value=\"%.17g\"/>\n", t);
-  sb_printf(&b, "    <Topology TopologyType=\"%s\" NumberOfElements=\"%d\"", o->topology, (int)o->n_cells);
-  if (strcmp(o->topology, "Polyline") == 0) sb_printf(&b, " NodesPerElement=\"2\"");
-  sb_printf(&b, ">\n     <DataItem Dimensions=\"%d %d\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">",
-            (int)o->n_cells, o->nodes_per_cell);
-  sb_xml(&b, o->h5_name);
-  sb_printf(&b, ":/mesh/topology</DataItem>\n    </Topology>\n");
-  sb_printf(&b, "    <Geometry GeometryType=\"XYZ\">\n");
-  sb_printf(&b, "     <DataItem Dimensions=\"%d 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">",
-            (int)o->n_vertices);
-  sb_xml(&b, o->h5_name);
-  sb_printf(&b, ":/mesh/coordinates</DataItem>\n    </Geometry>\n");
-  for (int i = 0; i < o->n_fields; ++i) {
-    const sl_out_field *f = &o->fields[i];
-    sb_printf(&b, "    <Attribute Name=\"");
-    sb_xml(&b, f->name);
-    sb_printf(&b, "\" AttributeType=\"%s\" Center=\"%s\">\n", f->components == 1 ? "Scalar" : "Vector",
-              f->centring == SL_CENTRE_NODE ? "Node" : "Cell");
-    if (f->components == 1)
-      sb_printf(&b, "     <DataItem Dimensions=\"%d\"", (int)f->n);
-    else
-      sb_printf(&b, "     <DataItem Dimensions=\"%d 3\"", (int)f->n);
-    sb_printf(&b, " NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">");
-    sb_xml(&b, o->h5_name);
-    sb_printf(&b, ":/step_%06d/", index);
-    sb_xml(&b, f->name);
-    sb_printf(&b, "</DataItem>\n    </Attribute>\n");
-  }
-  sb_printf(&b, "   </Grid>\n");
-  if (b.oom) {
-    free(b.s);
-    return NULL;
-  }
-  return b.s;
-}
-
-/* Temporary file + rename: a reader never sees a half-written sidecar. */
-static int write_sidecar(const sl_output *o, sl_diag *d) {
-  FILE *f = fopen(o->xmf_tmp, "w");
-  if (!f) return sl_diag_set(d, SL_EFAILED, "cannot write the sidecar '%s': %s", o->xmf_tmp, strerror(errno));
-  int bad = fputs(
-                "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
-                "  <Grid Name=\"solution\" GridType=\"Collection\" CollectionType=\"Temporal\">\n",
-                f) < 0;
-  for (int i = 0; i < o->n_steps && !bad; ++i) bad = fputs(o->steps[i].xml, f) < 0;
-  if (!bad) bad = fputs("  </Grid>\n </Domain>\n</Xdmf>\n", f) < 0;
-  int err = errno;
-  if (fclose(f) != 0 && !bad) bad = 1, err = errno;
-  if (bad) {
-    unlink(o->xmf_tmp);
-    return sl_diag_set(d, SL_EFAILED, "cannot write the sidecar '%s': %s", o->xmf_tmp, strerror(err));
-  }
-  if (rename(o->xmf_tmp, o->xmf_path) != 0) {
-    err = errno;
-    unlink(o->xmf_tmp);
-    return sl_diag_set(d, SL_EFAILED, "cannot rename '%s' to '%s': %s", o->xmf_tmp, o->xmf_path, strerror(err));
-  }
-  return 0;
 }
 
 int sl_output_end_step(sl_output *o, sl_diag *d) {
@@ -434,20 +373,12 @@ int sl_output_end_step(sl_output *o, sl_diag *d) {
   o->step_group = -1;
   if (st < 0) return sl_h5_fail(d, SL_EFAILED, o->path, "cannot close group", name);
   if (H5Fflush(o->file, H5F_SCOPE_GLOBAL) < 0) return sl_h5_fail(d, SL_EFAILED, o->path, "cannot flush after", name);
-  if (o->n_steps == o->cap_steps) {
-    int cap = o->cap_steps ? 2 * o->cap_steps : 16;
-    sl_out_step *s = realloc(o->steps, (size_t)cap * sizeof *s);
-    if (!s) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", o->path);
-    o->steps = s, o->cap_steps = cap;
-  }
-  char *xml = render_step(o, index, o->step_time);
-  if (!xml) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", o->path);
-  o->steps[o->n_steps].index = index;
-  o->steps[o->n_steps].time = o->step_time;
-  o->steps[o->n_steps].xml = xml;
+  if ((rc = sl_output_commit(o, d))) return rc;
   ++o->n_steps;
+  rc = sl_sidecar_step(o, d);
   free_fields(o);
-  return write_sidecar(o, d);
+  free_scalars(o);
+  return rc;
 }
 
 int sl_output_write_provenance(sl_output *o, const sl_provenance *p, sl_diag *d) {
@@ -458,6 +389,10 @@ int sl_output_write_provenance(sl_output *o, const sl_provenance *p, sl_diag *d)
   if (ex < 0) return sl_h5_fail(d, SL_EFAILED, path, "cannot query", "/provenance");
   if (ex > 0 && H5Ldelete(o->file, "provenance", H5P_DEFAULT) < 0)
     return sl_h5_fail(d, SL_EFAILED, path, "cannot replace", "/provenance");
+  double text = (double)strlen(p->ini_text ? p->ini_text : "");
+  for (int i = 0; i < p->n_closures; ++i) text += 1024.0 + strlen(p->closures[i].parameters ? p->closures[i].parameters : "");
+  int src = sl_io_space_check(o, text, "the provenance", d);
+  if (src) return src;
   hid_t g = H5Gcreate2(o->file, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), cg = -1;
   if (g < 0) return sl_h5_fail(d, SL_EFAILED, path, "cannot create group", "/provenance");
   int rc = sl_h5_attr_string(g, "sluice_version", p->sluice_version, path, "/provenance", d);
@@ -490,6 +425,39 @@ int sl_output_write_provenance(sl_output *o, const sl_provenance *p, sl_diag *d)
   return rc;
 }
 
+/* Closes every object of the file still open, then the file: after a
+ * failed write a dataset whose close failed stays open. (A file whose close
+ * failed cannot be closed again: HDF5 1.10 crashes trying, also in its exit
+ * handler; space.c keeps writes from failing, main.c keeps the handler from
+ * running.) Returns H5Fclose's status. */
+static herr_t close_file(hid_t file) {
+  herr_t st = 0;
+  for (int pass = 0; pass < 1; ++pass) {
+    ssize_t n = H5Fget_obj_count(file, H5F_OBJ_DATASET | H5F_OBJ_GROUP | H5F_OBJ_DATATYPE | H5F_OBJ_ATTR |
+                                           H5F_OBJ_LOCAL);
+    if (n > 0) {
+      hid_t *ids = malloc((size_t)n * sizeof *ids);
+      if (ids) {
+        ssize_t k = H5Fget_obj_ids(file, H5F_OBJ_DATASET | H5F_OBJ_GROUP | H5F_OBJ_DATATYPE | H5F_OBJ_ATTR |
+                                             H5F_OBJ_LOCAL,
+                                   (size_t)n, ids);
+        for (ssize_t i = 0; i < k; ++i) {
+          H5I_type_t t = H5Iget_type(ids[i]);
+          if (t == H5I_DATASET) H5Dclose(ids[i]);
+          else if (t == H5I_GROUP) H5Gclose(ids[i]);
+          else if (t == H5I_DATATYPE) H5Tclose(ids[i]);
+          else if (t == H5I_ATTR) H5Aclose(ids[i]);
+        }
+        free(ids);
+      }
+    }
+    st = H5Fclose(file);
+    break;
+  }
+  H5Eclear2(H5E_DEFAULT);
+  return st;
+}
+
 int sl_output_close(sl_output *o, sl_diag *d) {
   if (!o) return 0;
   int rc = 0;
@@ -501,18 +469,70 @@ int sl_output_close(sl_output *o, sl_diag *d) {
   if (o->file >= 0) {
     if (H5Fflush(o->file, H5F_SCOPE_GLOBAL) < 0 && !rc)
       rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot flush", "the file");
-    if (H5Fclose(o->file) < 0 && !rc) rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot close", "the file");
+    if (!o->committed && !rc) rc = sl_output_commit(o, d);
+    /* closed even when a flush failed (a full disk): HDF5 must not find the
+     * file still open when the process exits */
+    if (close_file(o->file) < 0 && !rc) rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot close", "the file");
+    o->file = -1;
   }
-  if (!rc && o->n_steps > 0) rc = write_sidecar(o, d);
+  if (!o->committed) unlink(o->tmp_path);
   free_output(o);
   return rc;
 }
 
-int sl_output_write_scalar(sl_output *o, const char *name, double value, sl_diag *d) {
+int sl_output_abort(sl_output *o) {
+  if (!o) return 0;
+  if (o->in_step) H5Gclose(o->step_group);
+  o->in_step = 0;
+  if (o->file >= 0) {
+    if (o->committed) H5Fflush(o->file, H5F_SCOPE_GLOBAL);
+    close_file(o->file);
+    o->file = -1;
+  }
+  int kept = o->committed;
+  if (!kept) unlink(o->tmp_path); /* the earlier result stays */
+  free_output(o);
+  return kept;
+}
+
+static int add_scalar(sl_output *o, const char *name, const char *unit, double value, sl_diag *d) {
   if (!o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: scalar '%s' written outside a step", o->path, name);
   int rc = sl_io_check_name(name, 200, "scalar", d);
   if (rc) return sl_diag_prefix(d, rc, "%s", o->path);
+  if (strcmp(name, "time") == 0 || strcmp(name, "index") == 0 || strcmp(name, "complete") == 0)
+    return sl_diag_set(d, SL_EBADINPUT, "%s: '%s' is reserved and cannot name a scalar", o->path, name);
+  if (!unit && (strcmp(name, "solids_inventory") == 0 || strcmp(name, "inventory") == 0))
+    /* the integral over the mesh: per unit cross-section in 1-D, per unit
+     * depth in 2-D (axisymmetric models pass "m^3/rad") */
+    unit = o->dim == 1 ? "m" : o->dim == 2 ? "m^2" : "m^3";
+  if (!unit) unit = sl_io_default_unit(name);
+  if (strlen(unit) >= SL_OUTPUT_UNIT_MAX)
+    return sl_diag_set(d, SL_EBADINPUT, "%s: unit '%s' of scalar '%s' is longer than %d", o->path, unit, name,
+                       SL_OUTPUT_UNIT_MAX - 1);
+  for (int i = 0; i < o->n_scalars; ++i)
+    if (strcmp(o->scalars[i].name, name) == 0)
+      return sl_diag_set(d, SL_EBADINPUT, "%s: scalar '%s' written twice in step %d", o->path, name, o->next_index);
+  if (o->n_scalars == o->cap_scalars) {
+    int cap = o->cap_scalars ? 2 * o->cap_scalars : 8;
+    sl_out_scalar *v = realloc(o->scalars, (size_t)cap * sizeof *v);
+    if (!v) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", o->path);
+    o->scalars = v, o->cap_scalars = cap;
+  }
   char group[32];
   snprintf(group, sizeof group, "/step_%06d", o->next_index);
-  return sl_h5_attr_double(o->step_group, name, value, o->path, group, d);
+  if ((rc = sl_h5_attr_double(o->step_group, name, value, o->path, group, d))) return rc;
+  sl_out_scalar *sc = &o->scalars[o->n_scalars];
+  if (!(sc->name = dup_str(name))) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", o->path);
+  snprintf(sc->unit, sizeof sc->unit, "%s", unit);
+  sc->value = value;
+  ++o->n_scalars;
+  return 0;
+}
+
+int sl_output_write_scalar(sl_output *o, const char *name, double value, sl_diag *d) {
+  return add_scalar(o, name, NULL, value, d);
+}
+
+int sl_output_write_scalar_unit(sl_output *o, const char *name, const char *unit, double value, sl_diag *d) {
+  return add_scalar(o, name, unit ? unit : "", value, d);
 }

@@ -319,24 +319,10 @@ int sl_output_read_text(const char *path, const char *what, char **text, sl_diag
   } else {
     type = H5Dget_type(o);
   }
-  if (!rc && (type < 0 || H5Tget_class(type) != H5T_STRING || H5Tis_variable_str(type) != 0))
-    rc = sl_diag_set(d, SL_EBADINPUT, "%s: %s is not a fixed-length string", path, what);
-  if (!rc) {
-    size_t sz = H5Tget_size(type);
-    char *buf = malloc(sz + 1);
-    if (!buf) {
-      rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading %s", path, what);
-    } else {
-      herr_t st = at ? H5Aread(a, type, buf) : H5Dread(o, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf);
-      if (st < 0) {
-        rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot read", what);
-        free(buf);
-      } else {
-        buf[sz] = 0;
-        *text = buf;
-      }
-    }
-  }
+  if (!rc && (type < 0 || H5Tget_class(type) != H5T_STRING))
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: %s is not a string", path, what);
+  if (!rc && sl_h5_read_string(at ? a : o, at != NULL, text) != 0)
+    rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot read", what);
   if (type >= 0) H5Tclose(type);
   if (a >= 0) H5Aclose(a);
   H5Oclose(o);
@@ -461,4 +447,108 @@ int sl_output_read_scalar(const char *path, const char *name, double t, double *
   free(s);
   H5Fclose(f);
   return rc;
+}
+
+/* ---- the scalars of every output time (sample --scalars) ---- */
+
+typedef struct scalar_walk {
+  sl_output_scalars *s;
+  int oom;
+} scalar_walk;
+
+static int scalar_column(sl_output_scalars *s, const char *name) {
+  for (int c = 0; c < s->n_names; ++c)
+    if (strcmp(s->names[c], name) == 0) return c;
+  return -1;
+}
+
+static herr_t scalar_name_cb(hid_t loc, const char *name, const H5A_info_t *info, void *data) {
+  (void)loc, (void)info;
+  scalar_walk *w = data;
+  sl_output_scalars *s = w->s;
+  if (strcmp(name, "time") == 0 || strcmp(name, "index") == 0 || strcmp(name, "complete") == 0) return 0;
+  if (scalar_column(s, name) >= 0) return 0;
+  char **n = realloc(s->names, ((size_t)s->n_names + 1) * sizeof *n);
+  if (!n) return (w->oom = 1), -1;
+  s->names = n;
+  char(*u)[SL_OUTPUT_UNIT_MAX] = realloc(s->units, ((size_t)s->n_names + 1) * sizeof *u);
+  if (!u) return (w->oom = 1), -1;
+  s->units = u;
+  size_t len = strlen(name) + 1;
+  if (!(s->names[s->n_names] = malloc(len))) return (w->oom = 1), -1;
+  memcpy(s->names[s->n_names], name, len);
+  s->units[s->n_names][0] = 0;
+  ++s->n_names;
+  return 0;
+}
+
+int sl_output_read_scalars(const char *path, sl_output_scalars *s, sl_diag *d) {
+  memset(s, 0, sizeof *s);
+  hid_t f;
+  int rc = sl_h5_open_read(path, &f, d);
+  if (rc) return rc;
+  step_entry *st = NULL;
+  int n = 0;
+  if ((rc = list_steps(path, f, &st, &n, d))) {
+    H5Fclose(f);
+    return rc;
+  }
+  scalar_walk w = {s, 0};
+  for (int i = 0; !rc && i < n; ++i) { /* the names, in order of first appearance */
+    hid_t g = H5Gopen2(f, st[i].name, H5P_DEFAULT);
+    hsize_t idx = 0;
+    if (g < 0 || H5Aiterate2(g, H5_INDEX_CRT_ORDER, H5_ITER_INC, &idx, scalar_name_cb, &w) < 0) {
+      /* without creation order tracked: name order */
+      idx = 0;
+      if (w.oom || g < 0 || H5Aiterate2(g, H5_INDEX_NAME, H5_ITER_INC, &idx, scalar_name_cb, &w) < 0)
+        rc = w.oom ? sl_diag_set(d, SL_ENOMEM, "%s: out of memory", path)
+                   : sl_h5_fail(d, SL_EBADINPUT, path, "cannot list the attributes of", st[i].name);
+    }
+    H5Eclear2(H5E_DEFAULT);
+    if (g >= 0) H5Gclose(g);
+  }
+  if (!rc && n > 0) {
+    s->n_times = n;
+    s->times = malloc((size_t)n * sizeof *s->times);
+    s->values = malloc((size_t)n * (size_t)(s->n_names > 0 ? s->n_names : 1) * sizeof *s->values);
+    if (!s->times || !s->values) rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory", path);
+  }
+  for (int i = 0; !rc && i < n; ++i) {
+    s->times[i] = st[i].time;
+    hid_t g = H5Gopen2(f, st[i].name, H5P_DEFAULT);
+    if (g < 0) {
+      rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot open group", st[i].name);
+      break;
+    }
+    for (int c = 0; !rc && c < s->n_names; ++c) {
+      double *v = &s->values[(size_t)i * s->n_names + c];
+      *v = NAN;
+      if (H5Aexists(g, s->names[c]) > 0) rc = sl_h5_read_attr_double(g, s->names[c], v, path, st[i].name, d);
+    }
+    H5Gclose(g);
+  }
+  /* units: /scalar_units (files before it have none) */
+  if (!rc && H5Lexists(f, "scalar_units", H5P_DEFAULT) > 0) {
+    hid_t g = H5Gopen2(f, "scalar_units", H5P_DEFAULT);
+    for (int c = 0; g >= 0 && c < s->n_names; ++c)
+      if (H5Aexists(g, s->names[c]) > 0 &&
+          sl_h5_read_attr_string(g, s->names[c], s->units[c], SL_OUTPUT_UNIT_MAX, path, "/scalar_units", d))
+        s->units[c][0] = 0;
+    if (g >= 0) H5Gclose(g);
+  }
+  H5Eclear2(H5E_DEFAULT);
+  free(st);
+  H5Fclose(f);
+  if (rc) sl_output_scalars_free(s);
+  return rc;
+}
+
+void sl_output_scalars_free(sl_output_scalars *s) {
+  if (!s) return;
+  for (int c = 0; c < s->n_names; ++c) free(s->names[c]);
+  free(s->names);
+  free(s->units);
+  free(s->times);
+  free(s->values);
+  memset(s, 0, sizeof *s);
 }

@@ -1,9 +1,12 @@
 /* A run of a scene (run.h). */
 #include "core/models/run.h"
 
+#include <ctype.h>
+#include <stdio.h>
 #include <string.h>
 #include <time.h>
 
+#include "core/scene/restart.h"
 #include "core/time/loop.h"
 
 static double cpu(void) {
@@ -24,37 +27,119 @@ int sl_model_scene(sl_ini *ini, const sl_registry *reg, int create_closures, int
   return sl_scene_build(ini, (*entry)->schema, &so, sc, d);
 }
 
+/* Everything a run does before it opens a file: the scene, the model's set-up, the loop, a restart's
+ * checkpoint read, checked against the scene and restored. `sluice run --check` runs exactly this. */
+typedef struct prepared {
+  const sl_model_entry *entry;
+  sl_scene *sc;
+  void *self;
+  sl_model_info info;
+  sl_time_loop loop;
+  int have_loop, have_ck;
+  sl_checkpoint ck;
+} prepared;
+
+static void prepared_free(prepared *p) {
+  if (p->have_ck) sl_checkpoint_free(&p->ck);
+  if (p->have_loop) sl_time_loop_free(&p->loop);
+  if (p->self) p->entry->ops->destroy(p->self);
+  sl_scene_free(p->sc);
+  memset(p, 0, sizeof *p);
+}
+
+/* A model's bad-input message that names a section or key ("[boundary.top] velocity: ...", "[closure.drag]: ...")
+ * but not where it is gets the file:line of that key, else of the section (the last one given). */
+static int locate(const sl_ini *ini, int rc, sl_diag *d) {
+  if (rc != SL_EBADINPUT || d->msg[0] != '[') return rc;
+  const char *close = strchr(d->msg, ']');
+  if (!close || close - d->msg > 200) return rc;
+  char section[256], key[128] = "";
+  memcpy(section, d->msg + 1, (size_t)(close - d->msg - 1));
+  section[close - d->msg - 1] = '\0';
+  const char *k = close + 1;
+  if (*k == ' ') {
+    size_t n = 0;
+    for (++k; (isalnum((unsigned char)k[n]) || k[n] == '_') && n + 1 < sizeof key; ++n) key[n] = k[n];
+    key[n] = '\0';
+  }
+  const char *file = NULL;
+  int line = 0;
+  for (int i = 0; i < ini->n_sections; ++i) {
+    const sl_ini_section *sec = &ini->sections[i];
+    if (strcmp(sec->name, section) != 0) continue;
+    if (!key[0] || !file) file = sec->file, line = sec->line;
+    for (int e = 0; e < sec->n_entries && key[0]; ++e)
+      if (strcmp(sec->entries[e].key, key) == 0) file = sec->entries[e].file, line = sec->entries[e].line;
+  }
+  if (!file) return rc;
+  char msg[sizeof d->msg];
+  memcpy(msg, d->msg, sizeof msg);
+  return sl_diag_set(d, rc, "%s:%d: %.1900s", file, line, msg);
+}
+
+static int prepare(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, prepared *p, sl_diag *d) {
+  memset(p, 0, sizeof *p);
+  int rc = sl_model_scene(ini, reg, 1, 1, &p->entry, &p->sc, d);
+  const sl_model_ops *ops = p->entry ? p->entry->ops : NULL;
+  if (!rc && o)
+    p->sc->hooks = (sl_run_hooks){.nonlinear = o->nonlinear, .user = o->nonlinear_user, .interrupt = o->interrupt};
+  if (!rc) rc = locate(ini, ops->setup(&p->self, p->sc, &p->info, d), d);
+  if (!rc && !(rc = sl_time_loop_init(&p->loop, &p->info, &p->sc->time, d))) p->have_loop = 1;
+  /* a restart is checked against the scene before anything is written */
+  if (!rc && o && o->restart) {
+    if (!(rc = sl_checkpoint_read(o->restart, &p->ck, d))) p->have_ck = 1;
+    if (!rc) rc = sl_scene_check_restart(p->sc, o->restart, p->ck.time, d);
+    if (!rc && ops->restore) rc = ops->restore(p->self, &p->ck, d);
+    if (!rc) rc = sl_time_loop_restore(&p->loop, &p->ck, d);
+  }
+  return rc;
+}
+
+int sl_model_check(sl_ini *ini, const sl_registry *reg, const char *restart, const sl_model_entry **entry,
+                   sl_scene **sc, sl_diag *d) {
+  sl_run_opts o = {.restart = restart};
+  prepared p;
+  int rc = prepare(ini, reg, &o, &p, d);
+  *entry = p.entry, *sc = NULL;
+  if (!rc) *sc = p.sc, p.sc = NULL;
+  prepared_free(&p);
+  return rc;
+}
+
+void sl_run_output_opts(const sl_run_opts *o, char *dir, size_t cap, sl_output_opts *oo) {
+  /* the scene's folder: where a path from the scene file may write (besides the working folder) */
+  const char *slash = o->scene_path ? strrchr(o->scene_path, '/') : NULL;
+  if (slash)
+    snprintf(dir, cap, "%.*s", slash == o->scene_path ? 1 : (int)(slash - o->scene_path), o->scene_path);
+  else
+    snprintf(dir, cap, ".");
+  *oo = (sl_output_opts){.from_scene = o->output == NULL, .scene_dir = dir, .overwrite = o->overwrite,
+                         .protect = o->scene_path};
+}
+
 int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_run_result *res, sl_diag *d) {
   memset(res, 0, sizeof *res);
   double c_setup = cpu();
-  const sl_model_entry *entry = NULL;
-  sl_scene *sc = NULL;
-  void *self = NULL;
-  sl_model_info info = {0};
-  sl_time_loop loop;
-  int have_loop = 0, have_ck = 0;
-  sl_checkpoint ck = {0};
   sl_output *out = NULL;
   sl_scene_provenance pv = {0};
-  int rc = sl_model_scene(ini, reg, 1, 1, &entry, &sc, d);
-  const sl_model_ops *ops = entry ? entry->ops : NULL;
-  if (!rc) rc = ops->setup(&self, sc, &info, d);
-  if (!rc && !(rc = sl_time_loop_init(&loop, &info, &sc->time, d))) have_loop = 1;
-  /* a restart is checked against the scene before anything is written */
-  if (!rc && o->restart) {
-    if (!(rc = sl_checkpoint_read(o->restart, &ck, d))) have_ck = 1;
-    if (!rc && ops->restore) rc = ops->restore(self, &ck, d);
-    if (!rc) rc = sl_time_loop_restore(&loop, &ck, d);
-  }
+  prepared p;
+  int rc = prepare(ini, reg, o, &p, d);
+  sl_scene *sc = p.sc;
+  void *self = p.self;
+  const sl_model_ops *ops = p.entry ? p.entry->ops : NULL;
+  const sl_model_info info = p.info;
   if (!rc) {
     sl_scene_output_path(sc, o->output, o->scene_path, res->output_path, sizeof res->output_path);
-    rc = sl_output_open(&out, res->output_path, d);
+    sl_output_opts oo;
+    char dir[4096];
+    sl_run_output_opts(o, dir, sizeof dir, &oo);
+    rc = sl_output_open_opts(&out, res->output_path, &oo, d);
   }
   if (!rc) rc = ops->write_mesh(self, out, d);
   if (!rc) rc = sl_scene_provenance_make(sc, o->sluice_version, &pv, d);
   if (!rc) rc = sl_output_write_provenance(out, &pv.pv, d);
   res->cpu_setup = cpu() - c_setup;
-  if (!rc) rc = sl_time_loop_run(&loop, ops, self, out, o, res, d);
+  if (!rc) rc = sl_time_loop_run(&p.loop, ops, self, out, o, res, d);
   if (self && ops->stats) ops->stats(self, res, &res->model);
   if (info.integrator == SL_INTEGRATE_BDF && res->model.has_linear) {
     res->factorisation = res->model.linear.t_symbolic + res->model.linear.t_numeric;
@@ -64,16 +149,14 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
     memcpy(res->stop_reason, res->model.stop_reason, sizeof res->stop_reason);
   if (out) {
     sl_output_stats(out, &res->output_times, &res->output_datasets, &res->output_bytes);
-    sl_diag d2;
-    int crc = sl_output_close(out, rc ? &d2 : d);
-    if (!rc) rc = crc;
+    if (rc) { /* before the first complete output time, what was there stays */
+      if (!sl_output_abort(out)) res->output_path[0] = '\0';
+    } else
+      rc = sl_output_close(out, d);
   } else {
     res->output_path[0] = '\0';
   }
   sl_scene_provenance_free(&pv);
-  if (have_ck) sl_checkpoint_free(&ck);
-  if (have_loop) sl_time_loop_free(&loop);
-  if (self) ops->destroy(self);
-  sl_scene_free(sc);
+  prepared_free(&p);
   return rc;
 }

@@ -16,11 +16,23 @@
  * the message says where and why). res is filled in every case. */
 int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_run_result *res, sl_diag *d);
 
+/* What the run's output may replace (core/io/output.h): a path from the
+ * scene file (no o->output) only in the scene's folder (dir, of cap bytes,
+ * receives it) or the working folder; the scene file itself never. */
+void sl_run_output_opts(const sl_run_opts *o, char *dir, size_t cap, sl_output_opts *oo);
+
 /* The scene of an INI file without running it (`sluice run --check`,
  * --print-config): the model's entry and its typed scene. Closures are
  * created with create_closures, else only found and checked; the mesh is
  * built with build_mesh. Free with sl_scene_free. */
 int sl_model_scene(sl_ini *ini, const sl_registry *reg, int create_closures, int build_mesh,
                    const sl_model_entry **entry, sl_scene **sc, sl_diag *d);
+
+/* Every check a run makes before it opens a file (the scene, the model's
+ * set-up, a restart's checkpoint against the scene) without running:
+ * `sluice run --check`. The scene is returned for its report (free with
+ * sl_scene_free). */
+int sl_model_check(sl_ini *ini, const sl_registry *reg, const char *restart, const sl_model_entry **entry,
+                   sl_scene **sc, sl_diag *d);
 
 #endif

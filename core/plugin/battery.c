@@ -446,6 +446,9 @@ void sl_battery_run(const sl_closure_entry *entry, FILE *log, sl_battery_result 
   sl_closure_label(entry->desc, b.label, sizeof b.label);
   void *params;
   sl_diag d;
+#define SL_STARTING(what) \
+  if (res->progress) res->progress(res->progress_user, b.label, what)
+  SL_STARTING("create with defaults");
   if (sl_params_new(entry->desc, &params, &d) || sl_closure_create(entry, params, &b.closure, &d)) {
     report(&b, 0, "create with defaults", "%s", d.msg);
     return;
@@ -457,13 +460,22 @@ void sl_battery_run(const sl_closure_entry *entry, FILE *log, sl_battery_result 
     sl_closure_destroy(b.closure);
     return;
   }
+  SL_STARTING("schema and bounds");
   check_schema_and_bounds(&b);
+  SL_STARTING("outputs written");
   check_outputs_written(&b, &bt);
+  SL_STARTING("batch invariance");
   check_batch_invariance(&b, &bt);
+  SL_STARTING("derivatives");
   check_derivatives(&b, &bt);
+  SL_STARTING("out of range");
   check_out_of_range(&b);
+  SL_STARTING("reference values");
   check_reference_values(&b);
+  SL_STARTING("concurrency");
   check_concurrency(&b, &bt);
   batch_free(&bt);
+  SL_STARTING("destroy");
   sl_closure_destroy(b.closure);
+#undef SL_STARTING
 }

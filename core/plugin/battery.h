@@ -11,6 +11,10 @@
 typedef struct sl_battery_result {
   int passed, failed;
   int skipped_points; /* derivative points skipped at switches or validity edges */
+  /* Told before each check starts (may be NULL): what `check-closure` names
+   * when a closure crashes or hangs in it. */
+  void (*progress)(void *user, const char *label, const char *check);
+  void *progress_user;
 } sl_battery_result;
 
 /* Runs every check on one closure, printing one line per check to `log`

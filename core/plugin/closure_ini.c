@@ -63,6 +63,7 @@ int sl_closure_from_ini(const sl_registry *r, const sl_ini *ini, const char *sec
   if (rc) return rc;
   rc = sl_closure_create(entry, params, out, d);
   if (rc) return located(d, rc, sl_ini_find(ini, section, "model"));
+  snprintf((*out)->role, sizeof (*out)->role, "%s", section);
   return 0;
 }
 
@@ -110,6 +111,17 @@ int sl_closure_ini_apply_override(sl_ini *ini, const char *assignment, sl_diag *
     }
   }
   return sl_ini_apply_override(ini, assignment, d);
+}
+
+int sl_plugin_dirs_allowed(const sl_ini *ini, int allow, sl_diag *d) {
+  const sl_ini_entry *e = sl_ini_find(ini, "plugins", "path");
+  if (!e || allow) return 0;
+  return sl_diag_set(d, SL_EBADINPUT,
+                     "%s:%d: error: [plugins] path = %s: a scene may not make sluice load closure libraries from a "
+                     "folder it names (their code would run with your rights); closures are loaded from the plugin "
+                     "path (SLUICE_PLUGIN_PATH and sluice's own folder). If you trust the libraries in that folder, "
+                     "run with --allow-plugin-path",
+                     e->file ? e->file : "scene", e->line, e->value);
 }
 
 int sl_plugin_dirs_from_ini(const sl_ini *ini, char ***dirs, int *n, sl_diag *d) {

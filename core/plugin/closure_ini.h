@@ -29,6 +29,11 @@ void sl_closure_ini_replace_model(sl_ini *ini, const char *section, const char *
 /* sl_ini_apply_override with the rule above: what `--set` does to a scene. */
 int sl_closure_ini_apply_override(sl_ini *ini, const char *assignment, sl_diag *d);
 
+/* A scene may name folders of closure libraries only when the command line
+ * allows it (docs/trust-plugins.md): 0, or SL_EBADINPUT naming the key, its
+ * file:line and the flag. */
+int sl_plugin_dirs_allowed(const sl_ini *ini, int allow, sl_diag *d);
+
 /* Search folders named in the scene: [plugins] path = dir, dir (relative to
  * the scene file). Free the result with sl_plugin_dirs_free. */
 int sl_plugin_dirs_from_ini(const sl_ini *ini, char ***dirs, int *n, sl_diag *d);

@@ -7,6 +7,7 @@
 #include <time.h>
 
 #include "core/config/ini.h"
+#include "core/plugin/guard.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/validate.h"
 
@@ -217,6 +218,7 @@ int sl_closure_create(const sl_closure_entry *entry, void *params, sl_closure **
   c->library = entry->library;
   c->params = params;
   c->timed = entry->library->timing;
+  sl_closure_label(c->desc, c->label, sizeof c->label);
   for (int32_t k = 0; k < entry->library->n_closures; ++k)
     if (entry->library->closures[k] == entry->desc) c->usage_index = (int)k;
   c->api = (sl_host_api){.struct_size = (uint32_t)sizeof(sl_host_api),
@@ -354,9 +356,17 @@ SL_EVAL_INLINE int evaluate_checked(sl_closure *c, const sl_eval_args *a) {
   a->err->point = -1;
   a->err->msg[0] = '\0';
   const sl_closure_desc *desc = c->desc;
-  int rc = desc->evaluate(c->state, a);
+  if (c->poisoned) {
+    snprintf(a->err->msg, sizeof a->err->msg, "not called again after it crashed or overran");
+    return SL_ERR_INTERNAL;
+  }
+  int rc = sl_guard_evaluate(desc, c->state, a, c->label, c->role[0] ? c->role : NULL, &c->poisoned);
   if (rc != 0) {
     if (!a->err->msg[0]) snprintf(a->err->msg, sizeof a->err->msg, "returned %d without a message", rc);
+    /* fatal (< 0): the run stops at once, the closure named (guard.h) */
+    if (rc < 0)
+      sl_guard_set_fatal("closure %s%s%s%s failed (fatal, code %d): %s", c->label, c->role[0] ? " [" : "", c->role,
+                         c->role[0] ? "]" : "", rc, a->err->msg);
     return rc;
   }
   /* No silent NaN: a non-finite output is the closure's failure, recoverable.

@@ -1,5 +1,7 @@
 #include "core/plugin/point_eval.h"
 
+#include "core/plugin/guard.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -94,7 +96,10 @@ int sl_point_eval(sl_point_closure *pc, int Q, const double *const *values, cons
       for (int i = 0; i < n_in && outs[k]; ++i)
         if (cd->in[i].flags & SL_FIELD_DIFF) dout[k * n_in + i] = w, w += Q;
   sl_error err;
-  sl_eval_args a = {.Q = Q, .in = in, .out = outs, .dout = want_d ? dout : NULL, .err = &err};
+  /* the time level being solved and its step, as the time loop set them */
+  double t, dt;
+  sl_guard_clock(&t, &dt);
+  sl_eval_args a = {.Q = Q, .t = t, .dt = dt, .in = in, .out = outs, .dout = want_d ? dout : NULL, .err = &err};
   int rc = sl_closure_evaluate(pc->c, &a);
   if (rc) {
     sl_closure_label(cd, label, sizeof label);

@@ -2,12 +2,15 @@
 
 #include <dirent.h>
 #include <dlfcn.h>
+#include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include "core/plugin/guard.h"
+#include "core/plugin/isolate.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/validate.h"
 
@@ -112,6 +115,10 @@ void sl_registry_destroy(sl_registry *r) {
   for (int i = 0; i < r->n_files; ++i) free(r->files[i]);
   free(r->files);
   free(r->file_tried);
+  free(r->file_dir);
+  free(r->dir_indexed);
+  for (int i = 0; i < r->n_index; ++i) free(r->index[i].name), free(r->index[i].path);
+  free(r->index);
   free(r);
 }
 
@@ -326,16 +333,80 @@ int sl_registry_scan(sl_registry *r, sl_diag *d) {
   return 0;
 }
 
+static int index_add(sl_registry *r, sl_kind kind, const char *name, const char *path) {
+  if (r->n_index == r->cap_index) {
+    int cap = r->cap_index ? 2 * r->cap_index : 64;
+    struct sl_index_entry *e = realloc(r->index, (size_t)cap * sizeof *e);
+    if (!e) return SL_ENOMEM;
+    r->index = e, r->cap_index = cap;
+  }
+  struct sl_index_entry *e = &r->index[r->n_index];
+  e->kind = kind;
+  e->name = dup_str(name), e->path = dup_str(path);
+  if (!e->name || !e->path) {
+    free(e->name), free(e->path);
+    return SL_ENOMEM;
+  }
+  r->n_index++;
+  return 0;
+}
+
+/* Reads DIR/closures.index: lines "kind name file", '#' comments; the file
+ * is one in that folder. *found is 0 when the folder has no index. */
+static int read_index(sl_registry *r, const char *dir, int *found, sl_diag *d) {
+  char path[PATH_MAX];
+  *found = 0;
+  if (snprintf(path, sizeof path, "%s/%s", dir, SL_PLUGIN_INDEX_FILE) >= (int)sizeof path) return 0;
+  FILE *f = fopen(path, "r");
+  if (!f) return 0;
+  *found = 1;
+  char line[1024];
+  int rc = 0;
+  for (int ln = 1; !rc && fgets(line, sizeof line, f); ++ln) {
+    char *hash = strchr(line, '#');
+    if (hash) *hash = '\0';
+    char kind_s[128], name[256], file[256], extra[2];
+    int n = sscanf(line, "%127s %255s %255s %1s", kind_s, name, file, extra);
+    if (n <= 0) continue;
+    sl_kind kind;
+    sl_diag why;
+    if (n != 3) {
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: error: expected 'kind name library.so'", path, ln);
+    } else if (sl_kind_from_name(kind_s, &kind, &why)) {
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: error: %s", path, ln, why.msg);
+    } else if (strchr(file, '/') || !has_so_suffix(file)) {
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: error: '%s' is not a library file in that folder (name.so)", path, ln,
+                       file);
+    } else {
+      char lib[PATH_MAX];
+      if (snprintf(lib, sizeof lib, "%s/%s", dir, file) >= (int)sizeof lib)
+        rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: error: path too long", path, ln);
+      else if (index_add(r, kind, name, lib))
+        rc = sl_diag_set(d, SL_ENOMEM, "out of memory");
+    }
+  }
+  fclose(f);
+  return rc;
+}
+
 int sl_registry_index(sl_registry *r, sl_diag *d) {
+  if (!(r->dir_indexed = calloc((size_t)(r->n_dirs > 0 ? r->n_dirs : 1), 1)))
+    return sl_diag_set(d, SL_ENOMEM, "out of memory");
   for (int i = 0; i < r->n_dirs; ++i) {
+    int found, rc = read_index(r, r->dirs[i], &found, d);
+    if (rc) return rc;
+    r->dir_indexed[i] = (unsigned char)found;
     char **names;
-    int n, rc = list_libraries(r->dirs[i], &names, &n);
+    int n;
+    rc = list_libraries(r->dirs[i], &names, &n);
     if (!rc && n > 0) {
       char **files = realloc(r->files, (size_t)(r->n_files + n) * sizeof *files);
-      unsigned char *tried = files ? realloc(r->file_tried, (size_t)(r->n_files + n)) : NULL;
       if (files) r->files = files;
+      unsigned char *tried = files ? realloc(r->file_tried, (size_t)(r->n_files + n)) : NULL;
       if (tried) r->file_tried = tried;
-      if (!files || !tried) rc = SL_EFAILED;
+      int *fdir = tried ? realloc(r->file_dir, (size_t)(r->n_files + n) * sizeof *fdir) : NULL;
+      if (fdir) r->file_dir = fdir;
+      if (!files || !tried || !fdir) rc = SL_EFAILED;
       for (int k = 0; k < n && !rc; ++k) {
         size_t len = strlen(r->dirs[i]) + strlen(names[k]) + 2;
         char *path = malloc(len);
@@ -345,6 +416,7 @@ int sl_registry_index(sl_registry *r, sl_diag *d) {
         }
         snprintf(path, len, "%s/%s", r->dirs[i], names[k]);
         r->files[r->n_files] = path;
+        r->file_dir[r->n_files] = i;
         r->file_tried[r->n_files++] = 0;
       }
     }
@@ -372,23 +444,176 @@ static int conventional_name(const char *base) {
   return 0;
 }
 
-/* Opens the files of an index that may provide (kind, name): the one named
- * <kind>_<name>.so and every library whose name says nothing; with
- * `library`, only the files it names. */
+static int file_matches(const char *path, const char *library) {
+  if (!library) return 1;
+  return strchr(library, '/') ? same_file(path, library) : strcmp(base_name(path), library) == 0;
+}
+
+/* Opens one file of the search path, once. */
+static int open_listed(sl_registry *r, const char *path, sl_diag *d) {
+  for (int i = 0; i < r->n_files; ++i) {
+    if (strcmp(r->files[i], path) != 0) continue;
+    if (r->file_tried[i]) return 0;
+    r->file_tried[i] = 1;
+    break;
+  }
+  for (int i = 0; i < r->n_libraries; ++i)
+    if (strcmp(r->libraries[i]->path, path) == 0) return 0;
+  if (load_from_path(r, path)) return sl_diag_set(d, SL_ENOMEM, "out of memory while loading %s", path);
+  return 0;
+}
+
+/* Opens the files that hold (kind, name): those the indexes name for it and,
+ * in a folder without an index, the one named <kind>_<name>.so; with
+ * `library`, only among the files it names. Nothing else is opened. */
 static int load_candidates(sl_registry *r, sl_kind kind, const char *name, const char *library, sl_diag *d) {
+  for (int i = 0; i < r->n_index; ++i) {
+    const struct sl_index_entry *e = &r->index[i];
+    if (e->kind != kind || strcmp(e->name, name) != 0 || !file_matches(e->path, library)) continue;
+    int rc = open_listed(r, e->path, d);
+    if (rc) return rc;
+  }
   char want[512];
   snprintf(want, sizeof want, "%s_%s.so", sl_kind_name(kind), name);
   for (int i = 0; i < r->n_files; ++i) {
-    if (r->file_tried[i]) continue;
-    const char *base = base_name(r->files[i]);
-    int candidate;
-    if (library) candidate = strchr(library, '/') ? same_file(r->files[i], library) : strcmp(base, library) == 0;
-    else candidate = strcmp(base, want) == 0 || !conventional_name(base);
-    if (!candidate) continue;
-    r->file_tried[i] = 1;
-    if (load_from_path(r, r->files[i])) return sl_diag_set(d, SL_ENOMEM, "out of memory while loading %s", r->files[i]);
+    if (r->file_tried[i] || r->dir_indexed[r->file_dir[i]]) continue;
+    if (strcmp(base_name(r->files[i]), want) != 0 || !file_matches(r->files[i], library)) continue;
+    int rc = open_listed(r, r->files[i], d);
+    if (rc) return rc;
   }
   return 0;
+}
+
+/* ---- what unindexed libraries hold, read in a child process ---- */
+
+typedef struct child_list {
+  sl_registry *r;
+  const char *const *files;
+  int n;
+  char current[PATH_MAX]; /* the file the child was reading */
+  int rc;
+} child_list;
+
+static int list_in_child(void *user, int fd) {
+  child_list *cl = user;
+  for (int i = 0; i < cl->n; ++i) {
+    sl_isolate_say(fd, "@%s", cl->files[i]);
+    sl_library *lib;
+    sl_diag why;
+    long n_open = 0;
+    if (open_library(cl->files[i], &lib, &n_open, &why)) {
+      sl_isolate_say(fd, "!%s", why.msg);
+      continue;
+    }
+    for (int32_t k = 0; k < lib->n_closures; ++k)
+      sl_isolate_say(fd, "=%s %s", sl_kind_name(lib->closures[k]->kind), lib->closures[k]->name);
+  }
+  return 0;
+}
+
+static void list_line(void *user, const char *line) {
+  child_list *cl = user;
+  if (cl->rc) return;
+  if (line[0] == '@') {
+    snprintf(cl->current, sizeof cl->current, "%s", line + 1);
+  } else if (line[0] == '!') {
+    if (add_problem(cl->r, line + 1)) cl->rc = SL_ENOMEM;
+  } else if (line[0] == '=') {
+    char kind_s[128], name[256];
+    sl_kind kind;
+    sl_diag why;
+    if (sscanf(line + 1, "%127s %255s", kind_s, name) == 2 && !sl_kind_from_name(kind_s, &kind, &why))
+      if (index_add(cl->r, kind, name, cl->current)) cl->rc = SL_ENOMEM;
+  }
+}
+
+/* Reads the descriptors of `files` in a child process, into r->index (and
+ * r->problems for the libraries that cannot be used). */
+static int list_files_in_child(sl_registry *r, const char *const *files, int n, sl_diag *d) {
+  if (n == 0) return 0;
+  child_list cl = {.r = r, .files = files, .n = n};
+  sl_child_outcome o;
+  /* a library that hangs in its constructor: 10 s without news */
+  if (sl_isolate(list_in_child, &cl, list_line, &cl, 10.0, &o))
+    return sl_diag_set(d, SL_EFAILED, "cannot start a process to read the closure libraries: %s", strerror(errno));
+  if (cl.rc) return sl_diag_set(d, SL_ENOMEM, "out of memory");
+  if (o.signal || o.timed_out || (o.exited && o.status)) {
+    char msg[PATH_MAX + 200];
+    if (o.timed_out)
+      snprintf(msg, sizeof msg, "%s: did not finish loading within 10 s (read in a child process, stopped)",
+               cl.current);
+    else if (o.signal)
+      snprintf(msg, sizeof msg, "%s: crashed with %s while loading (read in a child process)", cl.current,
+               sl_signal_name(o.signal));
+    else
+      snprintf(msg, sizeof msg, "%s: called exit(%d) while loading (read in a child process)", cl.current, o.status);
+    if (add_problem(r, msg)) return sl_diag_set(d, SL_ENOMEM, "out of memory");
+    /* the files after the one that failed: read them on their own */
+    int at = 0;
+    while (at < n && strcmp(files[at], cl.current) != 0) ++at;
+    if (at + 1 < n) return list_files_in_child(r, files + at + 1, n - at - 1, d);
+  }
+  return 0;
+}
+
+/* The libraries of unindexed folders whose names say nothing, read once. */
+static int list_unindexed(sl_registry *r, sl_diag *d) {
+  if (r->children_listed) return 0;
+  r->children_listed = 1;
+  const char **files = malloc((size_t)(r->n_files > 0 ? r->n_files : 1) * sizeof *files);
+  if (!files) return sl_diag_set(d, SL_ENOMEM, "out of memory");
+  int n = 0;
+  for (int i = 0; i < r->n_files; ++i)
+    if (!r->dir_indexed[r->file_dir[i]] && !conventional_name(base_name(r->files[i]))) files[n++] = r->files[i];
+  int rc = list_files_in_child(r, files, n, d);
+  free(files);
+  return rc;
+}
+
+int sl_registry_write_index(const char *dir, int *n_closures, sl_diag *d) {
+  *n_closures = 0;
+  sl_registry *r;
+  int rc = sl_registry_create(&r, NULL, 0, d);
+  if (rc) return rc;
+  char **names = NULL;
+  int n = 0;
+  if (list_libraries(dir, &names, &n)) {
+    sl_registry_destroy(r);
+    return sl_diag_set(d, SL_ENOMEM, "out of memory");
+  }
+  char **paths = calloc((size_t)(n > 0 ? n : 1), sizeof *paths);
+  for (int k = 0; k < n && paths; ++k) {
+    size_t len = strlen(dir) + strlen(names[k]) + 2;
+    if ((paths[k] = malloc(len))) snprintf(paths[k], len, "%s/%s", dir, names[k]);
+  }
+  if (!paths) rc = sl_diag_set(d, SL_ENOMEM, "out of memory");
+  for (int k = 0; k < n && !rc; ++k)
+    if (!paths[k]) rc = sl_diag_set(d, SL_ENOMEM, "out of memory");
+  if (!rc) rc = list_files_in_child(r, (const char *const *)paths, n, d);
+  char tmp[PATH_MAX], final[PATH_MAX];
+  snprintf(final, sizeof final, "%s/%s", dir, SL_PLUGIN_INDEX_FILE);
+  snprintf(tmp, sizeof tmp, "%s/.%s.tmp", dir, SL_PLUGIN_INDEX_FILE);
+  FILE *f = NULL;
+  if (!rc && !(f = fopen(tmp, "w"))) rc = sl_diag_set(d, SL_EFAILED, "%s: cannot write: %s", tmp, strerror(errno));
+  if (!rc) {
+    fprintf(f, "# sluice closure index: kind name library (in this folder); written by `sluice closure index`\n");
+    for (int i = 0; i < r->n_index; ++i)
+      fprintf(f, "%s %s %s\n", sl_kind_name(r->index[i].kind), r->index[i].name, base_name(r->index[i].path));
+    if (fclose(f) != 0) rc = sl_diag_set(d, SL_EFAILED, "%s: cannot write", tmp);
+    else if (rename(tmp, final) != 0) rc = sl_diag_set(d, SL_EFAILED, "%s: cannot write: %s", final, strerror(errno));
+    if (rc) remove(tmp);
+  }
+  if (!rc) {
+    *n_closures = r->n_index;
+    size_t at = 0;
+    d->msg[0] = '\0';
+    for (int i = 0; i < r->n_problems && at < sizeof d->msg; ++i)
+      at += (size_t)snprintf(d->msg + at, sizeof d->msg - at, "%sskipped %s", i ? "\n" : "", r->problems[i]);
+  }
+  for (int k = 0; k < n; ++k) free(names[k]), free(paths ? paths[k] : NULL);
+  free(names), free(paths);
+  sl_registry_destroy(r);
+  return rc;
 }
 
 static int library_matches(const sl_library *lib, const char *library) {
@@ -405,17 +630,36 @@ static int find_loaded(const sl_registry *r, sl_kind kind, const char *name, con
 int sl_registry_find(const sl_registry *r, sl_kind kind, const char *name, const char *library,
                      const sl_closure_entry **entry, sl_diag *d) {
   if (!r->lazy) return find_loaded(r, kind, name, library, entry, d);
-  /* The index loads what the look-up needs: the registry is a cache behind
+  /* The indexes open what the look-up needs: the registry is a cache behind
    * its const interface (registry.h). */
   sl_registry *cache = (sl_registry *)r;
   int rc = load_candidates(cache, kind, name, library, d);
   if (rc) return rc;
   sl_diag quiet;
   if (find_loaded(r, kind, name, library, entry, &quiet) == 0) return 0;
-  /* Not where its name says: the rest of the path, then the full answer
-   * (an ambiguity, or a did-you-mean over everything). */
-  if ((rc = sl_registry_scan(cache, d))) return rc;
+  /* What the unindexed libraries hold (read in a child), then once more. */
+  if ((rc = list_unindexed(cache, d))) return rc;
+  if ((rc = load_candidates(cache, kind, name, library, d))) return rc;
   if ((rc = find_loaded(r, kind, name, library, entry, d)) == 0) return 0;
+  if (rc != SL_EBADINPUT || strstr(d->msg, "provided by two libraries")) return rc;
+  /* Refused with no further library opened: a did-you-mean over the names
+   * the indexes list as well as those loaded. */
+  const char *cands[512];
+  int nc = 0;
+  for (int i = 0; i < r->n_index && nc < 512; ++i)
+    if (r->index[i].kind == kind && file_matches(r->index[i].path, library)) cands[nc++] = r->index[i].name;
+  for (int i = 0; i < r->n_entries && nc < 512; ++i)
+    if (r->entries[i].desc->kind == kind && library_matches(r->entries[i].library, library))
+      cands[nc++] = r->entries[i].desc->name;
+  const char *s = sl_suggest(name, cands, nc);
+  if (library)
+    rc = sl_diag_set(d, SL_EBADINPUT, "no %s closure '%s' in library '%s'%s%s%s", sl_kind_name(kind), name, library,
+                     s ? "; did you mean '" : "", s ? s : "", s ? "'?" : "");
+  else if (s)
+    rc = sl_diag_set(d, SL_EBADINPUT, "no %s closure '%s'; did you mean '%s'?", sl_kind_name(kind), name, s);
+  else
+    rc = sl_diag_set(d, SL_EBADINPUT, "no %s closure '%s' on the plugin search path (`sluice closures` lists them)",
+                     sl_kind_name(kind), name);
   char want[512]; /* a library named for it that could not be used: say why */
   snprintf(want, sizeof want, "/%s_%s.so:", sl_kind_name(kind), name);
   for (int i = 0; i < r->n_problems; ++i)

@@ -6,14 +6,18 @@
  * to this sluice (the build tree's when run from it, else the install's).
  *
  * Two ways to fill a registry: sl_registry_scan loads every library of the
- * search path (listings, `closure describe`); sl_registry_index only lists
- * the files, and sl_registry_find then loads what a look-up needs (a run: the
- * closures a scene does not name are not loaded). A file named
- * <kind>_<name>.so after a known kind (the built-in closures' names) is taken
- * to provide that closure and is opened only for it; any other library is
- * opened at the first look-up, since only its descriptors say what it holds.
- * A name found nowhere that way loads the rest of the path before the
- * look-up is refused, so both ways find the same closures. */
+ * search path (listings, `closure describe`); sl_registry_index only reads
+ * what each folder holds, and sl_registry_find then opens the one library
+ * that holds the closure looked up, and nothing else (docs/trust-plugins.md):
+ *  - a folder with an index file (closures.index, written by the build and
+ *    the install; `sluice closure index DIR` for any other) says which file
+ *    holds which (kind, name): look-ups read it and open only that file;
+ *  - in a folder without one, a file named <kind>_<name>.so after a known
+ *    kind is taken to hold that closure; what any other library holds is
+ *    read in a child process (its code never runs in sluice itself) the
+ *    first time a name is not found otherwise.
+ * A name found nowhere is refused with a did-you-mean over the names the
+ * indexes list, with no library opened. */
 #ifndef SLUICE_PLUGIN_REGISTRY_H
 #define SLUICE_PLUGIN_REGISTRY_H
 
@@ -60,6 +64,14 @@ typedef struct sl_registry {
   int n_files;
   char **files;
   unsigned char *file_tried;
+  int *file_dir;             /* the folder of each file (index into dirs) */
+  unsigned char *dir_indexed; /* [n_dirs]: the folder has an index file */
+  int children_listed;        /* the unindexed libraries were listed in a child */
+  int n_index, cap_index;     /* what the indexes (and the child listings) say */
+  struct sl_index_entry {
+    sl_kind kind;
+    char *name, *path;
+  } *index;
   long n_dlopen; /* libraries dlopen'ed (kept or refused) */
   int timing;    /* see sl_registry_set_timing */
 } sl_registry;
@@ -89,6 +101,14 @@ int sl_registry_add_library(sl_registry *r, const char *path, sl_library **lib, 
  * cache of what it has loaded, and *entry is valid until the next look-up. */
 int sl_registry_find(const sl_registry *r, sl_kind kind, const char *name, const char *library,
                      const sl_closure_entry **entry, sl_diag *d);
+
+/* The index file of a plugin folder. */
+#define SL_PLUGIN_INDEX_FILE "closures.index"
+
+/* Writes DIR/closures.index for the libraries in DIR, read in a child
+ * process; *n_closures is the number of closures listed. Libraries that
+ * cannot be used are named in d's message when nothing could be listed. */
+int sl_registry_write_index(const char *dir, int *n_closures, sl_diag *d);
 
 /* The default plugin folder of this sluice (static storage). */
 const char *sl_registry_default_dir(void);

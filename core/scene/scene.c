@@ -1,5 +1,6 @@
 /* The typed scene: the INI file read once through a model's schema (scene.h). */
 #include "core/scene/scene.h"
+#include "core/scene/solver.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -231,6 +232,11 @@ static int check_sections(builder *b, sl_diag *d) {
   for (int i = 0; i < ini->n_sections; ++i) {
     const sl_ini_section *sec = &ini->sections[i];
     if (strcmp(sec->name, "plugins") == 0) continue;
+    if (strcmp(sec->name, "solver.petsc") == 0 && sl_schema_key(s, "solver", "linear")) {
+      int rc = sl_scene_petsc_section(sec, &b->sc->solver.petsc_options, d);
+      if (rc) return rc;
+      continue;
+    }
     if (strncmp(sec->name, "boundary.", 9) == 0 && sec->name[9]) {
       if (!s->boundary_size)
         return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: the %s takes no boundary conditions", sec->file, sec->line,
@@ -305,6 +311,30 @@ static int resolve_time(builder *b, sl_diag *d) {
   }
   if (!sl_scene_given(sc, &t->dt_min)) t->dt_min = t->dt * 1e-6;
   if (!sl_scene_given(sc, &t->dt_max)) t->dt_max = t->adaptive && t->end > 0 ? t->end / 10 : t->dt;
+  if (t->scheme == SL_SCHEME_STEADY) return 0;
+  /* the step's bounds agree with each other, and the output interval with them */
+  char a[400], c[400];
+  if (sl_scene_given(sc, &t->dt_min) && t->dt_min > t->dt)
+    return sl_diag_set(d, SL_EBADINPUT, "%s = %g is larger than %s = %g: the first step would be below the smallest",
+                       sl_scene_where(sc, &t->dt_min, a, sizeof a), t->dt_min, sl_scene_where(sc, &t->dt, c, sizeof c),
+                       t->dt);
+  if (t->dt_max < t->dt_min)
+    return sl_diag_set(d, SL_EBADINPUT, "%s = %g is smaller than %s = %g: no step fits between them",
+                       sl_scene_where(sc, &t->dt_max, a, sizeof a), t->dt_max,
+                       sl_scene_where(sc, &t->dt_min, c, sizeof c), t->dt_min);
+  if (t->every > 0 && t->every < t->dt_min)
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s = %g is below %s = %g: the steps that land on every output time would be shorter than the "
+                       "smallest step the run allows",
+                       sl_scene_where(sc, &t->every, a, sizeof a), t->every,
+                       sl_scene_where(sc, &t->dt_min, c, sizeof c), t->dt_min);
+  if (t->every > 0 && t->end / t->every > SL_SCENE_OUTPUT_TIMES_MAX)
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s = %g would write %.3g output times before the end t = %g (at most %g, each a full set of "
+                       "fields and a checkpoint): allowed every >= end / %g = %g",
+                       sl_scene_where(sc, &t->every, a, sizeof a), t->every, t->end / t->every, t->end,
+                       (double)SL_SCENE_OUTPUT_TIMES_MAX, (double)SL_SCENE_OUTPUT_TIMES_MAX,
+                       t->end / SL_SCENE_OUTPUT_TIMES_MAX);
   return 0;
 }
 
@@ -465,6 +495,16 @@ static void *target_base(sl_scene *sc, const sl_key *k) {
   return k->target == SL_IN_SCENE ? (void *)sc : k->target == SL_IN_MODEL ? sc->config : NULL;
 }
 
+/* [output] file = "" names no file: refused rather than taken as the default. */
+static int check_output_file(const sl_scene *sc, sl_diag *d) {
+  const sl_src *e = sl_scene_src(sc, &sc->output.file);
+  if (!e || (sc->output.file && *sc->output.file)) return 0;
+  return sl_diag_set(d, SL_EBADINPUT,
+                     "%s:%d: error: [output] file is empty; name the output file (e.g. file = result.h5) or leave "
+                     "the key out for the default (the scene's name with .h5, in the working folder)",
+                     e->file, e->line);
+}
+
 int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o, sl_scene **out, sl_diag *d) {
   *out = NULL;
   sl_scene *sc = calloc(1, sizeof *sc);
@@ -477,6 +517,7 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
   for (int i = 0; i < ini->n_sections && !rc; ++i) {
     const sl_ini_section *sec = &ini->sections[i];
     if (strncmp(sec->name, "boundary.", 9) == 0 || strncmp(sec->name, "closure.", 8) == 0) continue;
+    if (strcmp(sec->name, "solver.petsc") == 0) continue; /* checked with the sections */
     rc = check_keys(&b, sec, sec->name, d);
   }
   /* the values the file gives first (their types and ranges), then the closures, then what the file leaves to
@@ -492,6 +533,36 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
       }
   }
   if (!rc) rc = resolve_time(&b, d);
+  if (!rc) rc = check_output_file(sc, d);
+  if (!rc && sc->solver.linear == 4 && !sl_linsolve_built("petsc")) { /* SL_SCENE_LINEAR_CHOICES */
+    char at[400];
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s: this sluice was built without PETSc (configure with -DSLUICE_WITH_PETSC=ON; "
+                     "Debian: libpetsc-real-dev); this build has umfpack, klu and cholmod",
+                     sl_scene_where(sc, &sc->solver.linear, at, sizeof at));
+  }
+  int rank = 0, ranks = 1;
+  if (!rc) rc = sl_linsolve_ranks(&rank, &ranks, d);
+  if (!rc && ranks > 1) { /* several ranks share the linear solves (PETSc), each keeps the whole state */
+    char at[400];
+    if (!sl_linsolve_built("petsc"))
+      rc = sl_diag_set(d, SL_EBADINPUT,
+                       "launched on %d ranks (mpirun), but this sluice was built without PETSc and MPI: it runs on "
+                       "one (configure with -DSLUICE_WITH_PETSC=ON to run on several)", ranks);
+    else if (!sl_schema_key(schema, "solver", "linear"))
+      rc = sl_diag_set(d, SL_EBADINPUT, "launched on %d ranks (mpirun): the %s cannot run on several ranks yet; run "
+                       "it on one", ranks, schema->title);
+    else if (sl_scene_given(sc, &sc->solver.linear) && sc->solver.linear != 4)
+      rc = sl_diag_set(d, SL_EBADINPUT,
+                       "%s: launched on %d ranks (mpirun), the linear solves must be PETSc's (linear = petsc or "
+                       "auto); the direct solvers run on one rank",
+                       sl_scene_where(sc, &sc->solver.linear, at, sizeof at), ranks);
+  }
+  if (!rc && sl_scene_given(sc, &sc->output.file) && (!sc->output.file || !*sc->output.file)) {
+    char at[400];
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s = \"\": an empty file name (leave the key out for the scene's name with .h5)",
+                     sl_scene_where(sc, &sc->output.file, at, sizeof at));
+  }
   if (!rc && o->build_mesh && sl_schema_has_section(schema, "mesh")) rc = sl_scene_mesh_build(sc, &sc->mesh, d);
   if (!rc && o->build_mesh && schema->boundary_size) rc = fill_boundaries(&b, d);
   /* every entry outside the closures' sections is read by now */
@@ -515,6 +586,7 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
 
 void sl_scene_free(sl_scene *sc) {
   if (!sc) return;
+  free(sc->solver.petsc_options);
   for (int i = 0; i < sc->n_exprs; ++i) sl_expr_free(sc->exprs[i]);
   free(sc->exprs);
   for (int r = 0; r < SL_SCHEMA_MAX_ROLES; ++r) sl_closure_destroy(sc->closures[r]);

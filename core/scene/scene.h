@@ -12,6 +12,7 @@
 #ifndef SLUICE_SCENE_SCENE_H
 #define SLUICE_SCENE_SCENE_H
 
+#include <signal.h>
 #include <stddef.h>
 
 #include "core/config/ini.h"
@@ -32,7 +33,7 @@ typedef struct sl_mesh_config {
 
 /* [solver] */
 typedef struct sl_solver_config {
-  int linear;   /* index in sl_linsolve_names(): umfpack | klu | cholmod */
+  int linear;   /* 0 auto, then umfpack | klu | cholmod | petsc (SL_SCENE_LINEAR_CHOICES) */
   int ordering; /* auto | amd | colamd | metis */
   int nonlinear; /* newton | picard */
   double nonlinear_tolerance;
@@ -42,6 +43,7 @@ typedef struct sl_solver_config {
   long continuation_steps;
   int skip_known; /* skip the solves whose result is known (a flow at rest, at a fixed point) */
   int reuse;      /* factorisation reuse: 0 auto, 1 never */
+  char *petsc_options; /* [solver.petsc] as PETSc options ("-ksp_type gmres ..."), NULL: none */
 } sl_solver_config;
 
 /* [output] */
@@ -49,6 +51,27 @@ typedef struct sl_output_config {
   const char *file, *fields;
   sl_reals interface; /* levels of phi whose heights are written */
 } sl_output_config;
+
+/* One nonlinear iteration, as a run reports it (`sluice run --monitor`, the
+ * progress of a steady solve): the time the step ends at (steady: 0), the
+ * continuation stage (0 of 0 without), the iteration (from 1), whether it
+ * is a Picard one, its relative correction, the residual at its start and
+ * the scale the solution's terms set for it (core/solve/newton.h). */
+typedef struct sl_nl_report {
+  double t;
+  long stage, n_stages;
+  int iteration, picard;
+  double correction, residual, terms;
+} sl_nl_report;
+
+/* What a run gives the model besides the scene: where to report the
+ * nonlinear iterations (NULL: nowhere), and the interrupt flag a steady
+ * solve checks between iterations and stages (NULL: none). */
+typedef struct sl_run_hooks {
+  void (*nonlinear)(void *user, const sl_nl_report *r);
+  void *user;
+  volatile sig_atomic_t *interrupt;
+} sl_run_hooks;
 
 /* Where a value or a section of the scene came from. */
 typedef struct sl_src {
@@ -99,6 +122,7 @@ typedef struct sl_scene {
   const sl_registry *registry;
   sl_expr **exprs; /* the compiled expressions the scene owns */
   int n_exprs;
+  sl_run_hooks hooks; /* set by the run before the model's setup */
 } sl_scene;
 
 /* Key declarations: where a value goes. */
@@ -120,6 +144,9 @@ typedef struct sl_scene_opts {
  * first of that model's variants whose `when` rules the file matches (the
  * first variant when none does: its keys then say what is wrong). */
 int sl_scene_select(const sl_ini *ini, const sl_schema *const *schemas, int n, int *index, sl_diag *d);
+
+/* The most output times a transient scene may ask for ([output] every against [time] end). */
+#define SL_SCENE_OUTPUT_TIMES_MAX 100000
 
 /* Builds the scene of `ini` for the schema. 0 or SL_EBADINPUT with
  * file:line; SL_EFAILED for memory. *out is NULL on failure. */

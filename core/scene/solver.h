@@ -5,6 +5,7 @@
 #ifndef SLUICE_SCENE_SOLVER_H
 #define SLUICE_SCENE_SOLVER_H
 
+#include "core/config/ini.h"
 #include "core/scene/scene.h"
 #include "core/solve/linsolve.h"
 
@@ -12,7 +13,19 @@
 #define SL_SCENE_REUSE_CHOICES "auto|never"
 #define SL_SCENE_ORDERING_CHOICES "auto|amd|colamd|metis"
 
+/* [solver.petsc]: PETSc options as keys without the leading dash (ksp_type = fgmres,
+ * fieldsplit_u_pc_type = hypre); *options gets "-ksp_type fgmres ...", owned by the caller.
+ * A scene file may come from someone else, so it may set only what configures a solve: keys of
+ * the solver families (ksp_, pc_, fieldsplit_, sub_, mg_, mat_mumps_, mat_superlu_, mat_) with
+ * values of letters, digits and "._+-/"; options that write files, print, or start programs
+ * (view, monitor, log, file, debugger, ...) belong to --petsc or PETSC_OPTIONS. */
+int sl_scene_petsc_section(const sl_ini_section *sec, char **options, sl_diag *d);
+
 /* For a system of n unknowns; *name: the solver's name (static). */
 int sl_scene_linsolve(const sl_scene *sc, int32_t n, sl_linsolve **ls, const char **name, sl_diag *d);
+/* The same for a matrix that is never symmetric positive definite (`why` says what it is): a solver that needs
+ * one (cholmod) is bad input found at set-up, not a failure of every step retried down to dt_min. */
+int sl_scene_linsolve_general(const sl_scene *sc, int32_t n, const char *why, sl_linsolve **ls, const char **name,
+                              sl_diag *d);
 
 #endif

@@ -57,6 +57,15 @@ int sl_linsolve_petsc_options(const char *options, sl_diag *d) {
   if (!options || !*options) return 0;
   return no_petsc(&(void *){NULL}, d);
 }
+int sl_linsolve_petsc_scene_options(const char *options, sl_diag *d) { return sl_linsolve_petsc_options(options, d); }
+int sl_linsolve_ranks(int *rank, int *size, sl_diag *d) {
+  (void)d;
+  const char *r = getenv("OMPI_COMM_WORLD_RANK"), *n = getenv("OMPI_COMM_WORLD_SIZE");
+  if (!n) r = getenv("PMI_RANK"), n = getenv("PMI_SIZE");
+  *rank = r ? atoi(r) : 0;
+  *size = n && atoi(n) > 0 ? atoi(n) : 1;
+  return 0;
+}
 #endif
 enum { N_SOLVERS = (int)(sizeof solver_names / sizeof solver_names[0]) };
 /* sl_linsolve_names lists what this build can run; petsc is last and named even without it for a clear error. */
@@ -70,6 +79,12 @@ const char *sl_linsolve_default_name(int32_t n) {
   const char *blas = sl_blas_description();
   int reference = !strncmp(blas, "reference", 9) || !strncmp(blas, "none", 4);
   return n < SL_LINSOLVE_KLU_MAX_UNKNOWNS || reference ? "klu" : "umfpack";
+}
+
+int sl_linsolve_built(const char *name) {
+  for (int i = 0; name && i < N_BUILT; ++i)
+    if (strcmp(name, solver_names[i]) == 0) return 1;
+  return 0;
 }
 
 const char *const *sl_linsolve_names(int *n) {
@@ -185,8 +200,8 @@ void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len) {
   }
 }
 
-int sl_linsolve_set_blocks(sl_linsolve *ls, int32_t split, sl_diag *d) {
-  return ls->ops->set_blocks ? ls->ops->set_blocks(ls->backend, split, d) : 0;
+int sl_linsolve_set_blocks(sl_linsolve *ls, int32_t split, int transient, sl_diag *d) {
+  return ls->ops->set_blocks ? ls->ops->set_blocks(ls->backend, split, transient, d) : 0;
 }
 
 int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {

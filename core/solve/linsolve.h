@@ -88,8 +88,9 @@ typedef struct sl_linsolve_ops {
   /* Optional, an iterative backend: x to a relative residual rtol (solve: to the backend's own tight one);
    * sl_linsolve_solve_rtol then calls it instead of reusing an older factorisation. */
   int (*solve_rtol)(void *backend, const sl_csr *A, const double *b, double *x, double rtol, sl_diag *d);
-  /* Optional: the unknowns [0, split) and [split, n) are the two fields of a saddle point (velocity, pressure). */
-  int (*set_blocks)(void *backend, int32_t split, sl_diag *d);
+  /* Optional: the unknowns [0, split) and [split, n) are the two fields of a saddle point (velocity, pressure);
+   * transient: the velocity block holds a time derivative's mass term. */
+  int (*set_blocks)(void *backend, int32_t split, int transient, sl_diag *d);
   /* Optional: what the backend does, for the run's summary ("fgmres/fieldsplit, 120 iterations"). */
   void (*describe)(void *backend, char *buf, size_t len);
 } sl_linsolve_ops;
@@ -108,9 +109,15 @@ extern const sl_linsolve_ops sl_linsolve_cholmod_ops;
 /* With SLUICE_WITH_PETSC: PETSc's KSP on one rank (core/solve/ls_petsc.c); without, its create says how to
  * build it. */
 extern const sl_linsolve_ops sl_linsolve_petsc_ops;
-/* PETSc options (as on a PETSc command line: "-ksp_type gmres -pc_type ilu"), read before the next solver is
- * created; PETSC_OPTIONS in the environment is read as well. SL_EBADINPUT without PETSc. */
+/* PETSc options as on a PETSc command line ("-ksp_type gmres -pc_type ilu"). The user's (the command line's
+ * --petsc) win over a scene's ([solver.petsc]); PETSC_OPTIONS in the environment wins over both. Each call
+ * replaces that level's options for the solvers created afterwards. SL_EBADINPUT without PETSc. */
 int sl_linsolve_petsc_options(const char *options, sl_diag *d);
+int sl_linsolve_petsc_scene_options(const char *options, sl_diag *d);
+/* This process's rank and the number of ranks it was launched with (mpirun sets OMPI_COMM_WORLD_SIZE or
+ * PMI_SIZE). With PETSc and a launcher, MPI starts here (through PETSc); without PETSc, *size is the
+ * launcher's so that a caller can refuse to run the same scene N times. */
+int sl_linsolve_ranks(int *rank, int *size, sl_diag *d);
 
 typedef struct sl_linsolve sl_linsolve;
 
@@ -133,6 +140,8 @@ const char *sl_linsolve_default_name(int32_t n);
 
 /* The names accepted by sl_linsolve_create, for help text. */
 const char *const *sl_linsolve_names(int *n);
+/* 1 when this build has the solver `name`. */
+int sl_linsolve_built(const char *name);
 
 /* Factorise as needed: symbolic when A's pattern differs from the last one,
  * numeric when A's values generation (or A itself) differs, or after
@@ -143,8 +152,10 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d);
  * non-finite solution is SL_EFAILED. */
 int sl_linsolve_solve(sl_linsolve *ls, const sl_csr *A, const double *b, double *x, sl_diag *d);
 /* The system is a saddle point whose first `split` unknowns are one field (the velocity) and the rest the
- * other (the pressure): a backend that can use it (PETSc's field split) does; the direct ones ignore it. */
-int sl_linsolve_set_blocks(sl_linsolve *ls, int32_t split, sl_diag *d);
+ * other (the pressure), from a transient step (a mass term in the velocity block) or a steady one: a backend
+ * that can use it (PETSc's field split, whose Schur preconditioner depends on it) does; the direct ones
+ * ignore it. */
+int sl_linsolve_set_blocks(sl_linsolve *ls, int32_t split, int transient, sl_diag *d);
 
 /* Force a numeric factorisation at the next solve (values written without
  * sl_csr_touch). */

@@ -32,17 +32,44 @@ enum { PETSC_EXACT_MAX_IT = 10000 };
 typedef struct petsc_state {
   Mat A;
   KSP ksp;
-  Vec b, x;
+  Vec b, x;          /* this rank's rows */
+  Vec x_all;         /* every rank: the whole solution (several ranks) */
+  VecScatter to_all; /* x -> x_all */
+  int32_t r0, r1;    /* the rows this rank owns: [r0, r1) */
+  int size;          /* ranks in PETSC_COMM_WORLD */
   int32_t n, split; /* split > 0: unknowns [0, split) and [split, n) are a saddle point's two fields */
+  int transient;    /* the velocity block has a mass term */
   int configured;   /* the KSP has its type and options */
+  int user_tolerances; /* -ksp_rtol or -ksp_max_it given: they replace the exact solve's */
   long iterations;
 } petsc_state;
 
 static int petsc_started;
 
+/* The option levels, lowest first: a scene's, the user's (--petsc), the environment's (PETSC_OPTIONS, also read
+ * by PetscInitialize). They are inserted in that order before a solver is configured, so a higher level wins. */
+static char *scene_options, *user_options;
+
 static void petsc_finish(void) {
   if (petsc_started) PetscFinalize();
   petsc_started = 0;
+  free(scene_options);
+  free(user_options);
+  scene_options = user_options = NULL;
+}
+
+static int petsc_start(sl_diag *d);
+
+int sl_linsolve_ranks(int *rank, int *size, sl_diag *d) {
+  *rank = 0, *size = 1;
+  if (!petsc_started && !getenv("OMPI_COMM_WORLD_SIZE") && !getenv("PMI_SIZE")) return 0; /* not launched */
+  int rc = petsc_start(d);
+  if (rc) return rc;
+  PetscMPIInt r = 0, n = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &r);
+  MPI_Comm_size(PETSC_COMM_WORLD, &n);
+  *rank = r, *size = n;
+  return 0;
 }
 
 static int petsc_fail(PetscErrorCode e, const char *what, sl_diag *d) {
@@ -57,46 +84,54 @@ static int petsc_fail(PetscErrorCode e, const char *what, sl_diag *d) {
     if (e_) return petsc_fail(e_, (what), d);     \
   } while (0)
 
-/* Options given by sl_linsolve_petsc_options before PETSc starts. */
-static char *pending_options;
-
-int sl_linsolve_petsc_options(const char *options, sl_diag *d) {
+static int keep(char **level, const char *options, sl_diag *d) {
+  free(*level);
+  *level = NULL;
   if (!options || !*options) return 0;
-  if (petsc_started) {
-    PetscErrorCode e = PetscOptionsInsertString(NULL, options);
-    return e ? petsc_fail(e, "reading the options", d) : 0;
+  if (!(*level = strdup(options))) return sl_diag_set(d, SL_ENOMEM, "petsc: out of memory");
+  return 0;
+}
+
+int sl_linsolve_petsc_options(const char *options, sl_diag *d) { return keep(&user_options, options, d); }
+int sl_linsolve_petsc_scene_options(const char *options, sl_diag *d) { return keep(&scene_options, options, d); }
+
+static int insert_levels(sl_diag *d) {
+  const char *levels[3] = {scene_options, user_options, getenv("PETSC_OPTIONS")};
+  static const char *const names[3] = {"[solver.petsc]", "--petsc", "PETSC_OPTIONS"};
+  for (int i = 0; i < 3; ++i) {
+    if (!levels[i] || !*levels[i]) continue;
+    PetscErrorCode e = PetscOptionsInsertString(NULL, levels[i]);
+    if (e) return sl_diag_set(d, SL_EBADINPUT, "petsc: cannot read the options of %s (\"%s\")", names[i], levels[i]);
   }
-  size_t have = pending_options ? strlen(pending_options) : 0, add = strlen(options);
-  char *p = realloc(pending_options, have + add + 2);
-  if (!p) return sl_diag_set(d, SL_ENOMEM, "petsc: out of memory");
-  if (have) p[have++] = ' ';
-  memcpy(p + have, options, add + 1);
-  pending_options = p;
   return 0;
 }
 
 static int petsc_start(sl_diag *d) {
   if (petsc_started) return 0;
-  /* PETSC_OPTIONS (the environment) is read by PetscInitialize */
-  PetscErrorCode e = PetscInitialize(NULL, NULL, NULL, NULL);
+  PetscErrorCode e = PetscInitializeNoArguments();
   if (e) return sl_diag_set(d, SL_EFAILED, "petsc: PetscInitialize failed (error %d)", (int)e);
   petsc_started = 1;
   atexit(petsc_finish);
-  if (pending_options) {
-    e = PetscOptionsInsertString(NULL, pending_options);
-    free(pending_options);
-    pending_options = NULL;
-    if (e) return petsc_fail(e, "reading the options", d);
-  }
   return 0;
 }
 
-/* An option's default, unless the user gave it. */
+/* An option's default, unless the user gave it. The defaults are set in PETSc's global options only while one
+ * solver is configured (cleared after its KSPSetUp), so each solver gets its own and a user's stays the user's. */
+enum { MAX_DEFAULTS = 8 };
+static const char *defaults_set[MAX_DEFAULTS];
+static int n_defaults_set;
+
 static PetscErrorCode option_default(const char *name, const char *value) {
   PetscBool set = PETSC_FALSE;
   PetscErrorCode e = PetscOptionsHasName(NULL, NULL, name, &set);
-  if (e || set) return e;
+  if (e || set || n_defaults_set == MAX_DEFAULTS) return e;
+  defaults_set[n_defaults_set++] = name;
   return PetscOptionsSetValue(NULL, name, value);
+}
+
+static void clear_defaults(void) {
+  for (int i = 0; i < n_defaults_set; ++i) PetscOptionsClearValue(NULL, defaults_set[i]);
+  n_defaults_set = 0;
 }
 
 static int petsc_create(void **backend, sl_diag *d) {
@@ -109,6 +144,8 @@ static int petsc_create(void **backend, sl_diag *d) {
 }
 
 static void petsc_release(petsc_state *s) {
+  if (s->to_all) VecScatterDestroy(&s->to_all);
+  if (s->x_all) VecDestroy(&s->x_all);
   if (s->ksp) KSPDestroy(&s->ksp);
   if (s->A) MatDestroy(&s->A);
   if (s->b) VecDestroy(&s->b);
@@ -123,16 +160,19 @@ static void petsc_destroy(void *backend) {
   free(s);
 }
 
-static int petsc_set_blocks(void *backend, int32_t split, sl_diag *d) {
+static int petsc_set_blocks(void *backend, int32_t split, int transient, sl_diag *d) {
   (void)d;
   petsc_state *s = backend;
   s->split = split;
+  s->transient = transient;
   s->configured = 0;
   return 0;
 }
 
 /* The KSP's type and preconditioner for the system's structure, then the user's options over them. */
 static int configure(petsc_state *s, sl_diag *d) {
+  int rc = insert_levels(d);
+  if (rc) return rc;
   PC pc;
   TRY(KSPGetPC(s->ksp, &pc), "KSPGetPC");
   if (s->split > 0 && s->split < s->n) {
@@ -141,8 +181,10 @@ static int configure(petsc_state *s, sl_diag *d) {
     TRY(KSPSetType(s->ksp, KSPFGMRES), "KSPSetType");
     TRY(PCSetType(pc, PCFIELDSPLIT), "PCSetType");
     IS u, p;
-    TRY(ISCreateStride(PETSC_COMM_SELF, s->split, 0, 1, &u), "ISCreateStride");
-    TRY(ISCreateStride(PETSC_COMM_SELF, s->n - s->split, s->split, 1, &p), "ISCreateStride");
+    /* this rank's rows of each field */
+    int32_t u0 = s->r0, u1 = s->r1 < s->split ? s->r1 : s->split, p0 = s->r0 > s->split ? s->r0 : s->split;
+    TRY(ISCreateStride(PETSC_COMM_WORLD, u1 > u0 ? u1 - u0 : 0, u0, 1, &u), "ISCreateStride");
+    TRY(ISCreateStride(PETSC_COMM_WORLD, s->r1 > p0 ? s->r1 - p0 : 0, p0, 1, &p), "ISCreateStride");
     PetscErrorCode e = PCFieldSplitSetIS(pc, "u", u);
     if (!e) e = PCFieldSplitSetIS(pc, "p", p);
     ISDestroy(&u);
@@ -153,53 +195,127 @@ static int configure(petsc_state *s, sl_diag *d) {
     TRY(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, NULL), "PCFieldSplitSetSchurPre");
     TRY(option_default("-fieldsplit_u_ksp_type", "preonly"), "options");
     TRY(option_default("-fieldsplit_u_pc_type", hypre ? "hypre" : "gamg"), "options");
+    /* BoomerAMG's default strength threshold (0.25, for 2-D scalar Laplacians) coarsens the coupled velocity block
+     * of 2 mu D(u):D(v) badly: 359 FGMRES iterations on the 32 x 32 Stokes cavity, against 47 with 0.7, which
+     * stays mesh-independent (47, 47, 49 at 32, 64, 128 cells a side) */
+    if (hypre) TRY(option_default("-fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.7"), "options");
     TRY(option_default("-fieldsplit_p_ksp_type", "preonly"), "options");
-    TRY(option_default("-fieldsplit_p_pc_type", "jacobi"), "options");
+    /* selfp is B diag(A)^-1 B^T. Steady (viscous) A: S = B A^-1 B^T is spectrally a pressure mass matrix over
+     * mu, which Jacobi of selfp matches (47 iterations on the Stokes cavity at any mesh; BoomerAMG on selfp
+     * does not converge there); a transient step's mass-dominated A makes S and selfp both a pressure
+     * Laplacian, which needs AMG (16 iterations a solve on the boycott vessel; Jacobi does not converge) */
+    TRY(option_default("-fieldsplit_p_pc_type", !s->transient ? "jacobi" : hypre ? "hypre" : "gamg"), "options");
   } else {
     TRY(KSPSetType(s->ksp, KSPGMRES), "KSPSetType");
     TRY(PCSetType(pc, PCILU), "PCSetType");
   }
   TRY(KSPSetPCSide(s->ksp, PC_RIGHT), "KSPSetPCSide");
   TRY(KSPSetNormType(s->ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
-  TRY(KSPSetFromOptions(s->ksp), "KSPSetFromOptions");
+  PetscBool rtol_given = PETSC_FALSE, max_it_given = PETSC_FALSE;
+  TRY(PetscOptionsHasName(NULL, NULL, "-ksp_rtol", &rtol_given), "options");
+  TRY(PetscOptionsHasName(NULL, NULL, "-ksp_max_it", &max_it_given), "options");
+  s->user_tolerances = rtol_given || max_it_given;
+  TRY(KSPSetTolerances(s->ksp, PETSC_EXACT_RTOL, 0.0, PETSC_DEFAULT, PETSC_EXACT_MAX_IT), "KSPSetTolerances");
+  PetscErrorCode e = KSPSetFromOptions(s->ksp);
+  if (!e) e = KSPSetUp(s->ksp); /* the field split's inner solvers read their options here */
+  clear_defaults();
+  if (e) return petsc_fail(e, "setting up the solver", d);
   s->configured = 1;
   return 0;
+}
+
+/* The rows of rank `rank` of `size`: contiguous, with about as many nonzeros each. */
+static void owned_rows(const sl_csr *A, int rank, int size, int32_t *r0, int32_t *r1) {
+  int32_t lo = 0, hi = A->n_rows;
+  if (size > 1) {
+    int64_t nnz = A->row_ptr[A->n_rows];
+    int64_t want0 = nnz * rank / size, want1 = nnz * (rank + 1) / size;
+    while (lo < A->n_rows && A->row_ptr[lo] < want0) ++lo;
+    hi = lo;
+    while (hi < A->n_rows && A->row_ptr[hi] < want1) ++hi;
+    if (rank == size - 1) hi = A->n_rows;
+  }
+  *r0 = lo, *r1 = hi;
 }
 
 static int petsc_symbolic(void *backend, const sl_csr *A, sl_diag *d) {
   petsc_state *s = backend;
   petsc_release(s);
   s->n = A->n_rows;
-  TRY(MatCreate(PETSC_COMM_SELF, &s->A), "MatCreate");
-  TRY(MatSetSizes(s->A, A->n_rows, A->n_cols, A->n_rows, A->n_cols), "MatSetSizes");
-  TRY(MatSetType(s->A, MATSEQAIJ), "MatSetType");
-  TRY(MatSeqAIJSetPreallocationCSR(s->A, (const PetscInt *)A->row_ptr, (const PetscInt *)A->col_idx, A->values),
-      "MatSeqAIJSetPreallocationCSR");
-  TRY(MatCreateVecs(s->A, &s->x, &s->b), "MatCreateVecs");
-  TRY(KSPCreate(PETSC_COMM_SELF, &s->ksp), "KSPCreate");
+  PetscMPIInt rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  s->size = size;
+  owned_rows(A, rank, size, &s->r0, &s->r1);
+  int32_t nloc = s->r1 - s->r0;
+  TRY(MatCreate(PETSC_COMM_WORLD, &s->A), "MatCreate");
+  TRY(MatSetSizes(s->A, nloc, nloc, A->n_rows, A->n_cols), "MatSetSizes");
+  if (size == 1) {
+    TRY(MatSetType(s->A, MATSEQAIJ), "MatSetType");
+    TRY(MatSeqAIJSetPreallocationCSR(s->A, (const PetscInt *)A->row_ptr, (const PetscInt *)A->col_idx, A->values),
+        "MatSeqAIJSetPreallocationCSR");
+  } else { /* every rank holds the whole system; each hands PETSc its own rows */
+    PetscInt *ptr = malloc(((size_t)nloc + 1) * sizeof *ptr);
+    if (!ptr) return sl_diag_set(d, SL_ENOMEM, "petsc: out of memory");
+    for (int32_t i = 0; i <= nloc; ++i) ptr[i] = A->row_ptr[s->r0 + i] - A->row_ptr[s->r0];
+    PetscErrorCode e = MatSetType(s->A, MATMPIAIJ);
+    if (!e)
+      e = MatMPIAIJSetPreallocationCSR(s->A, ptr, (const PetscInt *)A->col_idx + A->row_ptr[s->r0],
+                                       A->values + A->row_ptr[s->r0]);
+    free(ptr);
+    if (e) return petsc_fail(e, "MatMPIAIJSetPreallocationCSR", d);
+    TRY(VecCreateMPI(PETSC_COMM_WORLD, nloc, A->n_rows, &s->b), "VecCreateMPI");
+    TRY(VecDuplicate(s->b, &s->x), "VecDuplicate");
+    TRY(VecScatterCreateToAll(s->x, &s->to_all, &s->x_all), "VecScatterCreateToAll");
+  }
+  if (size == 1) TRY(MatCreateVecs(s->A, &s->x, &s->b), "MatCreateVecs");
+  TRY(KSPCreate(PETSC_COMM_WORLD, &s->ksp), "KSPCreate");
   return 0;
 }
 
 static int petsc_numeric(void *backend, const sl_csr *A, sl_linsolve_stats *st, sl_diag *d) {
   (void)st;
   petsc_state *s = backend;
-  PetscScalar *v;
-  TRY(MatSeqAIJGetArray(s->A, &v), "MatSeqAIJGetArray");
-  memcpy(v, A->values, (size_t)A->nnz * sizeof *v); /* the same pattern, in the same order */
-  TRY(MatSeqAIJRestoreArray(s->A, &v), "MatSeqAIJRestoreArray");
+  if (s->size == 1) {
+    PetscScalar *v;
+    TRY(MatSeqAIJGetArray(s->A, &v), "MatSeqAIJGetArray");
+    memcpy(v, A->values, (size_t)A->nnz * sizeof *v); /* the same pattern, in the same order */
+    TRY(MatSeqAIJRestoreArray(s->A, &v), "MatSeqAIJRestoreArray");
+  } else {
+    for (int32_t i = s->r0; i < s->r1; ++i) {
+      PetscInt row = i, k0 = A->row_ptr[i], nc = A->row_ptr[i + 1] - k0;
+      TRY(MatSetValues(s->A, 1, &row, nc, (const PetscInt *)A->col_idx + k0, A->values + k0, INSERT_VALUES),
+          "MatSetValues");
+    }
+    TRY(MatAssemblyBegin(s->A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    TRY(MatAssemblyEnd(s->A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  }
   TRY(KSPSetOperators(s->ksp, s->A, s->A), "KSPSetOperators");
   if (!s->configured) return configure(s, d);
   return 0;
 }
 
 static int solve_to(petsc_state *s, const double *b, double *x, double rtol, sl_diag *d) {
-  TRY(KSPSetTolerances(s->ksp, rtol, 0.0, PETSC_DEFAULT, PETSC_EXACT_MAX_IT), "KSPSetTolerances");
-  TRY(VecPlaceArray(s->b, b), "VecPlaceArray");
-  TRY(VecPlaceArray(s->x, x), "VecPlaceArray");
+  if (!s->user_tolerances)
+    TRY(KSPSetTolerances(s->ksp, rtol, 0.0, PETSC_DEFAULT, PETSC_EXACT_MAX_IT), "KSPSetTolerances");
+  else
+    KSPGetTolerances(s->ksp, &rtol, NULL, NULL, NULL);
+  /* this rank's part of b (every rank has all of it); the solution gathered on every rank, so that every rank
+   * goes on with the same state */
+  TRY(VecPlaceArray(s->b, b + s->r0), "VecPlaceArray");
+  if (s->size == 1) TRY(VecPlaceArray(s->x, x), "VecPlaceArray");
   PetscErrorCode e = KSPSolve(s->ksp, s->b, s->x);
   VecResetArray(s->b);
-  VecResetArray(s->x);
+  if (s->size == 1) VecResetArray(s->x);
   if (e) return petsc_fail(e, "KSPSolve", d);
+  if (s->size > 1) {
+    TRY(VecScatterBegin(s->to_all, s->x, s->x_all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    TRY(VecScatterEnd(s->to_all, s->x, s->x_all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    const PetscScalar *all;
+    TRY(VecGetArrayRead(s->x_all, &all), "VecGetArrayRead");
+    memcpy(x, all, (size_t)s->n * sizeof *x);
+    TRY(VecRestoreArrayRead(s->x_all, &all), "VecRestoreArrayRead");
+  }
   KSPConvergedReason why;
   PetscInt its = 0;
   TRY(KSPGetConvergedReason(s->ksp, &why), "KSPGetConvergedReason");
@@ -230,7 +346,8 @@ static void petsc_describe(void *backend, char *buf, size_t len) {
   PCType pt = NULL;
   PC pc;
   if (s->ksp && !KSPGetType(s->ksp, &kt) && !KSPGetPC(s->ksp, &pc)) PCGetType(pc, &pt);
-  snprintf(buf, len, "%s/%s, %ld iterations", kt ? kt : "?", pt ? pt : "?", s->iterations);
+  int k = snprintf(buf, len, "%s/%s, %ld iterations", kt ? kt : "?", pt ? pt : "?", s->iterations);
+  if (s->size > 1 && k >= 0 && (size_t)k < len) snprintf(buf + k, len - (size_t)k, ", %d ranks", s->size);
 }
 
 const sl_linsolve_ops sl_linsolve_petsc_ops = {.name = "petsc",

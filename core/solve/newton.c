@@ -25,6 +25,27 @@ static double norm_inf(const double *x, int32_t n) {
   return s;
 }
 
+/* The scale the solution's own terms set for the residual: row by row the
+ * magnitude of the operator's terms at u, t_i = sum_j |A_ij u_j|, over the
+ * rows that are equations (a constrained row, the identity, is left out),
+ * and T = |t|_2. A residual is small when it is small against T: a large
+ * load the pressure absorbs makes T large only where the pressure gradient
+ * is, and the velocity's terms keep their share of it. */
+static double term_scale(const sl_csr *A, const double *u) {
+  double s = 0.0;
+  for (int32_t i = 0; i < A->n_rows; ++i) {
+    double t = 0.0;
+    int equation = 0;
+    for (int32_t p = A->row_ptr[i]; p < A->row_ptr[i + 1]; ++p) {
+      double a = A->values[p];
+      if (A->col_idx[p] != i && a != 0.0) equation = 1;
+      t += fabs(a * u[A->col_idx[p]]);
+    }
+    if (equation) s += t * t;
+  }
+  return sqrt(s);
+}
+
 typedef struct nl_ctx {
   sl_csr *A;
   double *b;
@@ -75,12 +96,42 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
   double res = rc ? NAN : norm2(b, n);
   st->residual0 = st->residual = res;
   int converged = 0;
+  double res_prev = INFINITY;
+  int last_full = 0; /* the last iteration took its full step */
+  double rtol_terms = o.rtol_residual > 0 ? o.rtol_residual : fmax(o.rtol, SL_NEWTON_RTOL_TERMS);
   while (!rc && !converged) {
-    if ((o.atol > 0 && res <= o.atol) || (st->iterations > 0 && res <= o.rtol_residual * st->residual0)) {
+    /* A is the matrix at u here (assembled with b, or current and b computed with it) */
+    double T = term_scale(A, u);
+    st->term_scale = T;
+    if (o.atol > 0 && res <= o.atol) {
       converged = 1;
       break;
     }
+    /* the residual at the round-off of its own terms and no longer falling: no iteration can make it
+       smaller, and the corrections are noise (a flow at rest whose pressure carries the load) */
+    /* the correction the next iteration would make, from the last one and the residual's decrease (error
+       and residual contract alike near the solution, Kelley 1995, Iterative Methods for Linear and Nonlinear
+       Equations, sec. 5.1): below the tolerance at a residual small against its terms, the solve is done
+       without one more solve to measure it */
+    if (!o.linear && st->iterations > 1 && last_full && res <= rtol_terms * T && res_prev > 0) {
+      double next = st->correction * res / res_prev;
+      if (next <= o.rtol) {
+        st->correction = next, st->estimated = 1;
+        converged = 1;
+        break;
+      }
+    }
+    if (!o.linear && st->iterations > 1 && res > 0.5 * res_prev && res <= SL_NEWTON_ROUNDOFF * T) {
+      converged = 1, st->roundoff = 1;
+      break;
+    }
+    res_prev = res;
     if (st->iterations == o.max_iterations) break;
+    if (o.interrupt && *o.interrupt) {
+      rc = sl_diag_set(d, SL_EFAILED, "nonlinear solve: interrupted after %d iterations (residual %.3g from %.3g)",
+                       st->iterations, res, st->residual0);
+      break;
+    }
     /* The same absolute accuracy for every correction, |b - A du| <= linear_rtol |b0| (at most 1e-4 of |b|):
        a later correction, of a residual already reduced, needs fewer digits of its own (the forcing term
        follows the residual's decrease, Eisenstat & Walker 1996, SIAM J. Sci. Comput. 17:16). */
@@ -91,9 +142,16 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
     if (mode == SL_NL_PICARD) ++st->picard_iterations;
     st->correction = norm_inf(du, n_check) / fmax(norm_inf(u, n_check), o.scale);
     if (st->iterations <= SL_NEWTON_HISTORY) st->history[st->iterations - 1] = st->correction;
-    if (o.linear || st->correction <= o.rtol) {
-      /* Linear, or a correction at the tolerance: take it and stop (a line
-       * search at round-off level would only see noise). */
+    if (getenv("SLUICE_NEWTON_TRACE"))
+      fprintf(stderr, "  %s %2d: correction %.3e, residual %.3e (%.3g of the terms' scale %.3e)\n",
+              mode == SL_NL_PICARD ? "picard" : "newton", st->iterations, st->correction, res, T > 0 ? res / T : 0.0,
+              T);
+    if (o.monitor) o.monitor(o.monitor_user, st->iterations, mode == SL_NL_PICARD, st->correction, res, T);
+    if (o.linear || (st->correction <= o.rtol && res <= rtol_terms * T)) {
+      /* Linear, or a correction at the tolerance at a residual small
+       * against its terms: take it and stop (a line search at round-off
+       * level would only see noise). A small correction at a residual that
+       * is not small (a load the pressure has not yet taken up) goes on. */
       for (int32_t i = 0; i < n; ++i) u[i] += du[i];
       if (o.linear) {
         /* R is affine, so -R(u + du) = b - A du: no second assembly. */
@@ -130,6 +188,12 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
     }
     if (rc) break;
     if (!accepted) {
+      if (st->iterations > 1 && res <= SL_NEWTON_ROUNDOFF * T) {
+        /* no decrease from a residual already at the round-off of its terms: u is the solution */
+        if (!full && (rc = assemble(&c, u, mode, d))) break;
+        converged = 1, st->roundoff = 1;
+        break;
+      }
       if (mode == SL_NL_NEWTON && !o.picard_only) {
         /* No decrease along the Newton direction: fall back to Picard at u. */
         mode = SL_NL_PICARD, picard_left = o.picard_fallback;
@@ -143,9 +207,8 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
       break;
     }
     memcpy(u, trial, (size_t)n * sizeof *u);
-    if (getenv("SLUICE_NEWTON_TRACE"))
-      fprintf(stderr, "  %s %2d: step %.3g, correction %.3e, residual %.3e -> %.3e\n",
-              mode == SL_NL_PICARD ? "picard" : "newton", st->iterations, lambda, st->correction, res, trial_res);
+    last_full = lambda == 1.0;
+    if (getenv("SLUICE_NEWTON_TRACE")) fprintf(stderr, "      step %.3g, residual -> %.3e\n", lambda, trial_res);
     res = trial_res;
     st->residual = res;
     if (!full) rc = assemble(&c, u, next, d); /* the matrix at the accepted point */
@@ -155,8 +218,9 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
   if (rc) return rc;
   if (!converged)
     return sl_diag_set(d, SL_EFAILED,
-                       "nonlinear solve: not converged in %d iterations (relative correction %.3g > %.3g, residual "
-                       "%.3g from %.3g)",
-                       st->iterations, st->correction, o.rtol, res, st->residual0);
+                       "nonlinear solve: not converged in %d iterations (relative correction %.3g, tolerance %.3g; "
+                       "residual %.3g from %.3g, %.3g of its terms' scale, tolerance %.3g)",
+                       st->iterations, st->correction, o.rtol, res, st->residual0,
+                       st->term_scale > 0 ? res / st->term_scale : 0.0, rtol_terms);
   return 0;
 }

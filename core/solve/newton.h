@@ -9,7 +9,18 @@
  *
  * The iteration converges when the correction is small,
  *   max |du_i| <= rtol * max(max |u_i|, scale)   over i < n_check
- * (that last correction is applied), or the residual is, |b|_2 <= atol. Each trial step is accepted when the
+ * (that last correction is applied; or the next correction, estimated as
+ * the last one times the residual's decrease after a full step, is) AND the residual at u is small against
+ * the scale the solution's own terms set,
+ *   |b|_2 <= rtol_residual * T,  T = |t|_2,  t_i = sum_j |A_ij u_j|
+ * over the rows that are equations (not constrained): a residual small only
+ * against the first one (a large load not yet taken up by the pressure) is
+ * not convergence. When the residual is at the round-off of those terms,
+ * |b|_2 <= SL_NEWTON_ROUNDOFF T, and an iteration no longer reduces it (by
+ * half), no iteration can improve it and the solve has converged at
+ * round-off (stats.roundoff:
+ * the correction then measures noise, e.g. a velocity of round-off size in
+ * a vessel at rest). An absolute |b|_2 <= atol also ends it. Each trial step is accepted when the
  * residual norm falls (Armijo, sufficient decrease 1e-4 of the predicted
  * one); otherwise the step is halved, down to min_step. A Newton step that
  * finds no decrease switches to Picard iterations (robust, linearly
@@ -31,6 +42,8 @@
 #ifndef SLUICE_SOLVE_NEWTON_H
 #define SLUICE_SOLVE_NEWTON_H
 
+#include <signal.h>
+
 #include "core/solve/linsolve.h"
 #include "core/solve/sparse.h"
 #include "core/util/diag.h"
@@ -43,8 +56,8 @@ typedef int (*sl_nl_assemble_fn)(void *user, const double *u, sl_nl_mode mode, s
 typedef struct sl_newton_opts {
   double rtol;          /* on the correction; default 1e-8 */
   double atol;          /* on |b|_2; default 0 (unused) */
-  double rtol_residual; /* also converged when |b|_2 <= rtol_residual |b0|_2 (a solution at round-off
-                           whose correction test cannot pass, e.g. u = 0); default 0 (unused) */
+  double rtol_residual; /* the residual's tolerance against the terms' scale T; default max(rtol,
+                           SL_NEWTON_RTOL_TERMS) */
   double scale;         /* floor of the solution scale in the correction test; default 1e-12 */
   int n_check;          /* entries entering the correction test; 0: all */
   int max_iterations;   /* default 30 */
@@ -57,7 +70,20 @@ typedef struct sl_newton_opts {
   double linear_rtol;   /* each correction's relative residual |b - A du|_2 <= linear_rtol |b|_2, so that
                            the solver may reuse an older factorisation (sl_linsolve_solve_rtol); default
                            SL_NEWTON_LINEAR_RTOL; negative: direct solves. A linear problem solves directly. */
+  /* Called once per iteration before its correction is taken (--monitor): the iteration (from 1), whether
+     it is a Picard one, its relative correction, the residual at u and the terms' scale. May be NULL. */
+  void (*monitor)(void *user, int iteration, int picard, double correction, double residual, double terms);
+  void *monitor_user;
+  /* When set (asynchronously, a signal): stop before the next iteration with SL_EFAILED, u the last iterate
+     (steady solves; a transient step finishes and the loop stops after it). NULL: none. */
+  volatile sig_atomic_t *interrupt;
 } sl_newton_opts;
+
+/* The residual's default tolerance against the terms' scale (with rtol, the larger), and the level at which
+ * it is at round-off: a sum of terms of size T is exact to a few ulps of T per term (Higham 2002, sec. 4.2),
+ * and the assembly adds some tens of terms per entry. */
+#define SL_NEWTON_RTOL_TERMS 1e-10
+#define SL_NEWTON_ROUNDOFF (256.0 * 2.220446049250313e-16)
 
 /* The default linear_rtol: far below any Newton tolerance, so that the
  * corrections are those of direct solves to every digit the convergence
@@ -76,6 +102,10 @@ typedef struct sl_newton_stats {
   int backtracks;
   double residual0, residual; /* |b|_2 at the start and at the end */
   double correction;          /* the last relative correction */
+  double term_scale;          /* T of the last iterate (see above) */
+  int roundoff;               /* converged with the residual at the round-off of its terms */
+  int estimated;              /* correction is the next one's estimate (the last one times the residual's
+                                 decrease), below the tolerance, and no further solve was made */
   double history[SL_NEWTON_HISTORY]; /* relative correction of each iteration */
   double t_assembly;          /* wall seconds in the callback */
 } sl_newton_stats;

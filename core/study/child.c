@@ -16,6 +16,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "core/io/output.h"
+
 static double monotonic(void) {
   struct timespec ts;
   if (clock_gettime(CLOCK_MONOTONIC, &ts)) return NAN;
@@ -167,12 +169,4 @@ int sl_child_run(const sl_child_opts *o, sl_child_result *r) {
   return 0;
 }
 
-void sl_child_remove_output(const char *path) {
-  char xmf[4096];
-  size_t len = strlen(path);
-  remove(path);
-  if (len < 3 || len >= sizeof xmf || strcmp(path + len - 3, ".h5") != 0) return;
-  memcpy(xmf, path, len - 3);
-  memcpy(xmf + len - 3, ".xmf", 5);
-  remove(xmf);
-}
+void sl_child_remove_output(const char *path) { sl_output_remove(path); }

@@ -7,6 +7,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "core/plugin/guard.h"
+
 static double wall_now(void) {
   struct timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -101,6 +103,7 @@ static int write_state(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_
     ck.n_arrays = na, ck.arrays = arr;
     rc = sl_output_write_checkpoint(out, &ck, d);
   }
+  if (!rc) res->saved_time = t, res->saved_time_valid = 1;
   res->output += wall_now() - w0;
   res->cpu_output += cpu_now() - c0;
   return rc;
@@ -112,7 +115,10 @@ static int run_steady(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_o
                       sl_diag *d) {
   double *u = L->info->u;
   long steps = 0, its = 0;
+  sl_guard_set_clock(0.0, 0.0);
   int rc = ops->steady(self, u, &steps, &its, d);
+  char fatal[1024];
+  if (sl_guard_fatal(fatal, sizeof fatal)) rc = sl_diag_set(d, SL_EFAILED, "%s", fatal); /* never retried */
   L->step = res->steps = steps;
   res->nonlinear_iterations += its;
   /* the state reached, also when the solve failed: the history of one state */
@@ -178,6 +184,7 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
     sl_step st = {.t = b->t, .dt = hh, .mass_coef = s.mass_coef, .history = hist, .predictor = pred, .u = trial,
                   .state = b->past[0], .writes = writes};
     sl_diag dn;
+    sl_guard_set_clock(b->t + hh, hh); /* the closures see the time level being solved */
     int its = 0, nrc = ops->step(self, &st, &its, &dn);
     res->nonlinear_iterations += its;
     double err = 0.0;
@@ -187,6 +194,11 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
       for (int32_t i = 0; i < n; ++i) rate[i] = s.mass_coef * trial[i] + hist[i]; /* the BDF du/dt at t + hh */
       st.dudt = rate;
       coupled_failed = (nrc = ops->complete(self, &st, &dn)) != 0;
+    }
+    char fatal[1024];
+    if (sl_guard_fatal(fatal, sizeof fatal)) { /* a closure's fatal failure is not retried with a smaller step */
+      rc = sl_diag_set(d, SL_EFAILED, "at t = %.6g: %s", b->t, fatal);
+      break;
     }
     if (nrc != 0 || err > 1.0) {
       L->rejected++;
@@ -209,6 +221,7 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
       continue;
     }
     sl_bdf_accept(b, &s, trial);
+    if (fabs(b->t - t_stop) <= eps_t) b->t = t_stop; /* on the output time or the end exactly, as above */
     if (ops->accept) {
       int steady = 0;
       ops->accept(self, &st, &steady);
@@ -242,8 +255,8 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
   long best = 0;
   for (int k = 0; k < N_LIMITS; ++k)
     if (limit_count[k] > best) best = limit_count[k], res->step_limit = limits[k];
-  if (rc == SL_EFAILED || rc == SL_ENOMEM) { /* keep the last good state */
-    sl_diag d2;
+  if ((rc == SL_EFAILED || rc == SL_ENOMEM) && !(res->saved_time_valid && res->saved_time == b->t)) {
+    sl_diag d2; /* keep the last accepted state (unless it is the one just written) */
     write_state(L, ops, self, out, b->t, b->past[0], h, b, res, &d2);
   }
 out:
@@ -283,9 +296,15 @@ static int run_fixed(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_ou
     int writes = every > 0 ? t + hh >= next_out * every - eps_t : 0;
     writes |= t + hh >= end - eps_t || steps_here + 1 >= tc->max_steps;
     sl_step st = {.t = t, .dt = hh, .writes = writes};
+    sl_guard_set_clock(t + hh, hh);
     int its = 0, src = ops->step(self, &st, &its, &ds);
     res->solve += clock_cpu() - c0;
     res->nonlinear_iterations += its;
+    char fatal[1024];
+    if (sl_guard_fatal(fatal, sizeof fatal)) { /* not retried with a smaller step */
+      rc = sl_diag_set(d, SL_EFAILED, "at t = %.6g: %s", t, fatal);
+      break;
+    }
     if (src < 0) {
       rc = sl_diag_set(d, -src, "at t = %.6g: %s", t, ds.msg);
       break;
@@ -301,7 +320,10 @@ static int run_fixed(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_ou
       continue;
     }
     if (ops->accept) ops->accept(self, &st, &steady);
-    t += hh, ++step, ++steps_here;
+    /* a step that ends on an output time or the end up to round-off ends there exactly: the times written are
+       the scene's (60, not 59.99999999999663 after 1200 steps of 0.05) */
+    t = fabs(t + hh - t_stop) <= eps_t ? t_stop : t + hh;
+    ++step, ++steps_here;
     L->t = t, L->step = step;
     if (h < dt_cfg) h = fmin(dt_cfg, 2.0 * h);
     if (o->monitor) {
@@ -327,8 +349,8 @@ static int run_fixed(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_ou
     snprintf(res->stop_reason, sizeof res->stop_reason,
              "stopped after max_steps = %ld steps at t = %.6g, before the end time %g (checkpoint saved)",
              tc->max_steps, t, end);
-  if (rc == SL_EFAILED || rc == SL_ENOMEM) { /* keep the last good state */
-    sl_diag d2;
+  if ((rc == SL_EFAILED || rc == SL_ENOMEM) && !(res->saved_time_valid && res->saved_time == t)) {
+    sl_diag d2; /* keep the last accepted state (unless it is the one just written) */
     write_state(L, ops, self, out, t, NULL, h, NULL, res, &d2);
   }
   return rc;
@@ -337,6 +359,8 @@ static int run_fixed(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_ou
 int sl_time_loop_run(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_output *out, const sl_run_opts *o,
                      sl_run_result *res, sl_diag *d) {
   res->rejected_steps = L->rejected;
+  sl_guard_clear_fatal();
+  sl_guard_set_clock(L->info->integrator == SL_INTEGRATE_BDF ? L->bdf.t : L->t, 0.0); /* until the first step */
   int rc;
   if (L->tc->scheme == SL_SCHEME_STEADY && L->info->has_steady) rc = run_steady(L, ops, self, out, res, d);
   else if (L->info->integrator == SL_INTEGRATE_BDF) rc = run_bdf(L, ops, self, out, o, res, d);

@@ -30,6 +30,7 @@
 #include "core/util/diag.h"
 
 struct sl_scene;
+struct sl_nl_report;
 struct sl_run_result;
 
 enum { SL_STEP_RETRY = 1 };
@@ -77,6 +78,9 @@ typedef struct sl_model_stats {
   long solves_skipped; /* steps whose result was known without a solve */
   int converged;             /* steady: the (last) solve converged */
   double correction, residual0, residual;
+  double term_scale; /* the last solve's residual scale set by its terms (core/solve/newton.h) */
+  int roundoff;      /* the last solve converged with its residual at the round-off of its terms */
+  int estimated;     /* its correction is the estimate of the next one (core/solve/newton.h) */
   char coupling_summary[256]; /* the model's own one line, or "" */
   char linear_summary[256];
   char stop_reason[256];      /* a steady solve's: set by the model */
@@ -123,13 +127,19 @@ typedef struct sl_run_opts {
   /* Called after every accepted step (progress display); may be NULL. */
   void (*monitor)(void *user, double t, double dt, long step, int nonlinear_iterations);
   void *monitor_user;
-  volatile sig_atomic_t *interrupt; /* set asynchronously (Ctrl-C): stop after the step, save */
+  volatile sig_atomic_t *interrupt; /* set asynchronously (Ctrl-C, SIGTERM): stop after the step, save */
+  /* Called at every nonlinear iteration (core/scene/scene.h's sl_nl_report); may be NULL. */
+  void (*nonlinear)(void *user, const struct sl_nl_report *r);
+  void *nonlinear_user;
+  int overwrite;                    /* the output may replace files sluice did not write */
 } sl_run_opts;
 
 /* What a run did. */
 typedef struct sl_run_result {
   long steps, rejected_steps, nonlinear_iterations;
   double t_start, t_end, t_reached;
+  double saved_time;    /* the time of the last state written with its checkpoint (saved_time_valid) */
+  int saved_time_valid;
   const char *step_limit; /* what limited the step most often (static string) or NULL */
   char output_path[4096];
   char stop_reason[256];  /* why the run ended, one line ("" when it failed: the error says why) */

@@ -169,6 +169,10 @@ typedef struct sl_error {
  *   dout        NULL when no derivatives are wanted. Otherwise dout[k*n_in + i]
  *               receives d out_k / d in_i for every differentiable input i and
  *               every non-NULL output k; the other slots are NULL.
+ *   t, dt       the time level being solved and its step: a step from t0 to
+ *               t0 + h evaluates at t = t0 + h, dt = h (its sub-steps and
+ *               iterations too); the steady solve, the initial state and
+ *               `sluice closure eval` at t = 0, dt = 0
  * All arrays are host-owned, 64-byte aligned, and do not alias. */
 typedef struct sl_eval_args {
   int32_t Q;

@@ -49,7 +49,20 @@ typedef struct sluice_open_opts {
    * the scene names (the default). */
   int scan_all;
   int timing; /* time each closure call (what sluice run --profile reports) */
+  /* PETSc options for [solver] linear = petsc ("-ksp_monitor -pc_type lu"), over the scene's [solver.petsc];
+   * bad input when sluice was built without PETSc (NULL: none) */
+  const char *petsc_options;
+  /* The scene's [plugins] path names folders of libraries to load: refused (bad input, the key named) unless this
+   * is set (sluice run --allow-plugin-path). */
+  int allow_plugin_path;
+  /* Each batched closure call is stopped after this many seconds (0: no limit), and the run fails naming it. */
+  double closure_time_limit;
 } sluice_open_opts;
+
+/* The process's rank and the number of ranks it was launched with by mpirun (0 and 1 otherwise). With PETSc,
+ * the ranks share the linear solves and every rank keeps the whole state; rank 0 alone should write output.
+ * Starts MPI when launched by mpirun; call it before sluice_open. */
+int sluice_ranks(int *rank, int *size, sluice_error *e);
 
 /* Reads the scene file (its includes, the overrides) and finds its model:
  * an unreadable file, an unknown model or a bad override is bad input. */
@@ -67,11 +80,25 @@ int sluice_write_config(const sluice *s, FILE *f, sluice_error *e);
 
 /* Every check a run makes before it writes anything (the keys against the
  * model's schema, the closures created, the mesh built, the model set up),
- * without running. With report, a summary of the closures and the mesh. */
+ * without running. With report, a summary of the closures and the mesh.
+ * The closures' code runs in the calling process: `sluice run --check` calls
+ * this in a child process (docs/trust-plugins.md). */
 int sluice_check(sluice *s, FILE *report, sluice_error *e);
+/* The same with a restart's checkpoint read and checked against the scene (restart NULL: none). */
+int sluice_check_restart(sluice *s, const char *restart, FILE *report, sluice_error *e);
 
 /* The simulated time the run spans, for a progress display (after sluice_check or sluice_run). */
 int sluice_time_span(sluice *s, double *t0, double *t1, sluice_error *e);
+
+/* One nonlinear iteration: the time its step ends at (steady: 0), the continuation stage (0 of 0 without
+ * one), the iteration (from 1), whether it is a Picard iteration, its relative correction, the residual at
+ * its start and the scale the solution's own terms set for the residual. */
+typedef struct sluice_nonlinear {
+  double t;
+  long stage, n_stages;
+  int iteration, picard;
+  double correction, residual, terms;
+} sluice_nonlinear;
 
 typedef struct sluice_run_opts {
   const char *scene_path; /* for the default output name (NULL: the opened file's) */
@@ -83,7 +110,12 @@ typedef struct sluice_run_opts {
   void *progress_user;
   volatile sig_atomic_t *interrupt; /* set asynchronously: stop after the step and save */
   struct sluice_summary *live;      /* when not NULL: kept up to date before each progress call */
+  /* at every nonlinear iteration (NULL: not called) */
+  void (*nonlinear)(void *user, const struct sluice_nonlinear *r);
+  void *nonlinear_user;
+  int overwrite; /* the output may replace files sluice did not write (never the scene file itself) */
 } sluice_run_opts;
+
 
 /* Why a numeric factorisation was computed: sluice_refactor_reason_name(k) for k < SLUICE_REFACTOR_REASONS
  * ("first", "pattern", "direct", "forced", "iterations", "stagnation", "slow", "breakdown", "fresh"). */
@@ -105,6 +137,8 @@ typedef struct sluice_linear {
 typedef struct sluice_summary {
   long steps, rejected_steps, nonlinear_iterations;
   double t_start, t_end, t_reached;
+  double saved_time;    /* the time of the last state saved with its checkpoint, when saved_time_valid */
+  int saved_time_valid;
   const char *step_limit; /* what limited the step most often, or NULL */
   char output_path[4096];
   char stop_reason[256];      /* why the run ended ("" when it failed: the error says why) */

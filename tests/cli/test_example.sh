@@ -14,6 +14,8 @@ pass=0 fail=0
 check() { if eval "$2"; then pass=$((pass+1)); else fail=$((fail+1)); echo "failed: $1"; fi; }
 # The installed command finds its own built-in closures...
 check "installed sluice lists ergun" '"$sluice" closures | grep -q "^drag *ergun"'
+# ...with the index beside them (docs/trust-plugins.md)
+check "the plugin index is installed" '[ -n "$(find "$work/prefix" -path "*/sluice/plugins/closures.index" -size +1k)" ]'
 # ...and the new closure only through the search path.
 check "not found without the path" '! "$sluice" closure describe my_power_law > /dev/null 2>&1'
 export SLUICE_PLUGIN_PATH="$work/example"
@@ -21,6 +23,7 @@ check "listed with the path" '"$sluice" closures | grep -q "^viscosity *my_power
 # consistency 0.5, n 0.6: 0.5 * 32^-0.4 = 0.125 exactly.
 out=$("$sluice" closure eval my_power_law --set consistency=0.5 --set n=0.6 --at "shear_rate=32")
 check "evaluated by name: 0.5 * 32^-0.4 = 0.125" '[ "$(tail -n 1 <<<"$out")" = "32,0.125" ]'
+check "closure index lists it" '"$sluice" closure index "$work/example" > /dev/null && grep -qx "viscosity my_power_law my_closure.so" "$work/example/closures.index"'
 check "passes the conformance battery" '"$sluice" check-closure "$work/example/my_closure.so" > "$work/check.log"'
 # A program embedding the core through sluice/sluice.h, built with the installed pkg-config file: the Stokes
 # cavity in 4 fixed BDF1 steps of 0.1 to t = 0.4.

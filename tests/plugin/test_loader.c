@@ -36,7 +36,7 @@ static void expect_refused(const char *name, const char *expect) {
 static sl_battery_result battery_on(const char *name) {
   sl_registry *r;
   sl_diag d;
-  sl_battery_result res = {0, 0, 0};
+  sl_battery_result res = {0, 0, 0, NULL, NULL};
   sl_library *lib;
   if (sl_registry_create(&r, NULL, 0, &d) || sl_registry_add_library(r, lib_path(name), &lib, &d)) {
     fprintf(stderr, "%s\n", d.msg);
@@ -239,7 +239,7 @@ static const sl_closure_desc bad_desc = {
 static void test_battery_rechecks_schema(void) {
   sl_library lib = {.path = "(in the test program)"};
   sl_closure_entry e = {&bad_desc, &lib};
-  sl_battery_result res = {0, 0, 0};
+  sl_battery_result res = {0, 0, 0, NULL, NULL};
   sl_battery_run(&e, NULL, &res);
   CHECK_MSG(res.failed == 1, "bad default: %d failed", res.failed);
 }

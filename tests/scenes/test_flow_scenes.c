@@ -206,7 +206,7 @@ static void viscometer(void) {
   double xy[2 * N], uz[N], ut[N], ur[N], ez_max = 0.0, et_max = 0.0, ur_max = 0.0;
   for (int i = 0; i < N; ++i) xy[2 * i] = ri + (ro - ri) * (i + 1) / (N + 1), xy[2 * i + 1] = 0.05;
   if (sample("viscometer.h5", "velocity", 0, N, xy, ur) || sample("viscometer.h5", "velocity", 1, N, xy, uz) ||
-      sample("viscometer.h5", "velocity", 2, N, xy, ut))
+      sample("viscometer.h5", "u_theta", 0, N, xy, ut))
     return;
   for (int i = 0; i < N; ++i) {
     double r = xy[2 * i];

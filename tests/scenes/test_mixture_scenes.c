@@ -311,9 +311,9 @@ static void migration_couette(void) {
   double xy[16], v[8];
   for (int i = 0; i < 8; ++i) xy[2 * i] = tr[i] < 1.0 ? tr[i] : 1.0, xy[2 * i + 1] = 0.0625;
   sl_sample s;
-  if (sl_sample_points(out, "velocity", INFINITY, 8, xy, &s, &d) == 0) {
+  if (sl_sample_points(out, "u_theta", INFINITY, 8, xy, &s, &d) == 0) {
     double wv = 0.0;
-    for (int i = 0; i < 8; ++i) v[i] = s.values[(size_t)i * s.components + 2], wv = fmax(wv, fabs(v[i] - tv[i]));
+    for (int i = 0; i < 8; ++i) v[i] = s.values[(size_t)i * s.components], wv = fmax(wv, fabs(v[i] - tv[i]));
     printf("  migration_couette: max |v - table| = %.4f of the wall speed\n", wv);
     CHECK_MSG(wv <= 0.01, "swirl off by %.4f", wv);
     sl_sample_free(&s);

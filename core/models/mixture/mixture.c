@@ -659,7 +659,8 @@ static int write(mixture *x, sl_output *out, sl_diag *d) {
   int rc = x->fields & F_PHI ? sl_output_write_field(out, "phi", SL_CENTRE_CELL, 1, x->phi, d) : 0;
   double inv = sl_transport_mass(x->tr, x->phi);
   double err = x->inventory0 + x->inflow > 0.0 ? (inv - x->inventory0 - x->inflow) / (x->inventory0 + x->inflow) : 0.0;
-  if (!rc) rc = sl_output_write_scalar(out, "solids_inventory", inv, d);
+  /* the solids volume per unit depth (planar) or per radian (axisymmetric) */
+  if (!rc) rc = sl_output_write_scalar_unit(out, "solids_inventory", x->axi ? "m^3/rad" : "m^2", inv, d);
   if (!rc) rc = sl_output_write_scalar(out, "solids_conservation_error", err, d);
   for (int k = 0; k < x->n_levels && !rc; ++k) {
     char name[64];

@@ -450,14 +450,18 @@ struct sl_flow {
   double rho_solid;
   sl_flow_rider rider;
   const char *linear; /* the solver's name */
-  /* The residual's round-off (see solve): the largest initial residual of
-   * the run, and whether a solve has already ended there. */
-  double newton_scale[2];
   /* Solves whose result is known ([solver] skip_known): */
   int column_at_rest; /* a 1-D column between walls: div u = 0 makes u = 0 whatever the load */
   int unforced;       /* walls at rest all round, no body force, no rotation: only the rider loads it */
   int fixed_point;    /* the last accepted solve returned its start and the rider's phi has not changed since */
   int solved, solved_to_start; /* the last step's: solved (not skipped), and its result was its start */
+  /* what the nonlinear iterations are reported with (sc->hooks): the time solved for, the continuation stage */
+  double t_solve;
+  long stage, n_stages;
+  /* the velocity a transient step may reach: SL_FLOW_GROWTH_FACTOR times the scale the data set, without the
+     boundary speeds (measured per step at the constrained dofs); see velocity_scale */
+  double u_data;
+  const char *u_data_what;
   sl_model_stats st;
 };
 
@@ -496,12 +500,18 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
   const sl_th_space *th = f->th;
   int rc = 0;
   if (f->fields & F_VELOCITY) {
-    /* in the frame: in-plane components, then the out-of-plane/swirl one as component 2 */
+    /* in the frame: in-plane components, then the out-of-plane one as component 2; axisymmetric, the
+     * swirl is not a direction of the (r, z) plane: velocity (u_r, u_z, 0) and u_theta beside it */
+    int swirl = f->ph.axisymmetric && th->n_comp == 3 && th->mesh->dim == 2;
     memset(f->work, 0, (size_t)th->vel->n_nodes * 3 * sizeof *f->work);
     for (int32_t i = 0; i < th->vel->n_nodes; ++i)
-      for (int c = 0; c < th->n_comp; ++c)
+      for (int c = 0; c < th->n_comp - swirl; ++c)
         f->work[3 * i + (c < th->mesh->dim ? c : 2)] = u[sl_th_vel_dof(th, c, th->vel->node_dof[i])];
     rc = sl_output_write_field(out, "velocity", SL_CENTRE_NODE, 3, f->work, d);
+    if (!rc && swirl) {
+      for (int32_t i = 0; i < th->vel->n_nodes; ++i) f->work[i] = u[sl_th_vel_dof(th, 2, th->vel->node_dof[i])];
+      rc = sl_output_write_field(out, "u_theta", SL_CENTRE_NODE, 1, f->work, d);
+    }
   }
   if (!rc && (f->fields & F_PRESSURE)) {
     /* P1 pressure at every velocity node: the vertices carry their values,
@@ -554,7 +564,9 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
     if (!f->riding) rc = sl_face_flux_conservative(f->ff, u, 0.0, f->q, NULL, d);
     if (!rc && q) {
       sl_stream_function_nodes(th, &f->pg, q, f->psi, f->node_psi);
-      rc = sl_output_write_field(out, "stream_function", SL_CENTRE_NODE, 1, f->node_psi, d);
+      /* Stokes' stream function of the (r, z) plane has the units of a flow rate per radian */
+      rc = sl_output_write_field_unit(out, "stream_function", f->ph.axisymmetric ? "m^3/s" : "m^2/s",
+                                      SL_CENTRE_NODE, 1, f->node_psi, d);
     }
   }
   return rc;
@@ -562,48 +574,38 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
 
 int sl_flow_checkpoint(sl_flow *f, sl_checkpoint_array *a, int max) {
   /* a restart starts with a fresh factorisation: so does the run that goes on, bit for bit the same */
+  (void)a, (void)max;
   sl_linsolve_drop_numeric(f->ls);
-  if (max < 1) return 0;
-  snprintf(a[0].name, sizeof a[0].name, "newton_scale"); /* a restart tests convergence as the run did */
-  a[0].n = 2, a[0].data = f->newton_scale;
-  return 1;
+  return 0;
 }
 
 int sl_flow_restore(sl_flow *f, const sl_checkpoint *ck, sl_diag *d) {
-  (void)d;
-  const sl_checkpoint_array *ns = sl_checkpoint_find(ck, "newton_scale");
-  if (ns && ns->n == 2) f->newton_scale[0] = ns->data[0], f->newton_scale[1] = ns->data[1];
+  (void)f, (void)ck, (void)d;
   return 0;
 }
 
 /* ---- solves ---------------------------------------------------------------- */
 
-/* A residual this far below the largest initial residual of the run (its
- * forcing: the lid, the buoyancy) is at round-off. A flow nearly at rest
- * under a large load that the pressure carries (a suspension close to
- * packing) gets there in one iteration, and then no relative test can pass:
- * the corrections are noise and the predictor's residual, the reference of
- * the relative residual test, is already tiny. Such a solve is converged.
- * Ordinary solves pass their own tests first and are not touched; once one
- * has ended at round-off, the later ones stop there (atol). */
-#define NEWTON_ROUNDOFF 1e-13
+static void report_iteration(void *user, int iteration, int picard, double correction, double residual,
+                             double terms) {
+  const sl_flow *f = user;
+  sl_nl_report r = {.t = f->t_solve, .stage = f->stage, .n_stages = f->n_stages, .iteration = iteration,
+                    .picard = picard, .correction = correction, .residual = residual, .terms = terms};
+  f->sc->hooks.nonlinear(f->sc->hooks.user, &r);
+}
 
-static int solve(sl_flow *f, double *u, int *iterations, sl_diag *d) {
+/* A steady solve stops at an interrupt between its iterations; a transient step is finished first. */
+static int solve_opts(sl_flow *f, double *u, int *iterations, int steady, sl_diag *d) {
   sl_newton_stats st;
   double c0 = cpu();
-  double *scale = &f->newton_scale[0], *engaged = &f->newton_scale[1];
-  f->nopts.atol = *engaged ? NEWTON_ROUNDOFF * *scale : 0.0;
-  int rc = sl_flow_problem_solve(&f->prob, u, f->ls, &f->nopts, &st, d);
-  if (isfinite(st.residual0) && st.residual0 > *scale) *scale = st.residual0;
-  if (rc == SL_EFAILED && st.iterations > 0 && isfinite(st.residual) && st.residual <= NEWTON_ROUNDOFF * *scale) {
-    rc = 0; /* u is the last iterate, whose residual st.residual is */
-    *engaged = 1.0;
-    f->st.roundoff_accepted++;
-  } else if (rc == 0 && f->nopts.atol > 0.0 && st.residual <= f->nopts.atol) {
-    f->st.roundoff_accepted++;
-  }
+  sl_newton_opts o = f->nopts;
+  if (f->sc->hooks.nonlinear) o.monitor = report_iteration, o.monitor_user = f;
+  if (steady) o.interrupt = f->sc->hooks.interrupt;
+  int rc = sl_flow_problem_solve(&f->prob, u, f->ls, &o, &st, d);
+  if (rc == 0 && st.roundoff) f->st.roundoff_accepted++;
   if (iterations) *iterations = st.iterations;
   f->st.correction = st.correction;
+  f->st.roundoff = st.roundoff, f->st.term_scale = st.term_scale, f->st.estimated = st.estimated;
   f->st.residual0 = st.residual0, f->st.residual = st.residual;
   f->st.matrix_assemblies += st.assemblies, f->st.residual_assemblies += st.residuals;
   f->st.assembly += st.t_assembly;
@@ -612,10 +614,45 @@ static int solve(sl_flow *f, double *u, int *iterations, sl_diag *d) {
   return rc;
 }
 
+static int solve(sl_flow *f, double *u, int *iterations, sl_diag *d) { return solve_opts(f, u, iterations, 0, d); }
+
 static int force_depends_on_t(const physics *ph) {
   for (int c = 0; c < MAX_COMP; ++c)
     if (ph->force_expr[c] && sl_expr_uses(ph->force_expr[c], 2)) return 1;
   return 0;
+}
+
+/* A transient step whose velocity grows without bound is rejected and the run stops: |u| above
+ * SL_FLOW_GROWTH_FACTOR times the largest speed the data set, the boundary speeds at the step's end (the
+ * constrained dofs), the initial velocity, the free-fall speed sqrt(2 F L / rho) of the body force and the
+ * buoyancy F over the domain's size L, the Bernoulli speed sqrt(2 |p| / rho) of a given pressure or traction and
+ * the frame's |omega| L. A flow the data drive does not leave these by two orders of magnitude (a lid-driven
+ * cavity stays below its lid's speed at any Re; a 10:1 contraction speeds its inflow up tenfold); an unstable
+ * time integration or an unresolved flow does (issue 25: |u| 1.9e5 under a lid of 1). */
+#define SL_FLOW_GROWTH_FACTOR 100.0
+
+static int check_growth(const sl_flow *f, const double *u, double t, sl_diag *d) {
+  const sl_flow_problem *p = &f->prob;
+  int32_t nv = f->th->p_offset;
+  double u_bc = 0.0, umax = 0.0;
+  for (int32_t k = 0; k < p->n_fixed; ++k)
+    if (p->fixed[k] < nv) u_bc = fmax(u_bc, fabs(u[p->fixed[k]]));
+  int32_t at = 0;
+  for (int32_t i = 0; i < nv; ++i)
+    if (fabs(u[i]) > umax || !(fabs(u[i]) <= umax)) {
+      umax = fabs(u[i]), at = i;
+      if (!isfinite(umax)) break;
+    }
+  double scale = fmax(u_bc, f->u_data), bound = SL_FLOW_GROWTH_FACTOR * scale;
+  if (scale > 0.0 && umax <= bound) return 0;
+  if (scale == 0.0 && umax == 0.0) return 0; /* nothing drives it, nothing moves */
+  if (scale == 0.0 && isfinite(umax)) return 0; /* no scale to judge by (round-off of a vessel at rest) */
+  return sl_diag_set(d, SL_EFAILED,
+                     "the velocity grew without bound in the step to t = %.6g: |u| = %.3g (unknown %d) exceeds %g "
+                     "times the speed the data set, %.3g (%s); the step is rejected (a smaller dt, a finer mesh or "
+                     "a viscosity closure may resolve the flow)",
+                     t, umax, (int)at, SL_FLOW_GROWTH_FACTOR, scale,
+                     u_bc >= f->u_data ? "the boundary speed" : f->u_data_what);
 }
 
 int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
@@ -626,7 +663,7 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
     return -rc;
   size_t bytes = (size_t)f->th->n_dofs * sizeof *s->u;
   f->solved = 0;
-  f->ph.t = s->t + s->dt;
+  f->ph.t = f->t_solve = s->t + s->dt;
   /* Skip what is known: a vessel at rest under no load stays at rest; a closed column's velocity is 0 and its
      pressure is needed only when written; a flow at a fixed point whose phi has not changed gives itself again. */
   if (f->sc->solver.skip_known && s->state) {
@@ -646,6 +683,7 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
   }
   if (f->riding && f->rider.prepare && (rc = f->rider.prepare(f->rider.user, s->dt, d))) return sl_step_code(rc);
   rc = solve(f, s->u, iterations, d);
+  if (rc == 0 && (rc = check_growth(f, s->u, s->t + s->dt, d))) return -rc;
   f->solved = 1;
   if (rc == 0 && f->column_at_rest) memset(s->u, 0, (size_t)f->th->p_offset * sizeof *s->u);
   f->solved_to_start = rc == 0 && s->state && memcmp(s->u, s->state, bytes) == 0;
@@ -672,53 +710,97 @@ static int rebuild_physics(sl_flow *f, sl_diag *d) {
   return 0;
 }
 
+/* How the last solve converged, in words that agree with the numbers: the
+ * last correction against the tolerance, the residual against its terms'
+ * scale; or the residual at round-off (the correction then measures noise). */
+static const char *converged_text(const sl_flow *f, char *buf, size_t cap) {
+  const sl_model_stats *r = &f->st;
+  double rel = r->term_scale > 0 ? r->residual / r->term_scale : 0.0;
+  if (r->roundoff)
+    snprintf(buf, cap, "residual %.2g from %.2g: at the round-off of its terms' scale %.2g, the corrections noise",
+             r->residual, r->residual0, r->term_scale);
+  else
+    snprintf(buf, cap, "relative correction %.2g%s <= tolerance %g; residual %.2g from %.2g, %.2g of its terms' scale",
+             r->correction, r->estimated ? " (the next one's, estimated)" : "", f->nopts.rtol, r->residual,
+             r->residual0, rel);
+  return buf;
+}
+
+static int diag_append(sl_diag *d, int rc, const char *tail) {
+  char msg[sizeof d->msg];
+  memcpy(msg, d->msg, sizeof msg);
+  return sl_diag_set(d, rc, "%.1700s%s", msg, tail);
+}
+
 int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag *d) {
+  char tb[240];
   const sl_solver_config *sv = &f->sc->solver;
   sl_model_stats *r = &f->st;
   const char *key = sv->continuation ? sv->continuation : "";
   int rc = 0;
   *steps = 0, *iterations = 0;
+  f->t_solve = 0.0, f->stage = f->n_stages = 0;
   if (!*key) {
     int its = 0;
-    rc = solve(f, u, &its, d);
+    rc = solve_opts(f, u, &its, 1, d);
     *steps = 1, *iterations = its;
-    if (rc) return sl_diag_prefix(d, rc, "steady solve");
+    if (rc) {
+      sl_diag_prefix(d, rc, "steady solve");
+      return diag_append(d, rc, "; the state saved is the last Newton iterate, not a solution");
+    }
     r->converged = 1;
     if (f->nopts.linear)
       snprintf(r->stop_reason, sizeof r->stop_reason, "steady state solved: a linear problem, one solve (residual %.2g)",
                r->residual);
     else
-      snprintf(r->stop_reason, sizeof r->stop_reason,
-               "steady state converged in %d Newton iteration%s (last relative correction %.2g, tolerance %g; "
-               "residual %.2g from %.2g)",
-               its, its == 1 ? "" : "s", r->correction, f->nopts.rtol, r->residual, r->residual0);
+      snprintf(r->stop_reason, sizeof r->stop_reason, "steady state converged in %d Newton iteration%s (%s)", its,
+               its == 1 ? "" : "s", converged_text(f, tb, sizeof tb));
     return 0;
   }
-  /* continuation: section.key from continuation_from to its scene value (checked at set-up) */
+  /* continuation: section.key from continuation_from to its scene value (checked at set-up); a stage that
+     fails leaves the state of the last converged one */
   double target, from = sv->continuation_from;
   long n_stages = sv->continuation_steps;
   if ((rc = sl_scene_get_real(f->sc, key, &target, d))) return rc;
+  size_t bytes = (size_t)f->th->n_dofs * sizeof *u;
+  double *good = malloc(bytes), v_good = NAN;
+  if (!good) return sl_diag_set(d, SL_ENOMEM, "continuation: out of memory");
   int geometric = from > 0 && target > 0;
+  f->n_stages = n_stages + 1;
   for (long k = 0; k <= n_stages && !rc; ++k) {
     double s = (double)k / (double)n_stages;
     double v = geometric ? from * pow(target / from, s) : from + (target - from) * s;
     if (k == n_stages) v = target;
+    f->stage = k + 1;
+    if (f->sc->hooks.interrupt && *f->sc->hooks.interrupt) {
+      rc = sl_diag_set(d, SL_EFAILED, "interrupted before continuation stage %ld of %ld (%s = %g)", k + 1,
+                       n_stages + 1, key, v);
+      break;
+    }
     if ((rc = sl_scene_set_real(f->sc, key, v, d))) break;
     if ((rc = rebuild_physics(f, d))) break;
     int its = 0;
-    rc = solve(f, u, &its, d);
+    rc = solve_opts(f, u, &its, 1, d);
     *iterations += its;
-    if (rc) rc = sl_diag_prefix(d, rc, "continuation stage %ld of %ld (%s = %g)", k, n_stages, key, v);
+    if (rc) rc = sl_diag_prefix(d, rc, "continuation stage %ld of %ld (%s = %g)", k + 1, n_stages + 1, key, v);
     (*steps)++;
+    if (!rc) memcpy(good, u, bytes), v_good = v;
     if (!rc && k == n_stages) {
       r->converged = 1;
       snprintf(r->stop_reason, sizeof r->stop_reason,
-               "steady state converged at %s = %g, the last of %ld continuation stages, in %d Newton iteration%s "
-               "(last relative correction %.2g, tolerance %g; residual %.2g from %.2g)",
-               key, v, n_stages + 1, its, its == 1 ? "" : "s", r->correction, f->nopts.rtol, r->residual,
-               r->residual0);
+               "steady state converged at %s = %g, the last of %ld continuation stages, in %d Newton iteration%s (%s)",
+               key, v, n_stages + 1, its, its == 1 ? "" : "s", converged_text(f, tb, sizeof tb));
     }
   }
+  if (rc && isfinite(v_good)) {
+    memcpy(u, good, bytes);
+    char tail[300];
+    snprintf(tail, sizeof tail, "; the state saved is the last converged stage's, %s = %g", key, v_good);
+    diag_append(d, rc, tail);
+  } else if (rc) {
+    diag_append(d, rc, "; the state saved is the last Newton iterate, not a solution");
+  }
+  free(good);
   return rc;
 }
 
@@ -780,8 +862,51 @@ static int initial_velocity(const sl_scene *sc, const sl_flow_config *fc, const 
   for (int c = 0; c < v->n; ++c) {
     bc_eval be = {v->e[c], 0.0};
     sl_fe_interpolate(th->vel, bc_value, &be, u + sl_th_vel_dof(th, c, 0));
+    /* evaluated once, here: a value that is not finite is bad input, found before anything is written */
+    for (int32_t i = 0; i < th->vel->n_nodes; ++i) {
+      double ui = u[sl_th_vel_dof(th, c, th->vel->node_dof[i])];
+      if (!isfinite(ui)) {
+        char at[400];
+        return sl_diag_set(d, SL_EBADINPUT, "%s: component %d is %g at (%g, %g): not a finite velocity",
+                           sl_scene_where(sc, v, at, sizeof at), c + 1, ui, th->vel->node_xy[2 * i],
+                           th->vel->node_xy[2 * i + 1]);
+      }
+    }
   }
   return 0;
+}
+
+/* The speed the data set besides the boundary speeds (check_growth): the initial velocity, the free fall
+ * of the body force and buoyancy over the domain, the Bernoulli speed of given pressures, the frame's. */
+static void velocity_scale(sl_flow *f) {
+  const sl_mesh *m = f->mesh;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (int v = 0; v < m->n_vertices; ++v)
+    for (int k = 0; k < 2; ++k) lo[k] = fmin(lo[k], m->xy[2 * v + k]), hi[k] = fmax(hi[k], m->xy[2 * v + k]);
+  double L = hypot(hi[0] - lo[0], m->dim > 1 ? hi[1] - lo[1] : 0.0);
+  const physics *ph = &f->ph;
+  double rho = ph->density > 0 ? ph->density : 1.0;
+  /* buoyancy: the whole density without solids (the pressure carries it, but it is what a wrong pressure
+     would accelerate); with solids the contrast */
+  double rho_g = f->riding ? fabs(f->rho_solid - ph->density) : ph->density;
+  double F = 0.0, g = 0.0;
+  for (int c = 0; c < MAX_COMP; ++c) g += ph->gravity[c] * ph->gravity[c], F = fmax(F, fabs(ph->body_force[c]));
+  for (int v = 0; v < m->n_vertices && ph->force_varies; ++v) {
+    double xyt[3] = {m->xy[2 * v], m->xy[2 * v + 1], 0.0};
+    for (int c = 0; c < ph->n_comp; ++c)
+      if (ph->force_expr[c]) F = fmax(F, fabs(sl_expr_eval(ph->force_expr[c], xyt)));
+  }
+  F += rho_g * sqrt(g);
+  double u0 = 0.0, p = 0.0;
+  for (int32_t i = 0; i < f->th->p_offset; ++i) u0 = fmax(u0, fabs(f->u[i]));
+  for (int i = 0; i < f->bcs.n; ++i)
+    for (int c = 0; c < MAX_COMP; ++c) p = fmax(p, fabs(f->bcs.b[i].traction[c]));
+  double cand[4] = {u0, sqrt(2.0 * F * L / rho), sqrt(2.0 * p / rho), fabs(f->prob.opts.omega) * L};
+  static const char *const what[4] = {"the initial velocity", "the free fall of the body force and buoyancy",
+                                      "the Bernoulli speed of the given pressure", "the frame's rotation"};
+  f->u_data = 0.0, f->u_data_what = what[0];
+  for (int k = 0; k < 4; ++k)
+    if (cand[k] > f->u_data) f->u_data = cand[k], f->u_data_what = what[k];
 }
 
 /* [solver] continuation names a real value the flow can vary, and its start. */
@@ -840,15 +965,19 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
       f->prob.traction[f->prob.n_tractions++] = (sl_flow_traction){f->bcs.b[i].name, traction_fn, &f->bcs.b[i]};
     }
   if ((rc = bc_apply(&f->bcs, f->th, &f->prob.bc, 0.0, f->datum, d))) goto fail;
-  if ((rc = sl_scene_linsolve(sc, f->th->n_dofs, &f->ls, &f->linear, d))) goto fail;
-  if ((rc = sl_linsolve_set_blocks(f->ls, f->th->p_offset, d))) goto fail; /* velocity, then pressure */
+  if ((rc = sl_scene_linsolve_general(sc, f->th->n_dofs,
+                                       "the flow's matrix couples velocity and pressure (a saddle point: symmetric "
+                                       "indefinite without convection, nonsymmetric with it)",
+                                       &f->ls, &f->linear, d)))
+    goto fail;
+  /* velocity, then pressure */
+  if ((rc = sl_linsolve_set_blocks(f->ls, f->th->p_offset, sc->time.scheme != SL_SCHEME_STEADY, d))) goto fail;
   f->nopts = (sl_newton_opts){.rtol = sc->solver.nonlinear_tolerance,
                               .max_iterations = (int)sc->solver.max_iterations,
                               .picard_only = sc->solver.nonlinear == 1,
                               .picard_first = (int)sc->solver.picard_first,
                               .linear = !sc->flow.convection && !f->ph.visc,
-                              .scale = 1e-12,
-                              .rtol_residual = 1e-10};
+                              .scale = 1e-12};
   f->u = calloc((size_t)f->th->n_dofs, sizeof *f->u);
   f->work = malloc((size_t)f->th->vel->n_nodes * 3 * sizeof *f->work);
   /* the cell diagnostics only when written */
@@ -861,6 +990,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
   if ((rc = stream_setup(f, d))) goto fail;
   if ((rc = check_body_force(sc, &f->ph, d))) goto fail;
   if ((rc = initial_velocity(sc, fc, f->th, f->u, d))) goto fail;
+  velocity_scale(f);
   *info = (sl_model_info){.integrator = SL_INTEGRATE_BDF, .n = f->th->n_dofs, .n_err = f->th->p_offset, .u = f->u,
                           .has_steady = 1, .state_name = "velocity"};
   *out = f;

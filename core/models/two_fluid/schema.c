@@ -89,7 +89,7 @@ static const sl_key column_keys[] = {
      .def_list = (const double[]){-9.81}, .n_def = 1, .units = "m s^-2",
      .help = "gravity along x (x is the height when gravity is negative)"},
     {.section = "output", .name = "interface", .type = SL_KEY_REALS, SL_AT_SCENE(output.interface),
-     .max_n = SL_REALS_MAX, .help = "levels of phi whose heights are written as interface_height_K"},
+     .max_n = SL_REALS_MAX, .min = 0.0, .max = 1.0, .help = "levels of phi whose heights are written as interface_height_K"},
     {.section = "initial", .name = "phi", .type = SL_KEY_EXPR, C(phi), .vars = "x,y,case",
      .def_doc = "required (or porosity)", .help = "the initial solids fraction"},
     {.section = "initial", .name = "porosity", .type = SL_KEY_EXPR, C(porosity), .vars = "x,y,case",

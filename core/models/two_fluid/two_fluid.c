@@ -137,7 +137,20 @@ static int initial_state(tf_run *r, sl_diag *d) {
                        c->phi_max);
     c->phi[i] = phi;
   }
-  return rc;
+  if (rc || c->ps.c) return rc;
+  /* A packed layer (phi = phi_max) without a solids pressure: below minimum fluidisation its weight rests on its
+     contacts, which nothing here carries; the drag then takes the whole buoyant weight (the pressure drop
+     comes out as the bed's weight instead of Ergun's), the solids move into a bed that cannot compact, and the
+     step looks steady at once (issue 25: 2649 Pa for Ergun's 1091 Pa at 0.45 U_mf). Refused. */
+  for (int i = 0; i < c->n; ++i)
+    if (c->phi[i] >= c->phi_max * (1.0 - 1e-9))
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "%s:%d: [initial] %s = %g at x = %g is a packed bed (phi = phi_max = %g), and the scene has no "
+                         "[closure.solids_pressure]: nothing would carry the bed's contact stress, so below minimum "
+                         "fluidisation its pressure drop and solids velocity would be wrong; add a solids-pressure "
+                         "closure (e.g. model = pringle_exponential, Pringle 2001) or start below phi_max",
+                         use->file, use->line, use->key, e ? c->phi[i] : 1.0 - c->phi[i], c->xc[i], c->phi_max);
+  return 0;
 }
 
 static int allocate(tf_column *c, sl_diag *d) {

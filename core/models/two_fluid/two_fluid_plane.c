@@ -241,7 +241,8 @@ static int plane_write(void *self, sl_output *out, double t, const double *u_sta
     }
   }
   double inv = tfp_inventory(m, m->phi);
-  if (!rc) rc = sl_output_write_scalar(out, "solids_inventory", inv, d);
+  /* the solids volume per unit depth (planar) or per radian (axisymmetric) */
+  if (!rc) rc = sl_output_write_scalar_unit(out, "solids_inventory", r->m.axi ? "m^3/rad" : "m^2", inv, d);
   if (!rc)
     rc = sl_output_write_scalar(out, "solids_conservation_error",
                                 r->inventory0 > 0.0 ? (inv + r->outflow - r->inventory0) / r->inventory0 : 0.0, d);

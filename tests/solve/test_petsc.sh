@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# test_petsc.sh SLUICE CONFIGS: the PETSc backend against the direct solvers, its options and the scene's limits.
+# The Stokes cavity (steady saddle point: FGMRES, Schur field split, BoomerAMG) against KLU along both centre
+# lines; the boycott vessel (the mixture, transient steps) with fixed steps against KLU; the options given
+# on the command line, in [solver.petsc] and in PETSC_OPTIONS, in that order of precedence; and what a scene
+# may not set.
+set -u
+sluice=$1 configs=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+pass=0 fail=0
+check() { # check NAME CONDITION...
+  local name=$1; shift
+  if "$@"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "failed: $name"; fi
+}
+# the largest difference of two sample tables' value columns (from column 4), relative to the largest value
+max_diff() {
+  paste -d, "$1" "$2" | awk -F, -v n="$3" 'NR > 1 {
+      for (c = 4; c <= n; ++c) { a = $c; b = $(c + n); d = a - b; if (d < 0) d = -d; if (d > m) m = d;
+        if (a < 0) a = -a; if (a > s) s = a } }
+      END { printf "%.3g\n", (s > 0 ? m / s : m) }'
+}
+below() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a + 0 < b + 0) }'; }
+
+cav=$configs/cavity_stokes.ini
+"$sluice" run "$cav" --set solver.linear=klu -o klu.h5 > klu.log 2>&1
+"$sluice" run "$cav" --set solver.linear=petsc -o petsc.h5 > petsc.log 2>&1
+check "cavity: petsc ran its default (fgmres/fieldsplit)" grep -q "fgmres/fieldsplit" petsc.log
+# the velocity on x = 1/2, the pressure on y = 3/4 (it is odd about x = 1/2)
+"$sluice" sample klu.h5 --field velocity --line 0.5,0:0.5,1 --n 65 > k_velocity.csv 2>/dev/null
+"$sluice" sample petsc.h5 --field velocity --line 0.5,0:0.5,1 --n 65 > p_velocity.csv 2>/dev/null
+"$sluice" sample klu.h5 --field pressure --line 0,0.75:1,0.75 --n 65 > k_pressure.csv 2>/dev/null
+"$sluice" sample petsc.h5 --field pressure --line 0,0.75:1,0.75 --n 65 > p_pressure.csv 2>/dev/null
+cp k_velocity.csv k_velocity_cav.csv
+dv=$(max_diff k_velocity.csv p_velocity.csv 6) dp=$(max_diff k_pressure.csv p_pressure.csv 4)
+echo "cavity: velocity on x = 1/2 differs by $dv, pressure on y = 3/4 by $dp (relative to the largest value)"
+check "cavity velocity agrees to the solver tolerance ($dv)" below "$dv" 1e-8
+# the residual's 1e-10 bounds the pressure's error only through the inf-sup constant (measured 4.5e-8 here)
+check "cavity pressure agrees to the solver tolerance ($dp)" below "$dp" 1e-7
+
+box=$configs/boycott.ini
+args=(--set mesh.cells=12,16 --set time.end=0.05 --set output.every=0.05 --set time.adaptive=false)
+"$sluice" run "$box" "${args[@]}" --set solver.linear=klu -o bk.h5 > bk.log 2>&1
+"$sluice" run "$box" "${args[@]}" --set solver.linear=petsc -o bp.h5 > bp.log 2>&1
+for f in velocity phi; do
+  "$sluice" sample bk.h5 --field $f --line 0.5,0.1:1.2,0.9 --n 41 > k_$f.csv 2>/dev/null
+  "$sluice" sample bp.h5 --field $f --line 0.5,0.1:1.2,0.9 --n 41 > p_$f.csv 2>/dev/null
+done
+dv=$(max_diff k_velocity.csv p_velocity.csv 6) dphi=$(max_diff k_phi.csv p_phi.csv 4)
+echo "boycott, 50 fixed steps: velocity differs by $dv, phi by $dphi"
+check "boycott ran to its end with petsc" grep -q "reached the end time\|end time" bp.log
+check "boycott velocity agrees ($dv)" below "$dv" 1e-9
+check "boycott phi agrees ($dphi)" below "$dphi" 1e-9
+
+# options: the command line over the scene, PETSC_OPTIONS over both
+cat > scene.ini <<INI
+include = $cav
+[solver]
+linear = petsc
+[solver.petsc]
+ksp_type = gmres
+ksp_gmres_restart = 100
+INI
+"$sluice" run scene.ini -o s.h5 > s.log 2>&1
+check "[solver.petsc] ksp_type = gmres is used" grep -q "(gmres/fieldsplit" s.log
+"$sluice" run scene.ini -o s.h5 --petsc "-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps" > m.log 2>&1
+check "--petsc wins over the scene (MUMPS)" grep -q "(preonly/lu" m.log
+PETSC_OPTIONS="-ksp_type bcgs" "$sluice" run scene.ini -o s.h5 --petsc "-ksp_type preonly" > e.log 2>&1
+check "PETSC_OPTIONS wins over both" grep -q "(bcgs/fieldsplit" e.log
+"$sluice" run "$cav" --set solver.linear=petsc -o u.h5 --petsc "-ksp_monitor" > mon.log 2>&1
+check "--petsc -ksp_monitor prints PETSc's residuals" grep -q "KSP Residual norm" mon.log
+
+# a scene may not write or print through PETSc, nor pass anything but a solver option
+for bad in "ksp_monitor = true" "log_view = true" "ksp_view = ascii:/tmp/x" "fieldsplit_u_ksp_view_solution = binary" \
+           "options_file = x" "on_error_attach_debugger = gdb" "pc_type = lu:x"; do
+  printf 'include = %s\n[solver]\nlinear = petsc\n[solver.petsc]\n%s\n' "$cav" "$bad" > bad.ini
+  out=$("$sluice" run bad.ini -o bad.h5 2>&1); rc=$?
+  check "refused from a scene: $bad (exit $rc)" test "$rc" = 2
+  check "its message names the file and line: $bad" grep -q "bad.ini:5" <<<"$out"
+  check "nothing written for: $bad" test ! -e bad.h5
+done
+# several ranks (mpirun): the linear solves shared, rank 0 writing; the same answer as KLU on one rank
+if command -v mpirun > /dev/null; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  for n in 1 2 3; do
+    mpirun -n $n "$sluice" run "$cav" -o c$n.h5 > c$n.log 2>&1
+    "$sluice" sample c$n.h5 --field velocity --line 0.5,0:0.5,1 --n 65 > c$n.csv 2>/dev/null
+    dv=$(max_diff k_velocity_cav.csv c$n.csv 6)
+    echo "cavity on $n rank(s): velocity differs from KLU's by $dv"
+    check "cavity on $n rank(s) agrees with KLU ($dv)" below "$dv" 1e-7
+    mpirun -n $n "$sluice" run "$box" "${args[@]}" -o b$n.h5 > b$n.log 2>&1
+    "$sluice" sample b$n.h5 --field phi --line 0.5,0.1:1.2,0.9 --n 41 > b$n.csv 2>/dev/null
+    dphi=$(max_diff k_phi.csv b$n.csv 4)
+    echo "boycott on $n rank(s): phi differs from KLU's by $dphi"
+    check "boycott on $n rank(s) agrees with KLU ($dphi)" below "$dphi" 1e-9
+  done
+  check "the ranks' private output folders are gone" test -z "$(ls -A | grep sluice-rank)"
+  check "2 ranks say so in the summary" grep -q "2 ranks)" c2.log
+  out=$(mpirun -n 2 "$sluice" run "$cav" --set solver.linear=klu -o no.h5 2>&1); rc=$?
+  check "a direct solver on 2 ranks is refused (exit $rc)" test "$rc" != 0
+  check "... saying why" grep -q "the linear solves must be PETSc's" <<<"$out"
+  check "... before anything is written" test ! -e no.h5
+else
+  echo "mpirun not found: the runs on several ranks are not checked"
+fi
+echo "$pass passed, $fail failed"
+[ "$fail" = 0 ]
