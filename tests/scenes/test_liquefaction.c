@@ -25,6 +25,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "bench/png_check.h"
 #include "core/study/chart.h"
@@ -289,6 +290,61 @@ static void pictures(const char *out) {
   printf("  pictures: liquefaction_ratio.png (depth-time map), liquefaction_history.png\n");
 }
 
+/* [initial] from: a run starting from another's last state has it as its state at t = 0, bit for bit (phi and
+ * nbar; the deposit is not settled again). */
+static void from_file(void) {
+  char cwd[2048], repl[2400];
+  if (!getcwd(cwd, sizeof cwd)) return;
+  const char *first[] = {"time.end=1", "output.every=1", NULL};
+  if (run_ok("liquefaction", NULL, NULL, first, "test_liquefaction_first.h5")) return;
+  snprintf(repl, sizeof repl, "[initial]\nfrom = %s/test_liquefaction_first.h5\n", cwd);
+  const char *second[] = {"time.end=0.5", "output.every=0.5", "deposit.settle=0", NULL};
+  if (run_ok("liquefaction", "initial", repl, second, "test_liquefaction_second.h5")) return;
+  int n1, n2, same = 1;
+  const char *names[2] = {"phi", "nbar"};
+  for (int k = 0; k < 2; ++k) {
+    double *a = field_at("test_liquefaction_first.h5", names[k], INFINITY, &n1, NULL);
+    double *b = field_at("test_liquefaction_second.h5", names[k], 0.0, &n2, NULL);
+    if (a && b && n1 == n2)
+      for (int i = 0; i < n1; ++i) same &= a[i] == b[i];
+    else same = 0;
+    free(a), free(b);
+  }
+  printf("  [initial] from: the second run starts bit for bit from the first's last phi and nbar: %s\n",
+         same ? "yes" : "no");
+  CHECK_MSG(same, "[initial] from did not reproduce the file's state");
+}
+
+/* Bad input: refused before any output, with the location and what is allowed. */
+static void expect_refusal(const char *scene, const char *section, const char *replacement, const char *const *sets,
+                           const char *needle) {
+  sl_diag d = {{0}};
+  int rc = run_scene(scene, section, replacement, sets, "test_liquefaction_bad.h5", &d);
+  CHECK_MSG(rc == SL_EBADINPUT && strstr(d.msg, needle), "expected a refusal naming '%s', got %d: %s", needle, rc,
+            d.msg);
+}
+
+static void bad_input(void) {
+  char cwd[2048], path[2300], set[2400];
+  if (!getcwd(cwd, sizeof cwd)) return;
+  const char *k2[] = {"shaking.k2max=0.5", NULL};
+  expect_refusal("liquefaction", NULL, NULL, k2, "k2max");
+  expect_refusal("liquefaction", "initial", "[initial]\nphi = 0.45\n", NULL, "[initial] nbar");
+  const char *missing[] = {"shaking.record=no_such_record.csv", NULL};
+  expect_refusal("liquefaction", NULL, NULL, missing, "cannot open the base record");
+  snprintf(path, sizeof path, "%s/test_liquefaction_backwards.csv", cwd);
+  FILE *f = fopen(path, "w");
+  if (!f) return;
+  fprintf(f, "time,a\n0,0\n0.1,0.01\n0.1,0.02\n");
+  fclose(f);
+  snprintf(set, sizeof set, "shaking.record=%s", path);
+  const char *back[] = {set, NULL};
+  expect_refusal("liquefaction", NULL, NULL, back, "test_liquefaction_backwards.csv:4: time 0.1 does not follow");
+  expect_refusal("fluidized_bed_2d", "closure.solids_pressure", "[closure.solids_pressure]\nmodel = pringle_state\n",
+                 NULL, "only the 1-D column");
+  printf("  bad input refused: k2max 0.5, no [initial] nbar, a missing record, a record going back, nbar in 2-D\n");
+}
+
 int main(void) {
   const char *src = getenv("SLUICE_SOURCE_DIR");
   snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
@@ -301,5 +357,7 @@ int main(void) {
   at_rest();
   variants(out);
   pictures(out);
+  from_file();
+  bad_input();
   return sl_test_summary();
 }

@@ -42,7 +42,8 @@ int tfl_wanted(const sl_scene *sc, const tf_column *c) {
 
 static double *vec(size_t n) { return calloc(n, sizeof(double)); }
 
-int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, tf_liquefaction **out, sl_diag *d) {
+int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, const int *cell_of, tf_liquefaction **out,
+               sl_diag *d) {
   char at[400];
   *out = NULL;
   if (!c->ps.c || !sl_point_has_input(&c->ps.pc, "nbar"))
@@ -52,10 +53,16 @@ int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, tf_liquef
                        sl_scene_closure(sc, "solids_pressure") ? sl_scene_closure_where(sc, "solids_pressure", at, sizeof at)
                                                                : "[closure.solids_pressure]");
   const sl_src *ne = sl_scene_src(sc, &cfg->nbar);
-  if (!ne)
+  const sl_src *fe = cfg->from && cfg->from[0] ? sl_scene_src(sc, &cfg->from) : NULL;
+  sl_output_field nf = {0};
+  if (!ne && fe && sl_output_read_field(cfg->from, "nbar", INFINITY, &nf, d) == 0 && nf.n != c->n) {
+    sl_output_field_free(&nf);
+    nf.values = NULL;
+  }
+  if (!ne && !nf.values)
     return sl_diag_set(d, SL_EBADINPUT, "[initial] nbar: the solids pressure %s takes the reference porosity nbar of "
-                                        "each cell: give its initial value (an expression of x)",
-                       c->ps.c->desc->name);
+                                        "each cell: give its initial value (an expression of x)%s",
+                       c->ps.c->desc->name, fe ? ", or start from a file that has it ([initial] from)" : "");
   tf_liquefaction *L = calloc(1, sizeof *L);
   if (!L) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   const int n = c->n;
@@ -71,6 +78,7 @@ int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, tf_liquef
     if (!(*faces[i] = vec((size_t)n + 1))) rc = SL_ENOMEM;
   if (rc) {
     tfl_free(L);
+    sl_output_field_free(&nf);
     return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   }
   const tf_lq_config *q = &cfg->lq;
@@ -81,13 +89,15 @@ int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, tf_liquef
   L->nbar_min_given = sl_scene_given(sc, &q->nbar_min);
   L->nbar_min = L->nbar_min_given ? q->nbar_min : 0.01; /* the default follows the deposit (tfl_start) */
   for (int i = 0; i < n && !rc; ++i) {
-    double xy[3] = {c->xc[i], 0.0, c->case_index}, v = sl_expr_eval(cfg->nbar.e, xy);
+    double xy[3] = {c->xc[i], 0.0, c->case_index};
+    double v = ne ? sl_expr_eval(cfg->nbar.e, xy) : nf.values[cell_of[i]];
     if (!(v >= L->nbar_min && v < 1.0))
-      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] nbar = %g at x = %g: allowed %g <= nbar < 1 ([deposit] "
-                                        "nbar_min)", ne->file, ne->line, v, c->xc[i],
-                       L->nbar_min);
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s: nbar = %g at x = %g: allowed %g <= nbar < 1 ([deposit] "
+                                        "nbar_min)", ne ? ne->file : fe->file, ne ? ne->line : fe->line,
+                       ne ? "nbar" : "from", v, c->xc[i], L->nbar_min);
     L->nbar[i] = L->nbar0[i] = v;
   }
+  sl_output_field_free(&nf);
   if (!rc && q->record && q->record[0]) {
     const sl_src *re = sl_scene_src(sc, &q->record);
     sl_scene_where(sc, &q->record, at, sizeof at);

@@ -42,10 +42,12 @@ typedef struct tf_liquefaction tf_liquefaction;
 /* Whether the scene asks for the add-on: a solids pressure of nbar, a
  * [shaking] or [deposit] section, or [closure.densification]. */
 int tfl_wanted(const sl_scene *sc, const tf_column *c);
-/* The add-on's state from the scene (nbar from [initial] nbar, the record,
- * the densification closure bound): c->nbar and c->ps.nbar point into it.
- * Called before the deposit settles. */
-int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, tf_liquefaction **out, sl_diag *d);
+/* The add-on's state from the scene (nbar from [initial] nbar, or from the
+ * file of [initial] from when that has it, in the mesh's cell order cell_of;
+ * the record; the densification closure bound): c->nbar and c->ps.nbar point
+ * into it. Called before the deposit settles. */
+int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, const int *cell_of, tf_liquefaction **out,
+               sl_diag *d);
 /* After the settling: the state at t = 0 (p_s0, the deposit's cells, its
  * surface) and the [deposit] nbar_drop. */
 int tfl_start(tf_liquefaction *L, tf_column *c, sl_diag *d);

@@ -94,6 +94,9 @@ static const sl_key column_keys[] = {
      .def_doc = "required (or porosity)", .help = "the initial solids fraction"},
     {.section = "initial", .name = "porosity", .type = SL_KEY_EXPR, C(porosity), .vars = "x,y,case",
      .help = "the initial porosity 1 - phi (instead of phi)"},
+    {.section = "initial", .name = "from", .type = SL_KEY_STRING, C(from), .def_text = "",
+     .help = "start from the last output of this file (its phi, and nbar when it has it): e.g. a deposit another run "
+             "settled; relative to the working folder"},
     {.section = "initial", .name = "nbar", .type = SL_KEY_EXPR, C(nbar), .vars = "x,y,case",
      .def_doc = "required with a solids pressure of nbar", .help = "the reference porosity of each cell (Pringle 2001 "
                                                                    "eq 4.30), a state [closure.densification] evolves"},

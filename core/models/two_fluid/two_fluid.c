@@ -118,9 +118,34 @@ static int boundaries(tf_run *r, sl_diag *d) {
   return 0;
 }
 
+/* [initial] from: phi of the file's last output, in the mesh's cell order. */
+static int initial_from_file(tf_run *r, const sl_src *fe, sl_diag *d) {
+  tf_column *c = &r->c;
+  sl_output_field f;
+  int rc = sl_output_read_field(r->cfg->from, "phi", INFINITY, &f, d);
+  if (rc) return sl_diag_prefix(d, SL_EBADINPUT, "%s:%d: [initial] from = %s", fe->file, fe->line, r->cfg->from);
+  if (f.n != c->n || f.components != 1 || f.centring != SL_CENTRE_CELL)
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] from = %s: its phi has %d values, the mesh %d cells (the "
+                                      "same mesh is needed)", fe->file, fe->line, r->cfg->from, (int)f.n, c->n);
+  for (int i = 0; i < c->n && !rc; ++i) {
+    double phi = f.values[r->cell_of[i]];
+    if (!(phi >= 0.0 && phi <= c->phi_max))
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] from = %s: phi = %g in cell %d, above phi_max = %g",
+                       fe->file, fe->line, r->cfg->from, phi, i, c->phi_max);
+    c->phi[i] = phi;
+  }
+  sl_output_field_free(&f);
+  return rc;
+}
+
 static int initial_state(tf_run *r, sl_diag *d) {
   tf_column *c = &r->c;
   const sl_src *e = sl_scene_src(r->sc, &r->cfg->phi), *en = sl_scene_src(r->sc, &r->cfg->porosity);
+  const sl_src *fe = r->cfg->from && r->cfg->from[0] ? sl_scene_src(r->sc, &r->cfg->from) : NULL;
+  if (fe && (e || en))
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] from and %s both given: set one", fe->file, fe->line,
+                       e ? "phi" : "porosity");
+  if (fe) return initial_from_file(r, fe, d);
   if (e && en)
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] porosity and phi both given: set one", en->file, en->line);
   if (!e && !en)
@@ -381,7 +406,7 @@ static int column_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag 
     }
     c->v_ref = fmax(c->v_ref, fabs(j));
   }
-  if (!rc && shaken) rc = tfl_create(sc, r->cfg, &r->c, &r->lq, d);
+  if (!rc && shaken) rc = tfl_create(sc, r->cfg, &r->c, r->cell_of, &r->lq, d);
   if (!rc && r->cfg->lq.settle > 0.0) rc = settle(r, d);
   if (!rc && r->lq) rc = tfl_start(r->lq, &r->c, d);
   if (!rc) rc = interface_levels(r, d);

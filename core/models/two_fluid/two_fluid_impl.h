@@ -31,6 +31,7 @@ typedef struct tf_config {
   sl_scene_exprs velocity_fluid, velocity_solid; /* [initial]: the 2-D model (two components) */
   sl_scene_expr sh_phi, sh_theta, sh_uf, sh_us;  /* [initial]: the shear layer (of x) */
   sl_scene_expr nbar;                            /* [initial]: the column's reference porosity (liquefaction.h) */
+  const char *from;                              /* [initial]: an output file whose last state the column starts from */
   tf_lq_config lq;
 } tf_config;
 
