@@ -17,7 +17,7 @@ struct tf_liquefaction {
   double *nbar, *nbar0, *ps0, *ps, *dps;  /* [n] */
   double *w, *v, *w_new, *v_new;          /* [n+1] faces: displacement and velocity relative to the base */
   double *gam, *gam_rev, *path, *dir, *amp, *inc, *epsv, *nbar_new; /* [n] shear history */
-  double *G, *eta, *a, *b, *tau0, *lo, *di, *up, *rhs;             /* [n+1] work */
+  double *rho, *a, *b, *tau0, *lo, *di, *up, *rhs;                 /* [n+1] work: density, tau coefficients */
   double *nbar_ref;                       /* [n] nbar as the deposit was built (before a drop), for its height */
   double ps_floor;                         /* cells with p_s0 below it (the partly filled surface cell) have no ratio */
   double *ph, *p0;                        /* [n] the hydrostatic pressure; the fluid pressure at t = 0 */
@@ -69,7 +69,7 @@ int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, const int
   L->n = n;
   double **cells[] = {&L->nbar_ref, &L->nbar, &L->nbar0, &L->ps0, &L->ps, &L->dps, &L->gam, &L->gam_rev, &L->path, &L->dir,
                       &L->amp, &L->inc, &L->epsv, &L->nbar_new};
-  double **faces[] = {&L->w, &L->v, &L->w_new, &L->v_new, &L->G, &L->eta, &L->a, &L->b, &L->tau0,
+  double **faces[] = {&L->w, &L->v, &L->w_new, &L->v_new, &L->rho, &L->a, &L->b, &L->tau0,
                       &L->lo, &L->di, &L->up, &L->rhs, &L->ph, &L->p0};
   int rc = 0;
   for (size_t i = 0; i < sizeof cells / sizeof cells[0] && !rc; ++i)
@@ -223,14 +223,14 @@ int tfl_step(tf_liquefaction *L, tf_column *c, double t, double dt, sl_diag *d) 
     double G, eta, rho;
     cell_shear(L, c, i, &G, &eta, &rho);
     double dw = L->w[i + 1] - L->w[i], dv = L->v[i + 1] - L->v[i], h = c->h[i];
-    L->G[i] = rho; /* the density, for the face masses */
+    L->rho[i] = rho;
     L->a[i] = (0.5 * G * dt + eta) / h;
     L->b[i] = G / h * (dw + 0.5 * dt * dv);
     L->tau0[i] = G / h * dw + eta / h * dv;
   }
   const double ag = L->rec.n ? tf_base_record_at(&L->rec, t + 0.5 * dt - L->start) : 0.0;
   for (int k = 1; k <= top; ++k) {
-    double m = 0.5 * L->G[k - 1] * c->h[k - 1] + (k < top ? 0.5 * L->G[k] * c->h[k] : 0.0);
+    double m = 0.5 * L->rho[k - 1] * c->h[k - 1] + (k < top ? 0.5 * L->rho[k] * c->h[k] : 0.0); /* the face's mass */
     double ak = k < top ? L->a[k] : 0.0, am = L->a[k - 1];
     double bk = k < top ? L->b[k] : 0.0, tk = k < top ? L->tau0[k] : 0.0;
     L->di[k] = m / dt + 0.5 * (ak + am);
@@ -372,7 +372,7 @@ void tfl_summary(const tf_liquefaction *L, char *buf, size_t len) {
 void tfl_free(tf_liquefaction *L) {
   if (!L) return;
   double *all[] = {L->nbar_ref, L->nbar, L->nbar0, L->ps0, L->ps, L->dps, L->gam, L->gam_rev, L->path, L->dir, L->amp, L->inc,
-                   L->epsv, L->nbar_new, L->w, L->v, L->w_new, L->v_new, L->G, L->eta, L->a, L->b, L->tau0,
+                   L->epsv, L->nbar_new, L->w, L->v, L->w_new, L->v_new, L->rho, L->a, L->b, L->tau0,
                    L->lo, L->di, L->up, L->rhs, L->ph, L->p0};
   for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i) free(all[i]);
   tf_base_record_free(&L->rec);

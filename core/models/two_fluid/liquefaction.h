@@ -69,8 +69,7 @@ enum {
   TFL_F_EXCESS = 64,
   TFL_F_RU = 128,
   TFL_F_STRAIN = 256,
-  TFL_F_PS = 512,
-  TFL_F_DISP = 1024
+  TFL_F_PS = 512
 };
 
 #endif
