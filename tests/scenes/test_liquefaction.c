@@ -20,7 +20,10 @@
  *   the solids inventory) and the base excess pore pressure against
  *   Terzaghi's series, first order in h (the drained surface is resolved to
  *   a cell);
+ * - the horizontal equation: the steady response of a uniform linear
+ *   elastic layer to a harmonic base, second order in h;
  * - 0.08 mm: a thicker liquefied zone at 6 s (8 mm gravel: reported only, see docs/liquefaction.md). */
+#include <complex.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -290,6 +293,64 @@ static void pictures(const char *out) {
   printf("  pictures: liquefaction_ratio.png (depth-time map), liquefaction_history.png\n");
 }
 
+/* The horizontal equation against the exact steady response of a uniform Kelvin-Voigt layer on a harmonic base
+ * (the Terzaghi deposit at rest made linear elastic: [shaking] shear_modulus = 1e7 Pa, damping xi = 0.05 at 2 Hz,
+ * eta = 2 xi G / omega_d): the base moves with a = a0 sin(omega t), the surface relative to it by
+ * w = (a0/omega^2) |1/cos(k* H) - 1|, k* = omega sqrt(rho/(G + i omega eta)) (Kramer 1996, Geotechnical
+ * Earthquake Engineering, eq 7.21 with the base's own motion taken out). The amplitude of w over 25-30 s
+ * (the start's free vibration decayed by e^-13) by least squares, on 10, 20, 40 cells of the deposit. */
+static double harmonic_run(int cells, const char *record) {
+  char s_cells[64], s_rec[2400];
+  snprintf(s_cells, sizeof s_cells, "mesh.cells=%d", cells);
+  snprintf(s_rec, sizeof s_rec, "shaking.record=%s", record);
+  const char *sets[] = {s_cells, s_rec, "deposit.nbar_drop=0", "shaking.units=si", "shaking.shear_modulus=1e7",
+                        "time.end=30", "time.dt=0.00125", "output.every=0.01", NULL};
+  if (run_ok("terzaghi_consolidation", NULL, NULL, sets, "test_liquefaction_harmonic.h5")) return NAN;
+  const double om = 2.0 * M_PI, G = 1e7, eta = 2.0 * 0.05 * G / (2.0 * M_PI * 2.0), H = 10.0, a0 = 0.01;
+  double ss = 0, sc = 0, cc = 0, ws = 0, wc = 0;
+  sl_output_scalars all;
+  sl_diag d = {{0}};
+  if (sl_output_read_scalars("test_liquefaction_harmonic.h5", &all, &d)) {
+    CHECK_MSG(0, "harmonic: %s", d.msg);
+    return NAN;
+  }
+  int col = -1;
+  for (int j = 0; j < all.n_names; ++j)
+    if (strcmp(all.names[j], "surface_displacement") == 0) col = j;
+  for (int k = 0; k < all.n_times && col >= 0; ++k) {
+    double t = all.times[k], w = all.values[(size_t)k * all.n_names + col];
+    if (t < 25.0 - 1e-9) continue;
+    double sn = sin(om * t), cs = cos(om * t);
+    ss += sn * sn, sc += sn * cs, cc += cs * cs, ws += w * sn, wc += w * cs;
+  }
+  sl_output_scalars_free(&all);
+  CHECK_MSG(col >= 0, "harmonic: no surface_displacement");
+  double det = ss * cc - sc * sc, fs = (ws * cc - wc * sc) / det, fc = (wc * ss - ws * sc) / det;
+  /* the mean density of the deposit: phi = 0.55 on average (its solids are conserved) */
+  double rho = 0.55 * rho_s + 0.45 * rho_f;
+  double complex ks = om * csqrt(rho / (G + I * om * eta));
+  double exact = a0 / (om * om) * cabs(1.0 / ccos(ks * H) - 1.0);
+  return (hypot(fs, fc) - exact) / exact;
+}
+
+static void harmonic(void) {
+  char cwd[2048], path[2300];
+  if (!getcwd(cwd, sizeof cwd)) return;
+  snprintf(path, sizeof path, "%s/test_liquefaction_harmonic.csv", cwd);
+  FILE *f = fopen(path, "w");
+  if (!f) return;
+  fprintf(f, "time_s,acceleration_m_s2\n");
+  for (int i = 0; i <= 30000; ++i) fprintf(f, "%.3f,%.12e\n", 1e-3 * i, 0.01 * sin(2.0 * M_PI * 1e-3 * i));
+  fclose(f);
+  double e[3];
+  const int cells[3] = {12, 24, 48};
+  for (int k = 0; k < 3; ++k) e[k] = harmonic_run(cells[k], path);
+  printf("  harmonic base, uniform layer: surface amplitude error %.2e / %.2e / %.2e on 10 / 20 / 40 cells, order "
+         "%.2f, %.2f\n", e[0], e[1], e[2], log2(fabs(e[0] / e[1])), log2(fabs(e[1] / e[2])));
+  CHECK_MSG(fabs(e[2]) < 1e-4 && fabs(e[1]) < 3e-4, "harmonic response off by %g, %g", e[1], e[2]);
+  CHECK_MSG(log2(fabs(e[0] / e[1])) > 1.8, "harmonic response order %g", log2(fabs(e[0] / e[1])));
+}
+
 /* [initial] from: a run starting from another's last state has it as its state at t = 0, bit for bit (phi and
  * nbar; the deposit is not settled again). */
 static void from_file(void) {
@@ -357,6 +418,7 @@ int main(void) {
   at_rest();
   variants(out);
   pictures(out);
+  harmonic();
   from_file();
   bad_input();
   return sl_test_summary();

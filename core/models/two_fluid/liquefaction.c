@@ -12,7 +12,7 @@ struct tf_liquefaction {
   int n, top;          /* cells; the deposit is cells 0..top-1, faces 0..top */
   tf_base_record rec;  /* n == 0: no shaking */
   double start;        /* the record's t = 0 in run time */
-  double k2max, tan_phi, xi, omega_d, eta_res, liquefied_ratio, phi_min, nbar_drop, nbar_min;
+  double k2max, g0_const, tan_phi, xi, omega_d, eta_res, liquefied_ratio, phi_min, nbar_drop, nbar_min;
   int solid_mass;      /* 1: rho_s (as printed), 0: the mixture density */
   double *nbar, *nbar0, *ps0, *ps, *dps;  /* [n] */
   double *w, *v, *w_new, *v_new;          /* [n+1] faces: displacement and velocity relative to the base */
@@ -82,7 +82,7 @@ int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, const int
     return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   }
   const tf_lq_config *q = &cfg->lq;
-  L->k2max = q->k2max, L->tan_phi = tan(q->friction_angle * M_PI / 180.0), L->xi = q->damping;
+  L->k2max = q->k2max, L->g0_const = q->shear_modulus, L->tan_phi = tan(q->friction_angle * M_PI / 180.0), L->xi = q->damping;
   L->omega_d = 2.0 * M_PI * q->damping_frequency, L->eta_res = q->residual_viscosity;
   L->liquefied_ratio = q->liquefied_ratio, L->phi_min = q->deposit_phi, L->nbar_drop = q->nbar_drop;
   L->solid_mass = q->mass == 1, L->start = q->start;
@@ -191,9 +191,10 @@ int tfl_start(tf_liquefaction *L, tf_column *c, sl_diag *d) {
 static void cell_shear(const tf_liquefaction *L, const tf_column *c, int i, double *G, double *eta, double *rho) {
   double ps = fmax(L->ps[i], 0.0);
   /* Seed & Idriss (1970) / Hosni (thesis eq 3.40): G0 [kPa] = 220 K2max sqrt(P_s [kPa]) */
-  double G0 = 1e3 * 220.0 * L->k2max * sqrt(ps * 1e-3), tmax = ps * L->tan_phi;
+  double G0 = L->g0_const > 0.0 ? L->g0_const : 1e3 * 220.0 * L->k2max * sqrt(ps * 1e-3), tmax = ps * L->tan_phi;
   double g = fabs(L->gam[i]);
   *G = G0 > 0.0 && tmax > 0.0 ? G0 / (1.0 + G0 * g / tmax) : 0.0; /* Hardin & Drnevich (1972) */
+  if (L->g0_const > 0.0) *G = G0; /* the verification's linear elastic deposit */
   *eta = 2.0 * L->xi * G0 / L->omega_d + L->eta_res;
   *rho = L->solid_mass ? c->rho_s : c->phi[i] * c->rho_s + (1.0 - c->phi[i]) * c->rho_f;
 }

@@ -111,6 +111,9 @@ static const sl_key column_keys[] = {
     {.section = "shaking", .name = "k2max", .type = SL_KEY_REAL, C(lq.k2max), .def = 50.0, .min = 1.0, .max = 300.0,
      .help = "Seed & Idriss (1970): G0 = 220 K2max sqrt(P_s) kPa, P_s in kPa; 30-70 for sands (Pringle's 0.4-0.6 is "
              "an erratum)"},
+    {.section = "shaking", .name = "shear_modulus", .type = SL_KEY_REAL, C(lq.shear_modulus), .min = 0.0, .max = 1e12,
+     .units = "Pa", .help = "a linear elastic deposit of this constant modulus instead of K2max's law and the modulus reduction (0: "
+             "those; a verification)"},
     {.section = "shaking", .name = "friction_angle", .type = SL_KEY_REAL, C(lq.friction_angle), .def = 33.0,
      .min = 1.0, .max = 60.0, .units = "deg", .help = "tau_max = P_s tan(angle): Hardin & Drnevich's reference strain "
                                                       "tau_max/G0"},

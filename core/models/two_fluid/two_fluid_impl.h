@@ -17,7 +17,7 @@
 typedef struct tf_lq_config {
   const char *record; /* [shaking] */
   int units, mass;
-  double peak, start, k2max, friction_angle, damping, damping_frequency, residual_viscosity;
+  double peak, start, k2max, shear_modulus, friction_angle, damping, damping_frequency, residual_viscosity;
   double settle, settle_dt, settle_tolerance; /* [deposit] */
   double deposit_phi, liquefied_ratio, nbar_drop, nbar_min;
 } tf_lq_config;
