@@ -308,7 +308,7 @@ int main(int argc, char **argv) {
         if (use_var[v] && best[c][v].ok) ref = best[c][v].cpu;
       for (int v = 0; v < N_VARIANTS; ++v) {
         const result *r = &best[c][v];
-        if (!use_var[v]) continue;
+        if (!use_var[v] || (cases[c].iterative_only && strcmp(variants[v].name, "petsc") != 0)) continue;
         if (!r->ok) {
           fprintf(f, "| %s | %s | | failed | | | | | | | | | |\n", cases[c].what, variants[v].name);
           continue;

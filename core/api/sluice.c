@@ -154,6 +154,7 @@ int sluice_check_restart(sluice *s, const char *restart, FILE *report, sluice_er
   sl_run_opts ro = {.scene_path = s->path, .overwrite = 1};
   sl_output_opts oo;
   sl_run_output_opts(&ro, dir, sizeof dir, &oo);
+  oo.protect_more = (const char *const *)s->ini->files, oo.n_protect_more = s->ini->n_files;
   if ((rc = sl_output_check_path(out, &oo, &d))) return from_diag(e, rc, &d);
   if (!report) return 0;
   const sl_schema *schema = entry->schema;

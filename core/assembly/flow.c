@@ -187,7 +187,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
     double f[3] = {0, 0, 0};
     for (int a = 0; a < nc; ++a) f[w->frame[a]] += force[q * nc + a];
     if (o->omega != 0.0) {
-      double w2 = rq * o->omega * o->omega;
+      double w2 = (rq - o->centrifugal_density) * o->omega * o->omega;
       if (axi) f[0] += w2 * r;
       else f[0] += w2 * (fv->x[q][0] - o->rotation_centre[0]), f[1] += w2 * (fv->x[q][1] - o->rotation_centre[1]);
     }

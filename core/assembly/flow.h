@@ -54,6 +54,12 @@ typedef struct sl_flow_opts {
   double omega;          /* frame rotation (rad/s) about e_2 (planar: the axis through rotation_centre;
                             axisymmetric: the symmetry axis); adds Coriolis and centrifugal forces */
   double rotation_centre[2];
+  /* The density rho_0 whose centrifugal force the pressure takes: the body force is (rho - rho_0) Omega^2 r and
+   * the pressure solved for is p - P_ref, P_ref = rho_0 Omega^2 |r|^2 / 2 (the caller adds P_ref back where it
+   * writes the pressure and gives natural boundaries the traction P_ref n). A quadratic P_ref is not in the
+   * pressure space: taking it out keeps its discretisation error, O(h^2) rho_0 Omega^2, out of a rapidly
+   * rotating flow driven by rho - rho_0 alone. 0: the full rho Omega^2 r. */
+  double centrifugal_density;
   sl_qp_fn body_force;   /* f (N m^-3), n_comp per point in the velocity's components; NULL: none */
   void *body_force_user;
   /* A given symmetric stress T (Pa) in the momentum as -div T, weakly b += int T : grad(v) (natural form: a

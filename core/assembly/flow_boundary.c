@@ -36,6 +36,10 @@ int sl_assemble_flow_traction(sl_system *s, const sl_th_space *th, const char *b
       int i = k * npf + q;
       if (m->dim == 1) {
         xi[i][0] = p1->nodes[lf][0], xi[i][1] = 0.0, w[i] = 1.0;
+      } else if (m->geom_order == 2) { /* along the curved face: its own normal and length element */
+        double ds;
+        sl_fe_face_point(m, c, lf, 0.5 * (1.0 + g.xi[q][0]), xi[i], x[i], n, &ds);
+        w[i] = 0.5 * g.w[q] * ds;
       } else {
         const double *a = p1->nodes[lf], *bb = p1->nodes[(lf + 1) % m->nv_per_cell];
         double sq = 0.5 * (1.0 + g.xi[q][0]); /* [-1, 1] -> [0, 1] along the edge */

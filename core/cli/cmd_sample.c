@@ -26,7 +26,7 @@ static const char sample_usage[] =
     "                x0,y0:x1,y1, or x0:x1 on a 1-D mesh\n"
     "  --n N         points on the line, N >= 1 (default 101)\n"
     "  --point P     one point: x,y, or x on a 1-D mesh\n"
-    "  --list        the mesh, the fields and the output times of the file\n"
+    "  --list        the mesh, the fields, the output times and the scalars\n"
     "  --scalars     the model's scalars (solids inventory, interface heights, wall\n"
     "                stresses, ...) of every output time as CSV: time, then one\n"
     "                column per scalar, the units in the header (as OUT_scalars.csv)\n"
@@ -132,6 +132,20 @@ static int list_file(const char *path) {
       printf("%d steps, t = %.10g .. %.10g\n", f->n_steps, f->t_first, f->t_last);
   }
   print_times(c.times, c.n_steps);
+  sl_output_scalars sc;
+  if (sl_output_read_scalars(path, &sc, &d) == 0) {
+    int col = printf("scalars (%d; --scalars prints them):", sc.n_names);
+    if (sc.n_names == 0) printf(" none");
+    for (int i = 0; i < sc.n_names; ++i) {
+      char item[300];
+      int len = snprintf(item, sizeof item, "%s%s%s%s%s", sc.names[i], sc.units[i][0] ? " [" : "", sc.units[i],
+                         sc.units[i][0] ? "]" : "", i + 1 < sc.n_names ? "," : "");
+      if (col + 1 + len > 78) col = printf("\n ");
+      col += printf(" %s", item);
+    }
+    printf("\n");
+    sl_output_scalars_free(&sc);
+  }
   sl_output_contents_free(&c);
   sl_output_mesh_free(&m);
   if (fflush(stdout) != 0 || ferror(stdout)) return sl_cli_error(SL_EFAILED, "sample: cannot write the listing");

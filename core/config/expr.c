@@ -19,6 +19,7 @@
  * chosen branch. Jumps are relative, so moving a block of code keeps them
  * valid. */
 #include "core/config/expr.h"
+#include "core/config/special.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -55,7 +56,14 @@ static double sl_max2(double a, double b) { return isnan(a) || isnan(b) ? a + b 
   X(FLOOR, floor(a))             \
   X(CEIL, ceil(a))               \
   X(SIGN, sl_sign(a))            \
-  X(STEP, (double)(a >= 0))
+  X(STEP, (double)(a >= 0))      \
+  X(J0, sl_bessel_j0(a))         \
+  X(J1, sl_bessel_j1(a))         \
+  X(Y0, sl_bessel_y0(a))         \
+  X(Y1, sl_bessel_y1(a))         \
+  X(JHALF, sl_bessel_jhalf(a))   \
+  X(INT_J0, sl_bessel_int_j0(a)) \
+  X(INT_Y0, sl_bessel_int_y0(a))
 
 /* X(name, value of a and b) */
 #define SL_BINOPS(X)                      \
@@ -74,7 +82,9 @@ static double sl_max2(double a, double b) { return isnan(a) || isnan(b) ? a + b 
   X(OR, (double)(a != 0 || b != 0))       \
   X(ATAN2, atan2(a, b))                   \
   X(MIN, sl_min2(a, b))                   \
-  X(MAX, sl_max2(a, b))
+  X(MAX, sl_max2(a, b))                   \
+  X(JN, sl_bessel_jn(a, b))               \
+  X(YN, sl_bessel_yn(a, b))
 
 /* Every binary operator comes in five forms, in this order:
  *   OP_f     a = second from top, b = top      (pops one)
@@ -158,7 +168,9 @@ static const sl_func funcs[] = {
     {"cosh", OP_COSH, 1},   {"tanh", OP_TANH, 1},   {"exp", OP_EXP, 1},     {"log", OP_LOG, 1},
     {"log10", OP_LOG10, 1}, {"sqrt", OP_SQRT, 1},   {"abs", OP_ABS, 1},     {"min", OP_MIN, -2},
     {"max", OP_MAX, -2},    {"pow", OP_POW, 2},     {"floor", OP_FLOOR, 1}, {"ceil", OP_CEIL, 1},
-    {"sign", OP_SIGN, 1},   {"step", OP_STEP, 1},
+    {"sign", OP_SIGN, 1},   {"step", OP_STEP, 1},   {"j0", OP_J0, 1},       {"j1", OP_J1, 1},
+    {"y0", OP_Y0, 1},       {"y1", OP_Y1, 1},       {"jn", OP_JN, 2},       {"yn", OP_YN, 2},
+    {"jhalf", OP_JHALF, 1}, {"int_j0", OP_INT_J0, 1}, {"int_y0", OP_INT_Y0, 1},
 };
 enum { N_FUNCS = (int)(sizeof funcs / sizeof funcs[0]) };
 

@@ -16,7 +16,10 @@
  * Numbers: 1, 1.5, .5, 1., 1e-3, 2.5E+4 (decimal only). Names: the caller's
  * variables, the constants pi and e, and the functions
  *   sin cos tan asin acos atan sinh cosh tanh exp log log10 sqrt abs floor
- *   ceil sign step (1 argument), atan2 pow (2), min max (2 or more).
+ *   ceil sign step (1 argument), atan2 pow (2), min max (2 or more), and the
+ *   Bessel functions j0 j1 y0 y1 jhalf (J_{1/2}) int_j0 int_y0 (the integrals
+ *   from 0 to x of J0 and Y0) (1), jn(n, x) yn(n, x) (integer n) (2); see
+ *   special.h for their domains (NaN outside).
  * log is the natural logarithm; sign(x) is -1, 0 or 1 (NaN for NaN);
  * step(x) = (x >= 0); min and max return NaN when any argument is NaN.
  * Whitespace (blanks, tabs, newlines) is allowed anywhere between tokens.

@@ -77,13 +77,15 @@ static int inside_reference(sl_cell_type t, const double xi[2]) {
 /* Inverse of the geometric map by Newton's method: exact in one step for
  * affine cells, quadratic convergence for bilinear quads. */
 static void inverse_map(const sl_mesh *m, int c, const double x[2], double xi[2]) {
-  const sl_element *g = sl_element_lagrange(m->cell_type, 1);
+  const sl_element *g = sl_fe_geometry_element(m);
+  double P[SL_ELEMENT_MAX_BASIS][2];
+  int np = sl_mesh_cell_nodes(m, c, P);
   xi[0] = xi[1] = m->cell_type == SL_CELL_TRI3 ? 1.0 / 3.0 : 0.0;
   for (int it = 0; it < 20; ++it) {
-    double N[4], dN[4][2], r[2] = {-x[0], -x[1]}, J[2][2] = {{0, 0}, {0, 0}};
+    double N[SL_ELEMENT_MAX_BASIS], dN[SL_ELEMENT_MAX_BASIS][2], r[2] = {-x[0], -x[1]}, J[2][2] = {{0, 0}, {0, 0}};
     g->eval(xi, N, dN);
-    for (int k = 0; k < m->nv_per_cell; ++k) {
-      const double *p = m->xy + 2 * (size_t)m->cell_vertices[(size_t)c * m->nv_per_cell + k];
+    for (int k = 0; k < np; ++k) {
+      const double *p = P[k];
       for (int i = 0; i < 2; ++i) {
         r[i] += N[k] * p[i];
         for (int j = 0; j < 2; ++j) J[i][j] += p[i] * dN[k][j];
@@ -131,10 +133,11 @@ void sl_fe_eval(const sl_dofmap *dm, const double *u, int c, const double xi[2],
   *value = v;
   if (!grad) return;
   /* Physical gradient: J^-T times the reference gradient. */
-  double N[4], dN[4][2], J[2][2] = {{0, 0}, {0, 0}};
-  sl_element_lagrange(m->cell_type, 1)->eval(xi, N, dN);
-  for (int k = 0; k < m->nv_per_cell; ++k) {
-    const double *p = m->xy + 2 * (size_t)m->cell_vertices[(size_t)c * m->nv_per_cell + k];
+  double N[SL_ELEMENT_MAX_BASIS], dN[SL_ELEMENT_MAX_BASIS][2], J[2][2] = {{0, 0}, {0, 0}}, P[SL_ELEMENT_MAX_BASIS][2];
+  int np = sl_mesh_cell_nodes(m, c, P);
+  sl_fe_geometry_element(m)->eval(xi, N, dN);
+  for (int k = 0; k < np; ++k) {
+    const double *p = P[k];
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j) J[i][j] += p[i] * dN[k][j];
   }

@@ -1,8 +1,11 @@
 /* The integration context: quadrature points, Jacobians and physical basis
  * gradients on one mesh cell at a time.
  *
- * The geometry is isoparametric of order 1 (affine lines and triangles,
- * bilinear quads), exact for the straight-sided cells of sl_mesh. Up to
+ * The geometry is isoparametric of the mesh's geom_order: order 1 (affine
+ * lines and triangles, bilinear quads) for straight-sided cells, order 2
+ * (the P2 / Q2 map through the face and centre nodes, core/mesh/curved.c)
+ * for a mesh with second-order geometry, so curved walls are integrated as
+ * curves. Up to
  * SL_FE_MAX_SPACES elements of the same cell type are tabulated at the same
  * quadrature points (e.g. velocity and pressure of a Taylor–Hood pair).
  *
@@ -26,11 +29,11 @@ typedef struct sl_fe_values {
   int axisymmetric;
   int n_spaces;
   const sl_element *space[SL_FE_MAX_SPACES];
-  const sl_element *geom; /* P1/Q1 of the cell type: the geometric map */
+  const sl_element *geom; /* the geometric map: P1/Q1 of the cell type, P2/Q2 for geom_order 2 */
 
   /* Tabulated once, on the reference cell. */
-  double geom_phi[SL_QUAD_MAX_POINTS][4];
-  double geom_dphi[SL_QUAD_MAX_POINTS][4][2];
+  double geom_phi[SL_QUAD_MAX_POINTS][SL_ELEMENT_MAX_BASIS];
+  double geom_dphi[SL_QUAD_MAX_POINTS][SL_ELEMENT_MAX_BASIS][2];
   double phi[SL_FE_MAX_SPACES][SL_QUAD_MAX_POINTS][SL_ELEMENT_MAX_BASIS];
   double dphi_ref[SL_FE_MAX_SPACES][SL_QUAD_MAX_POINTS][SL_ELEMENT_MAX_BASIS][2];
 
@@ -67,5 +70,17 @@ void sl_fe_values_map_points(const sl_fe_values *fv, int c, double (*x)[2]);
 
 /* Maps the reference point xi of cell c to x. */
 void sl_fe_map_point(const sl_mesh *mesh, int c, const double xi[2], double x[2]);
+
+/* The geometric map's element of the mesh (P1/Q1, or P2/Q2 for geom_order 2). */
+const sl_element *sl_fe_geometry_element(const sl_mesh *mesh);
+
+/* A point of local face lf of cell c, at s in [0, 1] from the face's first
+ * vertex (local vertex lf) to its second (lf + 1): the reference point xi,
+ * the physical point x, the outward unit normal n and the length element
+ * |dx/ds| (for int_face g ds = int_0^1 g |dx/ds| ds), along the curved
+ * face when the mesh has second-order geometry. 2-D only. Any of x, n, ds
+ * may be NULL. */
+void sl_fe_face_point(const sl_mesh *mesh, int c, int lf, double s, double xi[2], double x[2], double n[2],
+                      double *ds);
 
 #endif

@@ -85,6 +85,8 @@ int sl_output_open_opts(sl_output **out, const char *path, const sl_output_opts 
     return rc;
   }
   rc = sl_h5_attr_string(o->file, "format", "sluice-output 1", o->path, "/", d);
+  /* on disk at once: the temporary of a run killed now is known as sluice's */
+  if (!rc && H5Fflush(o->file, H5F_SCOPE_GLOBAL) < 0) rc = sl_h5_fail(d, SL_EFAILED, o->tmp_path, "cannot flush", "/");
   if (rc) {
     H5Fclose(o->file);
     unlink(o->tmp_path);

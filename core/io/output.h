@@ -47,7 +47,8 @@ enum { SL_OUTPUT_UNIT_MAX = 32 };
 
 /* What a run may write (the trust model, docs/output.md). A file that
  * exists is replaced only when sluice wrote it (an output file, its .xmf or
- * its CSV) or with overwrite; `protect` (the scene file) never. A path from
+ * its CSV) or with overwrite; `protect` (the scene file) and `protect_more`
+ * (the files it includes) never. A path from
  * the scene file (from_scene) must lie in scene_dir or the working folder,
  * or below them. */
 typedef struct sl_output_opts {
@@ -55,6 +56,9 @@ typedef struct sl_output_opts {
   const char *scene_dir; /* NULL: the working folder only */
   int overwrite;
   const char *protect;   /* may be NULL */
+  /* more files never replaced (the files the scene includes) */
+  const char *const *protect_more;
+  int n_protect_more;
 } sl_output_opts;
 
 /* The checks sl_output_open_opts makes, creating nothing (SL_EBADINPUT with

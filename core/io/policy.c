@@ -81,13 +81,15 @@ static int may_replace(const char *file, int kind, const char *h5_name, const sl
     if (errno == ENOENT) return 0;
     return sl_diag_set(d, SL_EBADINPUT, "cannot write output '%s': %s", file, strerror(errno));
   }
-  struct stat pb;
-  if (o->protect && stat(o->protect, &pb) == 0 && stat(file, &sb) == 0 && pb.st_dev == sb.st_dev &&
-      pb.st_ino == sb.st_ino)
-    return sl_diag_set(d, SL_EBADINPUT,
-                       "output '%s' is the scene file '%s' itself: it is never replaced (name another output "
-                       "file with -o OUT.h5)",
-                       file, o->protect);
+  for (int i = -1; i < o->n_protect_more; ++i) {
+    const char *p = i < 0 ? o->protect : o->protect_more ? o->protect_more[i] : NULL;
+    struct stat pb;
+    if (p && stat(p, &pb) == 0 && stat(file, &sb) == 0 && pb.st_dev == sb.st_dev && pb.st_ino == sb.st_ino)
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "output '%s' is the scene file '%s'%s: it is never replaced (name another output file "
+                         "with -o OUT.h5)",
+                         file, p, i < 0 ? " itself" : ", which the scene includes");
+  }
   if (lstat(file, &sb) != 0) return 0;
   if (S_ISDIR(sb.st_mode))
     return sl_diag_set(d, SL_EBADINPUT, "cannot write output '%s': it is a directory", file);

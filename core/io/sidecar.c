@@ -108,9 +108,12 @@ char *sl_sidecar_grid(const sl_output *o, int index) {
     sb_xml(&b, f->name);
     sb_printf(&b, "</DataItem>\n    </Attribute>\n");
   }
-  /* ParaView's XDMF readers show these as field data of the time step */
+  /* ParaView's XDMF readers show these as field data of the time step; a
+   * value that is not finite (an interface that is not there) is left out:
+   * XML readers differ on "nan" (the CSV and the HDF5 file have it) */
   for (int i = 0; i < o->n_scalars; ++i) {
     const sl_out_scalar *s = &o->scalars[i];
+    if (!isfinite(s->value)) continue;
     sb_printf(&b, "    <Attribute Name=\"");
     sb_xml(&b, s->name);
     sb_printf(&b, "\" AttributeType=\"Scalar\" Center=\"Grid\">\n");

@@ -41,7 +41,9 @@ int sl_io_space_check(const sl_output *o, double bytes, const char *what, sl_dia
   else
     snprintf(dir, sizeof dir, ".");
   struct statvfs vs;
-  if (statvfs(dir, &vs) != 0) return 0; /* cannot tell: let the write say */
+  /* cannot tell (or a file system that reports no size, as some network and
+   * FUSE ones do): let the write say */
+  if (statvfs(dir, &vs) != 0 || vs.f_blocks == 0) return 0;
   double left = (double)vs.f_bavail * (double)vs.f_frsize;
   if (need > left)
     return sl_diag_set(d, SL_EFAILED, "%s: no room to write %s: it needs about %.3g MB and the disk has %.3g MB free",

@@ -82,6 +82,8 @@ void sl_mesh_destroy(sl_mesh *m) {
   free(m->bface);
   free_names(m->region_names, m->n_regions);
   free(m->cell_region);
+  free(m->face_mid);
+  free(m->cell_mid);
   free(m);
 }
 
@@ -132,7 +134,10 @@ static int check_cells(const sl_mesh *m, const char *source, const int *cell_lin
   return 0;
 }
 
-int sl_mesh_check(const sl_mesh *m, sl_diag *d) { return check_cells(m, NULL, NULL, d); }
+int sl_mesh_check(const sl_mesh *m, sl_diag *d) {
+  int rc = check_cells(m, NULL, NULL, d);
+  return rc ? rc : sl_mesh_check_curved(m, NULL, NULL, d);
+}
 
 /* ---- faces -------------------------------------------------------------- */
 
@@ -358,6 +363,68 @@ static int tag_boundaries(sl_mesh *m, const sl_mesh_spec *s, const half_face *h,
   return 0;
 }
 
+/* ---- second-order geometry ---------------------------------------------- */
+
+/* The spec's face and centre nodes onto the faces; straight meshes stay
+ * geom_order 1. */
+static int set_curved(sl_mesh *m, const sl_mesh_spec *s, sl_diag *d) {
+  const int nf = m->nf_per_cell, quad = m->cell_type == SL_CELL_QUAD4;
+  if (quad && !s->cell_centre)
+    return sl_diag_set(d, SL_EBADINPUT, "a second-order quadrilateral mesh needs its centre nodes");
+  m->face_mid = malloc(2 * (size_t)m->n_faces * sizeof *m->face_mid);
+  unsigned char *seen = calloc((size_t)m->n_faces + 1, 1);
+  if (quad) m->cell_mid = malloc(2 * (size_t)m->n_cells * sizeof *m->cell_mid);
+  if (!m->face_mid || !seen || (quad && !m->cell_mid)) {
+    free(seen);
+    return sl_diag_set(d, SL_ENOMEM, "out of memory for the second-order geometry of %d faces", m->n_faces);
+  }
+  double dev = 0; /* the largest distance of a node from its straight position, relative to the face length */
+  for (int c = 0; c < m->n_cells; ++c)
+    for (int k = 0; k < nf; ++k) {
+      int f = m->cell_faces[(size_t)c * nf + k];
+      const double *p = s->edge_mid + 2 * ((size_t)nf * c + k);
+      const double *a = vx(m, m->face_vertices[2 * f]), *b = vx(m, m->face_vertices[2 * f + 1]);
+      double len = hypot(b[0] - a[0], b[1] - a[1]);
+      char at[512];
+      if (!isfinite(p[0]) || !isfinite(p[1])) {
+        where(at, sizeof at, s->source, s->cell_line, c);
+        free(seen);
+        return sl_diag_set(d, SL_EBADINPUT, "%scell %d: the node on its face %d has a non-finite coordinate", at, c, k);
+      }
+      if (seen[f]) {
+        const double *q = m->face_mid + 2 * (size_t)f;
+        if (hypot(q[0] - p[0], q[1] - p[1]) > 1e-9 * len) {
+          where(at, sizeof at, s->source, s->cell_line, c);
+          free(seen);
+          return sl_diag_set(d, SL_EBADINPUT,
+                             "%scells %d and %d give different nodes, (%.10g, %.10g) and (%.10g, %.10g), on their "
+                             "shared face",
+                             at, m->face_cells[2 * f], c, q[0], q[1], p[0], p[1]);
+        }
+        continue;
+      }
+      seen[f] = 1;
+      m->face_mid[2 * (size_t)f] = p[0], m->face_mid[2 * (size_t)f + 1] = p[1];
+      dev = fmax(dev, hypot(p[0] - 0.5 * (a[0] + b[0]), p[1] - 0.5 * (a[1] + b[1])) / len);
+    }
+  free(seen);
+  for (int c = 0; quad && c < m->n_cells; ++c) {
+    const double *p = s->cell_centre + 2 * (size_t)c;
+    const int *cv = m->cell_vertices + 4 * (size_t)c;
+    double cx = 0, cy = 0;
+    for (int k = 0; k < 4; ++k) cx += 0.25 * vx(m, cv[k])[0], cy += 0.25 * vx(m, cv[k])[1];
+    m->cell_mid[2 * (size_t)c] = p[0], m->cell_mid[2 * (size_t)c + 1] = p[1];
+    dev = fmax(dev, hypot(p[0] - cx, p[1] - cy) / sqrt(fabs(sl_mesh_cell_area(m, c))));
+  }
+  if (!(dev > 1e-10)) { /* straight: the linear map is the same map (and cheaper) */
+    free(m->face_mid), free(m->cell_mid);
+    m->face_mid = m->cell_mid = NULL;
+    return 0;
+  }
+  m->geom_order = 2;
+  return sl_mesh_check_curved(m, s->source, s->cell_line, d);
+}
+
 /* ---- create ------------------------------------------------------------- */
 
 static int copy_names(char ***dst, const char *const *src, int n, const char *what, sl_diag *d) {
@@ -479,6 +546,8 @@ int sl_mesh_create(const sl_mesh_spec *s, sl_mesh **out, sl_diag *d) {
   free(h);
   free(face_of);
   if (rc) goto fail;
+  m->geom_order = 1;
+  if (s->edge_mid && m->dim == 2 && (rc = set_curved(m, s, d))) goto fail;
   *out = m;
   return 0;
 fail:
@@ -487,6 +556,21 @@ fail:
 }
 
 /* ---- names ------------------------------------------------------------- */
+
+int sl_mesh_scene_name(const char *name, char *out, size_t size) {
+  if (!size) return 0;
+  size_t n = strlen(name), k = 0;
+  int changed = 0;
+  for (size_t i = 0; i < n && k + 1 < size; ++i) {
+    char c = name[i];
+    int ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+    if (c == '.') ok = i > 0 && i + 1 < n && name[i - 1] != '.' && name[i + 1] != '.';
+    out[k++] = ok ? c : '_';
+    changed |= !ok;
+  }
+  out[k] = '\0';
+  return changed || k < n;
+}
 
 static int name_id(char *const *names, int n, const char *kind, const char *kinds, const char *name, int *id,
                    sl_diag *d) {
@@ -630,12 +714,13 @@ void sl_mesh_quality_compute(const sl_mesh *m, sl_mesh_quality *q) {
 void sl_mesh_print_report(const sl_mesh *m, FILE *out) {
   sl_mesh_quality q;
   sl_mesh_quality_compute(m, &q);
-  fprintf(out, "mesh: %d-D, %d %s cells, %d vertices, %d faces (%d on the boundary)\n", m->dim, m->n_cells,
-          sl_cell_type_name(m->cell_type), m->n_vertices, m->n_faces, m->n_boundary_faces);
+  fprintf(out, "mesh: %d-D, %d %s cells%s, %d vertices, %d faces (%d on the boundary)\n", m->dim, m->n_cells,
+          sl_cell_type_name(m->cell_type), m->geom_order == 2 ? " with second-order (curved) geometry" : "",
+          m->n_vertices, m->n_faces, m->n_boundary_faces);
   fprintf(out, "  boundaries:");
   for (int b = 0; b < m->n_boundaries; ++b) {
     double len = 0;
-    for (int i = m->bface_start[b]; i < m->bface_start[b + 1]; ++i) len += sl_mesh_face_length(m, m->bface[i]);
+    for (int i = m->bface_start[b]; i < m->bface_start[b + 1]; ++i) len += sl_mesh_face_arc_length(m, m->bface[i]);
     int nb = m->bface_start[b + 1] - m->bface_start[b];
     if (m->dim == 1)
       fprintf(out, "%s %s (%d point%s)", b ? "," : "", m->boundary_names[b], nb, nb == 1 ? "" : "s");

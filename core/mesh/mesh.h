@@ -6,7 +6,14 @@
  *    1-D mesh lies on the x axis (y = 0): a vertical column uses x as its
  *    height and the model decides where gravity points.
  *  - One cell type per mesh: line2 (1-D), tri3 or quad4 (2-D). Connectivity
- *    is 0-based. 2-D cells are counter-clockwise (positive Jacobian at every
+ *    is 0-based. A 2-D mesh may carry second-order geometry (geom_order 2,
+ *    from a Gmsh mesh made with -order 2): a node on each face and, on
+ *    quadrangles, one in the centre; the cells are then the images of the
+ *    reference cell under the quadratic (P2 / Q2) map through those nodes,
+ *    so curved walls are curved. The finite-element geometry
+ *    (core/fe/geometry.h) and sl_mesh_face_arc_length use it; the planar
+ *    measures below (areas, face lengths, normals: the finite-volume view)
+ *    stay those of the straight-sided cells through the vertices. 2-D cells are counter-clockwise (positive Jacobian at every
  *    corner); 1-D cells run towards increasing x.
  *  - Local face k of a 2-D cell joins its local vertices k and (k + 1) % nv.
  *    In 1-D the faces are points: local face 0 is vertex 0 (the left end),
@@ -71,6 +78,16 @@ typedef struct sl_mesh {
   int n_regions;         /* 0 when the mesh has no cell regions */
   char **region_names;   /* [n_regions] */
   int *cell_region;      /* [n_cells], region index or -1; NULL when n_regions == 0 */
+
+  /* Second-order geometry (2-D only). geom_order 1: straight-sided cells,
+   * face_mid and cell_mid NULL. geom_order 2: face_mid[2f], [2f + 1] is the
+   * node on face f (its midpoint when the face is straight); on quads
+   * cell_mid[2c], [2c + 1] is the centre node. A mesh whose face nodes all
+   * sit at the midpoints of straight faces (and centres at the bilinear
+   * centre) is stored as geom_order 1. */
+  int geom_order;
+  double *face_mid;      /* [2 * n_faces] or NULL */
+  double *cell_mid;      /* [2 * n_cells] (quads, geom_order 2) or NULL */
 } sl_mesh;
 
 /* ---- construction ------------------------------------------------------ */
@@ -98,6 +115,13 @@ typedef struct sl_mesh_spec {
   const char *source;
   const int *cell_line;
   const int *side_line;
+  /* Optional second-order geometry (2-D): the node on local face k of cell
+   * c at edge_mid[2 (nf c + k)], [.. + 1] (nf = faces per cell), and for
+   * quads the centre node at cell_centre[2c], [2c + 1] (required with
+   * edge_mid on quads). Two cells sharing a face must give the same node.
+   * NULL: straight-sided cells. */
+  const double *edge_mid;
+  const double *cell_centre;
 } sl_mesh_spec;
 
 /* Builds the faces, the boundary lists and checks the mesh (sl_mesh_check).
@@ -174,8 +198,22 @@ int sl_mesh_inclined_box(double x0, double y0, double width, double height, doub
 
 /* ---- Gmsh -------------------------------------------------------------- */
 
-/* Reads an ASCII Gmsh MSH 2.2 or 4.1 file. Elements: 2-node lines (1),
- * 3-node triangles (2), 4-node quads (3); points (15) are ignored in 2-D.
+/* Reads a Gmsh MSH 2.2 (ASCII) or 4.1 (ASCII or binary) file. Elements:
+ * 2-node lines (1), 3-node triangles (2), 4-node quads (3), and their
+ * second-order forms: 3-node lines (8), 6-node triangles (9), 9-node and
+ * 8-node quads (10, 16; the centre of an 8-node quad is the image of the
+ * reference centre under its serendipity map); points (15) are ignored in
+ * 2-D. Second-order cells give the mesh second-order geometry
+ * (geom_order 2); in 1-D the mid node of a 3-node line is dropped (the
+ * cell is the straight segment either way). Triangles and quadrangles in
+ * one mesh are refused (one cell type per mesh) unless split_quads is set
+ * (sl_mesh_read_gmsh_opts): each quadrangle then becomes two triangles
+ * along its shorter diagonal (second-order quads: the diagonal's node is
+ * the quad's centre node).
+ * Only regular files of at most SL_MESH_GMSH_MAX_BYTES are read (a FIFO,
+ * a device or a terminal is refused before anything is read from it).
+ * Physical names become boundary and region names with the scene rule
+ * (sl_mesh_scene_name): "left wall" is addressed as left_wall.
  * Physical groups of dimension 1 name the boundaries (their lines tag
  * boundary faces), groups of dimension 2 are cell regions; names come from
  * $PhysicalNames (required). Every boundary face must lie in a physical
@@ -187,8 +225,19 @@ int sl_mesh_inclined_box(double x0, double y0, double width, double height, doub
  * normal -z) is reoriented; a mix is refused as inverted cells.
  * Errors name file:line and return SL_EBADINPUT. */
 int sl_mesh_read_gmsh(const char *path, sl_mesh **out, sl_diag *d);
+/* The largest mesh file read: 1 GiB, about 5 million second-order
+ * triangles of ASCII text (the environment variable SLUICE_MESH_MAX_BYTES,
+ * a number of bytes, sets another limit; at most 2^31 - 1). */
+#define SL_MESH_GMSH_MAX_BYTES (1024L * 1024 * 1024)
 /* The same from text in memory; `name` is used in diagnostics. */
 int sl_mesh_read_gmsh_string(const char *text, size_t len, const char *name, sl_mesh **out, sl_diag *d);
+/* Reader options (zero-initialised: the defaults; NULL: the defaults). */
+typedef struct sl_gmsh_opts {
+  int split_quads; /* split every quadrangle into two triangles */
+} sl_gmsh_opts;
+int sl_mesh_read_gmsh_opts(const char *path, const sl_gmsh_opts *opts, sl_mesh **out, sl_diag *d);
+int sl_mesh_read_gmsh_string_opts(const char *text, size_t len, const char *name, const sl_gmsh_opts *opts,
+                                  sl_mesh **out, sl_diag *d);
 
 /* ---- names ------------------------------------------------------------- */
 
@@ -198,6 +247,13 @@ int sl_mesh_boundary_id(const sl_mesh *m, const char *name, int *id, sl_diag *d)
 int sl_mesh_region_id(const sl_mesh *m, const char *name, int *id, sl_diag *d);
 
 const char *sl_cell_type_name(sl_cell_type t);
+
+/* The name a scene section can address: every character other than a
+ * letter, digit, '_', '-' or '.' becomes '_', and so does a '.' at either
+ * end or next to another '.' (a scene section name has no empty dotted
+ * part). "left wall" -> "left_wall", "inlet (1)" -> "inlet__1_". Writes at
+ * most size - 1 characters; returns 1 when the name changed, 0 when not. */
+int sl_mesh_scene_name(const char *name, char *out, size_t size);
 
 /* ---- periodic boundaries ------------------------------------------------ */
 
@@ -248,6 +304,29 @@ void sl_mesh_face_normal(const sl_mesh *m, int f, double n[2]);
 /* Midpoint of face f (the vertex itself in 1-D). */
 void sl_mesh_face_centroid(const sl_mesh *m, int f, double c[2]);
 
+/* ---- second-order geometry (core/mesh/curved.c) ------------------------- */
+
+/* The geometric nodes of cell c in the element order of core/fe/element.h
+ * (vertices, then one per face, then the quad's centre): nv_per_cell nodes
+ * for geom_order 1, 6 (triangle) or 9 (quadrangle) for geom_order 2.
+ * Returns their number. */
+int sl_mesh_cell_nodes(const sl_mesh *m, int c, double (*x)[2]);
+/* The point of face f at s in [0, 1] (s = 0 at face_vertices[2f], 1 at
+ * [2f + 1]) and dx/ds there: the quadratic through the face's node when the
+ * mesh is curved, the straight edge otherwise. t may be NULL. 2-D only. */
+void sl_mesh_face_point(const sl_mesh *m, int f, double s, double x[2], double t[2]);
+/* Length of face f along the curve (sl_mesh_face_length when straight):
+ * 5-point Gauss-Legendre of |dx/ds|. */
+double sl_mesh_face_arc_length(const sl_mesh *m, int f);
+/* Area of cell c under its second-order map (sl_mesh_cell_area when
+ * geom_order is 1): Gauss quadrature of det J, exact for the polynomial
+ * det J of the P2 / Q2 map. */
+double sl_mesh_cell_curved_area(const sl_mesh *m, int c);
+/* Refuses a second-order cell whose map folds (det J <= 0 at one of its
+ * nodes or quadrature points): SL_EBADINPUT with the cell, the point and
+ * its nodes. 0 for geom_order 1. */
+int sl_mesh_check_curved(const sl_mesh *m, const char *source, const int *cell_line, sl_diag *d);
+
 /* ---- quality ----------------------------------------------------------- */
 
 typedef struct sl_mesh_quality {
@@ -261,8 +340,9 @@ typedef struct sl_mesh_quality {
 
 void sl_mesh_quality_compute(const sl_mesh *m, sl_mesh_quality *q);
 /* Refuses inverted (negative Jacobian at a corner) and degenerate (zero
- * area, zero-length edge or straight angle) cells: SL_EBADINPUT with the
- * cell index and its vertices' coordinates. sl_mesh_create calls it; call it
+ * area, zero-length edge or straight angle) cells, and second-order cells
+ * whose map folds (sl_mesh_check_curved): SL_EBADINPUT with the cell index
+ * and its vertices' coordinates. sl_mesh_create calls it; call it
  * again after moving vertices. */
 int sl_mesh_check(const sl_mesh *m, sl_diag *d);
 /* A few lines: sizes, boundaries with face counts and lengths, quality. */

@@ -5,6 +5,7 @@
 
 #include "core/models/mixture/mixture.h"
 #include "core/models/navier_stokes/navier_stokes.h"
+#include "core/models/pipe/pipe.h"
 #include "core/models/scalar/scalar.h"
 #include "core/models/two_fluid/two_fluid.h"
 #include "core/scene/scene.h"
@@ -16,6 +17,7 @@ static const sl_model_entry entries[] = {
     {&sl_two_fluid_plane_schema, &sl_two_fluid_plane_ops},
     {&sl_two_fluid_shear_schema, &sl_two_fluid_shear_ops},
     {&sl_scalar_schema, &sl_scalar_ops},
+    {&sl_pipe_schema, &sl_pipe_ops},
 };
 enum { N_ENTRIES = (int)(sizeof entries / sizeof entries[0]) };
 

@@ -133,6 +133,7 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
     sl_output_opts oo;
     char dir[4096];
     sl_run_output_opts(o, dir, sizeof dir, &oo);
+    oo.protect_more = (const char *const *)ini->files, oo.n_protect_more = ini->n_files;
     rc = sl_output_open_opts(&out, res->output_path, &oo, d);
   }
   if (!rc) rc = ops->write_mesh(self, out, d);

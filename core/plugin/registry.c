@@ -642,6 +642,28 @@ int sl_registry_find(const sl_registry *r, sl_kind kind, const char *name, const
   if ((rc = load_candidates(cache, kind, name, library, d))) return rc;
   if ((rc = find_loaded(r, kind, name, library, entry, d)) == 0) return 0;
   if (rc != SL_EBADINPUT || strstr(d->msg, "provided by two libraries")) return rc;
+  /* `library` picks among the libraries of the search path, never adds one. */
+  if (library) {
+    int on_path = 0;
+    for (int i = 0; i < r->n_files && !on_path; ++i) on_path = file_matches(r->files[i], library);
+    if (!on_path)
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "library = %s is not a library on the plugin search path (it only says which of the "
+                         "libraries there provides %s closure '%s'; a scene cannot add one)",
+                         library, sl_kind_name(kind), name);
+  }
+  /* An index names a library for it that could not be used: say why. */
+  for (int i = 0; i < r->n_index; ++i) {
+    const struct sl_index_entry *e = &r->index[i];
+    if (e->kind != kind || strcmp(e->name, name) != 0 || !file_matches(e->path, library)) continue;
+    size_t len = strlen(e->path);
+    for (int k = 0; k < r->n_problems; ++k)
+      if (!strncmp(r->problems[k], e->path, len) && r->problems[k][len] == ':')
+        return sl_diag_set(d, SL_EBADINPUT, "%s closure '%s': its index names %s, which cannot be used: %s",
+                           sl_kind_name(kind), name, e->path, r->problems[k] + len + 2);
+    return sl_diag_set(d, SL_EBADINPUT, "%s closure '%s': its index names %s, which does not hold it (write the "
+                       "folder's index again: sluice closure index DIR)", sl_kind_name(kind), name, e->path);
+  }
   /* Refused with no further library opened: a did-you-mean over the names
    * the indexes list as well as those loaded. */
   const char *cands[512];

@@ -45,7 +45,14 @@ static const sl_key mesh_keys[] = {
     {.section = "mesh", .name = "grading_y", .type = SL_KEY_STRING, SL_AT_SCENE(mesh_config.grading_y),
      .help = "the same along y (z)"},
     {.section = "mesh", .name = "file", .type = SL_KEY_STRING, SL_AT_SCENE(mesh_config.file),
-     .help = "gmsh: the mesh file (MSH 2.2 or 4.1 ASCII), relative to the scene"},
+     .help = "gmsh: the mesh file (MSH 2.2 ASCII, 4.1 ASCII or binary; order 1 or 2), relative to the scene"},
+    {.section = "mesh", .name = "memory_limit", .type = SL_KEY_REAL, SL_AT_SCENE(mesh_config.memory_limit), .min = 0.0,
+     .max = 1e18, .units = "B", .def_doc = "the machine's memory (MemTotal in /proc/meminfo)",
+     .help = "refuse a mesh whose run needs more (estimated before anything is allocated: at least 16 kB a cell in "
+             "2-D, 1 kB in 1-D)"},
+    {.section = "mesh", .name = "split_quads", .type = SL_KEY_BOOL, SL_AT_SCENE(mesh_config.split_quads),
+     .help = "gmsh: split each quadrangle into two triangles along its shorter diagonal (a mesh of triangles and "
+             "quadrangles then runs on P2/P1)"},
 };
 TABLE(sl_keys_mesh, mesh_keys);
 

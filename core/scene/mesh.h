@@ -8,6 +8,8 @@
  *   cell_type = quad | tri   diagonal = right | left | union_jack
  *   grading_x = geometric:RATIO | symmetric:RATIO   grading_y = ...
  *   file = mesh.msh                 (gmsh, relative to the scene file)
+ *   split_quads = true              (gmsh: quadrangles become two triangles)
+ *   memory_limit = BYTES            (0: the machine's memory)
  * Errors name the file and line of the offending key. */
 #ifndef SLUICE_SCENE_MESH_H
 #define SLUICE_SCENE_MESH_H

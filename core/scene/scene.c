@@ -318,7 +318,7 @@ static int resolve_time(builder *b, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "%s = %g is larger than %s = %g: the first step would be below the smallest",
                        sl_scene_where(sc, &t->dt_min, a, sizeof a), t->dt_min, sl_scene_where(sc, &t->dt, c, sizeof c),
                        t->dt);
-  if (t->dt_max < t->dt_min)
+  if (sl_scene_given(sc, &t->dt_max) && t->dt_max < t->dt_min)
     return sl_diag_set(d, SL_EBADINPUT, "%s = %g is smaller than %s = %g: no step fits between them",
                        sl_scene_where(sc, &t->dt_max, a, sizeof a), t->dt_max,
                        sl_scene_where(sc, &t->dt_min, c, sizeof c), t->dt_min);
@@ -500,8 +500,9 @@ static int check_output_file(const sl_scene *sc, sl_diag *d) {
   const sl_src *e = sl_scene_src(sc, &sc->output.file);
   if (!e || (sc->output.file && *sc->output.file)) return 0;
   return sl_diag_set(d, SL_EBADINPUT,
-                     "%s:%d: error: [output] file is empty; name the output file (e.g. file = result.h5) or leave "
-                     "the key out for the default (the scene's name with .h5, in the working folder)",
+                     "%s:%d: error: [output] file = \"\": the file name is empty; name the output file (e.g. file = "
+                     "result.h5) or leave the key out for the default (the scene's name with .h5, in the working "
+                     "folder)",
                      e->file, e->line);
 }
 
@@ -557,11 +558,6 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
                        "%s: launched on %d ranks (mpirun), the linear solves must be PETSc's (linear = petsc or "
                        "auto); the direct solvers run on one rank",
                        sl_scene_where(sc, &sc->solver.linear, at, sizeof at), ranks);
-  }
-  if (!rc && sl_scene_given(sc, &sc->output.file) && (!sc->output.file || !*sc->output.file)) {
-    char at[400];
-    rc = sl_diag_set(d, SL_EBADINPUT, "%s = \"\": an empty file name (leave the key out for the scene's name with .h5)",
-                     sl_scene_where(sc, &sc->output.file, at, sizeof at));
   }
   if (!rc && o->build_mesh && sl_schema_has_section(schema, "mesh")) rc = sl_scene_mesh_build(sc, &sc->mesh, d);
   if (!rc && o->build_mesh && schema->boundary_size) rc = fill_boundaries(&b, d);

@@ -29,6 +29,8 @@ typedef struct sl_mesh_config {
   double shear, width, height, angle;
   int cell_type, diagonal;
   const char *grading_x, *grading_y, *file;
+  double memory_limit; /* bytes a run may need (0: the machine's memory) */
+  int split_quads;     /* gmsh: split quadrangles into triangles */
 } sl_mesh_config;
 
 /* [solver] */

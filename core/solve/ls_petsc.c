@@ -103,6 +103,14 @@ static int insert_levels(sl_diag *d) {
     PetscErrorCode e = PetscOptionsInsertString(NULL, levels[i]);
     if (e) return sl_diag_set(d, SL_EBADINPUT, "petsc: cannot read the options of %s (\"%s\")", names[i], levels[i]);
   }
+  /* -log_view given after PetscInitialize: PETSc's logging must start now, or PetscFinalize fails */
+  static int logging;
+  PetscBool log_view = PETSC_FALSE;
+  if (!logging && !PetscOptionsHasName(NULL, NULL, "-log_view", &log_view) && log_view) {
+    PetscErrorCode e = PetscLogDefaultBegin();
+    if (e) return petsc_fail(e, "starting PETSc's logging for -log_view", d);
+    logging = 1;
+  }
   return 0;
 }
 

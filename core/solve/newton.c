@@ -107,20 +107,22 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
       converged = 1;
       break;
     }
-    /* the residual at the round-off of its own terms and no longer falling: no iteration can make it
-       smaller, and the corrections are noise (a flow at rest whose pressure carries the load) */
     /* the correction the next iteration would make, from the last one and the residual's decrease (error
        and residual contract alike near the solution, Kelley 1995, Iterative Methods for Linear and Nonlinear
-       Equations, sec. 5.1): below the tolerance at a residual small against its terms, the solve is done
+       Equations, ch. 5): below the tolerance at a residual small against its terms, the solve is done
        without one more solve to measure it */
     if (!o.linear && st->iterations > 1 && last_full && res <= rtol_terms * T && res_prev > 0) {
-      double next = st->correction * res / res_prev;
+      /* with a contraction r per iteration the error left after this iterate is the next correction summed
+         over the rest, c r / (1 - r): for Newton r is tiny, for Picard it need not be */
+      double r = res / res_prev, next = r < 1.0 ? st->correction * r / (1.0 - r) : INFINITY;
       if (next <= o.rtol) {
         st->correction = next, st->estimated = 1;
         converged = 1;
         break;
       }
     }
+    /* the residual at the round-off of its own terms and no longer falling: no iteration can make it
+       smaller, and the corrections are noise (a flow at rest whose pressure carries the load) */
     if (!o.linear && st->iterations > 1 && res > 0.5 * res_prev && res <= SL_NEWTON_ROUNDOFF * T) {
       converged = 1, st->roundoff = 1;
       break;

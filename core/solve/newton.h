@@ -10,11 +10,12 @@
  * The iteration converges when the correction is small,
  *   max |du_i| <= rtol * max(max |u_i|, scale)   over i < n_check
  * (that last correction is applied; or the next correction, estimated as
- * the last one times the residual's decrease after a full step, is) AND the residual at u is small against
+ * c r / (1 - r) from the last one c and the residual's contraction r over a
+ * full step, is) AND the residual at u is small against
  * the scale the solution's own terms set,
  *   |b|_2 <= rtol_residual * T,  T = |t|_2,  t_i = sum_j |A_ij u_j|
  * over the rows that are equations (not constrained): a residual small only
- * against the first one (a large load not yet taken up by the pressure) is
+ * against the first residual (a large load not yet taken up by the pressure) is
  * not convergence. When the residual is at the round-off of those terms,
  * |b|_2 <= SL_NEWTON_ROUNDOFF T, and an iteration no longer reduces it (by
  * half), no iteration can improve it and the solve has converged at
@@ -104,8 +105,8 @@ typedef struct sl_newton_stats {
   double correction;          /* the last relative correction */
   double term_scale;          /* T of the last iterate (see above) */
   int roundoff;               /* converged with the residual at the round-off of its terms */
-  int estimated;              /* correction is the next one's estimate (the last one times the residual's
-                                 decrease), below the tolerance, and no further solve was made */
+  int estimated;              /* correction is the estimate c r / (1 - r) of what is left (c the last one, r the residual's
+                                 contraction), below the tolerance, and no further solve was made */
   double history[SL_NEWTON_HISTORY]; /* relative correction of each iteration */
   double t_assembly;          /* wall seconds in the callback */
 } sl_newton_stats;

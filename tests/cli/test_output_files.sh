@@ -29,17 +29,26 @@ for flag in "" --overwrite; do
   check "-o SCENE.ini $flag leaves the scene" 'cmp -s scenes/bed.ini keep.ini'
 done
 
+printf '[output]\nevery = 10\n' > scenes/common.ini
+printf 'include = common.ini\n' | cat - scenes/bed.ini > scenes/with_include.ini
+cp scenes/common.ini common_keep.ini
+"$S" run scenes/with_include.ini -o scenes/common.ini --overwrite > out4b.txt 2>&1; rc=$?
+check "-o an included file refused, also with --overwrite" \
+  '[ $rc = 2 ] && grep -q "which the scene includes: it is never replaced" out4b.txt && cmp -s scenes/common.ini common_keep.ini'
+
 other=$(mktemp -d)
 "$S" run scenes/bed.ini --set "output.file=$other/bed.h5" > out5.txt 2>&1; rc=$?
 check "[output] file outside the scene's folder and the working folder refused" \
   '[ $rc = 2 ] && grep -q "outside the scene.s folder scenes and the working folder" out5.txt && [ ! -e "$other/bed.h5" ]'
 "$S" run scenes/bed.ini -o "$other/bed.h5" > out6.txt 2>&1; rc=$?
 check "the same path with -o is the user's choice" '[ $rc = 0 ] && [ -e "$other/bed.h5" ]'
+"$S" run scenes/bed.ini --set "output.file=$other/bed2.h5" --check > out5b.txt 2>&1; rc=$?
+check "--check finds it too" '[ $rc = 2 ] && grep -q "outside the scene.s folder" out5b.txt'
 rm -rf "$other"
 "$S" run scenes/bed.ini --set "output.file=scenes/bed_out.h5" > out7.txt 2>&1; rc=$?
 check "[output] file in the scene's folder" '[ $rc = 0 ] && [ -e scenes/bed_out.h5 ] && [ -e scenes/bed_out_scalars.csv ]'
 "$S" run scenes/bed.ini --set 'output.file=""' > out8.txt 2>&1; rc=$?
-check "[output] file = \"\" refused" '[ $rc = 2 ] && grep -q "\[output\] file is empty" out8.txt'
+check "[output] file = \"\" refused" '[ $rc = 2 ] && grep -q "\[output\] file = \"\": the file name is empty" out8.txt'
 
 "$S" run scenes/bed.ini -o bed.h5 --summary-json bed.json > out9.txt 2>&1; rc=$?
 check "--summary-json" '[ $rc = 0 ] && grep -q "\"status\": \"done\"" bed.json && grep -q "\"output\": \"bed.h5\"" bed.json'
@@ -50,6 +59,7 @@ fi
 check "--summary-json of bad input" '[ $rc = 2 ] && grep -q "\"status\": \"bad input\"" bad.json && grep -q "nosuch" bad.json'
 "$S" sample bed.h5 --scalars > scalars.txt 2> /dev/null; rc=$?
 check "sample --scalars prints OUT_scalars.csv" '[ $rc = 0 ] && cmp -s scalars.txt bed_scalars.csv'
+check "sample --list names the scalars" '"$S" sample bed.h5 --list | grep -q "^scalars (3; --scalars prints them): solids_inventory \[m\],"'
 check "the scalars' header has units" 'head -1 bed_scalars.csv | grep -q "^time \[s\],solids_inventory \[m\],"'
 check "the .xmf has the scalars as grid attributes" 'grep -q "Name=\"solids_inventory\" AttributeType=\"Scalar\" Center=\"Grid\"" bed.xmf'
 check "no temporaries left" '[ -z "$(ls *.tmp scenes/*.tmp 2> /dev/null)" ]'

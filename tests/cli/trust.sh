@@ -102,6 +102,10 @@ restart_scene)
   run 2 run "$C/cavity_re100.ini" "${a[@]}" --set time.end=0.5 --restart ck.h5 -o kept.h5
   has "\[time\] end = 0.5 is not after the checkpoint's time t = 1 in ck.h5: nothing to run"
   [ "$(cksum < kept.h5)" = "$sum" ] || fail "a refused restart changed kept.h5"
+  # a closure parameter
+  run 0 run "$C/kynch_settling.ini" --set time.end=20 -o settling.h5
+  run 2 run "$C/kynch_settling.ini" --set time.end=40 --set closure.hindered_settling.n=5 --restart settling.h5 -o more.h5
+  has "\[closure.hindered_settling\] n = 5: the checkpoint in settling.h5 was run with 4.65"
   # what may change: the end, the output interval, the linear solver; the same viscosity written otherwise
   run 0 run "$C/cavity_re100.ini" "${a[@]}" --set time.end=2 --set output.every=0.25 --set solver.linear=umfpack \
     --set fluid.viscosity=1e-2 --restart ck.h5 -o continued.h5
@@ -140,6 +144,14 @@ monitor)
   n=$(grep -c "^sluice: monitor:" out.txt)
   its=$(sed -n 's/^sluice: [0-9]* steps (0 rejected), \([0-9]*\) Newton.*/\1/p' out.txt)
   [ "$n" = "$its" ] || fail "$n monitor lines for $its iterations"
+  pass ;;
+boundary_not_finite_later)
+  # Issue 25 item 13: a boundary value that stops being finite during the run names its section and the time
+  # (it was "residual is not finite (entry 16)"), and the run keeps the last accepted state.
+  run 1 run "$C/cavity_stokes.ini" --set mesh.cells=4 --set time.scheme=bdf2 --set time.end=1 --set time.dt=0.05 \
+    --set output.every=0.2 --set "boundary.top.velocity=t < 0.25 ? 1 : log(-1), 0" -o later.h5
+  has "the last accepted state, t = 0\.2[0-9]*, is saved in later.h5: .*\[boundary.top\] velocity: component 1 is -?nan at \([0-9.]+, 1\), t = 0\.2[5-9][0-9]*: not a finite velocity"
+  hasnt "residual is not finite"
   pass ;;
 *) fail "unknown case" ;;
 esac

@@ -1,5 +1,10 @@
 /* Gmsh reader: 2.2 and 4.1 files of the same geometry give the same mesh;
  * every malformed file gives SL_EBADINPUT with the right file:line. */
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "core/fe/geometry.h"
 #include "mesh_checks.h"
 
 static sl_diag d;
@@ -132,6 +137,127 @@ static void test_clockwise(void) {
   sl_mesh_destroy(m);
 }
 
+/* The quarter ring 0.5 < r < 1 in 6-node triangles: curved walls of length
+ * pi/4 and pi/2, area 3 pi / 16; the binary file gives the ASCII file's mesh. */
+static void test_ring(void) {
+  sl_mesh *a = read("ring_p2_41.msh"), *b = read("ring_p2_41_bin.msh");
+  if (!a || !b) goto done;
+  const double pi = acos(-1.0);
+  CHECK(a->geom_order == 2 && b->geom_order == 2);
+  int in, out;
+  CHECK(sl_mesh_boundary_id(a, "inner_wall", &in, &d) == 0 && sl_mesh_boundary_id(a, "outer_wall", &out, &d) == 0);
+  double li = 0, lo = 0, area = 0;
+  for (int k = a->bface_start[in]; k < a->bface_start[in + 1]; ++k) li += sl_mesh_face_arc_length(a, a->bface[k]);
+  for (int k = a->bface_start[out]; k < a->bface_start[out + 1]; ++k) lo += sl_mesh_face_arc_length(a, a->bface[k]);
+  for (int c = 0; c < a->n_cells; ++c) area += sl_mesh_cell_curved_area(a, c);
+  printf("ring: %d cells, inner wall %.8f (pi/4 %.8f), outer %.8f (pi/2 %.8f), area %.8f (3 pi/16 %.8f)\n", a->n_cells,
+         li, pi / 4, lo, pi / 2, area, 3 * pi / 16);
+  CHECK(fabs(li - pi / 4) < 1e-4 && fabs(lo - pi / 2) < 1e-4 && fabs(area - 3 * pi / 16) < 1e-4);
+  CHECK(a->n_cells == b->n_cells && a->n_vertices == b->n_vertices && a->n_faces == b->n_faces);
+  if (a->n_cells == b->n_cells && a->n_faces == b->n_faces) {
+    double dm = 0;
+    for (int i = 0; i < 2 * a->n_faces; ++i) dm = fmax(dm, fabs(a->face_mid[i] - b->face_mid[i]));
+    CHECK(dm < 1e-15);
+    CHECK(memcmp(a->cell_vertices, b->cell_vertices, 3 * (size_t)a->n_cells * sizeof *a->cell_vertices) == 0);
+  }
+done:
+  sl_mesh_destroy(a);
+  sl_mesh_destroy(b);
+}
+
+/* Only regular files are read, and at most SLUICE_MESH_MAX_BYTES of them:
+ * a FIFO without a writer, /dev/zero and /dev/stdin are refused at once. */
+static void test_not_regular(void) {
+  sl_mesh *m = NULL;
+  CHECK(sl_mesh_read_gmsh("/dev/zero", &m, &d) == SL_EBADINPUT && m == NULL);
+  CHECK_CONTAINS(d.msg, "/dev/zero: the mesh file is a character device; a Gmsh mesh must be a regular file");
+  const char *fifo = "test_mesh_gmsh.fifo";
+  remove(fifo);
+  if (mkfifo(fifo, 0600) == 0) {
+    CHECK(sl_mesh_read_gmsh(fifo, &m, &d) == SL_EBADINPUT && m == NULL);
+    CHECK_CONTAINS(d.msg, "is a FIFO (named pipe)");
+    remove(fifo);
+  }
+  CHECK(sl_mesh_read_gmsh(".", &m, &d) == SL_EBADINPUT && m == NULL);
+  CHECK_CONTAINS(d.msg, "is a directory");
+  setenv("SLUICE_MESH_MAX_BYTES", "100", 1);
+  CHECK(sl_mesh_read_gmsh(data("box_tri_41.msh"), &m, &d) == SL_EBADINPUT && m == NULL);
+  CHECK_CONTAINS(d.msg, "more than the limit of 100");
+  unsetenv("SLUICE_MESH_MAX_BYTES");
+  CHECK(sl_mesh_read_gmsh(data("box_tri_41.msh"), &m, &d) == 0 && m != NULL);
+  sl_mesh_destroy(m);
+}
+
+/* Physical names as a scene addresses them (sl_mesh_scene_name). */
+static void test_scene_names(void) {
+  char out[64];
+  CHECK(sl_mesh_scene_name("left wall", out, sizeof out) == 1 && strcmp(out, "left_wall") == 0);
+  CHECK(sl_mesh_scene_name("inlet (1)", out, sizeof out) == 1 && strcmp(out, "inlet__1_") == 0);
+  CHECK(sl_mesh_scene_name("wall-2.top", out, sizeof out) == 0 && strcmp(out, "wall-2.top") == 0);
+  CHECK(sl_mesh_scene_name(".a..b.", out, sizeof out) == 1 && strcmp(out, "_a__b_") == 0);
+  const char *text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 1 \"left wall\"\n"
+                     "1 2 \"left_wall\"\n2 3 \"fluid\"\n$EndPhysicalNames\n";
+  sl_mesh *m = NULL;
+  CHECK(sl_mesh_read_gmsh_string(text, strlen(text), "t.msh", &m, &d) == SL_EBADINPUT && m == NULL);
+  CHECK_CONTAINS(d.msg, "t.msh:7: physical name \"left_wall\" is addressed in a scene as left_wall, and so is the "
+                        "name of physical group 1 (line 6)");
+}
+
+/* One 6-node triangle, (0,0), (1,0), (0,1), its hypotenuse's node moved out
+ * by delta along (1, 1): the parabolic segment adds 2/3 chord x height =
+ * 2/3 sqrt(2) (delta sqrt(2)) = 4 delta / 3 to the area 1/2 (Archimedes).
+ * The area is exact under the P2 map: from the mesh and from the FE
+ * integration context. A node moved too far folds the cell: refused. */
+static char *tri6(double mx, double my) {
+  static char buf[1024];
+  snprintf(buf, sizeof buf,
+           "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n1 1 \"wall\"\n2 2 \"fluid\"\n"
+           "$EndPhysicalNames\n$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0.5 0 0\n5 %.17g %.17g 0\n6 0 0.5 0\n"
+           "$EndNodes\n$Elements\n4\n1 8 2 1 1 1 2 4\n2 8 2 1 1 2 3 5\n3 8 2 1 1 3 1 6\n"
+           "4 9 2 2 1 1 2 3 4 5 6\n$EndElements\n",
+           mx, my);
+  return buf;
+}
+
+static void test_curved_triangle(void) {
+  const double delta = 0.1, exact = 0.5 + 4 * delta / 3;
+  const char *t = tri6(0.5 + delta, 0.5 + delta);
+  sl_mesh *m = NULL;
+  CHECK(sl_mesh_read_gmsh_string(t, strlen(t), "t.msh", &m, &d) == 0);
+  if (!m) return;
+  CHECK(m->geom_order == 2 && m->n_cells == 1);
+  CHECK_CLOSE(sl_mesh_cell_curved_area(m, 0), exact, 1e-14);
+  const sl_element *p2 = sl_element_lagrange(SL_CELL_TRI3, 2);
+  sl_fe_values *fv;
+  if (sl_fe_values_create(&fv, m, 1, &p2, 2, 0, &d) == 0) {
+    double a = 0;
+    CHECK(sl_fe_values_reinit(fv, 0, &d) == 0);
+    for (int q = 0; q < fv->quad.n; ++q) a += fv->JxW[q];
+    CHECK_CLOSE(a, exact, 1e-14);
+    /* the hypotenuse's midpoint maps onto its node */
+    double x[2];
+    sl_fe_map_point(m, 0, (const double[2]){0.5, 0.5}, x);
+    CHECK_CLOSE(x[0], 0.5 + delta, 1e-15);
+    sl_fe_values_destroy(fv);
+  }
+  sl_mesh_destroy(m);
+  t = tri6(0.2, 0.2); /* the node pulled in most of the way to the far corner: det J < 0 near the corners */
+  CHECK(sl_mesh_read_gmsh_string(t, strlen(t), "t.msh", &m, &d) == SL_EBADINPUT && m == NULL);
+  CHECK_CONTAINS(d.msg, "t.msh:23: cell 0 folds under its second-order map: det J = -0.2 at the reference point (1, 0)");
+}
+
+/* Second-order elements on straight edges (Gmsh -order 2 of a polygon): the
+ * face nodes sit at the edge midpoints, so the mesh keeps the linear map. */
+static void test_p2_straight(void) {
+  sl_mesh *m = read("p2_straight_22.msh");
+  if (!m) return;
+  CHECK(m->n_cells == 2 && m->n_vertices == 3 + 1 && m->cell_type == SL_CELL_TRI3);
+  CHECK(m->geom_order == 1 && m->face_mid == NULL);
+  CHECK_CLOSE(total_area(m), 0.5, 1e-14);
+  check_mesh_invariants(m);
+  sl_mesh_destroy(m);
+}
+
 /* Each malformed file: SL_EBADINPUT, "file:line:" and the key words. */
 static void bad_file(const char *file, int line, const char *words) {
   sl_mesh *m = (sl_mesh *)&d; /* must be reset to NULL */
@@ -147,8 +273,7 @@ static void bad_file(const char *file, int line, const char *words) {
 static void test_bad_files(void) {
   bad_file("bad_version_30.msh", 2, "version 3.0 is not supported; sluice reads ASCII MSH 2.2 and 4.1");
   bad_file("bad_truncated_41.msh", 60, "unexpected end of file in $Nodes");
-  bad_file("bad_p2_22.msh", 23, "type 8 (3-node line), which is not supported; supported types: 1 (2-node line)");
-  bad_file("bad_mixed_41.msh", 78, "mix triangles and quadrangles are not supported");
+  bad_file("bad_mixed_41.msh", 78, "a mesh of both triangles and quadrangles is not supported");
   bad_file("bad_untagged_41.msh", 60, "line element 8 is in no physical group");
   bad_file("bad_twogroups_22.msh", 37, "element 2 repeats element 1 (line 36) with physical group 5");
   bad_file("bad_twogroups_41.msh", 19, "curve 1 is in 2 physical groups (tags 1, 5)");
@@ -231,11 +356,13 @@ static void test_bad_texts(void) {
   sl_mesh_destroy(m);
 
   bad_text(variant(2, "4.0 0 8", 0), 2, "version 4.0 is not supported");
-  bad_text(variant(2, "2.2 1 8", 0), 2, "binary MSH files are not supported");
+  bad_text(variant(2, "2.2 1 8", 0), 2, "binary MSH 2.2 files are not supported");
   bad_text(variant(1, "hello", 0), 1, "not a Gmsh MSH file");
-  bad_text(variant(22, "5 9 2 2 1 1 2 3 5 6 7", 0), 22, "type 9 (6-node triangle)");
+  bad_text(variant(22, "5 9 2 2 1 1 2 3 5 6 7", 0), 22, "element 5 refers to node 5, which is not in $Nodes");
+  bad_text(variant(22, "5 21 2 2 1 1 2 3 5 6 7 8 9 10 11", 0), 22,
+           "type 21 (10-node triangle), which is not supported; supported types: 1 (2-node line)");
   bad_text(variant(22, "5 4 2 2 1 1 2 3 4", 0), 22, "3-D meshes are not supported");
-  bad_text(variant(23, "6 3 2 2 1 1 3 4 2", 0), 23, "mix triangles and quadrangles");
+  bad_text(variant(23, "6 3 2 2 1 1 3 4 2", 0), 23, "a mesh of both triangles and quadrangles");
   bad_text(variant(20, "3 1 2 0 1 3 4", 0), 20, "line element 3 is in no physical group");
   bad_text(variant(19, "2 1 2 3 1 2 3", 0), 19, "physical group 3 of dimension 1, which has no name");
   bad_text(variant(22, "5 2 2 2 1 1 2 9", 0), 22, "refers to node 9, which is not in $Nodes");
@@ -321,7 +448,7 @@ static void test_41(void) {
   /* The curve is in two physical groups. */
   bad_text(replace41("1 0 0 0 1 1 0 1 1 0\n", "1 0 0 0 1 1 0 2 1 3 0\n"), 11, "curve 1 is in 2 physical groups");
   /* An unsupported element type is named at its block header. */
-  bad_text(replace41("2 1 2 2\n", "2 1 9 2\n"), 33, "type 9 (6-node triangle)");
+  bad_text(replace41("2 1 2 2\n", "2 1 9 2\n"), 34, "element 5 (6-node triangle) needs 6 node tags, found 3");
   /* Node block counts that do not add up. */
   bad_text(replace41("1 4 1 4\n", "1 5 1 4\n"), 24, "announces 5 nodes but its blocks hold 4");
   bad_text(replace41("2 6 1 6\n", "2 7 1 6\n"), 35, "announces 7 elements but its blocks hold 6");
@@ -333,6 +460,11 @@ int main(void) {
   test_box_quad();
   test_line();
   test_clockwise();
+  test_p2_straight();
+  test_curved_triangle();
+  test_not_regular();
+  test_ring();
+  test_scene_names();
   test_bad_files();
   test_bad_texts();
   test_41();

@@ -90,7 +90,8 @@ static void mutate(const char *t, size_t len, char *out, size_t *olen) {
 
 int main(void) {
   const char *files[] = {"box_tri_22.msh", "box_tri_41.msh", "box_quad_22.msh", "box_quad_41.msh",
-                         "line_22.msh",    "line_41.msh",    "box_cw_41.msh"};
+                         "line_22.msh",    "line_41.msh",    "box_cw_41.msh",   "ring_p2_41.msh",
+                         "ring_p2_41_bin.msh"};
   static char out[1 << 17];
   for (size_t f = 0; f < sizeof files / sizeof *files; ++f) {
     size_t len = 0;

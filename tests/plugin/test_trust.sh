@@ -106,6 +106,11 @@ line=$(grep -n '^model = fauty' typo.ini | cut -d: -f1)
 expect "a misspelt name: did you mean" 2 "typo.ini:$line:[0-9]+: error: no viscosity closure 'fauty'; did you mean 'faulty'\?" -- \
   "$sluice" run typo.ini --check
 [ ! -e marker ] && ok || bad "a misspelt name opened no library"
+# `library = FILE` outside the plugin path adds no library
+sed 's|^model = faulty$|model = marked\nlibrary = '"$unindexed"'/marked.so|' s.ini > lib.ini
+expect "library = a file off the path" 2 "lib.ini:[0-9]+:[0-9]+: error: library = .*unindexed/marked.so is not a library on the plugin search path" -- \
+  "$sluice" run lib.ini -o lib.h5
+[ ! -e marker ] && [ ! -e lib.h5 ] && ok || bad "library = off the path opened nothing, wrote nothing"
 # ---- --check and --print-config: library code only in a child process --------------------------------
 cat > m.ini <<INI
 $(sed 's/^model = faulty$/model = marked/' s.ini)
@@ -157,6 +162,12 @@ expect "steady: a segfault fails the solve by name" 1 \
 scene clock.ini clock 0 ""
 expect "the closure sees t and dt" 0 "closure info: t = 0.5 dt = 0.05" -- "$sluice" run clock.ini -o clock.h5
 for t in 0.05 0.1 0.15 0.2 0.25 0.3 0.35 0.4 0.45; do grep -q "closure info: t = $t dt = 0.05\$" out.log || bad "t = $t seen"; done
+# the mixture model too (the Kynch column of configs/, 3 steps of 1 s)
+sed -e 's/^end = 120/end = 3/' -e 's/^every = 10/every = 1/' -e 's/^cells = 200/cells = 20/' \
+  "$src/../../configs/kynch_settling.ini" > mix.ini
+printf '\n[closure.viscosity]\nmodel = faulty\nfault = clock\nmu0 = 1e-3\n' >> mix.ini
+expect "mixture: the closure sees t and dt" 0 "closure info: t = 3 dt = 1" -- "$sluice" run mix.ini -o mix.h5
+grep -q "closure info: t = 1 dt = 1$" out.log && grep -q "closure info: t = 2 dt = 1$" out.log && ok || bad "mixture: t = 1, 2"
 
 # ---- check-closure isolates the battery --------------------------------------------------------------
 expect "check-closure: a segfault named" 1 "FAIL viscosity/segv +outputs written: crashed with SIGSEGV \(signal 11\)" -- \
@@ -178,5 +189,13 @@ rm -f marker
 SLUICE_PLUGIN_PATH="$work/ix" expect "an indexed folder: a misspelt name" 2 "did you mean 'marked'" -- \
   "$sluice" run m.ini --check --set closure.viscosity.model=marke
 [ ! -e marker ] && ok || bad "no library opened for a misspelt name in an indexed folder"
+# an index that names a library that is not there, or does not hold the name
+mkdir -p stale && cp "$unindexed/marked.so" stale/
+printf 'viscosity marked gone.so\nviscosity other marked.so\n' > stale/closures.index
+SLUICE_PLUGIN_PATH="$work/stale" expect "a stale index: the missing library named" 2 \
+  "viscosity closure 'marked': its index names .*stale/gone.so, which cannot be used: cannot load" -- "$sluice" run m.ini --check
+sed 's/^model = marked$/model = other/' m.ini > other.ini
+SLUICE_PLUGIN_PATH="$work/stale" expect "a stale index: the library does not hold it" 2 \
+  "viscosity closure 'other': its index names .*stale/marked.so, which does not hold it" -- "$sluice" run other.ini --check
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

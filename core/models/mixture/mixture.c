@@ -29,9 +29,11 @@ typedef struct mixture_config {
   long order, table_points;
   int limiter;
   double cfl;
+  const char *inventory_regions; /* [output]: mesh regions whose solids inventory is written */
+  sl_scene_exprs inventory_where; /* [output]: regions as expressions of x, y (a cell counts where > 0) */
 } mixture_config;
 
-enum { MAX_LEVELS = 8 };
+enum { MAX_LEVELS = 8, MAX_INVENTORIES = 8 };
 
 /* The quantities the mixture model gives its closures. */
 enum { Q_PHI, Q_SHEAR_RATE, Q_D_P, Q_SPHERICITY, Q_RHO_S, Q_RHO_F, Q_MU_F, Q_GRAVITY, Q_D_VESSEL, Q_N };
@@ -76,6 +78,10 @@ typedef struct mixture {
   sl_face_flux *ff;
   double *phi, *trial, *q, *w; /* cells, cells, faces, faces */
   double *q_acc;               /* [n_faces] the conservative fluxes of the last accepted step */
+  int n_inv;                   /* regions whose solids inventory is written ([output] inventory_*) */
+  char inv_name[MAX_INVENTORIES][96];
+  unsigned char *inv_mask;     /* [n_inv * n_cells]: the cell is in region k */
+  double *inv_phi;             /* [n_cells] scratch: phi in the region, 0 elsewhere */
   unsigned fields; /* bit k: field_names[k] is written */
   double inventory0, inflow, trial_inflow;
   double inventory; /* of the current state */
@@ -531,6 +537,64 @@ enum { F_PHI = 1 };
 
 /* The solids fraction on the flow f: the settling closure, the transport,
  * the diagnostics and the initial phi. */
+/* The regions of [output] inventory_regions (mesh regions by name, comma-separated) and inventory_where
+ * (expressions of x, y: the cells whose centroid gives a positive value), whose solids inventories int phi dV
+ * are written as solids_inventory_NAME and solids_inventory_where_K: Greenspan's spectrometer's efficiency is
+ * the share of particles found downstream of the slot (Nigam 1999, section 4.3). */
+static int inventory_setup(mixture *x, sl_diag *d) {
+  const mixture_config *cfg = x->cfg;
+  const sl_mesh *m = x->m;
+  int nc = m->n_cells, n_names = 0;
+  const char *list = cfg->inventory_regions ? cfg->inventory_regions : "";
+  for (const char *p = list; *p;) { /* count the names */
+    size_t len = strcspn(p, ",");
+    n_names += len > strspn(p, " \t") ? 1 : 0;
+    p += len + (p[len] == ',');
+  }
+  int n = n_names + cfg->inventory_where.n;
+  if (n == 0) return 0;
+  if (n > MAX_INVENTORIES)
+    return sl_diag_set(d, SL_EBADINPUT, "[output] inventory_regions and inventory_where: %d regions, at most %d", n,
+                       MAX_INVENTORIES);
+  x->inv_mask = calloc((size_t)n * nc, 1);
+  x->inv_phi = malloc((size_t)nc * sizeof *x->inv_phi);
+  if (!x->inv_mask || !x->inv_phi) return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
+  const sl_src *src = sl_scene_src(x->sc, &cfg->inventory_regions);
+  for (const char *p = list; *p;) {
+    size_t len = strcspn(p, ",");
+    const char *a = p, *b = p + len;
+    p += len + (p[len] == ',');
+    while (a < b && (*a == ' ' || *a == '\t')) ++a;
+    while (b > a && (b[-1] == ' ' || b[-1] == '\t')) --b;
+    if (a == b) continue;
+    char name[64];
+    snprintf(name, sizeof name, "%.*s", (int)(b - a), a);
+    int r = -1;
+    for (int k = 0; k < m->n_regions; ++k)
+      if (strcmp(m->region_names[k], name) == 0) r = k;
+    if (r < 0) {
+      const char *near = m->n_regions ? sl_suggest(name, (const char *const *)m->region_names, m->n_regions) : NULL;
+      char where[160] = "[output] inventory_regions";
+      if (src) snprintf(where, sizeof where, "%s:%d: [output] inventory_regions", src->file, src->line);
+      if (!m->n_regions)
+        return sl_diag_set(d, SL_EBADINPUT, "%s: no region '%s': the mesh has no named regions (a Gmsh file's "
+                                            "physical surfaces; use inventory_where for an expression)", where, name);
+      return sl_diag_set(d, SL_EBADINPUT, "%s: no region '%s' in the mesh%s%s%s", where, name,
+                         near ? "; did you mean '" : "", near ? near : "", near ? "'?" : "");
+    }
+    unsigned char *mask = x->inv_mask + (size_t)x->n_inv * nc;
+    for (int c = 0; c < nc; ++c) mask[c] = m->cell_region[c] == r;
+    snprintf(x->inv_name[x->n_inv++], sizeof x->inv_name[0], "solids_inventory_%s", name);
+  }
+  const double *xc = sl_transport_cell_points(x->tr);
+  for (int k = 0; k < cfg->inventory_where.n; ++k) {
+    unsigned char *mask = x->inv_mask + (size_t)x->n_inv * nc;
+    for (int c = 0; c < nc; ++c) mask[c] = sl_expr_eval(cfg->inventory_where.e[k], xc + 2 * c) > 0.0;
+    snprintf(x->inv_name[x->n_inv++], sizeof x->inv_name[0], "solids_inventory_where_%d", k);
+  }
+  return 0;
+}
+
 static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag *d) {
   const sl_scene *sc = x->sc;
   const mixture_config *cfg = x->cfg;
@@ -611,7 +675,7 @@ static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag
       return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] interface: heights are measured against gravity, and the "
                                           "scene has none", le->file, le->line);
   }
-  return 0;
+  return inventory_setup(x, d);
 }
 
 static int advance(mixture *x, double t, double dt, const double *u, const double *dudt, sl_diag *d) {
@@ -662,6 +726,12 @@ static int write(mixture *x, sl_output *out, sl_diag *d) {
   /* the solids volume per unit depth (planar) or per radian (axisymmetric) */
   if (!rc) rc = sl_output_write_scalar_unit(out, "solids_inventory", x->axi ? "m^3/rad" : "m^2", inv, d);
   if (!rc) rc = sl_output_write_scalar(out, "solids_conservation_error", err, d);
+  for (int k = 0; k < x->n_inv && !rc; ++k) {
+    const unsigned char *mask = x->inv_mask + (size_t)k * x->m->n_cells;
+    for (int c = 0; c < x->m->n_cells; ++c) x->inv_phi[c] = mask[c] ? x->phi[c] : 0.0;
+    rc = sl_output_write_scalar_unit(out, x->inv_name[k], x->axi ? "m^3/rad" : "m^2",
+                                     sl_transport_mass(x->tr, x->inv_phi), d);
+  }
   for (int k = 0; k < x->n_levels && !rc; ++k) {
     char name[64];
     snprintf(name, sizeof name, "interface_height_%d", k);
@@ -716,6 +786,7 @@ static void mixture_free(mixture *x) {
   sl_point_release(&x->st.pc);
   sl_migration_destroy(x->mg);
   free(x->shear);
+  free(x->inv_mask), free(x->inv_phi);
   sl_point_release(&x->mig), sl_point_release(&x->visc);
   sl_flow_destroy(x->flow_model);
   free(x);
@@ -774,6 +845,12 @@ static const sl_key extra_keys[] = {
     {.section = "output", .name = "interface", .type = SL_KEY_REALS, SL_AT_SCENE(output.interface),
      .max_n = SL_REALS_MAX, .min = 0.0, .max = 1.0,
      .help = "levels of phi whose heights (along -g) are written as interface_height_K"},
+    {.section = "output", .name = "inventory_regions", .type = SL_KEY_STRING, M(inventory_regions), .def_text = "",
+     .help = "mesh regions (Gmsh physical surfaces, comma-separated) whose solids volume int phi dV is written "
+             "as solids_inventory_NAME"},
+    {.section = "output", .name = "inventory_where", .type = SL_KEY_EXPRS, M(inventory_where), .vars = "x,y",
+     .max_n = 3, .help = "regions as expressions of x, y (a cell counts where its centroid gives > 0), their solids "
+                         "volume written as solids_inventory_where_K"},
     {.section = "boundary", .name = "phi", .type = SL_KEY_REAL, SL_AT_BOUNDARY(ns_boundary, phi), .min = 0.0,
      .max = 1.0, .when_type = (1u << NS_OPEN) | (1u << NS_PRESSURE) | (1u << NS_TRACTION),
      .help = "the solids fraction of what flows in"},
@@ -826,6 +903,9 @@ static int mx_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) 
   if (!rc) rc = sl_flow_create(sc, &x->cfg->flow, x->rho_solid, mask & ((1u << SL_FLOW_N_FIELDS) - 1u), &x->flow_model,
                                info, d);
   if (!rc) rc = mixture_setup(x, x->flow_model, mask >> SL_FLOW_N_FIELDS, d);
+  /* the initial velocity's fluxes until the first step: the stream function written at t = 0 is [initial]
+     velocity's */
+  if (!rc && x->ff) rc = sl_face_flux_conservative(x->ff, info->u, 0.0, x->q_acc, NULL, d);
   if (rc) {
     mixture_free(x);
     return rc;

@@ -11,6 +11,7 @@
 #include "core/fe/field.h"
 #include "core/fv/face_flux.h"
 #include "core/fv/stream_function.h"
+#include "core/models/navier_stokes/forces.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/point_eval.h"
 #include "core/scene/solver.h"
@@ -48,6 +49,7 @@ typedef struct physics {
   int force_varies;
   double t; /* the time the body force is evaluated at (the end of the step being solved) */
   int has_force;
+  char force_where[400]; /* file:line of [flow] body_force, for messages */
   int riding;                /* a solids fraction rides on the flow: variable density, buoyancy, phi input */
   const sl_flow_rider *rider;
 } physics;
@@ -102,9 +104,9 @@ static int force_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d) {
     for (int c = 0; c < ph->n_comp; ++c)
       if (ph->force_expr[c]) {
         double f = sl_expr_eval(ph->force_expr[c], xyt);
-        if (!isfinite(f))
-          return sl_diag_set(d, SL_EBADINPUT, "[flow] body_force component %d is %g at (%g, %g), t = %g", c + 1, f,
-                             xyt[0], xyt[1], xyt[2]);
+        if (!isfinite(f)) /* finite at t = 0 (checked at set-up): the run cannot go on */
+          return sl_diag_set(d, SL_EFAILED, "%s: component %d is %g at (%g, %g), t = %.9g: not a finite force",
+                             ph->force_where, c + 1, f, xyt[0], xyt[1], xyt[2]);
         out[q * ph->n_comp + c] = rho * ph->gravity[c] + f;
       }
   }
@@ -139,6 +141,7 @@ static int physics_setup(const sl_scene *sc, int n_comp, int dim, int axi, int r
   int rc = vec_get(sc, &sc->flow.gravity, n_comp, ph->gravity, d);
   if (rc) return rc;
   const sl_scene_exprs *bf = &sc->flow.body_force;
+  sl_scene_where(sc, bf, ph->force_where, sizeof ph->force_where);
   if (bf->n > n_comp) {
     char at[400];
     return sl_diag_set(d, SL_EBADINPUT, "%s: %d components given, the scene has %d velocity components",
@@ -192,6 +195,14 @@ static void physics_opts(physics *ph, sl_flow_opts *o) {
   o->body_force_user = ph;
   o->extra_stress = ph->riding && ph->rider ? ph->rider->extra_stress : NULL;
   o->cell_drag = ph->riding && ph->rider ? ph->rider->cell_drag : NULL;
+  o->centrifugal_density = ph->density; /* rho_f Omega^2 r goes into the pressure (sl_flow_opts) */
+}
+
+/* P_ref = rho_f Omega^2 |x - c|^2 / 2 (axisymmetric: rho_f Omega^2 r^2 / 2), the pressure of the fluid's
+ * centrifugal force, which the solved pressure leaves out (sl_flow_opts centrifugal_density). */
+static double centrifugal_pressure(const sl_flow_opts *o, const double *x) {
+  double dx = x[0] - (o->axisymmetric ? 0.0 : o->rotation_centre[0]), dy = o->axisymmetric ? 0.0 : x[1] - o->rotation_centre[1];
+  return 0.5 * o->centrifugal_density * o->omega * o->omega * (dx * dx + dy * dy);
 }
 
 /* ---- boundary conditions ------------------------------------------------- */
@@ -203,6 +214,7 @@ typedef struct bc {
   int slip_comp;             /* the velocity component normal to a slip boundary */
   double traction[MAX_COMP]; /* traction; or -p n for pressure (p in traction[0]) */
   int n_comp;
+  const sl_flow_opts *frame; /* a rotating frame: natural boundaries also get P_ref n (centrifugal_pressure) */
 } bc;
 
 typedef struct bc_set {
@@ -213,6 +225,7 @@ typedef struct bc_set {
   int n_pairs;     /* periodic pairs (boundary, partner), each once */
   sl_periodic_pair *pairs;
   unsigned char *open; /* [n]: the velocity is free there */
+  const sl_scene *sc;  /* for the location of a value in messages */
 } bc_set;
 
 static void bc_set_free(bc_set *s) {
@@ -248,7 +261,7 @@ static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag 
   s->pairs = calloc((size_t)m->n_boundaries + 1, sizeof *s->pairs);
   s->open = calloc((size_t)m->n_boundaries + 1, 1);
   if (!s->b || !s->pairs || !s->open) return sl_diag_set(d, SL_ENOMEM, "out of memory");
-  s->n = m->n_boundaries;
+  s->n = m->n_boundaries, s->sc = sc;
   for (int i = 0; i < s->n; ++i) {
     bc *b = &s->b[i];
     b->name = m->boundary_names[i], b->in = sl_scene_boundary(sc, i), b->type = NS_WALL, b->n_comp = n_comp;
@@ -373,12 +386,15 @@ static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag 
 typedef struct bc_eval {
   const sl_expr *e;
   double t;
+  int bad;          /* a value was not finite: the first one and where */
+  double bad_v, bad_x[2];
 } bc_eval;
 
 static void bc_value(void *user, const double x[2], double *v, double g[2]) {
-  const bc_eval *b = user;
+  bc_eval *b = user;
   double vals[3] = {x[0], x[1], b->t};
   *v = sl_expr_eval(b->e, vals);
+  if (!isfinite(*v) && !b->bad) b->bad = 1, b->bad_v = *v, b->bad_x[0] = x[0], b->bad_x[1] = x[1];
   if (g) g[0] = g[1] = 0.0;
 }
 
@@ -402,8 +418,14 @@ static int bc_apply(const bc_set *s, const sl_th_space *th, sl_constraints *con,
             rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, c, 0), NULL, NULL, 0.0, d);
             continue;
           }
-          bc_eval be = {b->in->velocity.e[c], t};
+          bc_eval be = {b->in->velocity.e[c], t, 0, 0.0, {0.0, 0.0}};
           rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, c, 0), bc_value, &be, 0.0, d);
+          if (!rc && be.bad) { /* a time-dependent value that stops being finite: the run cannot go on */
+            char at[400];
+            rc = sl_diag_set(d, SL_EFAILED, "%s: component %d is %g at (%g, %g), t = %.9g: not a finite velocity",
+                             sl_scene_where(s->sc, &b->in->velocity, at, sizeof at), c + 1, be.bad_v, be.bad_x[0],
+                             be.bad_x[1], t);
+          }
         }
       if (pass == 2 && b->type == NS_WALL) /* periodic boundaries carry no condition */
         for (int c = 0; c < th->n_comp && !rc; ++c)
@@ -420,7 +442,10 @@ static int traction_fn(void *user, const sl_qp_batch *b, double *out, sl_diag *d
     for (int c = 0; c < bc_->n_comp; ++c) {
       double v;
       if (bc_->type == NS_PRESSURE) v = c < 2 ? -bc_->traction[0] * b->normal[q][c] : 0.0;
+      else if (bc_->type == NS_OPEN) v = 0.0;
       else v = bc_->traction[c];
+      /* the solved pressure is p - P_ref: sigma n = t becomes (sigma - ...) n = t + P_ref n */
+      if (bc_->frame && c < 2) v += centrifugal_pressure(bc_->frame, b->x[q]) * b->normal[q][c];
       out[q * bc_->n_comp + c] = v;
     }
   return 0;
@@ -446,6 +471,7 @@ struct sl_flow {
   sl_face_flux *ff;
   double *q, *psi, *node_psi;
   int datum;
+  int stream_stats; /* [output] stream_function_stats */
   int riding;
   double rho_solid;
   sl_flow_rider rider;
@@ -455,6 +481,12 @@ struct sl_flow {
   int unforced;       /* walls at rest all round, no body force, no rotation: only the rider loads it */
   int fixed_point;    /* the last accepted solve returned its start and the rider's phi has not changed since */
   int solved, solved_to_start; /* the last step's: solved (not skipped), and its result was its start */
+  /* The forces on the boundaries with force = true (forces.h), written with every output: computed after the
+   * solve of a step that writes (its mass term and history are then at hand), or at the write from the steady
+   * residual (the initial state) */
+  unsigned char *force_want, *force_work;
+  double *force;
+  int force_valid;
   /* what the nonlinear iterations are reported with (sc->hooks): the time solved for, the continuation stage */
   double t_solve;
   long stage, n_stages;
@@ -462,6 +494,7 @@ struct sl_flow {
      boundary speeds (measured per step at the constrained dofs); see velocity_scale */
   double u_data;
   const char *u_data_what;
+  double accel; /* the largest acceleration the forces give a fluid at rest, F / rho + |p| / (rho L) */
   sl_model_stats st;
 };
 
@@ -496,9 +529,71 @@ int sl_flow_write_mesh(sl_flow *f, sl_output *out, sl_diag *d) {
                               th->vel->dofs_per_cell, th->vel->cell_nodes, topo[th->mesh->cell_type], d);
 }
 
+/* The forces of u into f->force; steady: without the time derivative. */
+static int compute_forces(sl_flow *f, const double *u, int steady, sl_diag *d) {
+  double mass = f->prob.opts.mass_coef;
+  const double *history = f->prob.opts.history;
+  if (steady) f->prob.opts.mass_coef = 0.0, f->prob.opts.history = NULL;
+  int rc = sl_flow_forces(&f->prob, u, f->force_want, f->force_work, f->force, d);
+  f->prob.opts.mass_coef = mass, f->prob.opts.history = history;
+  f->force_valid = rc == 0;
+  return rc;
+}
+
+static int write_forces(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
+  if (!f->force) return 0;
+  int rc = f->force_valid ? 0 : compute_forces(f, u, 1, d);
+  const sl_mesh *m = f->mesh;
+  const char *axes = f->prob.opts.axisymmetric ? "rz" : "xy";
+  for (int b = 0; b < m->n_boundaries && !rc; ++b) {
+    if (!f->force_want[b]) continue;
+    for (int i = 0; i < m->dim && !rc; ++i) {
+      char name[300];
+      snprintf(name, sizeof name, "force_%c_%s", axes[i], m->boundary_names[b]);
+      /* planar: per metre of depth; axisymmetric: on the whole surface of revolution */
+      rc = sl_output_write_scalar_unit(out, name, f->prob.opts.axisymmetric ? "N" : "N/m", f->force[f->th->n_comp * b + i],
+                                       d);
+    }
+  }
+  f->force_valid = 0;
+  return rc;
+}
+
+/* The stream function's extremes over the vertices and the phase of its first azimuthal mode about the rotation
+ * centre, arg int psi e^(i theta) dA (each cell: the mean of its vertices' psi, its centroid, its area), for
+ * patterns that turn, such as Nigam's (1999, section 4.4) travelling waves psi = f(r) + g(r) cos(theta - c t),
+ * whose phase is c t exactly. Sluice's psi is the thesis's with the opposite sign (u = psi_y here): the same
+ * pattern has the phase shifted by pi. */
+static int write_stream_stats(sl_flow *f, sl_output *out, sl_diag *d) {
+  const sl_mesh *m = f->mesh;
+  const double *psi = f->psi, *c0 = f->prob.opts.rotation_centre;
+  double mx = -INFINITY, mn = INFINITY, re = 0.0, im = 0.0;
+  for (int v = 0; v < m->n_vertices; ++v) mx = fmax(mx, psi[v]), mn = fmin(mn, psi[v]);
+  int nv = m->nv_per_cell;
+  for (int c = 0; c < m->n_cells; ++c) {
+    const int *cv = m->cell_vertices + (size_t)nv * c;
+    double area = 0.0, cx = 0.0, cy = 0.0, pm = 0.0;
+    for (int k = 0; k < nv; ++k) { /* the polygon's area and centroid (shoelace) */
+      const double *a = m->xy + 2 * cv[k], *b = m->xy + 2 * cv[(k + 1) % nv];
+      double cr = (a[0] - c0[0]) * (b[1] - c0[1]) - (b[0] - c0[0]) * (a[1] - c0[1]);
+      area += 0.5 * cr;
+      cx += cr * (a[0] + b[0] - 2.0 * c0[0]) / 6.0, cy += cr * (a[1] + b[1] - 2.0 * c0[1]) / 6.0;
+      pm += psi[cv[k]] / nv;
+    }
+    if (area == 0.0) continue;
+    cx /= area, cy /= area;
+    double r = hypot(cx, cy);
+    if (r > 0.0) re += pm * area * cx / r, im += pm * area * cy / r;
+  }
+  int rc = sl_output_write_scalar_unit(out, "stream_function_max", "m^2/s", mx, d);
+  if (!rc) rc = sl_output_write_scalar_unit(out, "stream_function_min", "m^2/s", mn, d);
+  if (!rc) rc = sl_output_write_scalar_unit(out, "stream_function_phase", "rad", atan2(im, re), d);
+  return rc;
+}
+
 int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
   const sl_th_space *th = f->th;
-  int rc = 0;
+  int rc = write_forces(f, out, u, d);
   if (f->fields & F_VELOCITY) {
     /* in the frame: in-plane components, then the out-of-plane one as component 2; axisymmetric, the
      * swirl is not a direction of the (r, z) plane: velocity (u_r, u_z, 0) and u_theta beside it */
@@ -519,9 +614,12 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
      * linear pressure on edge midpoints and the Q1 cell centre). */
     const double *p = u + th->p_offset;
     const double *shift = f->riding ? f->rider.pressure_shift : NULL;
-    if (shift) { /* the pressure of what the rider kept out of the load */
+    const sl_flow_opts *o = &f->prob.opts;
+    int frame = o->omega != 0.0 && o->centrifugal_density != 0.0;
+    if (shift || frame) { /* the pressure of what the rider kept out of the load, and of the frame's P_ref */
       double *ps = f->work + th->vel->n_nodes;
-      for (int32_t i = 0; i < th->pres->n_dofs; ++i) ps[i] = p[i] + shift[i];
+      for (int32_t i = 0; i < th->pres->n_dofs; ++i)
+        ps[i] = p[i] + (shift ? shift[i] : 0.0) + (frame ? centrifugal_pressure(o, th->pres->xy + 2 * i) : 0.0);
       p = ps;
     }
     double mean = 0.0, area = 0.0;
@@ -567,6 +665,7 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
       /* Stokes' stream function of the (r, z) plane has the units of a flow rate per radian */
       rc = sl_output_write_field_unit(out, "stream_function", f->ph.axisymmetric ? "m^3/s" : "m^2/s",
                                       SL_CENTRE_NODE, 1, f->node_psi, d);
+      if (!rc && f->stream_stats) rc = write_stream_stats(f, out, d);
     }
   }
   return rc;
@@ -626,7 +725,9 @@ static int force_depends_on_t(const physics *ph) {
  * SL_FLOW_GROWTH_FACTOR times the largest speed the data set, the boundary speeds at the step's end (the
  * constrained dofs), the initial velocity, the free-fall speed sqrt(2 F L / rho) of the body force and the
  * buoyancy F over the domain's size L, the Bernoulli speed sqrt(2 |p| / rho) of a given pressure or traction and
- * the frame's |omega| L. A flow the data drive does not leave these by two orders of magnitude (a lid-driven
+ * the frame's |omega| L, and the speed those forces give a fluid from rest over the time t run (F t / rho: a
+ * periodic channel accelerates without a length to bound it). A flow the data drive does not leave these by two
+ * orders of magnitude (a lid-driven
  * cavity stays below its lid's speed at any Re; a 10:1 contraction speeds its inflow up tenfold); an unstable
  * time integration or an unresolved flow does (issue 25: |u| 1.9e5 under a lid of 1). */
 #define SL_FLOW_GROWTH_FACTOR 100.0
@@ -643,7 +744,8 @@ static int check_growth(const sl_flow *f, const double *u, double t, sl_diag *d)
       umax = fabs(u[i]), at = i;
       if (!isfinite(umax)) break;
     }
-  double scale = fmax(u_bc, f->u_data), bound = SL_FLOW_GROWTH_FACTOR * scale;
+  double u_acc = f->accel * t; /* a periodic channel's forcing accelerates for as long as the run lasts */
+  double scale = fmax(fmax(u_bc, f->u_data), u_acc), bound = SL_FLOW_GROWTH_FACTOR * scale;
   if (scale > 0.0 && umax <= bound) return 0;
   if (scale == 0.0 && umax == 0.0) return 0; /* nothing drives it, nothing moves */
   if (scale == 0.0 && isfinite(umax)) return 0; /* no scale to judge by (round-off of a vessel at rest) */
@@ -652,7 +754,9 @@ static int check_growth(const sl_flow *f, const double *u, double t, sl_diag *d)
                      "times the speed the data set, %.3g (%s); the step is rejected (a smaller dt, a finer mesh or "
                      "a viscosity closure may resolve the flow)",
                      t, umax, (int)at, SL_FLOW_GROWTH_FACTOR, scale,
-                     u_bc >= f->u_data ? "the boundary speed" : f->u_data_what);
+                     u_acc >= fmax(u_bc, f->u_data) ? "the forces' acceleration over the time run"
+                     : u_bc >= f->u_data                ? "the boundary speed"
+                                                        : f->u_data_what);
 }
 
 int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
@@ -663,6 +767,7 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
     return -rc;
   size_t bytes = (size_t)f->th->n_dofs * sizeof *s->u;
   f->solved = 0;
+  f->force_valid = 0;
   f->ph.t = f->t_solve = s->t + s->dt;
   /* Skip what is known: a vessel at rest under no load stays at rest; a closed column's velocity is 0 and its
      pressure is needed only when written; a flow at a fixed point whose phi has not changed gives itself again. */
@@ -685,6 +790,7 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
   rc = solve(f, s->u, iterations, d);
   if (rc == 0 && (rc = check_growth(f, s->u, s->t + s->dt, d))) return -rc;
   f->solved = 1;
+  if (rc == 0 && f->force && s->writes && (rc = compute_forces(f, s->u, 0, d))) return -rc;
   if (rc == 0 && f->column_at_rest) memset(s->u, 0, (size_t)f->th->p_offset * sizeof *s->u);
   f->solved_to_start = rc == 0 && s->state && memcmp(s->u, s->state, bytes) == 0;
   return sl_step_code(rc);
@@ -748,6 +854,7 @@ int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag
       sl_diag_prefix(d, rc, "steady solve");
       return diag_append(d, rc, "; the state saved is the last Newton iterate, not a solution");
     }
+    f->force_valid = 0;
     r->converged = 1;
     if (f->nopts.linear)
       snprintf(r->stop_reason, sizeof r->stop_reason, "steady state solved: a linear problem, one solve (residual %.2g)",
@@ -860,7 +967,7 @@ static int initial_velocity(const sl_scene *sc, const sl_flow_config *fc, const 
                        sl_scene_where(sc, v, at, sizeof at), v->n, th->n_comp);
   }
   for (int c = 0; c < v->n; ++c) {
-    bc_eval be = {v->e[c], 0.0};
+    bc_eval be = {v->e[c], 0.0, 0, 0.0, {0.0, 0.0}};
     sl_fe_interpolate(th->vel, bc_value, &be, u + sl_th_vel_dof(th, c, 0));
     /* evaluated once, here: a value that is not finite is bad input, found before anything is written */
     for (int32_t i = 0; i < th->vel->n_nodes; ++i) {
@@ -904,6 +1011,7 @@ static void velocity_scale(sl_flow *f) {
   double cand[4] = {u0, sqrt(2.0 * F * L / rho), sqrt(2.0 * p / rho), fabs(f->prob.opts.omega) * L};
   static const char *const what[4] = {"the initial velocity", "the free fall of the body force and buoyancy",
                                       "the Bernoulli speed of the given pressure", "the frame's rotation"};
+  f->accel = F / rho + (L > 0 ? p / (rho * L) : 0.0);
   f->u_data = 0.0, f->u_data_what = what[0];
   for (int k = 0; k < 4; ++k)
     if (cand[k] > f->u_data) f->u_data = cand[k], f->u_data_what = what[k];
@@ -930,7 +1038,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
   *out = NULL;
   sl_flow *f = calloc(1, sizeof *f);
   if (!f) return sl_diag_set(d, SL_ENOMEM, "out of memory");
-  f->sc = sc, f->mesh = sc->mesh, f->fields = fields;
+  f->sc = sc, f->mesh = sc->mesh, f->fields = fields, f->stream_stats = fc->stream_stats;
   f->riding = rho_solid >= 0.0, f->rho_solid = rho_solid;
   int geometry = sc->geometry, third = sc->flow.third_component, rc;
   int dim = f->mesh->dim, axi = geometry == 2;
@@ -959,11 +1067,14 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
     f->column_at_rest &= ty == NS_WALL;
     f->unforced &= ty == NS_WALL || ty == NS_SLIP || ty == NS_AXIS || ty == NS_PERIODIC;
   }
-  for (int i = 0; i < f->bcs.n; ++i)
-    if (f->bcs.b[i].type == NS_PRESSURE || f->bcs.b[i].type == NS_TRACTION) {
+  for (int i = 0; i < f->bcs.n; ++i) {
+    int ty = f->bcs.b[i].type;
+    f->bcs.b[i].frame = f->prob.opts.omega != 0.0 && f->prob.opts.centrifugal_density != 0.0 ? &f->prob.opts : NULL;
+    if (ty == NS_PRESSURE || ty == NS_TRACTION || (ty == NS_OPEN && f->bcs.b[i].frame)) {
       if (f->prob.n_tractions == SL_FLOW_MAX_TRACTIONS) break;
       f->prob.traction[f->prob.n_tractions++] = (sl_flow_traction){f->bcs.b[i].name, traction_fn, &f->bcs.b[i]};
     }
+  }
   if ((rc = bc_apply(&f->bcs, f->th, &f->prob.bc, 0.0, f->datum, d))) goto fail;
   if ((rc = sl_scene_linsolve_general(sc, f->th->n_dofs,
                                        "the flow's matrix couples velocity and pressure (a saddle point: symmetric "
@@ -988,6 +1099,19 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
     goto fail;
   }
   if ((rc = stream_setup(f, d))) goto fail;
+  if (dim == 2) { /* the forces on the boundaries that ask for them ([boundary.NAME] force = true) */
+    int any = 0;
+    f->force_want = calloc((size_t)f->bcs.n + 1, 1);
+    for (int i = 0; i < f->bcs.n && f->force_want; ++i)
+      any |= f->force_want[i] = (f->bcs.b[i].type == NS_WALL || f->bcs.b[i].type == NS_VELOCITY) && f->bcs.b[i].in->force;
+    f->force = calloc((size_t)f->th->n_comp * (f->bcs.n + 1), sizeof *f->force);
+    f->force_work = malloc((size_t)f->th->n_vel + 1);
+    if (!f->force_want || !f->force || !f->force_work) {
+      rc = sl_diag_set(d, SL_ENOMEM, "out of memory");
+      goto fail;
+    }
+    if (!any) free(f->force_want), free(f->force), free(f->force_work), f->force_want = f->force_work = NULL, f->force = NULL;
+  }
   if ((rc = check_body_force(sc, &f->ph, d))) goto fail;
   if ((rc = initial_velocity(sc, fc, f->th, f->u, d))) goto fail;
   velocity_scale(f);
@@ -1004,6 +1128,7 @@ void sl_flow_destroy(sl_flow *f) {
   if (!f) return;
   free(f->u), free(f->work), free(f->cellbuf);
   free(f->q), free(f->psi), free(f->node_psi);
+  free(f->force_want), free(f->force_work), free(f->force);
   sl_stream_graph_free(&f->pg);
   sl_face_flux_destroy(f->ff);
   sl_linsolve_destroy(f->ls);

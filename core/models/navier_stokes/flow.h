@@ -14,14 +14,16 @@
  *            rotation_centre
  *   [boundary.NAME] type = wall | velocity | slip | axis | open | pressure
  *            | traction | periodic; velocity = expressions of x, y, t;
- *            pressure; traction; partner
+ *            pressure; traction; partner; force (wall, velocity: the
+ *            boundary force as the output scalars force_x_NAME, force_y_NAME)
  *   [initial] velocity = expressions of x, y
  *   [time]   scheme = steady | bdf1 | bdf2, end, dt, tolerance, adaptive,
  *            dt_min, dt_max, max_steps
  *   [solver] linear, ordering, nonlinear, nonlinear_tolerance,
  *            max_iterations, picard_first, continuation, continuation_from,
  *            continuation_steps
- *   [output] file, every, fields */
+ *   [output] file, every, fields, stream_function_stats (the stream
+ *            function's extremes and the phase of its first azimuthal mode) */
 #ifndef SLUICE_MODELS_NAVIER_STOKES_FLOW_H
 #define SLUICE_MODELS_NAVIER_STOKES_FLOW_H
 
@@ -44,6 +46,7 @@ typedef struct ns_boundary {
   sl_reals traction;
   const char *partner;
   double phi; /* the mixture: the solids fraction of inflow on an open boundary */
+  int force;  /* write the force of the fluid on this boundary (wall, velocity) with every output */
 } ns_boundary;
 
 /* The key tables the two models share (navier_stokes.c). */
@@ -57,6 +60,7 @@ extern const sl_key_table sl_flow_keys_initial;  /* [initial] velocity */
 /* The model's configuration the flow reads ([initial] velocity). */
 typedef struct sl_flow_config {
   sl_scene_exprs velocity;
+  int stream_stats; /* [output] stream_function_stats */
 } sl_flow_config;
 
 typedef struct sl_flow sl_flow;

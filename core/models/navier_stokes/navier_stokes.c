@@ -109,6 +109,10 @@ static const sl_key boundary_keys[] = {
      .when_type = ON(NS_TRACTION), .help = "the traction per component"},
     {.section = "boundary", .name = "partner", .type = SL_KEY_STRING, B(partner), .def_text = "",
      .when_type = ON(NS_PERIODIC), .help = "the opposite boundary of a periodic pair (on one side of the pair)"},
+    {.section = "boundary", .name = "force", .type = SL_KEY_BOOL, B(force), .when_type = ON(NS_WALL) | ON(NS_VELOCITY),
+     .help = "write the force of the fluid on this boundary with every output, as the scalars force_x_NAME and "
+             "force_y_NAME (force_r_, force_z_ axisymmetric; N/m planar, N axisymmetric): minus the momentum "
+             "residual on its nodes (John 2004)"},
 };
 TABLE(sl_flow_keys_boundary, boundary_keys);
 
@@ -116,6 +120,11 @@ static const sl_key initial_keys[] = {
     {.section = "initial", .name = "velocity", .type = SL_KEY_EXPRS, SL_AT_MODEL(sl_flow_config, velocity),
      .vars = "x,y", .max_n = 3, .units = "m s^-1", .help = "the initial velocity, one expression per component "
                                                             "(default at rest)"},
+    /* an output key of the flow's own configuration, in this table because both flow models include it */
+    {.section = "output", .name = "stream_function_stats", .type = SL_KEY_BOOL, SL_AT_MODEL(sl_flow_config, stream_stats),
+     .help = "planar: write the stream function's largest and smallest values (stream_function_max, _min) and the "
+             "phase of its first azimuthal mode about rotation_centre, arg int psi e^(i theta) dA "
+             "(stream_function_phase, rad), with each output"},
 };
 TABLE(sl_flow_keys_initial, initial_keys);
 

@@ -325,7 +325,11 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   if (!rc && !(r->cellbuf = calloc(2 * (size_t)r->m.fv.nc, sizeof *r->cellbuf)))
     rc = sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   if (!rc) rc = initial_state(r, d);
-  if (!rc) rc = sl_scene_linsolve(sc, r->m.n_unknowns, &r->m.ls, &r->linear, d);
+  if (!rc)
+    rc = sl_scene_linsolve_general(sc, r->m.n_unknowns,
+                                   "the coupled two-fluid matrix (both phases' velocities and the pressure) is "
+                                   "nonsymmetric",
+                                   &r->m.ls, &r->linear, d);
   if (!rc) { /* the velocity scale: the Stokes velocity, or the largest inflow at t = 0 */
     for (int k = 0; k < r->mesh->n_boundaries; ++k) {
       if (r->b[k].type != TFP_INLET) continue;

@@ -1,5 +1,6 @@
-// A second-order triangle mesh (6-node triangles, type 9): refused.
-// gmsh -2 -order 2 -format msh22 -o bad_p2_22.msh p2.geo
+// A second-order triangle mesh (6-node triangles, type 9) of a polygon: the
+// face nodes sit at the edge midpoints, so it reads as the straight mesh.
+// gmsh -2 -order 2 -format msh22 -o p2_straight_22.msh p2.geo
 Point(1) = {0, 0, 0, 1};
 Point(2) = {1, 0, 0, 1};
 Point(3) = {0, 1, 0, 1};

@@ -1,0 +1,282 @@
+/* The pipe model's set-up, steady solve, output and summary (pipe.h). */
+#include "core/models/pipe/pipe.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/models/pipe/pipe_impl.h"
+
+/* The geometric ratio sl_mesh_graded_points takes (h_last/h_first, the last cell at the
+   wall) for n cells over R with the wall cell w: t = h_{i}/h_{i+1} solves sum_{i<n} t^i = R/w (bisection in
+   log t; t = 1 is the uniform grid). */
+static double wall_grading(double R, double w, int n) {
+  double target = R / w, lo = -50.0, hi = 20.0 / n;
+  if (fabs(target - n) < 1e-12 * n) return 1.0;
+  for (int it = 0; it < 200; ++it) {
+    double m = 0.5 * (lo + hi), t = exp(m), s = 0.0, p = 1.0;
+    for (int i = 0; i < n && s <= target; ++i) s += p, p *= t;
+    if (s > target) hi = m;
+    else lo = m;
+  }
+  double t = exp(0.5 * (lo + hi));
+  return pow(t, -(double)(n - 1));
+}
+
+static void release(pipe *p) {
+  double **a[] = {&p->uf,   &p->us,    &p->phi,   &p->k,         &p->eps,      &p->theta,
+                  &p->mu_t, &p->mu_tk, &p->mu_te, &p->eps_prod,  &p->eps_sink, &p->K,
+                  &p->mu_s, &p->rhs,   &p->x,     &p->face_flux, &p->Kd,       &p->slip0};
+  for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i) free(*a[i]);
+  for (int i = 0; i < 12; ++i) free(p->buf[i]);
+  sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls};
+  for (size_t i = 0; i < sizeof pc / sizeof pc[0]; ++i) sl_point_release(pc[i]);
+  sl_cell_scalar_free(&p->cs);
+  sl_csr_free(&p->A);
+  sl_linsolve_destroy(p->ls);
+  sl_fv_grid_free(&p->g);
+  sl_tensor_grid_free(&p->tg);
+  sl_mesh_destroy(p->mesh);
+  free(p);
+}
+
+/* Churchill (1977), the Fanning friction factor of a smooth pipe (Krampa 2009 eqs 2.12-2.13 with k = 0). */
+static double churchill(double Re) {
+  double A = pow(-2.457 * log(pow(7.0 / Re, 0.9)), 16.0), B = pow(37530.0 / Re, 16.0);
+  return 2.0 * pow(pow(8.0 / Re, 12.0) + pow(A + B, -1.5), 1.0 / 12.0);
+}
+
+static int build_grid(pipe *p, sl_diag *d) {
+  const pipe_config *c = p->cfg;
+  int n = p->n;
+  double w = sl_scene_given(p->sc, &c->wall_cell) ? c->wall_cell : p->R / n;
+  char at[400], at2[400];
+  if (sl_scene_given(p->sc, &c->wall_y_plus)) {
+    if (sl_scene_given(p->sc, &c->wall_cell))
+      return sl_diag_set(d, SL_EBADINPUT, "%s and %s: give one of the two",
+                         sl_scene_where(p->sc, &c->wall_cell, at, sizeof at),
+                         sl_scene_where(p->sc, &c->wall_y_plus, at2, sizeof at2));
+    double V = c->bulk_velocity, nu = p->mu_f / p->rho_f, ut = V * sqrt(0.5 * churchill(V * c->diameter / nu));
+    w = 2.0 * c->wall_y_plus * nu / ut;
+  }
+  if (w > 0.5 * p->R)
+    return sl_diag_set(d, SL_EBADINPUT, "%s = %g: the wall cell must be at most half the radius, %g",
+                       sl_scene_where(p->sc, &c->wall_cell, at, sizeof at), w, 0.5 * p->R);
+  sl_grid_opts o = {.cell_type = SL_CELL_QUAD4, .grade_x = {SL_GRADE_GEOMETRIC, wall_grading(p->R, w, n)}};
+  if (o.grade_x.ratio == 1.0) o.grade_x.kind = SL_GRADE_UNIFORM;
+  int rc = sl_mesh_rectangle(0.0, p->R, 0.0, 0.1 * p->R, n, 1, &o, &p->mesh, d);
+  if (!rc) rc = sl_tensor_grid_from_mesh(p->mesh, &p->tg, d);
+  const int periodic[2] = {0, 1};
+  if (!rc) rc = sl_fv_grid_build(&p->g, &p->tg, 1, periodic, d);
+  return rc;
+}
+
+static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) {
+  pipe *p = calloc(1, sizeof *p);
+  if (!p) return sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
+  p->sc = sc, p->cfg = sc->config;
+  const pipe_config *c = p->cfg;
+  char at[400];
+  p->n = (int)c->cells, p->R = 0.5 * c->diameter, p->gz = sc->flow.gravity.n ? sc->flow.gravity.v[0] : -9.81;
+  p->rho_f = sc->fluid.density, p->mu_f = sc->fluid.viscosity;
+  p->rho_s = sc->solid.density, p->d_p = sc->solid.diameter, p->phi_max = sc->solid.phi_max;
+  p->two_phase = c->solids_fraction > 0.0;
+  int rc = 0;
+  if (p->two_phase && c->solids_fraction > p->phi_max - 0.01)
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s = %g: at most [solid] phi_max - 0.01 = %g",
+                     sl_scene_where(sc, &c->solids_fraction, at, sizeof at), c->solids_fraction, p->phi_max - 0.01);
+  if (!rc && p->two_phase && !sl_scene_closure(sc, "drag"))
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s = %g: a slurry needs [closure.drag] (e.g. model = gidaspow)",
+                     sl_scene_where(sc, &c->solids_fraction, at, sizeof at), c->solids_fraction);
+  if (!rc && c->solids_wall == PIPE_WALL_STRESS && !sl_scene_closure(sc, "wall_stress.solids"))
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s = wall_stress needs [closure.wall_stress.solids]",
+                     sl_scene_where(sc, &c->solids_wall, at, sizeof at));
+  if (!rc && c->solids_wall != PIPE_WALL_STRESS && sl_scene_closure(sc, "wall_stress.solids"))
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "[closure.wall_stress.solids] is read with [pipe] solids_wall = wall_stress "
+                     "only; did you mean solids_wall = wall_stress?");
+  if (!rc) rc = build_grid(p, d);
+  const int n = p->n;
+  if (!rc) {
+    double **a[] = {&p->uf,    &p->us,       &p->phi,      &p->k, &p->eps,  &p->theta, &p->mu_t, &p->mu_tk,
+                    &p->mu_te, &p->eps_prod, &p->eps_sink, &p->K, &p->mu_s, &p->Kd,    &p->slip0};
+    for (size_t i = 0; i < sizeof a / sizeof a[0] && !rc; ++i)
+      if (!(*a[i] = calloc((size_t)n, sizeof(double)))) rc = sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
+    for (int i = 0; i < 12 && !rc; ++i)
+      if (!(p->buf[i] = calloc((size_t)n, sizeof(double)))) rc = sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
+  }
+  if (!rc && !(p->face_flux = calloc((size_t)p->g.nf, sizeof(double))))
+    rc = sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
+  if (!rc) rc = pipe_closures_bind(p, d);
+  if (!rc) rc = sl_cell_scalar_init(&p->cs, &p->g, d);
+  if (!rc) rc = pipe_momentum_init(p, d);
+  if (rc) {
+    release(p);
+    return rc;
+  }
+  /* the initial state: the 1/7 power law, a turbulence intensity of 5 %, a mixing length of 0.07 D */
+  const double V = c->bulk_velocity, k0 = 1.5 * (0.05 * V) * (0.05 * V), l0 = 0.07 * c->diameter;
+  for (int i = 0; i < n; ++i) {
+    double r = p->g.xc[i];
+    p->uf[i] = p->us[i] = V * (60.0 / 49.0) * pow(1.0 - r / p->R, 1.0 / 7.0);
+    p->k[i] = k0, p->eps[i] = pow(0.09, 0.75) * pow(k0, 1.5) / l0;
+    p->phi[i] = c->solids_fraction, p->theta[i] = 1e-4;
+  }
+  *info = (sl_model_info){
+      .integrator = SL_INTEGRATE_BDF, .n = n, .n_err = n, .u = p->uf, .has_steady = 1, .state_name = "velocity"};
+  *self = p;
+  return 0;
+}
+
+static double rel_change(const double *a, const double *b, int n) {
+  double num = 0.0, den = 0.0;
+  for (int i = 0; i < n; ++i) num = fmax(num, fabs(a[i] - b[i])), den = fmax(den, fabs(b[i]));
+  return den > 0.0 ? num / den : num;
+}
+
+/* The steady solve: outer iterations of the momentum (u_f, u_s, G), the turbulence and the solids fraction,
+   each with the others' last values, until one changes them all by less than the tolerance. */
+static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d) {
+  pipe *p = self;
+  const pipe_config *c = p->cfg;
+  const int n = p->n;
+  double *old[4] = {p->buf[8], p->buf[9], p->buf[10], p->buf[11]};
+  int rc = 0;
+  p->converged = 0;
+  for (long it = 1; it <= c->iterations && !rc; ++it) {
+    memcpy(old[0], p->uf, (size_t)n * sizeof(double)), memcpy(old[1], p->k, (size_t)n * sizeof(double));
+    memcpy(old[2], p->eps, (size_t)n * sizeof(double)), memcpy(old[3], p->phi, (size_t)n * sizeof(double));
+    double G_old = p->G;
+    if (!rc) rc = pipe_turbulence_coefficients(p, d);
+    if (!rc) rc = pipe_wall_function(p, d);
+    if (!rc && p->two_phase) rc = pipe_solids_coefficients(p, d);
+    if (!rc) rc = pipe_momentum_solve(p, d);
+    if (!rc) rc = pipe_turbulence_update(p, d);
+    if (!rc && p->two_phase) rc = pipe_solids_update(p, d);
+    p->iterations = it;
+    if (rc) break;
+    double ch = fmax(fmax(rel_change(p->uf, old[0], n), rel_change(p->k, old[1], n)), rel_change(p->eps, old[2], n));
+    if (p->two_phase) ch = fmax(ch, rel_change(p->phi, old[3], n));
+    ch = fmax(ch, fabs(p->G - G_old) / fmax(fabs(p->G), 1e-300));
+    p->change = ch;
+    for (int i = 0; i < n; ++i)
+      if (!isfinite(p->uf[i]) || !isfinite(p->us[i]) || !isfinite(p->k[i]) || !isfinite(p->eps[i]) ||
+          !isfinite(p->phi[i]))
+        rc = sl_diag_set(d, SL_EFAILED, "pipe: the solution is not finite at r = %g after %ld iterations", p->g.xc[i],
+                         it);
+    if (!rc && it > 2 && ch < c->tolerance) {
+      p->converged = 1;
+      break;
+    }
+  }
+  /* the last coefficients and wall stresses of the state reached */
+  if (!rc) rc = pipe_turbulence_coefficients(p, d);
+  if (!rc) rc = pipe_wall_function(p, d);
+  if (!rc && p->two_phase) rc = pipe_solids_coefficients(p, d);
+  *steps = 1, *its = p->iterations;
+  if (u != p->uf) memcpy(u, p->uf, (size_t)n * sizeof(double));
+  if (!rc && !p->converged) {
+    snprintf(p->stop_reason, sizeof p->stop_reason,
+             "not converged: %ld iterations ([pipe] iterations) changed the state by %.3g > tolerance %.3g",
+             p->iterations, p->change, c->tolerance);
+    rc = sl_diag_set(d, SL_EFAILED, "pipe: %s", p->stop_reason);
+  } else if (!rc) {
+    snprintf(p->stop_reason, sizeof p->stop_reason, "converged in %ld iterations (change %.2g)", p->iterations,
+             p->change);
+  }
+  if (!rc && (p->y_plus < 30.0 || p->y_plus > 200.0) && !p->warned_yplus) {
+    p->warned_yplus = 1;
+    fprintf(stderr,
+            "sluice: warning: pipe: the wall cell's centre is at y+ = %.3g, outside the wall function's 30-200 (Krampa "
+            "2009 section 2.9): set [pipe] wall_cell or wall_y_plus\n",
+            p->y_plus);
+  }
+  return rc;
+}
+
+/* ---- output ---------------------------------------------------------------------------- */
+
+static int pipe_write_mesh(void *self, sl_output *out, sl_diag *d) {
+  const sl_mesh *m = ((pipe *)self)->mesh;
+  int32_t *cells = malloc((size_t)m->n_cells * m->nv_per_cell * sizeof *cells);
+  if (!cells) return sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
+  for (int i = 0; i < m->n_cells * m->nv_per_cell; ++i) cells[i] = m->cell_vertices[i];
+  int rc = sl_output_write_mesh(out, 2, m->n_vertices, m->xy, m->n_cells, m->nv_per_cell, cells, "Quadrilateral", d);
+  free(cells);
+  return rc;
+}
+
+/* A cell field's value at radius r (linear between the cell centres, constant beyond the outer ones). */
+static double at_radius(const pipe *p, const double *f, double r) {
+  const double *xc = p->g.xc;
+  if (r <= xc[0]) return f[0];
+  for (int i = 0; i + 1 < p->n; ++i)
+    if (r <= xc[i + 1]) return f[i] + (f[i + 1] - f[i]) * (r - xc[i]) / (xc[i + 1] - xc[i]);
+  return f[p->n - 1];
+}
+
+static int pipe_write(void *self, sl_output *out, double t, const double *u, sl_diag *d) {
+  (void)t, (void)u;
+  pipe *p = self;
+  const pipe_config *c = p->cfg;
+  const int n = p->n;
+  unsigned mask;
+  int rc = sl_scene_output_fields(p->sc, 0x7fu, &mask, d);
+  const double *fields[7] = {p->uf, p->us, p->phi, p->k, p->eps, p->mu_t, p->theta};
+  for (int k = 0; k < 7 && !rc; ++k) {
+    if (!(mask >> k & 1u)) continue;
+    double *v = p->buf[0];
+    for (int i = 0; i < n; ++i) v[p->tg.mesh_cell[i]] = fields[k][i];
+    rc = sl_output_write_field(out, sl_pipe_schema.fields[k], SL_CENTRE_CELL, 1, v, d);
+  }
+  /* section means (area-weighted) and the chord average along a diameter (length-weighted) */
+  double A = 0.0, phim = 0.0, chord = 0.0, flux_s = 0.0;
+  for (int i = 0; i < n; ++i) {
+    A += p->g.vol[i], phim += p->g.vol[i] * p->phi[i], chord += p->g.hx[i] * p->phi[i];
+    flux_s += p->g.vol[i] * p->phi[i] * p->us[i];
+  }
+  double tau = p->tau_fw + p->tau_sw, V = c->bulk_velocity, g = fabs(p->gz) > 0 ? fabs(p->gz) : 9.81;
+  struct {
+    const char *name;
+    double v;
+  } s[] = {{"pressure_gradient", -p->G},
+           {"manometric_gradient", -p->G + p->rho_f * p->gz},
+           {"wall_shear_stress_fluid", p->tau_fw},
+           {"wall_shear_stress_solid", p->tau_sw},
+           {"i_m", 4.0 * tau / (p->rho_f * g * c->diameter)},
+           {"friction_factor", tau / (0.5 * p->rho_f * V * V)},
+           {"reynolds", p->rho_f * V * c->diameter / p->mu_f},
+           {"y_plus", p->y_plus},
+           {"phi_mean", phim / A},
+           {"phi_chord", chord / p->R},
+           {"solids_mean_velocity", phim > 0.0 ? flux_s / phim : 0.0},
+           {"velocity_solid_04", at_radius(p, p->us, 0.4 * p->R)},
+           {"velocity_solid_08", at_radius(p, p->us, 0.8 * p->R)},
+           {"iterations", (double)p->iterations}};
+  for (size_t k = 0; k < sizeof s / sizeof s[0] && !rc; ++k) rc = sl_output_write_scalar(out, s[k].name, s[k].v, d);
+  return rc;
+}
+
+static void pipe_stats(void *self, const sl_run_result *res, sl_model_stats *st) {
+  (void)res;
+  pipe *p = self;
+  st->converged = p->converged;
+  st->correction = p->change;
+  memcpy(st->stop_reason, p->stop_reason, sizeof st->stop_reason);
+  if (p->ls) st->linear = *sl_linsolve_get_stats(p->ls), st->has_linear = 1;
+  double tau = p->tau_fw + p->tau_sw, V = p->cfg->bulk_velocity;
+  snprintf(st->coupling_summary, sizeof st->coupling_summary,
+           "pipe: -dP/dz %.6g Pa/m (manometric %.6g), tau_w %.4g Pa (fluid %.4g, solids %.4g), f %.5g, y+ %.3g", -p->G,
+           -p->G + p->rho_f * p->gz, tau, p->tau_fw, p->tau_sw, tau / (0.5 * p->rho_f * V * V), p->y_plus);
+  snprintf(st->linear_summary, sizeof st->linear_summary, "klu, %d radial cells", p->n);
+}
+
+static void pipe_destroy(void *self) { release(self); }
+
+const sl_model_ops sl_pipe_ops = {.setup = pipe_setup,
+                                  .steady = pipe_steady,
+                                  .write_mesh = pipe_write_mesh,
+                                  .write = pipe_write,
+                                  .stats = pipe_stats,
+                                  .destroy = pipe_destroy};

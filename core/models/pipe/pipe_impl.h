@@ -1,0 +1,91 @@
+/* The pipe model's state, shared by its files (pipe.h). */
+#ifndef SLUICE_MODELS_PIPE_IMPL_H
+#define SLUICE_MODELS_PIPE_IMPL_H
+
+#include "core/fv/cell_scalar.h"
+#include "core/fv/grid.h"
+#include "core/mesh/mesh.h"
+#include "core/mesh/tensor_grid.h"
+#include "core/plugin/point_eval.h"
+#include "core/scene/scene.h"
+#include "core/solve/linsolve.h"
+#include "core/solve/sparse.h"
+
+enum { PIPE_NO_SLIP = 0, PIPE_FREE_SLIP, PIPE_WALL_STRESS };
+enum { PIPE_DISPERSION_GRADIENT = 0, PIPE_DISPERSION_SIMONIN };
+
+typedef struct pipe_config {
+  double diameter, bulk_velocity, solids_fraction, wall_cell, wall_y_plus;
+  long cells, iterations;
+  double tolerance, relaxation, pseudo_step;
+  int solids_wall, kinetic_pressure;
+  double solids_schmidt, dispersion_schmidt, crossing_trajectory;
+  int dispersion; /* PIPE_DISPERSION_* */
+} pipe_config;
+
+/* The host's quantities the closures bind to. */
+enum {
+  PQ_PHI,
+  PQ_SLIP,
+  PQ_K,
+  PQ_EPS,
+  PQ_THETA,
+  PQ_SHEAR,
+  PQ_RHO_F,
+  PQ_MU_F,
+  PQ_RHO_S,
+  PQ_D_P,
+  PQ_SPHERICITY,
+  PQ_SLIP_WALL,
+  PQ_WALL_DISTANCE,
+  PQ_D_VESSEL,
+  PQ_GRAVITY,
+  PQ_N
+};
+extern const char *const pipe_quantity_names[PQ_N];
+
+typedef struct pipe {
+  const sl_scene *sc;
+  const pipe_config *cfg;
+  sl_mesh *mesh;
+  sl_tensor_grid tg;
+  sl_fv_grid g;
+  int n;        /* radial cells */
+  double R, gz; /* radius, gravity along the flow */
+  double rho_f, mu_f, rho_s, d_p, phi_max;
+  int two_phase;
+  /* state (cells) */
+  double *uf, *us, *phi, *k, *eps, *theta;
+  double G; /* dP/dz */
+  /* coefficients (cells) */
+  double *mu_t, *mu_tk, *mu_te, *eps_prod, *eps_sink, *K, *mu_s;
+  double *Kd, *slip0; /* d(K s)/ds at the last slip, and that slip u_f - u_s (the drag's Newton linearisation) */
+  double c_mu;
+  /* wall */
+  double tau_fw, tau_sw, u_tau, y_plus, k_wall, eps_wall, a_fw, a_sw;
+  /* closures */
+  sl_point_closure turb, wallf, drag, gran, psol, walls;
+  int have_gran, have_psol, have_walls, walls_at_node;
+  /* solvers */
+  sl_cell_scalar cs;
+  sl_csr A;
+  sl_linsolve *ls;
+  double *face_flux;         /* [nf] */
+  double *rhs, *x, *buf[12]; /* buf[0..7] scratch, buf[8..11] the steady solve's last state */
+  double dirichlet;          /* the value the wall cell's k or epsilon is held at (the cell-scalar hook's) */
+  long iterations;
+  double change;
+  int converged, warned_yplus;
+  char stop_reason[256];
+} pipe;
+
+int pipe_closures_bind(pipe *p, sl_diag *d);
+int pipe_turbulence_coefficients(pipe *p, sl_diag *d);
+int pipe_wall_function(pipe *p, sl_diag *d);
+int pipe_turbulence_update(pipe *p, sl_diag *d);
+int pipe_momentum_init(pipe *p, sl_diag *d);
+int pipe_momentum_solve(pipe *p, sl_diag *d);
+int pipe_solids_coefficients(pipe *p, sl_diag *d);
+int pipe_solids_update(pipe *p, sl_diag *d);
+
+#endif

@@ -1,0 +1,199 @@
+/* The solids of the pipe model (pipe.h): the drag, the solids viscosity,
+ * the granular temperature's local balance, the solids' wall coefficient, and
+ * the radial solids balance that sets phi(r).
+ *
+ * Granular temperature (with [closure.granular]): production by the solids
+ * shear against the collisional and the drag's dissipation, conduction and
+ * convection dropped (van Wachem et al. 2001's algebraic form; Krampa 2009
+ * eq 5.10 in the standard form of section 2.5 with the fluid-particle
+ * correlation neglected, as Krampa did):
+ *   mu_s(phi, theta) gdot_s^2 = gamma(phi, theta) + 3 K theta,
+ * solved in each cell by bisection in log theta (the left side grows as
+ * theta^1/2, the right as theta^3/2 and theta).
+ *
+ * Radial balance: with no mean radial motion, the radial momentum of the
+ * fluid, 0 = -c_f dP/dr - F_TD, and of the solids, 0 = -c_s dP/dr - dp_s/dr +
+ * F_TD, give F_TD = c_f dp_s/dr; with the turbulent dispersion force of
+ * Burns et al. (2004), F_TD = -K (nu_t/sigma_d) phi'/(c_s c_f) (Krampa 2009
+ * eq 4.57 with the gradient closure 4.59), this is a zero net radial flux
+ *   phi v - D phi' = 0,  D = nu_t/sigma_d + c_s c_f^2 (dp_s/dphi)/K,
+ *   v = -c_f^2 (dp_s/dtheta) theta'/K,
+ * a cell scalar (core/fv/cell_scalar.h) with no flux through the axis and the
+ * wall. With `dispersion = simonin` the dispersivity nu_t/sigma_d is replaced
+ * by Simonin's D_fs = t_fs k_fs/3 (Krampa 2009 eq 4.63, Enwald et al. 1996)
+ * with the eddy-particle interaction time seen by a particle crossing the
+ * eddies (Csanady 1963; Krampa eq 4.61),
+ *   t_fs = C_mu (3k/(2 eps)) [1 + C_beta 3 |u_f - u_s|^2/(2k)]^(-1/2),
+ * and the fluid-particle covariance of Tchen's equilibrium for heavy
+ * particles, k_fs = 2 k eta/(1 + eta), eta = t_fs/t_p, t_p = c_s rho_s/K
+ * (Krampa eq 4.58): fine particles (eta large) disperse as the fluid, D_fs ->
+ * C_mu k^2/eps = nu_t. The kinetic theory's pressure joins with [pipe] kinetic_pressure:
+ * where phi is small its theta grows as 1/phi^2 (the dissipation falls with
+ * phi^2, the dilute viscosity does not) and rho_s phi theta with it, so that
+ * it drives solids from where they are fewest; in dilute flow (5 %) this runs
+ * away near the wall and the steady solve does not converge. The pseudo-time
+ * step keeps the section's solids inventory; phi is kept below phi_max - 0.01
+ * and the inventory restored to the given mean. */
+#include <math.h>
+#include <string.h>
+
+#include "core/models/pipe/pipe_impl.h"
+
+/* |du_s/dr| in the cells, from the face gradients (zero at the axis; the wall face's from the last wall stress
+   over the last solids viscosity: called before mu_s is renewed). */
+static void solids_shear(const pipe *p, double *gd) {
+  const sl_fv_grid *g = &p->g;
+  const int n = p->n;
+  for (int i = 0; i < n; ++i) {
+    double gw = i > 0 ? (p->us[i] - p->us[i - 1]) / (g->xc[i] - g->xc[i - 1]) : 0.0;
+    double ge = i + 1 < n ? (p->us[i + 1] - p->us[i]) / (g->xc[i + 1] - g->xc[i])
+                          : -p->a_sw * p->us[i] / fmax(p->mu_s[i], 1e-300);
+    gd[i] = sqrt(0.5 * (gw * gw + ge * ge));
+  }
+}
+
+/* theta of the local balance in every cell. */
+static int granular_theta(pipe *p, const double *gd, sl_diag *d) {
+  const int n = p->n;
+  double *lo = p->buf[1], *hi = p->buf[2], *th = p->buf[3], *mu = p->buf[5], *gam = p->buf[6];
+  for (int i = 0; i < n; ++i) lo[i] = log(1e-12), hi[i] = log(1e2);
+  const double *v[PQ_N] = {0};
+  v[PQ_PHI] = p->phi, v[PQ_THETA] = th;
+  sl_point_request rq[2] = {{"mu_s", mu, NULL, NULL}, {"gamma", gam, NULL, NULL}};
+  for (int it = 0; it < 60; ++it) {
+    for (int i = 0; i < n; ++i) th[i] = fmax(exp(0.5 * (lo[i] + hi[i])), 1e-12); /* the closure's floor */
+    int rc = sl_point_eval(&p->gran, n, v, rq, 2, d);
+    if (rc) return sl_diag_prefix(d, rc, "[closure.granular]");
+    for (int i = 0; i < n; ++i) {
+      double excess = mu[i] * gd[i] * gd[i] - gam[i] - 3.0 * p->K[i] * th[i];
+      if (excess > 0.0) lo[i] = 0.5 * (lo[i] + hi[i]);
+      else hi[i] = 0.5 * (lo[i] + hi[i]);
+    }
+  }
+  const double w = p->iterations > 0 ? p->cfg->relaxation : 1.0; /* under-relaxed as the velocities */
+  for (int i = 0; i < n; ++i)
+    p->theta[i] = fmax(p->theta[i] + w * (exp(0.5 * (lo[i] + hi[i])) - p->theta[i]), 1e-12); /* the closure's floor */
+  return 0;
+}
+
+int pipe_solids_coefficients(pipe *p, sl_diag *d) {
+  const int n = p->n;
+  double *slip = p->buf[0], *gd = p->buf[4], *dK = p->buf[1];
+  for (int i = 0; i < n; ++i) p->slip0[i] = p->uf[i] - p->us[i], slip[i] = fabs(p->slip0[i]);
+  const double *v[PQ_N] = {0};
+  v[PQ_PHI] = p->phi, v[PQ_SLIP] = slip;
+  sl_point_request rq = {"K", p->K, dK, "slip"};
+  int rc = sl_point_eval(&p->drag, n, v, &rq, 1, d);
+  if (rc) return sl_diag_prefix(d, rc, "[closure.drag]");
+  /* the drag force K(s) s linearised about the last slip: its slope d(K s)/ds = K + s dK/ds (the lagged K alone
+     oscillates where K grows with s, K ~ s at high particle Reynolds numbers) */
+  for (int i = 0; i < n; ++i) p->Kd[i] = fmax(p->K[i] + slip[i] * dK[i], p->K[i] * 1e-3);
+  /* mu_s: the dispersed phase's eddy viscosity, the constant, the kinetic theory's */
+  if (p->have_gran) solids_shear(p, gd);
+  for (int i = 0; i < n; ++i)
+    p->mu_s[i] = p->phi[i] * p->rho_s * (p->mu_t[i] / p->rho_f) / p->cfg->solids_schmidt + p->sc->solid.viscosity;
+  if (p->have_gran) {
+    if ((rc = granular_theta(p, gd, d))) return rc;
+    double *mu = p->buf[5];
+    v[PQ_THETA] = p->theta;
+    sl_point_request r2 = {"mu_s", mu, NULL, NULL};
+    if ((rc = sl_point_eval(&p->gran, n, v, &r2, 1, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
+    for (int i = 0; i < n; ++i) p->mu_s[i] += mu[i];
+  }
+  /* the solids' wall: tau_sw = a_sw u_s of the wall cell. Across the wall cell the solids' eddy viscosity
+     c_s rho_s nu_t/sigma is bridged by the fluid's wall function, as the fluid's own is (nu_t of the log layer,
+     the same for both phases but for sigma: tau = (c_s rho_s/(sigma rho_f)) a_fw u_s), the rest of mu_s (the
+     constant, the kinetic theory's) linearly (mu/y) */
+  const int w = n - 1;
+  const double yp = p->R - p->g.xc[w];
+  const double turb_w = p->phi[w] * p->rho_s * (p->mu_t[w] / p->rho_f) / p->cfg->solids_schmidt;
+  const double a_ns =
+      p->phi[w] * p->rho_s / (p->cfg->solids_schmidt * p->rho_f) * p->a_fw + fmax(p->mu_s[w] - turb_w, 0.0) / yp;
+  switch (p->cfg->solids_wall) {
+    case PIPE_NO_SLIP:
+      p->a_sw = a_ns;
+      break;
+    case PIPE_FREE_SLIP:
+      p->a_sw = 0.0;
+      break;
+    default: {
+      /* a wall function (a wall_distance input: Bartosik, Bagnold) takes the wall cell's speed; a slip law
+       (Johnson & Jackson, Navier slip) the speed at the wall: the bridge and the law in series, u_w = a_ns u_p/
+       (a_ns + a), a_sw = a a_ns/(a_ns + a), a = tau/u_w of the last iterate */
+      double U = fabs(p->us[w]), uw = U, tau, dtau;
+      if (!p->walls_at_node && p->a_sw > 0.0) {
+        double a = p->a_sw < a_ns ? p->a_sw * a_ns / (a_ns - p->a_sw) : 1e12 * a_ns; /* invert a_sw */
+        uw = U * a_ns / (a_ns + a);
+      }
+      const double *vw[PQ_N] = {0};
+      double phw = p->phi[w], thw = p->theta[w], gdw = U / yp;
+      vw[PQ_SLIP_WALL] = &uw, vw[PQ_PHI] = &phw, vw[PQ_THETA] = &thw, vw[PQ_SHEAR] = &gdw;
+      sl_point_request rw = {"tau_w", &tau, &dtau, "slip_wall"};
+      if ((rc = sl_point_eval(&p->walls, 1, vw, &rw, 1, d)))
+        return sl_diag_prefix(d, rc, "[closure.wall_stress.solids]");
+      double a = uw > 0.0 ? tau / uw : dtau;
+      p->a_sw = p->walls_at_node ? a : a * a_ns / (a_ns + a);
+    }
+  }
+  return 0;
+}
+
+int pipe_solids_update(pipe *p, sl_diag *d) {
+  const int n = p->n;
+  const sl_fv_grid *g = &p->g;
+  double *B = p->buf[0], *Pt = p->buf[1], *D = p->buf[2], *cap = p->buf[3], *s = p->buf[5];
+  double *flux = p->face_flux; /* the grid's faces: the row's x-faces 0..n, then the (periodic) z-faces */
+  for (int i = 0; i < n; ++i) B[i] = 0.0, Pt[i] = 0.0;
+  const double *v[PQ_N] = {0};
+  v[PQ_PHI] = p->phi, v[PQ_THETA] = p->theta;
+  int rc = 0;
+  if (p->have_psol) {
+    double *ps = p->buf[4], *dps = p->buf[7];
+    sl_point_request rq = {"p_s", ps, dps, "phi"};
+    if ((rc = sl_point_eval(&p->psol, n, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.solids_pressure]");
+    for (int i = 0; i < n; ++i) B[i] += dps[i];
+  }
+  const int kinetic = p->have_gran && p->cfg->kinetic_pressure;
+  if (kinetic) {
+    double *ps = p->buf[4], *dph = p->buf[7];
+    sl_point_request rq[2] = {{"p_s", ps, dph, "phi"}, {"p_s", ps, Pt, "theta"}};
+    if ((rc = sl_point_eval(&p->gran, n, v, rq, 2, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
+    for (int i = 0; i < n; ++i) B[i] += dph[i];
+  }
+  double Dmax = 0.0;
+  for (int i = 0; i < n; ++i) {
+    double cs = p->phi[i], cf = 1.0 - cs, Dt = p->mu_t[i] / p->rho_f / p->cfg->dispersion_schmidt;
+    if (p->cfg->dispersion == PIPE_DISPERSION_SIMONIN) {
+      double k = p->k[i], s2 = (p->uf[i] - p->us[i]) * (p->uf[i] - p->us[i]);
+      double tfs = p->c_mu * 1.5 * k / p->eps[i] / sqrt(1.0 + p->cfg->crossing_trajectory * 1.5 * s2 / k);
+      double tp = cs * p->rho_s / p->K[i], eta = tfs / tp, kfs = 2.0 * k * eta / (1.0 + eta);
+      Dt = tfs * kfs / 3.0;
+    }
+    D[i] = Dt + cs * cf * cf * B[i] / p->K[i];
+    Dmax = fmax(Dmax, D[i]);
+    cap[i] = 1.0;
+  }
+  memset(flux, 0, (size_t)g->nf * sizeof *flux);
+  for (int i = 0; i + 1 < n && kinetic; ++i) {
+    int f = i + 1;
+    double cf = 1.0 - 0.5 * (p->phi[i] + p->phi[i + 1]), K = 0.5 * (p->K[i] + p->K[i + 1]);
+    double vr = -cf * cf * 0.5 * (Pt[i] + Pt[i + 1]) * (p->theta[i + 1] - p->theta[i]) / g->dist[f] / K;
+    flux[f] = vr * g->area[f];
+  }
+  sl_cell_scalar_terms t = {
+      .dt = 1e3 * p->R * p->R / fmax(Dmax, 1e-300), .cap = cap, .s_old = p->phi, .k = D, .flux = kinetic ? flux : NULL};
+  rc = sl_cell_scalar_solve(&p->cs, &t, s, d);
+  if (rc) return sl_diag_prefix(d, rc, "pipe: the radial solids balance");
+  /* bound and restore the inventory */
+  double target = p->cfg->solids_fraction, cap_phi = p->phi_max - 0.01;
+  for (int pass = 0; pass < 20; ++pass) {
+    double m = 0.0, A = 0.0;
+    for (int i = 0; i < n; ++i) s[i] = fmin(fmax(s[i], 0.0), cap_phi), m += g->vol[i] * s[i], A += g->vol[i];
+    double scale = target * A / m;
+    if (fabs(scale - 1.0) < 1e-14) break;
+    for (int i = 0; i < n; ++i) s[i] *= scale;
+  }
+  const double w = p->cfg->relaxation;
+  for (int i = 0; i < n; ++i) p->phi[i] += w * (s[i] - p->phi[i]);
+  return 0;
+}

@@ -1,0 +1,97 @@
+/* The fluid's k-epsilon turbulence of the pipe model and its wall function
+ * (pipe.h): the coefficients from [closure.turbulence], the wall cell from
+ * [closure.wall_stress.fluid], and one pseudo-time step of each equation on
+ * the shared cell-scalar solver (core/fv/cell_scalar.h):
+ *   c_f rho (k - k*)/dtau = (1/r) d/dr(r c_f (mu + mu_t/sigma_k) dk/dr) + c_f P_k - c_f rho eps
+ *   c_f rho (e - e*)/dtau = (1/r) d/dr(r c_f (mu + mu_t/sigma_e) de/dr) + c_f C_e1 (e/k) P_k - c_f C_e2 rho e^2/k
+ * (Krampa 2009 eqs 4.82-4.83 without modulation), P_k = mu_t (du_f/dr)^2, the
+ * destruction implicit in k and e with its coefficient lagged, the local
+ * pseudo-step dtau = pseudo_step k/eps. The wall cell holds k = u_tau^2/sqrt(C_mu)
+ * and eps = u_tau^3/(kappa y) (Krampa 2009 eqs 4.85-4.86). */
+#include <math.h>
+#include <string.h>
+
+#include "core/models/pipe/pipe_impl.h"
+
+int pipe_turbulence_coefficients(pipe *p, sl_diag *d) {
+  const double *v[PQ_N] = {0};
+  v[PQ_K] = p->k, v[PQ_EPS] = p->eps;
+  double *cmu = p->buf[0];
+  sl_point_request rq[6] = {{"mu_t", p->mu_t, NULL, NULL},         {"mu_t_k", p->mu_tk, NULL, NULL},
+                            {"mu_t_eps", p->mu_te, NULL, NULL},    {"eps_production", p->eps_prod, NULL, NULL},
+                            {"eps_sink", p->eps_sink, NULL, NULL}, {"c_mu", cmu, NULL, NULL}};
+  int rc = sl_point_eval(&p->turb, p->n, v, rq, 6, d);
+  if (rc) return sl_diag_prefix(d, rc, "[closure.turbulence]");
+  p->c_mu = cmu[0];
+  return 0;
+}
+
+int pipe_wall_function(pipe *p, sl_diag *d) {
+  const int w = p->n - 1;
+  double U = fabs(p->uf[w]), tau, dtau, ut, yp, kw, ew;
+  const double *v[PQ_N] = {0};
+  v[PQ_SLIP_WALL] = &U;
+  sl_point_request rq[5] = {{"tau_w", &tau, &dtau, "slip_wall"},
+                            {"u_tau", &ut, NULL, NULL},
+                            {"y_plus", &yp, NULL, NULL},
+                            {"k_wall", &kw, NULL, NULL},
+                            {"epsilon_wall", &ew, NULL, NULL}};
+  int rc = sl_point_eval(&p->wallf, 1, v, rq, 5, d);
+  if (rc) return sl_diag_prefix(d, rc, "[closure.wall_stress.fluid]");
+  p->tau_fw = (p->uf[w] >= 0.0 ? 1.0 : -1.0) * tau;
+  p->u_tau = ut, p->y_plus = yp, p->k_wall = kw, p->eps_wall = ew;
+  p->a_fw = U > 0.0 ? tau / U : dtau; /* tau_w = a u_p: the wall's coefficient in the momentum row */
+  return 0;
+}
+
+/* The wall cell holds its value: a diagonal that swamps the row. */
+static int hold_wall(void *user, int c, double *rhs, double *diag, sl_diag *d) {
+  (void)d;
+  pipe *p = user;
+  if (c != p->n - 1) return 0;
+  double big = 1e12 * (*diag + 1.0);
+  *diag += big, *rhs += big * p->dirichlet;
+  return 0;
+}
+
+int pipe_turbulence_update(pipe *p, sl_diag *d) {
+  const int n = p->n;
+  const sl_fv_grid *g = &p->g;
+  double *P = p->buf[0], *cap = p->buf[1], *kd = p->buf[2], *src = p->buf[3], *snk = p->buf[4], *s = p->buf[5];
+  /* P_k from the face gradients of u_f (zero at the axis; the wall cell is held) */
+  for (int i = 0; i < n; ++i) {
+    double gw = i > 0 ? (p->uf[i] - p->uf[i - 1]) / (g->xc[i] - g->xc[i - 1]) : 0.0;
+    double ge = i + 1 < n ? (p->uf[i + 1] - p->uf[i]) / (g->xc[i + 1] - g->xc[i]) : gw;
+    P[i] = p->mu_t[i] * 0.5 * (gw * gw + ge * ge);
+  }
+  const double a = p->cfg->pseudo_step;
+  sl_cell_scalar_terms t = {
+      .dt = 1.0, .cap = cap, .k = kd, .source = src, .sink = snk, .boundary = hold_wall, .boundary_user = p};
+  /* k */
+  for (int i = 0; i < n; ++i) {
+    double cf = 1.0 - p->phi[i];
+    cap[i] = cf * p->rho_f * p->eps[i] / (a * p->k[i]);
+    kd[i] = cf * (p->mu_f + p->mu_tk[i]);
+    src[i] = cf * P[i];
+    snk[i] = cf * p->rho_f * p->eps[i] / p->k[i];
+  }
+  t.s_old = p->k, p->dirichlet = p->k_wall;
+  int rc = sl_cell_scalar_solve(&p->cs, &t, s, d);
+  if (rc) return sl_diag_prefix(d, rc, "pipe: the k equation");
+  /* epsilon, with the k of the step's start in its coefficients */
+  for (int i = 0; i < n; ++i) {
+    double cf = 1.0 - p->phi[i];
+    kd[i] = cf * (p->mu_f + p->mu_te[i]);
+    src[i] = cf * p->eps_prod[i] * P[i];
+    snk[i] = cf * p->eps_sink[i];
+  }
+  t.s_old = p->eps, p->dirichlet = p->eps_wall;
+  double *e = P; /* P is in src already */
+  rc = sl_cell_scalar_solve(&p->cs, &t, e, d);
+  if (rc) return sl_diag_prefix(d, rc, "pipe: the epsilon equation");
+  for (int i = 0; i < n; ++i) {
+    p->k[i] = fmax(s[i], 1e-14);
+    p->eps[i] = fmax(e[i], 1e-14);
+  }
+  return 0;
+}

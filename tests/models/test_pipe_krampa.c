@@ -1,0 +1,245 @@
+/* Krampa (2009) Tables C.1-C.7 (configs/data/krampa_2009_tables_c.csv): the
+ * measured manometric pressure gradients of 0.5 mm glass beads in the 53.2 mm
+ * vertical loop, every row in up-flow and down-flow with the fully developed
+ * pipe model (configs/vertical_pipe.ini: k-epsilon and the log law, Gidaspow
+ * drag, the solids' eddy viscosity and Lun et al.'s kinetic viscosity, free
+ * slip of the solids at the wall), water properties from each row's
+ * temperature (density: Kell 1975, J. Chem. Eng. Data 20:97; viscosity:
+ * Vogel's equation, mu = 2.414e-5 10^(247.8/(T - 140)) Pa s), the nominal
+ * solids fraction as the section mean in both sections.
+ *
+ * One wall roughness is calibrated on the 5 % table (C.1) alone: the k_s of
+ * the log law that minimises the squared relative errors of its average
+ * gradients (golden section in log k_s). The 5 % table is the one the thesis
+ * says equals water, 12-24 % above a smooth pipe. Then every table is run
+ * with it. Two variants of the solids stress, each calibrated on its own:
+ * Krampa's model B as configs/vertical_pipe.ini gives it (the solids' eddy
+ * viscosity and Lun et al.'s kinetic viscosity; the solids' k_s-eps_s of his
+ * model is the dispersed phase's zero-equation model here) and his model A
+ * (no kinetic theory; Bouillard's solids pressure, gidaspow_elastic with G0 =
+ * 1 Pa, C = 600, phi_max = 0.63; mu_s = 1e-8 Pa s). Asserted for both, with
+ * the targets of the thesis's digest: the
+ * calibration's own table has every average within 10 % at V >= 2.5 m/s and
+ * 20 % below; in every other table (25-45 %, not used in the fit) up-flow
+ * and down-flow are each within 10 % of their difference; every run
+ * converges. The averages of the 25-45 % tables are printed (and recorded in
+ * docs/pipe.md) rather than asserted: the model misses them at low velocity,
+ * by up to 70 % at 45 %, as Krampa's CFX-4 models missed above about 10 %.
+ * The predictions go to krampa_tables_c_predicted.csv. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/io/output.h"
+#include "sluice/sluice.h"
+#include "testing.h"
+
+enum { MAX_ROWS = 128 };
+typedef struct row {
+  char table[8];
+  double c, q, down, up, t, avg, v;
+  double p_up, p_down, us; /* predicted manometric gradients (kPa/m), the up-flow's mean solids velocity */
+} row;
+
+static row rows[MAX_ROWS];
+static int n_rows;
+static char scene_b[8192], scene_a[8192];
+static const char *scene = scene_b;
+static long runs, failures;
+
+static int read_file(const char *rel, char *buf, size_t cap) {
+  const char *src = getenv("SLUICE_SOURCE_DIR");
+  char path[4096];
+  snprintf(path, sizeof path, "%s/%s", src ? src : ".", rel);
+  FILE *f = fopen(path, "rb");
+  size_t n = f ? fread(buf, 1, cap - 1, f) : 0;
+  if (f) fclose(f);
+  buf[n] = '\0';
+  CHECK_MSG(n > 0, "cannot read %s", path);
+  return n > 0 ? 0 : 1;
+}
+
+static int load(void) {
+  static char csv[1 << 16];
+  if (read_file("configs/vertical_pipe.ini", scene_b, sizeof scene_b) ||
+      read_file("configs/data/krampa_2009_tables_c.csv", csv, sizeof csv))
+    return 1;
+  for (char *line = strtok(csv, "\n"); line; line = strtok(NULL, "\n")) {
+    if (line[0] == '#' || strncmp(line, "table", 5) == 0) continue;
+    row *r = &rows[n_rows];
+    if (n_rows < MAX_ROWS && sscanf(line, "%7[^,],%lf,%lf,%lf,%lf,%lf,%lf,%lf", r->table, &r->c, &r->q, &r->down,
+                                    &r->up, &r->t, &r->avg, &r->v) == 8)
+      ++n_rows;
+  }
+  CHECK_MSG(n_rows == 76, "%d rows read (Tables C.1-C.7 have 76)", n_rows);
+  /* model A: the scene without the kinetic theory, Bouillard's solids pressure and a constant solids viscosity */
+  char *gran = strstr(scene_b, "\n[closure.granular]");
+  CHECK_MSG(gran != NULL, "vertical_pipe.ini has no [closure.granular]");
+  if (!gran) return 1;
+  snprintf(scene_a, sizeof scene_a,
+           "%.*s\n[closure.solids_pressure]\nmodel = gidaspow_elastic\nmodulus_ref = 1\ncompaction = 600\n"
+           "phi_max = 0.63\n",
+           (int)(gran - scene_b), scene_b);
+  return n_rows == 76 ? 0 : 1;
+}
+
+/* Water at T (C): Kell (1975) density, Vogel's viscosity. */
+static double water_density(double T) {
+  return (999.83952 + 16.945176 * T - 7.9870401e-3 * T * T - 46.170461e-6 * pow(T, 3) + 105.56302e-9 * pow(T, 4) -
+          280.54253e-12 * pow(T, 5)) /
+         (1.0 + 16.879850e-3 * T);
+}
+static double water_viscosity(double T) { return 2.414e-5 * pow(10.0, 247.8 / (T + 273.15 - 140.0)); }
+
+static double scalar(const char *out, const char *name) {
+  double v = NAN, t;
+  sl_diag d = {{0}};
+  if (sl_output_read_scalar(out, name, INFINITY, &v, &t, &d)) CHECK_MSG(0, "%s: %s", out, d.msg);
+  return v;
+}
+
+/* One row in one direction: the manometric gradient in kPa/m (NaN when the run fails). */
+static double run_row(const row *r, int down, double ks, double *us) {
+  char s[6][80];
+  snprintf(s[0], 80, "fluid.density=%.10g", water_density(r->t));
+  snprintf(s[1], 80, "fluid.viscosity=%.10g", water_viscosity(r->t));
+  snprintf(s[2], 80, "pipe.bulk_velocity=%.10g", r->v);
+  snprintf(s[3], 80, "pipe.solids_fraction=%.10g", r->c);
+  snprintf(s[4], 80, "flow.gravity=%s", down ? "9.81" : "-9.81");
+  snprintf(s[5], 80, "closure.wall_stress.fluid.roughness=%.10g", ks);
+  const char *sets[] = {s[0], s[1], s[2], s[3], s[4], s[5], scene == scene_a ? "solid.viscosity=1e-8" : NULL, NULL};
+  sluice *sl = NULL;
+  sluice_error e = {0, ""};
+  sluice_open_opts oo = {.sets = sets};
+  sluice_run_opts ro = {.output = "pipe_krampa.h5", .version = "test"};
+  sluice_summary sum;
+  int rc = sluice_open_text(scene, strlen(scene), "vertical_pipe.ini", &oo, &sl, &e);
+  if (!rc) rc = sluice_run(sl, &ro, &sum, &e);
+  sluice_close(sl);
+  ++runs;
+  if (rc) {
+    ++failures;
+    printf("  %s V = %.2f %s: %s\n", r->table, r->v, down ? "down" : "up", e.msg);
+    return NAN;
+  }
+  if (us) *us = scalar("pipe_krampa.h5", "solids_mean_velocity");
+  return 1e-3 * scalar("pipe_krampa.h5", "manometric_gradient");
+}
+
+static void run_rows(const char *table, double ks) {
+  for (int i = 0; i < n_rows; ++i) {
+    if (table && strcmp(rows[i].table, table) != 0) continue;
+    rows[i].p_up = run_row(&rows[i], 0, ks, &rows[i].us);
+    rows[i].p_down = run_row(&rows[i], 1, ks, NULL);
+  }
+}
+
+/* Sum of squared relative errors of the averages of a table. */
+static double misfit(const char *table, double ks) {
+  run_rows(table, ks);
+  double s = 0.0;
+  for (int i = 0; i < n_rows; ++i)
+    if (strcmp(rows[i].table, table) == 0) {
+      double e = 0.5 * (rows[i].p_up + rows[i].p_down) / rows[i].avg - 1.0;
+      s += e * e;
+    }
+  return s;
+}
+
+/* Golden section in log10 k_s over [-7, -3.5]. */
+static double calibrate(void) {
+  const double gr = 0.5 * (sqrt(5.0) - 1.0);
+  double a = -7.0, b = -3.5, x1 = b - gr * (b - a), x2 = a + gr * (b - a);
+  double f1 = misfit("C.1", pow(10.0, x1)), f2 = misfit("C.1", pow(10.0, x2));
+  for (int it = 0; it < 16; ++it) {
+    if (f1 < f2) b = x2, x2 = x1, f2 = f1, x1 = b - gr * (b - a), f1 = misfit("C.1", pow(10.0, x1));
+    else a = x1, x1 = x2, f1 = f2, x2 = a + gr * (b - a), f2 = misfit("C.1", pow(10.0, x2));
+  }
+  return pow(10.0, 0.5 * (a + b));
+}
+
+typedef struct score {
+  int n, n_avg_ok, n_ud_ok;
+  double mean_avg, worst_avg, worst_ud, mean_up, mean_down;
+} score;
+
+static score table_score(const char *table) {
+  score s = {0};
+  for (int i = 0; i < n_rows; ++i) {
+    const row *r = &rows[i];
+    if (strcmp(r->table, table) != 0) continue;
+    double avg = 0.5 * (r->p_up + r->p_down), ea = avg / r->avg - 1.0, diff = r->up - r->down;
+    double eu = (r->p_up - r->up) / diff, ed = (r->p_down - r->down) / diff;
+    double lim = r->v >= 2.5 ? 0.10 : 0.20;
+    ++s.n;
+    s.n_avg_ok += fabs(ea) <= lim, s.n_ud_ok += fabs(eu) <= 0.10 && fabs(ed) <= 0.10;
+    s.mean_avg += ea / 1.0, s.worst_avg = fabs(ea) > fabs(s.worst_avg) ? ea : s.worst_avg;
+    s.worst_ud = fmax(s.worst_ud, fmax(fabs(eu), fabs(ed)));
+    s.mean_up += eu, s.mean_down += ed;
+  }
+  if (s.n) s.mean_avg /= s.n, s.mean_up /= s.n, s.mean_down /= s.n;
+  return s;
+}
+
+/* Calibrates, runs every row, writes the CSV, prints the table; returns the counts asserted. */
+static void model(const char *label, const char *csv, int assert_targets) {
+  runs = 0, failures = 0;
+  double ks = calibrate();
+  printf("%s: roughness calibrated on Table C.1 (5 %%) alone: k_s = %.3g m (%.3g um)\n", label, ks, 1e6 * ks);
+  CHECK_MSG(ks > 1.1e-7 && ks < 3.0e-4, "k_s = %g m at the end of the search interval", ks);
+  long fit_runs = runs;
+  failures = 0;
+  run_rows(NULL, ks);
+  printf("%ld runs in the fit, %ld with every row (%ld failed)\n", fit_runs, runs - fit_runs, failures);
+  CHECK_MSG(failures == 0, "%ld runs failed", failures);
+  FILE *f = fopen(csv, "w");
+  if (f) {
+    fprintf(f,
+            "table,c,v,t,up,down,avg,up_model,down_model,avg_model,avg_error,up_error_of_difference,"
+            "down_error_of_difference,solids_mean_velocity_up\n");
+    for (int i = 0; i < n_rows; ++i) {
+      const row *r = &rows[i];
+      double avg = 0.5 * (r->p_up + r->p_down), diff = r->up - r->down;
+      fprintf(f, "%s,%.2f,%.2f,%.1f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", r->table, r->c, r->v, r->t,
+              r->up, r->down, r->avg, r->p_up, r->p_down, avg, avg / r->avg - 1.0, (r->p_up - r->up) / diff,
+              (r->p_down - r->down) / diff, r->us);
+    }
+    fclose(f);
+  }
+  printf(
+      "| table | C | rows | average: mean error | worst | rows within target | up, down: mean error / (up - down) | "
+      "worst | rows within 10 %% |\n|---|---|---|---|---|---|---|---|---|\n");
+  const char *tables[7] = {"C.1", "C.2", "C.3", "C.4", "C.5", "C.6", "C.7"};
+  const int pct[7] = {5, 25, 30, 35, 40, 45, 45};
+  for (int k = 0; k < 7; ++k) {
+    score s = table_score(tables[k]);
+    printf("| %s | %d %% | %d | %+.1f %% | %+.1f %% | %d of %d | %+.1f %%, %+.1f %% | %.1f %% | %d of %d |\n",
+           tables[k], pct[k], s.n, 100.0 * s.mean_avg, 100.0 * s.worst_avg, s.n_avg_ok, s.n, 100.0 * s.mean_up,
+           100.0 * s.mean_down, 100.0 * s.worst_ud, s.n_ud_ok, s.n);
+    if (!assert_targets) continue;
+    if (k == 0) CHECK_MSG(s.n_avg_ok == s.n, "%s: %d of %d averages within the target", tables[k], s.n_avg_ok, s.n);
+    else
+      CHECK_MSG(s.n_ud_ok == s.n, "%s: %d of %d up and down within 10 %% of their difference", tables[k], s.n_ud_ok,
+                s.n);
+  }
+  /* the L-probe's mean solids velocities, 25 %, up-flow (Krampa 2009 section 3.4): 1.55 m/s at V = 2, 3.91 at V = 4 */
+  const double vv[2] = {2.0, 4.0}, meas[2] = {1.55, 3.91};
+  for (int k = 0; k < 2; ++k) {
+    row r = {.c = 0.25, .t = 22.8, .v = vv[k]};
+    double us = NAN;
+    run_row(&r, 0, ks, &us);
+    printf("25 %%, up-flow, V = %.0f m/s: mean solids velocity %.3f m/s, L-probe %.2f (%+.1f %%)\n", vv[k], us, meas[k],
+           100.0 * (us / meas[k] - 1.0));
+  }
+}
+
+int main(void) {
+  if (load()) return sl_test_summary();
+  scene = scene_b;
+  model("model B (vertical_pipe.ini: the kinetic viscosity of Lun et al.)", "krampa_tables_c_predicted.csv", 1);
+  scene = scene_a;
+  model("model A (no kinetic theory: Bouillard's solids pressure, mu_s = 1e-8 Pa s)",
+        "krampa_tables_c_predicted_model_a.csv", 1);
+  return sl_test_summary();
+}

@@ -1,0 +1,276 @@
+/* The two-fluid pipe (core/models/pipe) with solids, on configs/vertical_pipe.ini
+ * (Krampa 2009 case E1: 0.5 mm glass beads, 25 %, V = 3.02 m/s):
+ *  - what the discrete equations hold exactly: the bulk velocity, the solids
+ *    inventory, and the mixture's momentum, -dP/dz = 4 (tau_fw + tau_sw)/D -
+ *    rho_m g_z (Krampa 2009 eq 2.1; the faces' stresses telescope, the drag
+ *    cancels), in up-flow and down-flow;
+ *  - without a radial force on the solids (no kinetic theory, no solids
+ *    pressure) turbulent dispersion alone leaves phi uniform, exactly;
+ *  - then, with uniform phi and the solids' eddy viscosity rho_s nu_t
+ *    (sigma = 1), u_s = u_f - s with a uniform slip solves both momentum
+ *    equations away from the wall (the molecular viscosity aside): the drag
+ *    carries the particles' excess weight in the pressure gradient,
+ *      K s = -c_s (rho_s - rho_f) G / rho_f / (1 + c_s rho_s/(c_f rho_f)),
+ *    checked at the axis with Stokes drag (K = 18 mu phi/d^2) within 1 %;
+ *  - with the kinetic theory's pressure (Lun et al. 1984; kinetic_pressure =
+ *    true), the granular temperature is highest at the wall and its pressure
+ *    drives solids from the wall: phi at the wall below the mean; with
+ *    Simonin's dispersivity (t_fs k_fs/3: the crossing trajectories shorten
+ *    t_fs and the particles' inertia lowers k_fs below 2k, so D_fs < nu_t for
+ *    0.5 mm beads) the depletion is deeper;
+ *  - no-slip solids without the kinetic theory: the solids' eddy viscosity
+ *    is bridged across the wall cell by the fluid's wall function, so
+ *    tau_sw/tau_fw = (c_s rho_s/(sigma rho_f)) u_s/u_f of the wall cell, to
+ *    the steady solve's tolerance (1e-8);
+ *  - stability: 2.4 mm sand at 30 % (up-flow at 3.02 m/s, down-flow at 1
+ *    m/s) and 0.5 mm beads at phi_max - 0.01 = 0.62 (up at 2 m/s, down at 1
+ *    m/s) converge, with a finite state and the mixture's momentum held;
+ *  - a solids fraction above phi_max - 0.01 is refused before the run. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/io/output.h"
+#include "sluice/sluice.h"
+#include "testing.h"
+
+static char scene[8192];
+
+static int load_scene(void) {
+  const char *src = getenv("SLUICE_SOURCE_DIR");
+  char path[4096];
+  snprintf(path, sizeof path, "%s/configs/vertical_pipe.ini", src ? src : ".");
+  FILE *f = fopen(path, "rb");
+  size_t n = f ? fread(scene, 1, sizeof scene - 1, f) : 0;
+  if (f) fclose(f);
+  scene[n] = '\0';
+  CHECK_MSG(n > 0, "cannot read %s", path);
+  return n > 0 ? 0 : 1;
+}
+
+/* The scene with one section's text replaced (NULL: as it is). */
+static int run(const char *section, const char *replacement, const char *const *sets, const char *out,
+               sluice_error *e) {
+  static char text[16384];
+  if (section) {
+    char head[64];
+    snprintf(head, sizeof head, "[%s]", section);
+    char *a = strstr(scene, head), *b = a ? strstr(a + 1, "\n[") : NULL;
+    if (!a) return snprintf(e->msg, sizeof e->msg, "no %s", head), 2;
+    snprintf(text, sizeof text, "%.*s%s%s", (int)(a - scene), scene, replacement, b ? b : "");
+  } else {
+    snprintf(text, sizeof text, "%s", scene);
+  }
+  sluice *s = NULL;
+  sluice_open_opts oo = {.sets = sets};
+  sluice_run_opts ro = {.output = out, .version = "test"};
+  sluice_summary sum;
+  int rc = sluice_open_text(text, strlen(text), "vertical_pipe.ini", &oo, &s, e);
+  if (!rc) rc = sluice_run(s, &ro, &sum, e);
+  sluice_close(s);
+  return rc;
+}
+
+static double scalar(const char *out, const char *name) {
+  double v = NAN, t;
+  sl_diag d = {{0}};
+  int rc = sl_output_read_scalar(out, name, INFINITY, &v, &t, &d);
+  CHECK_MSG(rc == 0, "%s: %s", out, d.msg);
+  return v;
+}
+
+/* A cell field with the cells' radii, sorted from the axis out (n cells). */
+typedef struct profile {
+  int n;
+  double r[512], v[512], lo[512], hi[512]; /* centre, faces, value */
+} profile;
+
+static int read_profile(const char *out, const char *name, profile *p) {
+  sl_output_field f;
+  sl_output_mesh m;
+  sl_diag d = {{0}};
+  if (sl_output_read_field(out, name, INFINITY, &f, &d) || sl_output_read_mesh(out, &m, &d)) {
+    CHECK_MSG(0, "%s: %s", out, d.msg);
+    return 1;
+  }
+  p->n = f.n < 512 ? f.n : 512;
+  for (int c = 0; c < p->n; ++c) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (int k = 0; k < m.nodes_per_cell; ++k) {
+      double x = m.coords[3 * m.cells[c * m.nodes_per_cell + k]];
+      lo = fmin(lo, x), hi = fmax(hi, x);
+    }
+    p->r[c] = 0.5 * (lo + hi), p->lo[c] = lo, p->hi[c] = hi, p->v[c] = f.values[c];
+  }
+  for (int i = 1; i < p->n; ++i) /* insertion sort by r */
+    for (int j = i; j > 0 && p->r[j] < p->r[j - 1]; --j) {
+      double *a[4] = {p->r, p->v, p->lo, p->hi};
+      for (int k = 0; k < 4; ++k) {
+        double t = a[k][j];
+        a[k][j] = a[k][j - 1], a[k][j - 1] = t;
+      }
+    }
+  sl_output_field_free(&f);
+  sl_output_mesh_free(&m);
+  return 0;
+}
+
+static const double D = 0.0532, rho_f = 997.56, rho_s = 2500.0, g = 9.81;
+
+static void balances(void) {
+  const char *dirs[2] = {"flow.gravity=-9.81", "flow.gravity=9.81"};
+  for (int k = 0; k < 2; ++k) {
+    const char *sets[] = {dirs[k], NULL};
+    sluice_error e = {0, ""};
+    if (run(NULL, NULL, sets, "pipe_slurry.h5", &e)) {
+      CHECK_MSG(0, "%s: %s", dirs[k], e.msg);
+      continue;
+    }
+    double gz = k ? g : -g, phi = scalar("pipe_slurry.h5", "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f;
+    double tau =
+        scalar("pipe_slurry.h5", "wall_shear_stress_fluid") + scalar("pipe_slurry.h5", "wall_shear_stress_solid");
+    double dp = scalar("pipe_slurry.h5", "pressure_gradient"), bal = 4.0 * tau / D - rho_m * gz;
+    profile pf, ps, pp;
+    if (read_profile("pipe_slurry.h5", "velocity_fluid", &pf) ||
+        read_profile("pipe_slurry.h5", "velocity_solid", &ps) || read_profile("pipe_slurry.h5", "phi", &pp))
+      continue;
+    /* the bulk velocity over the cells' areas r dr */
+    double q = 0.0, A = 0.0;
+    for (int i = 0; i < pf.n; ++i) {
+      double w = 0.5 * (pf.hi[i] * pf.hi[i] - pf.lo[i] * pf.lo[i]);
+      q += w * ((1.0 - pp.v[i]) * pf.v[i] + pp.v[i] * ps.v[i]), A += w;
+    }
+    printf("%s: -dP/dz %.4f Pa/m, 4 tau_w/D - rho_m g_z %.4f (%.2e), V %.9f, phi_mean %.12f, manometric %.2f\n",
+           k ? "down-flow" : "up-flow", dp, bal, dp / bal - 1.0, q / A, phi,
+           scalar("pipe_slurry.h5", "manometric_gradient"));
+    CHECK_MSG(fabs(dp / bal - 1.0) < 1e-6, "the mixture momentum: %.9g against %.9g", dp, bal);
+    CHECK_MSG(fabs(q / A - 3.02) < 1e-6, "the bulk velocity %.9g", q / A);
+    CHECK_MSG(fabs(phi - 0.25) < 1e-12, "the solids inventory %.15g", phi);
+  }
+}
+
+static void dispersion_alone(void) {
+  /* Stokes drag, 0.1 mm: no kinetic theory, so no radial force on the solids */
+  const char *sets[] = {"solid.diameter=1e-4", "closure.drag.model=stokes", NULL};
+  sluice_error e = {0, ""};
+  if (run("closure.granular", "", sets, "pipe_disp.h5", &e)) {
+    CHECK_MSG(0, "%s", e.msg);
+    return;
+  }
+  profile pf, ps, pp;
+  if (read_profile("pipe_disp.h5", "phi", &pp) || read_profile("pipe_disp.h5", "velocity_fluid", &pf) ||
+      read_profile("pipe_disp.h5", "velocity_solid", &ps))
+    return;
+  double dev = 0.0;
+  for (int i = 0; i < pp.n; ++i) dev = fmax(dev, fabs(pp.v[i] - 0.25));
+  double G = -scalar("pipe_disp.h5", "pressure_gradient"), cs = 0.25, cf = 0.75, mu = 0.9347e-3, d = 1e-4;
+  double K = 18.0 * mu * cs / (d * d), s = -cs * (rho_s - rho_f) * G / rho_f / (1.0 + cs * rho_s / (cf * rho_f)) / K;
+  double s_axis = pf.v[0] - ps.v[0];
+  printf(
+      "dispersion alone: max |phi - 0.25| = %.2e; slip at the axis %.6f m/s, uniform-slip solution %.6f (%+.3f %%)\n",
+      dev, s_axis, s, 100.0 * (s_axis / s - 1.0));
+  CHECK_MSG(dev < 1e-12, "phi is not uniform: %.3e", dev);
+  CHECK_MSG(fabs(s_axis / s - 1.0) < 0.01, "slip %.6g against %.6g", s_axis, s);
+}
+
+static void kinetic_theory(void) {
+  const char *sets[] = {"pipe.kinetic_pressure=true", NULL};
+  sluice_error e = {0, ""};
+  if (run(NULL, NULL, sets, "pipe_kt.h5", &e)) {
+    CHECK_MSG(0, "%s", e.msg);
+    return;
+  }
+  profile pp, pt;
+  if (read_profile("pipe_kt.h5", "phi", &pp) || read_profile("pipe_kt.h5", "theta", &pt)) return;
+  int n = pp.n;
+  printf("kinetic theory: phi axis %.4f, wall cell %.4f; theta axis %.3e, wall cell %.3e m^2/s^2\n", pp.v[0],
+         pp.v[n - 1], pt.v[0], pt.v[n - 1]);
+  CHECK_MSG(pt.v[n - 1] > 10.0 * pt.v[0], "theta is not highest at the wall");
+  CHECK_MSG(pp.v[n - 1] < 0.25 && pp.v[0] > 0.25, "the solids are not driven from the wall");
+  const char *sim[] = {"pipe.kinetic_pressure=true", "pipe.dispersion=simonin", NULL};
+  profile ps;
+  if (run(NULL, NULL, sim, "pipe_kt_simonin.h5", &e) || read_profile("pipe_kt_simonin.h5", "phi", &ps)) {
+    CHECK_MSG(0, "simonin: %s", e.msg);
+    return;
+  }
+  printf("with Simonin's dispersivity: phi axis %.4f, wall cell %.4f\n", ps.v[0], ps.v[n - 1]);
+  CHECK_MSG(ps.v[n - 1] < pp.v[n - 1], "Simonin's dispersion: phi at the wall %.4f, gradient form %.4f", ps.v[n - 1],
+            pp.v[n - 1]);
+}
+
+static void no_slip_bridge(void) {
+  const char *sets[] = {"pipe.solids_wall=no_slip", NULL};
+  sluice_error e = {0, ""};
+  if (run("closure.granular", "", sets, "pipe_ns.h5", &e)) {
+    CHECK_MSG(0, "%s", e.msg);
+    return;
+  }
+  profile pf, ps, pp;
+  if (read_profile("pipe_ns.h5", "velocity_fluid", &pf) || read_profile("pipe_ns.h5", "velocity_solid", &ps) ||
+      read_profile("pipe_ns.h5", "phi", &pp))
+    return;
+  int w = pf.n - 1;
+  double tf = scalar("pipe_ns.h5", "wall_shear_stress_fluid"), ts = scalar("pipe_ns.h5", "wall_shear_stress_solid");
+  double ratio = pp.v[w] * rho_s / rho_f * ps.v[w] / pf.v[w];
+  printf("no-slip solids: tau_fw %.4f Pa, tau_sw %.4f Pa, ratio %.6f against (c_s rho_s/rho_f) u_s/u_f %.6f\n", tf, ts,
+         ts / tf, ratio);
+  CHECK_MSG(fabs(ts / tf / ratio - 1.0) < 1e-7, "tau_sw/tau_fw %.9g against %.9g", ts / tf, ratio);
+}
+
+static void stability(void) {
+  static const struct {
+    const char *name, *sets[6];
+    double gz, rho_s;
+  } cases[4] = {
+      {"2.4 mm sand, 30 %, up, 3.02 m/s",
+       {"solid.diameter=2.4e-3", "solid.density=2650", "pipe.solids_fraction=0.3", "flow.gravity=-9.81", NULL},
+       -9.81,
+       2650.0},
+      {"2.4 mm sand, 30 %, down, 1 m/s",
+       {"solid.diameter=2.4e-3", "solid.density=2650", "pipe.solids_fraction=0.3", "flow.gravity=9.81",
+        "pipe.bulk_velocity=1", NULL},
+       9.81,
+       2650.0},
+      {"0.5 mm, 62 %, up, 2 m/s",
+       {"pipe.solids_fraction=0.62", "pipe.bulk_velocity=2", "flow.gravity=-9.81", NULL},
+       -9.81,
+       2500.0},
+      {"0.5 mm, 62 %, down, 1 m/s",
+       {"pipe.solids_fraction=0.62", "pipe.bulk_velocity=1", "flow.gravity=9.81", NULL},
+       9.81,
+       2500.0}};
+  for (int k = 0; k < 4; ++k) {
+    sluice_error e = {0, ""};
+    if (run(NULL, NULL, cases[k].sets, "pipe_stab.h5", &e)) {
+      CHECK_MSG(0, "%s: %s", cases[k].name, e.msg);
+      continue;
+    }
+    double it = scalar("pipe_stab.h5", "iterations"), dp = scalar("pipe_stab.h5", "pressure_gradient");
+    double phi = scalar("pipe_stab.h5", "phi_mean"), rho_m = phi * cases[k].rho_s + (1.0 - phi) * rho_f;
+    double tau = scalar("pipe_stab.h5", "wall_shear_stress_fluid") + scalar("pipe_stab.h5", "wall_shear_stress_solid");
+    double bal = 4.0 * tau / D - rho_m * cases[k].gz;
+    printf("%s: converged in %.0f iterations, -dP/dz %.2f Pa/m (balance %.1e)\n", cases[k].name, it, dp,
+           dp / bal - 1.0);
+    CHECK_MSG(isfinite(dp) && fabs(dp / bal - 1.0) < 1e-6, "%s: -dP/dz %g against %g", cases[k].name, dp, bal);
+  }
+}
+
+static void refused(void) {
+  const char *sets[] = {"pipe.solids_fraction=0.625", NULL};
+  sluice_error e = {0, ""};
+  int rc = run(NULL, NULL, sets, "pipe_bad.h5", &e);
+  printf("solids_fraction = 0.625: %s\n", e.msg);
+  CHECK_MSG(rc == 2 && strstr(e.msg, "solids_fraction") && strstr(e.msg, "phi_max - 0.01"), "rc %d: %s", rc, e.msg);
+}
+
+int main(void) {
+  if (load_scene()) return sl_test_summary();
+  balances();
+  dispersion_alone();
+  kinetic_theory();
+  no_slip_bridge();
+  stability();
+  refused();
+  return sl_test_summary();
+}

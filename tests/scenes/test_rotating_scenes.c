@@ -1,0 +1,454 @@
+/* The rotating frames of the flow engine against exact solutions:
+ *  - frame: solid-body rotation at rest in the rotating frame (a cylinder
+ *    with an open side, axisymmetric, and a closed disc, planar): rest and the
+ *    pressure rho Omega^2 r^2 / 2 to round-off (the centrifugal force of the
+ *    fluid's density is taken by the pressure exactly, sl_flow_opts
+ *    centrifugal_density); plane Poiseuille flow in a frame rotating about the axis normal to
+ *    the plane (tests/scenes/rotating_poiseuille.ini): the velocity is the
+ *    inertial frame's, the pressure carries the Coriolis and centrifugal
+ *    forces exactly, p = -2 x + (x^2 + y^2)/2 - 2 (y - y^3/3); its error at
+ *    interior points, and the observed order over three meshes (Q1 pressure:
+ *    2 expected);
+ *  - ekman: the rotating channel of Greenspan's spectrometer, rotation normal
+ *    to the walls (configs/ekman_channel*.ini), against Nigam (1999) eq 4.142
+ *    (U = Re W, V = -Im W) and the flux of 4.144 at E1 = 1, 0.01 and 100 (the
+ *    Poiseuille limit) to 1e-3 of max|W|, the pressure drop -G ln 2 + the
+ *    centrifugal 3/2 to 1e-3 of G ln 2, and the observed order of the
+ *    profiles' error at E1 = 1 over three meshes (Q2: 3 or more);
+ *  - settling: heavy particles in a disc turning about its centre settle
+ *    along the centrifugal acceleration; inside, the uniform suspension thins
+ *    as d phi/dt = -2 u_t f(phi) phi (tests/scenes/rotating_settling.ini);
+ *  - waves: the exact initial state of Nigam's (1999) travelling waves in a
+ *    rotating cylinder (eqs 4.191-4.193, m = n = 1) written by
+ *    configs/rotating_waves.ini through the expression language's Bessel
+ *    functions: psi(0) = 0.03946, max|psi| = 0.0459, alpha in [0.1235,
+ *    0.2000], omega(0.6, 0) = -0.480 of the thesis to 1e-3, the velocity
+ *    against the state coded here in C, and the phase of the m = 1 pattern;
+ *  - waves_inviscid (long): with E = 1e-7 the pattern turns at c relative to
+ *    the container, within 5 % to t = 8 (the lag grows to 11 % at t = 20). */
+#include <complex.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/config/special.h"
+#include "core/io/output.h"
+#include "core/io/sample.h"
+#include "scene_runner.h"
+#include "testing.h"
+
+static char configs[4096];
+SCENE_RUNNERS()
+
+static void set_configs(const char *sub) {
+  const char *src = getenv("SLUICE_SOURCE_DIR");
+  snprintf(configs, sizeof configs, "%s/%s", src ? src : ".", sub);
+}
+
+/* All components of `field` at n points into v[3 i + c]. */
+static int sample(const char *file, const char *field, int n, const double *xy, double *v) {
+  sl_sample s;
+  sl_diag d = {{0}};
+  int rc = sl_sample_points(file, field, INFINITY, n, xy, &s, &d);
+  CHECK_MSG(rc == 0, "%s: %s", file, d.msg);
+  if (rc) return rc;
+  for (int i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c) v[3 * i + c] = c < s.components ? s.values[(size_t)i * s.components + c] : 0.0;
+  sl_sample_free(&s);
+  return 0;
+}
+
+/* ---- plane Poiseuille flow in the rotating frame ------------------------------------------------------------ */
+
+static double poiseuille_p(double x, double y) { return -2.0 * x + 0.5 * (x * x + y * y) - 2.0 * (y - y * y * y / 3); }
+
+/* The largest error of p - p(1, 0) and of u at interior points with `cells` per side. */
+static int rotating_poiseuille(int cells, double *ep, double *eu) {
+  char set[64], out[64];
+  snprintf(set, sizeof set, "mesh.cells=%d,%d", cells, cells);
+  snprintf(out, sizeof out, "rotating_poiseuille_%d.h5", cells);
+  const char *sets[] = {set, NULL};
+  if (run_ok("rotating_poiseuille", NULL, NULL, sets, out)) return 1;
+  enum { N = 25 };
+  double xy[2 * (N + 1)], p[3 * (N + 1)], u[3 * (N + 1)];
+  for (int i = 0; i < N; ++i) xy[2 * i] = 0.25 + 1.5 * (i % 5) / 4.0, xy[2 * i + 1] = -0.8 + 1.6 * (i / 5) / 4.0;
+  xy[2 * N] = 1.0, xy[2 * N + 1] = 0.0;
+  if (sample(out, "pressure", N + 1, xy, p) || sample(out, "velocity", N + 1, xy, u)) return 1;
+  *ep = *eu = 0.0;
+  for (int i = 0; i < N; ++i) {
+    double x = xy[2 * i], y = xy[2 * i + 1];
+    double ex = poiseuille_p(x, y) - poiseuille_p(1.0, 0.0);
+    *ep = fmax(*ep, fabs(p[3 * i] - p[3 * N] - ex));
+    *eu = fmax(*eu, hypot(u[3 * i] - (1.0 - y * y), u[3 * i + 1]));
+  }
+  return 0;
+}
+
+/* The largest |u| and |p - p_exact| over the nodes of out (p_exact of r = |x| or x[0], up to a constant when
+ * closed: then p - p(node 0) against p_exact - p_exact(node 0)). */
+static int rest_errors(const char *out, int axi, double rho_omega2, int closed, double *eu, double *ep) {
+  sl_output_mesh m;
+  sl_output_field u, p;
+  sl_diag d = {{0}};
+  if (sl_output_read_mesh(out, &m, &d)) {
+    CHECK_MSG(0, "%s", d.msg);
+    return 1;
+  }
+  if (sl_output_read_field(out, "velocity", INFINITY, &u, &d) || sl_output_read_field(out, "pressure", INFINITY, &p, &d)) {
+    sl_output_mesh_free(&m);
+    CHECK_MSG(0, "%s", d.msg);
+    return 1;
+  }
+  *eu = *ep = 0.0;
+  /* the pressure at the cells' corners (their first four nodes; the others carry its Q1 interpolant) */
+  int i0 = m.cells[0];
+  double x0 = m.coords[3 * i0], y0_ = m.coords[3 * i0 + 1];
+  double p0 = closed ? p.values[i0] : 0.0, e0 = closed ? 0.5 * rho_omega2 * (axi ? x0 * x0 : x0 * x0 + y0_ * y0_) : 0.0;
+  for (int c = 0; c < m.n_cells; ++c)
+    for (int k = 0; k < 4; ++k) {
+      int i = m.cells[(size_t)c * m.nodes_per_cell + k];
+      double x = m.coords[3 * i], y = m.coords[3 * i + 1], r2 = axi ? x * x : x * x + y * y;
+      double pe = 0.5 * rho_omega2 * (r2 - (closed ? 0.0 : 1.0));
+      *ep = fmax(*ep, fabs(p.values[i] - p0 - (pe - e0)));
+    }
+  for (int i = 0; i < m.n_vertices; ++i)
+    for (int c = 0; c < 3; ++c) *eu = fmax(*eu, fabs(u.values[3 * i + c]));
+  if (axi) { /* the swirl beside the velocity */
+    sl_output_field_free(&u);
+    if (sl_output_read_field(out, "u_theta", INFINITY, &u, &d)) {
+      sl_output_mesh_free(&m);
+      sl_output_field_free(&p);
+      CHECK_MSG(0, "%s", d.msg);
+      return 1;
+    }
+    for (int i = 0; i < m.n_vertices; ++i) *eu = fmax(*eu, fabs(u.values[i]));
+  }
+  sl_output_mesh_free(&m);
+  sl_output_field_free(&u), sl_output_field_free(&p);
+  return 0;
+}
+
+static void frame(void) {
+  set_configs("tests/scenes");
+  /* solid-body rotation at rest in the frame, Omega = 10, rho = 2, R = 1: rest and p = rho Omega^2 (r^2 - 1)/2 */
+  double eu0, ep0;
+  if (run_ok("rotating_rest_axi", NULL, NULL, NULL, "rotating_rest_axi.h5") ||
+      rest_errors("rotating_rest_axi.h5", 1, 200.0, 0, &eu0, &ep0))
+    return;
+  printf("at rest in the rotating frame, axisymmetric, open side: |u| up to %.1e of Omega R, pressure error %.1e of "
+         "rho Omega^2 R^2\n", eu0 / 10.0, ep0 / 200.0);
+  CHECK_MSG(eu0 < 1e-12 * 10.0 && ep0 < 1e-12 * 200.0, "|u| %.2e, pressure error %.2e", eu0, ep0);
+  if (run_ok("rotating_rest_disc", NULL, NULL, NULL, "rotating_rest_disc.h5") ||
+      rest_errors("rotating_rest_disc.h5", 0, 200.0, 1, &eu0, &ep0))
+    return;
+  printf("at rest in the rotating frame, closed disc: |u| up to %.1e of Omega R, pressure error %.1e of "
+         "rho Omega^2 R^2\n", eu0 / 10.0, ep0 / 200.0);
+  CHECK_MSG(eu0 < 1e-12 * 10.0 && ep0 < 1e-12 * 200.0, "|u| %.2e, pressure error %.2e", eu0, ep0);
+  static const int cells[3] = {8, 16, 32};
+  double ep[3], eu[3];
+  for (int k = 0; k < 3; ++k)
+    if (rotating_poiseuille(cells[k], &ep[k], &eu[k])) return;
+  double op = log2(ep[1] / ep[2]), ou = log2(eu[1] / eu[2]);
+  printf("rotating Poiseuille: pressure error %.2e %.2e %.2e (of the Coriolis pressure 8/3 across), order %.2f;"
+         " velocity error %.2e %.2e %.2e, order %.2f\n",
+         ep[0], ep[1], ep[2], op, eu[0], eu[1], eu[2], ou);
+  /* the Coriolis pressure difference across the channel is 8/3, the centrifugal one along it 2 */
+  CHECK_MSG(ep[2] < 1e-3 * 8.0 / 3.0, "pressure error %.2e", ep[2]);
+  CHECK_MSG(op > 1.8, "pressure order %.2f", op);
+  CHECK_MSG(eu[2] < 1e-4 && (eu[2] < 1e-12 || ou > 2.5), "velocity error %.2e, order %.2f", eu[2], ou);
+}
+
+/* ---- the Ekman-Poiseuille channel ---------------------------------------------------------------------------- */
+
+/* Nigam (1999) eq 4.144 with sin(gamma) = 1: the pressure gradient G that carries the flux Q. */
+static double ekman_G(double Q, double E1) {
+  double a = 1.0 / sqrt(E1);
+  return Q * (cosh(2 * a) + cos(2 * a)) / (M_PI * sqrt(E1) * (sinh(2 * a) - sin(2 * a)));
+}
+
+/* Eq 4.142: W = U - i V. */
+static double complex ekman_W(double z, double E1, double G) {
+  double complex k = (1.0 - I) / sqrt(E1);
+  return I * G / 2.0 * (1.0 - ccosh(k * z) / ccosh(k));
+}
+
+typedef struct ekman_result {
+  double e_profile; /* max |U - Re W|, |V + Im W| at r = 1.5 over max |W| */
+  double e_flux;    /* Q / 0.195 - 1 */
+  double e_dp;      /* (p(2, 0) - p(1, 0) - exact) / (G ln 2) */
+} ekman_result;
+
+static int ekman(const char *scene, double E1, const char *cells, ekman_result *res) {
+  const double Q = 0.195, r = 1.5, G = ekman_G(Q, E1);
+  char out[96], set[64];
+  snprintf(out, sizeof out, "%s%s.h5", scene, cells ? cells : "");
+  snprintf(set, sizeof set, "mesh.cells=%s", cells ? cells : "");
+  const char *sets[] = {set, NULL};
+  if (run_ok(scene, NULL, NULL, cells ? sets : NULL, out)) return 1;
+  enum { N = 401 }; /* Simpson's rule across the channel */
+  static double xy[2 * N], v[3 * N], sw[3 * N];
+  for (int i = 0; i < N; ++i) xy[2 * i] = r, xy[2 * i + 1] = -1.0 + 2.0 * i / (N - 1);
+  /* axisymmetric output: velocity (u_r, u_z, 0), the swirl beside it */
+  if (sample(out, "velocity", N, xy, v) || sample(out, "u_theta", N, xy, sw)) return 1;
+  for (int i = 0; i < N; ++i) v[3 * i + 2] = sw[3 * i];
+  double e = 0.0, wmax = 0.0, q = 0.0;
+  for (int i = 0; i < N; ++i) {
+    double complex W = ekman_W(xy[2 * i + 1], E1, G);
+    wmax = fmax(wmax, cabs(W));
+    e = fmax(e, fmax(fabs(r * v[3 * i] - creal(W)), fabs(r * v[3 * i + 2] + cimag(W))));
+    q += (i == 0 || i == N - 1 ? 1.0 : i % 2 ? 4.0 : 2.0) * v[3 * i];
+  }
+  q *= 2.0 / (N - 1) / 3.0 * 2.0 * M_PI * r;
+  double pxy[4] = {1.0, 0.0, 2.0, 0.0}, p[6];
+  if (sample(out, "pressure", 2, pxy, p)) return 1;
+  res->e_profile = e / wmax;
+  res->e_flux = q / Q - 1.0;
+  res->e_dp = (p[3] - p[0] - (-G * log(2.0) + 1.5)) / (G * log(2.0));
+  printf("%s (E1 = %g, G = %.6f): profiles %.2e of max|W| = %.4f, flux %.6f (%+.1e), pressure drop %+.1e of G ln 2\n",
+         scene, E1, G, res->e_profile, wmax, q, res->e_flux, res->e_dp);
+  return 0;
+}
+
+static void ekman_channel(void) {
+  set_configs("configs");
+  static const struct {
+    const char *scene;
+    double E1;
+  } cases[] = {{"ekman_channel", 1.0}, {"ekman_channel_thin", 0.01}, {"ekman_channel_poiseuille", 100.0}};
+  for (int k = 0; k < 3; ++k) {
+    ekman_result r;
+    if (ekman(cases[k].scene, cases[k].E1, NULL, &r)) return;
+    CHECK_MSG(r.e_profile < 1e-3 && fabs(r.e_flux) < 1e-3 && fabs(r.e_dp) < 1e-3,
+              "%s: profiles %.2e, flux %.2e, pressure drop %.2e", cases[k].scene, r.e_profile, r.e_flux, r.e_dp);
+  }
+  /* E1 -> infinity: Poiseuille, G -> 3 Q E1 / (4 pi), within O(1/E1^2) */
+  double G = ekman_G(0.195, 100.0), Gp = 3.0 * 0.195 * 100.0 / (4.0 * M_PI);
+  CHECK_MSG(fabs(G / Gp - 1.0) < 1e-4, "G = %.8f against the Poiseuille %.8f", G, Gp);
+  /* the observed order at E1 = 1 */
+  static const char *const meshes[3] = {"3,6", "6,12", "12,24"};
+  double e[3];
+  for (int k = 0; k < 3; ++k) {
+    ekman_result r;
+    if (ekman("ekman_channel", 1.0, meshes[k], &r)) return;
+    e[k] = r.e_profile;
+  }
+  double o1 = log2(e[0] / e[1]), o2 = log2(e[1] / e[2]);
+  printf("ekman_channel: profile error %.2e %.2e %.2e, observed orders %.2f %.2f\n", e[0], e[1], e[2], o1, o2);
+  CHECK_MSG(o2 > 2.8, "observed order %.2f (Q2 velocity: 3 or more)", o2);
+}
+
+/* ---- centrifugal settling in the planar rotating frame --------------------------------------------------------- */
+
+/* Nigam's hindrance (1 - phi)^2 / mu_r, mu_r = (1 - phi/0.68)^(-2.5 * 0.68) (eq 2.36, Krieger). */
+static double nigam_f(double phi) { return (1 - phi) * (1 - phi) * pow(1 - phi / 0.68, 2.5 * 0.68); }
+
+/* tests/scenes/rotating_settling.ini: inside a uniform suspension in a disc turning about its centre the slip along
+ * Omega^2 r has the divergence 2 u_t f(phi) phi, so d phi/dt = -2 u_t f(phi) phi there (RK4 here), while the
+ * suspension empties outward. */
+static void settling(void) {
+  set_configs("tests/scenes");
+  if (run_ok("rotating_settling", NULL, NULL, NULL, "rotating_settling.h5")) return;
+  const double ut = 0.01;
+  double phi = 0.2, t = 0.0, worst = 0.0, drop = 0.0;
+  for (int k = 1; k <= 5; ++k) {
+    for (int i = 0; i < 1000; ++i, t += 1e-3) {
+      double h = 1e-3, k1 = -2 * ut * nigam_f(phi) * phi, p2 = phi + h / 2 * k1, k2 = -2 * ut * nigam_f(p2) * p2;
+      double p3 = phi + h / 2 * k2, k3 = -2 * ut * nigam_f(p3) * p3, p4 = phi + h * k3, k4 = -2 * ut * nigam_f(p4) * p4;
+      phi += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+    }
+    sl_sample s;
+    sl_diag d = {{0}};
+    double xy[2] = {0.01, 0.01};
+    if (sl_sample_points("rotating_settling.h5", "phi", (double)k, 1, xy, &s, &d)) {
+      CHECK_MSG(0, "%s", d.msg);
+      return;
+    }
+    worst = fmax(worst, fabs(s.values[0] - phi));
+    drop = 0.2 - phi;
+    printf("rotating settling t = %d: phi at the centre %.7f, d phi/dt = -2 u_t f(phi) phi gives %.7f\n", k,
+           s.values[0], phi);
+    sl_sample_free(&s);
+  }
+  printf("rotating settling: largest difference %.2e of the drop %.4f\n", worst, drop);
+  CHECK_MSG(worst < 1e-6 * drop, "phi at the centre off by %.2e (the drop %.4f)", worst, drop);
+}
+
+/* ---- the travelling waves' initial state --------------------------------------------------------------------- */
+
+static const double WAVE_C = 0.0324, WAVE_A11 = 0.0162, WAVE_ALPHA0 = 0.2;
+
+/* Nigam (1999) eq 4.191 with zeta = pi: B(r), s = pi r^2. */
+static double wave_B(double r) {
+  double z = M_PI, s = fmax(z * r * r, 1e-300);
+  double IJz = sl_bessel_int_j0(z), IYz = sl_bessel_int_y0(z);
+  return -sl_bessel_j0(s) / sl_bessel_j0(z) +
+         M_PI / (2 * z) *
+             (sl_bessel_y0(z) / sl_bessel_j0(z) * sl_bessel_j0(s) * IJz - sl_bessel_y0(s) * sl_bessel_int_j0(s) -
+              sl_bessel_j0(s) * (IYz - sl_bessel_int_y0(s)));
+}
+
+/* psi at t = 0 (the thesis's sign: j = k x grad psi) and phi = psi - c r^2 / 2. */
+static double wave_psi(double x, double y) {
+  double r = hypot(x, y), th = atan2(y, x);
+  return WAVE_C / 2 * (r * r + wave_B(r)) + WAVE_A11 * sl_bessel_jhalf(M_PI * r * r) * cos(th);
+}
+static double wave_alpha(double x, double y) {
+  double phi = wave_psi(x, y) - WAVE_C / 2 * (x * x + y * y);
+  return WAVE_ALPHA0 - 4 * M_PI * M_PI * phi * phi; /* eq 4.193, A = 4 zeta^2 */
+}
+
+static void waves_initial(void) {
+  set_configs("configs");
+  /* the state coded here reproduces the thesis's numbers (the digest's sanity values) */
+  double psi_max = 0.0, a_min = 1.0, a_max = 0.0;
+  for (int i = 0; i <= 400; ++i)
+    for (int j = 0; j < 720; ++j) {
+      double r = i / 400.0, th = 2 * M_PI * j / 720.0, x = r * cos(th), y = r * sin(th);
+      psi_max = fmax(psi_max, fabs(wave_psi(x, y)));
+      a_min = fmin(a_min, wave_alpha(x, y)), a_max = fmax(a_max, wave_alpha(x, y));
+    }
+  double h = 1e-4, om = (wave_psi(0.6 + h, 0) + wave_psi(0.6 - h, 0) + wave_psi(0.6, h) + wave_psi(0.6, -h) -
+                         4 * wave_psi(0.6, 0)) / (h * h);
+  printf("travelling wave (4.191-4.193): B(0) = %.5f, B(1) = %.5f, psi(0) = %.5f, max|psi| = %.5f, alpha in [%.5f, "
+         "%.5f], alpha(1) = %.5f, omega(0.6, 0) = %.4f\n",
+         wave_B(0.0), wave_B(1.0), wave_psi(0, 0), psi_max, a_min, a_max, wave_alpha(1, 0), om);
+  CHECK(fabs(wave_B(0.0) - 2.4358) < 1e-4 && fabs(wave_B(1.0) + 1.0) < 1e-12);
+  CHECK(fabs(wave_psi(0, 0) - 0.03946) < 1e-5 && fabs(psi_max - 0.0459) < 1e-4);
+  CHECK(fabs(a_min - 0.1235) < 1e-4 && fabs(a_max - 0.2) < 1e-6 && fabs(wave_alpha(1, 0) - 0.18964) < 1e-5);
+  CHECK(fabs(om + 0.480) < 1e-3);
+  /* the scene's state at t = 0 */
+  const char *sets[] = {"time.end=1e-6", "time.dt=1e-6", "time.adaptive=false", "output.inventory_regions=disc",
+                        "output.inventory_where=x > 0, x < 0", NULL};
+  if (run_ok("rotating_waves", NULL, NULL, sets, "rotating_waves_0.h5")) return;
+  const char *out = "rotating_waves_0.h5";
+  sl_sample s;
+  sl_diag d = {{0}};
+  double o[2] = {0.0, 0.0};
+  if (sl_sample_points(out, "stream_function", 0.0, 1, o, &s, &d)) {
+    CHECK_MSG(0, "%s", d.msg);
+    return;
+  }
+  double psi0 = -s.values[0]; /* sluice's psi has u = psi_y: the thesis's with the opposite sign */
+  sl_sample_free(&s);
+  double smin = 0.0, phase = 0.0, tf;
+  CHECK(sl_output_read_scalar(out, "stream_function_min", 0.0, &smin, &tf, &d) == 0 &&
+        sl_output_read_scalar(out, "stream_function_phase", 0.0, &phase, &tf, &d) == 0);
+  sl_output_field f;
+  if (sl_output_read_field(out, "phi", 0.0, &f, &d)) {
+    CHECK_MSG(0, "%s", d.msg);
+    return;
+  }
+  double fmin_ = 1.0, fmax_ = 0.0;
+  for (int c = 0; c < f.n; ++c) fmin_ = fmin(fmin_, f.values[c]), fmax_ = fmax(fmax_, f.values[c]);
+  sl_output_field_free(&f);
+  /* the velocity (-psi_y, psi_x) at the nodes (all but the wall's, which hold the no-slip condition), and omega(0.6,
+     0) by differences of the field */
+  sl_output_mesh mesh;
+  if (sl_output_read_mesh(out, &mesh, &d) || sl_output_read_field(out, "velocity", 0.0, &f, &d)) {
+    CHECK_MSG(0, "%s", d.msg);
+    return;
+  }
+  double e_u = 0.0, u_max = 0.0;
+  for (int i = 0; i < mesh.n_vertices; ++i) {
+    double x = mesh.coords[3 * i], y = mesh.coords[3 * i + 1];
+    if (hypot(x, y) > 1.0 - 1e-9) continue;
+    /* 4th-order differences of psi: their error, 1e-14, is below the check */
+    double ue = -(-wave_psi(x, y + 2 * h) + 8 * wave_psi(x, y + h) - 8 * wave_psi(x, y - h) + wave_psi(x, y - 2 * h)) /
+                (12 * h);
+    double ve = (-wave_psi(x + 2 * h, y) + 8 * wave_psi(x + h, y) - 8 * wave_psi(x - h, y) + wave_psi(x - 2 * h, y)) /
+                (12 * h);
+    e_u = fmax(e_u, hypot(f.values[3 * i] - ue, f.values[3 * i + 1] - ve));
+    u_max = fmax(u_max, hypot(ue, ve));
+  }
+  sl_output_mesh_free(&mesh);
+  sl_output_field_free(&f);
+  double hd = 0.01, xy[8] = {0.6 + hd, 0, 0.6 - hd, 0, 0.6, hd, 0.6, -hd}, v[12];
+  if (sample(out, "velocity", 4, xy, v)) return;
+  /* omega = dv/dx - du/dy */
+  double om_field = (v[1] - v[4]) / (2 * hd) - (v[6] - v[9]) / (2 * hd);
+  printf("rotating_waves.ini at t = 0: psi(0) = %.5f, max|psi| = %.5f, phi in [%.5f, %.5f] (cells), velocity at the "
+         "nodes %.1e of its largest %.4f, omega(0.6, 0) = %.4f, phase of the m = 1 pattern %.6f\n",
+         psi0, -smin, fmin_, fmax_, e_u, u_max, om_field, phase);
+  CHECK_MSG(fabs(psi0 / 0.03946 - 1) < 1e-3 && fabs(-smin / 0.0459 - 1) < 1e-3, "psi(0) %.5f, max|psi| %.5f", psi0,
+            -smin);
+  CHECK_MSG(fabs(fmin_ / 0.1235 - 1) < 1e-3 && fmax_ <= 0.2 && fmax_ > 0.2 * (1 - 1e-3), "phi in [%.5f, %.5f]",
+            fmin_, fmax_);
+  CHECK_MSG(e_u < 1e-9 * u_max, "velocity error %.2e", e_u);
+  CHECK_MSG(fabs(om_field / -0.480 - 1) < 1e-3, "omega(0.6, 0) = %.4f", om_field);
+  /* the thesis's a11 J cos(theta) is at phase 0; sluice's psi has the opposite sign: pi */
+  CHECK_MSG(fabs(fabs(phase) - M_PI) < 1e-6, "phase %.8f", phase);
+  /* inventories: the mesh region "disc" is all of it; the halves x > 0 and x < 0 add up to it and each is int alpha
+     dA over its half (midpoint rule in r and theta on the true half disc; the mesh's polygon misses 4e-4 of the
+     area near the wall) */
+  double inv = 0, inv_disc = 0, inv_r = 0, inv_l = 0;
+  CHECK(sl_output_read_scalar(out, "solids_inventory", 0.0, &inv, &tf, &d) == 0 &&
+        sl_output_read_scalar(out, "solids_inventory_disc", 0.0, &inv_disc, &tf, &d) == 0 &&
+        sl_output_read_scalar(out, "solids_inventory_where_0", 0.0, &inv_r, &tf, &d) == 0 &&
+        sl_output_read_scalar(out, "solids_inventory_where_1", 0.0, &inv_l, &tf, &d) == 0);
+  double ex_r = 0.0, ex_l = 0.0;
+  enum { NR = 400, NT = 800 };
+  for (int i = 0; i < NR; ++i)
+    for (int j = 0; j < NT; ++j) {
+      double r = (i + 0.5) / NR, th = 2 * M_PI * (j + 0.5) / NT, dA = r * (1.0 / NR) * (2 * M_PI / NT);
+      double a = wave_alpha(r * cos(th), r * sin(th)) * dA;
+      if (cos(th) > 0) ex_r += a;
+      else ex_l += a;
+    }
+  printf("inventories: disc %.8f (all %.8f), x > 0: %.6f (int alpha dA %.6f), x < 0: %.6f (%.6f)\n", inv_disc, inv,
+         inv_r, ex_r, inv_l, ex_l);
+  CHECK(inv_disc == inv && fabs(inv_r + inv_l - inv) < 1e-14 * inv);
+  CHECK_MSG(fabs(inv_r / ex_r - 1) < 1e-3 && fabs(inv_l / ex_l - 1) < 1e-3 && fabs(inv_r - inv_l) > 1e-3 * inv,
+            "halves %.6f %.6f against %.6f %.6f", inv_r, inv_l, ex_r, ex_l);
+  /* an unknown region: an error naming the nearest */
+  const char *bad[] = {"time.end=1e-6", "time.dt=1e-6", "output.inventory_regions=disk", NULL};
+  int rc = run_scene("rotating_waves", NULL, NULL, bad, "rotating_waves_bad.h5", &d);
+  CHECK_MSG(rc == SL_EBADINPUT && strstr(d.msg, "did you mean 'disc'") && strstr(d.msg, "inventory_regions"),
+            "rc %d: %s", rc, d.msg);
+}
+
+/* The inviscid limit (E = 1e-7, beta as the scene's): the pattern turns at c relative to the container; the phase
+ * of the first azimuthal mode grows by c t. Checked within 5 % for t <= 8 and the amplitude within 5 % to t = 20;
+ * the lag printed to t = 20 grows beyond t = 8 (on the scene's mesh: -3.6 % at t = 2, -5.1 % at t = 10, -11.4 % at
+ * t = 20, docs/rotating.md), short of the thesis's "within 5 % for t <= 20". */
+static void waves_inviscid(void) {
+  set_configs("configs");
+  const char *sets[] = {"fluid.viscosity=1e-5", "time.end=20", "time.dt=0.1", "time.adaptive=false",
+                        "output.every=1", NULL};
+  const char *out = "rotating_waves_inviscid.h5";
+  if (run_ok("rotating_waves", NULL, NULL, sets, out)) return;
+  sl_diag d = {{0}};
+  double ph0, a0, tf, worst = 0.0, amp = 0.0;
+  if (sl_output_read_scalar(out, "stream_function_phase", 0.0, &ph0, &tf, &d) ||
+      sl_output_read_scalar(out, "stream_function_min", 0.0, &a0, &tf, &d)) {
+    CHECK_MSG(0, "%s", d.msg);
+    return;
+  }
+  for (int k = 2; k <= 20; k += 2) {
+    double ph, a;
+    if (sl_output_read_scalar(out, "stream_function_phase", k, &ph, &tf, &d) ||
+        sl_output_read_scalar(out, "stream_function_min", k, &a, &tf, &d)) {
+      CHECK_MSG(0, "%s", d.msg);
+      return;
+    }
+    double turned = remainder(ph - ph0, 2 * M_PI), rel = turned / (WAVE_C * tf) - 1;
+    if (tf <= 8.0 + 1e-9) worst = fmax(worst, fabs(rel));
+    amp = fmax(amp, fabs(a / a0 - 1));
+    printf("inviscid wave t = %4.1f: turned %.5f rad (c t = %.5f, %+.2f %%), max|psi| / max|psi|_0 = %.5f\n", tf,
+           turned, WAVE_C * tf, 100 * rel, a / a0);
+  }
+  CHECK_MSG(worst < 0.05, "to t = 8 the pattern's angle is off c t (c = %.4f) by %.1f %%", WAVE_C, 100 * worst);
+  CHECK_MSG(amp < 0.05, "max|psi| changed by %.1f %%", 100 * amp);
+}
+
+int main(int argc, char **argv) {
+  static const struct {
+    const char *name;
+    void (*run)(void);
+  } parts[] = {{"frame", frame}, {"ekman", ekman_channel}, {"waves", waves_initial}, {"settling", settling}, {"waves_inviscid", waves_inviscid}};
+  int ran = 0;
+  for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
+    if (argc < 2 || strcmp(argv[1], parts[k].name) == 0) parts[k].run(), ++ran;
+  if (!ran) return fprintf(stderr, "unknown part '%s' (frame, ekman, waves, settling, waves_inviscid)\n", argv[1]), 2;
+  return sl_test_summary();
+}
