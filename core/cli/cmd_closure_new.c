@@ -207,6 +207,23 @@ static const ttemplate templates[] = {
      {1.0, 0.09, 1.0},
      1.0,
      "0.09 * 1 * 1^2 / 0.09"},
+    {SL_KIND_DENSIFICATION,
+     {"nbar", "strain_amplitude"},
+     0u,
+     {"nbar_new"},
+     {{"compaction", 0.01, 0.0, 0.5, "1", "volumetric strain of a half-cycle per unit strain amplitude"}},
+     "  double *nbar_new = a->out[OUT_NBAR_NEW];\n",
+     "    const double nbar = a->in[IN_NBAR][q], amp = a->in[IN_STRAIN_AMPLITUDE][q];\n"
+     "    const double d = p->compaction * amp; /* 0 between reversals: nbar unchanged */\n"
+     "    const double n1 = 1.0 - (1.0 - nbar) / (1.0 - d); /* the solids keep their volume */\n"
+     "    if (!(n1 > 0.0)) return sl_fail(a->err, SL_RECOVERABLE, q, \"a half-cycle of amplitude %g compacts nbar = %g to %g\", amp, nbar, n1);\n"
+     "    nbar_new[q] = n1;\n",
+     "d = compaction strain_amplitude,  1 - nbar_new = (1 - nbar) / (1 - d)",
+     "a placeholder, not a published law (the shipped byrne closure is Byrne 1991): replace it",
+     "0.01 <= nbar <= 0.99, strain amplitude up to 1",
+     {0.45, 0.1},
+     0.4494494494494494,
+     "1 - 0.55 / (1 - 0.01 * 0.1)"},
 };
 
 static const ttemplate *template_of(sl_kind k) {

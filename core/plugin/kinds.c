@@ -4,7 +4,8 @@
 #include <string.h>
 
 static const char *const kind_names[] = {"drag",        "hindered_settling", "viscosity", "solids_pressure",
-                                         "wall_stress", "granular",          "migration", "turbulence"};
+                                         "wall_stress", "granular",          "migration", "turbulence",
+                                         "densification"};
 
 /* The host's field dictionary (closure.h, "Canonical input names"): what the
  * models can supply, with the range they supply it in. The typical values are
@@ -28,12 +29,19 @@ static const sl_input_info inputs[] = {
     {"pressure", "Pa", "local pressure", 1e5, -1e12, 1e12},
     {"k", "m^2 s^-2", "turbulent kinetic energy", 1e-2, 1e-30, 1e6},
     {"epsilon", "m^2 s^-3", "dissipation rate of the turbulent kinetic energy", 1e-1, 1e-30, 1e9},
+    {"nbar", "1", "reference porosity of a sand (Pringle 2001 eq 4.30), a state", 0.45, 0.01, 0.99},
+    {"strain_amplitude", "1", "shear strain amplitude of the half-cycle ended at a strain reversal (0 between reversals)",
+     1e-3, 0.0, 1.0},
+    {"strain_increment", "1", "|change of shear strain| over the step", 1e-4, 0.0, 1.0},
+    {"strain_total", "1", "accumulated |shear strain| path", 1e-2, 0.0, 1e6},
+    {"volumetric_strain", "1", "densification strain accumulated so far", 0.0, 0.0, 0.5},
 };
 enum { N_INPUTS = (int)(sizeof inputs / sizeof inputs[0]) };
 /* The same names in the same order, for suggestions (sl_input_names). */
 static const char *const input_names[] = {
     "phi",      "slip",    "shear_rate", "theta",    "rho_f",         "mu_f",      "rho_s", "d_p",
-    "sphericity", "density", "gravity",  "d_vessel", "wall_distance", "slip_wall", "u_t",   "pressure", "k",     "epsilon"};
+    "sphericity", "density", "gravity",  "d_vessel", "wall_distance", "slip_wall", "u_t",   "pressure", "k",     "epsilon",
+    "nbar",     "strain_amplitude", "strain_increment", "strain_total", "volumetric_strain"};
 _Static_assert(sizeof input_names / sizeof input_names[0] == sizeof inputs / sizeof inputs[0],
                "one name per input of the dictionary");
 
@@ -83,11 +91,12 @@ static const sl_kind_info contracts[] = {
         {"solids (particle) pressure p_s(phi) that holds a dense or packed bed",
          {"phi"},
          1u,
-         {"rho_f", "mu_f", "rho_s", "d_p", "sphericity", "gravity"},
+         {"nbar", "rho_f", "mu_f", "rho_s", "d_p", "gravity"},
          {{"p_s", "Pa", "solids pressure", 1}},
          0,
          "phi outside [0, 1] (or beyond the law's own limit); any NaN. The closure takes no slip",
-         "two_fluid (1-D column and 2-D model): p_s and dp_s/dphi; pipe: p_s when the scene has one"},
+         "two_fluid (1-D column and 2-D model): p_s and dp_s/dphi, of nbar too in a liquefaction column (the "
+         "reference porosity the densification closure lowers); pipe: p_s when the scene has one"},
     [SL_KIND_WALL_STRESS] =
         {"shear stress the wall exerts on the solids as a function of their tangential slip at the wall",
          {"slip_wall"},
@@ -146,6 +155,19 @@ static const sl_kind_info contracts[] = {
          "k <= 0 or epsilon <= 0 (the eddy viscosity k^2/eps and eps/k diverge); any NaN",
          "pipe (Krampa 2009): mu_t, mu_t_k, mu_t_eps, eps_production, eps_sink and c_mu of (k, epsilon) in the "
          "k-epsilon equations"},
+    [SL_KIND_DENSIFICATION] =
+        {"new reference porosity nbar of a sand after a half-cycle of shear strain (cyclic densification, the "
+         "source of liquefaction)",
+         {"nbar"},
+         0u,
+         {"strain_amplitude", "strain_increment", "strain_total", "volumetric_strain"},
+         {{"nbar_new", "1", "reference porosity after the step (the host keeps it at or below nbar)", 1},
+          {"volumetric_strain_increment", "1", "the step's densification strain (optional)", 0}},
+         0,
+         "nbar outside (0, 1); a strain input < 0; a compaction that would take nbar_new to 0 or below; any NaN. "
+         "Between strain reversals (strain_amplitude = 0) nbar_new = nbar",
+         "two_fluid 1-D column under [shaking] (liquefaction): nbar_new at every step, bounded by [deposit] "
+         "nbar_min and the current nbar"},
 };
 
 const sl_kind_info *sl_kind_info_of(sl_kind kind) {
@@ -182,7 +204,7 @@ int sl_kind_from_name(const char *name, sl_kind *kind, sl_diag *d) {
   if (s) return sl_diag_set(d, SL_EBADINPUT, "unknown closure kind '%s'; did you mean '%s'?", name, s);
   return sl_diag_set(d, SL_EBADINPUT,
                      "unknown closure kind '%s' (kinds: drag, hindered_settling, viscosity, solids_pressure, "
-                     "wall_stress, granular, migration, turbulence)",
+                     "wall_stress, granular, migration, turbulence, densification)",
                      name);
 }
 
