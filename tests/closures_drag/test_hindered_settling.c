@@ -1,6 +1,6 @@
 /* Tests of the hindered_settling closures richardson_zaki, michaels_bolger,
  * nigam and vesilind: the terminal velocity (Stokes formula; the Schiller-Naumann /
- * Rowe force balance to 1e-14 and Pringle's 2001 values for nylon spheres),
+ * Rowe force balance to 1e-14 and Pringle's (2001) values for nylon spheres),
  * the Richardson-Zaki (1954) and Garside & Al-Dibouni (1977) exponents at
  * published Re_t, f -> 1 as phi -> 0, Nigam's (1999) h(alpha) and Kynch flux
  * maximum for Nigam's law, derivatives against central differences, and
