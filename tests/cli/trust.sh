@@ -121,8 +121,9 @@ output_times_exact)
   # Issue 25, smaller item: a two-fluid run with steps of 0.05 wrote its output at 59.99999999999663 for 60; the
   # output times are the scene's, exactly.
   run 0 run "$C/fluidized_bed.ini" --set time.end=60 --set two_fluid.steady_tolerance=1e-30 -o times.h5
-  times=$(/usr/bin/python3 -c "import h5py; h = h5py.File('times.h5', 'r'); print(' '.join(repr(float(h[k].attrs['time'])) for k in sorted(h) if k.startswith('step_')))")
-  [ "$times" = "0.0 10.0 20.0 30.0 40.0 50.0 60.0" ] || fail "output times $times"
+  # the output times as --scalars prints them (17 significant digits: 59.99999999999663 would show)
+  times=$("$S" sample times.h5 --scalars | awk -F, 'NR > 1 { printf "%s%s", sep, $1; sep = " " }')
+  [ "$times" = "0 10 20 30 40 50 60" ] || fail "output times $times"
   pass ;;
 steady_progress)
   # Issue 26: a steady solve showed no progress at all; in a log it gives a line per Newton iteration and
