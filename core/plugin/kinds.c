@@ -3,12 +3,14 @@
 #include <string.h>
 
 static const char *const kind_names[] = {"drag",        "hindered_settling", "viscosity", "solids_pressure",
-                                         "wall_stress", "granular",          "migration", "turbulence"};
+                                         "wall_stress", "granular",          "migration",       "turbulence",
+                                         "densification"};
 
 /* The host's field dictionary (architecture.md section 4, closure.h). */
 static const char *const input_names[] = {
     "phi",      "slip",    "shear_rate", "theta",    "rho_f",         "mu_f",      "rho_s", "d_p",
-    "sphericity", "density", "gravity",  "d_vessel", "wall_distance", "slip_wall", "u_t",   "pressure", "k",     "epsilon"};
+    "sphericity", "density", "gravity",  "d_vessel", "wall_distance", "slip_wall", "u_t",   "pressure", "k",     "epsilon",
+    "nbar",     "strain_amplitude", "strain_increment", "strain_total", "volumetric_strain"};
 
 typedef struct contract {
   const char *inputs[3];      /* required inputs */
@@ -26,6 +28,7 @@ static const contract contracts[] = {
     [SL_KIND_GRANULAR] = {{"phi", "theta", NULL}, 0u, {NULL, NULL}, 1},
     [SL_KIND_MIGRATION] = {{"phi", NULL, NULL}, 0u, {NULL, NULL}, 1},
     [SL_KIND_TURBULENCE] = {{"k", "epsilon", NULL}, 0u, {"mu_t", NULL}, 0},
+    [SL_KIND_DENSIFICATION] = {{"nbar", NULL, NULL}, 0u, {"nbar_new", NULL}, 0},
 };
 
 const char *sl_kind_name(sl_kind kind) {
@@ -51,7 +54,7 @@ int sl_kind_from_name(const char *name, sl_kind *kind, sl_diag *d) {
   if (s) return sl_diag_set(d, SL_EBADINPUT, "unknown closure kind '%s'; did you mean '%s'?", name, s);
   return sl_diag_set(d, SL_EBADINPUT,
                      "unknown closure kind '%s' (kinds: drag, hindered_settling, viscosity, solids_pressure, "
-                     "wall_stress, granular, migration, turbulence)",
+                     "wall_stress, granular, migration, turbulence, densification)",
                      name);
 }
 

@@ -74,7 +74,8 @@ typedef enum sl_kind {
   SL_KIND_WALL_STRESS = 5,
   SL_KIND_GRANULAR = 6,
   SL_KIND_MIGRATION = 7,
-  SL_KIND_TURBULENCE = 8
+  SL_KIND_TURBULENCE = 8,
+  SL_KIND_DENSIFICATION = 9 /* the reference porosity nbar of a sand under cyclic shear (liquefaction) */
 } sl_kind;
 
 /* ---- parameter schema ------------------------------------------------- */
@@ -115,6 +116,12 @@ typedef struct sl_param_desc {
  *   d_vessel    vessel (pipe, column) diameter           m
  *   wall_distance, slip_wall   distance to and tangential slip at a wall
  *   k, epsilon  turbulent kinetic energy and its dissipation rate  m^2 s^-2, m^2 s^-3
+ *   nbar        reference porosity of a sand (Pringle 2001 eq 4.30), a state 1
+ *   strain_amplitude  shear strain amplitude of the half-cycle ended at a strain
+ *               reversal (0 between reversals)             1
+ *   strain_increment  |change of shear strain| over the step      1
+ *   strain_total      accumulated |shear strain| path             1
+ *   volumetric_strain densification strain accumulated so far     1
  * Each input carries a typical value (used by `sluice closure eval` and the
  * conformance battery when no value is given) and its validity range. */
 typedef struct sl_field_desc {

@@ -69,7 +69,7 @@ sigint_continuation)
   # A steady solve by continuation stops between its iterations and keeps the last converged stage.
   SLUICE_PROGRESS=lines "$S" run "$C/bingham_cavity.ini" -o steady.h5 > out.txt 2>&1 &
   p=$!
-  for i in $(seq 600); do grep -q "stage 3 of 7" out.txt && break; sleep 0.1; done
+  for i in $(seq 3000); do grep -q "stage 3 of 7" out.txt && break; kill -0 $p 2>/dev/null || break; sleep 0.1; done # up to 300 s under load
   kill -INT $p
   wait $p; rc=$?
   [ $rc = 130 ] || fail "exit status $rc, expected 130"

@@ -98,6 +98,15 @@ if command -v mpirun > /dev/null; then
     echo "boycott on $n rank(s): phi differs from KLU's by $dphi"
     check "boycott on $n rank(s) agrees with KLU ($dphi)" below "$dphi" 1e-9
   done
+  # a checkpoint written on one rank continues on two: the same state as the run without a stop
+  "$sluice" run "$box" "${args[@]/time.end=0.05/time.end=0.1}" -o whole.h5 > whole.log 2>&1
+  "$sluice" run "$box" "${args[@]}" -o half.h5 > half.log 2>&1
+  mpirun -n 2 "$sluice" run "$box" "${args[@]/time.end=0.05/time.end=0.1}" --restart half.h5 -o cont.h5 > cont.log 2>&1
+  "$sluice" sample whole.h5 --field phi --line 0.5,0.1:1.2,0.9 --n 41 > whole.csv 2>/dev/null
+  "$sluice" sample cont.h5 --field phi --line 0.5,0.1:1.2,0.9 --n 41 > cont.csv 2>/dev/null
+  dphi=$(max_diff whole.csv cont.csv 4)
+  check "restart of a 1-rank checkpoint on 2 ranks continues the run ($dphi)" below "$dphi" 1e-9
+  check "... on 2 ranks" grep -q "2 ranks)" cont.log
   check "the ranks' private output folders are gone" test -z "$(ls -A | grep sluice-rank)"
   check "2 ranks say so in the summary" grep -q "2 ranks)" c2.log
   out=$(mpirun -n 2 "$sluice" run "$cav" --set solver.linear=klu -o no.h5 2>&1); rc=$?

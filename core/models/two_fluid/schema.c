@@ -94,6 +94,52 @@ static const sl_key column_keys[] = {
      .def_doc = "required (or porosity)", .help = "the initial solids fraction"},
     {.section = "initial", .name = "porosity", .type = SL_KEY_EXPR, C(porosity), .vars = "x,y,case",
      .help = "the initial porosity 1 - phi (instead of phi)"},
+    {.section = "initial", .name = "from", .type = SL_KEY_STRING, C(from), .def_text = "",
+     .help = "start from the last output of this file (its phi, and nbar when it has it): e.g. a deposit another run "
+             "settled; relative to the working folder"},
+    {.section = "initial", .name = "nbar", .type = SL_KEY_EXPR, C(nbar), .vars = "x,y,case",
+     .def_doc = "required with a solids pressure of nbar", .help = "the reference porosity of each cell (Pringle 2001 "
+                                                                   "eq 4.30), a state [closure.densification] evolves"},
+    {.section = "shaking", .name = "record", .type = SL_KEY_STRING, C(lq.record), .def_text = "",
+     .help = "the base acceleration: a CSV of time (s), acceleration (relative to the scene file)"},
+    {.section = "shaking", .name = "units", .type = SL_KEY_CHOICE, C(lq.units), .choices = "g|si",
+     .help = "the record's acceleration in g (9.81 m/s^2) or m/s^2"},
+    {.section = "shaking", .name = "peak", .type = SL_KEY_REAL, C(lq.peak), .min = 0.0, .max = 10.0, .units = "g",
+     .help = "scale the record to this peak |a| (0: as given)"},
+    {.section = "shaking", .name = "start", .type = SL_KEY_REAL, C(lq.start), .min = 0.0, .max = 1e9, .units = "s",
+     .help = "the run time at which the record's t = 0 falls"},
+    {.section = "shaking", .name = "k2max", .type = SL_KEY_REAL, C(lq.k2max), .def = 50.0, .min = 1.0, .max = 300.0,
+     .help = "Seed & Idriss (1970): G0 = 220 K2max sqrt(P_s) kPa, P_s in kPa; 30-70 for sands (Pringle's 0.4-0.6 is "
+             "an erratum)"},
+    {.section = "shaking", .name = "shear_modulus", .type = SL_KEY_REAL, C(lq.shear_modulus), .min = 0.0, .max = 1e12,
+     .units = "Pa", .help = "a linear elastic deposit of this constant modulus instead of K2max's law and the modulus reduction (0: "
+             "those; a verification)"},
+    {.section = "shaking", .name = "friction_angle", .type = SL_KEY_REAL, C(lq.friction_angle), .def = 33.0,
+     .min = 1.0, .max = 60.0, .units = "deg", .help = "tau_max = P_s tan(angle): Hardin & Drnevich's reference strain "
+                                                      "tau_max/G0"},
+    {.section = "shaking", .name = "damping", .type = SL_KEY_REAL, C(lq.damping), .def = 0.05, .min = 0.0, .max = 1.0,
+     .help = "viscous damping ratio xi at damping_frequency: eta = 2 xi G0 / omega"},
+    {.section = "shaking", .name = "damping_frequency", .type = SL_KEY_REAL, C(lq.damping_frequency), .def = 2.0,
+     .min = 1e-3, .max = 1e3, .units = "Hz", .help = "the frequency at which the damping ratio holds"},
+    {.section = "shaking", .name = "residual_viscosity", .type = SL_KEY_REAL, C(lq.residual_viscosity), .min = 0.0,
+     .max = 1e9, .units = "Pa s", .help = "a viscosity the sand keeps when P_s vanishes (liquefied)"},
+    {.section = "shaking", .name = "mass", .type = SL_KEY_CHOICE, C(lq.mass), .choices = "mixture|solid",
+     .help = "the density of the horizontal equation: the mixture's, or rho_s as printed (thesis eq 5.13)"},
+    {.section = "deposit", .name = "settle", .type = SL_KEY_REAL, C(lq.settle), .min = 0.0, .max = 1e12, .units = "s",
+     .help = "let [initial]'s state settle and consolidate for up to this long before t = 0 (0: start as given)"},
+    {.section = "deposit", .name = "settle_dt", .type = SL_KEY_REAL, C(lq.settle_dt), .def = 1.0, .min = 1e-9,
+     .max = 1e9, .units = "s", .help = "the step of the settling"},
+    {.section = "deposit", .name = "settle_tolerance", .type = SL_KEY_REAL, C(lq.settle_tolerance), .def = 1e-9,
+     .min = 0.0, .max = 1.0, .units = "s^-1", .help = "the settling ends when max |dphi/dt| falls below this"},
+    {.section = "deposit", .name = "phi_min", .type = SL_KEY_REAL, C(lq.deposit_phi), .def = 0.3, .min = 1e-3,
+     .max = 0.99, .help = "the cells from the base up with phi at least this at t = 0 are the deposit"},
+    {.section = "deposit", .name = "liquefied_ratio", .type = SL_KEY_REAL, C(lq.liquefied_ratio), .def = 0.05,
+     .min = 0.0, .max = 1.0, .help = "a cell is liquefied while P_s is below this fraction of its value at t = 0"},
+    {.section = "deposit", .name = "nbar_drop", .type = SL_KEY_REAL, C(lq.nbar_drop), .min = -0.5, .max = 0.5,
+     .help = "lower nbar in the deposit by this at t = 0 (an instantaneous load: Terzaghi's consolidation)"},
+    {.section = "deposit", .name = "nbar_min", .type = SL_KEY_REAL, C(lq.nbar_min), .min = 0.01, .max = 0.99,
+     .def_doc = "the nbar whose P_s at phi_max is twice the deposit's largest", .help = "the densest reference "
+                                                                               "porosity densification may reach"},
     {.section = "boundary", .name = "type", .type = SL_KEY_CHOICE, SL_AT_BOUNDARY(tfc_boundary, type),
      .choices = "wall|inlet|outlet", .help = "wall (closed), inlet (fluid enters, solids held), outlet (a pressure; "
                                              "solids leave when carried)"},
@@ -108,7 +154,10 @@ static const sl_key column_keys[] = {
 };
 TABLE(tf_column_keys, column_keys);
 
-static const char *const column_fields[] = {"phi", "velocity_solid", "velocity_fluid", "pressure"};
+static const char *const column_fields[] = {"phi",          "velocity_solid",  "velocity_fluid",
+                                            "pressure",     "nbar",            "stress_ratio",
+                                            "excess_pressure", "pore_pressure_ratio", "shear_strain",
+                                            "solids_pressure"};
 
 const sl_schema sl_two_fluid_column_schema = {
     .model = "two_fluid",
@@ -123,12 +172,13 @@ const sl_schema sl_two_fluid_column_schema = {
                &sl_keys_time_steps, &sl_keys_output, &sl_keys_plugins, &tf_column_keys},
     .n_tables = 9,
     .roles = {{"drag", 1, "the interphase drag K(phi, slip) (e.g. model = wen_yu)"},
-              {"solids_pressure", 0, "the solids pressure p_s(phi) of the particles in contact"}},
-    .n_roles = 2,
+              {"solids_pressure", 0, "the solids pressure p_s(phi) of the particles in contact (or p_s(phi, nbar))"},
+              {"densification", 0, "a shaken deposit: nbar from the cell's cyclic shear (e.g. model = byrne)"}},
+    .n_roles = 3,
     .config_size = sizeof(tf_config),
     .boundary_size = sizeof(tfc_boundary),
     .fields = column_fields,
-    .n_fields = 4,
+    .n_fields = 10,
 };
 
 /* ---- the 2-D model ---------------------------------------------------------------------------- */

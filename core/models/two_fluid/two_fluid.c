@@ -9,6 +9,7 @@
 #include <time.h>
 
 #include "core/models/two_fluid/two_fluid_impl.h"
+#include "core/models/two_fluid/liquefaction.h"
 #include "core/plugin/kinds.h"
 #include "core/scene/mesh.h"
 
@@ -32,6 +33,11 @@ typedef struct tf_run {
   char inlet_where[400]; /* file:line: [section] key of the inlet's value */
   double level[TF_MAX_LEVELS]; /* [output] interface */
   int n_levels;
+  tf_liquefaction *lq; /* the shaken deposit (liquefaction.h), or NULL */
+  long settle_steps;    /* [deposit] settle: its steps and time */
+  double settle_time, dt_min;
+  char lq_summary[256]; /* the add-on's failure after an accepted step, stopping the next */
+  int lq_failed;
 } tf_run;
 
 /* ---- the column from the mesh ------------------------------------------------ */
@@ -112,9 +118,34 @@ static int boundaries(tf_run *r, sl_diag *d) {
   return 0;
 }
 
+/* [initial] from: phi of the file's last output, in the mesh's cell order. */
+static int initial_from_file(tf_run *r, const sl_src *fe, sl_diag *d) {
+  tf_column *c = &r->c;
+  sl_output_field f;
+  int rc = sl_output_read_field(r->cfg->from, "phi", INFINITY, &f, d);
+  if (rc) return sl_diag_prefix(d, SL_EBADINPUT, "%s:%d: [initial] from = %s", fe->file, fe->line, r->cfg->from);
+  if (f.n != c->n || f.components != 1 || f.centring != SL_CENTRE_CELL)
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] from = %s: its phi has %d values, the mesh %d cells (the "
+                                      "same mesh is needed)", fe->file, fe->line, r->cfg->from, (int)f.n, c->n);
+  for (int i = 0; i < c->n && !rc; ++i) {
+    double phi = f.values[r->cell_of[i]];
+    if (!(phi >= 0.0 && phi <= c->phi_max))
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] from = %s: phi = %g in cell %d, above phi_max = %g",
+                       fe->file, fe->line, r->cfg->from, phi, i, c->phi_max);
+    c->phi[i] = phi;
+  }
+  sl_output_field_free(&f);
+  return rc;
+}
+
 static int initial_state(tf_run *r, sl_diag *d) {
   tf_column *c = &r->c;
   const sl_src *e = sl_scene_src(r->sc, &r->cfg->phi), *en = sl_scene_src(r->sc, &r->cfg->porosity);
+  const sl_src *fe = r->cfg->from && r->cfg->from[0] ? sl_scene_src(r->sc, &r->cfg->from) : NULL;
+  if (fe && (e || en))
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] from and %s both given: set one", fe->file, fe->line,
+                       e ? "phi" : "porosity");
+  if (fe) return initial_from_file(r, fe, d);
   if (e && en)
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] porosity and phi both given: set one", en->file, en->line);
   if (!e && !en)
@@ -166,6 +197,7 @@ static void release(tf_run *r) {
                    c->phif,  c->slip, c->lo,   c->di,     c->up,    c->rhs,  c->flux,  c->dpdx,    r->node};
   for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i) free(all[i]);
   sl_point_release(&c->drag.pc), sl_point_release(&c->ps.pc);
+  tfl_free(r->lq);
   free(r->face_vertex), free(r->cell_of);
   free(r);
 }
@@ -251,6 +283,7 @@ static int column_write(void *self, sl_output *out, double t, const double *u, s
   double j = 0.0;
   if (!rc) rc = tf_mixture_flux(c, t, &j, d);
   if (!rc) rc = sl_output_write_scalar(out, "mixture_flux", j, d);
+  if (!rc && r->lq) rc = tfl_write(r->lq, c, out, r->cell_of, cellv, (unsigned)r->fields, t, d);
   for (int k = 0; k < r->n_levels && !rc; ++k) {
     char name[64];
     snprintf(name, sizeof name, "interface_height_%d", k);
@@ -280,16 +313,30 @@ static int column_restore(void *self, const sl_checkpoint *ck, sl_diag *d) {
 
 static int column_step(void *self, sl_step *s, int *iterations, sl_diag *d) {
   tf_run *r = self;
-  int rc = tf_step(&r->c, s->t, s->dt, d);
+  if (r->lq_failed) return sl_diag_set(d, SL_EFAILED, "%s", r->lq_summary), -SL_EFAILED;
+  int rc = r->lq ? tfl_step(r->lq, &r->c, s->t, s->dt, d) : 0;
+  if (!rc) rc = tf_step(&r->c, s->t, s->dt, d);
   *iterations = r->c.iterations_trial;
   r->iterations += r->c.iterations_trial;
   return rc == 0 ? 0 : r->c.fatal ? -SL_EFAILED : sl_step_code(rc);
 }
 
+static void swap_state(tf_run *r, double dt, int *steady);
+
 static void column_accept(void *self, const sl_step *s, int *steady) {
   tf_run *r = self;
+  swap_state(r, s->dt, steady);
+  r->dt_min = r->dt_min > 0.0 ? fmin(r->dt_min, s->dt) : s->dt;
+  if (r->lq) {
+    sl_diag d;
+    if (tfl_accept(r->lq, &r->c, s->t, s->dt, &d))
+      r->lq_failed = 1, snprintf(r->lq_summary, sizeof r->lq_summary, "%.200s", d.msg);
+  }
+}
+
+static void swap_state(tf_run *r, double dt, int *steady) {
   tf_column *c = &r->c;
-  double dt = s->dt, rate = 0.0;
+  double rate = 0.0;
   for (int i = 0; i < c->n; ++i) rate = fmax(rate, fabs(c->phi_new[i] - c->phi[i]) / dt);
   double *sw;
   sw = c->phi, c->phi = c->phi_new, c->phi_new = sw;
@@ -302,15 +349,50 @@ static void column_accept(void *self, const sl_step *s, int *steady) {
   *steady = r->steady_tol > 0.0 && rate < r->steady_tol;
 }
 
+/* [deposit] settle: the column's own steps from [initial]'s state until it is at rest, before t = 0 (Pringle
+ * 2001 section 5.4 builds his deposit by settling it out of suspension). A failed step is retried at a quarter
+ * of its length and grown back, as the run's steps are. */
+static int settle(tf_run *r, sl_diag *d) {
+  const tf_lq_config *q = &r->cfg->lq;
+  double t = 0.0, h = q->settle_dt;
+  int steady = 0;
+  const double save_tol = r->steady_tol;
+  r->steady_tol = q->settle_tolerance;
+  while (t < q->settle && !steady) {
+    double hh = fmin(h, q->settle - t);
+    int rc = tf_step(&r->c, t, hh, d);
+    if (rc) {
+      if (r->c.fatal || hh < 1e-6 * q->settle_dt) {
+        r->steady_tol = save_tol;
+        return sl_diag_prefix(d, rc == SL_EFAILED ? SL_EBADINPUT : rc, "[deposit] settle at t = %g before the run", t);
+      }
+      h = 0.25 * hh;
+      continue;
+    }
+    swap_state(r, hh, &steady);
+    t += hh, ++r->settle_steps;
+    if (h < q->settle_dt) h = fmin(q->settle_dt, 2.0 * h);
+  }
+  r->steady_tol = save_tol;
+  r->settle_time = t;
+  /* the run starts from rest: the velocities of the settled state */
+  r->outflow = 0.0, r->substeps = 0, r->advances = 0, r->iterations = 0;
+  return 0;
+}
+
 static int column_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) {
   tf_run *r = calloc(1, sizeof *r);
   if (!r) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   r->sc = sc, r->cfg = sc->config, r->mesh = sc->mesh;
   unsigned mask;
-  int rc = sl_scene_output_fields(sc, F_PHI | F_US | F_UF | F_P, &mask, d);
-  r->fields = (int)mask;
-  if (!rc) rc = column_from_mesh(r, d);
+  int rc = column_from_mesh(r, d);
   if (!rc) rc = tf_scene_physics(sc, r->cfg, 1, &r->c, NULL, &r->steady_tol, d);
+  int shaken = !rc && tfl_wanted(sc, &r->c);
+  if (!rc)
+    rc = sl_scene_output_fields(sc, F_PHI | F_US | F_UF | F_P | (shaken ? TFL_F_NBAR | TFL_F_RATIO | TFL_F_EXCESS |
+                                                                             TFL_F_RU | TFL_F_STRAIN | TFL_F_PS : 0),
+                                &mask, d);
+  r->fields = (int)mask;
   if (!rc) rc = boundaries(r, d);
   if (!rc) rc = allocate(&r->c, d);
   if (!rc) rc = initial_state(r, d);
@@ -324,6 +406,9 @@ static int column_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag 
     }
     c->v_ref = fmax(c->v_ref, fabs(j));
   }
+  if (!rc && shaken) rc = tfl_create(sc, r->cfg, &r->c, r->cell_of, &r->lq, d);
+  if (!rc && r->cfg->lq.settle > 0.0) rc = settle(r, d);
+  if (!rc && r->lq) rc = tfl_start(r->lq, &r->c, d);
   if (!rc) rc = interface_levels(r, d);
   if (!rc && !(r->node = calloc((size_t)r->mesh->n_vertices, sizeof *r->node)))
     rc = sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
@@ -351,6 +436,13 @@ static void column_stats(void *self, const sl_run_result *res, sl_model_stats *s
              "outflow %.3g m, max phi %.4f (phi_max %.4g)",
              (double)r->iterations / (double)r->advances, (double)r->substeps / (double)r->advances, err, r->outflow,
              pmax, r->c.phi_max);
+  }
+  if (r->lq) {
+    char line[256];
+    tfl_summary(r->lq, line, sizeof line);
+    size_t at = strlen(st->coupling_summary);
+    snprintf(st->coupling_summary + at, sizeof st->coupling_summary - at, "; settled %.4g s in %ld steps before t = 0; "
+             "smallest dt %.3g s; %s", r->settle_time, r->settle_steps, r->dt_min, line);
   }
   snprintf(st->linear_summary, sizeof st->linear_summary, "tridiagonal, %d faces", r->c.n + 1);
 }

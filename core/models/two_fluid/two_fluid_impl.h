@@ -13,6 +13,15 @@
 #include "core/time/model.h"
 #include "core/util/diag.h"
 
+/* The keys of [shaking] and [deposit]: the column's liquefaction add-on (liquefaction.h). */
+typedef struct tf_lq_config {
+  const char *record; /* [shaking] */
+  int units, mass;
+  double peak, start, k2max, shear_modulus, friction_angle, damping, damping_frequency, residual_viscosity;
+  double settle, settle_dt, settle_tolerance; /* [deposit] */
+  double deposit_phi, liquefied_ratio, nbar_drop, nbar_min;
+} tf_lq_config;
+
 /* The keys of the [two_fluid] section and [initial] (each variant reads its part). */
 typedef struct tf_config {
   long iterations, order, case_index;
@@ -21,6 +30,9 @@ typedef struct tf_config {
   sl_scene_expr phi, porosity, theta;            /* [initial]: the column and the 2-D model (x, y, case) */
   sl_scene_exprs velocity_fluid, velocity_solid; /* [initial]: the 2-D model (two components) */
   sl_scene_expr sh_phi, sh_theta, sh_uf, sh_us;  /* [initial]: the shear layer (of x) */
+  sl_scene_expr nbar;                            /* [initial]: the column's reference porosity (liquefaction.h) */
+  const char *from;                              /* [initial]: an output file whose last state the column starts from */
+  tf_lq_config lq;
 } tf_config;
 
 /* A boundary of the 1-D column. */
@@ -40,6 +52,7 @@ typedef struct tf_closure {
   sl_closure *c; /* the scene's; NULL: not in the scene */
   sl_point_closure pc;
   const char *out, *wrt; /* "K", "slip"; "p_s", "phi" */
+  const double *nbar;    /* the cells' reference porosity for a solids pressure of nbar (liquefaction.h), or NULL */
 } tf_closure;
 
 typedef struct tf_column {
@@ -67,6 +80,7 @@ typedef struct tf_column {
   int order, limiter; /* transport: 1 upwind, 2 MUSCL with TF_LIMITER_* */
   /* state: cells phi, p; faces u (solids), uf (fluid) */
   double *phi, *u, *uf, *p;
+  double *nbar; /* [n] the reference porosity of each cell (liquefaction.h), or NULL */
   /* the step's trial and work arrays */
   double *phi_new, *u_new, *uf_new, *p_new;
   double *w, *K, *dK, *ps_v, *ps_d, *phif, *slip, *lo, *di, *up, *rhs, *flux, *alpha, *dpdx, *slope, *stage;

@@ -9,14 +9,15 @@
 #include "core/plugin/kinds.h"
 
 /* The quantities the two_fluid model gives its drag and solids-pressure closures. */
-static const char *const quantities[] = {"phi", "slip", "rho_f", "mu_f", "rho_s", "d_p", "sphericity", "gravity"};
+static const char *const quantities[] = {"phi",        "slip",    "rho_f", "mu_f", "rho_s",
+                                         "d_p",        "sphericity", "gravity", "nbar"};
 
 static int bind_closure(const sl_scene *sc, const tf_column *c, const char *role, tf_closure *b, int with_slip,
                         const char *output, sl_diag *d) {
   b->c = sl_scene_closure(sc, role);
   char section[64];
   snprintf(section, sizeof section, "closure.%s", role);
-  int rc = sl_point_bind(&b->pc, b->c, quantities, with_slip ? 8 : 8, section, "the two_fluid model", d);
+  int rc = sl_point_bind(&b->pc, b->c, quantities, 9, section, "the two_fluid model", d);
   if (rc) return rc;
   char label[128], where[300];
   sl_closure_label(b->c->desc, label, sizeof label);
@@ -28,6 +29,7 @@ static int bind_closure(const sl_scene *sc, const tf_column *c, const char *role
   b->out = output, b->wrt = with_slip ? "slip" : "phi";
   const double values[8] = {0.0, 0.0, c->rho_f, c->mu_f, c->rho_s, c->d_p, c->sphericity, fabs(c->g)};
   for (int k = 2; k < 8; ++k) sl_point_constant(&b->pc, quantities[k], values[k]);
+  sl_point_constant(&b->pc, "nbar", NAN); /* a model that does not hold nbar per cell (liquefaction.h) refuses it */
   return 0;
 }
 
@@ -66,6 +68,10 @@ int tf_scene_physics(const sl_scene *sc, const tf_config *cfg, int dim, tf_colum
   if ((rc = bind_closure(sc, c, "drag", &c->drag, 1, "K", d))) return rc;
   if (sl_scene_closure(sc, "solids_pressure") && (rc = bind_closure(sc, c, "solids_pressure", &c->ps, 0, "p_s", d)))
     return rc;
+  if (dim == 2 && c->ps.c && sl_point_has_input(&c->ps.pc, "nbar"))
+    return sl_diag_set(d, SL_EBADINPUT, "%s: %s takes the reference porosity nbar of each cell, which only the 1-D "
+                                        "column holds (geometry = line, [initial] nbar)",
+                       sl_scene_closure_where(sc, "solids_pressure", at, sizeof at), c->ps.c->desc->name);
   /* the velocity scale of the convergence test: the Stokes velocity of one particle, or the through-flow */
   double d_eff = c->sphericity * c->d_p;
   c->v_ref = fmax(fabs(c->rho_s - c->rho_f) * fabs(c->g) * d_eff * d_eff / (18.0 * c->mu_f), 1e-12);

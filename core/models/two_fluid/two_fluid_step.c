@@ -100,7 +100,7 @@ int tf_mixture_flux(tf_column *c, double t, double *j, sl_diag *d) {
 
 int tf_closure_eval(tf_closure *b, int n, const double *phi, const double *slip, double *value, double *dvalue,
                     sl_diag *d) {
-  const double *values[8] = {phi, slip};
+  const double *values[9] = {phi, slip, NULL, NULL, NULL, NULL, NULL, NULL, b->nbar};
   sl_point_request rq = {b->out, value, dvalue, b->wrt};
   return sl_point_eval(&b->pc, n, values, &rq, 1, d);
 }

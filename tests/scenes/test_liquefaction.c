@@ -1,0 +1,425 @@
+/* configs/liquefaction.ini: a sand deposit built by settling in the 1-D
+ * two-fluid column, shaken at its base by the synthetic 6 s record, run to
+ * 3 minutes (Pringle 2001, thesis sections 5.4-5.5; digest of seed 000,
+ * 4.6-4.7). Checked:
+ * - the deposit at rest: the discrete effective-stress balance face by face,
+ *   the pore pressure hydrostatic but for the weight of the surface cell's
+ *   solids, which the column's scheme holds on the fluid; the total vertical
+ *   stress p + p_s of the base cell against the weight of the column above
+ *   it; solids and fluid conserved to round-off over settling, shaking and
+ *   consolidation;
+ * - the undrained load transfer: a uniform drop of nbar at t = 0 puts
+ *   1 - exp(-dnbar/(A phi)) of each cell's p_s0 on the fluid (Pringle's eq
+ *   4.30 at fixed phi); the onset criterion (excess = 0.95 p_s0) is reached
+ *   at the drop dnbar = A phi ln 20 the law predicts;
+ * - the base case (0.8 mm): onset (ratio >= 0.95) first at an intermediate
+ *   depth, neither at the surface nor at the base; the liquefied zone grows
+ *   after onset; settlement of the order of 3 % of the depth; a small excess
+ *   left at the base at 3 minutes; no step cut;
+ * - configs/terzaghi_consolidation.ini: the degree of consolidation (from
+ *   the solids inventory) and the base excess pore pressure against
+ *   Terzaghi's series, first order in h (the drained surface is resolved to
+ *   a cell);
+ * - the horizontal equation: the steady response of a uniform linear
+ *   elastic layer to a harmonic base, second order in h;
+ * - 0.08 mm: a thicker liquefied zone at 6 s (8 mm gravel: reported only, see docs/liquefaction.md). */
+#include <complex.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "bench/png_check.h"
+#include "core/study/chart.h"
+#include "core/study/font.h"
+#include "core/study/image.h"
+#include "core/study/png.h"
+#include "scene_fields.h"
+#include "scene_runner.h"
+#include "testing.h"
+
+static char configs[4096];
+SCENE_RUNNERS()
+
+static const double g = 9.81, rho_s = 2650.0, rho_f = 1000.0, A = 0.015;
+
+/* The Terzaghi deposit at rest (no drop): the discrete effective-stress balance p_s(i-1) - p_s(i) = h phi_{i-1}
+ * (rho_s - rho_f) g at every face inside the deposit (two_fluid_step.c: a face takes its gravity-side cell's
+ * phi), and the pore pressure hydrostatic but for the surface cell, whose solids the column holds on the fluid
+ * (its face to the clear water carries them by drag; the scheme's surface cell, docs/liquefaction.md): a
+ * uniform static excess equal to their buoyant weight. */
+static void at_rest(void) {
+  const char *sets[] = {"deposit.nbar_drop=0", "time.end=0.1", "output.every=0.1", NULL};
+  if (run_ok("terzaghi_consolidation", NULL, NULL, sets, "test_liquefaction_rest.h5")) return;
+  int n;
+  double *phi = field_at("test_liquefaction_rest.h5", "phi", INFINITY, &n, NULL);
+  double *ps = field_at("test_liquefaction_rest.h5", "solids_pressure", INFINITY, &n, NULL);
+  double *p = field_at("test_liquefaction_rest.h5", "pressure", INFINITY, &n, NULL);
+  if (!phi || !ps || !p) return;
+  const double h = 12.0 / n, dr = (rho_s - rho_f) * g;
+  int top = 0;
+  while (top < n && phi[top] > 0.3) ++top;
+  double worst = 0.0;
+  for (int i = 1; i < top - 1; ++i) worst = fmax(worst, fabs(ps[i - 1] - ps[i] - h * phi[i - 1] * dr) / ps[0]);
+  double excess = scalar("test_liquefaction_rest.h5", "base_static_excess_pressure", INFINITY);
+  double held = h * phi[top - 1] * dr, hydro_top = p[n - 1];
+  printf("  at rest: effective-stress balance at every face within %.2e of p_s(base) = %.1f Pa; static excess %.2f Pa "
+         "= the surface cell's buoyant weight %.2f Pa (%.2e); top pressure %.3g Pa\n", worst, ps[0], excess, held,
+         fabs(excess - held) / held, hydro_top);
+  CHECK_MSG(worst < 1e-6, "effective-stress balance off by %g", worst);
+  CHECK_MSG(fabs(excess - held) < 1e-3 * held, "static excess %g, surface cell %g", excess, held);
+  free(phi), free(ps), free(p);
+}
+
+static void at_rest_and_conservation(const char *out) {
+  int n;
+  double *phi = field_at(out, "phi", 0.0, &n, NULL), *p = field_at(out, "pressure", 0.0, &n, NULL);
+  double *ps = field_at(out, "solids_pressure", 0.0, &n, NULL);
+  if (!phi || !p || !ps) return;
+  const double h = 17.0 / n;
+  double w = 0.5 * h * (phi[0] * rho_s + (1.0 - phi[0]) * rho_f) * g;
+  for (int i = 1; i < n; ++i) w += h * (phi[i] * rho_s + (1.0 - phi[i]) * rho_f) * g;
+  double total = p[0] + ps[0], err = (total - w) / w;
+  printf("  at rest: base cell p + p_s = %.1f Pa, weight above %.1f Pa (%.2e); p_s %.1f Pa\n", total, w, err, ps[0]);
+  CHECK_MSG(fabs(err) < 5e-3, "total vertical stress off the weight by %.3g", err); /* 68 cells: 4.3e-3 */
+  double es = scalar(out, "solids_conservation_error", INFINITY), ef = scalar(out, "fluid_conservation_error", INFINITY);
+  printf("  conservation at 186 s: solids %.2e, fluid %.2e\n", es, ef);
+  CHECK_MSG(fabs(es) < 1e-13 && fabs(ef) < 1e-13, "conservation %g %g", es, ef);
+  free(phi), free(p), free(ps);
+}
+
+/* The depth-time history of the pore pressure ratio: its first output with ratio >= 0.95 per cell. */
+static void base_case(const char *out) {
+  double H = scalar(out, "deposit_height", 0.0), t_on = scalar(out, "onset_time", INFINITY);
+  double z_on = scalar(out, "onset_depth", INFINITY);
+  printf("  base case: deposit %.2f m, onset at t = %.2f s, depth %.3f m (%.2f H)\n", H, t_on, z_on, z_on / H);
+  CHECK_MSG(isfinite(t_on) && t_on < 6.0, "no onset during the shaking (%g)", t_on);
+  CHECK_MSG(z_on > 0.2 * H && z_on < 0.8 * H, "onset at depth %g of %g: not intermediate", z_on, H);
+  /* the surface cell and the base cell never reach 0.95 (the model's step-by-step maxima) */
+  double surf = scalar(out, "surface_cell_ratio_max", INFINITY), base = scalar(out, "base_cell_ratio_max", INFINITY);
+  double thick_on = scalar(out, "liquefied_thickness_at_onset", INFINITY);
+  double thick_max = scalar(out, "liquefied_thickness_max_shaking", INFINITY);
+  printf("  largest ratio in the surface cell %.3f, in the base cell %.3f; liquefied %.2f m at onset, %.2f m at most "
+         "during shaking\n", surf, base, thick_on, thick_max);
+  CHECK_MSG(surf < 0.95 && base < 0.95, "surface %g or base %g liquefied", surf, base);
+  CHECK_MSG(thick_max > thick_on, "the liquefied zone did not grow after onset (%g -> %g)", thick_on, thick_max);
+  double s6 = scalar(out, "settlement", 6.0), s_end = scalar(out, "settlement", INFINITY);
+  printf("  settlement %.3f m at 6 s, %.3f m at 186 s (%.2f %% of the depth; thesis: nearly 40 cm, about 3 %%)\n", s6,
+         s_end, 100.0 * s_end / H);
+  CHECK_MSG(s_end > 0.01 * H && s_end < 0.05 * H, "settlement %g m of %g", s_end, H);
+  double peak = scalar(out, "base_excess_pressure_peak", INFINITY);
+  double t_peak = scalar(out, "base_excess_pressure_peak_time", INFINITY);
+  double left = scalar(out, "base_excess_pressure", INFINITY);
+  printf("  base excess pore pressure: peak %.0f Pa at %.1f s, %.0f Pa (%.2f %%) left at 186 s\n", peak, t_peak, left,
+         100.0 * left / peak);
+  CHECK_MSG(left > 0.0 && left < 0.05 * peak, "base excess at 3 min %g (peak %g)", left, peak);
+}
+
+static void variants(const char *base) {
+  const char *fine_sets[] = {"solid.diameter=8e-5", "deposit.settle=400000", "deposit.settle_dt=50", NULL};
+  const char *gravel_sets[] = {"solid.diameter=8e-3", NULL};
+  if (run_ok("liquefaction", NULL, NULL, fine_sets, "test_liquefaction_fine.h5")) return;
+  if (run_ok("liquefaction", NULL, NULL, gravel_sets, "test_liquefaction_gravel.h5")) return;
+  double tb = scalar(base, "liquefied_thickness", 6.0), tf = scalar("test_liquefaction_fine.h5", "liquefied_thickness", 6.0);
+  double rg = scalar("test_liquefaction_gravel.h5", "max_pore_pressure_ratio", INFINITY);
+  double tg = scalar("test_liquefaction_gravel.h5", "liquefied_thickness_max_shaking", INFINITY);
+  printf("  liquefied at 6 s: 0.8 mm %.2f m, 0.08 mm %.2f m; 8 mm: largest ratio %.3f, liquefied %.2f m\n", tb, tf, rg,
+         tg);
+  CHECK_MSG(tf > tb, "0.08 mm liquefied %g m, not more than 0.8 mm's %g m", tf, tb);
+  /* NOT reproduced (docs/liquefaction.md): the thesis's gravel does not liquefy; here it reaches 0.957 while
+     settling 0.11 m during the shaking (reported, not asserted, until the cause is found) */
+}
+
+/* A uniform drop of nbar at t = 0, no shaking: after 0.2 s the excess of each deposit cell against Pringle's
+ * undrained transfer 1 - exp(-dnbar/(A phi)); with dnbar = A phi_c ln 20 cell c is at the onset ratio 0.95. */
+static void undrained_transfer(const char *base) {
+  int n;
+  double *phi = field_at(base, "phi", 0.0, &n, NULL);
+  if (!phi) return;
+  const int c = 20;
+  double drop = A * phi[c] * log(20.0);
+  char set_drop[128];
+  snprintf(set_drop, sizeof set_drop, "deposit.nbar_drop=%.17g", drop);
+  /* 0.2 s: long after the solids' drag relaxation rho_s phi / K (about 8 ms), short of drainage below 2.5 m */
+  const char *sets[] = {set_drop, "deposit.nbar_min=0.3", "time.end=0.2", "time.dt=1e-3", "output.every=0.2", NULL};
+  if (run_ok("liquefaction", "shaking", "[shaking]\nrecord = \"\"\n", sets, "test_liquefaction_drop.h5")) {
+    free(phi);
+    return;
+  }
+  double *ru = field_at("test_liquefaction_drop.h5", "pore_pressure_ratio", INFINITY, &n, NULL);
+  if (!ru) {
+    free(phi);
+    return;
+  }
+  double worst = 0.0;
+  for (int i = 2; i <= 40; ++i) worst = fmax(worst, fabs(ru[i] - (1.0 - exp(-drop / (A * phi[i])))));
+  printf("  undrained transfer after 0.2 s: cell %d ratio %.5f (onset 0.95 at dnbar = A phi ln 20 = %.5f); largest "
+         "deviation from 1 - exp(-dnbar/(A phi)) %.2e\n", c, ru[c], drop, worst);
+  CHECK_MSG(fabs(ru[c] - 0.95) < 1e-3, "ratio %g at the predicted onset drop", ru[c]);
+  CHECK_MSG(worst < 2e-3, "undrained transfer off by %g", worst);
+  free(phi), free(ru);
+}
+
+/* Terzaghi (1925): u/u0 = sum (2/M) sin(M Z) exp(-M^2 T), U = 1 - sum (2/M^2) exp(-M^2 T), M = pi (2m+1)/2. */
+static double terzaghi_u(double Z, double T) {
+  double s = 0.0;
+  for (int m = 0; m < 2000; ++m) {
+    double M = M_PI * (2 * m + 1) / 2.0;
+    s += 2.0 / M * sin(M * Z) * exp(-M * M * T);
+  }
+  return s;
+}
+static double terzaghi_U(double T) {
+  double s = 0.0;
+  for (int m = 0; m < 2000; ++m) {
+    double M = M_PI * (2 * m + 1) / 2.0;
+    s += 2.0 / (M * M) * exp(-M * M * T);
+  }
+  return 1.0 - s;
+}
+
+/* configs/terzaghi_consolidation.ini on `cells`: the largest errors of U and of the base cell's u/u0 over the
+ * outputs 0.25 ... 5 s (T = 0.05 ... 1). */
+static int terzaghi_run(int cells, double *eU, double *eu) {
+  char set_cells[64];
+  snprintf(set_cells, sizeof set_cells, "mesh.cells=%d", cells);
+  const char *sets[] = {set_cells, NULL};
+  if (run_ok("terzaghi_consolidation", NULL, NULL, sets, "test_liquefaction_terzaghi.h5")) return 1;
+  /* c_v = M phibar (1 - phi)^3 d^2 / (150 mu phi^3) at phi = phibar = 0.55 (Ergun's viscous drag) */
+  const double M = 1e9, phib = 0.55, d_p = 1e-4, mu = 1e-3, H = 10.0, dn = 1e-7;
+  const double cv = M * phib * pow(1.0 - phib, 3) * d_p * d_p / (150.0 * mu * pow(phib, 3));
+  const double u0 = M * dn / phib, S_inf = H * dn / (phib + dn), h = 12.0 / cells;
+  *eU = *eu = 0.0;
+  for (int k = 1; k <= 20; ++k) {
+    double t = 0.25 * k, T = cv * t / (H * H);
+    double S = scalar("test_liquefaction_terzaghi.h5", "settlement", t);
+    double ub = scalar("test_liquefaction_terzaghi.h5", "base_excess_pressure", t);
+    *eU = fmax(*eU, fabs(S / S_inf - terzaghi_U(T)));
+    *eu = fmax(*eu, fabs(ub / u0 - terzaghi_u(1.0 - 0.5 * h / H, T)));
+  }
+  return 0;
+}
+
+static void terzaghi(void) {
+  double eU[3], eu[3];
+  const int cells[3] = {24, 48, 96};
+  for (int k = 0; k < 3; ++k)
+    if (terzaghi_run(cells[k], &eU[k], &eu[k])) return;
+  for (int k = 0; k < 3; ++k)
+    printf("  terzaghi, %3d cells (h = %.3f m): max |U - U_series| %.2e, max |u_base/u0 - series| %.2e\n", cells[k],
+           12.0 / cells[k], eU[k], eu[k]);
+  double pU = log2(eU[1] / eU[2]), pu = log2(eu[1] / eu[2]);
+  printf("  terzaghi: observed order %.2f (U), %.2f (base pore pressure)\n", pU, pu);
+  CHECK_MSG(eU[2] < 1.2e-2 && eu[2] < 7e-3, "Terzaghi errors %g %g on 96 cells", eU[2], eu[2]);
+  CHECK_MSG(pU > 0.9 && pu > 0.9 && log2(eU[0] / eU[1]) > 0.9, "Terzaghi order %g %g", pU, pu);
+}
+
+/* A colour of the pore pressure ratio r in [0, 1]: white, yellow, orange, red, dark red. */
+static uint32_t ratio_colour(double r) {
+  static const double stop[5][3] = {{255, 255, 255}, {255, 230, 120}, {250, 150, 40}, {215, 40, 30}, {110, 0, 20}};
+  r = fmin(fmax(r, 0.0), 1.0) * 4.0;
+  int k = (int)fmin(floor(r), 3.0);
+  double w = r - k, c[3];
+  for (int j = 0; j < 3; ++j) c[j] = stop[k][j] + w * (stop[k + 1][j] - stop[k][j]);
+  return (uint32_t)c[0] << 16 | (uint32_t)c[1] << 8 | (uint32_t)c[2];
+}
+
+/* The depth-time map of the pore pressure ratio over the first 30 s (every output, 0.5 s) with the project's
+ * image and PNG code (core/study): liquefaction_ratio.png; and the base excess pore pressure and the settlement
+ * over the run as a chart: liquefaction_history.png. Both read back by the independent PNG checker. */
+static void pictures(const char *out) {
+  const int nt = 61, left = 70, top = 40, pw = 8, ph = 8;
+  int n;
+  double *ru0 = field_at(out, "pore_pressure_ratio", 0.0, &n, NULL);
+  if (!ru0) return;
+  free(ru0);
+  double H = scalar(out, "deposit_height", 0.0), h = 17.0 / n;
+  int cells = (int)floor(H / h + 0.5);
+  sl_image im;
+  if (sl_image_init(&im, left + nt * pw + 120, top + cells * ph + 60, 0xffffff)) return;
+  for (int k = 0; k < nt; ++k) {
+    double *ru = field_at(out, "pore_pressure_ratio", 0.5 * k, &n, NULL);
+    if (!ru) break;
+    for (int i = 0; i < cells; ++i) /* depth downwards: cell cells-1 at the top */
+      sl_image_fill(&im, left + k * pw, top + (cells - 1 - i) * ph, left + (k + 1) * pw - 1,
+                    top + (cells - i) * ph - 1, ratio_colour(ru[i]));
+    free(ru);
+  }
+  char txt[96];
+  sl_font_draw(&im, left, 8, "PORE PRESSURE RATIO (P - P0)/P_S0, 0.8 MM SAND, LIQUEFACTION.INI", 1, 0x000000, 0);
+  for (int k = 0; k <= 30; k += 6) {
+    snprintf(txt, sizeof txt, "%d", k);
+    sl_font_draw(&im, left + 2 * k * pw - 3, top + cells * ph + 6, txt, 1, 0x000000, 0);
+  }
+  sl_font_draw(&im, left + nt * pw / 2 - 30, top + cells * ph + 22, "TIME, S (SHAKING 0-6 S)", 1, 0x000000, 0);
+  for (int z = 0; z <= (int)H; z += 2) {
+    snprintf(txt, sizeof txt, "%d", z);
+    sl_font_draw(&im, left - 20, top + (int)(z / h * ph) - 3, txt, 1, 0x000000, 0);
+  }
+  sl_font_draw(&im, 12, top + cells * ph / 2 + 40, "DEPTH, M", 1, 0x000000, 1);
+  for (int j = 0; j <= 20; ++j) /* the colour bar */
+    sl_image_fill(&im, left + nt * pw + 30, top + (20 - j) * cells * ph / 21, left + nt * pw + 50,
+                  top + (21 - j) * cells * ph / 21 - 1, ratio_colour(j / 20.0));
+  sl_font_draw(&im, left + nt * pw + 56, top - 2, "1", 1, 0x000000, 0);
+  sl_font_draw(&im, left + nt * pw + 56, top + cells * ph - 8, "0", 1, 0x000000, 0);
+  sl_diag d = {{0}};
+  int rc = sl_png_write("liquefaction_ratio.png", im.rgb, im.w, im.h, &d);
+  CHECK_MSG(rc == 0, "liquefaction_ratio.png: %s", d.msg);
+  sl_image_free(&im);
+  int w, hh;
+  unsigned char *rgb = NULL;
+  const char *why = png_check_file("liquefaction_ratio.png", &w, &hh, &rgb);
+  CHECK_MSG(why == NULL, "liquefaction_ratio.png: %s", why ? why : "");
+  free(rgb);
+  /* the history chart */
+  enum { NH = 94 };
+  double t[NH], pb[NH], st[NH];
+  for (int k = 0; k < NH; ++k) {
+    t[k] = 2.0 * k;
+    pb[k] = 1e-3 * scalar(out, "base_excess_pressure", fmin(t[k], 186.0));
+    st[k] = 100.0 * scalar(out, "settlement", fmin(t[k], 186.0)); /* cm */
+  }
+  sl_chart_series se[2] = {{.name = "base excess pore pressure, kPa", .n = NH, .x = t, .y = pb, .marker_every = 8},
+                           {.name = "surface settlement, cm", .n = NH, .x = t, .y = st, .marker_every = 8, .dashed = 1}};
+  sl_chart ch = {.title = "liquefaction.ini: 0.8 mm sand, 6 s of shaking",
+                 .subtitle = "from the solids inventory and the fluid pressure over its pre-shaking value",
+                 .xlabel = "time, s", .ylabel = "kPa / cm", .n_series = 2, .series = se};
+  rc = sl_chart_write_png("liquefaction_history.png", &ch, 720, 420, &d);
+  CHECK_MSG(rc == 0, "liquefaction_history.png: %s", d.msg);
+  why = png_check_file("liquefaction_history.png", &w, &hh, &rgb);
+  CHECK_MSG(why == NULL, "liquefaction_history.png: %s", why ? why : "");
+  free(rgb);
+  printf("  pictures: liquefaction_ratio.png (depth-time map), liquefaction_history.png\n");
+}
+
+/* The horizontal equation against the exact steady response of a uniform Kelvin-Voigt layer on a harmonic base
+ * (the Terzaghi deposit at rest made linear elastic: [shaking] shear_modulus = 1e7 Pa, damping xi = 0.05 at 2 Hz,
+ * eta = 2 xi G / omega_d): the base moves with a = a0 sin(omega t), the surface relative to it by
+ * w = (a0/omega^2) |1/cos(k* H) - 1|, k* = omega sqrt(rho/(G + i omega eta)) (Kramer 1996, Geotechnical
+ * Earthquake Engineering, eq 7.21 with the base's own motion taken out). The amplitude of w over 25-30 s
+ * (the start's free vibration decayed by e^-13) by least squares, on 10, 20, 40 cells of the deposit. */
+static double harmonic_run(int cells, const char *record) {
+  char s_cells[64], s_rec[2400];
+  snprintf(s_cells, sizeof s_cells, "mesh.cells=%d", cells);
+  snprintf(s_rec, sizeof s_rec, "shaking.record=%s", record);
+  const char *sets[] = {s_cells, s_rec, "deposit.nbar_drop=0", "shaking.units=si", "shaking.shear_modulus=1e7",
+                        "time.end=30", "time.dt=0.00125", "output.every=0.01", NULL};
+  if (run_ok("terzaghi_consolidation", NULL, NULL, sets, "test_liquefaction_harmonic.h5")) return NAN;
+  const double om = 2.0 * M_PI, G = 1e7, eta = 2.0 * 0.05 * G / (2.0 * M_PI * 2.0), H = 10.0, a0 = 0.01;
+  double ss = 0, sc = 0, cc = 0, ws = 0, wc = 0;
+  sl_output_scalars all;
+  sl_diag d = {{0}};
+  if (sl_output_read_scalars("test_liquefaction_harmonic.h5", &all, &d)) {
+    CHECK_MSG(0, "harmonic: %s", d.msg);
+    return NAN;
+  }
+  int col = -1;
+  for (int j = 0; j < all.n_names; ++j)
+    if (strcmp(all.names[j], "surface_displacement") == 0) col = j;
+  for (int k = 0; k < all.n_times && col >= 0; ++k) {
+    double t = all.times[k], w = all.values[(size_t)k * all.n_names + col];
+    if (t < 25.0 - 1e-9) continue;
+    double sn = sin(om * t), cs = cos(om * t);
+    ss += sn * sn, sc += sn * cs, cc += cs * cs, ws += w * sn, wc += w * cs;
+  }
+  sl_output_scalars_free(&all);
+  CHECK_MSG(col >= 0, "harmonic: no surface_displacement");
+  double det = ss * cc - sc * sc, fs = (ws * cc - wc * sc) / det, fc = (wc * ss - ws * sc) / det;
+  /* the mean density of the deposit: phi = 0.55 on average (its solids are conserved) */
+  double rho = 0.55 * rho_s + 0.45 * rho_f;
+  double complex ks = om * csqrt(rho / (G + I * om * eta));
+  double exact = a0 / (om * om) * cabs(1.0 / ccos(ks * H) - 1.0);
+  return (hypot(fs, fc) - exact) / exact;
+}
+
+static void harmonic(void) {
+  char cwd[2048], path[2300];
+  if (!getcwd(cwd, sizeof cwd)) return;
+  snprintf(path, sizeof path, "%s/test_liquefaction_harmonic.csv", cwd);
+  FILE *f = fopen(path, "w");
+  if (!f) return;
+  fprintf(f, "time_s,acceleration_m_s2\n");
+  for (int i = 0; i <= 30000; ++i) fprintf(f, "%.3f,%.12e\n", 1e-3 * i, 0.01 * sin(2.0 * M_PI * 1e-3 * i));
+  fclose(f);
+  double e[3];
+  const int cells[3] = {12, 24, 48};
+  for (int k = 0; k < 3; ++k) e[k] = harmonic_run(cells[k], path);
+  printf("  harmonic base, uniform layer: surface amplitude error %.2e / %.2e / %.2e on 10 / 20 / 40 cells, order "
+         "%.2f, %.2f\n", e[0], e[1], e[2], log2(fabs(e[0] / e[1])), log2(fabs(e[1] / e[2])));
+  CHECK_MSG(fabs(e[2]) < 1e-4 && fabs(e[1]) < 3e-4, "harmonic response off by %g, %g", e[1], e[2]);
+  CHECK_MSG(log2(fabs(e[0] / e[1])) > 1.8, "harmonic response order %g", log2(fabs(e[0] / e[1])));
+}
+
+/* [initial] from: a run starting from another's last state has it as its state at t = 0, bit for bit (phi and
+ * nbar; the deposit is not settled again). */
+static void from_file(void) {
+  char cwd[2048], repl[2400];
+  if (!getcwd(cwd, sizeof cwd)) return;
+  const char *first[] = {"time.end=1", "output.every=1", NULL};
+  if (run_ok("liquefaction", NULL, NULL, first, "test_liquefaction_first.h5")) return;
+  snprintf(repl, sizeof repl, "[initial]\nfrom = %s/test_liquefaction_first.h5\n", cwd);
+  const char *second[] = {"time.end=0.5", "output.every=0.5", "deposit.settle=0", NULL};
+  if (run_ok("liquefaction", "initial", repl, second, "test_liquefaction_second.h5")) return;
+  int n1, n2, same = 1;
+  const char *names[2] = {"phi", "nbar"};
+  for (int k = 0; k < 2; ++k) {
+    double *a = field_at("test_liquefaction_first.h5", names[k], INFINITY, &n1, NULL);
+    double *b = field_at("test_liquefaction_second.h5", names[k], 0.0, &n2, NULL);
+    if (a && b && n1 == n2)
+      for (int i = 0; i < n1; ++i) same &= a[i] == b[i];
+    else same = 0;
+    free(a), free(b);
+  }
+  printf("  [initial] from: the second run starts bit for bit from the first's last phi and nbar: %s\n",
+         same ? "yes" : "no");
+  CHECK_MSG(same, "[initial] from did not reproduce the file's state");
+}
+
+/* Bad input: refused before any output, with the location and what is allowed. */
+static void expect_refusal(const char *scene, const char *section, const char *replacement, const char *const *sets,
+                           const char *needle) {
+  sl_diag d = {{0}};
+  int rc = run_scene(scene, section, replacement, sets, "test_liquefaction_bad.h5", &d);
+  CHECK_MSG(rc == SL_EBADINPUT && strstr(d.msg, needle), "expected a refusal naming '%s', got %d: %s", needle, rc,
+            d.msg);
+}
+
+static void bad_input(void) {
+  char cwd[2048], path[2300], set[2400];
+  if (!getcwd(cwd, sizeof cwd)) return;
+  const char *k2[] = {"shaking.k2max=0.5", NULL};
+  expect_refusal("liquefaction", NULL, NULL, k2, "k2max");
+  expect_refusal("liquefaction", "initial", "[initial]\nphi = 0.45\n", NULL, "[initial] nbar");
+  const char *missing[] = {"shaking.record=no_such_record.csv", NULL};
+  expect_refusal("liquefaction", NULL, NULL, missing, "cannot open the base record");
+  snprintf(path, sizeof path, "%s/test_liquefaction_backwards.csv", cwd);
+  FILE *f = fopen(path, "w");
+  if (!f) return;
+  fprintf(f, "time,a\n0,0\n0.1,0.01\n0.1,0.02\n");
+  fclose(f);
+  snprintf(set, sizeof set, "shaking.record=%s", path);
+  const char *back[] = {set, NULL};
+  expect_refusal("liquefaction", NULL, NULL, back, "test_liquefaction_backwards.csv:4: time 0.1 does not follow");
+  expect_refusal("fluidized_bed_2d", "closure.solids_pressure", "[closure.solids_pressure]\nmodel = pringle_state\n",
+                 NULL, "only the 1-D column");
+  printf("  bad input refused: k2max 0.5, no [initial] nbar, a missing record, a record going back, nbar in 2-D\n");
+}
+
+int main(void) {
+  const char *src = getenv("SLUICE_SOURCE_DIR");
+  snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
+  const char *out = "test_liquefaction.h5";
+  if (run_ok("liquefaction", NULL, NULL, NULL, out)) return sl_test_summary();
+  at_rest_and_conservation(out);
+  base_case(out);
+  undrained_transfer(out);
+  terzaghi();
+  at_rest();
+  variants(out);
+  pictures(out);
+  harmonic();
+  from_file();
+  bad_input();
+  return sl_test_summary();
+}
