@@ -2,8 +2,9 @@
 """Writes the scene fuzz target's seed corpus (tests/fuzz/corpus/scene) from
 configs/*.ini: each scene as `sluice run --print-config` resolves it (its
 includes flattened), with its mesh made small (at most 256 cells in 2-D, 32
-in 1-D) so that one input takes milliseconds. Scenes whose mesh is a file
-are left out (the file would not be beside the seed).
+in 1-D) so that one input takes milliseconds. Scenes that need another file
+(a Gmsh mesh, a record) are left out: it would not be beside the seed; each
+seed kept passes `sluice run --check`.
 Usage: tests/fuzz/make_scene_seeds.py BUILD_DIR   (from the source tree's root)"""
 import math
 import os
@@ -46,5 +47,10 @@ for name in sorted(os.listdir("configs")):
     if cells:
         counts = [int(float(c)) for c in cells.group(1).split(",")]
         text = config(path, ["mesh.cells=" + ", ".join(str(c) for c in small(counts))])
-    with open(os.path.join(out, name), "w") as f:
+    seed = os.path.join(out, name)
+    with open(seed, "w") as f:
         f.write(text)
+    check = subprocess.run([sluice, "run", "--check", seed], capture_output=True, text=True, env=env)
+    if check.returncode != 0:
+        print("left out %s: %s" % (name, check.stderr.strip()))
+        os.remove(seed)
