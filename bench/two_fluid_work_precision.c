@@ -1,5 +1,5 @@
 /* Work-precision of the 1-D two-fluid model (core/models/two_fluid*.c) on
- * configs/fluidized_bed.ini and configs/fluidization_step.ini (seed 000 T1),
+ * configs/fluidized_bed.ini and configs/fluidization_step.ini (Pringle 2001, section 4.6.1),
  * over mesh refinement (the scene's dt) and time-step refinement (100
  * cells):
  *
@@ -8,7 +8,7 @@
  *    n_eq the drag law's equilibrium porosity: for fluidized_bed
  *    (richardson_zaki_consistent, U = 10 mm/s) Richardson & Zaki's
  *    (U/u_t)^(1/4.65), u_t = (rho_s - rho_f) g d^2/(18 mu) (Stokes); for
- *    fluidization_step the thesis's 0.716 (digest of seed 000, 4.1);
+ *    fluidization_step the thesis's 0.716 (Pringle 2001, section 4.6.1);
  *  - transient: the L1 distance (m) between the phi profile at t = 10 s
  *    and that of the sweep's finest run (the finest mesh, cell averages
  *    summed over the coarse cells, or the smallest dt), which measures the
@@ -230,7 +230,7 @@ int main(int argc, char **argv) {
   const double ut = (2600.0 - 998.2) * 9.81 * 3e-4 * 3e-4 / (18.0 * 1.002e-3);
   t.spec[0] = (scene_spec){"fluidized_bed", pow(0.010 / ut, 1.0 / 4.65), "Richardson-Zaki, the drag's own law",
                            {25, 50, 100, 200, 400, 0}, {0.8, 0.4, 0.2, 0.1, 0.05, 0.025}, NULL};
-  t.spec[1] = (scene_spec){"fluidization_step", 0.716, "thesis T1", {25, 50, 100, 200, 400, 0},
+  t.spec[1] = (scene_spec){"fluidization_step", 0.716, "Pringle 2001, section 4.6.1", {25, 50, 100, 200, 400, 0},
                            {0.16, 0.08, 0.04, 0.02, 0.01, 0.005}, NULL};
   bench_machine_describe(t.machine, sizeof t.machine);
   int failures = 0;

@@ -31,5 +31,11 @@ int sl_cli_error(int code, const char *fmt, ...)
 /* sluice closure index DIR (cmd_closure_index.c) */
 int sl_cmd_closure_index(int argc, char **argv);
 extern const char sl_closure_index_usage[];
+/* sluice closure kinds [KIND] [--markdown] (cmd_closure_kinds.c) */
+int sl_cmd_closure_kinds(int argc, char **argv);
+extern const char sl_closure_kinds_usage[];
+/* sluice closure new KIND NAME [-o DIR] (cmd_closure_new.c) */
+int sl_cmd_closure_new(int argc, char **argv);
+extern const char sl_closure_new_usage[];
 
 #endif

@@ -532,14 +532,17 @@ done:
 
 int sl_cmd_closure(int argc, char **argv) {
   if (argc < 1 || strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0) {
-    printf("%s\n\n%s\n\n%s\n", describe_usage, eval_usage, sl_closure_index_usage);
+    printf("%s\n\n%s\n\n%s\n\n%s\n\n%s\n", describe_usage, eval_usage, sl_closure_kinds_usage, sl_closure_new_usage,
+           sl_closure_index_usage);
     return argc < 1 ? SL_EBADINPUT : 0;
   }
   if (strcmp(argv[0], "describe") == 0) return cmd_describe(argc - 1, argv + 1);
   if (strcmp(argv[0], "eval") == 0) return cmd_eval(argc - 1, argv + 1);
   if (strcmp(argv[0], "index") == 0) return sl_cmd_closure_index(argc - 1, argv + 1);
-  const char *subs[] = {"describe", "eval", "index"};
-  const char *s = sl_suggest(argv[0], subs, 3);
-  return sl_cli_error(SL_EBADINPUT, "closure: unknown subcommand '%s'%s%s%s (describe, eval or index)", argv[0],
+  if (strcmp(argv[0], "kinds") == 0) return sl_cmd_closure_kinds(argc - 1, argv + 1);
+  if (strcmp(argv[0], "new") == 0) return sl_cmd_closure_new(argc - 1, argv + 1);
+  const char *subs[] = {"describe", "eval", "kinds", "new", "index"};
+  const char *s = sl_suggest(argv[0], subs, 5);
+  return sl_cli_error(SL_EBADINPUT, "closure: unknown subcommand '%s'%s%s%s (describe, eval, kinds, new or index)", argv[0],
                       s ? "; did you mean '" : "", s ? s : "", s ? "'?" : "");
 }

@@ -47,9 +47,14 @@ _sluice() {
       ;;
     closure)
       if [ "$COMP_CWORD" -eq 2 ]; then
-        COMPREPLY=($(compgen -W "describe eval index --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "describe eval kinds new index --help" -- "$cur"))
+      elif [ "${COMP_WORDS[2]}" = kinds ] || { [ "${COMP_WORDS[2]}" = new ] && [ "$COMP_CWORD" -eq 3 ]; }; then
+        COMPREPLY=($(compgen -W "$(sluice closure kinds 2>/dev/null | sed -n 's/^\([a-z_]*\): .*/\1/p') --markdown" -- "$cur"))
+      elif [ "${COMP_WORDS[2]}" = new ]; then
+        [ "$prev" = -o ] && { COMPREPLY=($(compgen -d -- "$cur")); return; }
+        COMPREPLY=($(compgen -W "-o" -- "$cur"))
       else
-        COMPREPLY=($(compgen -W "$(sluice closures 2>/dev/null | awk 'NR > 1 {print $2}') --all --markdown --at --set --deriv" -- "$cur"))
+        COMPREPLY=($(compgen -W "$(sluice closures 2>/dev/null | awk 'NR > 1 {print $2}') --all --markdown --at --set --deriv -o" -- "$cur"))
       fi
       ;;
     check-closure)

@@ -18,6 +18,8 @@ static const char usage[] =
     "  closures                        list every closure found (kind, name, version, library)\n"
     "  closure describe NAME|--all     schema, units, ranges, reference, an INI stanza\n"
     "  closure eval NAME --at SPEC     evaluate a closure without a mesh (CSV)\n"
+    "  closure kinds [KIND]            the closure kinds and their contracts (inputs, outputs, units)\n"
+    "  closure new KIND NAME [-o DIR]  write a closure template (NAME.c, CMakeLists.txt) to fill in\n"
     "  closure index DIR               write DIR/closures.index (which library holds which closure)\n"
     "  check-closure LIB.so            run the conformance battery on a closure library\n"
     "  sample OUT.h5 --field F --line x0,y0:x1,y1 [--n N] [--time T]\n"

@@ -6,8 +6,8 @@
  *
  * with K the interphase momentum exchange coefficient (F_s = K (u_f - u_s))
  * and s the interstitial slip: the solids momentum balance of the two-fluid
- * model with the solids at rest and no solids-pressure gradient (seed 000's
- * digest, 2.1.6: beta V_r = n (1 - n) (rho_s - rho_f) g, n the porosity
+ * model with the solids at rest and no solids-pressure gradient (Pringle
+ * 2001, eq 4.20 at steady state: beta V_r = n (1 - n) (rho_s - rho_f) g, n the porosity
  * there). With the drag K = (rho_s - rho_f) |g| phi / (u_t (1 - phi)^(n - 2))
  * it is Richardson & Zaki's law U = u_t (1 - phi)^n, n their exponent (1954,
  * Trans. Inst. Chem. Eng. 32:35).

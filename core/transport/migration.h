@@ -2,7 +2,7 @@
  * diffusive particle flux of Leighton & Acrivos (1987, J. Fluid Mech.
  * 181:415) in the form of Phillips, Armstrong, Brown, Graham & Abbott
  * (1992, Phys. Fluids A 4:30), as used by Nigam (1999, MIT PhD thesis,
- * eqs 2.29-2.30; digest of seed 002, sections 1.5 and 4.5):
+ * eqs 2.29-2.30 and section 4.5):
  *
  *   N = -a^2 [ K_c phi^2 grad(g) + (K_c phi g + K_mu phi^2 g mu'(phi)/mu(phi)) grad(phi) ]
  *     = -D_c grad(g phi) - D_mu grad(ln mu),   D_c = K_c a^2 phi,  D_mu = K_mu a^2 g phi^2,

@@ -8,7 +8,7 @@
  *   K = 150 phi^2 mu_f / ((1-phi) (psi d_p)^2) + 1.75 phi rho_f |slip| / (psi d_p)
  * with phi = 1 - n the solids fraction and psi the sphericity.
  * Pringle (2001) eq 3.12 prints the inertial term with an extra 1/n; the
- * digest of seed 000 (section 2.1.2) shows the substitution does not give
+ * substitution the thesis states (eqs 3.9-3.11) does not give
  * it. Both forms are offered: `form = gidaspow` (default) or `pringle`. */
 #include <math.h>
 #include <sluice/closure.h>
@@ -45,13 +45,13 @@ static const sl_field_desc outputs[] = {
 };
 
 /* Stokes limit (slip = 0), mu/d^2 = 1e3: K = 150 phi^2/(1-phi) * 1e3.
- * Pringle (2001) digest section 2.1.6 tabulates K/(mu/d^2) = 135.0 at n = 0.4
- * and 75.0 at n = 0.5. */
+ * Pringle (2001) eq 3.12 gives K/(mu/d^2) = 135.0 at n = 0.4 and 75.0 at
+ * n = 0.5 in the Stokes limit. */
 static const double check_in_0[N_IN] = {0.6, 0.0, 1000.0, 1e-3, 1e-3, 1.0};
 static const double check_in_1[N_IN] = {0.5, 0.0, 1000.0, 1e-3, 1e-3, 1.0};
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_K, 135.0e3, 5e-4, "Pringle (2001) digest 2.1.6 table, n = 0.40: 135.0 mu/d^2"},
-    {check_in_1, OUT_K, 75.0e3, 5e-4, "Pringle (2001) digest 2.1.6 table, n = 0.50: 75.0 mu/d^2"},
+    {check_in_0, OUT_K, 135.0e3, 5e-4, "Pringle (2001) eq 3.12 (Ergun), Stokes limit, n = 0.40: 135.0 mu/d^2"},
+    {check_in_1, OUT_K, 75.0e3, 5e-4, "Pringle (2001) eq 3.12 (Ergun), Stokes limit, n = 0.50: 75.0 mu/d^2"},
 };
 
 /* Names the first offending input at point q (the cold path of the loop). */

@@ -55,14 +55,14 @@ static const sl_field_desc outputs[] = {
     {"K", "kg m^-3 s^-1", 0, 0, 0, 0, "momentum-exchange coefficient, F_s = K (u_f - u_s)"},
 };
 
-/* Stokes limit (slip = 0), mu/d^2 = 1e3, digest of seed 000 section 2.1.6:
+/* Stokes limit (slip = 0), mu/d^2 = 1e3 (Pringle 2001, eq 3.12; Gidaspow 1994):
  * Ergun 135.0 mu/d^2 at n = 0.40 (dense side) and Wen-Yu-consistent 2.38
  * mu/d^2 at n = 0.90 (dilute side). */
 static const double check_in_0[N_IN] = {0.6, 0.0, 1000.0, 1e-3, 1e-3, 1.0};
 static const double check_in_1[N_IN] = {0.1, 0.0, 1000.0, 1e-3, 1e-3, 1.0};
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_K, 135.0e3, 5e-4, "Pringle (2001) digest 2.1.6 table, n = 0.40: Ergun 135.0 mu/d^2"},
-    {check_in_1, OUT_K, 2.38e3, 4e-3, "Pringle (2001) digest 2.1.6 table, n = 0.90: Wen-Yu-consistent 2.38 mu/d^2"},
+    {check_in_0, OUT_K, 135.0e3, 5e-4, "Pringle (2001) eq 3.12 (Ergun), Stokes limit, n = 0.40: 135.0 mu/d^2"},
+    {check_in_1, OUT_K, 2.38e3, 4e-3, "Wen-Yu-consistent (Gidaspow 1994), Stokes limit, n = 0.90: 2.38 mu/d^2"},
 };
 
 static int evaluate(const void *state, const sl_eval_args *a) {

@@ -8,13 +8,13 @@
  *   eps < 0.6 (eq 3.12, Ergun 1952):
  *     K = 150 phi^2 mu_f / (eps d^2) + 1.75 phi rho_f |slip| / (eps d)         ergun_form = pringle_printed
  *     (the stated substitution U = eps V_r into eq 3.8 gives 1.75 phi rho_f |slip| / d without the 1/eps:
- *      ergun_form = gidaspow; digest of seed 000, section 2.1.2)
+ *      ergun_form = gidaspow; the substitution of eqs 3.9-3.11 gives no 1/n)
  *   eps >= 0.6, modified Richardson-Zaki (eq 3.32, f'(n) = n^-4.65, eq 3.31):
  *     K = (3/4) C_D rho_f eps^-4.65 [rho_s/(rho_s - rho_f) - eps] |slip| eps^2 / d   dilute = printed_eq_3_32
  *   C_D = 24/Re (1 + 0.15 Re^0.687) for Re < 1000, 0.44 above (Rowe 1961, eq 3.24), Re = rho_f |slip| d / mu_f
  *   (eq 3.25, the interstitial slip), d = sphericity d_p (eq 5.9).
  *
- * CONSISTENCY PROBLEM (digest of seed 000, section 2.1.6). In the thesis's
+ * CONSISTENCY PROBLEM (eqs 3.32-3.34 against eq 4.20). In the thesis's
  * own momentum equations, which carry the fluid weight, a steady
  * homogeneous bed needs K V_r = phi eps (rho_s - rho_f) g. The printed
  * eq 3.32 was derived instead by balancing the drag against the whole
@@ -29,12 +29,12 @@
  * DEFAULT here (dilute = wen_yu_consistent), is the Wen-Yu form as written
  * by Gidaspow (1994) with the same C_D and Re:
  *     K = (3/4) C_D rho_f phi eps^-2.65 |slip| / d,    Stokes: 18 mu_f phi eps^-2.65 / d^2.
- * With it and the printed Ergun (the defaults) the digest's kinematic
- * reference for Slis et al. (1958) is reproduced (digest section 4.3).
+ * With it and the printed Ergun (the defaults) the inertia-free kinematic
+ * reference for Slis et al. (1958), section 5.1, is reproduced.
  *
  * THE SWITCH IS A JUMP. At slip -> 0, K/(mu_f/d^2) goes from 40.0 (Ergun,
  * eps -> 0.6-) to 27.9 (consistent, x 0.70) or to 71.4 (printed eq 3.34
- * for rho_s/rho_f = 2.6, x 1.78) (digest table, section 2.1.6). Pringle
+ * for rho_s/rho_f = 2.6, x 1.78) (eq 3.12 against eq 3.34). Pringle
  * used no blending; `switch_fluid_fraction` moves the switch. */
 #include <math.h>
 #include <sluice/closure.h>
@@ -77,10 +77,10 @@ static const sl_field_desc outputs[] = {
     {"K", "kg m^-3 s^-1", 0, 0, 0, 0, "momentum-exchange coefficient, F_s = K (u_f - u_s)"},
 };
 
-/* 1-2. Stokes limit (slip = 0), mu/d^2 = 1e3, digest of seed 000 section
- *      2.1.6: Ergun 135.0 mu/d^2 at n = 0.40, consistent 13.9 at n = 0.70.
+/* 1-2. Stokes limit (slip = 0), mu/d^2 = 1e3 (eq 3.12 and
+ *      the consistent form): Ergun 135.0 mu/d^2 at n = 0.40, consistent 13.9 at n = 0.70.
  * 3-4. Slis et al. (1958) nylon I (d = 3 mm, 1140 kg/m^3) in water at 20 C
- *      (998.2 kg/m^3, 1.002 mPa s), digest section 4.3 kinematic reference
+ *      (998.2 kg/m^3, 1.002 mPa s; Table 5.1), the kinematic reference
  *      (printed Ergun + consistent dilute + Rowe C_D): the steady bed has
  *      U = 35.5 mm/s at n = 0.76 and 11.1 mm/s at n = 0.54. At that slip
  *      V_r = U/n the drag balances the buoyant weight, K = n (1-n) drho g / V_r. */
@@ -90,12 +90,12 @@ static const double check_in_1[N_IN] = {0.3, 0.0, 1000.0, 1e-3, 1e-3, 1.0, 2600.
 static const double check_in_2[N_IN] = {0.24, 0.0355 / 0.76, 998.2, 1.002e-3, 3e-3, 1.0, 1140.0};
 static const double check_in_3[N_IN] = {0.46, 0.0111 / 0.54, 998.2, 1.002e-3, 3e-3, 1.0, 1140.0};
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_K, 135.0e3, 5e-4, "Pringle (2001) digest 2.1.6 table, n = 0.40: Ergun 135.0 mu/d^2"},
-    {check_in_1, OUT_K, 13.9e3, 4e-3, "Pringle (2001) digest 2.1.6 table, n = 0.70: Wen-Yu-consistent 13.9 mu/d^2"},
+    {check_in_0, OUT_K, 135.0e3, 5e-4, "Pringle (2001) eq 3.12 (Ergun), Stokes limit, n = 0.40: 135.0 mu/d^2"},
+    {check_in_1, OUT_K, 13.9e3, 4e-3, "Wen-Yu-consistent (Gidaspow 1994), Stokes limit, n = 0.70: 13.9 mu/d^2"},
     {check_in_2, OUT_K, SLIS_K(0.76, 0.0355), 3e-3,
-     "Pringle (2001) digest 4.3, Slis nylon I: steady U = 35.5 mm/s at n = 0.76 (K V_r = n(1-n) drho g)"},
+     "Slis nylon I (Pringle 2001, Table 5.1), equilibrium: U = 35.5 mm/s at n = 0.76 (K V_r = n(1-n) drho g)"},
     {check_in_3, OUT_K, SLIS_K(0.54, 0.0111), 8e-3,
-     "Pringle (2001) digest 4.3, Slis nylon I: steady U = 11.1 mm/s at n = 0.54, eq 3.12 Ergun"},
+     "Slis nylon I (Pringle 2001, Table 5.1), equilibrium: U = 11.1 mm/s at n = 0.54, eq 3.12 Ergun"},
 };
 
 static int evaluate(const void *state, const sl_eval_args *a) {
@@ -154,7 +154,7 @@ static const sl_closure_desc pringle = {
         "the 1/n);\n"
         "n >= 0.6, dilute = wen_yu_consistent (default): K = (3/4) C_D rho_f phi n^-2.65 |slip| / d;\n"
         "n >= 0.6, dilute = printed_eq_3_32: K = (3/4) C_D rho_f n^-4.65 [rho_s/(rho_s - rho_f) - n] |slip| n^2 / d.\n"
-        "WARNING (digest 000 section 2.1.6): the printed eq 3.32 does NOT reproduce Richardson-Zaki inside the "
+        "WARNING (Pringle 2001, eqs 3.32 and 4.20): the printed eq 3.32 does NOT reproduce Richardson-Zaki inside the "
         "momentum equations (it balances the mixture-weight gradient, not n x the buoyant weight): a steady bed "
         "gets U = u_t n^4.65 (1-n)(rho_s-rho_f)/rhobar, U(n) can decrease across the switch, and K > 0 at phi = 0. "
         "The wen_yu_consistent form gives U = u_t n^4.65 exactly.\n"
@@ -162,8 +162,8 @@ static const sl_closure_desc pringle = {
         "(printed, rho_s/rho_f = 2.6)",
     .reference =
         "Pringle (2001) PhD thesis, McMaster University, eqs 3.12, 3.24-3.25, 3.31-3.34, 5.9; Ergun (1952) "
-        "Chem. Eng. Prog. 48:89; Rowe (1961) Trans. Inst. Chem. Eng. 39:175; digest of seed 000 sections "
-        "2.1.2, 2.1.6, 4.3",
+        "Chem. Eng. Prog. 48:89; Rowe (1961) Trans. Inst. Chem. Eng. 39:175; Slis et al. (1958) as "
+        "used in Pringle (2001) section 5.1",
     .validity =
         "liquid-fluidised beds and settling suspensions, porosity 0.26-1 (phi <= 0.74); the printed dense "
         "law was fitted near porosity 0.4; hard switch at porosity 0.6 (a jump in K); dilute = "

@@ -6,7 +6,7 @@
  * acceleration, solids pressure constant): the mixture equation gives
  * dp/dy = -rhobar g, the fluid equation eps dp/dy = -eps rho_f g - K V_r,
  * so  K V_r = phi eps (rho_s - rho_f) g,  with superficial U = eps V_r
- * (digest of seed 000, section 2.1.6). Richardson & Zaki (1954), Trans.
+ * (the steady balance of Pringle 2001, eq 4.20). Richardson & Zaki (1954), Trans.
  * Inst. Chem. Eng. 32:35, U = u_t eps^n, holds exactly when
  *   K = phi eps^(2-n) (rho_s - rho_f) g / u_t = phi eps^(2-n) k_t,
  * k_t = |rho_s - rho_f| g / |u_t| the drag per unit particle volume and
@@ -64,14 +64,13 @@ static const sl_field_desc outputs[] = {
     {"K", "kg m^-3 s^-1", 0, 0, 0, 0, "momentum-exchange coefficient, F_s = K (u_f - u_s)"},
 };
 
-/* Stokes u_t, n = 4.65, mu/d^2 = 1e3, rho_s 2600 / rho_f 1000: the digest of
- * seed 000 (section 2.1.6) tabulates the Wen-Yu-consistent K/(mu/d^2) = 13.9
- * at porosity 0.70 and 6.50 at 0.80. */
+/* Stokes u_t, n = 4.65, mu/d^2 = 1e3, rho_s 2600 / rho_f 1000: the Wen-Yu-consistent
+ * K/(mu/d^2) is 13.9 at porosity 0.70 and 6.50 at 0.80. */
 static const double check_in_0[N_IN] = {0.3, 0.01, 1000.0, 1e-3, 1e-3, 1.0, 2600.0, 9.81};
 static const double check_in_1[N_IN] = {0.2, 0.01, 1000.0, 1e-3, 1e-3, 1.0, 2600.0, 9.81};
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_K, 13.9e3, 4e-3, "Pringle (2001) digest 2.1.6 table, n = 0.70: Wen-Yu-consistent 13.9 mu/d^2"},
-    {check_in_1, OUT_K, 6.50e3, 1e-3, "Pringle (2001) digest 2.1.6 table, n = 0.80: Wen-Yu-consistent 6.50 mu/d^2"},
+    {check_in_0, OUT_K, 13.9e3, 4e-3, "Wen-Yu-consistent (Gidaspow 1994), Stokes limit, n = 0.70: 13.9 mu/d^2"},
+    {check_in_1, OUT_K, 6.50e3, 1e-3, "Wen-Yu-consistent (Gidaspow 1994), Stokes limit, n = 0.80: 6.50 mu/d^2"},
 };
 
 static int evaluate(const void *state, const sl_eval_args *a) {
@@ -117,8 +116,8 @@ static const sl_closure_desc richardson_zaki_consistent = {
         "stokes: |drho| g/|u_t| = 18 mu_f / d^2;  schiller_naumann/rowe: u_t from (3/4) C_D rho_f u_t^2/d = "
         "|drho| g;  given: u_t a parameter;  d = sphericity d_p",
     .reference =
-        "Richardson & Zaki (1954) Trans. Inst. Chem. Eng. 32:35; Pringle (2001) digest of seed 000 section "
-        "2.1.6 (steady balance); Gidaspow (1994) ch. 5 (Stokes limit of Wen-Yu)",
+        "Richardson & Zaki (1954) Trans. Inst. Chem. Eng. 32:35; Pringle (2001) eq 4.20 "
+        "(steady balance); Gidaspow (1994) ch. 5 (Stokes limit of Wen-Yu)",
     .validity =
         "homogeneous suspensions and fluidised beds near their Richardson-Zaki equilibrium, phi <= 0.74; "
         "K does not depend on the slip, so transients away from equilibrium are an extrapolation; "

@@ -35,7 +35,7 @@ static const sl_field_desc outputs[] = {
 
 /* 1. Terminal fall of a 3 mm nylon sphere (1140 kg/m^3) in water at 20 C
  *    (998.2 kg/m^3, 1.002 mPa s): u_t = 87.9 mm/s at Re = 263 with Rowe's
- *    C_D (digest of seed 000, section 4.3). At u_t the drag balances the
+ *    C_D (Pringle 2001, eqs 3.24-3.25; Slis et al. 1958). At u_t the drag balances the
  *    buoyant weight, K u_t = phi (rho_s - rho_f) g:
  *    K = 0.01 * 141.8 * 9.81 / 0.0879 = 158.25.
  * 2. Re -> 0: Stokes, 18 mu phi / d^2 exactly. */
@@ -43,7 +43,7 @@ static const double check_in_0[N_IN] = {0.01, 0.0879, 998.2, 1.002e-3, 3e-3, 1.0
 static const double check_in_1[N_IN] = {0.2, 0.0, 1000.0, 1e-3, 1e-3, 1.0};
 static const sl_check_point checks[] = {
     {check_in_0, OUT_K, 0.01 * 141.8 * 9.81 / 0.0879, 2e-3,
-     "Pringle (2001) digest 4.3: 3 mm nylon in water, u_t = 87.9 mm/s (Rowe C_D); K u_t = phi drho g"},
+     "Pringle (2001) eqs 3.24-3.25: 3 mm nylon in water, u_t = 87.9 mm/s (Rowe C_D); K u_t = phi drho g"},
     {check_in_1, OUT_K, 3.6e3, 1e-14, "Stokes limit slip = 0: 18 mu phi / d^2, exact"},
 };
 

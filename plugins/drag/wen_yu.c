@@ -10,12 +10,12 @@
  * With f = C_D Re / 24 this is K = 18 mu_f phi eps^-2.65 f(Re) / d^2: the
  * Stokes limit is 18 mu_f phi eps^-2.65 / d^2, which in the steady
  * homogeneous balance K V_r = phi eps (rho_s - rho_f) g gives exactly
- * Richardson-Zaki U = u_t eps^4.65 (digest of seed 000, section 2.1.6).
+ * Richardson-Zaki U = u_t eps^4.65 (in the steady balance of Pringle 2001, eq 4.20).
  *
  * `reynolds = interstitial` forms Re with the slip itself, Re = rho_f |slip|
  * d / mu_f, and drops the eps in front, K = (3/4) C_D(Re) rho_f phi
- * eps^-2.65 |slip| / d: the "Wen-Yu-consistent" form of the digest of seed
- * 000 (section 2.1.6, with Rowe's C_D and Pringle's eq 3.25 Re). Both agree
+ * eps^-2.65 |slip| / d: the "Wen-Yu-consistent" form in Pringle's (2001)
+ * variables (Rowe's C_D and his eq 3.25 Re). Both agree
  * in the Stokes limit and differ by f(eps Re) vs f(Re) at finite Re.
  * `exponent` replaces 2.65 (Richardson-Zaki n - 2; SedFoam's hExp). */
 #include <math.h>
@@ -25,7 +25,7 @@
 
 typedef struct wen_yu_params {
   double exponent;  /* 2.65 */
-  int32_t reynolds; /* 0 fluid_fraction (Gidaspow), 1 interstitial (digest 000) */
+  int32_t reynolds; /* 0 fluid_fraction (Gidaspow), 1 interstitial (Pringle 2001 eq 3.25) */
 } wen_yu_params;
 
 enum { IN_PHI, IN_SLIP, IN_RHO_F, IN_MU_F, IN_D_P, IN_SPHERICITY, N_IN };
@@ -36,7 +36,7 @@ static const sl_param_desc params[] = {
                      "hindrance exponent m in eps^-m (Richardson-Zaki n - 2)"),
     SL_PARAM_ENUM_OF(wen_yu_params, reynolds, 0, "fluid_fraction|interstitial",
                      "fluid_fraction: Re = (1-phi) rho |slip| d/mu and K ~ phi (1-phi)^(1-m) (Gidaspow 1994); "
-                     "interstitial: Re = rho |slip| d/mu and K ~ phi (1-phi)^-m (digest 000 2.1.6)"),
+                     "interstitial: Re = rho |slip| d/mu and K ~ phi (1-phi)^-m (Pringle 2001 eq 3.25)"),
 };
 
 static const sl_field_desc inputs[] = {
@@ -52,14 +52,13 @@ static const sl_field_desc outputs[] = {
     {"K", "kg m^-3 s^-1", 0, 0, 0, 0, "momentum-exchange coefficient, F_s = K (u_f - u_s)"},
 };
 
-/* Stokes limit (slip = 0), mu/d^2 = 1e3: the digest of seed 000 (section
- * 2.1.6) tabulates the Wen-Yu-consistent K/(mu/d^2) = 13.9 at n = 0.70 and
- * 2.38 at n = 0.90 (n = 1 - phi, the porosity). */
+/* Stokes limit (slip = 0), mu/d^2 = 1e3: the Wen-Yu-consistent K/(mu/d^2)
+ * is 13.9 at n = 0.70 and 2.38 at n = 0.90 (n = 1 - phi, the porosity). */
 static const double check_in_0[N_IN] = {0.3, 0.0, 1000.0, 1e-3, 1e-3, 1.0};
 static const double check_in_1[N_IN] = {0.1, 0.0, 1000.0, 1e-3, 1e-3, 1.0};
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_K, 13.9e3, 4e-3, "Pringle (2001) digest 2.1.6 table, n = 0.70: Wen-Yu-consistent 13.9 mu/d^2"},
-    {check_in_1, OUT_K, 2.38e3, 4e-3, "Pringle (2001) digest 2.1.6 table, n = 0.90: Wen-Yu-consistent 2.38 mu/d^2"},
+    {check_in_0, OUT_K, 13.9e3, 4e-3, "Wen-Yu-consistent (Gidaspow 1994), Stokes limit, n = 0.70: 13.9 mu/d^2"},
+    {check_in_1, OUT_K, 2.38e3, 4e-3, "Wen-Yu-consistent (Gidaspow 1994), Stokes limit, n = 0.90: 2.38 mu/d^2"},
 };
 
 static int evaluate(const void *state, const sl_eval_args *a) {
@@ -94,7 +93,7 @@ static const sl_closure_desc wen_yu = {
         "K = (3/4) C_D rho_f phi eps^-m |slip| / d",
     .reference =
         "Wen & Yu (1966) Chem. Eng. Prog. Symp. Ser. 62(62):100; Gidaspow (1994) Multiphase Flow and "
-        "Fluidization ch. 5; Pringle (2001) digest of seed 000 section 2.1.6",
+        "Fluidization ch. 5; Pringle (2001) eqs 3.24-3.25, 4.20",
     .validity =
         "dilute to moderately dense suspensions, fluid fraction above about 0.8 (Gidaspow switches to "
         "Ergun below); evaluated for phi <= 0.74; C_D jumps by +0.34 % at Re = 1000; dK/dslip is "

@@ -13,7 +13,7 @@
  * DOE/METC-94/1004) and van Wachem et al. (2001, AIChE J 47:1035), as used by
  * ANSYS CFX-10: Krampa (2009) eqs 6.8-6.19, whose quadratic (6.13) reduces
  * with D = 0 to theta = mu_s^(0) S^2 d_s sqrt(pi)/(4 E_D), E_D = 3 (1 - e^2)
- * phi^2 rho_s g0 (digest section 2.8; (6.17) misprints sqrt(pi) as pi). Here
+ * phi^2 rho_s g0 (section 6.2; (6.17) misprints sqrt(pi) as pi). Here
  * shear_rate = sqrt(2 D:D), so the production 2 mu_s D:D = mu_s shear_rate^2.
  *
  * f_mu and g0 are exactly those of the granular closures `gidaspow` and

@@ -16,8 +16,8 @@
  * These are the phase totals of the solids stress (OpenFOAM's
  * kineticTheoryModels write the same laws as a kinematic viscosity divided
  * by phi rho_s). Krampa (2009) quotes the collisional viscosity as eq 6.4
- * with (1+eta) sqrt(theta)/pi printed for (1+e) sqrt(theta/pi) (digest
- * section 8 item 7). g0 is a parameter (kinetic.h), by default Gidaspow's
+ * with (1+eta) sqrt(theta)/pi printed for (1+e) sqrt(theta/pi)
+ * (a misprint; corrected here). g0 is a parameter (kinetic.h), by default Gidaspow's
  * 0.6/(1 - (phi/phi_max)^(1/3)), continued linearly (C1) above
  * phi_max - delta; with phi_max = 0.6 and delta = 0.001 the continuation
  * point and slope reproduce C_0 = 1079 and C_1 = 1.08e6 of CFX-10's

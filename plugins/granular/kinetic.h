@@ -53,7 +53,7 @@
  *      sigma_s = -p_s I + lambda_s (div u_s) I + 2 mu_s (D_s - (1/3)(div u_s) I)
  *    (not to be multiplied by phi again), and the granular-energy flux
  *    q = -kappa grad theta. Krampa (2009) prints several of these with
- *    misprints (digest section 8 item 7): (5.8) lacks phi^2, (5.14) lacks
+ *    misprints: (5.8) lacks phi^2, (5.14) lacks
  *    phi theta^0.5, (5.13) has g0 where phi belongs; the forms above are the
  *    corrected ones (cross-checked against MFiX's Lun et al. coefficients,
  *    eqs B8-B10 of the MFiX 2012 theory guide, and Gidaspow's book). */

@@ -5,8 +5,8 @@
  *
  * Lun, Savage, Jeffrey & Chepurniy (1984), J. Fluid Mech. 140:223-256, the
  * constitutive relations of their eqs (4.x) in the continuum form quoted by
- * Krampa (2009) eqs 5.3-5.14 (seed 004; digest section 2.5), with the
- * misprints of that thesis corrected (digest section 8 item 7): the bulk
+ * Krampa (2009) eqs 5.3-5.14 (section 5.1.2), with the
+ * misprints of that thesis corrected: the bulk
  * viscosity (5.8) carries phi^2, the dissipation (5.14) is proportional to
  * phi^2 theta^1.5, and the second conductivity group (5.13) carries phi, not
  * 1/g0. With eta = (1 + e)/2 and X = phi g0:
@@ -19,7 +19,7 @@
  *   gamma    = (48/sqrt(pi)) eta (1 - eta) rho_s phi^2 g0 theta^1.5 / d_p
  *            = 12 (1 - e^2) g0 rho_s phi^2 theta^1.5 / (d_p sqrt(pi))
  * The conductivity was cross-checked against the MFiX 2012 theory guide
- * (eqs B8-B10, as coded in OpenFOAM-derived solvers) and the digest's
+ * (eqs B8-B10, as coded in OpenFOAM-derived solvers) and a
  * term-by-term reading of (5.11-5.13). g0 is a parameter (kinetic.h), by
  * default Lun & Savage (1986) with phi_max = 0.63 as in Krampa's model B,
  * continued linearly (C1) above phi_max - delta. */

@@ -10,7 +10,7 @@
  * phi_min = 1 - eps_g*); pressure = johnson_jackson selects the Johnson &
  * Jackson (1987) law instead (the OpenFOAM "JohnsonJacksonSchaeffer"
  * combination). Krampa (2009) eq 4.68 gives the generic frictional stress
- * p_f I + F(p_f, phi) S^/|S^| but does not implement one (digest 1.3 item 11).
+ * p_f I + F(p_f, phi) S^/|S^| but does not implement one.
  * Formulas, continuation and the radians convention: frictional.h.
  * The theta input is required by the granular kind contract and not used. */
 #include <math.h>

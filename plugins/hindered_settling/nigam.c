@@ -3,7 +3,7 @@
  * phi u_t f(phi) (architecture.md section 3, `mixture`).
  *
  * Nigam (1999), Numerical Modeling of Suspension Flows, PhD thesis, MIT,
- * eqs 2.20, 2.25 and 2.36 (digest of seed 002, sections 1.4 and 1.7): a
+ * eqs 2.20, 2.25 and 2.36: a
  * particle in creeping motion feels the suspension viscosity mu_f mu_r(phi)
  * and the buoyancy of the mixture, (rho_s - rho_mix) = (1 - phi)(rho_s -
  * rho_f); with j_R = phi (1 - phi) v_R the relative flux, the solids move
@@ -66,14 +66,14 @@ static const sl_field_desc outputs[] = {
     {"terminal_velocity", "m s^-1", SL_FIELD_OPTIONAL, 0, 0, 0, "u_t of one particle"},
 };
 
-/* h(alpha) of the digest of seed 002, section 1.7 table (K = 2.5, alpha_m = 0.68):
+/* h(alpha) of Nigam (1999) eq 2.36 (K = 2.5, alpha_m = 0.68):
  * 0.6181 at alpha = 0.1, 0.1822 at 0.3; and the Stokes limit at phi = 0. */
 static const double check_in_0[N_IN] = {0.1, 1e-4, 1.0, 2600.0, 1000.0, 1e-3, 9.81};
 static const double check_in_1[N_IN] = {0.3, 1e-4, 1.0, 2600.0, 1000.0, 1e-3, 9.81};
 static const double check_in_2[N_IN] = {0.0, 1e-4, 1.0, 2600.0, 1000.0, 1e-3, 9.81};
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_HINDRANCE, 0.6181, 1e-4, "Nigam (1999) digest of seed 002, 1.7 table: h(0.1) = 0.6181"},
-    {check_in_1, OUT_HINDRANCE, 0.1822, 3e-4, "Nigam (1999) digest of seed 002, 1.7 table: h(0.3) = 0.1822"},
+    {check_in_0, OUT_HINDRANCE, 0.6181, 1e-4, "Nigam (1999) eq 2.36, K = 2.5: h(0.1) = 0.6181"},
+    {check_in_1, OUT_HINDRANCE, 0.1822, 3e-4, "Nigam (1999) eq 2.36, K = 2.5: h(0.3) = 0.1822"},
     {check_in_2, OUT_SETTLING, 1600.0 * 9.81 * 1e-8 / 18e-3, 1e-14,
      "Stokes velocity U_St = 2 eps a^2 g / (9 nu_C) (Nigam eq 2.25), exact at phi = 0"},
 };
@@ -122,8 +122,8 @@ static const sl_closure_desc nigam = {
         "schiller_naumann = rowe: (3/4) C_D rho_f u_t^2/d = |rho_s - rho_f| g;  d = sphericity d_p;  "
         "Kynch flux = phi settling_velocity",
     .reference =
-        "Nigam (1999) Numerical Modeling of Suspension Flows, PhD thesis, MIT, eqs 2.18, 2.20, 2.25, 2.36 "
-        "(digest of seed 002 sections 1.4, 1.7); Krieger & Dougherty (1959) Trans. Soc. Rheol. 3:137",
+        "Nigam (1999) Numerical Modeling of Suspension Flows, PhD thesis, MIT, eqs 2.18, 2.20, 2.25, 2.36; "
+        "Krieger & Dougherty (1959) Trans. Soc. Rheol. 3:137",
     .validity =
         "quasi-steady creeping motion of the particles relative to the fluid (particle Re << 1 with the "
         "default Stokes u_t), 0 <= phi <= phi_max (phi > phi_max is refused); f -> 0 at phi_max",

@@ -82,13 +82,13 @@ static const sl_field_desc outputs[] = {
 };
 
 /* 1. phi = 0: Stokes terminal velocity, exact: 1600 * 9.81 * 1e-8 / 18e-3.
- * 2. (1 - 0.2)^4.65 = 0.3543, digest of seed 002 section 1.7 table (RZ column). */
+ * 2. (1 - 0.2)^4.65 = 0.3543 (Richardson & Zaki 1954). */
 static const double check_in_0[N_IN] = {0.0, 1e-4, 1.0, 2600.0, 1000.0, 1e-3, 9.81, 0.1};
 static const double check_in_1[N_IN] = {0.2, 1e-4, 1.0, 2600.0, 1000.0, 1e-3, 9.81, 0.1};
 static const sl_check_point checks[] = {
     {check_in_0, OUT_SETTLING, 1600.0 * 9.81 * 1e-8 / 18e-3, 1e-14,
      "Stokes (1851) terminal velocity (rho_s - rho_f) g d^2 / (18 mu), exact at phi = 0"},
-    {check_in_1, OUT_HINDRANCE, 0.3543, 2e-4, "Nigam (1999) digest of seed 002, 1.7 table: RZ (1-0.2)^4.65 = 0.3543"},
+    {check_in_1, OUT_HINDRANCE, 0.3543, 2e-4, "Richardson & Zaki (1954): (1-0.2)^4.65 = 0.3543"},
 };
 
 /* Richardson & Zaki (1954) exponent from Re_t and d/D. */

@@ -4,8 +4,8 @@
  *   N_mu = -K_mu a^2 shear_rate phi^2 grad(ln mu)         (viscosity gradients)
  * Phillips, Armstrong, Brown, Graham & Abbott (1992) Phys. Fluids A 4:30,
  * with K_c = 0.41, K_mu = 0.62 fitted to Couette data; a is the
- * particle RADIUS (d_p / 2). Nigam (1999) eqs 2.28-2.30 (digest of seed 002,
- * sections 1.5 and 4.5) use the same flux, expanded with K_gammadot = K_c:
+ * particle RADIUS (d_p / 2). Nigam (1999) eqs 2.28-2.30 (and
+ * section 4.5) use the same flux, expanded with K_gammadot = K_c:
  *   N = -a^2 [K_c phi^2 grad(g) + (K_c phi g + K_mu phi^2 g mu'/mu) grad(phi)].
  *
  * Outputs (what the host multiplies):

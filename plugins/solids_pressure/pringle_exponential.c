@@ -2,7 +2,7 @@
  * from a logarithmic compressibility -d eps_v / dP_s = A / P_s:
  *   P_s = p_ref exp[ (1/A) (1 - (1 - nbar)/(1 - n)) ],   n = 1 - phi (porosity),
  * Pringle (2001) PhD thesis, McMaster University, eq 4.30 (consistent with
- * the derivation eqs 3.41-3.50; digest of seed 000, section 2.5), with A the
+ * the derivation eqs 3.41-3.50), with A the
  * "flexibility" and nbar the reference porosity at which P_s = p_ref.
  * MISPRINT: eqs 3.51 and 3.54 print the ratio inverted,
  * exp[(1/A)(1 - (1-n)/(1-nbar))], which would make P_s fall under
@@ -40,14 +40,14 @@ static const sl_field_desc outputs[] = {
     {"p_s", "Pa", 0, 0, 0, 0, "solid (granular component) pressure"},
 };
 
-/* Digest of seed 000, section 2.5 table (eq 4.30 form, A = 0.015, nbar = 0.5),
- * printed to 3 significant figures. */
+/* Eq 4.30 with A = 0.015, nbar = 0.5 (the values of Pringle's Figs 3.12-3.13),
+ * to 3 significant figures. */
 static const double check_in_0[N_IN] = {0.55}; /* n = 0.45 */
 static const double check_in_1[N_IN] = {0.60}; /* n = 0.40 */
 static const double check_in_2[N_IN] = {0.50}; /* n = nbar */
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_P_S, 429.0, 2e-3, "Pringle (2001) eq 4.30, digest 000 section 2.5 table: P_s = 429 at n = 0.45"},
-    {check_in_1, OUT_P_S, 6.69e4, 2e-3, "Pringle (2001) eq 4.30, digest 000 section 2.5 table: P_s = 6.69e4 at n = 0.40"},
+    {check_in_0, OUT_P_S, 429.0, 2e-3, "Pringle (2001) eq 4.30, A = 0.015, nbar = 0.5: P_s = 429 at n = 0.45"},
+    {check_in_1, OUT_P_S, 6.69e4, 2e-3, "Pringle (2001) eq 4.30, A = 0.015, nbar = 0.5: P_s = 6.69e4 at n = 0.40"},
     {check_in_2, OUT_P_S, 1.0, 1e-14, "Pringle (2001) eq 3.50 normalisation: P_s(nbar) = 1, exact"},
 };
 

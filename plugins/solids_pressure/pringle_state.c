@@ -38,14 +38,14 @@ static const sl_field_desc outputs[] = {
     {"p_s", "Pa", 0, 0, 0, 0, "solid (granular component) pressure"},
 };
 
-/* Digest of seed 000, section 2.5 tables (eq 4.30 form), to their 3 figures. */
+/* Pringle (2001) eq 4.30 with A = 0.015, nbar = 0.5, to 3 significant figures. */
 static const double check_in_0[N_IN] = {0.55, 0.5};  /* n = 0.45, A = 0.015 */
 static const double check_in_1[N_IN] = {0.60, 0.5};  /* n = 0.40 */
 static const double check_in_2[N_IN] = {0.50, 0.5};  /* n = nbar */
 static const double check_in_3[N_IN] = {0.70, 0.75}; /* phi/(1 - nbar) = 2.8: exp((1 - 1/2.8)/0.015) */
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_P_S, 429.0, 2e-3, "Pringle (2001) eq 4.30, digest 000 section 2.5 table: P_s = 429 at n = 0.45"},
-    {check_in_1, OUT_P_S, 6.69e4, 2e-3, "Pringle (2001) eq 4.30, digest 000 section 2.5 table: P_s = 6.69e4 at n = 0.40"},
+    {check_in_0, OUT_P_S, 429.0, 2e-3, "Pringle (2001) eq 4.30, A = 0.015, nbar = 0.5: P_s = 429 at n = 0.45"},
+    {check_in_1, OUT_P_S, 6.69e4, 2e-3, "Pringle (2001) eq 4.30, A = 0.015, nbar = 0.5: P_s = 6.69e4 at n = 0.40"},
     {check_in_2, OUT_P_S, 1.0, 1e-14, "Pringle (2001) eq 3.50 normalisation: P_s(nbar) = 1, exact"},
     {check_in_3, OUT_P_S, 4.0984595e18, 1e-7, "eq 4.30 at n = 0.3, nbar = 0.75: exp((1 - 0.25/0.7)/0.015), by hand"},
 };

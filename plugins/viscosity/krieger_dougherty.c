@@ -1,8 +1,7 @@
 /* Krieger & Dougherty (1959) viscosity of a concentrated suspension,
  *   mu = mu_f (1 - phi/phi_max)^(-[eta] phi_max),
  * Krieger & Dougherty (1959) Trans. Soc. Rheol. 3:137; the form used by
- * Nigam (1999) eq 2.18 with phi_max = 0.68 and [eta] = 2.5 (digest of seed
- * 002, section 1.3; K = 2.6765 in its migration runs, [eta] phi_max = 1.82).
+ * Nigam (1999) eq 2.18 with phi_max = 0.68 and [eta] = 2.5 (K = 2.6765 in its migration runs, [eta] phi_max = 1.82).
  * First order: mu_f (1 + [eta] phi), the Einstein limit for [eta] = 2.5.
  * The law diverges at phi = phi_max: phi >= phi_max is refused with the
  * recoverable code so that the host can cut the step. */
@@ -35,17 +34,17 @@ static const sl_field_desc outputs[] = {
     {"viscosity", "Pa s", 0, 0, 0, 0, "effective dynamic viscosity of the suspension"},
 };
 
-/* Nigam (1999) digest of seed 002, section 1.7 table: mu(alpha) for K = 2.5,
- * alpha_m = 0.68, printed to 5 significant figures. */
+/* Nigam (1999) eq 2.18: mu(alpha) for K = 2.5, alpha_m = 0.68, to 5
+ * significant figures. */
 static const double check_in_0[N_IN] = {0.10, 1e-3};
 static const double check_in_1[N_IN] = {0.30, 1e-3};
 static const double check_in_2[N_IN] = {0.50, 1e-3};
 static const double check_in_3[N_IN] = {0.60, 1e-3};
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_VISCOSITY, 1.3105e-3, 1e-4, "Nigam (1999) digest 002 section 1.7 table: mu = 1.3105 at alpha = 0.10"},
-    {check_in_1, OUT_VISCOSITY, 2.6893e-3, 1e-4, "Nigam (1999) digest 002 section 1.7 table: mu = 2.6893 at alpha = 0.30"},
-    {check_in_2, OUT_VISCOSITY, 9.5786e-3, 1e-4, "Nigam (1999) digest 002 section 1.7 table: mu = 9.5786 at alpha = 0.50"},
-    {check_in_3, OUT_VISCOSITY, 38.020e-3, 1e-4, "Nigam (1999) digest 002 section 1.7 table: mu = 38.020 at alpha = 0.60"},
+    {check_in_0, OUT_VISCOSITY, 1.3105e-3, 1e-4, "Nigam (1999) eq 2.18, K = 2.5: mu = 1.3105 at alpha = 0.10"},
+    {check_in_1, OUT_VISCOSITY, 2.6893e-3, 1e-4, "Nigam (1999) eq 2.18, K = 2.5: mu = 2.6893 at alpha = 0.30"},
+    {check_in_2, OUT_VISCOSITY, 9.5786e-3, 1e-4, "Nigam (1999) eq 2.18, K = 2.5: mu = 9.5786 at alpha = 0.50"},
+    {check_in_3, OUT_VISCOSITY, 38.020e-3, 1e-4, "Nigam (1999) eq 2.18, K = 2.5: mu = 38.020 at alpha = 0.60"},
 };
 
 static int evaluate(const void *state, const sl_eval_args *a) {

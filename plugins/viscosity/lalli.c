@@ -3,7 +3,7 @@
  * suspended solids, treated as one pseudo-continuum of variable density rho:
  *   mu = mu0(rho) + (1/2) tau0(rho) (S_II + eta)^(-1/2),   S_II = (1/2) S_ij S_ij,
  * Lalli, "Numerical solution of continuous model for fluid-particle flows"
- * (INSEAN, seed 003), eq 0.10, the regularisation of the Bingham law eq 0.9
+ * (INSEAN), eq 0.10, the regularisation of the Bingham law eq 0.9
  * (mu = mu0 + (1/2) tau0 S_II^(-1/2) where yielded). With the host's
  * shear_rate = sqrt(2 S_ij S_ij), S_II = shear_rate^2/4, so the unregularised
  * law is the usual mu0 + tau0/shear_rate and the regularised one is the

@@ -3,9 +3,9 @@
  * bed of Barnes sand (three gradings, one fit):
  *   mu_m / mu_l = exp{ exp[ phi / (k1 + k2 phi) ] },  k1 = 1.1721, k2 = -1.7172,
  * Pringle (2001) PhD thesis, McMaster University, eqs 3.36-3.37 (R^2 = 0.9724;
- * digest of seed 000, section 2.3), with phi = eps_s = 1 - n the solids
+ * eqs 3.36-3.37), with phi = eps_s = 1 - n the solids
  * fraction and mu_l the liquid viscosity (input mu_f).
- * Caveats, from the digest:
+ * Caveats:
  *  - as phi -> 0 the fit tends to e = 2.718 mu_l, NOT to mu_l: it has no
  *    Einstein limit and must not be used below the measured range (which the
  *    thesis does not state numerically; the figures are lost);
@@ -40,14 +40,14 @@ static const sl_field_desc outputs[] = {
     {"viscosity", "Pa s", 0, 0, 0, 0, "mixture dynamic viscosity mu_m"},
 };
 
-/* Digest of seed 000, section 2.3 table of the correlation, 3 significant figures. */
+/* The correlation (Pringle 2001, eqs 3.36-3.37) to 3 significant figures. */
 static const double check_in_0[N_IN] = {0.10, 1e-3};
 static const double check_in_1[N_IN] = {0.40, 1e-3};
 static const double check_in_2[N_IN] = {0.50, 1e-3};
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_VISCOSITY, 3.02e-3, 2e-3, "Pringle (2001) digest 000 section 2.3 table: mu_m/mu_l = 3.02 at eps_s = 0.10"},
-    {check_in_1, OUT_VISCOSITY, 9.78e-3, 1e-3, "Pringle (2001) digest 000 section 2.3 table: mu_m/mu_l = 9.78 at eps_s = 0.40"},
-    {check_in_2, OUT_VISCOSITY, 138e-3, 4e-3, "Pringle (2001) digest 000 section 2.3 table: mu_m/mu_l = 138 at eps_s = 0.50"},
+    {check_in_0, OUT_VISCOSITY, 3.02e-3, 2e-3, "Pringle (2001) eqs 3.36-3.37: mu_m/mu_l = 3.02 at eps_s = 0.10"},
+    {check_in_1, OUT_VISCOSITY, 9.78e-3, 1e-3, "Pringle (2001) eqs 3.36-3.37: mu_m/mu_l = 9.78 at eps_s = 0.40"},
+    {check_in_2, OUT_VISCOSITY, 138e-3, 4e-3, "Pringle (2001) eqs 3.36-3.37: mu_m/mu_l = 138 at eps_s = 0.50"},
 };
 
 static int evaluate(const void *state, const sl_eval_args *a) {

@@ -8,7 +8,7 @@
  * lambda^1.5 eta dU/dy and T = 0.013 sigma (lambda D)^2 (dU/dy)^2 for his wax
  * spheres; maximum static concentration C_0 = 0.74). Krampa (2009) p. 22
  * states the two coefficients the wrong way round ("K_i and K_v ... 2.25 and
- * 0.013 respectively"; digest section 8 item 8): k_v = 2.25, k_i = 0.013.
+ * 0.013 respectively"): k_v = 2.25, k_i = 0.013.
  *
  * Wall shear rate: a wall function, (dU/dy)_w = slip_wall / wall_distance,
  * the tangential solids velocity at the first node off the wall over its

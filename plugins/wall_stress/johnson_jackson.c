@@ -5,13 +5,13 @@
  *   theta_flux = (pi/6) sqrt(3) (phi/phi_max) rho_s g0 sqrt(theta)
  *                [ specularity u_slip^2 - (3/2)(1 - e_w^2) theta ]
  * Johnson & Jackson (1987) J. Fluid Mech. 176:67-93; Krampa (2009) eqs
- * 4.92-4.93 (digest section 2.9), which carry the 1/C_max factor, as do the
+ * 4.92-4.93, which carry the 1/C_max factor, as do the
  * forms of MFiX (calc_grbdry.f, BC_JJ_PS) and Fluent; the factor phi/phi_max
  * is the areal density of particles next to the wall relative to packing.
  * The frictional wall term tau_sn^f tan(phi_w) of (4.92) is not included
  * (it needs the frictional normal stress at the wall; add it in the host if
  * frictional stress is active). specularity = 0 gives free slip, 1 a rough
- * wall; no value is given by Krampa (digest section 5); peer-code examples
+ * wall; no value is given by Krampa (2009); peer-code examples
  * use 0.01-0.6.
  *
  * theta_flux is -kappa d(theta)/dn with n the unit normal pointing from the

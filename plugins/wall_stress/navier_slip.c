@@ -19,9 +19,9 @@
  * lambda_slip because it is finite at phi = 0 (free slip: 0).
  *
  * Check against Krampa (2009) Tables 5.3-5.4 (3.4 mm PVC, slip length from
- * the wall-node concentration c_sw): DG90 reproduces the tabulated lambda
- * (digest section 4.3); DL92 matches within about 5 % at 10 % solids and not
- * at 20-40 % (the thesis's routine used a smaller g0; digest section 8 item 3).
+ * the wall-node concentration c_sw): DG90 reproduces the tabulated lambda;
+ * DL92 matches within about 5 % at 10 % solids and not
+ * at 20-40 % (the thesis's routine used a smaller g0 than eqs 4.90-4.91 give).
  * tau_w is the magnitude of the stress on the solids, opposing the slip. */
 #include <math.h>
 #include <stddef.h>
@@ -81,7 +81,7 @@ static const sl_check_point checks_dg[] = {
 static const sl_check_point checks_dl[] = {
     {check_dl, OUT_INVERSE_SLIP_LENGTH, 1.0 / 0.0187, 0.06,
      "Krampa (2009) Table 5.4, DL92 10 %, c_sw = 0.023: lambda_slip = 0.0187 m (the thesis's routine is ~5 % "
-     "off eq 4.90, digest 8 item 3)"},
+     "off eq 4.90)"},
     {check_dl_exact, OUT_INVERSE_SLIP_LENGTH, 6493.799012768399, 1e-12,
      "eq 4.90-4.91 at phi = 0.3, d_p = 1 mm: 24 phi g0/(sqrt(3 pi) d_p), g0 = (1 - 0.3/0.63)^-1.575, "
      "evaluated independently (Python)"},

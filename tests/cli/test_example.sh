@@ -25,6 +25,8 @@ out=$("$sluice" closure eval my_power_law --set consistency=0.5 --set n=0.6 --at
 check "evaluated by name: 0.5 * 32^-0.4 = 0.125" '[ "$(tail -n 1 <<<"$out")" = "32,0.125" ]'
 check "closure index lists it" '"$sluice" closure index "$work/example" > /dev/null && grep -qx "viscosity my_power_law my_closure.so" "$work/example/closures.index"'
 check "passes the conformance battery" '"$sluice" check-closure "$work/example/my_closure.so" > "$work/check.log"'
+# sluice_add_closure_test(my_closure) in the example registers the battery as its ctest.
+check "the example's ctest runs the battery" 'ctest --test-dir "$work/example" > "$work/example_ctest.log" 2>&1 && grep -q "my_closure_check_closure .* Passed" "$work/example_ctest.log"'
 # A program embedding the core through sluice/sluice.h, built with the installed pkg-config file: the Stokes
 # cavity in 4 fixed BDF1 steps of 0.1 to t = 0.4.
 export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig:$work/prefix/lib64/pkgconfig:$work/prefix/lib/x86_64-linux-gnu/pkgconfig"

@@ -2,8 +2,8 @@
  * gidaspow, di_felice, syamlal_obrien, richardson_zaki_consistent, pringle.
  * Values against the formulas written independently here (per-particle
  * forces, pressure drops, a different arrangement of the algebra), the
- * Stokes-limit table of the digest of seed 000 (section 2.1.6), the Slis
- * kinematic reference of its section 4.3, dilute limits, the documented
+ * Stokes-limit values of Pringle's (2001) eqs 3.12 and 3.34 and of the
+ * consistent form, the Slis kinematic reference (Pringle 2001, section 5.1), dilute limits, the documented
  * jumps and the continuity of the blend, derivatives of the non-default
  * variants against central differences (the conformance battery covers the
  * defaults), and refused states. */
@@ -154,7 +154,7 @@ static void test_schiller_naumann(void) {
   CHECK(dKx(t, X_NONE, "slip", s) == 0.0); /* the documented convention at rest */
   s.slip = 1e-12;                          /* Re = 1e-9: Stokes to 0.15 Re^0.687 = 1e-7 */
   CHECK_CLOSE(Kx(t, X_NONE, s), 3600.0, 2e-7);
-  /* 3 mm nylon in 20 C water at its terminal velocity 87.9 mm/s (digest 000 section 4.3):
+  /* 3 mm nylon in 20 C water at its terminal velocity 87.9 mm/s (Pringle 2001, eqs 3.24-3.25):
    * K u_t = phi (rho_s - rho_f) g. */
   s = S(0.01, 0.0879, 998.2, 1.002e-3, 3e-3, 1.0);
   CHECK_CLOSE(Kx(t, X_NONE, s) * 0.0879, 0.01 * (1140.0 - 998.2) * 9.81, 2e-3);
@@ -183,7 +183,7 @@ static void test_ergun(void) {
     check_derivs(t, X_NONE, s);
     check_derivs(tp, X_NONE, s);
   }
-  /* Digest 000 section 2.1.6 table (Stokes limit, mu/d^2 = 1e3): 181.1, 135.0, 75.0, 40.0. */
+  /* Pringle (2001) eq 3.12 (Stokes limit, mu/d^2 = 1e3): 181.1, 135.0, 75.0, 40.0. */
   const double n_tab[] = {0.35, 0.40, 0.50, 0.5999}, k_tab[] = {181.1, 135.0, 75.0, 40.0};
   for (int i = 0; i < 4; ++i)
     CHECK_CLOSE(Kx(t, X_NONE, S(1.0 - n_tab[i], 0.0, 1000.0, 1e-3, 1e-3, 1.0)), k_tab[i] * 1e3, 0.0501 / k_tab[i]);
@@ -198,13 +198,14 @@ static double wen_yu_ref(st s, double m) {
   return 0.75 * cd_sn(re) * s.phi * eps * s.rho_f * s.slip * pow(eps, -m) / d;
 }
 
-/* The digest's Wen-Yu-consistent form: (3/4) C_D(Re) rho phi eps^-2.65 |slip| / d, Re on the slip. */
+/* The Wen-Yu-consistent form (Gidaspow 1994, in Pringle's variables): (3/4) C_D(Re) rho phi eps^-2.65 |slip| / d,
+ * Re on the slip. */
 static double wen_yu_interstitial_ref(st s, double m) {
   double d = s.psi * s.d_p, eps = 1.0 - s.phi, re = s.rho_f * s.slip * d / s.mu_f;
   return 0.75 * cd_sn(re) * s.rho_f * s.phi * pow(eps, -m) * s.slip / d;
 }
 
-/* The Stokes-limit table of the digest of seed 000, section 2.1.6: K/(mu/d^2)
+/* The Stokes-limit values K/(mu/d^2)
  * of the Wen-Yu-consistent form at porosity n. */
 static const double wy_n[] = {0.60, 0.70, 0.80, 0.90, 0.95};
 static const double wy_k[] = {27.9, 13.9, 6.50, 2.38, 1.03};
@@ -461,7 +462,7 @@ static void test_richardson_zaki_consistent(void) {
     CHECK(dKx(t, X_RHO_S_G, "slip", s) == 0.0);
   }
   CHECK_CLOSE(ut_sn_bisect(3e-3, 1140.0 - 998.2, 998.2, 1.002e-3, 9.81), 0.0879, 1e-3);
-  /* Digest 000 section 2.1.6 Stokes table (rho_s 2600, rho_f 1000): the Wen-Yu-consistent column. */
+  /* Stokes-limit values (rho_s 2600, rho_f 1000) of the Wen-Yu-consistent form. */
   for (int i = 0; i < 5; ++i) {
     st s = S(1.0 - wy_n[i], 0.02, 1000.0, 1e-3, 1e-3, 1.0);
     CHECK_CLOSE(Kx(t, X_RHO_S_G, s) / 1e3, wy_k[i], WY_TOL(i));
@@ -547,7 +548,7 @@ static void test_pringle(void) {
     check_derivs(t, X_RHO_S, s);
     check_derivs(tp, X_RHO_S, s);
   }
-  /* Digest 000 section 2.1.6 table, Stokes limit, rho_s 2600 / rho_f 1000. The printed column's
+  /* Pringle (2001) eq 3.34, Stokes limit, rho_s 2600 / rho_f 1000. The tabulated
    * 42.9 at n = 0.70 is 18 (1.625 - 0.7) 0.7^-2.65 = 42.845 rounded up: allowed 0.06. */
   const double pr_k[] = {71.4, 42.9, 26.8, 17.3, 13.9};
   for (int i = 0; i < 5; ++i) {
@@ -577,7 +578,7 @@ static void test_pringle(void) {
   st z = S(1e-9, 0.0, 1000.0, 1e-3, 1e-3, 1.0);
   CHECK_CLOSE(Kx(t, X_RHO_S, z) / 1e-9, 18.0e3, 1e-8);
   CHECK_CLOSE(Kx(tp, X_RHO_S, z), 18.0e3 * 1000.0 / 1600.0, 1e-8);
-  /* Slis et al. nylon I (digest 000 section 4.3 kinematic reference): steady U = 11.1 mm/s at
+  /* Slis et al. nylon I (Pringle 2001, Table 5.1; the kinematic reference): steady U = 11.1 mm/s at
    * n = 0.54 (printed Ergun) and 35.5 mm/s at n = 0.76; Gidaspow's Ergun gives 13.9 at 0.54, and the
    * printed dilute law 3.4 mm/s at 0.76 (U(n) falls across the switch). */
   CHECK_CLOSE(steady_U(t, 0.54, 3e-3, 1140.0, 998.2, 1.002e-3), 0.0111, 0.005);

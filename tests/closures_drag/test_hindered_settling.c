@@ -1,8 +1,8 @@
 /* Tests of the hindered_settling closures richardson_zaki, michaels_bolger,
  * nigam and vesilind: the terminal velocity (Stokes formula; the Schiller-Naumann /
- * Rowe force balance to 1e-14 and the digest 000 values for nylon spheres),
+ * Rowe force balance to 1e-14 and Pringle's (2001) values for nylon spheres),
  * the Richardson-Zaki (1954) and Garside & Al-Dibouni (1977) exponents at
- * published Re_t, f -> 1 as phi -> 0, the digest 002 table and Kynch flux
+ * published Re_t, f -> 1 as phi -> 0, Nigam's (1999) h(alpha) and Kynch flux
  * maximum for Nigam's law, derivatives against central differences, and
  * refused states. */
 #include <float.h>
@@ -105,7 +105,7 @@ static void test_terminal_velocity(void) {
     CHECK_CLOSE(ut(st, s), stokes_ut(s), RTOL);
   }
   hs s = H(0.0, 62.5e-6, 2460.0, 870.0, 5.86e-4);
-  s.psi = 0.088; /* Pringle's illite, d' = 5.5 um: 4.47e-5 m/s (digest 000 section 4.4) */
+  s.psi = 0.088; /* Pringle's illite, d' = 5.5 um: 4.47e-5 m/s (Pringle 2001, Table 5.4, eq 5.9) */
   CHECK_CLOSE(vs(st, s), 4.47e-5, 2e-3);
   CHECK(vs(st, H(0.0, 2e-5, 500.0, 1000.0, 1e-3)) < 0.0);
   /* Schiller-Naumann / Rowe: the force balance (3/4) C_D rho_f u^2 / d = |drho| g holds to 1e-14
@@ -139,7 +139,7 @@ static void test_terminal_velocity(void) {
     CHECK(u >= prev);
     prev = u;
   }
-  /* Digest 000 section 4.3: nylon (1140) in 20 C water, 3/4/5 mm: 87.9 mm/s (Re 263), 112.6 (449),
+  /* Slis et al. (1958) nylon (Pringle 2001, Table 5.1) in 20 C water, 3/4/5 mm: 87.9 mm/s (Re 263), 112.6 (449),
    * 135.8 (677). */
   const double dn[] = {3e-3, 4e-3, 5e-3}, un[] = {0.0879, 0.1126, 0.1358}, ren[] = {263.0, 449.0, 677.0};
   for (int i = 0; i < 3; ++i) {
@@ -172,7 +172,7 @@ static sl_tc *rz_at_re(const char *exponent, double re_t) {
 
 static void test_richardson_zaki(void) {
   sl_tc *t = sl_tc_open("hindered_settling", "richardson_zaki", NULL);
-  /* Values against u_t (1-phi)^n at several states; f -> 1 as phi -> 0; the digest 002 RZ column. */
+  /* Values against u_t (1-phi)^n at several states; f -> 1 as phi -> 0; Richardson & Zaki (1954). */
   const double phis[] = {0.0, 1e-9, 0.05, 0.2, 0.45, 0.7, 1.0};
   for (int i = 0; i < 7; ++i) {
     hs s = H(phis[i], 1e-4, 2600.0, 1000.0, 1e-3);
@@ -315,7 +315,7 @@ static void test_nigam(void) {
     CHECK_CLOSE(vs(t, s), stokes_ut(s) * nigam_ref(phis[i], 0.68, 2.5), 1e-11);
     check_derivs(t, s);
   }
-  /* Digest 002 section 1.7 table: mu and h at K = 2.5, alpha_m = 0.68. */
+  /* Nigam (1999) eqs 2.18 and 2.36: mu and h at K = 2.5, alpha_m = 0.68. */
   const double a_tab[] = {0.05, 0.10, 0.20, 0.30, 0.40, 0.50, 0.60, 0.65};
   const double h_tab[] = {0.7926, 0.6181, 0.3540, 0.1822, 0.0797, 0.0261, 0.0042, 0.0006};
   for (int i = 0; i < 8; ++i)
@@ -326,7 +326,7 @@ static void test_nigam(void) {
   CHECK(fh(t, H(0.68, 1e-4, 2600.0, 1000.0, 1e-3)) == 0.0 && sl_tc_status(t) == 0);
   CHECK(dev(t, "hindrance", H(0.68, 1e-4, 2600.0, 1000.0, 1e-3)) == 0.0);
   /* Kynch flux F = alpha h(alpha) (U_St = 1): maximum 0.07183 at alpha = 0.1732 (K = 2.5) and
-   * 0.06938 at 0.1679 (K = 2.6765) (digest 002 section 1.7). */
+   * 0.06938 at 0.1679 (K = 2.6765) (from Nigam 1999, eq 2.36). */
   const char *kp[] = {"intrinsic_viscosity=2.5", "intrinsic_viscosity=2.6765"};
   const double amax[] = {0.1732, 0.1679}, fmax_[] = {0.07183, 0.06938};
   for (int k = 0; k < 2; ++k) {
@@ -345,7 +345,7 @@ static void test_nigam(void) {
     CHECK_CLOSE(a * vs(c, H(a, 1e-4, 2600.0, 1000.0, 1e-3)), fmax_[k], 0.000005 / fmax_[k]);
     sl_tc_close(c);
   }
-  /* Top-interface speed of the alpha_0 = 0.1 batch test = h(0.1) = 0.61808 (digest 002 section 4.6). */
+  /* Top-interface speed of the alpha_0 = 0.1 batch test = h(0.1) = 0.61808 (Kynch, Nigam's eq 2.36). */
   CHECK_CLOSE(fh(t, H(0.1, 1e-4, 2600.0, 1000.0, 1e-3)), 0.61808, 1e-5);
   /* Buoyant particles (the thesis's light mixtures) rise: u_St < 0. */
   CHECK(vs(t, H(0.1, 1e-4, 900.0, 1000.0, 1e-3)) < 0.0);

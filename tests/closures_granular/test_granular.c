@@ -88,7 +88,7 @@ static kt_ref lun_ref(double e, double phi, double g, double th, double rho, dou
   double g1 = br / (eta * (2.0 - eta) * g);
   double g2 = 8.0 * phi / (5.0 * (2.0 - eta)) * br + 768.0 / (25.0 * PI) * eta * phi * phi * g;
   r.mu_s = mu_dil * (g1 + g2);
-  /* eqs 5.11-5.13 with g4 corrected (phi factor, no 1/g0; digest 2.5) */
+  /* eqs 5.11-5.13 with g4 corrected (phi factor, no 1/g0; a misprint in Krampa 2009) */
   double w = 41.0 - 33.0 * eta, bk = 1.0 + 2.4 * eta * eta * (4.0 * eta - 3.0) * phi * g;
   double g3 = 8.0 / (eta * w * g) * bk;
   double g4 = 96.0 * phi / (5.0 * w) * (bk + 16.0 / (15.0 * PI) * eta * w * phi * g);
@@ -272,7 +272,7 @@ static void test_continuation(void) {
       }
       sl_tc_close(t);
     }
-  /* CFX-10's near-packing polynomial (Krampa 2009 eq 6.2; digest 2.7) is the
+  /* CFX-10's near-packing polynomial (Krampa 2009 eq 6.2) is the
    * Taylor continuation of the Gidaspow g0 with C_max = 0.6 at C_max - 0.001:
    * C_0 = 1079.4, C_1 = 1.080e6. */
   sl_tc *t = sl_tc_open("granular", "gidaspow", "phi_max=0.6", "delta=0.001", NULL);

@@ -311,7 +311,7 @@ static void test_navier_slip(void) {
   }
   /* Table 5.4, DL92: within 5 % in the first 10 % row, within 12 % in the
    * other 10 % rows, and systematically below the tabulated values (the
-   * thesis's routine used a smaller g0 than eq 4.91; digest section 8 item 3). */
+   * thesis's routine used a smaller g0 than eq 4.91). */
   const double c_dl[] = {0.023, 0.036, 0.046, 0.054, 0.060, 0.131, 0.219},
                l_dl[] = {0.0187, 0.0118, 0.0091, 0.0078, 0.0070, 0.0030, 0.0017};
   for (int i = 0; i < 7; ++i) {

@@ -1,7 +1,7 @@
 /* Tests of the migration closure phillips: the Phillips et al. (1992)
  * constants, the a = d_p/2 convention, derivatives, refused states, and the
  * zero-flux steady state phi shear_rate mu^(K_mu/K_c) = const (Nigam 1999
- * eq 4.199, digest of seed 002 section 4.5) assembled the way a host would,
+ * eq 4.199, section 4.5) assembled the way a host would,
  * N = -D_c grad(shear_rate phi) - D_mu grad(ln mu), with the viscosity from
  * krieger_dougherty. */
 #include <math.h>

@@ -1,6 +1,6 @@
 /* Tests of the solids_pressure closures pringle_exponential and
  * gidaspow_elastic: values against the formulas written independently,
- * the digest's tabulated Pringle (2001) values, dp_s/dphi, limits and
+ * Pringle's (2001) eq 4.30 tabulated, dp_s/dphi, limits and
  * refused states. */
 #include <float.h>
 #include <math.h>
@@ -78,9 +78,10 @@ static void test_pringle_values(void) {
   sl_tc_close(t);
 }
 
-/* Digest 000 section 2.5 tables. Tolerance: one unit in the last printed
+/* Pringle (2001) eq 4.30, tabulated for the sand (A = 0.015, nbar = 0.5) and
+ * illite (Table 5.4: A = 0.1075, nbar = 0.95) parameters. Tolerance: one unit in the last printed
  * digit (two illite entries, 62.4 for 62.450 and 396 for 395.47, are off by
- * more than half a unit: rounding slips in the digest). */
+ * more than half a unit: rounding slips in the table). */
 static void test_pringle_tables(void) {
   sl_tc *t = sl_tc_open("solids_pressure", "pringle_exponential", NULL);
   const double sand[][3] = {{0.55, 6.1e-4, 0.1e-4}, {0.52, 0.062, 0.001}, {0.50, 1.0, 1e-12}, {0.49, 3.70, 0.01},
@@ -88,9 +89,9 @@ static void test_pringle_tables(void) {
                             {0.44, 1265.0, 1.0},    {0.42, 9852.0, 1.0},  {0.40, 6.69e4, 100.0}};
   for (size_t i = 0; i < sizeof sand / sizeof sand[0]; ++i) {
     double v = ps(t, 1.0 - sand[i][0]);
-    CHECK_MSG(fabs(v - sand[i][1]) <= sand[i][2], "sand n = %g: p_s = %.6g, digest %g", sand[i][0], v, sand[i][1]);
+    CHECK_MSG(fabs(v - sand[i][1]) <= sand[i][2], "sand n = %g: p_s = %.6g, table %g", sand[i][0], v, sand[i][1]);
   }
-  /* the check points quoted in the brief, to their printed precision */
+  /* the check points of the tables above, to their printed precision */
   CHECK_CLOSE(ps(t, 0.55), 429.0, 2e-3);
   CHECK_CLOSE(ps(t, 0.60), 6.69e4, 2e-3);
   sl_tc_close(t);
@@ -101,7 +102,7 @@ static void test_pringle_tables(void) {
                               {0.88, 227.0, 1.0},     {0.87, 306.0, 1.0}, {0.86, 396.0, 1.0}, {0.85, 494.0, 1.0}};
   for (size_t i = 0; i < sizeof illite / sizeof illite[0]; ++i) {
     double v = ps(t, 1.0 - illite[i][0]);
-    CHECK_MSG(fabs(v - illite[i][1]) <= illite[i][2], "illite n = %g: p_s = %.6g, digest %g", illite[i][0], v,
+    CHECK_MSG(fabs(v - illite[i][1]) <= illite[i][2], "illite n = %g: p_s = %.6g, table %g", illite[i][0], v,
               illite[i][1]);
   }
   CHECK_CLOSE(ps(t, 0.10), 105.0, 5e-3);

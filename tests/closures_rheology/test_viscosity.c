@@ -101,7 +101,7 @@ static void test_krieger_dougherty(void) {
     double d = mu * 2.5 * pow(1 - phi / 0.68, -2.5 * 0.68 - 1);
     CHECK_CLOSE(deriv_phi(t, phi, mu), d, 1e-11);
   }
-  /* Nigam (1999) digest 002 section 1.7 table, 5 significant figures. */
+  /* Nigam (1999) eq 2.18 (K = 2.5, alpha_m = 0.68), 5 significant figures. */
   const double tab[][2] = {{0.05, 1.1386}, {0.10, 1.3105}, {0.20, 1.8078}, {0.30, 2.6893},
                            {0.40, 4.5196}, {0.50, 9.5786}, {0.60, 38.020}, {0.65, 201.45}};
   for (int i = 0; i < 8; ++i) CHECK_CLOSE(eval_phi(t, tab[i][0], 1.0), tab[i][1], 5e-5);
@@ -168,14 +168,14 @@ static void test_pringle_granular(void) {
     double d = mu * exp(exp(inner) + inner) * k1 / ((k1 + k2 * phi) * (k1 + k2 * phi));
     CHECK_CLOSE(deriv_phi(t, phi, mu), d, RTOL);
   }
-  /* Digest 000 section 2.3 table, 3 significant figures (half a unit in the
+  /* Pringle (2001) eqs 3.36-3.37, 3 significant figures (half a unit in the
    * last printed digit). 0.55 lies outside the Newtonian range: refused. */
   const double tab[][3] = {{0.01, 2.74, 0.005}, {0.05, 2.85, 0.005}, {0.10, 3.02, 0.005}, {0.20, 3.57, 0.005},
                            {0.30, 4.85, 0.005}, {0.35, 6.33, 0.005}, {0.40, 9.78, 0.005}, {0.45, 21.9, 0.05},
                            {0.50, 138.0, 0.5}};
   for (int i = 0; i < 9; ++i) {
     double v = eval_phi(t, tab[i][0], 1.0);
-    CHECK_MSG(fabs(v - tab[i][1]) <= tab[i][2], "pringle_granular(%g) = %g, digest %g", tab[i][0], v, tab[i][1]);
+    CHECK_MSG(fabs(v - tab[i][1]) <= tab[i][2], "pringle_granular(%g) = %g, table %g", tab[i][0], v, tab[i][1]);
   }
   check_phi_refused(t, 0.55);
   check_phi_refused(t, NAN);

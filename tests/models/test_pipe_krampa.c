@@ -18,7 +18,7 @@
  * model is the dispersed phase's zero-equation model here) and his model A
  * (no kinetic theory; Bouillard's solids pressure, gidaspow_elastic with G0 =
  * 1 Pa, C = 600, phi_max = 0.63; mu_s = 1e-8 Pa s). Asserted for both, with
- * the targets of the thesis's digest: the
+ * these targets: the
  * calibration's own table has every average within 10 % at V >= 2.5 m/s and
  * 20 % below; in every other table (25-45 %, not used in the fit) up-flow
  * and down-flow are each within 10 % of their difference; every run

@@ -1,5 +1,5 @@
 /* The two-fluid pipe (core/models/pipe) with solids, on configs/vertical_pipe.ini
- * (Krampa 2009 case E1: 0.5 mm glass beads, 25 %, V = 3.02 m/s):
+ * (Krampa 2009, Chapter 3 experiments: 0.5 mm glass beads, 25 %, V = 3.02 m/s):
  *  - what the discrete equations hold exactly: the bulk velocity, the solids
  *    inventory, and the mixture's momentum, -dP/dz = 4 (tau_fw + tau_sw)/D -
  *    rho_m g_z (Krampa 2009 eq 2.1; the faces' stresses telescope, the drag

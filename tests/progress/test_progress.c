@@ -1,4 +1,4 @@
-/* The run summary (the brief's example verbatim, percentages adding up to
+/* The run summary (a fixed example verbatim, percentages adding up to
  * 100 over random splits, one line, truncation) and the progress line (off
  * when not a terminal, SLUICE_PROGRESS, at most 10 redraws per second on a
  * fake clock, the time-left estimate, clearing), and the clocks. */

@@ -1,7 +1,7 @@
 /* Settling in a vessel whose side walls lean at gamma from the vertical
  * (the Boycott effect): the kinematic theory of Ponder, Nakamura & Kuroda
  * (PNK) and its correction for the clear-fluid layer under the
- * downward-facing wall (Nigam 1999, section 4.2; digest of seed 002, 4.2).
+ * downward-facing wall (Nigam 1999, section 4.2).
  * Lengths in units of the vessel's height, time in units of H / u_t.
  *
  * The vessel is a parallelogram of horizontal width w = L / cos(gamma)
@@ -18,8 +18,8 @@
  *
  * Part of V is the layer that carries it up the wall, which PNK leave out
  * (Nigam's reason for his front's lag). With the layer's thickness from the
- * quartic-profile solution (4.117), measured from the sediment (digest:
- * xi -> xi - S_s / cos(gamma)),
+ * quartic-profile solution (4.117), measured from the sediment
+ * (xi -> xi - S_s / cos(gamma)),
  *
  *   delta(xi) = (Re/Lambda)^(1/2) A sin(gamma) (320 xi / (81 cos(gamma)))^(1/2),
  *

@@ -1,6 +1,6 @@
 /* The asymptotic particle fraction of a light-particle suspension spun up
  * from rest in a closed cylinder (Amberg & Ungarish 1993; Nigam 1999,
- * section 4.1, eqs 4.51-4.61; digest of seed 002, 4.1), in the interior's
+ * section 4.1, eqs 4.51-4.61), in the interior's
  * spun-up region e^-tau < r < r_s, for small Ekman number.
  *
  * Spin-up time tau = (mu(alpha0) E)^(1/2) t / H. Wedemeyer's interior swirl
@@ -13,8 +13,8 @@
  *   1 - e^-2tau0 = (1 - 2 z / H) (1 - e^-2tau)        (the height z reached at tau)
  *
  * kappa = H eps beta / (mu(alpha0) E)^(1/2) is the centrifugal separation
- * speed's coefficient in tau units (the digest's note: -0.8735 for the
- * thesis's parameters). The characteristics' end radius grows with r0, so
+ * speed's coefficient in tau units (-0.8735 for the thesis's parameters,
+ * computed from the primitive parameters). The characteristics' end radius grows with r0, so
  * alpha(r) is found by bisection on r0 (Nigam's algorithm, 4.64), each
  * characteristic integrated by classical RK4 (the right-hand side is smooth
  * for tau0 > 0). */

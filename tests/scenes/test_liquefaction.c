@@ -1,7 +1,6 @@
 /* configs/liquefaction.ini: a sand deposit built by settling in the 1-D
  * two-fluid column, shaken at its base by the synthetic 6 s record, run to
- * 3 minutes (Pringle 2001, thesis sections 5.4-5.5; digest of seed 000,
- * 4.6-4.7). Checked:
+ * 3 minutes (Pringle 2001, thesis sections 5.4-5.5). Checked:
  * - the deposit at rest: the discrete effective-stress balance face by face,
  *   the pore pressure hydrostatic but for the weight of the surface cell's
  *   solids, which the column's scheme holds on the fluid; the total vertical

@@ -7,7 +7,7 @@
  *  - Richardson-Zaki with its packing cut-off at phi0 = 0.05, 0.1, 0.2: the
  *    top interface (the written interface height) and the bottom shock fall
  *    and rise at the exact speeds within 1 % on 200 cells;
- *  - Nigam's flux (seed 002, digest 4.6), where the sediment forms through a
+ *  - Nigam's (1999) flux (eq 2.36), where the sediment forms through a
  *    contact shock and a rarefaction fan: the shock speed within 1 %, and
  *    the fan's profile below it;
  *  - the L1 error of phi falls at first order with refinement (50 to 400
@@ -17,8 +17,8 @@
  *  - bad input: phi0 above phi_max is refused with the key and the range.
  * migration_couette (shear-induced migration, Phillips et al. 1992) against
  * Nigam's steady state phi gammadot mu^(K_mu/K_c) = const (eq 4.206, solved
- * here by bisection; it reproduces the digest's table): |dphi| <= 0.01 in
- * every cell after 1600 revolutions, the swirl within 0.01 of the digest's
+ * here by bisection; it reproduces the reference table): |dphi| <= 0.01 in
+ * every cell after 1600 revolutions, the swirl within 0.01 of the reference
  * table, and the mean fraction conserved to round-off. migration_poiseuille
  * (a pipe slice periodic along its axis) against eq 4.210 the same way.
  * boycott (a vessel inclined 45 degrees, the scene's 24 x 32 mesh,
@@ -30,9 +30,9 @@
  * the stream function is zero on all walls. spinup
  * (light particles in a spinning cylinder, slip along the fluid's
  * acceleration, tests/scenes/spinup_asymptotic.h): the asymptotic theory
- * against the digest's table, the kinematic shock within 0.03 of it at four
+ * against the reference table, the kinematic shock within 0.03 of it at four
  * heights, the mixture region within 0.02 of the characteristics at z =
- * 0.1. wave_bed (seed 003's pseudo-continuum): solids
+ * 0.1. wave_bed (the pseudo-continuum of Lalli, INSEAN): solids
  * conserved and bounded, the soft bed yields and a stiff one does not. */
 #include <math.h>
 #include <stdio.h>
@@ -173,7 +173,7 @@ static void richardson_zaki_step(void) {
 static void nigam_fan(void) {
   kynch k;
   CHECK(kx_init(&k, kx_nigam(stokes_ut(), 2.5, 0.68), H, 0.1) == 0);
-  /* digest of seed 002, section 4.6: phi* = 0.5299, shock 0.12289 u_t, fronts meet at 1.3496 H / u_t */
+  /* Kynch's construction for Nigam's flux (eq 2.36): phi* = 0.5299, shock 0.12289 u_t, fronts meet at 1.3496 H / u_t */
   CHECK_MSG(fabs(k.phis - 0.5299) < 1e-4, "phi* %.6f", k.phis);
   CHECK_MSG(fabs(k.sigma / stokes_ut() - 0.12289) < 1e-5, "shock speed %.6f u_t", k.sigma / stokes_ut());
   CHECK_MSG(fabs(k.t1 * stokes_ut() / H - 1.3496) < 1e-4, "meeting time %.6f H/u_t", k.t1 * stokes_ut() / H);
@@ -233,7 +233,7 @@ static void refinement(void) {
 
 /* ---- shear-induced migration, wide-gap Couette ------------------------------ */
 
-/* Nigam (1999) eq 4.206 (digest of seed 002, 4.5): the steady phi(r) with
+/* Nigam (1999) eq 4.206 (section 4.5): the steady phi(r) with
  * phi_w at the inner wall R_i, exponent 1.82 (K_mu/K_c - 1). */
 static const double Ri = 0.2689, am = 0.68, mig_exp = 1.82 * (0.62 / 0.41 - 1.0);
 
@@ -266,7 +266,7 @@ static double couette_mean(double aw) {
 }
 
 static void migration_couette(void) {
-  /* the inner-wall fraction that holds the mean 0.55 (digest: 0.28326) */
+  /* the inner-wall fraction that holds the mean 0.55 (by bisection: 0.28326) */
   double lo = 0.05, hi = 0.55;
   for (int it = 0; it < 80; ++it) {
     double aw = 0.5 * (lo + hi);
@@ -275,7 +275,7 @@ static void migration_couette(void) {
   }
   double aw = 0.5 * (lo + hi);
   CHECK_MSG(fabs(aw - 0.28326) < 2e-5, "phi_w = %.6f", aw);
-  /* the digest's table (computed with phi_w = 0.283) */
+  /* the reference table (eq 4.206 with phi_w = 0.283) */
   static const double tr[8] = {0.30, 0.40, 0.50, 0.60, 0.70, 0.80, 0.90, 1.00};
   static const double tphi[8] = {0.3208, 0.4208, 0.4907, 0.5385, 0.5716, 0.5951, 0.6120, 0.6246};
   static const double tv[8] = {0.7115, 0.2620, 0.1087, 0.0491, 0.0231, 0.0105, 0.0039, 0.0};
@@ -307,7 +307,7 @@ static void migration_couette(void) {
          f.time);
   CHECK_MSG(worst <= 0.01, "steady phi off by %.4f at r = %.3f", worst, where);
   CHECK_MSG(fabs(scalar(out, "solids_conservation_error", f.time)) < 1e-12, "mean phi not conserved");
-  /* the swirl against the digest's table (Nigam's tolerance 0.01 of the wall speed) */
+  /* the swirl against the reference table (Nigam's tolerance 0.01 of the wall speed) */
   double xy[16], v[8];
   for (int i = 0; i < 8; ++i) xy[2 * i] = tr[i] < 1.0 ? tr[i] : 1.0, xy[2 * i + 1] = 0.0625;
   sl_sample s;
@@ -357,7 +357,7 @@ static double clear_volume(const char *out, double t, double phi0) {
 
 static void boycott(void) {
   const boycott_vessel *v = &boycott_scene;
-  /* the theory against the digest's table (A, PNK's front, the sediment at t = 0.3) */
+  /* the theory against the reference table (A, PNK's front, the sediment at t = 0.3) */
   CHECK_MSG(fabs(boycott_A(v) - 0.618084) < 1e-6 && fabs(boycott_pnk_front(v, 0.3) - 0.6062) < 1e-4 &&
                 fabs(boycott_sediment(v, 0.3) - 0.0320) < 1e-4,
             "A %.6f, z_F(0.3) %.4f, S_s(0.3) %.4f", boycott_A(v), boycott_pnk_front(v, 0.3), boycott_sediment(v, 0.3));
@@ -398,7 +398,7 @@ static void boycott(void) {
   /* PNK's production, A times the interface's horizontal projection: 0.970-0.976 of it (0.975-0.982 on 48 x 64) */
   CHECK_MSG(worst_prod <= 0.05, "clear fluid off PNK's production by %.3f", worst_prod);
   /* the rest of the clear fluid is in the Boycott layer: 0.89 and 0.95 of (4.117)'s volume at t = 0.2 and 0.3
-     (0.91, 1.08 on 48 x 64); the digest gives that profile +-30 % */
+     (0.91, 1.08 on 48 x 64); that profile is expected within +-30 % */
   CHECK_MSG(worst_volume <= 0.3, "the layer's volume off (4.117) by %.3f", worst_volume);
   /* so the front is PNK's with the layer: within 0.001 and 0.016 (0.003, 0.027 on 48 x 64), where the layer's +-30 %
      is 0.036 and 0.026 of front; PNK's own z_F lags by 0.06-0.10 */
@@ -450,9 +450,9 @@ static int radial_centroids(const char *out, int n, double *rc, double *width) {
 
 /* Pipe flow, periodic along the axis: Nigam's steady state for r >= 0.2
  * (looser at the axis, where phi -> phi_max with an infinite slope), the
- * velocity against the digest's table within 1 %, the mean conserved. */
+ * velocity against the reference table within 1 %, the mean conserved. */
 static void migration_poiseuille(void) {
-  double lo = 0.05, hi = 0.40; /* phi_w for the mean 2 int phi r dr = 0.40 (digest: 0.31825) */
+  double lo = 0.05, hi = 0.40; /* phi_w for the mean 2 int phi r dr = 0.40 (by bisection: 0.31825) */
   for (int it = 0; it < 80; ++it) {
     double aw = 0.5 * (lo + hi), sum = 0.0;
     for (int k = 0; k < 4000; ++k) {
@@ -508,7 +508,7 @@ static void migration_poiseuille(void) {
 
 /* ---- spin-up of a light-particle suspension ------------------------------------ */
 
-/* Digest of seed 002, 4.1: the kinematic shock r_s and the mixture-side
+/* Nigam (1999) section 4.1: the kinematic shock r_s and the mixture-side
  * fraction alpha_s of the asymptotic theory (Amberg & Ungarish 1993;
  * Nigam 1999 eqs 4.57-4.64) at t = 25 (tau = 0.572), heights z; and its
  * radial profile at t = 50, z = 0.225. */
@@ -528,7 +528,8 @@ static spinup_theory spin_theory(double *tau_per_t) {
 }
 
 /* The asymptotic solution written here (tests/scenes/spinup_asymptotic.h)
- * against the digest's independently integrated table. */
+ * against an independently integrated reference table (the characteristics and
+ * shock equations, eqs 4.57-4.64, with 400-800 characteristics). */
 static void spinup_theory_table(void) {
   double tau_per_t;
   spinup_theory s = spin_theory(&tau_per_t);
@@ -539,8 +540,8 @@ static void spinup_theory_table(void) {
     worst = fmax(worst, fabs(spinup_alpha(&s, spin_rs[k], spin_z[k], 25 * tau_per_t) - spin_as[k]));
   for (int i = 0; i < 10; ++i)
     worst = fmax(worst, fabs(spinup_alpha(&s, spin50_r[i], 0.225, 50 * tau_per_t) - spin50_a[i]));
-  printf("  spinup: the characteristics give the digest's alpha_s and t = 50 profile within %.1e\n", worst);
-  CHECK_MSG(worst <= 1e-3, "asymptotic alpha off the digest's table by %.2e", worst); /* the table's 3 decimals */
+  printf("  spinup: the characteristics give the reference alpha_s and t = 50 profile within %.1e\n", worst);
+  CHECK_MSG(worst <= 1e-3, "asymptotic alpha off the reference table by %.2e", worst); /* the table's 3 decimals */
   CHECK(spinup_alpha(&s, 0.5, 0.225, 25 * tau_per_t) == 0.1); /* the non-rotating core, r < e^-tau = 0.564 */
 }
 
@@ -593,14 +594,14 @@ static void spinup(void) {
     CHECK_MSG(!isnan(rs), "no shock at z = %g", spin_z[k]);
   }
   printf("  spinup: shock position within %.4f of the theory, mixture-side phi within %.3f\n", worst, worst_a);
-  CHECK_MSG(worst <= 0.03, "shock off the theory by %.4f", worst); /* the digest: 2-3 cells of the 128 x 64 grid */
-  /* the digest's 0.02 for alpha in the mixture region, where the theory's lid layers had formed when the fluid left
+  CHECK_MSG(worst <= 0.03, "shock off the theory by %.4f", worst); /* 2-3 cells of the 128 x 64 grid */
+  /* 0.02 for alpha in the mixture region, where the theory's lid layers had formed when the fluid left
      them (z = 0.1: t = 11.5, some two revolutions) */
   CHECK_MSG(near_lid <= 0.02, "mixture region at z = 0.1 off the characteristics by %.3f", near_lid);
   CHECK_MSG(fabs(scalar(out, "solids_conservation_error", t)) < 1e-13, "solids not conserved");
 }
 
-/* ---- a gravity wave over a Bingham bed (seed 003) ------------------------------ */
+/* ---- a gravity wave over a Bingham bed (Lalli, INSEAN) -------------------------- */
 
 /* The mean of `yielded` over the bed's cells (y < 0.15, below its smeared
  * surface at 0.2) at time t, and the extreme phi of the whole field. */

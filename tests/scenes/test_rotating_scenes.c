@@ -300,7 +300,7 @@ static double wave_alpha(double x, double y) {
 
 static void waves_initial(void) {
   set_configs("configs");
-  /* the state coded here reproduces the thesis's numbers (the digest's sanity values) */
+  /* the state coded here reproduces the thesis's numbers (its printed values) */
   double psi_max = 0.0, a_min = 1.0, a_max = 0.0;
   for (int i = 0; i <= 400; ++i)
     for (int j = 0; j < 720; ++j) {

@@ -2,8 +2,8 @@
  * through the same entry point as `sluice run` and read back from its
  * output files.
  *
- * One column: a 2-D grid one cell wide reproduces the 1-D column of seed
- * 000's T1 fluidisation step (the same face scheme) cell by cell, to
+ * One column: a 2-D grid one cell wide reproduces the 1-D column of the
+ * fluidisation step of Pringle (2001, section 4.6.1) (the same face scheme) cell by cell, to
  * within what the 2-D model adds (fluid viscous stress, the inertia of
  * both phases written separately) during the transient, and to 1e-6 at
  * the end.
@@ -32,7 +32,8 @@
 #include "testing.h"
 
 static char configs[4096], local[4096];
-static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): a shorter T1 step, the planar bed only, no blow-out */
+static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): a shorter Pringle (2001) step, the planar bed only, no
+                      blow-out */
 
 SCENE_RUNNERS()
 
@@ -67,7 +68,8 @@ static void one_column(void) {
     worst = fmax(worst, last);
     free(a), free(b);
   }
-  printf("  one column (1 x 100) against the 1-D column, T1 step to t = %g s: max |dphi| %.2e over the outputs, "
+  printf("  one column (1 x 100) against the 1-D column, Pringle (2001) step to t = %g s: "
+         "max |dphi| %.2e over the outputs, "
          "%.2e at the end\n", t_end, worst, last);
   CHECK_MSG(worst <= 5e-4, "one column: phi differs from the 1-D column by %.3g", worst);
   if (!quick) CHECK_MSG(last <= 1e-6, "one column: %.3g apart at the end", last);

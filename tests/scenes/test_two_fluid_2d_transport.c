@@ -3,7 +3,7 @@
  * run through the same entry point as `sluice run` and read back from its
  * output files.
  *
- * One column: seed 000's T1 fluidisation step in a 2-D column one cell wide
+ * One column: the fluidisation step of Pringle (2001, section 4.6.1) in a 2-D column one cell wide
  * (y-faces) and in a row one cell high with gravity along -x (x-faces)
  * follows the 1-D column at the same order and limiter to within what the
  * 2-D model adds (fluid viscous stress, the inertia of both phases written
@@ -19,7 +19,7 @@
  * solids conserved to round-off with the outflow counted.
  *
  * With an argument, only that part: one_column, pulse, packing, blow_out.
- * SLUICE_SKIP_LONG (the sanitizer build): the T1 step to 10 s, no blow-out. */
+ * SLUICE_SKIP_LONG (the sanitizer build): the step of Pringle (2001) section 4.6.1 to 10 s, no blow-out. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -33,7 +33,7 @@
 #include "testing.h"
 
 static char configs[4096], local[4096];
-static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): a shorter T1 step, no blow-out */
+static int quick; /* SLUICE_SKIP_LONG (the sanitizer build): a shorter Pringle (2001) step, no blow-out */
 
 SCENE_RUNNERS()
 
@@ -69,8 +69,9 @@ static int phi_apart(const char *fa, const char *fa0, const char *fb, const char
   return 0;
 }
 
-/* Seed 000's T1 step (porosity 0.65 -> 0.716, 100 cells, dt = 0.01 s) in the 1-D column, in a 2-D column one cell
- * wide (moving phi across y-faces) and in a 2-D row one cell high with gravity along -x (column_x.ini: x-faces).
+/* The step of Pringle (2001) section 4.6.1 (porosity 0.65 -> 0.716, 100 cells, dt = 0.01 s) in the 1-D column, in a
+ * 2-D column one cell wide (moving phi across y-faces) and in a 2-D row one cell high with gravity along -x
+ * (column_x.ini: x-faces).
  * The name of each 2-D form's output, or NULL (a failed check) when it did not run. */
 static const char *t1_2d(int along_x, const char *const *extra, const char *out) {
   const char *sets[16] = {0};
@@ -121,7 +122,8 @@ static void one_column(void) {
         phi_apart(c1, c1_o1, cy, cy_o1, t_end, &dy, &tmp) || phi_apart(c1, c1_o1, cx, cx_o1, t_end, &dx, &tmp) ||
         phi_apart(c1, NULL, c1_o1, NULL, t_end, &change, &tmp))
       return;
-    printf("  one column at order 2, %s, against the 1-D column, T1 step to t = %d s: max |dphi| over the outputs "
+    printf("  one column at order 2, %s, against the 1-D column, Pringle (2001) step to t = %d s: "
+           "max |dphi| over the outputs "
            "%.2e (1 x 100), %.2e (100 x 1, along x), at the end %.1e, %.1e; the change from order 1 alike within "
            "%.2e, %.2e (the change itself %.2e)\n",
            limiters[k], t_end, wy, wx, ly, lx, dy, dx, change);

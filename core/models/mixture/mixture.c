@@ -279,8 +279,8 @@ static void set_flux_floor(mixture *x) {
 /* ---- the stress of the relative motion -------------------------------------- */
 
 /* Nigam (1999) eq 2.16 (in 2.19 and 2.31): the mixture momentum carries
- * -div[rho_f j_R j_R / (phi (1 - phi))] (dimensional; digest of seed 002,
- * sections 1.3 and 1.6), the momentum flux of the two phases' motion
+ * -div[rho_f j_R j_R / (phi (1 - phi))] (dimensional; Nigam 1999,
+ * eqs 2.15-2.16 and 2.31-2.39), the momentum flux of the two phases' motion
  * relative to the volume-averaged j. With the settling flux j_R = phi
  * u_settle(phi) b of the transport (b the slip direction relative to
  * g_ref at the cell point: the body force, minus Dj/Dt with

@@ -1,7 +1,7 @@
 /* The mixture (drift-flux) model: the flow of core/models/navier_stokes/flow.h in
  * the volume-averaged velocity j (div j = 0), carrying a solids fraction phi
  * that moves with j plus the hindered-settling flux (Nigam 1999, eqs
- * 2.31-2.36; digest of seed 002, section 1.6):
+ * 2.31-2.36):
  *
  *   rho(phi) (dj/dt + j.grad j) = -grad p + div(2 mu D(j)) + (rho(phi) - rho_f) g,
  *   div j = 0,   dphi/dt + div(phi j + j_R) = 0,   j_R = phi u_settle(phi) b,

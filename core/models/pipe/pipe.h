@@ -1,7 +1,7 @@
 /* The fully developed vertical pipe (`[scene] model = pipe`): turbulent
  * flow of water, or of a slurry by the two-fluid equations, statistically
  * steady and homogeneous along the pipe, so that every field is a function of
- * the radius r alone (Krampa 2009, digest of the thesis section 7.1: the
+ * the radius r alone (Krampa 2009: the
  * streamwise-periodic pipe driven at a given bulk velocity with a fixed solids
  * inventory). The cells of the shared finite-volume layer (core/fv) on an
  * axisymmetric strip of one cell along the axis, graded towards the wall.

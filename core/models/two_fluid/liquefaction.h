@@ -1,6 +1,6 @@
 /* The liquefaction add-on of the 1-D two-fluid column (Pringle 2001,
- * thesis sections 5.4-5.5; digest of seed 000, sections 1.7, 2.4-2.6, 4.6,
- * 4.7): a sand deposit whose reference porosity nbar is a state of each
+ * thesis sections 5.4-5.5, with the closures of chapter 3, eqs 3.38-3.53
+ * and 4.30): a sand deposit whose reference porosity nbar is a state of each
  * cell, shaken at its base.
  *
  * - Solids pressure: [closure.solids_pressure] of phi and nbar (e.g.
@@ -14,7 +14,7 @@
  *   gamma_r = tau_max/G0; the small-strain modulus of Seed & Idriss (1970,
  *   EERC 70-10) in the form Pringle uses from Hosni (thesis eq 3.40),
  *   G0 = 220 K2max sqrt(P_s) kPa with P_s in kPa (K2max 30-70 for sands:
- *   the thesis's "0.4-0.6" is the digest's erratum 11), tau_max = P_s
+ *   the thesis's "0.4-0.6" is a misprint), tau_max = P_s
  *   tan(friction angle), and a viscous stress eta = 2 xi G0/omega_d +
  *   eta_res (stiffness-proportional damping of ratio xi at omega_d, plus a
  *   residual viscosity of liquefied sand). rho is the mixture density (the

@@ -102,7 +102,7 @@ static int eval_drag(sh_layer *L, sl_diag *d) {
  * viscosity, plus the part of the suspension viscosity mu_m of
  * [closure.viscosity] the fluid's (1 - phi) mu_f leaves, so that the two
  * phases moving together carry mu_m (the mapping n mu_f + (1 - n) mu_s =
- * mu_m the digest of seed 000, section 2.3, suggests for what Pringle 2001
+ * mu_m, a choice made here for what Pringle 2001, eqs 3.36-3.37,
  * leaves unstated, with (1 - n) mu_s the phase's share), 0 where mu_m falls
  * below (1 - phi) mu_f; plus the kinetic theory's. mu_m is evaluated at the
  * solids shear rate of the iterate. */

@@ -20,7 +20,7 @@
  * the solids shear rate) and, with [closure.granular], the kinetic
  * theory's, whose production alone heats the particles: the granular
  * energy balance (Krampa 2009 eq
- * 5.10 in the standard form its digest gives, section 2.5: the printed
+ * 5.10 in the standard form (section 5.1.2; the printed
  * production and dissipation signs are inverted)
  *   (3/2) rho_s phi dtheta/dt = (1/r^n) d(r^n kappa dtheta/dx)/dx + mu_s gdot^2 - gamma - 3 K theta
  * (n = 0 planar, 1 annular; gdot the solids shear rate; the last term the

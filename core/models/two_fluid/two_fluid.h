@@ -1,6 +1,6 @@
-/* The two-fluid model (Eulerian-Eulerian, seed 000: Pringle 2001), 1-D
- * vertical column. Fluid and solids momentum with one pressure p (digest of
- * seed 000, section 1.2; Gidaspow 1994 model A), incompressible phases:
+/* The two-fluid model (Eulerian-Eulerian, Pringle 2001), 1-D
+ * vertical column. Fluid and solids momentum with one pressure p (Pringle
+ * 2001, Table 1.1 and eqs 2.27-2.31; Gidaspow 1994 model A), incompressible phases:
  *
  *   d(phi)/dt + d(phi u_s)/dx = 0,   phi u_s + (1 - phi) u_f = j(t),
  *   rho_s phi du_s/dt       = -phi dp/dx - dp_s/dx + K (u_f - u_s) + phi rho_s g,
@@ -9,7 +9,7 @@
  * K from [closure.drag] (architecture.md section 4: F_s = K (u_f - u_s)),
  * p_s(phi) from [closure.solids_pressure] (none: p_s = 0), the advective
  * momentum terms dropped as in Pringle's finite-element model ("slow
- * flows", digest 1.4). In 1-D the mixture continuity fixes the mixture
+ * flows", thesis chapter 4). In 1-D the mixture continuity fixes the mixture
  * flux j (the inlet's superficial velocity, 0 in a closed column), so the
  * fluid flux follows from the solids flux (Pringle's V = c, eq 4.43), and
  * eliminating dp/dx leaves one equation for u_s:
@@ -19,8 +19,8 @@
  *   s = u_f - u_s = (j - u_s)/eps,  eps = 1 - phi.
  *
  * Its steady homogeneous state is K s = phi eps (rho_s - rho_f) |g|
- * (digest 2.1.6), U = eps s; at rest dp_s/dx = phi (rho_s - rho_f) g
- * (digest 4.4). The pressure written is p from the fluid equation.
+ * (eq 4.20 at steady state), U = eps s; at rest dp_s/dx = phi (rho_s - rho_f) g
+ * (eq 4.30 at rest). The pressure written is p from the fluid equation.
  *
  * Discretisation (core/models/two_fluid_step.c): phi as cell averages, u_s
  * and u_f at the faces (the mesh vertices); backward Euler, drag implicit
@@ -31,7 +31,7 @@
  * whatever dt. An optional particle diffusivity D adds -D dphi/dx to the
  * solids flux: the diffusion term of Pringle's generic conservation law
  * (thesis eq 2.11), which his model drops (he puts D at "order 1e-4 m^2/s",
- * digest 1.2). Without it the homogeneous bed of this model is unstable
+ * thesis chapter 2). Without it the homogeneous bed of this model is unstable
  * (Jackson 1963, Trans. Instn Chem. Engrs 41:13) wherever no solids pressure
  * holds it, and fine meshes resolve the growing waves.
  *

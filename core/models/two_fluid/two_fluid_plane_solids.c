@@ -398,7 +398,7 @@ static int wall_energy(tfp_model *m, int c, const int cf[4], double *rhs, double
 
 /* The transported granular temperature (`granular_temperature = transport`)
  * of the iterate, cell by cell, as the shear layer's (shear_layer.h; Krampa
- * 2009 eq 5.10 in the standard form of its digest, section 2.5):
+ * 2009 eq 5.10 in the standard form, with its printed signs corrected):
  *   (3/2) rho_s phi dtheta/dt = div(kappa grad theta) + mu_k gdot^2 - gamma - 3 K theta,
  * mu_k the kinetic viscosity, backward Euler. Newton in the dissipation
  * gamma(theta); kappa, mu_k (whose theta derivative, negative on the

@@ -7,8 +7,8 @@
  *   div(phi u_s + eps u_f) = 0,      eps = 1 - phi,
  *   dphi/dt + div(phi u_s) = 0,
  *
- * F = K(phi, |s|) s the drag on the solids, s = u_f - u_s (Pringle 2001;
- * digest of seed 000, 2.1.6), in the Stokes regime (no convective terms,
+ * F = K(phi, |s|) s the drag on the solids, s = u_f - u_s (Pringle 2001,
+ * eq 3.10), in the Stokes regime (no convective terms,
  * as the column) and with the Laplacian form of the viscous stresses; mu_s
  * the solids phase's viscosity (two_fluid_plane_solids.c).
  *

@@ -45,7 +45,7 @@ enum { TF_FREEZE_PHI_AFTER = 8 };
 
 int tf_equilibrium_velocity(tf_column *c, double porosity, double *U, sl_diag *d) {
   /* The steady homogeneous state of the solids equation (two_fluid.h) with u_s = 0 and
-   * dp_s/dx = 0: K s / eps = phi (rho_s - rho_f) |g| (digest of seed 000, 2.1.6: beta V_r = n (1 - n)
+   * dp_s/dx = 0: K s / eps = phi (rho_s - rho_f) |g| (Pringle 2001, eq 4.20 at steady state: beta V_r = n (1 - n)
    * (rho_s - rho_f) g). K s grows with s for every drag law, so bisection on s between 0 (where
    * K s - weight < 0) and a bound doubled until it is positive finds the one root. */
   const double phi = fmax(1.0 - porosity, PHI_FLOOR), eps = 1.0 - phi;

@@ -1,0 +1,132 @@
+/* sluice closure kinds: every closure kind with its contract (the inputs it
+ * must declare, the inputs the models supply, the outputs they read, units,
+ * what evaluate() must refuse), from the registry in core/plugin/kinds.c. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "core/cli/cli.h"
+#include "core/plugin/kinds.h"
+
+const char sl_closure_kinds_usage[] =
+    "usage: sluice closure kinds [KIND] [--markdown]\n"
+    "Lists every closure kind with its contract: the inputs a closure of the kind must\n"
+    "declare (* differentiable), the further inputs the models supply, the outputs they\n"
+    "read with their units, what evaluate() must refuse, and the models that use it.\n"
+    "--markdown writes the same as Markdown (docs/closure-kinds.md).";
+
+static void bound(double v, char *buf, size_t n) {
+  if (isinf(v)) snprintf(buf, n, "%sinf", v < 0 ? "-" : "");
+  else snprintf(buf, n, "%g", v);
+}
+
+/* A table cell: '|' escaped. */
+static void cell(const char *s) {
+  for (; *s; ++s) {
+    if (*s == '|') fputs("\\|", stdout);
+    else putchar(*s);
+  }
+}
+
+static void input_text(const char *name, int diff, int markdown) {
+  const sl_input_info *in = sl_input_find(name);
+  char lo[32], hi[32];
+  bound(in->min, lo, sizeof lo);
+  bound(in->max, hi, sizeof hi);
+  if (markdown) {
+    printf("| `%s`%s | %s | ", name, diff ? " *" : "", in->units);
+    cell(in->meaning);
+    printf(" | %g | [%s, %s] |\n", in->typical, lo, hi);
+  } else
+    printf("    %-14s%s %-10s %s (typical %g, supplied in [%s, %s])\n", name, diff ? "*" : " ", in->units, in->meaning,
+           in->typical, lo, hi);
+}
+
+static void kind_text(sl_kind k) {
+  const sl_kind_info *c = sl_kind_info_of(k);
+  printf("%s: %s\n", sl_kind_name(k), c->summary);
+  printf("  required inputs (* differentiable):\n");
+  if (!c->required[0]) printf("    (none)\n");
+  for (int i = 0; i < SL_KIND_MAX_INPUTS && c->required[i]; ++i) input_text(c->required[i], c->diff_mask >> i & 1u, 0);
+  printf("  inputs the models also supply:\n");
+  for (int i = 0; i < SL_KIND_MAX_INPUTS && c->usual[i]; ++i) input_text(c->usual[i], 0, 0);
+  printf("  outputs%s:\n", c->any_output ? " (names free, at least one; the models read these)" : "");
+  for (int i = 0; i < SL_KIND_MAX_OUTPUTS && c->outputs[i].name; ++i)
+    printf("    %-18s %-14s %s%s\n", c->outputs[i].name, c->outputs[i].units, c->outputs[i].meaning,
+           c->outputs[i].required ? " (required)" : "");
+  printf("  evaluate() refuses (SL_RECOVERABLE, the point named): %s\n", c->range_checks);
+  printf("  used by: %s\n", c->used_by);
+}
+
+static void kind_markdown(sl_kind k) {
+  const sl_kind_info *c = sl_kind_info_of(k);
+  printf("## %s\n\nA %s closure gives the %s.\n\n", sl_kind_name(k), sl_kind_name(k), c->summary);
+  printf("| input | units | meaning | typical | supplied in |\n|---|---|---|---|---|\n");
+  for (int i = 0; i < SL_KIND_MAX_INPUTS && c->required[i]; ++i) input_text(c->required[i], c->diff_mask >> i & 1u, 1);
+  for (int i = 0; i < SL_KIND_MAX_INPUTS && c->usual[i]; ++i) input_text(c->usual[i], 0, 1);
+  printf("\n");
+  if (c->required[0]) {
+    printf("Required inputs:");
+    for (int i = 0; i < SL_KIND_MAX_INPUTS && c->required[i]; ++i)
+      printf("%s `%s`%s", i ? "," : "", c->required[i], (c->diff_mask >> i & 1u) ? " (differentiable)" : "");
+    printf("; the others are supplied when the closure declares them.\n\n");
+  } else {
+    printf("No input is required; the models supply those above when the closure declares them.\n\n");
+  }
+  printf("| output | units | meaning | required |\n|---|---|---|---|\n");
+  for (int i = 0; i < SL_KIND_MAX_OUTPUTS && c->outputs[i].name; ++i) {
+    printf("| `%s` | %s | ", c->outputs[i].name, c->outputs[i].units);
+    cell(c->outputs[i].meaning);
+    printf(" | %s |\n", c->outputs[i].required ? "yes" : "no");
+  }
+  printf("\n");
+  if (c->any_output) printf("The output names are free (at least one); the models read the ones above.\n\n");
+  printf("- evaluate() refuses, with SL_RECOVERABLE and the point named: %s.\n", c->range_checks);
+  printf("- Used by: %s.\n\n", c->used_by);
+}
+
+int sl_cmd_closure_kinds(int argc, char **argv) {
+  if (sl_cli_wants_help(argc, argv)) {
+    puts(sl_closure_kinds_usage);
+    return 0;
+  }
+  int markdown = 0;
+  const char *only = NULL;
+  for (int i = 0; i < argc; ++i) {
+    if (strcmp(argv[i], "--markdown") == 0) markdown = 1;
+    else if (argv[i][0] == '-') return sl_cli_error(SL_EBADINPUT, "closure kinds: unknown option '%s'", argv[i]);
+    else if (!only) only = argv[i];
+    else return sl_cli_error(SL_EBADINPUT, "closure kinds: one kind at a time (or none for all)");
+  }
+  sl_kind one = SL_KIND_DRAG;
+  sl_diag d;
+  if (only && sl_kind_from_name(only, &one, &d)) return sl_cli_error(SL_EBADINPUT, "closure kinds: %s", d.msg);
+  if (markdown && !only) {
+    printf("# Closure kinds\n\n"
+           "Generated by `sluice closure kinds --markdown` from the registry of kinds; do not\n"
+           "edit by hand. Each kind is a contract between a closure and the models: the\n"
+           "inputs a closure of the kind must declare, the further inputs the models supply\n"
+           "when it declares them, the outputs they read and what `evaluate()` must refuse.\n"
+           "Units are SI; `*` marks an input the closure must differentiate. For every kind,\n"
+           "an input outside the closure's declared validity range, or NaN, returns\n"
+           "SL_RECOVERABLE with the point named (`sluice check-closure` checks it); an input\n"
+           "the host does not know is refused when the library is loaded.\n"
+           "[writing-a-closure.md](writing-a-closure.md) walks through writing one.\n\n");
+  }
+  for (int k = SL_KIND_FIRST; k <= SL_KIND_LAST; ++k) {
+    if (only && k != (int)one) continue;
+    if (markdown) kind_markdown((sl_kind)k);
+    else {
+      kind_text((sl_kind)k);
+      if (!only && k < SL_KIND_LAST) printf("\n");
+    }
+  }
+  if (!markdown && !only) {
+    int n;
+    const char *const *names = sl_input_names(&n);
+    printf("\ninputs the host knows:");
+    for (int i = 0; i < n; ++i) printf(" %s", names[i]);
+    printf("\n");
+  }
+  return 0;
+}
