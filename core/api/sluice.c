@@ -155,7 +155,11 @@ int sluice_check_restart(sluice *s, const char *restart, FILE *report, sluice_er
   sl_output_opts oo;
   sl_run_output_opts(&ro, dir, sizeof dir, &oo);
   oo.protect_more = (const char *const *)s->ini->files, oo.n_protect_more = s->ini->n_files;
-  if ((rc = sl_output_check_path(out, &oo, &d))) return from_diag(e, rc, &d);
+  if ((rc = sl_output_check_path(out, &oo, &d))) {
+    const sl_src *at = sl_scene_src(s->scene, &s->scene->output.file); /* the line that named the file */
+    if (rc == SL_EBADINPUT && at) sl_diag_prefix(&d, rc, "%s:%d", at->file, at->line);
+    return from_diag(e, rc, &d);
+  }
   if (!report) return 0;
   const sl_schema *schema = entry->schema;
   int n_closures = 0;

@@ -135,6 +135,8 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
     sl_run_output_opts(o, dir, sizeof dir, &oo);
     oo.protect_more = (const char *const *)ini->files, oo.n_protect_more = ini->n_files;
     rc = sl_output_open_opts(&out, res->output_path, &oo, d);
+    const sl_src *at = o->output ? NULL : sl_scene_src(sc, &sc->output.file); /* the line that named the file */
+    if (rc == SL_EBADINPUT && at) sl_diag_prefix(d, rc, "%s:%d", at->file, at->line);
   }
   if (!rc) rc = ops->write_mesh(self, out, d);
   if (!rc) rc = sl_scene_provenance_make(sc, o->sluice_version, &pv, d);

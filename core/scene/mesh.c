@@ -280,6 +280,8 @@ int sl_scene_mesh_build(const sl_scene *sc, sl_mesh **out, sl_diag *d) {
         sl_mesh_destroy(*out), *out = NULL;
       if (!rc) warn_unnamed(sc, path, *out);
       free(path);
+      /* the scene's line that named the file, before what is wrong with it */
+      if (rc == SL_EBADINPUT) sl_diag_prefix(d, rc, "%s:%d: [mesh] file", e->file, e->line);
       return rc;
     }
   }

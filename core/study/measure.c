@@ -98,7 +98,7 @@ static int extremum(const char *h5, const sl_study_measure *sm, const line *l, d
     if (sign * v[k] < sign * v[best]) best = k;
   const double g = 0.5 * (sqrt(5.0) - 1.0);
   double a = (best > 0 ? best - 1.0 : 0.0) / (n - 1), b = (best + 1 < n ? best + 1.0 : n - 1.0) / (n - 1);
-  double c = b - g * (b - a), e = a + g * (b - a), fc, fe, xy[2];
+  double c = b - g * (b - a), e = a + g * (b - a), fc = 0.0, fe = 0.0, xy[2]; /* unset when a sample fails */
   line_point(l, c, xy);
   int rc = sample(h5, sm, t, 1, xy, &fc, NULL, d);
   line_point(l, e, xy);

@@ -384,7 +384,7 @@ static int column_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag 
   tf_run *r = calloc(1, sizeof *r);
   if (!r) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   r->sc = sc, r->cfg = sc->config, r->mesh = sc->mesh;
-  unsigned mask;
+  unsigned mask = 0; /* unset when an earlier step fails */
   int rc = column_from_mesh(r, d);
   if (!rc) rc = tf_scene_physics(sc, r->cfg, 1, &r->c, NULL, &r->steady_tol, d);
   int shaken = !rc && tfl_wanted(sc, &r->c);
