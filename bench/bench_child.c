@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The benchmarks' runs in a child process (bench_child.h), on the study's child runner (core/study/child.h). */
 #include "bench_child.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A benchmark run in a child process, so that its peak memory and its
  * clocks are its own and a crash ends only that run: the child calls
  * fn(arg, result) and sends the result struct back through a pipe. */

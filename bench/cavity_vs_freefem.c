@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The Stokes cavity against FreeFEM: error of the centreline profile against
  * CPU time for sluice (Q2/Q1, read from the CSV of
  * bench_cavity_work_precision --profile-ref) and for FreeFEM (P2/P1 on the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Work-precision of the flow engine on configs/cavity_stokes.ini (Q2/Q1,
  * n x n cells): the minimum of u on the vertical centreline (401 samples
  * refined by golden section) against a converged value u*, versus CPU time,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The cavity's reference centreline profile (centreline_profile.h). */
 #include "centreline_profile.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The cavity's reference centreline profile (bench/freefem/cavity_centreline_ref.csv)
  * and the error of a profile sampled at its points, shared by
  * bench_cavity_work_precision and bench_cavity_vs_freefem. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The share of a run spent inside closure calls: runs scenes of configs/
  * in-process as `sluice run` does, with the closures timing each batched
  * call (the clock of `sluice run --profile`), and prints per scene the run's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Closure evaluation throughput through the plugin ABI against the same law
  * compiled inline, for batch sizes 1 to 4096 (issue: foundation benchmark).
  *   build/bin/bench_closure_throughput [points [reps [Q [inline|abi]]]]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* How the cost of each phase of a run grows with the number of cells: the
  * scenes of configs/ at increasing mesh sizes, each run in-process (the
  * engine `sluice run` uses) in a child process of its own, and per phase the

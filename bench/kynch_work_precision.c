@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Work-precision of the solids-fraction transport on Kynch batch settling:
  * L1 error of phi against the exact entropy solution (tests/transport/
  * kynch_exact.h) against CPU time, first order (Godunov) and MUSCL (MC and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Timings, not a test (speed is never asserted): the backends on the 2-D
  * 5-point Poisson matrix, and element assembly by binary search against the
  * precomputed element map on P1 and P2 triangle meshes.

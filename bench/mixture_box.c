@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The upright settling box (tests/scenes/mixture_box.h) of the 2-D mixture
  * model: the L1 error of phi against the exact Kynch solution against CPU
  * time, with the largest mixture speed of each run, and OpenFOAM's

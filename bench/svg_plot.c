@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* See svg_plot.h. */
 #include "svg_plot.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A small SVG writer for the benchmarks' plots: one figure of panels in a
  * grid (row by row), each a log-log plot of series drawn as markers joined by lines,
  * with decade ticks and labels (minor ticks at 2..9), grid, axis titles,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* What a run of the shipped 2-D scenes costs, and what it cost before:
  * CPU seconds, accepted and rejected steps, Newton iterations, numeric
  * factorisations and reused solves, per scene and per variant, the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Work-precision of the 1-D two-fluid model (core/models/two_fluid*.c) on
  * configs/fluidized_bed.ini and configs/fluidization_step.ini (Pringle 2001, section 4.6.1),
  * over mesh refinement (the scene's dt) and time-step refinement (100

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Helpers for closure tests: open a built-in closure by (kind, name) with
  * parameters, evaluate it at single points or batches, read derivatives.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A minimal test harness: each test program counts checks and prints
  * "N passed, N failed" at the end; a non-zero exit marks failure for CTest. */
 #ifndef SLUICE_TESTS_TESTING_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The embedding API (include/sluice/sluice.h) over the core. */
 #include "sluice/sluice.h"
 

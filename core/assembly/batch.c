@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Quadrature-point batches and coefficient evaluation. */
 #include "core/assembly/batch.h"
 

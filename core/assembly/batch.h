@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Internal to core/assembly: the quadrature-point batches through which the
  * operators evaluate their coefficients. */
 #ifndef SLUICE_ASSEMBLY_BATCH_H

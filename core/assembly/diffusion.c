@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Scalar diffusion: A += int k grad u . grad v, b += int f v. */
 #include <stdlib.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Generalized-Newtonian Navier–Stokes residual and Jacobian on Taylor–Hood
  * pairs (see flow.h for the equations and the frame conventions).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Incompressible flow of a generalized-Newtonian fluid on Taylor–Hood
  * pairs: the residual and its Jacobian (Newton) or its Oseen/Picard
  * linearisation, for

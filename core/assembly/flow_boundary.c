@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Boundary integrals of the flow equations: prescribed tractions. */
 #include <math.h>
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The hydrostatic part of a cell-wise buoyancy (see hydrostatic.h). */
 #include "core/assembly/hydrostatic.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The hydrostatic part of a buoyancy rho'(x) g with rho' given per cell,
  * taken out of the flow's load so that a stratification at rest loads it
  * with nothing.

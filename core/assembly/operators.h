@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Finite-element operators assembled into an sl_system: scalar diffusion
  * (Poisson) and Stokes on Taylor–Hood pairs.
  *

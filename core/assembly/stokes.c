@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Stokes on Taylor–Hood pairs: the symmetric-gradient viscous term with a
  * batched viscosity, the pressure–divergence coupling and the body force. */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Element-by-element systems and Dirichlet constraints. */
 #include "core/assembly/system.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A linear system assembled element by element: the CSR matrix whose
  * pattern comes from the element dof lists, the element-to-CSR position map
  * built once with it (the hot loop does no searching), and the right-hand

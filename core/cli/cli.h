@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The sluice command: one file per subcommand. Each returns the process exit
  * status (0 ok, 1 the run failed, 2 bad usage or input). */
 #ifndef SLUICE_CLI_CLI_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice bench STUDY.ini: a work-precision study or a closure comparison
  * (core/study/study.h): every run of the study in its own process, each
  * output measured, one CSV row per run and a PNG plot. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice check-closure LIB.so: loads a library strictly and runs the
  * conformance battery on each of its closures, in a child process with a
  * time limit (docs/trust-plugins.md): a closure that crashes, hangs or calls

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice closure describe | eval: a closure's documentation from its own
  * metadata, and its values at chosen states without a mesh. */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice closure index DIR: writes DIR/closures.index, the file that lets
  * sluice open, for a closure a scene names, only the library that holds it
  * (docs/trust-plugins.md). The libraries' descriptors are read in a child

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice closure kinds: every closure kind with its contract (the inputs it
  * must declare, the inputs the models supply, the outputs they read, units,
  * what evaluate() must refuse), from the registry in core/plugin/kinds.c. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice closure new KIND NAME [-o DIR]: writes DIR/NAME.c, a closure of the
  * kind with its descriptor, parameter schema, inputs and outputs from the
  * registry of kinds (core/plugin/kinds.c), range checks, a check point and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice closures: every closure on the search path, by kind. */
 #include <stdio.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice model list | describe NAME: the models, their variants, and each
  * one's sections, keys, defaults, units and ranges, from its schema. */
 #include <stdio.h>

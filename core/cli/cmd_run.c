@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice run SCENE.ini: parse and validate a scene, resolve its closures,
  * and run it (models navier_stokes, mixture and two_fluid). */
 #include <dirent.h>

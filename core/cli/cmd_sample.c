@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice sample OUT.h5: a field of an output file at points along a line or
  * at one point, as CSV; --list says what the file holds. */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice: simulation of solid-liquid mixtures with pluggable closures. */
 #include <stdarg.h>
 #include <stdio.h>

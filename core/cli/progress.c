@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Progress line, run summary and clocks (see progress.h). */
 #include "core/cli/progress.h"
 

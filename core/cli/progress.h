@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* What a run shows while it runs and when it ends: a one-line progress
  * display redrawn in place, the one-line run summary, and the clocks to time
  * the run with. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The run's summary as JSON (summary_json.h). */
 #include "core/cli/summary_json.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* `sluice run --summary-json FILE`: what the run did, as one JSON object
  * (the numbers of the summary line and more), for scripts such as the
  * Python package in python/. Keys: docs/output.md. */

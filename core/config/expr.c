@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The expression language of expr.h: a recursive-descent parser that emits a
  * flat postfix program while it parses, folding constants and fusing
  * operands as it goes, and a switch-dispatched stack interpreter.

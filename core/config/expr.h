@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A small arithmetic expression language for scene values: boundary values
  * and initial fields written as numbers or formulas of (x, y, t), e.g.
  *   velocity = 16*x^2*(1-x)^2, 0

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* In-house INI parser (see ini.h for the syntax).
  *
  * Design notes:

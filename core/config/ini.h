@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* In-house INI parser: sections, typed look-up, overrides, unknown-key errors.
  *
  * Syntax: `[section]` and dotted `[closure.drag]` headers; `key = value`;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Bessel functions and the integrals of J0 and Y0 (special.h). */
 #ifndef _XOPEN_SOURCE
 #define _XOPEN_SOURCE 700 /* j0, j1, jn, y0, y1, yn of <math.h> */

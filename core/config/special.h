@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Special functions of the expression language (expr.h): Bessel functions
  * of the first and second kind and the integrals of J0 and Y0, as the
  * rotating-cylinder travelling waves of Nigam (1999, eqs 4.179-4.193) need

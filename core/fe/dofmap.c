@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Dof numbering for continuous Lagrange spaces and Taylor–Hood pairs. */
 #include "core/fe/dofmap.h"
 

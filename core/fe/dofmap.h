@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Degrees-of-freedom maps for continuous Lagrange spaces, and the combined
  * numbering of Taylor–Hood velocity/pressure pairs.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Lagrange bases on the reference cells, written out per element: each is
  * a handful of products, clearer as formulas than as a generic tensor code. */
 #include "core/fe/element.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Lagrange reference elements: P1/P2 on the line, P1/P2 on the triangle,
  * Q1/Q2 on the quadrilateral (reference cells in core/fe/quadrature.h).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Evaluation, integrals and error norms of finite-element functions. */
 #include "core/fe/field.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Finite-element functions given by a dof map and a coefficient vector:
  * evaluation at a point, integrals and error norms against an exact
  * solution (verification). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Isoparametric geometry: x(xi) = sum_k x_k N_k(xi) with the P1/Q1 basis
  * N of the cell through its vertices, or the P2/Q2 basis through its
  * geometric nodes (sl_mesh_cell_nodes) when the mesh has second-order

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The integration context: quadrature points, Jacobians and physical basis
  * gradients on one mesh cell at a time.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Quadrature rules: Gauss–Legendre (computed) and symmetric triangle rules
  * (tabulated); sources are cited in quadrature.h. */
 #include "core/fe/quadrature.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Quadrature rules on the reference cells.
  *
  * Reference cells (shared with core/fe/element.h):

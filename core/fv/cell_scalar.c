@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* An implicit cell scalar on the staggered grid (cell_scalar.h). */
 #include "core/fv/cell_scalar.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* An implicit scalar in the cells of the staggered grid (core/fv/grid.h):
  * one backward-Euler step of
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Conservative face fluxes of a Taylor–Hood velocity (see face_flux.h). */
 #include "core/fv/face_flux.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Conservative face fluxes of a Taylor–Hood velocity for the finite-volume
  * transport of the solids fraction.
  *

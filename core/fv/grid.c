@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The staggered grid's geometry and topology (grid.h). */
 #include "core/fv/grid.h"
 

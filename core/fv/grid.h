@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The staggered (MAC) finite-volume grid of Harlow & Welch (1965) on a
  * tensor grid (core/mesh/tensor_grid.h), planar or axisymmetric: scalars in
  * the cells, the normal components of vectors on the faces.

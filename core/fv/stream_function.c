@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The stream function of conservative face fluxes (stream_function.h). */
 #include "core/fv/stream_function.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The stream function at the vertices from the conservative face fluxes:
  * psi(b) - psi(a) = q_f across the face from a to b (its vertices in the
  * owner's counter-clockwise order), psi = 0 at vertex 0. This is psi with

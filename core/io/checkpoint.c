@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Checkpoints: /checkpoint/slot_0 and slot_1, written alternately; the
  * attribute /checkpoint@current names the last complete one and is written
  * (and flushed) only after the slot itself, so a crash while checkpointing

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Private to core/io: HDF5 helpers that turn failures into sl_diag messages
  * naming the file and the object, and the writer's state shared by the
  * output and checkpoint code. */

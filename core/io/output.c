@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* HDF5 writer and XDMF sidecar. Layout and guarantees: see output.h. */
 #include <errno.h>
 #include <libgen.h>

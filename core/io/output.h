@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* HDF5 output with an XDMF sidecar that ParaView opens as is, a CSV of the
  * per-output scalars, provenance, checkpoints for restart, and readers.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* What an output path may replace (output.h, sl_output_opts): the folders a
  * scene file may write into and the files sluice recognises as its own. */
 #include <errno.h>

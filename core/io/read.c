@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Readers of sluice output files: mesh, output times, a field at the step
  * nearest a time, string provenance, the list of fields and times. */
 #include <math.h>

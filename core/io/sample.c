@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Point sampling of output fields: locate each point in the output mesh,
  * then interpolate with the cell's own Lagrange basis (see sample.h). */
 #include "core/io/sample.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Sampling of output files: a field's value at arbitrary points, and what a
  * file holds (for `sluice sample`).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The files beside OUT.h5 (output.h): OUT.xmf for ParaView and meshio, and
  * OUT_scalars.csv for pandas. Both are brought up to date at every complete
  * output time at a cost that does not grow with the run: the .xmf is

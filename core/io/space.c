@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Room for the next write (h5util.h): HDF5 1.10 does not recover from a
  * write that fails for want of space (a full disk, the file size limit of
  * `ulimit -f`): the dataset or file whose flush failed cannot be closed, and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The SI unit of the fields and scalars the models write, by name, for the
  * writers that do not pass one (output.h). A model with a name not listed
  * here passes its unit (sl_output_write_field_unit, ..._scalar_unit). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Second-order (curved) cell geometry: the quadratic Lagrange map of a
  * 6-node triangle or 9-node quadrangle through its vertices, face nodes and
  * (quads) centre node, x(xi) = sum_k x_k N_k(xi) (the isoparametric map of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Structured generators: interval, rectangle, annulus (r, z box), inclined box. */
 #include <math.h>
 #include <stdlib.h>

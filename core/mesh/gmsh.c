@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Reader for Gmsh MSH 2.2 (ASCII) and 4.1 (ASCII and binary) files (our
  * own: linking libgmsh would tie the core to Gmsh's GPL and to
  * OpenCASCADE). The formats: Gmsh reference manual, sec. 9.1 "MSH file

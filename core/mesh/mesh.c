@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Mesh construction (faces, boundary lists), geometry, names, quality. */
 #include "core/mesh/mesh.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Meshes of dimension 1 or 2: vertices, cells of one type, the unique face
  * list with neighbours, named boundaries and optional cell regions.
  *

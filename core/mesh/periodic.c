@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Periodic boundary pairs: the translation between two boundaries and
  * their vertex and face correspondence (see mesh.h). */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The tensor-product structure of an axis-aligned quad mesh (tensor_grid.h). */
 #include "core/mesh/tensor_grid.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The tensor-product structure of an axis-aligned quadrilateral mesh (a
  * rectangle or annulus generator's mesh, graded or not, or a Gmsh file with
  * the same layout), for staggered (MAC) finite-volume schemes.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The models sluice runs (registry.h). */
 #include "core/models/registry.h"
 

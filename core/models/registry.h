@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Every model sluice runs, by name: its schema (core/scene/schema.h) and
  * its ops (core/time/model.h). A model with variants (two_fluid) lists one
  * entry per variant; the scene's keys pick one (the schema's `when` rules).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A run of a scene (run.h). */
 #include "core/models/run.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A run of a scene, the same for every model: the model picked from the
  * registry, the typed scene built (every input error found before anything
  * is written), the model set up, a restart's checkpoint read and checked,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The conformance battery (closure-abi.md): what every closure, built-in or
  * third-party, must pass before it is trusted. `sluice check-closure LIB.so`
  * runs it; so do the tests, on every shipped library. */

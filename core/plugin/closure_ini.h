@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* From a scene's [closure.<role>] section to a created closure. The role is
  * the kind, optionally followed by a qualifier: [closure.viscosity],
  * [closure.wall_stress.inner]. Keys: `model` (the closure name), optional

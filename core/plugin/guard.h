@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Closure calls isolated inside the sluice process (docs/trust-plugins.md).
  *
  * Every batched call to a closure's evaluate() goes through

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A closure in use: its validated parameters, its state, and the evaluate
  * wrapper that the rest of the core calls (it counts calls, clears the error
  * record and refuses non-finite outputs so that no NaN passes silently). */

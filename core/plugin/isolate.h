@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Closure library code run in a child process (docs/trust-plugins.md): what
  * it does there (a constructor, a crash, a hang, exit()) cannot touch the
  * sluice process, which reads what the child reports and how it ended. */

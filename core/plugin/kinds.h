@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Closure kinds: their names and contracts (docs/closure-kinds.md is generated from them),
  * and the dictionary of input names the host knows how to supply. */
 #ifndef SLUICE_PLUGIN_KINDS_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 #include "core/plugin/point_eval.h"
 
 #include "core/plugin/guard.h"

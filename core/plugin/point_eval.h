@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The one binder of a host's quantities to a closure's inputs. A closure
  * is evaluated at a batch of points whose inputs the host supplies by name:
  * the binding maps each of the closure's inputs to one of the host's named

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Closure libraries: the search path, loading with dlopen, validation of
  * every descriptor against the ABI, and look-up by (kind, name).
  *

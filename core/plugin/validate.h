@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Validation of a closure descriptor against ABI v1: versions and sizes,
  * schema sanity (unique names, defaults inside bounds, offsets inside the
  * struct), input names from the host dictionary, and the kind's contract. */

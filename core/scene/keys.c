@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The key tables shared by every model (keys.h). */
 #include "core/scene/keys.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Key tables every model reads the same way (a model's schema lists them
  * beside its own). */
 #ifndef SLUICE_SCENE_KEYS_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The mesh a scene's [mesh] section describes (see mesh.h). */
 #include "core/scene/mesh.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The mesh of a scene, from its [mesh] section (the keys, their defaults and
  * ranges: core/scene/keys.c):
  *   generator = interval | rectangle | annulus | inclined_box | gmsh

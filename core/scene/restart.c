@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A restart checked against the scene of its checkpoint (restart.h). */
 #include "core/scene/restart.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A restart checked against the scene of its checkpoint: the scene the
  * checkpoint's run was made with (its provenance, /provenance/ini) and the
  * scene of the restart must agree on everything but what a continuation

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The typed scene: the INI file read once through a model's schema (scene.h). */
 #include "core/scene/scene.h"
 #include "core/scene/solver.h"

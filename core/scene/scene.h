@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The typed scene, built once from the INI file and the model's schema
  * (core/scene/schema.h): every key the model reads, validated and
  * defaulted, in structs; the mesh; the boundaries; the closures by role.

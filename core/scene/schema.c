@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Look-ups in a model's schema and its description (schema.h). */
 #include "core/scene/schema.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The keys a model reads from a scene, declared once: section, name, type,
  * default, range, units and help, and where the typed value goes. A model's
  * schema is the list of every key it reads (shared tables of keys that

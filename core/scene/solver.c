@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The sparse direct solver of a scene (solver.h). */
 #include "core/scene/solver.h"
 

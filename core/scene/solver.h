@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The sparse direct solver of a scene: [solver] linear (auto: by the number
  * of unknowns and the BLAS, sl_linsolve_default_name), ordering (only for
  * klu; when the scene gives none, the model's default ordering) and reuse

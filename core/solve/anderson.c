@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Anderson acceleration (see anderson.h). */
 #include "core/solve/anderson.h"
 

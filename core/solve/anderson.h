@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Anderson acceleration of a fixed-point iteration x <- G(x).
  *
  * Walker & Ni (2011), SIAM J. Numer. Anal. 49:1715, "Anderson

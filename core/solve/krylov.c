@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* FGMRES(m) (see krylov.h), after Saad 2003, Algorithm 9.6. */
 #include "core/solve/krylov.h"
 

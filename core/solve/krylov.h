@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Restarted flexible GMRES, FGMRES(m), right-preconditioned (Saad 1993,
  * SIAM J. Sci. Comput. 14(2):461-469; Saad 2003, Iterative Methods for
  * Sparse Linear Systems, 2nd ed., Algorithm 9.6).

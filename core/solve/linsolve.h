@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Direct sparse linear solvers behind one ops table (SUNDIALS style), one
  * backend per SuiteSparse package: "umfpack" (general multifrontal LU), "klu"
  * (LU with cheap refactorisation) and "cholmod" (symmetric positive definite);

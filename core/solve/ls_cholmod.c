@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* CHOLMOD backend: Cholesky for symmetric positive definite matrices.
  * The CSR arrays are wrapped (not copied) as a CHOLMOD matrix with stype = 1,
  * so CHOLMOD reads one triangle only; with stype = 0 it would factorise

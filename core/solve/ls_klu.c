@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* KLU backend: LU with BTF and a fill-reducing ordering, and klu_refactor,
  * which reuses the previous pivot order and is much cheaper than a fresh
  * factorisation. As in SUNDIALS' sunlinsol_klu, a refactorisation whose

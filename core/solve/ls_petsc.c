@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* PETSc backend (built with -DSLUICE_WITH_PETSC=ON): a KSP solve of sluice's
  * CSR matrix, on one rank. The matrix is copied into a sequential AIJ matrix
  * of the same pattern; "numeric" hands the new values to the KSP, whose

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* UMFPACK backend (general sparse LU, the default). The CSR arrays of A are
  * handed over as the CSC of A^T and the system is solved with UMFPACK_At.
  * The 64-bit interface (umfpack_dl): the 32-bit one runs out of index space

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Newton with line search and Picard fallback (see newton.h). */
 #include "core/solve/newton.h"
 

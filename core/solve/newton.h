@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Newton's method with a backtracking line search and a Picard fallback,
  * over a problem given by one assembly callback.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Compressed sparse row matrices for assembly and the direct solvers.
  *
  * The pattern is built once from element connectivity (sorted, unique column

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Triplet assembly into CSR with the pattern kept (triplets.h). */
 #include "core/solve/triplets.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A sparse matrix assembled as (row, column, value) triplets, in whatever
  * order and with repeats, then summed into CSR. The pattern is built the
  * first time and kept: while an assembly emits the same sequence of (row,

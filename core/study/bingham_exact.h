@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Fully developed pressure-driven flow of a Bingham fluid between plates at
  * y = c - H and y = c + H (Bird, Dai & Yarusso 1983, Rev. Chem. Eng. 1:1,
  * section 3.1): driven by G = -dp/dz (any sign), with plastic viscosity

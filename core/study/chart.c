@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Line charts on a raster (see chart.h). */
 #include "core/study/chart.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A line chart rendered to an RGB image and written as PNG: one panel with
  * linear or logarithmic axes, ticks and tick labels, axis titles, a title
  * and subtitle, series drawn as markers joined by lines (colour and marker

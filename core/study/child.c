@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Work in a child process (child.h). */
 #define _DEFAULT_SOURCE /* wait4(): the one wait that returns the child's own rusage (BSD, in glibc and musl) */
 #include "core/study/child.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Work in a child process, so that its memory and clocks are its own and a
  * crash, a hang or an exit ends only it: either a command is exec'ed (a
  * study's run of the sluice command itself, FreeFEM), or a function is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Exact solutions from a run's scene (see exact.h). */
 #include "core/study/exact.h"
 

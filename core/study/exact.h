@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Exact solutions a study measures against (`[measure] exact = NAME`), set
  * up from one run's resolved scene, closures included:
  *

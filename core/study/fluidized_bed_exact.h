@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The porosity of a homogeneous liquid-fluidised bed at rest: fluid passes
  * upwards at superficial velocity U through particles that do not move, so
  * the drag on the solids carries their buoyant weight,

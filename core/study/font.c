@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The 5 x 8 bitmap font (see font.h): one glyph per printable ASCII
  * character, drawn row by row ('#' a set pixel). */
 #include "core/study/font.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A built-in 5 x 8 bitmap font (printable ASCII: 7 rows for capitals and
  * digits, the 8th for descenders) to label plots without a font library. */
 #ifndef SLUICE_PLOT_FONT_H

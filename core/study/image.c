@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* RGB raster drawing (see image.h). */
 #include "core/study/image.h"
 

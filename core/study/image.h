@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* An RGB image in memory and the few drawing operations plots need:
  * filled rectangles, lines of a given width (solid or dashed) and markers.
  * Colours are 0xRRGGBB; pixel (0, 0) is the top-left corner; anything drawn

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The exact entropy solution of 1-D batch settling (Kynch 1952) in a closed
  * column 0 <= z <= H (z up), phi(z, 0) = phi0:
  *

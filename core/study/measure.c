@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Measuring a run's output (see measure.h). */
 #include "core/study/measure.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* What a study measures in one run's output file ([measure] of the study):
  *  - a field sampled at evenly spaced points of a line (core/io/sample.h;
  *    on a 1-D mesh the whole mesh when no line is given), or at the

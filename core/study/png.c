@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* PNG encoder with a fixed-Huffman deflate stream (see png.h). */
 #include "core/study/png.h"
 

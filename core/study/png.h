@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A PNG encoder for 8-bit RGB images, self-contained: the image data go
  * into a zlib stream of one deflate block with the fixed Huffman codes and
  * greedy LZ77 matches (PNG: ISO/IEC 15948:2004; zlib: RFC 1950; deflate:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A study's CSV and PNG (see report.h). */
 #include "core/study/report.h"
 

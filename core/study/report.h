@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The results of a study: one row per run, the errors and observed orders,
  * and what is written: a CSV with one row per run, a CSV of the compared
  * quantity side by side (comparisons), and a PNG plot (core/study/chart.h):

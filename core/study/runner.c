@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A study's runs in child processes (see runner.h). */
 #include "core/study/runner.h"
 

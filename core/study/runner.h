@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* One run of a study in a child process (core/study/child.h): the sluice
  * command itself (/proc/self/exe) exec'ed for that one run, so that the
  * child's memory and clocks start from nothing. A crash, a failure or a

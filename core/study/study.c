@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Reading and checking a study file (see study.h). */
 #include "core/study/study.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A benchmark study (`sluice bench STUDY.ini`): a scene, the overrides that
  * make its runs, and what is measured in each run's output.
  *

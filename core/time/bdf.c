@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Variable-step BDF1/BDF2 with Milne error estimates (see bdf.h).
  *
  * Error constants, expanding about t_{n+1} (h = t_{n+1} - t_n, hp, hpp the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Variable-step BDF1/BDF2 for du/dt = F(u) (an index-1 DAE in the flow
  * solver: the pressure has no time derivative), with a predictor, a local
  * error estimate and step-size control.

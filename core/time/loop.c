@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The steady, adaptive BDF and fixed-step loops (loop.h). */
 #include "core/time/loop.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The time loops that serve every model (core/time/model.h): the steady
  * solve, the adaptive BDF1/BDF2 loop and the fixed-step loop, with the same
  * output and checkpoint timing for all of them:

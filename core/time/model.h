@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* What a model gives the time loops: one ops table (in the spirit of
  * SUNDIALS' ops tables and PETSc's XXXSetType: a NULL hook means the
  * default, usually "nothing to do"), and what a run reports.

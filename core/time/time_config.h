@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A run's time settings ([time], and [output] every), as the scene
  * (core/scene) resolves them for the time loops. */
 #ifndef SLUICE_TIME_TIME_CONFIG_H

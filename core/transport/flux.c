@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Tabulated settling flux and the exact Godunov flux on it (see flux.h). */
 #include "core/transport/flux.h"
 

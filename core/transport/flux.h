@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The settling flux F(phi) = phi u_settle(phi) tabulated once from a
  * hindered-settling closure, and the exact Godunov flux of the face flux
  * h(phi) = q phi + w F(phi) built on that table.

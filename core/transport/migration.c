@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The shear-induced migration flux (Phillips et al. 1992; Nigam 1999 eqs
  * 2.29-2.30): two-point face fluxes and the stable explicit step. See
  * migration.h for the formulas and the positivity argument. */

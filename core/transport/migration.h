@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Shear-induced migration flux for the solids-fraction transport: the
  * diffusive particle flux of Leighton & Acrivos (1987, J. Fluid Mech.
  * 181:415) in the form of Phillips, Armstrong, Brown, Graham & Abbott

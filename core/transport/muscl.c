@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* MUSCL reconstruction (van Leer 1979): a least-squares gradient per cell
  * from its face neighbours, limited so that the value at every face point
  * stays within beta times the distance to the extreme of the cell and its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Periodic boundary pairs: the faces of two mesh boundaries that match by a
  * translation are joined into interior faces between their cells (see
  * sl_transport_set_periodic in transport.h). The geometric match is the

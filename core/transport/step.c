@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Face fluxes, the stable step, the bounds limiter of the extra flux, and
  * the sub-cycled explicit update. */
 #include <math.h>

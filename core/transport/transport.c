@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Transport set-up: options, flux table, geometry (planar and r-weighted),
  * least-squares matrices, boundary types, helpers for the settling
  * coefficients. */

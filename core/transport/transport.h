@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Finite-volume transport of the solids fraction phi on the cells of a mesh:
  *
  *   d/dt int_V phi + sum_faces [ q_f phi + w_f F(phi) ] = 0,   F(phi) = phi u_settle(phi),

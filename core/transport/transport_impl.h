@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Internal: the transport object shared by transport.c (set-up, geometry),
  * periodic.c (periodic boundary pairs), muscl.c (reconstruction), step.c
  * (fluxes, sub-cycling) and migration.c (the shear-induced migration flux). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The BLAS of the process (see blas.h). */
 #define _GNU_SOURCE
 #include "core/util/blas.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Which BLAS the process runs on: UMFPACK's and CHOLMOD's supernodal
  * kernels call it, and an optimised one (OpenBLAS) halves UMFPACK's
  * factorisation time against the reference BLAS. Found from the shared

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Diagnostics shared by the whole core: a message buffer and the exit codes.
  * Functions that can fail take an sl_diag and return 0 or one of the codes. */
 #ifndef SLUICE_UTIL_DIAG_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 #include "core/util/version.h"
 
 #include "sluice_version_full.h"

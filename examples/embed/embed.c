@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A program that runs a sluice scene through the embedding API: the Stokes
  * cavity with its mesh and output set from here, reporting its progress and
  * what the run did. Build against an installed sluice:

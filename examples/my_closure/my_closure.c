@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* An out-of-tree closure: a power-law (Ostwald-de Waele) fluid,
  *   viscosity = consistency * shear_rate^(n - 1),
  * with the shear rate floored at `min_shear_rate` so the viscosity stays

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Byrne (1991) densification of a sand under cyclic shear, the
  * Martin-Finn-Seed (1975) idea in one exponential: the volumetric strain a
  * drained sample would take in one cycle of shear strain amplitude gamma,

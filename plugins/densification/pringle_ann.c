@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Pringle's (2001) artificial neural network for the reference porosity nbar
  * of a sand under cyclic shear: 3 inputs, one hidden layer of 3 logistic
  * nodes, 1 logistic output, min-max scaling of inputs and output (thesis

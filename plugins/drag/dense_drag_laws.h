@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The Ergun and Wen-Yu laws with their derivatives, shared by the closures
  * that use them alone (ergun, wen_yu) or switched (gidaspow, pringle), so each
  * law is written once. Header-only, libm only. K follows F_s = K (u_f - u_s).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Di Felice (1994) drag with a Reynolds-dependent voidage exponent, as the
  * momentum-exchange coefficient K with F_s = K (u_f - u_s)
  * (architecture.md section 4). eps = 1 - phi is the fluid fraction.

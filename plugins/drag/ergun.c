@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Ergun (1952) drag for dense beds, as the momentum-exchange coefficient K
  * with F_s = K (u_f - u_s) (architecture.md section 4).
  *

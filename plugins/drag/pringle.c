@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Pringle (2001) drag: Ergun in dense beds, a Richardson-Zaki law with
  * Rowe's C_D in dilute ones, switched hard at porosity 0.6; as the
  * momentum-exchange coefficient K with F_s = K (u_f - u_s)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The drag that reproduces Richardson-Zaki exactly inside the two-fluid
  * momentum equations, as the momentum-exchange coefficient K with
  * F_s = K (u_f - u_s) (architecture.md section 4). eps = 1 - phi.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Single-sphere drag correlations, the terminal velocity of a sphere and the
  * input range check shared by the drag and hindered-settling closures.
  * Header-only (static inline), no state, no link to anything but libm; a

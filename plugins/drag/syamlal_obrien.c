@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Syamlal-O'Brien (1988) drag, as the momentum-exchange coefficient K with
  * F_s = K (u_f - u_s) (architecture.md section 4). eps = 1 - phi is the
  * fluid fraction.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Algebraic (local-equilibrium) granular temperature in homogeneous simple
  * shear: production by the shear stress equals collisional dissipation,
  *   mu_s(phi, theta) shear_rate^2 = gamma(phi, theta),

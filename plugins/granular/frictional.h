@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Shared pieces of the frictional (quasi-static, Coulomb) solids stress
  * closures schaeffer.c and johnson_jackson_frictional.c: the frictional
  * pressure laws, the Coulomb viscosity and the evaluate loop.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Validity check shared by the granular and wall_stress closures: every
  * input against its declared closed range [valid_min, valid_max], point by
  * point so that the first bad point is the one named, written as a negated

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Johnson & Jackson (1987) frictional stress for dense granular material: the
  * frictional normal stress
  *   p_fr = Fr (phi - phi_min)^r / (phi_max - phi)^s,   phi > phi_min,

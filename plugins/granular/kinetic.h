@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Shared pieces of the kinetic theory of granular flow (KTGF), used by the
  * granular closures (lun, gidaspow, algebraic_theta) and by the wall_stress
  * closures that need a radial distribution function (johnson_jackson,

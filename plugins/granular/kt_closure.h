@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The evaluate loop shared by the two kinetic-theory closures (lun.c,
  * gidaspow.c): same inputs, outputs and parameters, different shear
  * viscosity and conductivity (kinetic.h). Header-only, static, no state. */

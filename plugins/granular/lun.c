@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Lun et al. (1984) kinetic theory of granular flow: radial distribution,
  * solids pressure, shear and bulk viscosity, conductivity of granular energy
  * and collisional dissipation, as functions of the solids fraction phi and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Schaeffer (1987) frictional (plastic, Coulomb) solids stress for dense,
  * slowly sheared granular material: a frictional pressure p_fr(phi) and the
  * viscosity that puts the deviatoric stress on the Coulomb yield surface,

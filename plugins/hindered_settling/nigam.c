@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Nigam (1999) hindered settling: the batch-settling velocity of the solids
  * relative to the mixture volume flux, u_t f(phi), so that the Kynch flux is
  * phi u_t f(phi) (architecture.md section 3, `mixture`).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Phillips et al. (1992) shear-induced migration: the diffusive particle
  * fluxes of the Leighton & Acrivos (1987) scaling arguments,
  *   N_c  = -K_c  a^2 phi grad(shear_rate phi)            (collisions)

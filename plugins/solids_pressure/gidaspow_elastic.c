@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Solids pressure from the Gidaspow "solids elastic modulus" (Bouillard,
  * Lyczkowski & Gidaspow 1989; Gidaspow 1994):
  *   G(phi) = dp_s/dphi = G0 exp(C (phi - phi_max)),

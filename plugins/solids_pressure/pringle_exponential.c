@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Pringle (2001) solid ("granular component") pressure of a saturated sand,
  * from a logarithmic compressibility -d eps_v / dP_s = A / P_s:
  *   P_s = p_ref exp[ (1/A) (1 - (1 - nbar)/(1 - n)) ],   n = 1 - phi (porosity),

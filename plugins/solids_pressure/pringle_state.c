@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Pringle (2001) solid ("granular component") pressure with its reference
  * porosity a state variable of the sand:
  *   P_s = p_ref exp[ (1/A) (1 - (1 - nbar)/(1 - n)) ],   n = 1 - phi,

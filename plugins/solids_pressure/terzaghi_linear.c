@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A linear solids pressure of the volumetric strain from a reference
  * state, Terzaghi's (1925) soil of constant compressibility m_v = 1/M:
  *   p_s = M max(0, 1 - (1 - nbar)/phi),   n = 1 - phi,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The standard k-epsilon model of Launder & Spalding (1974), Comput. Methods
  * Appl. Mech. Eng. 3:269, as its pointwise laws: the eddy viscosity and the
  * coefficients of the two transport equations a model solves,

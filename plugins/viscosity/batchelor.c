@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Batchelor (1977) viscosity of a semi-dilute suspension of rigid spheres,
  *   mu = mu_f (1 + 2.5 phi + 6.2 phi^2),
  * Batchelor (1977) J. Fluid Mech. 83:97 (the result stated in the abstract,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Regularised Bingham (1922) viscoplastic viscosity,
  *   tau = tau0 + mu_p shear_rate (yielded),  mu = mu_p + tau0/shear_rate,
  * which is unbounded at shear_rate = 0 and is therefore regularised:

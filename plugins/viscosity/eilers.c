@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Eilers (1941) viscosity of a concentrated suspension,
  *   mu = mu_f [1 + (0.5 [eta]) phi / (1 - phi/phi_max)]^2,  0.5 [eta] = 1.25,
  * Eilers (1941) Kolloid-Z. 97:313, in the form with the intrinsic viscosity

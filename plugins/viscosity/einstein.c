@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Einstein (1906, 1911) viscosity of a dilute suspension of rigid spheres,
  *   mu = mu_f (1 + 2.5 phi),
  * Einstein (1906) Ann. Phys. 19:289, with the arithmetic error corrected in

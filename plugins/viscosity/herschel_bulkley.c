@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Regularised Herschel & Bulkley (1926) viscoplastic viscosity,
  *   tau = tau0 + K shear_rate^n (yielded),  mu = tau0/shear_rate + K shear_rate^(n-1),
  * Herschel & Bulkley (1926) Kolloid-Z. 39:291. Regularised with the same

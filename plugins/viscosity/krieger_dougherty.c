@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Krieger & Dougherty (1959) viscosity of a concentrated suspension,
  *   mu = mu_f (1 - phi/phi_max)^(-[eta] phi_max),
  * Krieger & Dougherty (1959) Trans. Soc. Rheol. 3:137; the form used by

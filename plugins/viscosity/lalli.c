@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Lalli (INSEAN, undated; work funded 1991-93) density-dependent
  * regularised Bingham viscosity for a liquid carrying a large amount of
  * suspended solids, treated as one pseudo-continuum of variable density rho:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Maron & Pierce (1956) viscosity of a concentrated suspension,
  *   mu = mu_f (1 - phi/phi_max)^(-2),
  * Maron & Pierce (1956) J. Colloid Sci. 11:80 (the form given by the

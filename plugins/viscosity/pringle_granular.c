@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Pringle (2001) mixture viscosity of a fluidised sand, a modified Mooney
  * (1951) double exponential fitted to Brookfield measurements in a fluidised
  * bed of Barnes sand (three gradings, one fit):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Regularisations of the yield-stress term tau0/shear_rate shared by the
  * bingham and herschel_bulkley closures (header-only, no state).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Bagnold (1954) solids wall shear stress, in the form used for slurry pipe
  * walls by Shook & Bartosik (1994) and Krampa (2009) eqs 2.7-2.9:
  *   macro-viscous  (N < 40):   tau_w = k_v mu_f lambda^1.5 (dU/dy)_w,      k_v = 2.25

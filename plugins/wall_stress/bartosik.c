@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Bartosik (1996) modified Bagnold wall shear stress for coarse-particle
  * slurries in vertical pipes (Krampa 2009 eq 2.10, "B96"):
  *   tau_w = (8.3018e7 / Re_f^2.317) D^2 rho_s d_p^2 lambda^1.5 (dU/dy)_w^2,

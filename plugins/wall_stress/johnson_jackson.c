@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Johnson & Jackson (1987) partial-slip wall condition for the solids phase:
  * the shear stress transmitted by particle-wall collisions and the
  * granular-energy flux through the wall,

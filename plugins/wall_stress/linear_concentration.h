@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Bagnold's linear concentration (Bagnold 1954; Krampa 2009 eq 2.9),
  *   lambda = 1 / ((phi_max/phi)^(1/3) - 1) = x / (1 - x),  x = (phi/phi_max)^(1/3),
  * the ratio of particle diameter to mean gap between neighbours. It diverges

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The standard wall function of Launder & Spalding (1974), Comput. Methods
  * Appl. Mech. Eng. 3:269, in the form of Krampa (2009) eqs 4.84-4.86: the
  * fluid's speed U at the first node off a smooth wall, at distance y, lies on

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Navier partial slip for the solids phase with the slip lengths of Ding &
  * Gidaspow (1990) and Ding & Lyczkowski (1992): the slip condition of
  * Eldighidy et al. (1977), u_s|w = lambda_slip (du_s/dn)|w, written as the

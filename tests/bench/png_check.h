@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* An independent reader of the PNG files sluice writes, for the tests: it
  * checks the signature, every chunk's CRC-32 (bit by bit, not the
  * encoder's table), the IHDR fields, the zlib header, the deflate blocks

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice bench end to end, through the sluice command as a user runs it:
  *  - a small Kynch study (Godunov and MUSCL on 50, 100, 200 cells against
  *    the exact solution): one CSV row per run with its measurements, errors

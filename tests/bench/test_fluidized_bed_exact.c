@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The equilibrium porosity of a liquid-fluidised bed (exact = fluidized_bed
  * of sluice bench):
  *  - core/study/fluidized_bed_exact.h with Richardson & Zaki's drag, whose

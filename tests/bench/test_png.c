@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The PNG encoder, the bitmap font and the chart (core/study/): checksums
  * against their published check values, encoded images read back by an
  * independent reader and inflater (tests/bench/png_check.h) pixel for

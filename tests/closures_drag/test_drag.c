@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Tests of the drag closures: stokes, schiller_naumann, ergun, wen_yu,
  * gidaspow, di_felice, syamlal_obrien, richardson_zaki_consistent, pringle.
  * Values against the formulas written independently here (per-particle

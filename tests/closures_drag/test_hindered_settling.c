@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Tests of the hindered_settling closures richardson_zaki, michaels_bolger,
  * nigam and vesilind: the terminal velocity (Stokes formula; the Schiller-Naumann /
  * Rowe force balance to 1e-14 and Pringle's (2001) values for nylon spheres),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Helpers for the granular and wall-stress tests on top of closure_test.h:
  * whether a closure accepts a parameter value and whether it can be created,
  * a one-point evaluation with every output requested, and a Richardson-

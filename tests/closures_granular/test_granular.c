@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Tests of the granular closures: kinetic theory (lun, gidaspow), the
  * equilibrium granular temperature (algebraic_theta) and the frictional
  * stress (schaeffer, johnson_jackson_frictional).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Tests of the solids wall-stress closures: bagnold, bartosik,
  * johnson_jackson, navier_slip_ding_gidaspow, navier_slip_ding_lyczkowski.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Tests of the migration closure phillips: the Phillips et al. (1992)
  * constants, the a = d_p/2 convention, derivatives, refused states, and the
  * zero-flux steady state phi shear_rate mu^(K_mu/K_c) = const (Nigam 1999

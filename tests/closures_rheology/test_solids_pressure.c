@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Tests of the solids_pressure closures pringle_exponential and
  * gidaspow_elastic: values against the formulas written independently,
  * Pringle's (2001) eq 4.30 tabulated, dp_s/dphi, limits and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Tests of the viscosity closures: suspension laws (einstein, batchelor,
  * krieger_dougherty, maron_pierce, eilers, pringle_granular) and
  * viscoplastic laws (bingham, herschel_bulkley, lalli).

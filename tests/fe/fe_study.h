@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Helpers shared by the fe verification studies: observed orders, error
  * quadrature degrees, a diffusion solve on a dof map. */
 #ifndef SLUICE_TESTS_FE_STUDY_H

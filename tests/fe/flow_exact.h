@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Manufactured solutions for the flow operator: the body force is the strong
  * form of the equations applied to an exact (u, p), written in the
  * textbook component form and differentiated numerically, so that it shares

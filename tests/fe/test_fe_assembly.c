@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Assembly unit checks: operator identities (constants and rigid motions in
  * the kernel, symmetry, load sums), skipped zero terms, batched callbacks
  * (shear rate input, errors and NaN refused), Dirichlet constraints, input

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Axisymmetric Poisson with a manufactured solution on the (r, z) box
  * [0, 1] x [0, 1] with the axis as a boundary (natural condition there):
  *   -(1/r) d/dr(r k du/dr) - d/dz(k du/dz) = f,

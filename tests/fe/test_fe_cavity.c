@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The Stokes lid-driven cavity on [0, 1]^2 (mu = 1, no slip on the walls),
  * Q2/Q1 on n x n quads; the quantity is the minimum of the horizontal
  * velocity on the vertical centreline x = 1/2.

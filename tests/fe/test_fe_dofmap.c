@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Dof maps: counts, node coordinates, continuity (a quadratic is
  * interpolated exactly and the interpolant agrees across cells), boundary
  * dof lists, the Taylor–Hood numbering, and point location/evaluation. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Lagrange reference elements: partition of unity, Kronecker property at
  * the nodes, gradients against central differences, exact reproduction of
  * the polynomials of the element's order. */

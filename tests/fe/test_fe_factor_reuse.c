@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Constant operators are factorised once: repeated solves with the same
  * assembled matrix do one symbolic and one numeric factorisation
  * (sl_linsolve_get_stats), and re-assembling the same operator is

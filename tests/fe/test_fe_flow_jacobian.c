@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The flow operator's linearisations against its residual, on random
  * iterates, for every geometry: planar (2 and 3 components), triangles,
  * axisymmetric with swirl (off and on the axis), 1-D with an out-of-plane

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Steady generalized-Newtonian Navier–Stokes with manufactured solutions
  * (flow_exact.h), solved by Newton on n = 8, 16, 32:
  *  - planar Q2/Q1 and P2/P1 with convection, density rho = 1 + x/5 and a

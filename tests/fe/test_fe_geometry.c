@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The integration context: areas, physical gradients, quadrature points on
  * affine and bilinear cells, the axisymmetric r weighting, and refusals. */
 #include <math.h>

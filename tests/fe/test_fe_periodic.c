@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Periodic dof maps and Taylor–Hood spaces: counts, the two numberings
  * (geometric nodes, identified dofs) and the map between them, the
  * representatives' positions, interpolation of periodic functions, boundary

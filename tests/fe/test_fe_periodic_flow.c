@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Flow on periodic Taylor–Hood spaces.
  *
  * 1. Periodic Poiseuille channel [0, L] x [0, 1], L = 2.5, periodic in x,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Diffusion -div(k grad u) = f on periodic spaces, manufactured solutions,
  * observed orders over n = 8, 16, 32 (L2 p + 1, H1 p, within +-0.2):
  *

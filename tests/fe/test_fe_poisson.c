@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Poisson with a manufactured solution and a variable coefficient,
  *   -div(k grad u) = f on [0, 1]^2,  u = u_exact on the boundary,
  *   u = sin(a x + 0.3) cos(b y),  k = 1 + x^2 / 2 + y,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Quadrature rules: weights sum to the reference measure, points lie in the
  * cell, and every monomial up to the rule's degree is integrated exactly. */
 #include <math.h>

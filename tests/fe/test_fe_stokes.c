@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Stokes with a manufactured solution and variable viscosity on [0, 1]^2,
  *   -div(2 mu D(u)) + grad p = f,  div u = 0,  u = u_exact on the boundary,
  *   u = (sin(a x) cos(b y) / a, -cos(a x) sin(b y) / b)   (divergence-free),

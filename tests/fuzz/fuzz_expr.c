@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* libFuzzer target for the expression language (core/config/expr.c). Any
  * input must compile or fail cleanly (no crash, leak or UB under ASan+UBSan,
  * nothing handed out on failure, a "column N:" style message). Programs that

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* libFuzzer target for the INI parser. Any input must parse or fail cleanly
  * (no crash, leak or UB under ASan+UBSan). Inputs that parse must also
  * survive the write/re-parse round trip unchanged: that property is cheap to

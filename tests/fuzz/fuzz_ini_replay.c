@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Replays inputs through LLVMFuzzerTestOneInput without libFuzzer, so every
  * build (plain and ASan+UBSan) runs the seed corpus and any saved crashers.
  * Usage: fuzz_ini_replay FILE_OR_DIR...  (a directory means every file in it). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* libFuzzer target for the model layer: the input is a scene file, checked
  * as `sluice run --check` checks it (the INI parsed, the model chosen, every
  * section and key validated against the model's schema, the closures found

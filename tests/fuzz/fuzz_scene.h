@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The scene fuzz target's entry point (fuzz_scene.c), shared by the libFuzzer
  * binary and the replay tests. */
 #ifndef SLUICE_TESTS_FUZZ_SCENE_H

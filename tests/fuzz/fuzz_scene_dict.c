@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Writes the scene fuzz target's libFuzzer dictionary (tests/fuzz/scene.dict)
  * from the models' schemas and the built-in closures' descriptors: every
  * section and key name, choice value, model and closure name, closure

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Replays scene files through the scene fuzz target's entry point
  * (sl_fuzz_scene_check) and checks what each gives:
  *   fuzz_scene_expect 0 DIR...   every file is a valid scene (the seeds: they

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Helpers for the I/O tests: external tools, file contents. */
 #ifndef SLUICE_TESTS_IO_UTIL_H
 #define SLUICE_TESTS_IO_UTIL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Checkpoints: bit-for-bit round trip (special values included), the latest
  * one wins, arrays may change size or disappear, the file does not grow when
  * the shapes stay, and a crash after the slot write but before it is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* HDF5 + XDMF output: write a 2-triangle mesh and two steps, read everything
  * back bit for bit, validate the sidecar and the file with the external
  * tools, survive a crash (fork + _exit without closing), read while the

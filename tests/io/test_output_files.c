@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The files of an output and what may replace them: a file sluice did not
  * write is refused (the scene file always), a scene's path stays in its
  * folder or the working folder, a run that fails before its first output

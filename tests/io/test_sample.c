@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Sampling of output files: fields that the cell's basis reproduces exactly
  * (biquadratic on rectangular Q9 cells, quadratic on distorted Q9 and on P2
  * triangles and Edge_3 lines, linear on distorted Q1, on P1 triangles and on

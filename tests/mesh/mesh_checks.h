@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Checks shared by the mesh tests: topology, normals, areas, lengths. */
 #ifndef SLUICE_TESTS_MESH_CHECKS_H
 #define SLUICE_TESTS_MESH_CHECKS_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The DFG benchmark 2D-1 (Schafer & Turek 1996, Re = 20), configs/dfg_2d1.ini
  * on a second-order mesh made by gmsh from configs/dfg_2d1.geo in the test
  * (the committed configs/dfg_2d1.msh when gmsh is not installed):

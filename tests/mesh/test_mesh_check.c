@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sl_mesh_create from arrays: refusal of inverted, degenerate, overlapping
  * and untagged meshes; name look-up with did-you-mean; quality report. */
 #define _POSIX_C_SOURCE 200809L /* open_memstream */

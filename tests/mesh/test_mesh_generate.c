@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Generators: counts, Euler, exact areas and boundary lengths, grading,
  * normals, names. */
 #include "mesh_checks.h"

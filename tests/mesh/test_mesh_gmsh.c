@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Gmsh reader: 2.2 and 4.1 files of the same geometry give the same mesh;
  * every malformed file gives SL_EBADINPUT with the right file:line. */
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Meshes as Gmsh writes them, made by the gmsh program in the test: a
  * square with a circular hole of radius R = 0.05 in second-order
  * triangles, 9-node and 8-node quadrangles, ASCII and binary MSH 4.1;

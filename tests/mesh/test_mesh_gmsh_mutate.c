@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Robustness of the Gmsh reader: thousands of deterministic mutations of
  * the checked-in files (lines dropped, doubled or swapped, bytes changed,
  * the file cut short) must each either read into a valid mesh or fail with

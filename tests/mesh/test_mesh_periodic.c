@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Periodic boundary pairs at the mesh level: the translation, the vertex and
  * face correspondence on rectangles (quads, triangles), an inclined box and
  * an interval, and the refusals (unknown name, self pair, different counts,

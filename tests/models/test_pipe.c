@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The fully developed pipe model (core/models/pipe), water alone, against
  * smooth-pipe turbulence:
  *  - the Fanning friction factor within 3 % of Churchill (1977) for Re =

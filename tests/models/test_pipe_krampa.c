@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Krampa (2009) Tables C.1-C.7 (configs/data/krampa_2009_tables_c.csv): the
  * measured manometric pressure gradients of 0.5 mm glass beads in the 53.2 mm
  * vertical loop, every row in up-flow and down-flow with the fully developed

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The two-fluid pipe (core/models/pipe) with solids, on configs/vertical_pipe.ini
  * (Krampa 2009, Chapter 3 experiments: 0.5 mm glass beads, 25 %, V = 3.02 m/s):
  *  - what the discrete equations hold exactly: the bulk velocity, the solids

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The stress of the relative motion, -div[rho_f j_R j_R / (phi (1 - phi))]
  * (Nigam 1999 eq 2.16; [mixture] relative_flux_stress):
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The scalar model (core/models/scalar): the smallest model on the shared
  * layers, run through the embedding API, against exact solutions:
  *  - steady diffusion between two given values: the linear profile, exact;

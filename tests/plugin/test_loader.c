@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The loader against deliberately broken closure libraries: every defect
  * gives a clear message naming the file, never a crash. */
 #include <stddef.h>

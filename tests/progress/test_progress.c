@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The run summary (a fixed example verbatim, percentages adding up to
  * 100 over random splits, one line, truncation) and the progress line (off
  * when not a terminal, SLUICE_PROGRESS, at most 10 redraws per second on a

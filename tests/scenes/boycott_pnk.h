@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Settling in a vessel whose side walls lean at gamma from the vertical
  * (the Boycott effect): the kinematic theory of Ponder, Nakamura & Kuroda
  * (PNK) and its correction for the clear-fluid layer under the

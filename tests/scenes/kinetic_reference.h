@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Lun et al.'s (1984) kinetic theory at theta = 1 and Wen & Yu's drag at
  * zero slip, coded from the formulas (lun.c's comment) rather than through
  * the closures, for the scene tests of the shear layer and the 2-D model:

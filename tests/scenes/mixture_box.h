@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The upright settling box of the mixture model's scene tests and of
  * bench/mixture_box.c: a closed vessel W wide and H high (0.1 m x 1 m), nx x
  * ny cells (ny = n, nx = 4; or a 1-D column of n cells), a uniform

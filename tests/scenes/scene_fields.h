@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Reading a scene test's output back: a field at a time (all its
  * components) and a scalar, a failure counted as a failed check. */
 #ifndef SLUICE_TESTS_SCENES_SCENE_FIELDS_H

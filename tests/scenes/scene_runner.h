@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Runs a scene of configs/ as `sluice run` does (parse, overrides,
  * validation, closures, the model), through the embedding API, for the
  * scene tests. */

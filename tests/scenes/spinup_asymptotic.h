@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The asymptotic particle fraction of a light-particle suspension spun up
  * from rest in a closed cylinder (Amberg & Ungarish 1993; Nigam 1999,
  * section 4.1, eqs 4.51-4.61), in the interior's

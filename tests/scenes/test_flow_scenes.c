@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The navier_stokes scenes of configs/, run through the same entry point as
  * `sluice run` and read back from their output files:
  *  - cavity_re100: Ghia, Ghia & Shin (1982) centreline stations, and mesh

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* configs/liquefaction.ini: a sand deposit built by settling in the 1-D
  * two-fluid column, shaken at its base by the synthetic 6 s record, run to
  * 3 minutes (Pringle 2001, thesis sections 5.4-5.5). Checked:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The 2-D mixture model keeps a suspension at rest where nothing moves it,
  * and settles like the 1-D column where only settling does.
  *

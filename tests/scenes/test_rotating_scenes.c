@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The rotating frames of the flow engine against exact solutions:
  *  - frame: solid-body rotation at rest in the rotating frame (a cylinder
  *    with an open side, axisymmetric, and a closed disc, planar): rest and the

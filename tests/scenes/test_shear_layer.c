@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The two-fluid shear layer (`[two_fluid] motion = shear`): ktgf_shear.ini
  * and shear_cell.ini of configs/, and variants written here, run through
  * the entry point of `sluice run` and read back from their output files.

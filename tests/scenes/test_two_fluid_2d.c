@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The 2-D two-fluid model (staggered grid, planar and axisymmetric), run
  * through the same entry point as `sluice run` and read back from its
  * output files.

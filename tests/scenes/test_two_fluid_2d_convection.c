@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The 2-D two-fluid model's convective acceleration ([flow] convection):
  *
  * taylor_green: the Taylor-Green vortex in clear fluid (phi = 0, where the

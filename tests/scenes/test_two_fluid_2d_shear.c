@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The 2-D two-fluid model's solids stress, moving walls and periodic
  * sides (scenes in tests/scenes/two_fluid_2d/), against exact solutions:
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The 2-D two-fluid model's second-order solids transport ([two_fluid]
  * order = 2: MUSCL, van Leer 1979, minmod or MC limited, in Heun's stages),
  * run through the same entry point as `sluice run` and read back from its

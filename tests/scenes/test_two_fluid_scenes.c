@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The two-fluid scenes of configs/ (1-D columns), run through the same
  * entry point as `sluice run` and read back from their output files.
  *

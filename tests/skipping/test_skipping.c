@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A scene skips what it does not need (architecture.md section 6), counted:
  * a constant-coefficient Stokes run factorises and assembles its matrix
  * once; only the closures a scene names are loaded, each created once and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Finite-difference Poisson matrices for the solver tests and the benchmark:
  * the 3-point (1-D) and 5-point (2-D) Laplacians with Dirichlet boundaries
  * eliminated, built through the sparsity builder with one "element" per row

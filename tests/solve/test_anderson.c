@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Anderson acceleration (core/solve/anderson.h):
  *  - on a linear map G(x) = M x + b of n = 4 unknowns whose plain iteration
  *    converges at rate 0.95 (and oscillates, an eigenvalue -0.9), depth

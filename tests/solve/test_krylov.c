@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* FGMRES (core/solve/krylov.h) on systems with known answers, and the
  * factorisation reuse of the linear solvers built on it:
  *  - a diagonal matrix with k distinct eigenvalues: the exact solution in k

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The three SuiteSparse backends: manufactured solutions of 1-D and 2-D
  * Poisson matrices, factorisation counting, refactorisation, and failures
  * (singular, not positive definite, not symmetric, unknown names). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Newton on linear problems, and the flow problem keeping its matrix:
  *  - a linear solve assembles once and reports the residual b - A du, which
  *    agrees with the residual assembled at the new iterate;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* CSR pattern builder, element assembly (searched and mapped), products and
  * Dirichlet rows. */
 #include <stdlib.h>

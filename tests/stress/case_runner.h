@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Runs a scene of configs/ with overrides in-process, as `sluice run` does
  * (parse, --set overrides, validation, every [closure.*] section checked,
  * the plugin index that loads only the closures a scene names), through the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Numerical stability under stress: the scenes of configs/ pushed to their
  * limits (particle diameter 1 um to 10 mm, density ratio 1.01 to 10, phi0
  * up to phi_max - 1e-3, Bingham number up to 1e4, time steps from small to

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Variable-step BDF1/BDF2 on scalar linear ODEs y' = lambda (y - g(t)) + g'(t)
  * with the exact solution y = g(t) + (y0 - g(0)) e^{lambda t}:
  *  - observed orders 1 and 2 with constant and with varying steps;

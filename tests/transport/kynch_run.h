@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A 1-D batch-settling run on the transport module, for the Kynch tests and
  * the work-precision benchmark: a column [0, H] of N cells (x is the height,
  * gravity along -x), walls at both ends, phi = phi0 at t = 0, advanced in

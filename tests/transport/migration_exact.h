@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The shear-induced migration problems of Nigam (1999) section 4.5 on the
  * transport: the Phillips et al. (1992)
  * closure with mu(phi) = (1 - phi/0.68)^(-1.82), K_c = 0.41, K_mu = 0.62,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The transport driven through real hindered_settling plug-ins (loaded by
  * the registry, created through core/plugin/instance.h): the batch callback
  * of core/transport/flux.h bound to a closure.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Shear-induced migration in a wide-gap Couette cell (Phillips et al. 1992;
  * Nigam 1999 section 4.5), on a 1-D
  * axisymmetric radial line r in [0.2689, 1] (lengths scaled by the outer

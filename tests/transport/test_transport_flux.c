@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Unit tests of the transport module: the tabulated settling flux (Hermite
  * error against the analytic law, its O(dphi^4) fall, the pieces of
  * monotone F'), the Godunov flux against an exact Godunov flux computed from

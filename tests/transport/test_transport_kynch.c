@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Kynch batch settling against the exact entropy solution (kynch_exact.h)
  * with the Richardson–Zaki flux F = u_t phi (1-phi)^n (1 - phi/phi_max), in a
  * closed column of height 1 with u_t = 1:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The transport on 2-D planar and axisymmetric meshes, one code path:
  *  - vertical settling on quads, planar and axisymmetric (r-weighted): every
  *    column equals the 1-D run to round-off;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The shear-induced migration flux (migration.h) and the transport's extra
  * flux hook:
  *  - the two-point face flux against the continuum flux

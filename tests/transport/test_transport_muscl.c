@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Order of the MUSCL option on 2-D meshes (quads, "/" triangles, union-jack
  * triangles), smooth data, no settling, n = 16, 32, 64 cells per side:
  *  - the unit square periodic both ways, uniform advection u = (2, 1),

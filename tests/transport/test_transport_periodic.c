@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Periodic boundary pairs in the transport:
  *  - a 2-D box [0, 1] x [0, 0.25] (quads) periodic left/right, uniform
  *    advection u = (1, 0), phi = 0.3 + 0.2 sin(2 pi x): after one period the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Helpers shared by the transport tests: a zero settling closure (pure
  * advection), a fatal-error exit and a checked allocation. */
 #ifndef SLUICE_TESTS_TRANSPORT_TESTING_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Unit tests of the expression language (core/config/expr.c).
  *
  * Values are compared bit for bit (NaN with NaN) against the same formula

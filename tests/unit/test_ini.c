@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Unit tests of the INI parser (core/config/ini.c): syntax, includes, typed
  * getters, overrides, unknown-name checks, writing and every malformed input
  * the issue lists. Error cases check the exit code and the exact

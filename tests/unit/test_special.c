@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The Bessel functions of the expression language (core/config/special.c)
  * against published values:
  *  - J0, J1, Y0, Y1 at x = 1, 2, 5, 10 against the 10-digit values of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The mixture model: the solids fraction riding on the flow (see
  * mixture.h). */
 #include "core/models/mixture/mixture.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The mixture (drift-flux) model: the flow of core/models/navier_stokes/flow.h in
  * the volume-averaged velocity j (div j = 0), carrying a solids fraction phi
  * that moves with j plus the hindered-settling flux (Nigam 1999, eqs

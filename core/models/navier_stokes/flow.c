@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The flow of a scene (flow.h): physics, boundary conditions, solves with
  * continuation, output and checkpoint of the Taylor-Hood flow. */
 #include "core/models/navier_stokes/flow.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The flow of a scene: incompressible, generalized-Newtonian flow on
  * Taylor-Hood elements, from the typed scene to solves and output. The
  * navier_stokes model is this flow alone; the mixture model rides on it

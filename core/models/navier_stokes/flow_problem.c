@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Flow problems for the nonlinear solver (see flow_problem.h). */
 #include "core/models/navier_stokes/flow_problem.h"
 

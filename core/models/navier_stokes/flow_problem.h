@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A discrete incompressible-flow problem ready for the nonlinear solver:
  * the Taylor–Hood space, its system, the Dirichlet constraints and the flow
  * operator's options, with the assembly callback of core/solve/newton.h.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Boundary forces from the momentum residual (forces.h). */
 #include "core/models/navier_stokes/forces.h"
 

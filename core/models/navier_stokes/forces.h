@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The force of the fluid on a boundary where the velocity is prescribed (a
  * wall, an inflow, a body in the flow), from the residual of the discrete
  * momentum equation: with v_i the finite-element function that is e_i at

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The navier_stokes model (navier_stokes.h): its schema, and the flow
  * (flow.h) as its ops. The key tables here are the flow's, shared with the
  * mixture model. */

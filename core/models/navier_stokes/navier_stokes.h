@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The navier_stokes model: a scene's incompressible, generalized-Newtonian
  * flow (core/models/navier_stokes/flow.h), steady (with continuation) or
  * transient (adaptive BDF1/BDF2). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The fully developed vertical pipe (`[scene] model = pipe`): turbulent
  * flow of water, or of a slurry by the two-fluid equations, statistically
  * steady and homogeneous along the pipe, so that every field is a function of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The pipe model's closures, bound once to its quantities (pipe.h). */
 #include <math.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The pipe model's state, shared by its files (pipe.h). */
 #ifndef SLUICE_MODELS_PIPE_IMPL_H
 #define SLUICE_MODELS_PIPE_IMPL_H

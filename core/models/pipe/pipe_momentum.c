@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The pipe model's axial momentum (pipe.h): u_f and u_s in the cells and the
  * pressure gradient G in one bordered linear system, the viscosities, the
  * drag and the wall coefficients of the last iterate:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The pipe model's schema: every key it reads (pipe.h). */
 #include "core/models/pipe/pipe.h"
 

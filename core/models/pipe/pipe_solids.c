@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The solids of the pipe model (pipe.h): the drag, the solids viscosity,
  * the granular temperature's local balance, the solids' wall coefficient, and
  * the radial solids balance that sets phi(r).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The fluid's k-epsilon turbulence of the pipe model and its wall function
  * (pipe.h): the coefficients from [closure.turbulence], the wall cell from
  * [closure.wall_stress.fluid], and one pseudo-time step of each equation on

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The scalar model (scalar.h). */
 #include "core/models/scalar/scalar.h"
 

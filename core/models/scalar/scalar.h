@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The scalar model: a passive scalar carried by a given velocity field,
  * diffusing, with a source, on the staggered finite-volume grid of a
  * rectangle (core/fv: its cells and the implicit cell-scalar solver):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The base acceleration record of a shaken column (base_record.h). */
 #include "core/models/two_fluid/base_record.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A base acceleration record (an earthquake's or a synthetic one): a
  * two-column CSV of time (s) and acceleration, read once, interpolated
  * linearly, zero outside its time span. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The liquefaction add-on of the 1-D two-fluid column (liquefaction.h). */
 #include "core/models/two_fluid/liquefaction.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The liquefaction add-on of the 1-D two-fluid column (Pringle 2001,
  * thesis sections 5.4-5.5, with the closures of chapter 3, eqs 3.38-3.53
  * and 4.30): a sand deposit whose reference porosity nbar is a state of each

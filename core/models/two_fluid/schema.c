@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The schemas of the two-fluid model's variants: the 1-D column, the 2-D
  * model on a staggered grid, the shear layer (two_fluid.h). */
 #include "core/models/two_fluid/two_fluid.h"

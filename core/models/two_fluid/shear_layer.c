@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The two-fluid shear layer (see shear_layer.h): the scene, one implicit
  * step, the time loop and the output. */
 #include "core/models/two_fluid/shear_layer.h"

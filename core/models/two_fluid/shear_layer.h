@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The two-fluid shear layer: fluid and solids moving across a 1-D mesh, in
  * the direction perpendicular to it, between two walls (`[two_fluid] motion
  * = shear`). Planar (a Couette gap, x across it) or annular (`cross_section

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The 1-D two-fluid model (see two_fluid.h): the scene, the time loop and
  * the output. One step is core/models/two_fluid_step.c. */
 #include "core/models/two_fluid/two_fluid.h"

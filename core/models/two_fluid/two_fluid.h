@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The two-fluid model (Eulerian-Eulerian, Pringle 2001), 1-D
  * vertical column. Fluid and solids momentum with one pressure p (Pringle
  * 2001, Table 1.1 and eqs 2.27-2.31; Gidaspow 1994 model A), incompressible phases:

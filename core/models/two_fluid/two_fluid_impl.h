@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Internals of the two-fluid model shared by its variants: the 1-D column
  * (two_fluid.c, one step in two_fluid_step.c), the 2-D model
  * (two_fluid_plane*.c) and the shear layer (shear_layer.c); their schemas

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The checkpoint of a two_fluid run, the same for the 1-D column and the
  * 2-D model (two_fluid_impl.h). */
 #include <stdio.h>

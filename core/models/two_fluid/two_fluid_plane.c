@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The two-fluid model on 2-D planar and axisymmetric rectangles (two_fluid.h
  * has the 1-D column; the staggered scheme is in two_fluid_plane_step.c).
  * The mesh must be a tensor grid of axis-aligned quadrilaterals (the

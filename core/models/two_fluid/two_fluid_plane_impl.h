@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Internals of the 2-D two-fluid model (planar and axisymmetric) shared by
  * two_fluid_plane.c (scene, boundaries, output, time loop) and
  * two_fluid_plane_step.c (one implicit step on the staggered grid).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The solids phase's stress in the 2-D two-fluid model
  * (two_fluid_plane_impl.h): its viscosity in the cells and the wall
  * closure's stress along walls with solids = wall_stress.

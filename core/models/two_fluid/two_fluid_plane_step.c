@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* One implicit step of the 2-D two-fluid model on the staggered grid
  * (two_fluid_plane_impl.h). The equations are those of the 1-D column
  * (two_fluid.h) with the pressure kept as an unknown, per unit volume:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The solids-fraction transport of the 2-D two-fluid model on the staggered
  * grid (two_fluid_plane_impl.h): T(phi^n, u_s) of one step, the column's
  * bounded scheme (two_fluid_step.c) in two dimensions. Face fluxes of the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The physics of a two_fluid scene, read the same way for the 1-D column
  * and the 2-D model: fluid and solid properties, gravity, the closures
  * bound to the model's inputs, and the [two_fluid] numerical keys. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* One implicit step of the 1-D two-fluid model (two_fluid.h): the solids
  * momentum at the faces with implicit drag and solids pressure, iterated
  * with the bounded transport of phi until both agree.

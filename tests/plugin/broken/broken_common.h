@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Deliberately broken closure libraries for the loader tests: each is a
  * small valid closure with one defect, chosen by a macro at compile time. */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* One closure library built several ways (see CMakeLists.txt). */
 #include "broken_common.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* A viscosity closure that misbehaves on request, for the isolation tests
  * (tests/plugin/CMakeLists.txt): mu = mu0, constant (a Newtonian fluid), and
  * from the time `after` on the fault chosen by `fault`:
