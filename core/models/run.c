@@ -83,7 +83,8 @@ static int prepare(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, pr
   int rc = sl_model_scene(ini, reg, 1, 1, &p->entry, &p->sc, d);
   const sl_model_ops *ops = p->entry ? p->entry->ops : NULL;
   if (!rc && o)
-    p->sc->hooks = (sl_run_hooks){.nonlinear = o->nonlinear, .user = o->nonlinear_user, .interrupt = o->interrupt};
+    p->sc->hooks = (sl_run_hooks){.nonlinear = o->nonlinear, .user = o->nonlinear_user, .interrupt = o->interrupt,
+                                  .checking = o->checking};
   if (!rc) rc = locate(ini, ops->setup(&p->self, p->sc, &p->info, d), d);
   if (!rc && !(rc = sl_time_loop_init(&p->loop, &p->info, &p->sc->time, d))) p->have_loop = 1;
   /* a restart is checked against the scene before anything is written */
@@ -98,7 +99,7 @@ static int prepare(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, pr
 
 int sl_model_check(sl_ini *ini, const sl_registry *reg, const char *restart, const sl_model_entry **entry,
                    sl_scene **sc, sl_diag *d) {
-  sl_run_opts o = {.restart = restart};
+  sl_run_opts o = {.restart = restart, .checking = 1};
   prepared p;
   int rc = prepare(ini, reg, &o, &p, d);
   *entry = p.entry, *sc = NULL;

@@ -74,6 +74,7 @@ typedef struct sl_run_hooks {
   void (*nonlinear)(void *user, const sl_nl_report *r);
   void *user;
   volatile sig_atomic_t *interrupt;
+  int checking; /* `run --check`: a model's set-up validates and skips what only integrates (settling a deposit) */
 } sl_run_hooks;
 
 /* Where a value or a section of the scene came from. */

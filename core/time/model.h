@@ -133,6 +133,7 @@ typedef struct sl_run_opts {
   void (*nonlinear)(void *user, const struct sl_nl_report *r);
   void *nonlinear_user;
   int overwrite;                    /* the output may replace files sluice did not write */
+  int checking;                     /* validation only (run --check): no time integration in set-up */
 } sl_run_opts;
 
 /* What a run did. */

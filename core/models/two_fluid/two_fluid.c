@@ -408,7 +408,8 @@ static int column_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag 
     c->v_ref = fmax(c->v_ref, fabs(j));
   }
   if (!rc && shaken) rc = tfl_create(sc, r->cfg, &r->c, r->cell_of, &r->lq, d);
-  if (!rc && r->cfg->lq.settle > 0.0) rc = settle(r, d);
+  /* settling the deposit is a time integration: a run's, not --check's (bounded like any run only by its end) */
+  if (!rc && r->cfg->lq.settle > 0.0 && !sc->hooks.checking) rc = settle(r, d);
   if (!rc && r->lq) rc = tfl_start(r->lq, &r->c, d);
   if (!rc) rc = interface_levels(r, d);
   if (!rc && !(r->node = calloc((size_t)r->mesh->n_vertices, sizeof *r->node)))
