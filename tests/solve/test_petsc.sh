@@ -87,12 +87,12 @@ done
 if command -v mpirun > /dev/null; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
   for n in 1 2 3; do
-    mpirun -n $n "$sluice" run "$cav" -o c$n.h5 > c$n.log 2>&1
+    mpirun -n $n "$sluice" run "$cav" --set solver.linear=petsc -o c$n.h5 > c$n.log 2>&1
     "$sluice" sample c$n.h5 --field velocity --line 0.5,0:0.5,1 --n 65 > c$n.csv 2>/dev/null
     dv=$(max_diff k_velocity_cav.csv c$n.csv 6)
     echo "cavity on $n rank(s): velocity differs from KLU's by $dv"
     check "cavity on $n rank(s) agrees with KLU ($dv)" below "$dv" 1e-7
-    mpirun -n $n "$sluice" run "$box" "${args[@]}" -o b$n.h5 > b$n.log 2>&1
+    mpirun -n $n "$sluice" run "$box" "${args[@]}" --set solver.linear=petsc -o b$n.h5 > b$n.log 2>&1
     "$sluice" sample b$n.h5 --field phi --line 0.5,0.1:1.2,0.9 --n 41 > b$n.csv 2>/dev/null
     dphi=$(max_diff k_phi.csv b$n.csv 4)
     echo "boycott on $n rank(s): phi differs from KLU's by $dphi"
@@ -109,6 +109,8 @@ if command -v mpirun > /dev/null; then
   check "... on 2 ranks" grep -q "2 ranks)" cont.log
   check "the ranks' private output folders are gone" test -z "$(ls -A | grep sluice-rank)"
   check "2 ranks say so in the summary" grep -q "2 ranks)" c2.log
+  mpirun -n 2 "$sluice" run "$cav" -o auto.h5 > auto.log 2>&1
+  check "linear = auto on 2 ranks is petsc" grep -q "(fgmres/fieldsplit, [0-9]* iterations, 2 ranks)" auto.log
   out=$(mpirun -n 2 "$sluice" run "$cav" --set solver.linear=klu -o no.h5 2>&1); rc=$?
   check "a direct solver on 2 ranks is refused (exit $rc)" test "$rc" != 0
   check "... saying why" grep -q "the linear solves must be PETSc's" <<<"$out"
