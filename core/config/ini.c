@@ -890,7 +890,8 @@ int sl_parse_real_expr(const char *s, double *out, char *why, size_t why_len) {
   sl_expr *e = NULL;
   sl_diag d;
   if (sl_expr_compile(s, NULL, 0, &e, &d)) {
-    if (why) snprintf(why, why_len, "%s", d.msg);
+    /* A long message may be cut to the caller's buffer; that is intended. */
+    if (why && snprintf(why, why_len, "%s", d.msg) >= (int)why_len) why[why_len - 1] = '\0';
     return SL_EBADINPUT;
   }
   double v = sl_expr_eval(e, NULL);

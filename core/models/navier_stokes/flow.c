@@ -820,6 +820,11 @@ static int rebuild_physics(sl_flow *f, sl_diag *d) {
 /* How the last solve converged, in words that agree with the numbers: the
  * last correction against the tolerance, the residual against its terms'
  * scale; or the residual at round-off (the correction then measures noise). */
+/* A one-line reason longer than its buffer ends in "..." rather than mid-word without notice. */
+static void mark_cut(char *line, size_t cap) {
+  if (cap > 4) memcpy(line + cap - 4, "...", 4);
+}
+
 static const char *converged_text(const sl_flow *f, char *buf, size_t cap) {
   const sl_model_stats *r = &f->st;
   double rel = r->term_scale > 0 ? r->residual / r->term_scale : 0.0;
@@ -860,9 +865,9 @@ int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag
     if (f->nopts.linear)
       snprintf(r->stop_reason, sizeof r->stop_reason, "steady state solved: a linear problem, one solve (residual %.2g)",
                r->residual);
-    else
-      snprintf(r->stop_reason, sizeof r->stop_reason, "steady state converged in %d Newton iteration%s (%s)", its,
-               its == 1 ? "" : "s", converged_text(f, tb, sizeof tb));
+    else if (snprintf(r->stop_reason, sizeof r->stop_reason, "steady state converged in %d Newton iteration%s (%s)",
+                      its, its == 1 ? "" : "s", converged_text(f, tb, sizeof tb)) >= (int)sizeof r->stop_reason)
+      mark_cut(r->stop_reason, sizeof r->stop_reason);
     return 0;
   }
   /* continuation: section.key from continuation_from to its scene value (checked at set-up); a stage that
@@ -895,9 +900,11 @@ int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag
     if (!rc) memcpy(good, u, bytes), v_good = v;
     if (!rc && k == n_stages) {
       r->converged = 1;
-      snprintf(r->stop_reason, sizeof r->stop_reason,
-               "steady state converged at %s = %g, the last of %ld continuation stages, in %d Newton iteration%s (%s)",
-               key, v, n_stages + 1, its, its == 1 ? "" : "s", converged_text(f, tb, sizeof tb));
+      if (snprintf(r->stop_reason, sizeof r->stop_reason,
+                   "steady state converged at %s = %g, the last of %ld continuation stages, in %d Newton iteration%s (%s)",
+                   key, v, n_stages + 1, its, its == 1 ? "" : "s",
+                   converged_text(f, tb, sizeof tb)) >= (int)sizeof r->stop_reason)
+        mark_cut(r->stop_reason, sizeof r->stop_reason);
     }
   }
   if (rc && isfinite(v_good)) {
