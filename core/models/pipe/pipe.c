@@ -232,10 +232,11 @@ static int pipe_write(void *self, sl_output *out, double t, const double *u, sl_
     rc = sl_output_write_field(out, sl_pipe_schema.fields[k], SL_CENTRE_CELL, 1, v, d);
   }
   /* section means (area-weighted) and the chord average along a diameter (length-weighted) */
-  double A = 0.0, phim = 0.0, chord = 0.0, flux_s = 0.0;
+  double A = 0.0, phim = 0.0, chord = 0.0, flux_s = 0.0, usm = 0.0, ufm = 0.0;
   for (int i = 0; i < n; ++i) {
     A += p->g.vol[i], phim += p->g.vol[i] * p->phi[i], chord += p->g.hx[i] * p->phi[i];
     flux_s += p->g.vol[i] * p->phi[i] * p->us[i];
+    usm += p->g.vol[i] * p->us[i], ufm += p->g.vol[i] * p->uf[i];
   }
   double tau = p->tau_fw + p->tau_sw, V = c->bulk_velocity, g = fabs(p->gz) > 0 ? fabs(p->gz) : 9.81;
   struct {
@@ -254,6 +255,11 @@ static int pipe_write(void *self, sl_output *out, double t, const double *u, sl_
            {"solids_mean_velocity", phim > 0.0 ? flux_s / phim : 0.0},
            {"velocity_solid_04", at_radius(p, p->us, 0.4 * p->R)},
            {"velocity_solid_08", at_radius(p, p->us, 0.8 * p->R)},
+           {"velocity_solid_area_mean", usm / A},
+           {"velocity_fluid_area_mean", ufm / A},
+           {"phi_wall", p->phi[n - 1]},
+           {"velocity_solid_wall", p->us[n - 1]},
+           {"slip_length", p->inv_slip > 0.0 ? 1.0 / p->inv_slip : 0.0},
            {"iterations", (double)p->iterations}};
   for (size_t k = 0; k < sizeof s / sizeof s[0] && !rc; ++k) rc = sl_output_write_scalar(out, s[k].name, s[k].v, d);
   return rc;

@@ -64,6 +64,7 @@ typedef struct pipe {
   double c_mu;
   /* wall */
   double tau_fw, tau_sw, u_tau, y_plus, k_wall, eps_wall, a_fw, a_sw;
+  double inv_slip; /* 1/lambda_slip of the solids' wall closure at the wall cell (0: none or free slip) */
   /* closures */
   sl_point_closure turb, wallf, drag, gran, psol, walls;
   int have_gran, have_psol, have_walls, walls_at_node;

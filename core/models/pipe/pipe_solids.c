@@ -129,9 +129,12 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
       const double *vw[PQ_N] = {0};
       double phw = p->phi[w], thw = p->theta[w], gdw = U / yp;
       vw[PQ_SLIP_WALL] = &uw, vw[PQ_PHI] = &phw, vw[PQ_THETA] = &thw, vw[PQ_SHEAR] = &gdw;
-      sl_point_request rw = {"tau_w", &tau, &dtau, "slip_wall"};
-      if ((rc = sl_point_eval(&p->walls, 1, vw, &rw, 1, d)))
+      double inv = 0.0;
+      sl_point_request rw[2] = {{"tau_w", &tau, &dtau, "slip_wall"}, {"inverse_slip_length", &inv, NULL, NULL}};
+      if ((rc = sl_point_eval(&p->walls, 1, vw, rw, sl_point_has_output(&p->walls, "inverse_slip_length") ? 2 : 1,
+                              d)))
         return sl_diag_prefix(d, rc, "[closure.wall_stress.solids]");
+      p->inv_slip = inv;
       double a = uw > 0.0 ? tau / uw : dtau;
       p->a_sw = p->walls_at_node ? a : a * a_ns / (a_ns + a);
     }
