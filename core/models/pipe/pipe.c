@@ -130,9 +130,13 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
   return 0;
 }
 
-static double rel_change(const double *a, const double *b, int n) {
+/* max |a - b| / max |b|, and the cell of the largest |a - b| in *at. */
+static double rel_change(const double *a, const double *b, int n, int *at) {
   double num = 0.0, den = 0.0;
-  for (int i = 0; i < n; ++i) num = fmax(num, fabs(a[i] - b[i])), den = fmax(den, fabs(b[i]));
+  for (int i = 0; i < n; ++i) {
+    if (fabs(a[i] - b[i]) > num) num = fabs(a[i] - b[i]), *at = i;
+    den = fmax(den, fabs(b[i]));
+  }
   return den > 0.0 ? num / den : num;
 }
 
@@ -157,9 +161,16 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
     if (!rc && p->two_phase) rc = pipe_solids_update(p, d);
     p->iterations = it;
     if (rc) break;
-    double ch = fmax(fmax(rel_change(p->uf, old[0], n), rel_change(p->k, old[1], n)), rel_change(p->eps, old[2], n));
-    if (p->two_phase) ch = fmax(ch, rel_change(p->phi, old[3], n));
-    ch = fmax(ch, fabs(p->G - G_old) / fmax(fabs(p->G), 1e-300));
+    static const char *const names[5] = {"u_f", "k", "epsilon", "phi", "dP/dz"};
+    const double *now[4] = {p->uf, p->k, p->eps, p->phi};
+    double ch = 0.0;
+    for (int k = 0; k < (p->two_phase ? 4 : 3); ++k) {
+      int at = 0;
+      double chk = rel_change(now[k], old[k], n, &at);
+      if (chk > ch) ch = chk, p->change_field = names[k], p->change_cell = at;
+    }
+    double cG = fabs(p->G - G_old) / fmax(fabs(p->G), 1e-300);
+    if (cG > ch) ch = cG, p->change_field = names[4], p->change_cell = -1;
     p->change = ch;
     for (int i = 0; i < n; ++i)
       if (!isfinite(p->uf[i]) || !isfinite(p->us[i]) || !isfinite(p->k[i]) || !isfinite(p->eps[i]) ||
@@ -178,9 +189,14 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
   *steps = 1, *its = p->iterations;
   if (u != p->uf) memcpy(u, p->uf, (size_t)n * sizeof(double));
   if (!rc && !p->converged) {
+    char where[96] = "";
+    if (p->change_field && p->change_cell >= 0)
+      snprintf(where, sizeof where, ", most in %s at r/R = %.3f", p->change_field, p->g.xc[p->change_cell] / p->R);
+    else if (p->change_field)
+      snprintf(where, sizeof where, ", most in %s", p->change_field);
     snprintf(p->stop_reason, sizeof p->stop_reason,
-             "not converged: %ld iterations ([pipe] iterations) changed the state by %.3g > tolerance %.3g",
-             p->iterations, p->change, c->tolerance);
+             "not converged: %ld iterations ([pipe] iterations) changed the state by %.3g > tolerance %.3g%s",
+             p->iterations, p->change, c->tolerance, where);
     rc = sl_diag_set(d, SL_EFAILED, "pipe: %s", p->stop_reason);
   } else if (!rc) {
     snprintf(p->stop_reason, sizeof p->stop_reason, "converged in %ld iterations (change %.2g)", p->iterations,

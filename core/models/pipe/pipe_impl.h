@@ -77,6 +77,8 @@ typedef struct pipe {
   double dirichlet;          /* the value the wall cell's k or epsilon is held at (the cell-scalar hook's) */
   long iterations;
   double change;
+  const char *change_field; /* the field and the cell (-1: none) of the last iteration's largest change */
+  int change_cell;
   int converged, warned_yplus;
   char stop_reason[256];
 } pipe;
