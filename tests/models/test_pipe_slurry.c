@@ -23,9 +23,12 @@
  *    is bridged across the wall cell by the fluid's wall function, so
  *    tau_sw/tau_fw = (c_s rho_s/(sigma rho_f)) u_s/u_f of the wall cell, to
  *    the steady solve's tolerance (1e-8);
+ *  - the L-probe (Krampa 2009 section 3.4): the mean solids velocity at V = 4 m/s
+ *    within 10 % of 3.91 m/s, the slip at the axis the Ergun uniform-slip solution;
  *  - stability: 2.4 mm sand at 30 % (up-flow at 3.02 m/s, down-flow at 1
  *    m/s) and 0.5 mm beads at phi_max - 0.01 = 0.62 (up at 2 m/s, down at 1
  *    m/s) converge, with a finite state and the mixture's momentum held;
+ *    and, with the kinetic pressure, converge or stop naming the field and radius;
  *  - a solids fraction above phi_max - 0.01 is refused before the run. */
 #include <math.h>
 #include <stdio.h>
