@@ -94,7 +94,9 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
   for (int i = 0; i < n; ++i)
     p->mu_s[i] = p->phi[i] * p->rho_s * (p->mu_t[i] / p->rho_f) / p->cfg->solids_schmidt + p->sc->solid.viscosity;
   if (p->have_gran) {
-    if ((rc = granular_theta(p, gd, d))) return rc;
+    if ((rc = p->cfg->granular_temperature == PIPE_THETA_TRANSPORT ? pipe_theta_transport(p, gd, d)
+                                                                      : granular_theta(p, gd, d)))
+      return rc;
     double *mu = p->buf[5];
     v[PQ_THETA] = p->theta;
     sl_point_request r2 = {"mu_s", mu, NULL, NULL};
@@ -129,6 +131,7 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
       const double *vw[PQ_N] = {0};
       double phw = p->phi[w], thw = p->theta[w], gdw = U / yp;
       vw[PQ_SLIP_WALL] = &uw, vw[PQ_PHI] = &phw, vw[PQ_THETA] = &thw, vw[PQ_SHEAR] = &gdw;
+      p->u_wall = uw;
       double inv = 0.0;
       sl_point_request rw[2] = {{"tau_w", &tau, &dtau, "slip_wall"}, {"inverse_slip_length", &inv, NULL, NULL}};
       if ((rc = sl_point_eval(&p->walls, 1, vw, rw, sl_point_has_output(&p->walls, "inverse_slip_length") ? 2 : 1,
