@@ -29,6 +29,8 @@
  *    m/s) and 0.5 mm beads at phi_max - 0.01 = 0.62 (up at 2 m/s, down at 1
  *    m/s) converge, with a finite state and the mixture's momentum held;
  *    and, with the kinetic pressure, converge or stop naming the field and radius;
+ *  - the transported granular temperature with the kinetic pressure: converged where the local balance is
+ *    not, momentum and inventory held, the wall depleted, second order in the radial cells;
  *  - a solids fraction above phi_max - 0.01 is refused before the run. */
 #include <math.h>
 #include <stdio.h>
@@ -347,6 +349,58 @@ static void stability_kinetic(void) {
   }
 }
 
+/* The transported granular temperature (granular_temperature = transport) with the kinetic pressure: the cases
+   where the local balance does not converge (dilute, or fast: its theta ~ 1/phi^2 makes p_s fall with phi in the
+   wall layer) converge, hold the mixture's momentum and the inventory, and deplete the wall; the manometric
+   gradient converges at second order in the radial cells (20, 40, 80, 160 with the same wall cell: the
+   differences fall by more than 2.5 a doubling). */
+static void theta_transport(void) {
+  static const struct {
+    const char *name, *sets[5];
+    double phi, gz;
+  } cases[4] = {{"5 %, up, 3.02 m/s", {"pipe.solids_fraction=0.05", "flow.gravity=-9.81", NULL}, 0.05, -9.81},
+                {"5 %, down, 5 m/s", {"pipe.solids_fraction=0.05", "flow.gravity=9.81", "pipe.bulk_velocity=5", NULL},
+                 0.05, 9.81},
+                {"25 %, up, 5 m/s", {"pipe.solids_fraction=0.25", "flow.gravity=-9.81", "pipe.bulk_velocity=5", NULL},
+                 0.25, -9.81},
+                {"45 %, up, 5 m/s", {"pipe.solids_fraction=0.45", "flow.gravity=-9.81", "pipe.bulk_velocity=5", NULL},
+                 0.45, -9.81}};
+  for (int k = 0; k < 4; ++k) {
+    const char *sets[8] = {"pipe.kinetic_pressure=true", "pipe.granular_temperature=transport"};
+    for (int j = 0; cases[k].sets[j]; ++j) sets[2 + j] = cases[k].sets[j];
+    sluice_error e = {0, ""};
+    if (run(NULL, NULL, sets, "pipe_tt.h5", &e)) {
+      CHECK_MSG(0, "transported theta, %s: %s", cases[k].name, e.msg);
+      continue;
+    }
+    double phi = scalar("pipe_tt.h5", "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f;
+    double tau = scalar("pipe_tt.h5", "wall_shear_stress_fluid") + scalar("pipe_tt.h5", "wall_shear_stress_solid");
+    double dp = scalar("pipe_tt.h5", "pressure_gradient"), bal = 4.0 * tau / D - rho_m * cases[k].gz;
+    double pw = scalar("pipe_tt.h5", "phi_wall");
+    printf("transported theta, %s: %.0f iterations, phi_wall %.4f (mean %.2f), manometric %.2f Pa/m (balance %.1e)\n",
+           cases[k].name, scalar("pipe_tt.h5", "iterations"), pw, cases[k].phi,
+           scalar("pipe_tt.h5", "manometric_gradient"), dp / bal - 1.0);
+    CHECK_MSG(fabs(dp / bal - 1.0) < 1e-6, "%s: -dP/dz %.9g against %.9g", cases[k].name, dp, bal);
+    CHECK_MSG(fabs(phi - cases[k].phi) < 1e-12, "%s: inventory %.15g", cases[k].name, phi);
+    CHECK_MSG(pw < cases[k].phi, "%s: phi_wall %.4g not below the mean", cases[k].name, pw);
+  }
+  for (int c = 0; c < 2; ++c) {
+    double m[4];
+    const char *cells[4] = {"pipe.cells=20", "pipe.cells=40", "pipe.cells=80", "pipe.cells=160"};
+    for (int k = 0; k < 4; ++k) {
+      const char *sets[] = {"pipe.kinetic_pressure=true", "pipe.granular_temperature=transport", cells[k],
+                            c ? "pipe.solids_fraction=0.25" : "pipe.solids_fraction=0.05", NULL};
+      sluice_error e = {0, ""};
+      m[k] = run(NULL, NULL, sets, "pipe_tt.h5", &e) ? NAN : scalar("pipe_tt.h5", "manometric_gradient");
+      CHECK_MSG(isfinite(m[k]), "%s: %s", cells[k], e.msg);
+    }
+    double r1 = (m[1] - m[0]) / (m[2] - m[1]), r2 = (m[2] - m[1]) / (m[3] - m[2]);
+    printf("transported theta, %s: manometric %.3f, %.3f, %.3f, %.3f Pa/m on 20-160 cells; ratios %.2f, %.2f\n",
+           c ? "25 %" : "5 %", m[0], m[1], m[2], m[3], r1, r2);
+    CHECK_MSG(r1 > 2.5 && r2 > 2.5, "the differences fall by %.3g and %.3g a doubling", r1, r2);
+  }
+}
+
 static void refused(void) {
   const char *sets[] = {"pipe.solids_fraction=0.625", NULL};
   sluice_error e = {0, ""};
@@ -364,6 +418,7 @@ int main(void) {
   lprobe();
   stability();
   stability_kinetic();
+  theta_transport();
   refused();
   return sl_test_summary();
 }
