@@ -107,7 +107,8 @@ static void scene_for(const char *bc, int kinetic, char *text, size_t cap, const
   else if (!strcmp(bc, "B96")) closure = "bartosik";
   else if (!strcmp(bc, "JJ")) closure = "johnson_jackson";
   int n = snprintf(text, cap, "%s", scene);
-  if (closure && n < (int)cap) n += snprintf(text + n, cap - (size_t)n, "[closure.wall_stress.solids]\nmodel = %s\n", closure);
+  if (closure && n < (int)cap)
+    n += snprintf(text + n, cap - (size_t)n, "[closure.wall_stress.solids]\nmodel = %s\n", closure);
   if (kinetic && n < (int)cap) snprintf(text + n, cap - (size_t)n, "[closure.granular]\nmodel = lun\n");
 }
 
@@ -153,26 +154,29 @@ int main(void) {
   int within[4] = {0}, counted[4] = {0}; /* tau_fw 5 %, c_sw, u_sw, lambda 10 % */
   FILE *f = fopen("krampa_tables_5_3_5_4_predicted.csv", "w");
   if (f)
-    fprintf(f, "table,bc,c_s,u_m,c_sw,c_sw_model,u_sw,u_sw_model,tau_fw,tau_fw_model,tau_sw,tau_sw_model,lambda,"
-               "lambda_model,i_m_table,i_m_model\n");
-  printf("| table | BC | C_s | U_m | c_sw (model) | u_sw (model) | -tau_fw (model) | -tau_sw (model) | lambda (model) | "
-         "i_m (model) |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    fprintf(f,
+            "table,bc,c_s,u_m,c_sw,c_sw_model,u_sw,u_sw_model,tau_fw,tau_fw_model,tau_sw,tau_sw_model,lambda,"
+            "lambda_model,i_m_table,i_m_model\n");
+  printf(
+      "| table | BC | C_s | U_m | c_sw (model) | u_sw (model) | -tau_fw (model) | -tau_sw (model) | lambda (model) | "
+      "i_m (model) |\n|---|---|---|---|---|---|---|---|---|---|\n");
   for (int i = 0; i < n_rows; ++i) {
     row *r = &rows[i];
     if (run_row(r, 0)) continue;
     double im_t = 4.0 * (r->tfw + (isnan(r->tsw) ? 0.0 : r->tsw)) / (rho_f * g * D);
-    printf("| %s | %s | %.3f | %.2f | %.3f (%.3f) | %.2f (%.2f) | %.2f (%.2f, %+.1f %%) | %.2f (%.2f) | %.4f (%.4f) | "
-           "%.3f (%.3f) |\n",
-           r->table, r->bc, r->cs, r->um, r->csw, r->m_csw, r->usw, r->m_usw, r->tfw, r->m_tfw,
-           100.0 * rel(r->m_tfw, r->tfw), r->tsw, r->m_tsw, r->lam, r->m_lam, im_t, r->m_im);
+    printf(
+        "| %s | %s | %.3f | %.2f | %.3f (%.3f) | %.2f (%.2f) | %.2f (%.2f, %+.1f %%) | %.2f (%.2f) | %.4f (%.4f) | "
+        "%.3f (%.3f) |\n",
+        r->table, r->bc, r->cs, r->um, r->csw, r->m_csw, r->usw, r->m_usw, r->tfw, r->m_tfw,
+        100.0 * rel(r->m_tfw, r->tfw), r->tsw, r->m_tsw, r->lam, r->m_lam, im_t, r->m_im);
     ++counted[0], within[0] += fabs(rel(r->m_tfw, r->tfw)) <= 0.05;
     ++counted[1], within[1] += fabs(rel(r->m_csw, r->csw)) <= 0.10;
     ++counted[2], within[2] += fabs(rel(r->m_usw, r->usw)) <= 0.10;
     if (!isnan(r->lam)) ++counted[3], within[3] += fabs(rel(r->m_lam, r->lam)) <= 0.10;
     if (f)
-      fprintf(f, "%s,%s,%.3f,%.2f,%.3f,%.4f,%.2f,%.4f,%.2f,%.4f,%.2f,%.4f,%.4f,%.5f,%.4f,%.4f\n", r->table, r->bc, r->cs,
-              r->um, r->csw, r->m_csw, r->usw, r->m_usw, r->tfw, r->m_tfw, r->tsw, r->m_tsw, r->lam, r->m_lam, im_t,
-              r->m_im);
+      fprintf(f, "%s,%s,%.3f,%.2f,%.3f,%.4f,%.2f,%.4f,%.2f,%.4f,%.2f,%.4f,%.4f,%.5f,%.4f,%.4f\n", r->table, r->bc,
+              r->cs, r->um, r->csw, r->m_csw, r->usw, r->m_usw, r->tfw, r->m_tfw, r->tsw, r->m_tsw, r->lam, r->m_lam,
+              im_t, r->m_im);
     /* the slip lengths at the model's own wall-cell fraction */
     if (!strcmp(r->bc, "DG90")) {
       double lam = d_p / cbrt(r->m_csw);
@@ -190,10 +194,11 @@ int main(void) {
     row fs = rows[i], ns = rows[i];
     snprintf(fs.bc, sizeof fs.bc, "FS"), snprintf(ns.bc, sizeof ns.bc, "NS");
     if (run_row(&fs, 0) || run_row(&ns, 0)) continue;
-    printf("%s U_m %.2f: -tau_sw FS %.4f <= %.4f <= NS %.4f; -tau_fw FS %.2f, NS %.2f (the tables' FS, NS rows: %.2f, "
-           "%.2f at U_m %.2f)\n",
-           rows[i].bc, rows[i].um, fs.m_tsw, rows[i].m_tsw, ns.m_tsw, fs.m_tfw, ns.m_tfw, rows[(i - 10) % 5].tfw,
-           rows[5 + (i - 10) % 5].tfw, rows[(i - 10) % 5].um);
+    printf(
+        "%s U_m %.2f: -tau_sw FS %.4f <= %.4f <= NS %.4f; -tau_fw FS %.2f, NS %.2f (the tables' FS, NS rows: %.2f, "
+        "%.2f at U_m %.2f)\n",
+        rows[i].bc, rows[i].um, fs.m_tsw, rows[i].m_tsw, ns.m_tsw, fs.m_tfw, ns.m_tfw, rows[(i - 10) % 5].tfw,
+        rows[5 + (i - 10) % 5].tfw, rows[(i - 10) % 5].um);
     CHECK_MSG(rows[i].m_tsw >= fs.m_tsw && rows[i].m_tsw <= ns.m_tsw, "%s U_m %.2f: tau_sw %.6g outside [%.6g, %.6g]",
               rows[i].bc, rows[i].um, rows[i].m_tsw, fs.m_tsw, ns.m_tsw);
   }
@@ -204,9 +209,10 @@ int main(void) {
     row r = rows[15 + k];
     snprintf(r.bc, sizeof r.bc, "JJ");
     if (run_row(&r, 1)) continue;
-    printf("JJ (specularity 0.5, e_w 0.9; kinetic viscosity) C_s %.3f U_m %.2f: c_sw %.3f u_sw %.3f -tau_fw %.2f "
-           "-tau_sw %.2f i_m %.3f\n",
-           r.cs, r.um, r.m_csw, r.m_usw, r.m_tfw, r.m_tsw, r.m_im);
+    printf(
+        "JJ (specularity 0.5, e_w 0.9; kinetic viscosity) C_s %.3f U_m %.2f: c_sw %.3f u_sw %.3f -tau_fw %.2f "
+        "-tau_sw %.2f i_m %.3f\n",
+        r.cs, r.um, r.m_csw, r.m_usw, r.m_tfw, r.m_tsw, r.m_im);
   }
   return sl_test_summary();
 }

@@ -149,6 +149,12 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
   double *old[4] = {p->buf[8], p->buf[9], p->buf[10], p->buf[11]};
   int rc = 0;
   p->converged = 0;
+  /* A stalled iteration (a limit cycle between the solids fraction, theta and the turbulence: 2.4 mm sand at
+     30 % with the transported theta) is damped: when a window of iterations has not halved the change, the
+     under-relaxation is halved (to 0.05 at least). The converged state does not depend on it. */
+  const long window = 200;
+  double window_change = INFINITY;
+  p->relax = c->relaxation;
   for (long it = 1; it <= c->iterations && !rc; ++it) {
     memcpy(old[0], p->uf, (size_t)n * sizeof(double)), memcpy(old[1], p->k, (size_t)n * sizeof(double));
     memcpy(old[2], p->eps, (size_t)n * sizeof(double)), memcpy(old[3], p->phi, (size_t)n * sizeof(double));
@@ -181,6 +187,10 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
       p->converged = 1;
       break;
     }
+    if (it % window == 0) {
+      if (ch > 0.5 * window_change && p->relax > 0.05) p->relax = fmax(0.5 * p->relax, 0.05);
+      window_change = ch;
+    }
   }
   /* the last coefficients and wall stresses of the state reached */
   if (!rc) rc = pipe_turbulence_coefficients(p, d);
@@ -192,15 +202,19 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
     char where[96] = "";
     if (p->change_field && p->change_cell >= 0)
       snprintf(where, sizeof where, ", most in %s at r/R = %.3f", p->change_field, p->g.xc[p->change_cell] / p->R);
-    else if (p->change_field)
-      snprintf(where, sizeof where, ", most in %s", p->change_field);
+    else if (p->change_field) snprintf(where, sizeof where, ", most in %s", p->change_field);
     snprintf(p->stop_reason, sizeof p->stop_reason,
-             "not converged: %ld iterations ([pipe] iterations) changed the state by %.3g > tolerance %.3g%s",
-             p->iterations, p->change, c->tolerance, where);
+             "not converged: %ld iterations ([pipe] iterations) changed the state by %.3g > tolerance %.3g%s "
+             "(relaxation %.3g)",
+             p->iterations, p->change, c->tolerance, where, p->relax);
     rc = sl_diag_set(d, SL_EFAILED, "pipe: %s", p->stop_reason);
   } else if (!rc) {
     snprintf(p->stop_reason, sizeof p->stop_reason, "converged in %ld iterations (change %.2g)", p->iterations,
              p->change);
+    if (p->relax < c->relaxation) {
+      size_t L = strlen(p->stop_reason);
+      snprintf(p->stop_reason + L, sizeof p->stop_reason - L, ", relaxation lowered to %.3g", p->relax);
+    }
   }
   if (!rc && (p->y_plus < 30.0 || p->y_plus > 200.0) && !p->warned_yplus) {
     p->warned_yplus = 1;

@@ -22,7 +22,7 @@ typedef struct pipe_config {
   double tolerance, relaxation, pseudo_step;
   int solids_wall, kinetic_pressure;
   double solids_schmidt, dispersion_schmidt, crossing_trajectory;
-  int dispersion; /* PIPE_DISPERSION_* */
+  int dispersion;           /* PIPE_DISPERSION_* */
   int granular_temperature; /* PIPE_THETA_* */
 } pipe_config;
 
@@ -80,6 +80,7 @@ typedef struct pipe {
   double dirichlet;          /* the value the wall cell's k or epsilon is held at (the cell-scalar hook's) */
   long iterations;
   double change;
+  double relax;             /* the under-relaxation in use: [pipe] relaxation, halved where the iteration stalls */
   const char *change_field; /* the field and the cell (-1: none) of the last iteration's largest change */
   int change_cell;
   int converged, warned_yplus;

@@ -40,8 +40,7 @@ int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d) {
   for (int i = 0; i < n; ++i) p->theta[i] = fmax(p->theta[i], THETA_FLOOR);
   const double *v[PQ_N] = {0};
   v[PQ_PHI] = p->phi, v[PQ_THETA] = p->theta;
-  sl_point_request rq[3] = {
-      {"mu_s", mu, NULL, NULL}, {"kappa", kap, NULL, NULL}, {"gamma", src, sink, "theta"}};
+  sl_point_request rq[3] = {{"mu_s", mu, NULL, NULL}, {"kappa", kap, NULL, NULL}, {"gamma", src, sink, "theta"}};
   int rc = sl_point_eval(&p->gran, n, v, rq, 3, d);
   if (rc) return sl_diag_prefix(d, rc, "[closure.granular]");
   for (int i = 0; i < n; ++i) {
@@ -51,10 +50,16 @@ int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d) {
     src[i] = mu[i] * gd[i] * gd[i] - gam + dg * p->theta[i];
   }
   /* steady: a pseudo-step far beyond the slowest of the sinks' times */
-  sl_cell_scalar_terms t = {.dt = 1e30, .cap = cap, .s_old = p->theta, .k = kap, .source = src, .sink = sink,
-                            .boundary = p->wall_energy ? wall_energy : NULL, .boundary_user = p};
+  sl_cell_scalar_terms t = {.dt = 1e30,
+                            .cap = cap,
+                            .s_old = p->theta,
+                            .k = kap,
+                            .source = src,
+                            .sink = sink,
+                            .boundary = p->wall_energy ? wall_energy : NULL,
+                            .boundary_user = p};
   if ((rc = sl_cell_scalar_solve(&p->cs, &t, x, d))) return sl_diag_prefix(d, rc, "pipe: the granular temperature");
-  const double w = p->iterations > 0 ? p->cfg->relaxation : 1.0; /* under-relaxed as the velocities */
+  const double w = p->iterations > 0 ? p->relax : 1.0; /* under-relaxed as the velocities */
   for (int i = 0; i < n; ++i) {
     if (!isfinite(x[i]))
       return sl_diag_set(d, SL_EFAILED, "pipe: the granular temperature is not finite at r = %g", p->g.xc[i]);
