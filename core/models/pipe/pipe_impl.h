@@ -24,6 +24,8 @@ typedef struct pipe_config {
   double solids_schmidt, dispersion_schmidt, crossing_trajectory;
   int dispersion;           /* PIPE_DISPERSION_* */
   int granular_temperature; /* PIPE_THETA_* */
+  int modulation;           /* 0 none, 1 Simonin's */
+  double c_eps3;
 } pipe_config;
 
 /* The host's quantities the closures bind to. */
