@@ -67,6 +67,7 @@ int sl_linsolve_ranks(int *rank, int *size, sl_diag *d) {
   *size = n && atoi(n) > 0 ? atoi(n) : 1;
   return 0;
 }
+int sl_linsolve_agree(int rc) { return rc; }
 #endif
 enum { N_SOLVERS = (int)(sizeof solver_names / sizeof solver_names[0]) };
 /* sl_linsolve_names lists what this build can run; petsc is last and named even without it for a clear error. */

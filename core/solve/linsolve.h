@@ -119,6 +119,9 @@ int sl_linsolve_petsc_scene_options(const char *options, sl_diag *d);
  * PMI_SIZE). With PETSc and a launcher, MPI starts here (through PETSc); without PETSc, *size is the
  * launcher's so that a caller can refuse to run the same scene N times. */
 int sl_linsolve_ranks(int *rank, int *size, sl_diag *d);
+/* On several ranks: the largest of every rank's rc (0 when all are 0), so that a step one rank alone can fail
+ * (opening the output, which rank 0 alone does) is failed by all; on one rank (or without PETSc) rc itself. */
+int sl_linsolve_agree(int rc);
 
 typedef struct sl_linsolve sl_linsolve;
 

@@ -73,6 +73,14 @@ int sl_linsolve_ranks(int *rank, int *size, sl_diag *d) {
   return 0;
 }
 
+int sl_linsolve_agree(int rc) {
+  PetscMPIInt n = 1;
+  if (!petsc_started || MPI_Comm_size(PETSC_COMM_WORLD, &n) || n == 1) return rc;
+  int all = rc;
+  if (MPI_Allreduce(&rc, &all, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD)) return rc ? rc : SL_EFAILED;
+  return all;
+}
+
 static int petsc_fail(PetscErrorCode e, const char *what, sl_diag *d) {
   const char *text = NULL;
   PetscErrorMessage(e, &text, NULL);
