@@ -72,6 +72,10 @@ int sl_linsolve_ranks(int *rank, int *size, sl_diag *d) {
   return 0;
 }
 int sl_linsolve_agree(int rc) { return rc; }
+int sl_linsolve_sum_ranks(double *x, int64_t n, sl_diag *d) {
+  (void)x, (void)n, (void)d;
+  return 0;
+}
 #endif
 enum { N_SOLVERS = (int)(sizeof solver_names / sizeof solver_names[0]) };
 /* sl_linsolve_names lists what this build can run; petsc is last and named even without it for a clear error. */

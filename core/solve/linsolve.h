@@ -123,6 +123,9 @@ int sl_linsolve_ranks(int *rank, int *size, sl_diag *d);
 /* On several ranks: the largest of every rank's rc (0 when all are 0), so that a step one rank alone can fail
  * (opening the output, which rank 0 alone does) is failed by all; on one rank (or without PETSc) rc itself. */
 int sl_linsolve_agree(int rc);
+/* On several ranks: x[0..n) becomes the sum over the ranks of their x, the same on every rank (a system each
+ * rank assembled from its own cells, sl_system_complete); on one rank nothing. */
+int sl_linsolve_sum_ranks(double *x, int64_t n, sl_diag *d);
 
 typedef struct sl_linsolve sl_linsolve;
 

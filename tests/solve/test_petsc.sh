@@ -98,6 +98,37 @@ if command -v mpirun > /dev/null; then
     echo "boycott on $n rank(s): phi differs from KLU's by $dphi"
     check "boycott on $n rank(s) agrees with KLU ($dphi)" below "$dphi" 1e-9
   done
+  # partitioned assembly: each rank assembles its own block of cells and calls the closures there alone. The
+  # Bingham cavity at 12 x 12 cells (144, divisible by 2 and 3), one continuation stage, no cell fields: rank
+  # 0's viscosity points (--profile) are exactly 1/N of the serial run's, and the velocity is the serial one's
+  # to the solver tolerance
+  bq=(--set solver.linear=petsc --set mesh.cells=12,12 --set closure.viscosity.eps=0.5
+      --set solver.continuation_steps=1 --set solver.continuation_from=0.5 --set output.fields=velocity,pressure)
+  points() { sed -n "s|.*closure $1.* \([0-9][0-9]*\) points .*|\1|p" "$2"; }
+  for n in 1 2 3; do
+    mpirun -n $n "$sluice" run "$configs/bingham_cavity.ini" "${bq[@]}" -o bq$n.h5 --profile > bq$n.log 2>&1
+    "$sluice" sample bq$n.h5 --field velocity --line 0.5,0:0.5,1 --n 33 > bq$n.csv 2>/dev/null
+  done
+  p1=$(points viscosity/bingham bq1.log) p2=$(points viscosity/bingham bq2.log) p3=$(points viscosity/bingham bq3.log)
+  echo "bingham cavity: viscosity points on rank 0: $p1 (1 rank), $p2 (2 ranks), $p3 (3 ranks)"
+  check "1 rank evaluates the viscosity ($p1 points)" test "${p1:-0}" -gt 0
+  check "2 ranks: rank 0 evaluates half the viscosity points ($p2 of $p1)" test "$((2 * ${p2:-0}))" = "${p1:-x}"
+  check "3 ranks: rank 0 evaluates a third ($p3 of $p1)" test "$((3 * ${p3:-0}))" = "${p1:-x}"
+  for n in 2 3; do
+    dv=$(max_diff bq1.csv bq$n.csv 6)
+    echo "bingham cavity on $n ranks: velocity differs from 1 rank's by $dv"
+    check "bingham cavity on $n ranks agrees with 1 rank ($dv)" below "$dv" 1e-8
+  done
+  # the mixture (boycott): its flow's viscosity closure, V = A / N + F on rank 0 (A: the assembly's points, F:
+  # the passes over every cell for the written cell fields): A and F from 2 and 3 ranks give 1 rank's count
+  for n in 1 2 3; do
+    mpirun -n $n "$sluice" run "$box" "${args[@]}" --set solver.linear=petsc -o bv$n.h5 --profile > bv$n.log 2>&1
+  done
+  v1=$(points viscosity/krieger bv1.log) v2=$(points viscosity/krieger bv2.log) v3=$(points viscosity/krieger bv3.log)
+  a=$((6 * (${v2:-0} - ${v3:-0}))) f=$((${v2:-0} - 3 * (${v2:-0} - ${v3:-0})))
+  echo "boycott: viscosity points on rank 0: $v1, $v2, $v3 on 1, 2, 3 ranks (assembly $a, other passes $f)"
+  check "boycott: rank 0 assembles 1/N of the cells' viscosity (A + F = $((a + f)), 1 rank $v1)" \
+    test "$((a + f))" = "${v1:-x}" -a "$a" -gt "$((10 * f))"
   # a checkpoint written on one rank continues on two: the same state as the run without a stop
   "$sluice" run "$box" "${args[@]/time.end=0.05/time.end=0.1}" -o whole.h5 > whole.log 2>&1
   "$sluice" run "$box" "${args[@]}" -o half.h5 > half.log 2>&1
