@@ -22,7 +22,7 @@ int sl_flow_problem_init(sl_flow_problem *p, const sl_th_space *th, sl_diag *d) 
     sl_flow_problem_free(p);
     return rc;
   }
-  if (ranks > 1) {
+  if (ranks > 1 && sl_linsolve_built("petsc")) { /* without PETSc the scene refuses several ranks */
     int32_t c0, c1;
     sl_system_partition(th->mesh->n_cells, rank, ranks, &c0, &c1);
     sl_system_own_elements(&p->sys, c0, c1);
