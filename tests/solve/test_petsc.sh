@@ -156,6 +156,12 @@ if command -v mpirun > /dev/null; then
           if (d > 1e-8 * a && d > 1e-300) m = 1 } } END { print m + 0 }')
   check "2 ranks: the same scalars (within a relative 1e-8)" test "$ds" = 0 -a "$(wc -l < one/b_scalars.csv)" = 3
   check "2 ranks say so in the summary" grep -q "2 ranks)" c2.log
+  # rank 0 alone opens the output: when it cannot, every rank stops (exit 2), none waits for it
+  echo "not sluice's" > foreign.h5
+  out=$(timeout 120 mpirun -n 2 "$sluice" run "$cav" --set mesh.cells=8,8 -o foreign.h5 2>&1); rc=$?
+  check "2 ranks, an output rank 0 may not replace: exit 2 on every rank (exit $rc)" test "$rc" = 2
+  check "... saying why" grep -q "was not written by sluice" <<<"$out"
+  check "... and the file is as it was" grep -q "not sluice's" foreign.h5
   mpirun -n 2 "$sluice" run "$cav" -o auto.h5 > auto.log 2>&1
   check "linear = auto on 2 ranks is petsc" grep -q "(fgmres/fieldsplit, [0-9]* iterations, 2 ranks)" auto.log
   out=$(mpirun -n 2 "$sluice" run "$cav" --set solver.linear=klu -o no.h5 2>&1); rc=$?
