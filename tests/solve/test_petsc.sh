@@ -2,8 +2,10 @@
 # test_petsc.sh SLUICE CONFIGS: the PETSc backend against the direct solvers, its options and the scene's limits.
 # The Stokes cavity (steady saddle point: FGMRES, Schur field split, BoomerAMG) against KLU along both centre
 # lines; the boycott vessel (the mixture, transient steps) with fixed steps against KLU; the options given
-# on the command line, in [solver.petsc] and in PETSC_OPTIONS, in that order of precedence; and what a scene
-# may not set.
+# on the command line, in [solver.petsc] and in PETSC_OPTIONS, in that order of precedence; what a scene
+# may not set; and under mpirun: 1, 2 and 3 ranks against the serial answer, each rank assembling 1/N of the
+# cells (the closure points rank 0 evaluates), ranks > 0 writing no file, a failure to open the output
+# stopping every rank, a restart on another number of ranks.
 set -u
 sluice=$1 configs=$2
 work=$(mktemp -d)
