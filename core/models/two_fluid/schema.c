@@ -217,8 +217,8 @@ static const sl_key plane_keys[] = {
      .def_doc = "1e-6", .help = "a transported granular temperature"},
     {.section = "boundary", .name = "type", .type = SL_KEY_CHOICE, SL_AT_BOUNDARY(tfp_boundary, type),
      .choices = "wall|slip|axis|inlet|outlet|periodic",
-     .help = "wall, slip (both phases), axis (r = 0), inlet (fluid enters, solids held), outlet (a pressure), periodic "
-             "(both opposite sides)"},
+     .help = "wall, slip (both phases), axis (r = 0), inlet (fluid enters; solids held, or entering with "
+             "solids_flux), outlet (a pressure), periodic (both opposite sides)"},
     {.section = "boundary", .name = "velocity", .type = SL_KEY_EXPR, SL_AT_BOUNDARY(tfp_boundary, velocity),
      .vars = "x,y,t,case", .units = "m s^-1", .when_type = ON(TFP_WALL) | ON(TFP_INLET),
      .when_doc = "an inlet (the inflow) or a wall (its speed along itself)",

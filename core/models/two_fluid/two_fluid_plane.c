@@ -16,7 +16,9 @@
  *   axis    the symmetry axis of an axisymmetric scene (r = 0)
  *   inlet   velocity = the superficial fluid velocity entering (m/s, along
  *           the inward normal), an expression of x, y, t and case; the
- *           solids are held (u_s = 0); tangential velocities 0
+ *           solids are held (u_s = 0), or enter with it at the superficial
+ *           velocity solids_flux (an expression of x, y, t and case, >= 0);
+ *           tangential velocities 0
  *   outlet  pressure (default 0); velocities free (zero normal gradient),
  *           solids leave where they are carried out
  *   periodic both opposite sides (left and right, or bottom and top; an
