@@ -31,7 +31,7 @@
  *
  * CSV on stdout (and in --csv PATH) with '#' lines for the machine and the
  * fitted exponents; progress on stderr; --svg PATH writes time per operation
- * against cells, one panel per scene (svg_plot.h). --max-cells N leaves out
+ * against cells, one panel per scene (core/study/chart.h). --max-cells N leaves out
  * the larger meshes; --scene NAME runs only the scenes named. The exit status
  * is 1 when a run failed. */
 #include <errno.h>
@@ -46,7 +46,7 @@
 #include "sluice/sluice.h"
 #include "bench_child.h"
 #include "bench_machine.h"
-#include "svg_plot.h"
+#include "core/study/chart.h"
 
 enum { MAX_SIZES = 8, MAX_SETS = 6, N_PHASES = 4, N_SCENES = 3 };
 enum { PHASE_ASSEMBLY, PHASE_FACTORISATION, PHASE_SOLVE, PHASE_TRANSPORT };
@@ -300,9 +300,9 @@ static void write_csv(FILE *f, const scene_table *tables, int n_tables, const ch
 
 static int write_svg(const char *path, const scene_table *tables, int n_tables, const char *machine, int repeat) {
   static const char *const colours[N_PHASES] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e"};
-  static const svgp_marker markers[N_PHASES] = {SVGP_CIRCLE, SVGP_SQUARE, SVGP_TRIANGLE, SVGP_DIAMOND};
-  svgp_series series[N_SCENES][N_PHASES + 1];
-  svgp_panel panels[N_SCENES];
+  static const sl_chart_marker markers[N_PHASES] = {SL_CHART_MARK_CIRCLE, SL_CHART_MARK_SQUARE, SL_CHART_MARK_TRIANGLE, SL_CHART_MARK_DIAMOND};
+  sl_chart_series series[N_SCENES][N_PHASES + 1];
+  sl_chart panels[N_SCENES];
   double x[N_SCENES][MAX_SIZES], y[N_SCENES][N_PHASES][MAX_SIZES], guide_x[N_SCENES][2], guide_y[N_SCENES][2];
   char names[N_SCENES][N_PHASES][64];
   int np = 0;
@@ -319,19 +319,19 @@ static int write_svg(const char *path, const scene_table *tables, int n_tables, 
       if (!any) continue;
       if (isfinite(t->p[q])) snprintf(names[np][q], sizeof names[np][q], "%s, p = %.2f", phase_names[q], t->p[q]);
       else snprintf(names[np][q], sizeof names[np][q], "%s", phase_names[q]);
-      series[np][ns++] = (svgp_series){.name = names[np][q], .n = t->n, .x = x[np], .y = y[np][q],
+      series[np][ns++] = (sl_chart_series){.name = names[np][q], .n = t->n, .x = x[np], .y = y[np][q],
                                        .colour = colours[q], .marker = markers[q]};
     }
     /* a slope-1 guide from the first assembly point across the sizes */
     if (t->n >= 2 && isfinite(y[np][PHASE_ASSEMBLY][0]) && isfinite(t->p[PHASE_ASSEMBLY])) {
       guide_x[np][0] = x[np][0], guide_x[np][1] = x[np][t->n - 1];
       guide_y[np][0] = y[np][PHASE_ASSEMBLY][0], guide_y[np][1] = guide_y[np][0] * guide_x[np][1] / guide_x[np][0];
-      series[np][ns++] = (svgp_series){.name = "cells^1", .n = 2, .x = guide_x[np], .y = guide_y[np],
-                                       .colour = "#7f7f7f", .marker = SVGP_CIRCLE, .dashed = 1};
+      series[np][ns++] = (sl_chart_series){.name = "\xE2\x88\x9D cells^{1}", .n = 2, .x = guide_x[np], .y = guide_y[np],
+                                       .colour = "#7f7f7f", .marker = SL_CHART_MARK_NONE, .dashed = 1};
     }
     if (ns == 0) continue; /* no run of this scene succeeded */
-    panels[np] = (svgp_panel){.title = t->spec->title, .xlabel = "cells", .ylabel = "seconds per operation",
-                              .n_series = ns, .series = series[np], .legend = SVGP_TOP_LEFT};
+    panels[np] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = t->spec->title, .xlabel = "cells", .ylabel = "time per operation (s)",
+                              .n_series = ns, .series = series[np], .legend = SL_LEGEND_TOP_LEFT};
     ++np;
   }
   char note[1024];
@@ -340,9 +340,14 @@ static int write_svg(const char *path, const scene_table *tables, int n_tables, 
            "operation, transport CPU time per sub-step.\np: least-squares slope of log time against log cells. "
            "Machine: %s.",
            repeat, machine);
-  svgp_figure fig = {.title = "Cost per operation against cells (bench_cost_scaling)", .note = note,
+  sl_figure fig = {.title = "Cost per operation against cells (bench_cost_scaling)", .note = note,
                      .n_panels = np, .panels = panels, .columns = np, .panel_width = 440, .panel_height = 380};
-  return svgp_write(path, &fig);
+  sl_diag d = {{0}};
+  if (sl_figure_write_svg(path, &fig, &d)) {
+    fprintf(stderr, "%s\n", d.msg);
+    return -1;
+  }
+  return 0;
 }
 
 /* ---- main ----------------------------------------------------------------------------- */
@@ -411,9 +416,6 @@ int main(int argc, char **argv) {
       return 1;
     }
   }
-  if (svg && write_svg(svg, tables, n_tables, machine, repeat)) {
-    fprintf(stderr, "%s: %s\n", svg, strerror(errno));
-    return 1;
-  }
+  if (svg && write_svg(svg, tables, n_tables, machine, repeat)) return 1; /* the reason is on stderr */
   return failed;
 }

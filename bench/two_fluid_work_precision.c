@@ -22,7 +22,7 @@
  *
  * CSV on stdout (and in --csv PATH) with '#' lines for the references and
  * the machine; progress on stderr; --svg PATH writes error against CPU time
- * (svg_plot.h). The exit status is 1 when a run failed. */
+ * (core/study/chart.h). The exit status is 1 when a run failed. */
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -34,7 +34,7 @@
 #include "sluice/sluice.h"
 #include "core/io/output.h"
 #include "bench_machine.h"
-#include "svg_plot.h"
+#include "core/study/chart.h"
 
 enum { N_SCENES = 2, N_SWEEP = 6, MAX_CELLS = 400 };
 
@@ -170,8 +170,8 @@ static int write_svg(const char *path, const table *t) {
   static double x[N_SCENES][4][N_SWEEP], y[N_SCENES][4][N_SWEEP];
   static char lab[N_SCENES][4][N_SWEEP][32];
   static const char *labp[N_SCENES][4][N_SWEEP];
-  svgp_series ser[N_SCENES][4];
-  svgp_panel panels[N_SCENES];
+  sl_chart_series ser[N_SCENES][4];
+  sl_chart panels[N_SCENES];
   static const char *names[4] = {"mesh: final porosity", "mesh: profile at 10 s", "dt: final porosity",
                                  "dt: profile at 10 s"};
   static const char *colours[4] = {"#1f77b4", "#1f77b4", "#d62728", "#d62728"};
@@ -188,25 +188,30 @@ static int write_svg(const char *path, const table *t) {
         labp[s][q][m] = q % 2 ? lab[s][q][m] : NULL;
         ++m;
       }
-      ser[s][q] = (svgp_series){.name = names[q], .n = m, .x = x[s][q], .y = y[s][q], .labels = labp[s][q],
-                                .colour = colours[q], .marker = q < 2 ? SVGP_CIRCLE : SVGP_SQUARE,
+      ser[s][q] = (sl_chart_series){.name = names[q], .n = m, .x = x[s][q], .y = y[s][q], .labels = labp[s][q],
+                                .colour = colours[q], .marker = q < 2 ? SL_CHART_MARK_CIRCLE : SL_CHART_MARK_SQUARE,
                                 .dashed = q % 2 == 0};
     }
     snprintf(titles[s], sizeof titles[s], "%s", t->spec[s].name);
-    panels[s] = (svgp_panel){.title = titles[s], .xlabel = "CPU time of the run (s)",
-                             .ylabel = "porosity error (final) or L1 of phi (m, at 10 s)", .n_series = 4,
-                             .series = ser[s], .legend = s == 0 ? SVGP_BOTTOM_RIGHT : SVGP_BOTTOM_LEFT,
+    panels[s] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = titles[s], .xlabel = "CPU time of the run (s)",
+                             .ylabel = "porosity error (final) or L_{1} error in \xCF\x86 at 10 s (m)", .n_series = 4,
+                             .series = ser[s], .legend = s == 0 ? SL_LEGEND_BOTTOM_RIGHT : SL_LEGEND_BOTTOM_LEFT,
                              .yspan = {s == 0 ? 0.0 : 1e-10, s == 0 ? 0.0 : 1e-1}}; /* room for the legend */
   }
   char note[1024];
   snprintf(note, sizeof note,
            "Mesh sweeps at the scene's dt, dt sweeps at 100 cells; profile errors against the sweep's finest run.\n"
-           "Final: max |porosity - equilibrium| over the bed at the end (the discrete steady state is the drag's "
+           "Final: max |porosity \xE2\x88\x92 equilibrium| over the bed at the end (the discrete steady state is the drag's "
            "equilibrium: this is the stopping tolerance).\n%s.",
            t->machine);
-  svgp_figure fig = {.title = "1-D two-fluid model: error against CPU time", .note = note, .n_panels = N_SCENES,
+  sl_figure fig = {.title = "1-D two-fluid model: error against CPU time", .note = note, .n_panels = N_SCENES,
                      .panels = panels, .columns = N_SCENES};
-  return svgp_write(path, &fig);
+  sl_diag d = {{0}};
+  if (sl_figure_write_svg(path, &fig, &d)) {
+    fprintf(stderr, "%s\n", d.msg);
+    return -1;
+  }
+  return 0;
 }
 
 static int usage(void) {
@@ -266,7 +271,7 @@ int main(int argc, char **argv) {
     int werr = ferror(f);
     if (fclose(f) || werr) return fprintf(stderr, "%s: write failed\n", csv), 1;
   }
-  if (svg && write_svg(svg, &t)) return fprintf(stderr, "%s: %s\n", svg, strerror(errno)), 1;
+  if (svg && write_svg(svg, &t)) return 1; /* the reason is on stderr */
   if (fflush(stdout)) return 1;
   return failures ? 1 : 0;
 }

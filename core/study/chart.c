@@ -19,7 +19,7 @@ enum { MAX_TICKS = 96, MAX_RUNS = 32, SS = 3 };
 /* text sizes in pixels (the font's em) */
 static const double TITLE = 17, SUB = 12, LABEL = 14, TICKS = 13, SMALL = 11, HEAD = 14;
 static const uint32_t INK = 0x202020, GRID = 0xE2E2E2, MINOR_GRID = 0xF1F1F1, FRAME = 0x505050, WHITE = 0xFFFFFF,
-                      GUIDE = 0x555555, NOTE = 0x606060;
+                      NOTE = 0x606060;
 
 uint32_t sl_chart_colour(int k) {
   static const uint32_t palette[] = {0x1F77B4, 0xD62728, 0x2CA02C, 0xFF7F0E, 0x9467BD,
@@ -380,7 +380,7 @@ static void make_axis(axis *a, sl_axis_scale s, double lo, double hi) {
         double v = e + log10(m);
         if (v < a->lo || v > a->hi) continue;
         int label = majors <= 0 || (majors == 1 && decades <= 2 && (m == 2 || m == 5)) ||
-                    (majors == 2 && a->hi - a->lo <= 1.5 && (m == 2 || m == 5));
+                    (majors == 2 && a->hi - a->lo <= 2.5 && (m == 2 || m == 5));
         decade_label(buf, sizeof buf, m, e, plain);
         add_tick(a, v, 0, label ? buf : NULL);
       }
@@ -590,10 +590,11 @@ static void draw_series(canvas *cv, const panel *p) {
     for (int j = 0; j < 3; ++j) X[j] = pxc(p, t->x[j]), Y[j] = pyc(p, t->y[j]);
     /* hypotenuse, then the legs through the right angle */
     double lx[4] = {X[0], X[1], X[2], X[0]}, ly[4] = {Y[0], Y[1], Y[2], Y[0]};
+    uint32_t col = series_colour(&c->series[k], k);
     if (cv->f) fputs("<g class=\"slope-triangle\">\n", cv->f);
-    cv_polyline(cv, 4, lx, ly, 1.2, GUIDE, 0);
+    cv_polyline(cv, 4, lx, ly, 1.2, col, 0);
     double bottom = fmax(Y[0], Y[1]);
-    cv_text(cv, 0.5 * (X[0] + X[1]), bottom + 4 + SMALL, t->label, SMALL + 1, MIDDLE, 0, GUIDE, 0, "slope");
+    cv_text(cv, 0.5 * (X[0] + X[1]), bottom + 4 + SMALL, t->label, SMALL + 1, MIDDLE, 0, col, 0, "slope");
     if (cv->f) fputs("</g>\n", cv->f);
   }
 }
