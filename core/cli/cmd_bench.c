@@ -354,7 +354,7 @@ int sl_cmd_bench(int argc, char **argv) {
     }
     int measured = 0;
     for (int i = 0; i < n_runs; ++i) measured += b.table.rows[i].measured;
-    fprintf(stderr, "sluice: wrote %s, %s%s%s (%d of %d runs measured)\n", csv, png, comparison ? ", " : "",
+    fprintf(stderr, "sluice: wrote %s, %s, %s%s%s (%d of %d runs measured)\n", csv, svg, png, comparison ? ", " : "",
             comparison ? compare : "", measured, n_runs);
     if (kept_logs && !keep) fprintf(stderr, "sluice: the logs of the failed runs are in %s\n", runs_dir);
   }

@@ -96,6 +96,23 @@ int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d) {
     size_t used = strlen(raw_sub);
     snprintf(raw_sub + used, sizeof raw_sub - used, "\n%s", t->exact);
   }
+  /* the measure in words: the quantity's internal name ("velocity[2]") and the norm's as the axes give them */
+  char internal[400];
+  sl_bench_quantity_label(s, internal, sizeof internal);
+  char *at = internal[0] && !s->m.label ? strstr(raw_sub, internal) : NULL;
+  if (at) {
+    char rest[1600];
+    snprintf(rest, sizeof rest, "%s", at + strlen(internal));
+    snprintf(at, sizeof raw_sub - (size_t)(at - raw_sub), "%s%s", quantity, rest);
+  }
+  for (int k = 1; k <= 2; ++k) { /* "L1 error" as L_{1} */
+    char word[8], *w;
+    snprintf(word, sizeof word, "L%d ", k);
+    if ((w = strstr(raw_sub, word)) && (w == raw_sub || w[-1] == ' ') && strlen(raw_sub) + 3 < sizeof raw_sub) {
+      memmove(w + 5, w + 2, strlen(w + 2) + 1);
+      w[1] = '_', w[2] = '{', w[3] = (char)('0' + k), w[4] = '}';
+    }
+  }
   sl_plot_pretty(raw_sub, subtitle, sizeof subtitle);
   sl_plot_pretty(s->title ? s->title : s->name, title, sizeof title);
   for (int i = 0; i < b.n_series && i < nv; ++i) sl_plot_pretty(s->variant_names[i], b.names[i], sizeof b.names[i]);
@@ -103,8 +120,9 @@ int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d) {
   if (!comparison) {
     const char *unit = s->m.label ? "" : sl_plot_unit(s->m.name);
     char err[700];
-    if (s->m.against == SL_AGAINST_VALUE) snprintf(err, sizeof err, "|%s \xE2\x88\x92 %.10g|%s%s%s", sym, s->m.value,
-                                                   unit[0] ? " (" : "", unit, unit[0] ? ")" : "");
+    if (s->m.against == SL_AGAINST_VALUE)
+      snprintf(err, sizeof err, "|%s %s %.10g|%s%s%s", s->m.label ? quantity : sym, s->m.value < 0 ? "+" : "\xE2\x88\x92",
+               fabs(s->m.value), unit[0] ? " (" : "", unit, unit[0] ? ")" : "");
     else if (s->m.reduce != SL_REDUCE_NONE || (s->m.scalar && s->m.against != SL_AGAINST_REFERENCE))
       snprintf(err, sizeof err, "error in the %s", quantity);
     else snprintf(err, sizeof err, "%s error in %s", norm_text(s->m.norm), quantity);

@@ -379,7 +379,7 @@ static void make_axis(axis *a, sl_axis_scale s, double lo, double hi) {
       for (int m = 2; m <= 9; ++m) {
         double v = e + log10(m);
         if (v < a->lo || v > a->hi) continue;
-        int label = majors <= 0 || (majors == 1 && decades <= 2 && (m == 2 || m == 5)) ||
+        int label = majors <= 0 || a->hi - a->lo < 0.7 || (majors == 1 && decades <= 2 && (m == 2 || m == 3 || m == 5)) ||
                     (majors == 2 && a->hi - a->lo <= 2.5 && (m == 2 || m == 5));
         decade_label(buf, sizeof buf, m, e, plain);
         add_tick(a, v, 0, label ? buf : NULL);
@@ -433,6 +433,8 @@ static void make_triangle(const sl_chart_series *s, double yspan_decades, triang
   memset(t, 0, sizeof *t);
   double slope;
   if (s->slope_points < 2 || sl_chart_slope(s, s->slope_points, &slope)) return;
+  /* no triangle for a flat curve, nor for an order that is not one (an error growing with N) */
+  if (fabs(slope) < 0.1 || (s->slope_negate && slope > 0.0)) return;
   int n = 0;
   for (int i = 0; i < s->n; ++i) n += plottable(SL_AXIS_LOG, s->x[i]) && plottable(SL_AXIS_LOG, s->y[i]);
   int first = s->slope_points < n ? n - s->slope_points : 0, k = 0;
@@ -586,6 +588,11 @@ static void draw_series(canvas *cv, const panel *p) {
   for (int k = 0; k < c->n_series; ++k) {
     const triangle *t = &p->tri[k];
     if (!t->on) continue;
+    int same = 0; /* a curve on top of an earlier one: its triangle once */
+    for (int j = 0; j < k && !same; ++j)
+      same = p->tri[j].on && !strcmp(p->tri[j].label, t->label) && fabs(p->tri[j].y[0] - t->y[0]) < 0.05 &&
+             fabs(p->tri[j].x[0] - t->x[0]) < 0.05;
+    if (same) continue;
     double X[4], Y[4];
     for (int j = 0; j < 3; ++j) X[j] = pxc(p, t->x[j]), Y[j] = pyc(p, t->y[j]);
     /* hypotenuse, then the legs through the right angle */
@@ -673,40 +680,55 @@ static int draw_panel(canvas *cv, const sl_chart *c, double ox, double oy, doubl
 
 /* ---- figures -------------------------------------------------------------- */
 
-static int count_lines(const char *s) {
-  int n = 0;
-  for (const char *p = s; p && *p; p = strchr(p, '\n') ? strchr(p, '\n') + 1 : NULL) ++n;
-  return n;
-}
-
-static double header_height(const sl_figure *f) {
-  return 6 + (f->title ? TITLE + 8 : 0) + count_lines(f->subtitle) * (SUB + 4) + 4;
-}
-static double footer_height(const sl_figure *f) { return f->note ? count_lines(f->note) * (SMALL + 4) + 8 : 4; }
-
-static void draw_lines(canvas *cv, const char *text, double x, double y, double size, anchor a, uint32_t col, const char *cls) {
+/* Draws text line by line (at '\n', and at spaces where a line is wider than
+ * width) from baseline y; cv NULL: only counts. Returns the number of lines. */
+static int draw_lines(canvas *cv, const char *text, double x, double y, double size, double width, anchor a,
+                      uint32_t col, const char *cls) {
+  int lines = 0;
   for (const char *p = text; p && *p;) {
     const char *nl = strchr(p, '\n');
     size_t n = nl ? (size_t)(nl - p) : strlen(p);
     char buf[1024];
     snprintf(buf, sizeof buf, "%.*s", (int)(n < sizeof buf ? n : sizeof buf - 1), p);
-    cv_text(cv, x, y, buf, size, a, 0, col, 0, cls);
-    y += size + 4;
+    char *q = buf;
+    while (*q) {
+      char *cut = NULL;
+      if (text_width(q, size) > width) /* the last space where the line still fits */
+        for (char *sp = strchr(q, ' '); sp; sp = strchr(sp + 1, ' ')) {
+          *sp = '\0';
+          int fits = text_width(q, size) <= width;
+          *sp = ' ';
+          if (!fits) break;
+          cut = sp;
+        }
+      if (cut) *cut = '\0';
+      if (cv) cv_text(cv, x, y, q, size, a, 0, col, 0, cls);
+      y += size + 4, ++lines;
+      q = cut ? cut + 1 : q + strlen(q);
+    }
     p = nl ? nl + 1 : p + n;
   }
+  return lines;
+}
+
+static double header_height(const sl_figure *f, double W) {
+  return 6 + (f->title ? TITLE + 8 : 0) + draw_lines(NULL, f->subtitle, 0, 0, SUB, W - 16, MIDDLE, INK, NULL) * (SUB + 4) + 4;
+}
+static double footer_height(const sl_figure *f, double W) {
+  return f->note ? draw_lines(NULL, f->note, 0, 0, SMALL, W - 16, START, NOTE, NULL) * (SMALL + 4) + 8 : 4;
 }
 
 static int render(canvas *cv, const sl_figure *f, double W, double H, double pw, double ph, int heading, sl_diag *d) {
   double y = 6;
   if (f->title) cv_text(cv, 0.5 * W, y + TITLE, f->title, TITLE, MIDDLE, 0, INK, 1, "title"), y += TITLE + 8;
-  if (f->subtitle) draw_lines(cv, f->subtitle, 0.5 * W, y + SUB, SUB, MIDDLE, INK, "subtitle");
-  double top = header_height(f);
+  if (f->subtitle) draw_lines(cv, f->subtitle, 0.5 * W, y + SUB, SUB, W - 16, MIDDLE, INK, "subtitle");
+  double top = header_height(f, W);
   int cols = f->columns > 0 ? f->columns : f->n_panels;
   for (int k = 0; k < f->n_panels; ++k) {
     int rc = draw_panel(cv, &f->panels[k], (k % cols) * pw, top + (k / cols) * ph, pw, ph, heading, d);
     if (rc) return rc;
   }
-  if (f->note) draw_lines(cv, f->note, 8, H - footer_height(f) + 4 + SMALL, SMALL, START, NOTE, "note");
+  if (f->note) draw_lines(cv, f->note, 8, H - footer_height(f, W) + 4 + SMALL, SMALL, W - 16, START, NOTE, "note");
   return 0;
 }
 
@@ -714,7 +736,7 @@ static int figure_size(const sl_figure *f, double *W, double *H, double *pw, dou
   if (f->n_panels < 1) return sl_diag_set(d, SL_EBADINPUT, "plot: a figure without panels");
   int cols = f->columns > 0 ? f->columns : f->n_panels, rows = (f->n_panels + cols - 1) / cols;
   *pw = f->panel_width > 0 ? f->panel_width : 480, *ph = f->panel_height > 0 ? f->panel_height : 360;
-  *W = cols * *pw, *H = header_height(f) + rows * *ph + footer_height(f);
+  *W = cols * *pw, *H = header_height(f, *W) + rows * *ph + footer_height(f, *W);
   return 0;
 }
 
@@ -784,7 +806,7 @@ int sl_figure_write_svg(const char *path, const sl_figure *f, sl_diag *d) {
 static int chart_figure(const sl_chart *c, int w, int h, sl_figure *f, double *ph, sl_diag *d) {
   if (w < 200 || h < 150) return sl_diag_set(d, SL_EBADINPUT, "chart: %d x %d pixels is too small", w, h);
   *f = (sl_figure){.title = c->title, .subtitle = c->subtitle, .note = c->note, .n_panels = 1, .panels = c};
-  *ph = h - header_height(f) - footer_height(f);
+  *ph = h - header_height(f, w) - footer_height(f, w);
   return 0;
 }
 

@@ -64,7 +64,8 @@ typedef struct sl_chart_series {
    * least-squares slope of log y on log x over the last slope_points
    * plottable points, labelled with slope_format (printf, one double;
    * NULL: "slope %.2f") applied to the slope, negated when slope_negate
-   * (an error falling as N^-p is "order p"). */
+   * (an error falling as N^-p is "order p"). No triangle for a slope under
+   * 0.1 in magnitude, nor for a rising curve when slope_negate. */
   int slope_points;
   const char *slope_format;
   int slope_negate;
