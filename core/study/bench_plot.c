@@ -71,7 +71,7 @@ static void build_free(build *b) {
 int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d) {
   const sl_study *s = t->study;
   int nv = s->n_variants, np = s->n_points, comparison = s->m.against == SL_AGAINST_NONE;
-  int profile = 0, max_n = np;
+  int profile = 0, max_n = 2 * np; /* room for the breaks of a sweep that turns back */
   for (int i = 0; i < t->n_rows; ++i)
     if (t->rows[i].measured && t->rows[i].m.is_profile) profile = 1, max_n = t->rows[i].m.n > max_n ? t->rows[i].m.n : max_n;
   int all_x = s->n_point_keys > 0 && np > 1;
@@ -166,9 +166,9 @@ int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d) {
     const double *l = first ? first->m.line : NULL;
     if (s->m.scalar) snprintf(xlabel[0], sizeof xlabel[0], "time t (s)");
     else if (!l) snprintf(xlabel[0], sizeof xlabel[0], "distance along the line (m)");
-    else if (l[1] == 0.0 && l[3] == 0.0 && l[2] > l[0]) snprintf(xlabel[0], sizeof xlabel[0], "distance from x = %g m (m)", l[0]);
-    else if (l[0] == l[2] && l[3] > l[1]) snprintf(xlabel[0], sizeof xlabel[0], "distance from y = %g m, up at x = %g m (m)", l[1], l[0]);
-    else if (l[1] == l[3] && l[2] > l[0]) snprintf(xlabel[0], sizeof xlabel[0], "distance from x = %g m, across at y = %g m (m)", l[0], l[1]);
+    else if (l[1] == 0.0 && l[3] == 0.0 && l[2] > l[0]) snprintf(xlabel[0], sizeof xlabel[0], "x \xE2\x88\x92 %g (m)", l[0]);
+    else if (l[0] == l[2] && l[3] > l[1]) snprintf(xlabel[0], sizeof xlabel[0], "y \xE2\x88\x92 %g (m), along x = %g m", l[1], l[0]);
+    else if (l[1] == l[3] && l[2] > l[0]) snprintf(xlabel[0], sizeof xlabel[0], "x \xE2\x88\x92 %g (m), along y = %g m", l[0], l[1]);
     else snprintf(xlabel[0], sizeof xlabel[0], "distance from (%g, %g) towards (%g, %g) (m)", l[0], l[1], l[2], l[3]);
     snprintf(ylabel[0], sizeof ylabel[0], "%s", quantity);
     for (int i = 0; i < t->n_rows; ++i) {
@@ -193,12 +193,21 @@ int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d) {
     else snprintf(xlabel[0], sizeof xlabel[0], "point");
     snprintf(ylabel[0], sizeof ylabel[0], "%s", quantity);
     for (int v = 0; v < nv; ++v) {
+      /* points in sweeps (tables): the line breaks where x turns back, so
+       * that only the points of one sweep are joined */
+      double *x = b.xs + (size_t)v * max_n, *y = b.ys + (size_t)v * max_n;
+      int m = 0, dir = 0;
       for (int p = 0; p < np; ++p) {
         const sl_bench_row *r = &t->rows[v * np + p];
-        b.xs[(size_t)v * max_n + p] = all_x ? s->point_x[p] : p;
-        b.ys[(size_t)v * max_n + p] = r->measured ? r->m.scalar : NAN;
+        double xp = all_x ? s->point_x[p] : p;
+        if (m > 0 && isfinite(x[m - 1])) {
+          int d_now = xp > x[m - 1] ? 1 : xp < x[m - 1] ? -1 : 0;
+          if (dir && d_now && d_now != dir) x[m] = y[m] = NAN, ++m, d_now = 0;
+          dir = d_now;
+        }
+        x[m] = xp, y[m] = r->measured ? r->m.scalar : NAN, ++m;
       }
-      b.series[v] = (sl_chart_series){.name = b.names[v], .n = np, .x = b.xs + (size_t)v * max_n, .y = b.ys + (size_t)v * max_n};
+      b.series[v] = (sl_chart_series){.name = b.names[v], .n = m, .x = x, .y = y};
     }
   }
   int failed = failed_runs(t);
