@@ -489,7 +489,7 @@ int main(int argc, char **argv) {
                        .panel_width = 480,
                        .panel_height = 360};
     sl_diag d = {{0}};
-    if (sl_figure_write_svg(svg, &fig, &d)) fprintf(stderr, "%s\n", d.msg), failed = 1;
+    if (sl_figure_write(svg, &fig, &d)) fprintf(stderr, "%s\n", d.msg), failed = 1;
   }
   return failed;
 }

@@ -433,7 +433,7 @@ static int write_svg(const char *path, const table *t) {
                      .note = note, .n_panels = np, .panels = panels, .columns = 2, .panel_width = 480,
                      .panel_height = 360};
   sl_diag d = {{0}};
-  if (sl_figure_write_svg(path, &fig, &d)) {
+  if (sl_figure_write(path, &fig, &d)) {
     fprintf(stderr, "%s\n", d.msg);
     return -1;
   }

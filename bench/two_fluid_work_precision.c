@@ -207,7 +207,7 @@ static int write_svg(const char *path, const table *t) {
   sl_figure fig = {.title = "1-D two-fluid model: error against CPU time", .note = note, .n_panels = N_SCENES,
                      .panels = panels, .columns = N_SCENES};
   sl_diag d = {{0}};
-  if (sl_figure_write_svg(path, &fig, &d)) {
+  if (sl_figure_write(path, &fig, &d)) {
     fprintf(stderr, "%s\n", d.msg);
     return -1;
   }

@@ -218,8 +218,7 @@ int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d) {
   sl_figure f = {.title = title, .subtitle = subtitle, .note = note, .n_panels = n_panels, .panels = b.panels,
                  .columns = n_panels, .panel_width = n_panels > 1 ? 560 : 960, .panel_height = n_panels > 1 ? 440 : 520};
   if (n_panels == 1) b.panels[0].title = NULL;
-  size_t len = strlen(path);
-  int rc = len > 4 && !strcmp(path + len - 4, ".svg") ? sl_figure_write_svg(path, &f, d) : sl_figure_write_png(path, &f, d);
+  int rc = sl_figure_write(path, &f, d);
   build_free(&b);
   return rc;
 }

@@ -802,6 +802,11 @@ int sl_figure_write_svg(const char *path, const sl_figure *f, sl_diag *d) {
   return rc ? rc : svg(path, f, W, H, pw, ph, 1, d);
 }
 
+int sl_figure_write(const char *path, const sl_figure *f, sl_diag *d) {
+  size_t n = strlen(path);
+  return n > 4 && !strcmp(path + n - 4, ".png") ? sl_figure_write_png(path, f, d) : sl_figure_write_svg(path, f, d);
+}
+
 /* A chart is a figure of one panel filling w x h under the chart's title. */
 static int chart_figure(const sl_chart *c, int w, int h, sl_figure *f, double *ph, sl_diag *d) {
   if (w < 200 || h < 150) return sl_diag_set(d, SL_EBADINPUT, "chart: %d x %d pixels is too small", w, h);

@@ -109,5 +109,7 @@ int sl_chart_write_svg(const char *path, const sl_chart *c, int w, int h, sl_dia
 int sl_figure_draw(const sl_figure *f, sl_image *im, sl_diag *d);
 int sl_figure_write_png(const char *path, const sl_figure *f, sl_diag *d);
 int sl_figure_write_svg(const char *path, const sl_figure *f, sl_diag *d);
+/* PNG when path ends in ".png", SVG otherwise. */
+int sl_figure_write(const char *path, const sl_figure *f, sl_diag *d);
 
 #endif

@@ -45,7 +45,7 @@ void sl_bench_quantity_label(const sl_study *s, char *buf, size_t len);
 int sl_bench_write_csv(const sl_bench_table *t, const char *path, sl_diag *d);
 /* Comparisons: positions (or points) down, one column per run. */
 int sl_bench_write_compare_csv(const sl_bench_table *t, const char *path, sl_diag *d);
-/* The study's figure (bench_plot.c), as PNG or SVG by the path's ending:
+/* The study's figure (bench_plot.c), as PNG (a path ending in .png) or SVG:
  * error against the first points key (when its values are numbers) with
  * reference slopes labelled with the observed order, beside error against
  * CPU time, log-log, one curve per variant; for a comparison the quantity

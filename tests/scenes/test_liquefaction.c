@@ -280,12 +280,19 @@ static void pictures(const char *out) {
     pb[k] = 1e-3 * scalar(out, "base_excess_pressure", fmin(t[k], 186.0));
     st[k] = 100.0 * scalar(out, "settlement", fmin(t[k], 186.0)); /* cm */
   }
-  sl_chart_series se[2] = {{.name = "base excess pore pressure, kPa", .n = NH, .x = t, .y = pb, .marker_every = 8},
-                           {.name = "surface settlement, cm", .n = NH, .x = t, .y = st, .marker_every = 8, .dashed = 1}};
-  sl_chart ch = {.title = "liquefaction.ini: 0.8 mm sand, 6 s of shaking",
-                 .subtitle = "from the solids inventory and the fluid pressure over its pre-shaking value",
-                 .xlabel = "time, s", .ylabel = "kPa / cm", .n_series = 2, .series = se};
-  rc = sl_chart_write_png("liquefaction_history.png", &ch, 720, 420, &d);
+  /* two panels: each quantity on its own axis, in its own unit */
+  sl_chart_series se[2] = {{.n = NH, .x = t, .y = pb, .marker_every = 8},
+                           {.n = NH, .x = t, .y = st, .marker_every = 8, .colour = "#D62728", .marker = SL_CHART_MARK_SQUARE}};
+  sl_chart panels[2] = {{.title = "base excess pore pressure", .xlabel = "time t (s)", .ylabel = "excess pore pressure u_{e} (kPa)",
+                         .n_series = 1, .series = &se[0], .legend = SL_LEGEND_NONE},
+                        {.title = "surface settlement", .xlabel = "time t (s)", .ylabel = "settlement (cm)", .n_series = 1,
+                         .series = &se[1], .legend = SL_LEGEND_NONE}};
+  sl_figure ch = {.title = "liquefaction.ini: 0.8 mm sand, 6 s of shaking",
+                  .subtitle = "from the solids inventory and the fluid pressure over its pre-shaking value",
+                  .n_panels = 2, .panels = panels, .columns = 2, .panel_width = 400, .panel_height = 320};
+  rc = sl_figure_write_svg("liquefaction_history.svg", &ch, &d);
+  CHECK_MSG(rc == 0, "liquefaction_history.svg: %s", d.msg);
+  rc = sl_figure_write_png("liquefaction_history.png", &ch, &d);
   CHECK_MSG(rc == 0, "liquefaction_history.png: %s", d.msg);
   why = png_check_file("liquefaction_history.png", &w, &hh, &rgb);
   CHECK_MSG(why == NULL, "liquefaction_history.png: %s", why ? why : "");
