@@ -73,21 +73,35 @@ static int runs_of(const char *text, run *r) {
 static double run_size(const run *r, double size) { return r->level ? 0.7 * size : size; }
 static double run_shift(const run *r, double size) { return r->level > 0 ? -0.42 * size : r->level < 0 ? 0.22 * size : 0.0; }
 
-static int utf8_count(const char *s, size_t n) {
-  int k = 0;
-  for (size_t i = 0; i < n; ++i) k += ((unsigned char)s[i] & 0xC0) != 0x80;
-  return k;
+/* The advance of one character in em: the bitmap font's 0.6 for all, or a
+ * sans-serif face's (DejaVu Sans, Helvetica) by class of character. */
+static double advance(unsigned char c, int proportional) {
+  if (!proportional) return 0.6;
+  if (c == ' ' || c == '.' || c == ',' || c == ':' || c == ';' || c == 'i' || c == 'l' || c == 'j' || c == '(' ||
+      c == ')' || c == '|' || c == '\'' || c == 'f' || c == 't' || c == 'r')
+    return 0.34;
+  if ((c >= 'A' && c <= 'Z') || c == 'm' || c == 'w' || c == '%') return 0.78;
+  return 0.62;
 }
 
-/* The width of text at a size: 0.6 em a character (the bitmap font's advance;
- * close to the mean width of a sans-serif face over digits and lower case). */
-static double text_width(const char *text, double size) {
+/* The width of text at a size: proportional 0 gives the bitmap font's
+ * (where the PNG's glyphs go), 1 the room it takes in either file (the
+ * larger of the font's and a sans-serif face's), for boxes and wrapping. */
+static double text_width_of(const char *text, double size, int proportional) {
   run r[MAX_RUNS];
   int n = runs_of(text, r);
   double w = 0.0;
-  for (int i = 0; i < n; ++i) w += 0.6 * run_size(&r[i], size) * utf8_count(r[i].s, r[i].n);
+  for (int i = 0; i < n; ++i)
+    for (size_t k = 0; k < r[i].n; ++k) {
+      unsigned char c = (unsigned char)r[i].s[k];
+      if ((c & 0xC0) == 0x80) continue; /* UTF-8 continuation */
+      double a = c >= 0x80 ? 0.62 : advance(c, proportional);
+      w += (proportional ? fmax(0.6, a) : a) * run_size(&r[i], size);
+    }
   return w;
 }
+
+static double text_width(const char *text, double size) { return text_width_of(text, size, 1); }
 
 /* ---- the canvas: SVG or a supersampled image ------------------------------ */
 
@@ -243,7 +257,7 @@ static void cv_text(canvas *cv, double x, double y, const char *text, double siz
     fputs("</text>\n", f);
     return;
   }
-  double w = text_width(text, size), start = a == START ? 0.0 : a == MIDDLE ? -0.5 * w : -w;
+  double w = text_width_of(text, size, 0), start = a == START ? 0.0 : a == MIDDLE ? -0.5 * w : -w;
   for (int pass = 0; pass <= (bold ? 1 : 0); ++pass) {
     double along = start;
     for (int i = 0; i < n; ++i) {
