@@ -194,8 +194,8 @@ static int write_svg(const char *path, const table *t) {
     }
     snprintf(titles[s], sizeof titles[s], "%s", t->spec[s].name);
     panels[s] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = titles[s], .xlabel = "CPU time of the run (s)",
-                             .ylabel = "porosity error (final) or L_{1} error in \xCF\x86 at 10 s (m)", .n_series = 4,
-                             .series = ser[s], .legend = s == 0 ? SL_LEGEND_BOTTOM_RIGHT : SL_LEGEND_BOTTOM_LEFT,
+                             .ylabel = "final porosity error; L_{1} error in \xCF\x86 at 10 s (m)", .n_series = 4,
+                             .series = ser[s], .legend = SL_LEGEND_AUTO,
                              .yspan = {s == 0 ? 0.0 : 1e-10, s == 0 ? 0.0 : 1e-1}}; /* room for the legend */
   }
   char note[1024];
@@ -205,7 +205,7 @@ static int write_svg(const char *path, const table *t) {
            "equilibrium: this is the stopping tolerance).\n%s.",
            t->machine);
   sl_figure fig = {.title = "1-D two-fluid model: error against CPU time", .note = note, .n_panels = N_SCENES,
-                     .panels = panels, .columns = N_SCENES};
+                     .panels = panels, .columns = N_SCENES, .panel_width = 520, .panel_height = 440};
   sl_diag d = {{0}};
   if (sl_figure_write(path, &fig, &d)) {
     fprintf(stderr, "%s\n", d.msg);
@@ -214,17 +214,64 @@ static int write_svg(const char *path, const table *t) {
   return 0;
 }
 
+/* The table back from a CSV this program wrote (--replot): the figure again
+ * from recorded measurements, without running anything. Returns 0 or -1. */
+static int read_csv(const char *path, table *t) {
+  FILE *f = fopen(path, "r");
+  if (!f) return fprintf(stderr, "%s: %s\n", path, strerror(errno)), -1;
+  char line[4096];
+  int rows = 0, lineno = 0, bad = 0;
+  while (fgets(line, sizeof line, f)) {
+    ++lineno;
+    if (!strncmp(line, "# machine: ", 11)) {
+      snprintf(t->machine, sizeof t->machine, "%.*s", (int)strcspn(line + 11, "\n"), line + 11);
+      continue;
+    }
+    if (line[0] == '#' || !strncmp(line, "scene,", 6)) continue;
+    char scene[64], sweep[8];
+    run_result r = {.ok = 1};
+    if (sscanf(line, "%63[^,],%7[^,],%d,%lf,%ld,%lf,%lf,%lf", scene, sweep, &r.cells, &r.dt, &r.steps, &r.cpu,
+               &r.final_error, &r.transient_l1) != 8) {
+      fprintf(stderr, "%s:%d: not a row of this program's CSV\n", path, lineno);
+      bad = 1;
+      break;
+    }
+    int placed = 0;
+    for (int s = 0; s < N_SCENES && !placed; ++s) {
+      if (strcmp(scene, t->spec[s].name)) continue;
+      int dt_sweep = !strcmp(sweep, "dt");
+      for (int k = 0; k < N_SWEEP && !placed; ++k)
+        if (dt_sweep ? fabs(t->spec[s].dts[k] - r.dt) <= 1e-9 * r.dt : t->spec[s].cells[k] == r.cells) {
+          (dt_sweep ? t->dt[s] : t->mesh[s])[k] = r;
+          placed = 1;
+        }
+    }
+    if (!placed) {
+      fprintf(stderr, "%s:%d: %s, %s sweep, %d cells, dt %g is not one of this program's runs\n", path, lineno, scene,
+              sweep, r.cells, r.dt);
+      bad = 1;
+      break;
+    }
+    ++rows;
+  }
+  fclose(f);
+  if (!bad && rows == 0) fprintf(stderr, "%s: no rows\n", path), bad = 1;
+  return bad ? -1 : 0;
+}
+
 static int usage(void) {
-  fprintf(stderr, "usage: bench_two_fluid_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH] [--repeat R]\n");
+  fprintf(stderr, "usage: bench_two_fluid_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH] [--repeat R]\n"
+                  "       bench_two_fluid_work_precision --replot CSV --svg PATH   (the figure of recorded runs)\n");
   return 2;
 }
 
 int main(int argc, char **argv) {
-  const char *src = ".", *csv = NULL, *svg = NULL;
+  const char *src = ".", *csv = NULL, *svg = NULL, *replot = NULL;
   int repeat = 3;
   for (int a = 1; a < argc; ++a) {
     if (!strcmp(argv[a], "--csv") && a + 1 < argc) csv = argv[++a];
     else if (!strcmp(argv[a], "--svg") && a + 1 < argc) svg = argv[++a];
+    else if (!strcmp(argv[a], "--replot") && a + 1 < argc) replot = argv[++a];
     else if (!strcmp(argv[a], "--repeat") && a + 1 < argc) {
       repeat = atoi(argv[++a]);
       if (repeat < 1 || repeat > 100) return usage();
@@ -238,6 +285,11 @@ int main(int argc, char **argv) {
                            {25, 50, 100, 200, 400, 0}, {0.8, 0.4, 0.2, 0.1, 0.05, 0.025}, NULL};
   t.spec[1] = (scene_spec){"fluidization_step", 0.716, "Pringle 2001, section 4.6.1", {25, 50, 100, 200, 400, 0},
                            {0.16, 0.08, 0.04, 0.02, 0.01, 0.005}, NULL};
+  if (replot) {
+    if (!svg) return usage();
+    if (read_csv(replot, &t)) return 2;
+    return write_svg(svg, &t) ? 1 : 0;
+  }
   bench_machine_describe(t.machine, sizeof t.machine);
   int failures = 0;
   for (int s = 0; s < N_SCENES; ++s) {

@@ -560,8 +560,15 @@ static void draw_axes(canvas *cv, const panel *p, double ox, double oy, double h
   }
   if (cv->f) fputs("</g>\n", cv->f);
   cv_rect(cv, p->x0, p->y0, p->x1, p->y1, -1, FRAME);
-  if (c->xlabel) cv_text(cv, 0.5 * (p->x0 + p->x1), p->y1 + 6 + TICKS + 8 + LABEL, c->xlabel, LABEL, MIDDLE, 0, INK, 0, "xlabel");
-  if (c->ylabel) cv_text(cv, ox + 10 + LABEL, 0.5 * (p->y0 + p->y1), c->ylabel, LABEL, MIDDLE, 1, INK, 0, "ylabel");
+  /* axis titles longer than their axis are set smaller (down to 9 px) */
+  if (c->xlabel) {
+    double size = fmax(9.0, fmin(LABEL, LABEL * (p->x1 - p->x0) / fmax(text_width(c->xlabel, LABEL), 1.0)));
+    cv_text(cv, 0.5 * (p->x0 + p->x1), p->y1 + 6 + TICKS + 8 + LABEL, c->xlabel, size, MIDDLE, 0, INK, 0, "xlabel");
+  }
+  if (c->ylabel) {
+    double size = fmax(9.0, fmin(LABEL, LABEL * (p->y1 - p->y0) / fmax(text_width(c->ylabel, LABEL), 1.0)));
+    cv_text(cv, ox + 10 + LABEL, 0.5 * (p->y0 + p->y1), c->ylabel, size, MIDDLE, 1, INK, 0, "ylabel");
+  }
   if (head_y > 0 && c->title) cv_text(cv, 0.5 * (p->x0 + p->x1), head_y, c->title, HEAD, MIDDLE, 0, INK, 1, "panel-title");
 }
 
