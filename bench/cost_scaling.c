@@ -331,7 +331,7 @@ static int write_svg(const char *path, const scene_table *tables, int n_tables, 
     }
     if (ns == 0) continue; /* no run of this scene succeeded */
     panels[np] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = t->spec->title, .xlabel = "cells", .ylabel = "time per operation (s)",
-                              .n_series = ns, .series = series[np], .legend = SL_LEGEND_TOP_LEFT};
+                              .n_series = ns, .series = series[np], .legend = SL_LEGEND_AUTO};
     ++np;
   }
   char note[1024];
@@ -350,16 +350,75 @@ static int write_svg(const char *path, const scene_table *tables, int n_tables, 
   return 0;
 }
 
+/* The tables back from a CSV this program wrote (--replot): the figure again
+ * from recorded measurements, running nothing. Returns 0 or -1. */
+static int read_csv(const char *path, scene_table *tables, int *n_tables, char *machine, size_t mlen, int *repeat) {
+  FILE *f = fopen(path, "r");
+  if (!f) return fprintf(stderr, "%s: %s\n", path, strerror(errno)), -1;
+  char line[4096];
+  int lineno = 0, bad = 0;
+  *n_tables = 0;
+  while (!bad && fgets(line, sizeof line, f)) {
+    ++lineno;
+    line[strcspn(line, "\r\n")] = '\0';
+    if (!strncmp(line, "# machine: ", 11)) snprintf(machine, mlen, "%.400s", line + 11);
+    const char *fastest = strstr(line, "fastest of ");
+    if (line[0] == '#' && fastest) *repeat = atoi(fastest + 11);
+    if (line[0] == '#' || !strncmp(line, "scene,", 6)) continue;
+    /* scene,mesh,cells, then steps .. symbolic_s (11 fields, empty when failed), status */
+    char *field[16];
+    int n = 0;
+    for (char *q = line; n < 16;) {
+      field[n++] = q;
+      char *comma = strchr(q, ',');
+      if (!comma) break;
+      *comma = '\0', q = comma + 1;
+    }
+    int spec = -1;
+    for (int i = 0; n == 15 && i < N_SCENES; ++i)
+      if (!strcmp(field[0], scenes[i].name)) spec = i;
+    if (spec < 0) {
+      fprintf(stderr, "%s:%d: not a row of this program's CSV\n", path, lineno);
+      bad = 1;
+      break;
+    }
+    scene_table *t = NULL;
+    for (int i = 0; i < *n_tables; ++i)
+      if (tables[i].spec == &scenes[spec]) t = &tables[i];
+    if (!t) {
+      t = &tables[(*n_tables)++];
+      memset(t, 0, sizeof *t);
+      t->spec = &scenes[spec];
+    }
+    if (t->n == MAX_SIZES) {
+      fprintf(stderr, "%s:%d: more sizes than this program runs\n", path, lineno);
+      bad = 1;
+      break;
+    }
+    point *pt = &t->pts[t->n++];
+    pt->cells = atol(field[2]);
+    pt->ok = !strcmp(field[14], "ok");
+    pt->cpu = pt->ok ? atof(field[8]) : NAN;
+    for (int q = 0; q < N_PHASES; ++q) pt->per_op[q] = pt->ok && field[9 + q][0] ? atof(field[9 + q]) : NAN;
+    pt->symbolic = pt->ok && field[13][0] ? atof(field[13]) : NAN;
+  }
+  fclose(f);
+  if (!bad && *n_tables == 0) fprintf(stderr, "%s: no rows\n", path), bad = 1;
+  for (int i = 0; !bad && i < *n_tables; ++i) fit_scene(&tables[i]);
+  return bad ? -1 : 0;
+}
+
 /* ---- main ----------------------------------------------------------------------------- */
 
 static int usage(void) {
   fprintf(stderr, "usage: bench_cost_scaling [SOURCE_DIR] [--repeat R] [--csv PATH] [--svg PATH] [--max-cells N] "
-                  "[--scene NAME]...\n");
+                  "[--scene NAME]...\n"
+                  "       bench_cost_scaling --replot CSV --svg PATH   (the figure of recorded runs)\n");
   return 2;
 }
 
 int main(int argc, char **argv) {
-  const char *src = ".", *csv = NULL, *svg = NULL;
+  const char *src = ".", *csv = NULL, *svg = NULL, *replot = NULL;
   const char *only[N_SCENES];
   int n_only = 0, repeat = 3;
   long max_cells = 0;
@@ -367,6 +426,7 @@ int main(int argc, char **argv) {
     if (!strcmp(argv[i], "--repeat") && i + 1 < argc) repeat = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--csv") && i + 1 < argc) csv = argv[++i];
     else if (!strcmp(argv[i], "--svg") && i + 1 < argc) svg = argv[++i];
+    else if (!strcmp(argv[i], "--replot") && i + 1 < argc) replot = argv[++i];
     else if (!strcmp(argv[i], "--max-cells") && i + 1 < argc) max_cells = atol(argv[++i]);
     else if (!strcmp(argv[i], "--scene") && i + 1 < argc && n_only < N_SCENES) only[n_only++] = argv[++i];
     else if (argv[i][0] == '-') return usage();
@@ -374,8 +434,14 @@ int main(int argc, char **argv) {
   }
   if (repeat < 1) return usage();
   char machine[512];
-  bench_machine_describe(machine, sizeof machine);
   scene_table tables[N_SCENES];
+  if (replot) {
+    int n_read = 0;
+    if (!svg) return usage();
+    if (read_csv(replot, tables, &n_read, machine, sizeof machine, &repeat)) return 2;
+    return write_svg(svg, tables, n_read, machine, repeat) ? 1 : 0;
+  }
+  bench_machine_describe(machine, sizeof machine);
   int n_tables = 0, failed = 0;
   for (int i = 0; i < N_SCENES; ++i) {
     int wanted = n_only == 0;

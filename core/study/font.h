@@ -18,7 +18,7 @@ unsigned sl_font_row(char ch, int r);
 /* Row r of the glyph of Unicode code point cp: printable ASCII, and the few
  * Greek letters and signs labels use (phi, rho, mu, tau, epsilon, theta,
  * psi, nu, gamma, omega, Delta, minus, times, middle dot, squared, cubed,
- * degree, en dash, almost equal); '?' for anything else. */
+ * degree, en dash, almost equal, proportional to); '?' for anything else. */
 unsigned sl_font_row_cp(uint32_t cp, int r);
 /* The code point at *s (UTF-8), advancing *s past it; '?' for a bad byte. */
 uint32_t sl_utf8_next(const char **s);
