@@ -81,6 +81,10 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
   if (!(o.min_step > 0)) o.min_step = 1.0 / 64.0;
   /* a linear problem's one solve is exact: its residual b - A du is computed, not solved for */
   double linear_rtol = o.linear || o.linear_rtol < 0 ? 0.0 : o.linear_rtol > 0 ? o.linear_rtol : SL_NEWTON_LINEAR_RTOL;
+  /* A time step's corrections from its predictor: to 1e-2 of the Newton tolerance (the residual's contraction,
+     which the convergence estimate reads, then holds the linear solve's error too: Dembo, Eisenstat & Steihaug
+     1982); fewer FGMRES iterations and refactorisations, the same steps */
+  if (o.predicted && !o.linear && !(o.linear_rtol != 0.0)) linear_rtol = fmax(linear_rtol, 1e-2 * o.rtol);
   int32_t n_check = o.n_check > 0 && o.n_check <= n ? o.n_check : n;
   memset(st, 0, sizeof *st);
   nl_ctx c = {A, b, n, fn, user, st};

@@ -77,7 +77,8 @@ typedef struct sl_newton_opts {
   int predicted;
   double linear_rtol;   /* each correction's relative residual |b - A du|_2 <= linear_rtol |b|_2, so that
                            the solver may reuse an older factorisation (sl_linsolve_solve_rtol); default
-                           SL_NEWTON_LINEAR_RTOL; negative: direct solves. A linear problem solves directly. */
+                           SL_NEWTON_LINEAR_RTOL (predicted: at least 1e-2 rtol); negative: direct solves. A
+                           linear problem solves directly. */
   /* Called once per iteration before its correction is taken (--monitor): the iteration (from 1), whether
      it is a Picard one, its relative correction, the residual at u and the terms' scale. May be NULL. */
   void (*monitor)(void *user, int iteration, int picard, double correction, double residual, double terms);
