@@ -16,8 +16,8 @@
  * the 1-D level to 1e-4, and a radial contrast below 1e-3 in phi: the
  * laminar wall layer (sqrt(nu z / U), about 2 mm at z = 0.15 m) is too thin
  * to make a core-annulus profile (docs/riser.md). The scene's own 2 mm grid
- * (100 x 50) runs about 20 iterations of 1 s a step here and is not run by
- * the test. */
+ * (100 x 50) costs about 16 s of CPU a step here (about 7 h to steady) and
+ * is not run by the test. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
