@@ -95,7 +95,7 @@ static double residual(sl_transport *t, const double *q, const double *w, const 
       b = phi[n];
       if (muscl) b += t->grad[2 * n] * (xn[0] - t->xc[2 * n]) + t->grad[2 * n + 1] * (xn[1] - t->xc[2 * n + 1]);
     } else {
-      b = t->bc_phi[m->face_tag[f]];
+      b = t->face_phi ? t->face_phi[f] : t->bc_phi[m->face_tag[f]];
     }
     double g = sl_godunov_flux(&t->tab, qf, wf, a, b);
     res[o] -= g;

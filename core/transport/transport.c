@@ -21,6 +21,7 @@ void sl_transport_destroy(sl_transport *t) {
   free(t->vnb);
   free(t->bc_type);
   free(t->bc_phi);
+  free(t->face_phi);
   free(t->fkind);
   free(t->partner);
   free(t->pshift);
@@ -206,8 +207,10 @@ int sl_transport_set_boundary(sl_transport *t, int b, sl_transport_bc type, doub
                        m->boundary_names[b], phi_outside, t->o.phi_max);
   t->bc_type[b] = (int)type;
   t->bc_phi[b] = type == SL_TRANSPORT_OPEN ? phi_outside : 0;
-  for (int i = m->bface_start[b]; i < m->bface_start[b + 1]; ++i)
+  for (int i = m->bface_start[b]; i < m->bface_start[b + 1]; ++i) {
     t->fkind[m->bface[i]] = type == SL_TRANSPORT_OPEN ? SL_FACE_OPEN : SL_FACE_WALL;
+    if (t->face_phi) t->face_phi[m->bface[i]] = t->bc_phi[b];
+  }
   return 0;
 }
 

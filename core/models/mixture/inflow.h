@@ -1,0 +1,36 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* The solids fraction of what flows into a mixture scene: the exterior
+ * states of the transport's open boundaries from [boundary.N] phi, an
+ * expression of x, y and t evaluated at each face point. A constant is one
+ * value for the boundary; a profile along it (Nigam 1999 eq 4.148: particles
+ * only in part of the channel's entrance) gives every face its own; one of
+ * t is evaluated again at the end of every step.
+ *
+ * Which boundaries let solids through: those where the flow's velocity is
+ * free (open, pressure, traction), and velocity boundaries that give phi or
+ * whose prescribed velocity crosses them (a nonzero normal component at a
+ * face point at t = 0). Velocity boundaries with a tangential velocity
+ * only (moving walls) stay walls for the solids. On an open boundary the
+ * solids flux is the Godunov flux of q phi + w F(phi) between the boundary
+ * cell and the exterior state: the exterior state enters where the flow
+ * comes in, the cell's own leaves where it goes out. */
+#ifndef SLUICE_MODELS_MIXTURE_INFLOW_H
+#define SLUICE_MODELS_MIXTURE_INFLOW_H
+
+#include "core/scene/scene.h"
+#include "core/transport/transport.h"
+
+typedef struct sl_mixture_inflow sl_mixture_inflow;
+
+/* Sets the transport's boundaries from the scene: open[b] != 0 for the
+ * flow's free boundaries (sl_flow_open). On success *out (NULL when no
+ * boundary needs values along it or in time) is updated by
+ * sl_mixture_inflow_update. SL_EBADINPUT: a value outside [0, phi_max],
+ * with the scene's file:line and the point. */
+int sl_mixture_inflow_create(const sl_scene *sc, sl_transport *tr, const unsigned char *open, double phi_max,
+                             sl_mixture_inflow **out, sl_diag *d);
+/* The exterior states of the boundaries whose phi depends on t, at time t. */
+int sl_mixture_inflow_update(sl_mixture_inflow *in, double t, sl_diag *d);
+void sl_mixture_inflow_destroy(sl_mixture_inflow *in);
+
+#endif
