@@ -1,0 +1,120 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* What Greenspan's centrifugal spectrometer (Nigam 1999, section 4.3) needs
+ * of the mixture model, against exact answers:
+ *  - inflow: a channel with plug flow whose inflow carries a solids fraction
+ *    given as an expression of the channel coordinate
+ *    (tests/scenes/inflow_channel.ini, no settling). Steady advection: the
+ *    outflow's cells carry the inflow's value at their row's face point to
+ *    1e-6, and so differ from the exact cell averages of the profile by
+ *    h^2 phi''/24: observed order 2 (1.9 to 2.1) over 8 and 16 rows.
+ *    Conservation: with a profile that also grows in t, before the front
+ *    reaches the outlet, the inventory equals the solids that entered,
+ *    sum over steps dt sum_f A_f u phi(y_f, t_{n+1}), to 1e-12;
+ *  - parameters: a scene written with [parameters] (named constants in its
+ *    values and expressions) gives bit for bit the result of the same scene
+ *    written in numbers. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/io/output.h"
+#include "core/io/sample.h"
+#include "scene_runner.h"
+#include "testing.h"
+
+static char configs[4096];
+SCENE_RUNNERS()
+
+static void set_configs(const char *sub) {
+  const char *src = getenv("SLUICE_SOURCE_DIR");
+  snprintf(configs, sizeof configs, "%s/%s", src ? src : ".", sub);
+}
+
+static double scalar(const char *file, const char *name, double t) {
+  sl_diag d = {{0}};
+  double v = NAN, tf;
+  int rc = sl_output_read_scalar(file, name, t, &v, &tf, &d);
+  CHECK_MSG(rc == 0 && fabs(tf - t) < 1e-9, "%s: %s at t = %g: %s", file, name, t, d.msg);
+  return v;
+}
+
+/* The cell field phi at n points at time t. */
+static int phi_points(const char *file, double t, int n, const double *xy, double *v) {
+  sl_sample s;
+  sl_diag d = {{0}};
+  int rc = sl_sample_points(file, "phi", t, n, xy, &s, &d);
+  CHECK_MSG(rc == 0, "%s: %s", file, d.msg);
+  if (rc) return rc;
+  for (int i = 0; i < n; ++i) v[i] = s.values[i];
+  sl_sample_free(&s);
+  return 0;
+}
+
+/* The inflow profile of inflow_channel.ini and its exact mean over [a, b]. */
+static double profile(double y) { return 0.02 + 0.01 * sin(M_PI * y / 2); }
+static double profile_mean(double a, double b) {
+  return 0.02 - 0.01 * (2 / M_PI) * (cos(M_PI * b / 2) - cos(M_PI * a / 2)) / (b - a);
+}
+
+/* Steady outflow on `rows` rows: the largest error against the exact cell
+ * means (*e_mean) and against the profile at the row's centre (*e_point). */
+static int steady_rows(int rows, double *e_mean, double *e_point) {
+  char cells[64], out[64];
+  snprintf(cells, sizeof cells, "mesh.cells=%d,%d", 4 * rows, rows);
+  snprintf(out, sizeof out, "inflow_steady_%d.h5", rows);
+  const char *sets[] = {cells, "output.every=8", NULL};
+  if (run_ok("inflow_channel", NULL, NULL, sets, out)) return 1;
+  double xy[2 * 64], v[64], h = 2.0 / rows;
+  for (int j = 0; j < rows; ++j) xy[2 * j] = 4 - 0.5 * (4.0 / (4 * rows)), xy[2 * j + 1] = -1 + (j + 0.5) * h;
+  if (phi_points(out, 8.0, rows, xy, v)) return 1;
+  *e_mean = *e_point = 0;
+  for (int j = 0; j < rows; ++j) {
+    double y0 = -1 + j * h, y1 = y0 + h;
+    *e_mean = fmax(*e_mean, fabs(v[j] - profile_mean(y0, y1)));
+    *e_point = fmax(*e_point, fabs(v[j] - profile(0.5 * (y0 + y1))));
+  }
+  return 0;
+}
+
+static void inflow(void) {
+  set_configs("tests/scenes");
+  double em8, ep8, em16, ep16;
+  if (steady_rows(8, &em8, &ep8) || steady_rows(16, &em16, &ep16)) return;
+  double order = log2(em8 / em16);
+  printf("steady outflow: against the cell means %.3e (8 rows), %.3e (16 rows), order %.3f; against the row's "
+         "face value %.2e, %.2e\n", em8, em16, order, ep8, ep16);
+  CHECK_MSG(order > 1.9 && order < 2.1, "order %g", order);
+  CHECK_MSG(ep8 < 1e-6 * 0.03 && ep16 < 1e-6 * 0.03, "%g %g", ep8, ep16);
+
+  /* conservation: phi(y, t) = profile(y) (1 + t), to t = 0.5 (the front is still inside) */
+  const char *sets[] = {"boundary.left.phi=(0.02 + 0.01 * sin(pi * y / 2)) * (1 + t)", "time.end=0.5",
+                        "output.every=0.5", NULL};
+  const char *out = "inflow_timed.h5";
+  if (run_ok("inflow_channel", NULL, NULL, sets, out)) return;
+  double entered = 0, h = 2.0 / 8, dt = 0.1;
+  for (int n = 1; n <= 5; ++n)
+    for (int j = 0; j < 8; ++j) entered += dt * h * 1.0 * profile(-1 + (j + 0.5) * h) * (1 + n * dt);
+  double inv = scalar(out, "solids_inventory", 0.5), inv0 = scalar(out, "solids_inventory", 0.0);
+  double xy[16], v[8];
+  for (int j = 0; j < 8; ++j) xy[2 * j] = 3.9375, xy[2 * j + 1] = -1 + (j + 0.5) * h;
+  if (phi_points(out, 0.5, 8, xy, v)) return;
+  double at_outlet = 0;
+  for (int j = 0; j < 8; ++j) at_outlet = fmax(at_outlet, v[j]);
+  printf("conservation to t = 0.5: inventory %.15g, entered %.15g, relative %.2e; phi at the outlet %g\n",
+         inv - inv0, entered, (inv - inv0 - entered) / entered, at_outlet);
+  CHECK_MSG(at_outlet == 0.0, "the front reached the outlet: phi = %g there", at_outlet);
+  CHECK_MSG(inv0 == 0.0 && fabs(inv - inv0 - entered) < 1e-12 * entered, "%.17g against %.17g", inv - inv0, entered);
+}
+
+int main(int argc, char **argv) {
+  static const struct {
+    const char *name;
+    void (*run)(void);
+  } parts[] = {{"inflow", inflow}};
+  int ran = 0;
+  for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
+    if (argc < 2 || strcmp(argv[1], parts[k].name) == 0) parts[k].run(), ++ran;
+  if (!ran) return fprintf(stderr, "unknown part '%s' (inflow)\n", argv[1]), 2;
+  return sl_test_summary();
+}
