@@ -6,6 +6,10 @@
 
 #include "core/transport/transport_impl.h"
 
+double sl_transport_boundary_flow(const sl_transport *t, int b) {
+  return b >= 0 && b < t->m->n_boundaries ? t->bstep[b] : 0.0;
+}
+
 int sl_transport_set_boundary_values(sl_transport *t, int b, const double *phi_faces, sl_diag *d) {
   const sl_mesh *m = t->m;
   if (b < 0 || b >= m->n_boundaries)

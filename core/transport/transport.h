@@ -157,6 +157,10 @@ int sl_transport_set_boundary(sl_transport *t, int b, sl_transport_bc type, doub
  * or SL_EBADINPUT (no such boundary, not open, a value out of range: the
  * face point is named) with nothing changed. */
 int sl_transport_set_boundary_values(sl_transport *t, int b, const double *phi_faces, sl_diag *d);
+/* The solids volume that entered through boundary b (negative: left) in the
+ * last successful sl_transport_step, in the units of boundary_inflow; the
+ * boundaries' values sum to its boundary_inflow. */
+double sl_transport_boundary_flow(const sl_transport *t, int b);
 
 /* Periodic pair: the faces of mesh boundaries a and b, which must match by
  * one translation s (x_b = x_a + s), become interior faces between their two

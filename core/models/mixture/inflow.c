@@ -18,6 +18,9 @@ struct sl_mixture_inflow {
   int *b;     /* [n] their mesh indices */
   int *timed; /* [n] 1: phi depends on t */
   double *v;  /* scratch: one value per face of the longest */
+  int n_open;          /* the boundaries solids pass through */
+  int *open_b;         /* [n_open] their mesh indices */
+  double *trial, *cum; /* [n_open] solids in through each: the last transport step, the accepted ones' sum */
 };
 
 /* A velocity boundary whose prescribed velocity crosses it at t = 0. */
@@ -68,7 +71,10 @@ int sl_mixture_inflow_create(const sl_scene *sc, sl_transport *tr, const unsigne
   in->b = malloc((size_t)m->n_boundaries * sizeof *in->b);
   in->timed = malloc((size_t)m->n_boundaries * sizeof *in->timed);
   in->v = malloc((size_t)(longest + 1) * sizeof *in->v);
-  if (!in->b || !in->timed || !in->v) rc = sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
+  in->open_b = malloc((size_t)m->n_boundaries * sizeof *in->open_b);
+  in->trial = calloc((size_t)m->n_boundaries + 1, sizeof *in->trial);
+  in->cum = calloc((size_t)m->n_boundaries + 1, sizeof *in->cum);
+  if (!in->b || !in->timed || !in->v || !in->open_b || !in->trial || !in->cum) rc = sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
   for (int b = 0; b < m->n_boundaries && !rc; ++b) {
     const ns_boundary *nb = sl_scene_boundary(sc, b);
     int through = (open && open[b]) ||
@@ -83,12 +89,13 @@ int sl_mixture_inflow_create(const sl_scene *sc, sl_transport *tr, const unsigne
       break;
     }
     if ((rc = sl_transport_set_boundary(tr, b, SL_TRANSPORT_OPEN, constant ? c : 0.0, d))) break;
+    in->open_b[in->n_open++] = b;
     if (constant) continue;
     in->b[in->n] = b, in->timed[in->n] = sl_expr_uses(nb->phi.e, 2);
     ++in->n;
     if (!(rc = evaluate(in, b, nb, 0.0, d))) rc = sl_transport_set_boundary_values(tr, b, in->v, d);
   }
-  if (rc || in->n == 0) {
+  if (rc || in->n_open == 0) {
     sl_mixture_inflow_destroy(in);
     return rc;
   }
@@ -107,8 +114,26 @@ int sl_mixture_inflow_update(sl_mixture_inflow *in, double t, sl_diag *d) {
   return rc;
 }
 
+void sl_mixture_inflow_stepped(sl_mixture_inflow *in) {
+  for (int k = 0; in && k < in->n_open; ++k) in->trial[k] = sl_transport_boundary_flow(in->tr, in->open_b[k]);
+}
+
+void sl_mixture_inflow_accept(sl_mixture_inflow *in) {
+  for (int k = 0; in && k < in->n_open; ++k) in->cum[k] += in->trial[k];
+}
+
+int sl_mixture_inflow_write(const sl_mixture_inflow *in, sl_output *out, int axisymmetric, sl_diag *d) {
+  int rc = 0;
+  for (int k = 0; in && k < in->n_open && !rc; ++k) {
+    char name[128];
+    snprintf(name, sizeof name, "solids_through_%s", in->sc->mesh->boundary_names[in->open_b[k]]);
+    rc = sl_output_write_scalar_unit(out, name, axisymmetric ? "m^3/rad" : "m^2", in->cum[k], d);
+  }
+  return rc;
+}
+
 void sl_mixture_inflow_destroy(sl_mixture_inflow *in) {
   if (!in) return;
-  free(in->b), free(in->timed), free(in->v);
+  free(in->b), free(in->timed), free(in->v), free(in->open_b), free(in->trial), free(in->cum);
   free(in);
 }

@@ -17,6 +17,7 @@
 #ifndef SLUICE_MODELS_MIXTURE_INFLOW_H
 #define SLUICE_MODELS_MIXTURE_INFLOW_H
 
+#include "core/io/output.h"
 #include "core/scene/scene.h"
 #include "core/transport/transport.h"
 
@@ -24,13 +25,21 @@ typedef struct sl_mixture_inflow sl_mixture_inflow;
 
 /* Sets the transport's boundaries from the scene: open[b] != 0 for the
  * flow's free boundaries (sl_flow_open). On success *out (NULL when no
- * boundary needs values along it or in time) is updated by
- * sl_mixture_inflow_update. SL_EBADINPUT: a value outside [0, phi_max],
+ * boundary lets solids through) is updated by sl_mixture_inflow_update. SL_EBADINPUT: a value outside [0, phi_max],
  * with the scene's file:line and the point. */
 int sl_mixture_inflow_create(const sl_scene *sc, sl_transport *tr, const unsigned char *open, double phi_max,
                              sl_mixture_inflow **out, sl_diag *d);
 /* The exterior states of the boundaries whose phi depends on t, at time t. */
 int sl_mixture_inflow_update(sl_mixture_inflow *in, double t, sl_diag *d);
+/* The solids through each open boundary: after a successful transport step
+ * (its trial amounts), when the step is accepted (added up), and written
+ * with an output as solids_through_NAME, the solids volume that entered
+ * through boundary NAME since the run started (negative: it left; int r dA
+ * per radian when axisymmetric), from the transport's own Godunov fluxes,
+ * so that the inventory's change is their sum. A restart counts from 0. */
+void sl_mixture_inflow_stepped(sl_mixture_inflow *in);
+void sl_mixture_inflow_accept(sl_mixture_inflow *in);
+int sl_mixture_inflow_write(const sl_mixture_inflow *in, sl_output *out, int axisymmetric, sl_diag *d);
 void sl_mixture_inflow_destroy(sl_mixture_inflow *in);
 
 #endif

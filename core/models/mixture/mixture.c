@@ -688,6 +688,7 @@ static int advance(mixture *x, double t, double dt, const double *u, const doubl
   if (rc) return sl_diag_prefix(d, SL_EFAILED, "solids transport from t = %.6g over dt = %.3g", t, dt);
   x->trial_substeps = st.n_substeps, x->trial_fallbacks = st.n_fallbacks;
   x->trial_inflow = st.boundary_inflow;
+  sl_mixture_inflow_stepped(x->inflow_bc);
   x->max_div = fmax(x->max_div, st.max_divergence);
   return x->relative_flux_stress ? stress_of(x, x->trial, d) : 0;
 }
@@ -699,6 +700,7 @@ static void accept(mixture *x) {
   memcpy(x->phi, x->trial, (size_t)x->m->n_cells * sizeof *x->phi);
   memcpy(x->q_acc, x->q, (size_t)x->m->n_faces * sizeof *x->q_acc);
   x->inflow += x->trial_inflow;
+  sl_mixture_inflow_accept(x->inflow_bc);
   x->inventory = sl_transport_mass(x->tr, x->phi);
   x->substeps += x->trial_substeps, x->fallbacks += x->trial_fallbacks, ++x->advances;
   x->max_raw_div = fmax(x->max_raw_div, x->trial_raw_div);
@@ -713,6 +715,7 @@ static int write(mixture *x, sl_output *out, sl_diag *d) {
   /* the solids volume per unit depth (planar) or per radian (axisymmetric) */
   if (!rc) rc = sl_output_write_scalar_unit(out, "solids_inventory", x->axi ? "m^3/rad" : "m^2", inv, d);
   if (!rc) rc = sl_output_write_scalar(out, "solids_conservation_error", err, d);
+  if (!rc) rc = sl_mixture_inflow_write(x->inflow_bc, out, x->axi, d);
   for (int k = 0; k < x->n_inv && !rc; ++k) {
     const unsigned char *mask = x->inv_mask + (size_t)k * x->m->n_cells;
     for (int c = 0; c < x->m->n_cells; ++c) x->inv_phi[c] = mask[c] ? x->phi[c] : 0.0;
