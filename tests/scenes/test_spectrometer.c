@@ -12,7 +12,16 @@
  *    sum over steps dt sum_f A_f u phi(y_f, t_{n+1}), to 1e-12;
  *  - parameters: a scene written with [parameters] (named constants in its
  *    values and expressions) gives bit for bit the result of the same scene
- *    written in numbers. */
+ *    written in numbers;
+ *  - spectrometer: configs/spectrometer.ini on the coarse mesh
+ *    (tests/scenes/spectrometer_coarse.msh) to t = 1, with and without 20 %
+ *    of the inner flux diverted through the slot: the inventory against the
+ *    solids through the boundaries to 1e-12, the inflow's solids against eq
+ *    4.148 plus the slip along the channel to 1 %, and the thesis's
+ *    observations (a sediment on the inclined walls, the efficiency raised
+ *    by the diversion, a retrograde swirl in the slot; the thesis found
+ *    it weaker with the diversion, this geometry finds it stronger, which
+ *    is printed, not asserted). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -157,14 +166,133 @@ static void parameters(void) {
   CHECK_MSG(rc == 2 && strstr(d.msg, "Rho") && strstr(d.msg, "Ro"), "rc %d: %s", rc, d.msg);
 }
 
+/* ---- the spectrometer on the coarse mesh ---------------------------------------------------------------------- */
+
+/* configs/spectrometer.geo's geometry: the cone's generator (sin g, -cos g), across it (cos g, sin g). */
+static const double SP_Q = 0.195, SP_G = M_PI / 4;
+#define SP_DELTA (SP_Q / (4 * M_PI))
+
+typedef struct spectro_run {
+  double eff;           /* steady share of the solids leaving through the outer outlet */
+  double eff_inventory; /* outer_down / (inner_down + outer_down) */
+  double in_rate;       /* solids per unit time (per radian) through the inner inlet */
+  double conservation;  /* |inventory - sum of solids_through| / inflow, largest over the outputs */
+  double swirl;         /* min u_theta over the slot's nodes */
+  double wall_phi;      /* largest phi in the cells touching the outer channel's outer wall */
+} spectro_run;
+
+static int spectrometer_run(const char *divert, const char *out, spectro_run *r) {
+  char mesh[4400], dv[64];
+  const char *src = getenv("SLUICE_SOURCE_DIR");
+  snprintf(mesh, sizeof mesh, "mesh.file=%s/tests/scenes/spectrometer_coarse.msh", src ? src : ".");
+  snprintf(dv, sizeof dv, "parameters.divert=%s", divert);
+  const char *sets[] = {mesh, dv, "time.end=1", NULL};
+  set_configs("configs");
+  if (run_ok("spectrometer", NULL, NULL, sets, out)) return 1;
+  sl_output_scalars sc;
+  sl_diag d = {{0}};
+  if (sl_output_read_scalars(out, &sc, &d)) {
+    CHECK_MSG(0, "%s: %s", out, d.msg);
+    return 1;
+  }
+  int k_inv = -1, k_in = -1, k_io = -1, k_oo = -1, k_oi = -1, k_id = -1, k_od = -1;
+  for (int k = 0; k < sc.n_names; ++k) {
+    const char *n = sc.names[k];
+    if (!strcmp(n, "solids_inventory")) k_inv = k;
+    if (!strcmp(n, "solids_through_inner_inlet")) k_in = k;
+    if (!strcmp(n, "solids_through_outer_inlet")) k_oi = k;
+    if (!strcmp(n, "solids_through_inner_outlet")) k_io = k;
+    if (!strcmp(n, "solids_through_outer_outlet")) k_oo = k;
+    if (!strcmp(n, "solids_inventory_inner_down")) k_id = k;
+    if (!strcmp(n, "solids_inventory_outer_down")) k_od = k;
+  }
+  int ok = k_inv >= 0 && k_in >= 0 && k_oi >= 0 && k_io >= 0 && k_oo >= 0 && k_id >= 0 && k_od >= 0 && sc.n_times >= 3;
+  CHECK_MSG(ok, "%s: the scalars are missing", out);
+  if (!ok) return sl_output_scalars_free(&sc), 1;
+#define V(i, k) sc.values[(size_t)(i) * sc.n_names + (k)]
+  int a = sc.n_times - 2, b = sc.n_times - 1;
+  double dt = sc.times[b] - sc.times[a];
+  double din = V(b, k_in) - V(a, k_in), dio = V(b, k_io) - V(a, k_io), doo = V(b, k_oo) - V(a, k_oo);
+  r->in_rate = din / dt;
+  r->eff = doo / (dio + doo);
+  r->eff_inventory = V(b, k_od) / (V(b, k_id) + V(b, k_od));
+  r->conservation = 0;
+  for (int i = 0; i < sc.n_times; ++i) {
+    double through = V(i, k_in) + V(i, k_oi) + V(i, k_io) + V(i, k_oo);
+    r->conservation = fmax(r->conservation, fabs(V(i, k_inv) - through) / V(b, k_in));
+  }
+#undef V
+  sl_output_scalars_free(&sc);
+  /* the swirl in the slot and the sediment on the outer channel's outer wall, at t = 1 */
+  sl_output_mesh m;
+  sl_output_field ut, phi;
+  if (sl_output_read_mesh(out, &m, &d) || sl_output_read_field(out, "u_theta", 1.0, &ut, &d) ||
+      sl_output_read_field(out, "phi", 1.0, &phi, &d)) {
+    CHECK_MSG(0, "%s: %s", out, d.msg);
+    return 1;
+  }
+  const double s = sin(SP_G), c = cos(SP_G), xi0 = 1 / s, w = SP_DELTA / 2;
+  r->swirl = HUGE_VAL, r->wall_phi = 0;
+  for (int v = 0; v < m.n_vertices; ++v) {
+    double x = m.coords[3 * v], y = m.coords[3 * v + 1], xi = x * s - y * c, n = x * c + y * s;
+    if (n > SP_DELTA - 1e-9 && n < SP_DELTA + w + 1e-9 && xi > xi0 + 11 * SP_DELTA - 1e-9 &&
+        xi < xi0 + 13 * SP_DELTA + 1e-9)
+      r->swirl = fmin(r->swirl, ut.values[v]);
+  }
+  for (int e = 0; e < m.n_cells; ++e) {
+    int on_wall = 0;
+    for (int j = 0; j < m.nodes_per_cell; ++j) {
+      int v = m.cells[(size_t)e * m.nodes_per_cell + j];
+      on_wall |= fabs(m.coords[3 * v] * c + m.coords[3 * v + 1] * s - (3.5 * SP_DELTA)) < 1e-9;
+    }
+    if (on_wall) r->wall_phi = fmax(r->wall_phi, phi.values[e]);
+  }
+  sl_output_mesh_free(&m), sl_output_field_free(&ut), sl_output_field_free(&phi);
+  return 0;
+}
+
+/* Greenspan's spectrometer on the coarse mesh to t = 1 (steady from about t = 0.7): the solids balance of the
+ * boundaries to round-off, the inflow's solids flux against (4.148) with the particles' slip along the channel,
+ * and the thesis's observations: a sediment on the inclined walls, the efficiency raised by diverting 20 % of the
+ * inner flux through the slot, a retrograde swirl in the slot (its change with the diversion is printed). */
+static void spectrometer(void) {
+  spectro_run b, v;
+  if (spectrometer_run("0", "spectrometer_base.h5", &b) || spectrometer_run("0.2", "spectrometer_divert.h5", &v))
+    return;
+  /* the inflow's solids: alpha_in (int U over zeta < h) K delta = alpha0 Q / (2 pi) by eq 4.148, plus the slip
+   * along the channel, u_t r sin(g) F(alpha_in) over the inlet's part zeta < h, r = 1 + delta zeta cos(g) */
+  const double alpha_in = 0.038411435, ut = 0.27, s = sin(SP_G), c = cos(SP_G), h = -1.0 / 3;
+  double f = pow(1 - alpha_in, 2) * pow(1 - alpha_in / 0.68, 2.5 * 0.68);
+  double r2 = 0; /* int_{-1}^{h} r^2 delta dzeta */
+  for (int i = 0; i < 2000; ++i) {
+    double z = -1 + (h + 1) * (i + 0.5) / 2000, r = 1 + SP_DELTA * z * c;
+    r2 += r * r * SP_DELTA * (h + 1) / 2000;
+  }
+  double expect = 0.01 * SP_Q / (2 * M_PI) + ut * s * alpha_in * f * r2;
+  printf("spectrometer (coarse, t = 1): solids in %.5e per unit time (4.148 with the slip: %.5e, %.2f %%); balance "
+         "of the boundaries %.1e\n", b.in_rate, expect, 100 * (b.in_rate / expect - 1), b.conservation);
+  printf("  efficiency (outlet fluxes) %.1f %% -> %.1f %% diverted (thesis 75-80 -> 90-95); from the inventories "
+         "downstream of the slot %.1f %% -> %.1f %%\n", 100 * b.eff, 100 * v.eff, 100 * b.eff_inventory,
+         100 * v.eff_inventory);
+  printf("  most retrograde u_theta in the slot %.3f -> %.3f diverted (thesis -1.16 -> -1.06); largest phi on the "
+         "outer channel's outer wall %.3f (inflow %.4f)\n", b.swirl, v.swirl, b.wall_phi, alpha_in);
+  CHECK_MSG(b.conservation < 1e-12 && v.conservation < 1e-12, "%g %g", b.conservation, v.conservation);
+  CHECK_MSG(fabs(b.in_rate / expect - 1) < 0.01, "%g against %g", b.in_rate, expect);
+  CHECK_MSG(b.wall_phi > 1.5 * alpha_in, "no sediment: %g", b.wall_phi);
+  CHECK_MSG(v.eff > b.eff, "diverting does not raise the efficiency: %g -> %g", b.eff, v.eff);
+  /* retrograde in both; the thesis found it weaker with the diversion (-1.16 -> -1.06), this geometry stronger
+   * (docs/rotating.md): the direction is reported, not asserted */
+  CHECK_MSG(b.swirl < -0.1 && v.swirl < -0.1, "swirl %g -> %g", b.swirl, v.swirl);
+}
+
 int main(int argc, char **argv) {
   static const struct {
     const char *name;
     void (*run)(void);
-  } parts[] = {{"inflow", inflow}, {"parameters", parameters}};
+  } parts[] = {{"inflow", inflow}, {"parameters", parameters}, {"spectrometer", spectrometer}};
   int ran = 0;
   for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
     if (argc < 2 || strcmp(argv[1], parts[k].name) == 0) parts[k].run(), ++ran;
-  if (!ran) return fprintf(stderr, "unknown part '%s' (inflow, parameters)\n", argv[1]), 2;
+  if (!ran) return fprintf(stderr, "unknown part '%s' (inflow, parameters, spectrometer)\n", argv[1]), 2;
   return sl_test_summary();
 }
