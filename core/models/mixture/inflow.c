@@ -3,7 +3,6 @@
  * (inflow.h). */
 #include "core/models/mixture/inflow.h"
 
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -22,24 +21,6 @@ struct sl_mixture_inflow {
   int *open_b;         /* [n_open] their mesh indices */
   double *trial, *cum; /* [n_open] solids in through each: the last transport step, the accepted ones' sum */
 };
-
-/* A velocity boundary whose prescribed velocity crosses it at t = 0. */
-static int crossed(const sl_scene *sc, const ns_boundary *nb, int b) {
-  const sl_mesh *m = sc->mesh;
-  if (nb->velocity.n < 2) return 0;
-  double scale = 0, most = 0;
-  for (int i = m->bface_start[b]; i < m->bface_start[b + 1]; ++i) {
-    int f = m->bface[i];
-    double c[2], n[2];
-    sl_mesh_face_centroid(m, f, c);
-    sl_mesh_face_normal(m, f, n);
-    double at[3] = {c[0], c[1], 0.0};
-    double u = sl_expr_eval(nb->velocity.e[0], at), v = sl_expr_eval(nb->velocity.e[1], at);
-    scale = fmax(scale, hypot(u, v));
-    most = fmax(most, fabs(u * n[0] + v * n[1]));
-  }
-  return most > 1e-12 * scale && most > 0;
-}
 
 /* The values of boundary b's phi at its face points at time t into in->v. */
 static int evaluate(sl_mixture_inflow *in, int b, const ns_boundary *nb, double t, sl_diag *d) {
@@ -77,8 +58,7 @@ int sl_mixture_inflow_create(const sl_scene *sc, sl_transport *tr, const unsigne
   if (!in->b || !in->timed || !in->v || !in->open_b || !in->trial || !in->cum) rc = sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
   for (int b = 0; b < m->n_boundaries && !rc; ++b) {
     const ns_boundary *nb = sl_scene_boundary(sc, b);
-    int through = (open && open[b]) ||
-                  (nb->type == NS_VELOCITY && (nb->phi.e || crossed(sc, nb, b)));
+    int through = (open && open[b]) || (nb->type == NS_VELOCITY && nb->phi.e);
     if (!through) continue;
     double c = 0.0;
     int constant = !nb->phi.e || sl_expr_is_constant(nb->phi.e, &c);

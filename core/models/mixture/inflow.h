@@ -7,10 +7,11 @@
  * t is evaluated again at the end of every step.
  *
  * Which boundaries let solids through: those where the flow's velocity is
- * free (open, pressure, traction), and velocity boundaries that give phi or
- * whose prescribed velocity crosses them (a nonzero normal component at a
- * face point at t = 0). Velocity boundaries with a tangential velocity
- * only (moving walls) stay walls for the solids. On an open boundary the
+ * free (open, pressure, traction), and velocity boundaries that give phi
+ * (an inlet or an outlet with a prescribed velocity: phi = 0 for an outlet,
+ * where it is not used). Other velocity boundaries are walls for the
+ * solids, whatever their velocity (a moving wall; a rigid lid carrying a
+ * wave's orbital velocity, configs/wave_bed.ini). On an open boundary the
  * solids flux is the Godunov flux of q phi + w F(phi) between the boundary
  * cell and the exterior state: the exterior state enters where the flow
  * comes in, the cell's own leaves where it goes out. */

@@ -846,7 +846,7 @@ static const sl_key extra_keys[] = {
      .when_type = (1u << NS_OPEN) | (1u << NS_PRESSURE) | (1u << NS_TRACTION) | (1u << NS_VELOCITY),
      .def_doc = "0",
      .help = "the solids fraction of what flows in, an expression of x, y, t along the boundary (in [0, phi_max]); "
-             "a velocity boundary the flow crosses lets solids through"},
+             "a velocity boundary lets solids through only when it gives phi"},
 };
 TABLE(mixture_extra_keys, extra_keys);
 
