@@ -6,8 +6,10 @@
 
 per output time: the solids inventories downstream of the slot (inner_down,
 outer_down) and the efficiency outer_down/(inner_down + outer_down); the
-solids flux through each outlet, sum over its boundary cells of phi u.n r ds
-(per radian) and its share; the most retrograde swirl u_theta in the slot
+solids leaving through each outlet per unit time since the previous output
+(from solids_through_*, the transport's own fluxes, per radian) and the
+outer outlet's share; the share passing the slot, 1 - (inner outlet + the
+inner channel's inventory growth)/inflow; the most retrograde swirl u_theta in the slot
 (its nodes); the largest phi in the cells on the inclined walls (the
 sediment); and at the last time the velocity across the inner channel half
 way to the slot against the rotating-channel profile of the inflow."""
@@ -47,11 +49,11 @@ def report(path):
         "outer channel, outer wall (below the slot)": down & (n_c > 3 * DELTA + W - wall_band),
         "outer channel, outer wall (above the slot's end)": (xi_c < XB) & (n_c > 3 * DELTA + W - wall_band),
     }
-    # outlet cells: those with a node on xi = XE
-    last = (np.abs(xi_n[cells] - XE) < 1e-9).any(axis=1)
     steps = sorted(k for k in f if k.startswith("step_"))
+    prev = None
     print(f"{path}:")
-    print("   t      inner_down   outer_down   eff(inv)  outlet flux in  out   eff(flux)  min u_theta slot  max phi walls")
+    print("   t      inner_down   outer_down   eff(inv)   solids out/time: inner  outer  eff(flux)  in        passing"
+          "  min u_theta slot  max phi walls")
     for k in steps:
         g = f[k]
         a = g.attrs
@@ -60,26 +62,20 @@ def report(path):
         t = a["time"]
         i_d, o_d = a["solids_inventory_inner_down"], a["solids_inventory_outer_down"]
         eff = o_d / (i_d + o_d) if i_d + o_d > 0 else float("nan")
-        u = g["velocity"][:]
         phi = g["phi"][:].ravel()
-        # the solids flux through each outlet: phi of the cell times the velocity at its centre (mean of its
-        # nodes) along xi, times r and the cell's width across
-        uc = u[cells].mean(axis=1)
-        uxi = uc[:, 0] * S - uc[:, 1] * C
-        fl_in = fl_out = 0.0
-        for c in np.nonzero(last)[0]:
-            nn = n_n[cells[c]]
-            width = nn.max() - nn.min()
-            v = phi[c] * uxi[c] * cc[c, 0] * width
-            if n_c[c] < DELTA:
-                fl_in += v
-            else:
-                fl_out += v
+        # the solids leaving through each outlet since the last output (the transport's own fluxes)
+        inner = a["solids_inventory_inner_up"] + a["solids_inventory_inner_slot"] + a["solids_inventory_inner_down"]
+        cum = (-a["solids_through_inner_outlet"], -a["solids_through_outer_outlet"], a["solids_through_inner_inlet"],
+               inner)
+        dt = t - prev[0] if prev else 0
+        fl_in, fl_out, fl_src, grow = ((cum[i] - prev[1][i]) / dt for i in range(4)) if dt > 0 else (0.0,) * 4
+        prev = (t, cum)
         efl = fl_out / (fl_in + fl_out) if fl_in + fl_out > 0 else float("nan")
+        passing = 1 - (fl_in + grow) / fl_src if fl_src > 0 else float("nan")
         ut = g["u_theta"][:].ravel()
         sw = ut[slot_nodes].min()
         mw = [phi[m].max() if m.any() else 0 for m in walls.values()]
-        print(f"  {t:5.2f}  {i_d:.4e}  {o_d:.4e}  {100*eff:6.1f} %  {fl_in:.3e} {fl_out:.3e}  {100*efl:6.1f} %"
+        print(f"  {t:5.2f}  {i_d:.4e}  {o_d:.4e}  {100*eff:6.1f} %  {fl_in:.3e} {fl_out:.3e}  {100*efl:6.1f} % {fl_src:.3e} {100*passing:6.1f} %"
               f"  {sw:8.3f}   " + "  ".join(f"{m:.3f}" for m in mw))
     print("  walls:", "; ".join(walls.keys()))
     # the velocity profile half way to the slot against the inflow's

@@ -173,7 +173,8 @@ static const double SP_Q = 0.195, SP_G = M_PI / 4;
 #define SP_DELTA (SP_Q / (4 * M_PI))
 
 typedef struct spectro_run {
-  double eff;           /* steady share of the solids leaving through the outer outlet */
+  double eff;           /* share of the inflow's solids passing the slot: 1 - (inner outlet + inner inventory's
+                           growth) / inflow, over the last output interval */
   double eff_inventory; /* outer_down / (inner_down + outer_down) */
   double in_rate;       /* solids per unit time (per radian) through the inner inlet */
   double conservation;  /* |inventory - sum of solids_through| / inflow, largest over the outputs */
@@ -195,7 +196,7 @@ static int spectrometer_run(const char *divert, const char *out, spectro_run *r)
     CHECK_MSG(0, "%s: %s", out, d.msg);
     return 1;
   }
-  int k_inv = -1, k_in = -1, k_io = -1, k_oo = -1, k_oi = -1, k_id = -1, k_od = -1;
+  int k_inv = -1, k_in = -1, k_io = -1, k_oo = -1, k_oi = -1, k_id = -1, k_od = -1, k_iu = -1, k_is = -1;
   for (int k = 0; k < sc.n_names; ++k) {
     const char *n = sc.names[k];
     if (!strcmp(n, "solids_inventory")) k_inv = k;
@@ -205,16 +206,20 @@ static int spectrometer_run(const char *divert, const char *out, spectro_run *r)
     if (!strcmp(n, "solids_through_outer_outlet")) k_oo = k;
     if (!strcmp(n, "solids_inventory_inner_down")) k_id = k;
     if (!strcmp(n, "solids_inventory_outer_down")) k_od = k;
+    if (!strcmp(n, "solids_inventory_inner_up")) k_iu = k;
+    if (!strcmp(n, "solids_inventory_inner_slot")) k_is = k;
   }
-  int ok = k_inv >= 0 && k_in >= 0 && k_oi >= 0 && k_io >= 0 && k_oo >= 0 && k_id >= 0 && k_od >= 0 && sc.n_times >= 3;
+  int ok = k_inv >= 0 && k_in >= 0 && k_oi >= 0 && k_io >= 0 && k_oo >= 0 && k_id >= 0 && k_od >= 0 && k_iu >= 0 &&
+           k_is >= 0 && sc.n_times >= 3;
   CHECK_MSG(ok, "%s: the scalars are missing", out);
   if (!ok) return sl_output_scalars_free(&sc), 1;
 #define V(i, k) sc.values[(size_t)(i) * sc.n_names + (k)]
   int a = sc.n_times - 2, b = sc.n_times - 1;
   double dt = sc.times[b] - sc.times[a];
-  double din = V(b, k_in) - V(a, k_in), dio = V(b, k_io) - V(a, k_io), doo = V(b, k_oo) - V(a, k_oo);
+  double din = V(b, k_in) - V(a, k_in), dio = V(b, k_io) - V(a, k_io);
+  double dinner = V(b, k_iu) + V(b, k_is) + V(b, k_id) - V(a, k_iu) - V(a, k_is) - V(a, k_id);
   r->in_rate = din / dt;
-  r->eff = doo / (dio + doo);
+  r->eff = 1 - (-dio + dinner) / din;
   r->eff_inventory = V(b, k_od) / (V(b, k_id) + V(b, k_od));
   r->conservation = 0;
   for (int i = 0; i < sc.n_times; ++i) {
@@ -271,7 +276,7 @@ static void spectrometer(void) {
   double expect = 0.01 * SP_Q / (2 * M_PI) + ut * s * alpha_in * f * r2;
   printf("spectrometer (coarse, t = 1): solids in %.5e per unit time (4.148 with the slip: %.5e, %.2f %%); balance "
          "of the boundaries %.1e\n", b.in_rate, expect, 100 * (b.in_rate / expect - 1), b.conservation);
-  printf("  efficiency (outlet fluxes) %.1f %% -> %.1f %% diverted (thesis 75-80 -> 90-95); from the inventories "
+  printf("  efficiency (passing the slot) %.1f %% -> %.1f %% diverted (thesis 75-80 -> 90-95); from the inventories "
          "downstream of the slot %.1f %% -> %.1f %%\n", 100 * b.eff, 100 * v.eff, 100 * b.eff_inventory,
          100 * v.eff_inventory);
   printf("  most retrograde u_theta in the slot %.3f -> %.3f diverted (thesis -1.16 -> -1.06); largest phi on the "
