@@ -356,8 +356,10 @@ static int for_each_batch(const sl_th_space *th, const double *u, const sl_flow_
   flow_work *w = NULL;
   if ((rc = work_create(&w, th, o, d))) return rc;
   w->load_only = load_only;
-  int ncell = th->mesh->n_cells;
-  for (int first = 0; first < ncell && !rc; first += SL_ASSEMBLY_BATCH_CELLS) {
+  /* a system assembled on several ranks: this rank's cells only (their closures alone are called here) */
+  int32_t c0 = 0, ncell = th->mesh->n_cells;
+  if (s) sl_system_elements(s, &c0, &ncell);
+  for (int first = c0; first < ncell && !rc; first += SL_ASSEMBLY_BATCH_CELLS) {
     int n = ncell - first < SL_ASSEMBLY_BATCH_CELLS ? ncell - first : SL_ASSEMBLY_BATCH_CELLS;
     if (!(rc = batch_pass(w, th, u, o, first, n, d))) rc = fn(w, th, o, first, n, user, d);
   }
