@@ -112,6 +112,18 @@ int sl_mixture_inflow_write(const sl_mixture_inflow *in, sl_output *out, int axi
   return rc;
 }
 
+int sl_mixture_inflow_checkpoint(sl_mixture_inflow *in, sl_checkpoint_array *a, int max) {
+  if (!in || max < 1) return 0;
+  snprintf(a->name, sizeof a->name, "solids_through");
+  a->n = in->n_open, a->data = in->cum;
+  return 1;
+}
+
+void sl_mixture_inflow_restore(sl_mixture_inflow *in, const sl_checkpoint_array *a) {
+  if (!in) return;
+  for (int k = 0; k < in->n_open; ++k) in->cum[k] = a && a->n == in->n_open ? a->data[k] : 0.0;
+}
+
 void sl_mixture_inflow_destroy(sl_mixture_inflow *in) {
   if (!in) return;
   free(in->b), free(in->timed), free(in->v), free(in->open_b), free(in->trial), free(in->cum);

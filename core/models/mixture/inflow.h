@@ -37,10 +37,14 @@ int sl_mixture_inflow_update(sl_mixture_inflow *in, double t, sl_diag *d);
  * with an output as solids_through_NAME, the solids volume that entered
  * through boundary NAME since the run started (negative: it left; int r dA
  * per radian when axisymmetric), from the transport's own Godunov fluxes,
- * so that the inventory's change is their sum. A restart counts from 0. */
+ * so that the inventory's change is their sum; checkpointed. */
 void sl_mixture_inflow_stepped(sl_mixture_inflow *in);
 void sl_mixture_inflow_accept(sl_mixture_inflow *in);
 int sl_mixture_inflow_write(const sl_mixture_inflow *in, sl_output *out, int axisymmetric, sl_diag *d);
+/* The sums as a checkpoint array "solids_through" into a[0] (max > 0; returns 1, or 0 when none), and back
+ * from it (NULL or of another size: a checkpoint without it, counted from 0). */
+int sl_mixture_inflow_checkpoint(sl_mixture_inflow *in, sl_checkpoint_array *a, int max);
+void sl_mixture_inflow_restore(sl_mixture_inflow *in, const sl_checkpoint_array *a);
 void sl_mixture_inflow_destroy(sl_mixture_inflow *in);
 
 #endif

@@ -739,11 +739,12 @@ static int checkpoint(mixture *x, sl_checkpoint_array *a, int max) {
   x->book[0] = x->inventory0, x->book[1] = x->inflow;
   snprintf(a[1].name, sizeof a[1].name, "solids_book");
   a[1].n = 2, a[1].data = x->book;
-  if (!x->relative_flux_stress || max < 3) return 2;
+  int n = 2 + sl_mixture_inflow_checkpoint(x->inflow_bc, a + 2, max - 2);
+  if (!x->relative_flux_stress || max < n + 1) return n;
   /* it holds the slip direction of the last step, which phi alone does not give */
-  snprintf(a[2].name, sizeof a[2].name, "relative_flux_stress");
-  a[2].n = 6 * (int64_t)x->th->pres->n_dofs, a[2].data = x->node_stress;
-  return 3;
+  snprintf(a[n].name, sizeof a[n].name, "relative_flux_stress");
+  a[n].n = 6 * (int64_t)x->th->pres->n_dofs, a[n].data = x->node_stress;
+  return n + 1;
 }
 
 static int restore(mixture *x, const sl_checkpoint *ck, sl_diag *d) {
@@ -752,6 +753,7 @@ static int restore(mixture *x, const sl_checkpoint *ck, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "restart: the checkpoint holds no solids fraction of %d cells", x->m->n_cells);
   memcpy(x->phi, p->data, (size_t)p->n * sizeof *x->phi);
   x->inventory0 = b->data[0], x->inflow = b->data[1];
+  sl_mixture_inflow_restore(x->inflow_bc, sl_checkpoint_find(ck, "solids_through"));
   x->inventory = sl_transport_mass(x->tr, x->phi);
   hydrostatic_update(x);
   if (!x->relative_flux_stress) return 0;
