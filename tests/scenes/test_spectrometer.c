@@ -114,6 +114,12 @@ static void inflow(void) {
          inv - inv0, entered, (inv - inv0 - entered) / entered, at_outlet);
   CHECK_MSG(at_outlet == 0.0, "the front reached the outlet: phi = %g there", at_outlet);
   CHECK_MSG(inv0 == 0.0 && fabs(inv - inv0 - entered) < 1e-12 * entered, "%.17g against %.17g", inv - inv0, entered);
+
+  /* bad input: a profile leaving [0, phi_max] somewhere along the boundary is named with the point */
+  const char *bad[] = {"boundary.left.phi=0.5 + y", NULL};
+  sl_diag d = {{0}};
+  int rc = run_scene("inflow_channel", NULL, NULL, bad, "inflow_bad.h5", &d);
+  CHECK_MSG(rc == 2 && strstr(d.msg, "[boundary.left] phi") && strstr(d.msg, "phi_max"), "rc %d: %s", rc, d.msg);
 }
 
 
