@@ -48,6 +48,7 @@
 #include <sys/types.h>
 #include <unistd.h>
 
+#include "bench_csv.h"
 #include "centreline_profile.h"
 #include "core/study/child.h"
 #include "core/study/chart.h"
@@ -108,30 +109,6 @@ static int run_freefem(const char *script, const char *points, const centreline_
   return 0;
 }
 
-/* The column of `name` in a CSV header line, or -1. */
-static int column(const char *header, const char *name) {
-  int k = 0;
-  size_t len = strlen(name);
-  for (const char *s = header; *s; ++k) {
-    const char *e = strpbrk(s, ",\n");
-    size_t w = e ? (size_t)(e - s) : strlen(s);
-    if (w == len && strncmp(s, name, len) == 0) return k;
-    if (!e || *e == '\n') break;
-    s = e + 1;
-  }
-  return -1;
-}
-
-/* Field k of a CSV line (no quoting: bench CSVs have none) into buf. */
-static void field(const char *line, int k, char *buf, size_t cap) {
-  const char *s = line;
-  for (int i = 0; i < k && s; ++i) s = strchr(s, ','), s = s ? s + 1 : NULL;
-  buf[0] = '\0';
-  if (!s) return;
-  size_t w = strcspn(s, ",\n");
-  snprintf(buf, cap, "%.*s", (int)(w < cap ? w : cap - 1), s);
-}
-
 /* The steady runs of bench_cavity_work_precision's CSV (made with
  * --profile-ref); its "# machine:" line into machine, and the number of
  * profile points of its "# profile reference:" line into *n_prof. */
@@ -158,7 +135,7 @@ static int read_sluice(const char *path, point *pts, int max, char *machine, siz
     if (!header[0]) {
       snprintf(header, sizeof header, "%s", line);
       int bad = 0;
-      for (int k = 0; k < NC; ++k) bad |= (c[k] = column(header, names[k])) < 0;
+      for (int k = 0; k < NC; ++k) bad |= (c[k] = bench_csv_column(header, names[k])) < 0;
       if (bad) {
         fclose(f);
         return fprintf(stderr, "%s: not a bench_cavity_work_precision CSV with profile errors\n", path), -1;
@@ -176,14 +153,14 @@ static int read_sluice(const char *path, point *pts, int max, char *machine, siz
       return fprintf(stderr, "%s: a line longer than %zu characters\n", path, sizeof p->raw - 1), -1;
     }
     memcpy(p->raw, line, len + 1);
-    field(line, c[0], p->solver, sizeof p->solver);
-    field(line, c[1], buf, sizeof buf), p->n = atoi(buf);
-    field(line, c[2], buf, sizeof buf), p->unknowns = atol(buf);
-    field(line, c[3], buf, sizeof buf), p->umin = buf[0] ? strtod(buf, NULL) : NAN;
-    field(line, c[4], buf, sizeof buf), p->cpu = strtod(buf, NULL);
-    field(line, c[5], buf, sizeof buf), p->mb = strtod(buf, NULL);
-    field(line, c[6], buf, sizeof buf), p->err_max = buf[0] ? strtod(buf, NULL) : NAN;
-    field(line, c[7], buf, sizeof buf), p->err_l2 = buf[0] ? strtod(buf, NULL) : NAN;
+    bench_csv_field(line, c[0], p->solver, sizeof p->solver);
+    bench_csv_field(line, c[1], buf, sizeof buf), p->n = atoi(buf);
+    bench_csv_field(line, c[2], buf, sizeof buf), p->unknowns = atol(buf);
+    bench_csv_field(line, c[3], buf, sizeof buf), p->umin = buf[0] ? strtod(buf, NULL) : NAN;
+    bench_csv_field(line, c[4], buf, sizeof buf), p->cpu = strtod(buf, NULL);
+    bench_csv_field(line, c[5], buf, sizeof buf), p->mb = strtod(buf, NULL);
+    bench_csv_field(line, c[6], buf, sizeof buf), p->err_max = buf[0] ? strtod(buf, NULL) : NAN;
+    bench_csv_field(line, c[7], buf, sizeof buf), p->err_l2 = buf[0] ? strtod(buf, NULL) : NAN;
     /* a failed run has no time; a run without a reference profile no profile error */
     if (p->n > 0 && isfinite(p->umin) && p->cpu > 0 && isfinite(p->err_max) && isfinite(p->err_l2)) ++n;
   }

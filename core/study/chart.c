@@ -603,7 +603,10 @@ static void draw_series(canvas *cv, const panel *p) {
       if (!point_ok(c, s->x[i], s->y[i])) continue;
       double x = px(p, s->x[i]), y = py(p, s->y[i]);
       if ((i - s->marker_offset) % every == 0) cv_marker(cv, x, y, series_marker(s, k), 3.8, col);
-      if (s->labels && s->labels[i]) cv_text(cv, x + 6, y + 4 + SMALL, s->labels[i], SMALL, START, 0, INK, 0, "point");
+      if (s->labels && s->labels[i]) { /* right of the point, or left of it where it would leave the frame */
+        int left = x + 6 + text_width(s->labels[i], SMALL) > p->x1;
+        cv_text(cv, left ? x - 6 : x + 6, y + 4 + SMALL, s->labels[i], SMALL, left ? END : START, 0, INK, 0, "point");
+      }
     }
   }
   for (int k = 0; k < c->n_series; ++k) {
