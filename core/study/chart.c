@@ -609,6 +609,9 @@ static void draw_series(canvas *cv, const panel *p) {
       }
     }
   }
+  enum { MAX_PLACED = 16 };
+  double placed[MAX_PLACED][3]; /* the slope labels drawn: centre, baseline, half width */
+  int n_placed = 0;
   for (int k = 0; k < c->n_series; ++k) {
     const triangle *t = &p->tri[k];
     if (!t->on) continue;
@@ -625,7 +628,14 @@ static void draw_series(canvas *cv, const panel *p) {
     if (cv->f) fputs("<g class=\"slope-triangle\">\n", cv->f);
     cv_polyline(cv, 4, lx, ly, 1.2, col, 0);
     double bottom = fmax(Y[0], Y[1]);
-    cv_text(cv, 0.5 * (X[0] + X[1]), bottom + 4 + SMALL, t->label, SMALL + 1, MIDDLE, 0, col, 0, "slope");
+    double half = 0.5 * text_width(t->label, SMALL + 1), at = 0.5 * (X[0] + X[1]); /* inside the frame */
+    at = fmax(p->x0 + half + 2, fmin(at, p->x1 - half - 2));
+    double base = bottom + 4 + SMALL;
+    for (int j = 0; j < n_placed; ++j) /* below a label already there */
+      if (fabs(placed[j][0] - at) < placed[j][2] + half && fabs(placed[j][1] - base) < SMALL + 2)
+        base = placed[j][1] + SMALL + 3, j = -1;
+    if (n_placed < MAX_PLACED) placed[n_placed][0] = at, placed[n_placed][1] = base, placed[n_placed++][2] = half;
+    cv_text(cv, at, base, t->label, SMALL + 1, MIDDLE, 0, col, 0, "slope");
     if (cv->f) fputs("</g>\n", cv->f);
   }
 }
