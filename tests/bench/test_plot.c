@@ -132,6 +132,37 @@ static void svg_slope(void) {
   CHECK_MSG(ylo < 1.0 / 32, "the axis (from %g) leaves room for the triangle", ylo);
 }
 
+/* Text kept inside the frame: the label of a point at the right end of the
+ * x axis is set to its left (anchored at its end), the others to the right;
+ * the slope labels of two curves whose triangles nearly coincide, y = x^-2.5
+ * and y = 0.95 x^-2.4 over 1..4 (orders 2.50 and 2.40: least squares of
+ * exact powers), are stacked a line apart, not drawn over each other. */
+static void svg_text_in_frame(void) {
+  const double x[3] = {1, 2, 4}, ya[3] = {1, pow(2, -2.5), pow(4, -2.5)};
+  const double yb[3] = {0.95, 0.95 * pow(2, -2.4), 0.95 * pow(4, -2.4)};
+  const char *const lab[3] = {"n=1", "n=2", "n=4"};
+  sl_chart_series s[2] = {{.name = "a", .n = 3, .x = x, .y = ya, .labels = lab, .slope_points = 3,
+                           .slope_format = "order %.2f", .slope_negate = 1},
+                          {.name = "b", .n = 3, .x = x, .y = yb, .slope_points = 3, .slope_format = "order %.2f",
+                           .slope_negate = 1}};
+  sl_chart c = {.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .n_series = 2, .series = s, .legend = SL_LEGEND_NONE};
+  sl_diag d = {{0}};
+  CHECK(sl_chart_write_svg("plot_frame.svg", &c, 480, 360, &d) == 0);
+  char a1[32], a3[32], t1[32], t2[32];
+  xpath("plot_frame.svg", "string((//*[@class='point'])[1]/@text-anchor)", a1, sizeof a1);
+  xpath("plot_frame.svg", "string((//*[@class='point'])[3]/@text-anchor)", a3, sizeof a3);
+  CHECK_MSG(!strcmp(a1, "start") && !strcmp(a3, "end"), "point labels anchored %s .. %s", a1, a3);
+  xpath("plot_frame.svg", "string((//*[@class='slope'])[1])", t1, sizeof t1);
+  xpath("plot_frame.svg", "string((//*[@class='slope'])[2])", t2, sizeof t2);
+  CHECK_MSG(!strcmp(t1, "order 2.50") && !strcmp(t2, "order 2.40"), "slope labels %s, %s", t1, t2);
+  double y1 = xpath_number("plot_frame.svg", "string((//*[@class='slope'])[1]/@y)");
+  double y2 = xpath_number("plot_frame.svg", "string((//*[@class='slope'])[2]/@y)");
+  double x1 = xpath_number("plot_frame.svg", "string((//*[@class='slope'])[1]/@x)");
+  double x2 = xpath_number("plot_frame.svg", "string((//*[@class='slope'])[2]/@x)");
+  CHECK_MSG(fabs(y1 - y2) >= 12.0 || fabs(x1 - x2) >= 60.0, "slope labels at (%g, %g) and (%g, %g) overlap", x1, y1,
+            x2, y2);
+}
+
 /* Labels in words: a vector component with its unit, numbers as powers. */
 static void labels(void) {
   char buf[256];
@@ -214,6 +245,7 @@ int main(void) {
   svg_powers();
   svg_linear();
   svg_slope();
+  svg_text_in_frame();
   png();
   return sl_test_summary();
 }
