@@ -163,6 +163,45 @@ static void svg_text_in_frame(void) {
             x2, y2);
 }
 
+/* A heat map: the colour scale at its stops and half-way between two (linear
+ * in each channel, rounded), the axes on the cells' edges exactly, the colour
+ * bar over lo..hi, and a cell's middle pixel in the raster its value's colour. */
+static void svg_heatmap(void) {
+  CHECK(sl_chart_heat_colour(0.0) == 0xFFFFFF && sl_chart_heat_colour(-1.0) == 0xFFFFFF);
+  CHECK(sl_chart_heat_colour(0.25) == 0xFFE678 && sl_chart_heat_colour(0.5) == 0xFA9628);
+  CHECK(sl_chart_heat_colour(1.0) == 0x6E0014 && sl_chart_heat_colour(2.0) == 0x6E0014);
+  CHECK_MSG(sl_chart_heat_colour(0.125) == 0xFFF3BC, "%06X", (unsigned)sl_chart_heat_colour(0.125)); /* (255, 242.5, 187.5) */
+  const double xe[3] = {0, 1, 2}, ye[3] = {0, 0.5, 1}, v[4] = {0, 5, 7.5, 10}; /* row j = 0, then j = 1 */
+  sl_chart_heatmap hm = {.nx = 2, .ny = 2, .x_edges = xe, .y_edges = ye, .values = v, .lo = 0, .hi = 10,
+                         .label = "value"};
+  sl_chart c = {.xlabel = "x (m)", .ylabel = "y (m)", .legend = SL_LEGEND_NONE, .heatmap = &hm};
+  sl_diag d = {{0}};
+  CHECK(sl_chart_write_svg("plot_heat.svg", &c, 400, 300, &d) == 0);
+  const char *f = "plot_heat.svg";
+  CHECK(xpath_number(f, "string((//*[@data-axis='x'])[1]/@data-lo)") == 0.0);
+  CHECK(xpath_number(f, "string((//*[@data-axis='x'])[1]/@data-hi)") == 2.0);
+  CHECK(xpath_number(f, "string((//*[@data-axis='y'])[1]/@data-hi)") == 1.0);
+  CHECK(xpath_number(f, "string(//*[@class='colourbar']/@data-lo)") == 0.0);
+  CHECK(xpath_number(f, "string(//*[@class='colourbar']/@data-hi)") == 10.0);
+  /* the cells follow the clip path's rect: cell (1, 1), value 10, is the fifth */
+  double x = xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@x)");
+  double y = xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@y)");
+  double w = xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@width)");
+  double h = xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@height)");
+  char fill[16];
+  xpath(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@fill)", fill, sizeof fill);
+  CHECK_MSG(!strcmp(fill, "#6E0014"), "cell (1, 1) filled %s", fill);
+  sl_image im = {0};
+  CHECK(sl_chart_draw(&c, 400, 300, &im, &d) == 0);
+  if (im.rgb && isfinite(x + y + w + h)) {
+    int X = (int)floor(x + 0.5 * w), Y = (int)floor(y + 0.5 * h);
+    const unsigned char *q = im.rgb + 3 * ((size_t)Y * (size_t)im.w + (size_t)X);
+    uint32_t col = (uint32_t)q[0] << 16 | (uint32_t)q[1] << 8 | q[2];
+    CHECK_MSG(col == 0x6E0014, "pixel (%d, %d) is %06X", X, Y, (unsigned)col);
+  }
+  sl_image_free(&im);
+}
+
 /* Labels in words: a vector component with its unit, numbers as powers. */
 static void labels(void) {
   char buf[256];
@@ -246,6 +285,7 @@ int main(void) {
   svg_linear();
   svg_slope();
   svg_text_in_frame();
+  svg_heatmap();
   png();
   return sl_test_summary();
 }
