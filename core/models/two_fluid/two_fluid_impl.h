@@ -27,7 +27,8 @@ typedef struct tf_lq_config {
 typedef struct tf_config {
   long iterations, order, case_index;
   double tolerance, cfl, steady_tolerance, diffusivity;
-  int limiter, motion, cross_section, granular_temperature, interphase_dissipation, acceleration, kinetic_pressure;
+  int limiter, motion, cross_section, granular_temperature, interphase_dissipation, acceleration, kinetic_pressure,
+      column_form;
   sl_scene_expr phi, porosity, theta;            /* [initial]: the column and the 2-D model (x, y, case) */
   sl_scene_exprs velocity_fluid, velocity_solid; /* [initial]: the 2-D model (two components) */
   sl_scene_expr sh_phi, sh_theta, sh_uf, sh_us;  /* [initial]: the shear layer (of x) */

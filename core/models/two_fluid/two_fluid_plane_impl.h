@@ -103,6 +103,13 @@ typedef struct tfp_model {
   int *us_row, *uf_row;
   int n_vel, n_unknowns;
   int closed; /* no outlet: the pressure takes its datum in cell 0 */
+  /* [two_fluid] column_form: a grid one cell across along direction col_dir takes the 1-D column's equations
+     (two_fluid.h; two_fluid_plane_step.c): col_n cells, col_face[k] (k = 0..col_n) its faces upwards along
+     col_dir; col_j the mixture flux along +col_dir of the accepted state and col_j_new of the trial; col_uf0 the
+     accepted fluid velocities (the inlet's before its new value) */
+  int column, col_dir, col_n;
+  int *col_face;
+  double col_j, col_j_new, *col_uf0;
   /* the step's work arrays */
   double *phf, *phg, *w, *K, *dK, *slip, *sn, *ps, *dps, *flux, *alpha, *inflow, *x, *rhs;
   /* the linear system: its triplets (the pattern kept) */
@@ -171,6 +178,13 @@ int tfp_solids_pressure(tfp_model *m, const double *phi, double *ps, double *dps
  * face velocity u near u0 = us[f]; mu the solids viscosity of the half cell
  * next to the wall, h its width. Updates end_us. */
 int tfp_solids_wall(tfp_model *m, int f, int end, double mu, double h, double *R0, double *dR, sl_diag *d);
+
+/* [two_fluid] column_form (two_fluid_plane_step.c): checks the grid is one cell across with gravity along it, and
+ * starts the fluid with the inlet's mixture flux, as the column does. After tfp_setup and the initial state;
+ * `where` names the key for errors. 0, SL_EBADINPUT or SL_ENOMEM. */
+int tfp_column_start(tfp_model *m, int fluid_given, const char *where, sl_diag *d);
+/* The column's mixture flux from a restored state. */
+void tfp_column_restored(tfp_model *m);
 
 /* The solids volume (per radian when axisymmetric) in the domain. */
 double tfp_inventory(const tfp_model *m, const double *phi);
