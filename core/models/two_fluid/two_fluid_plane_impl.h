@@ -20,6 +20,7 @@
 #include "core/fv/cell_scalar.h"
 #include "core/fv/grid.h"
 #include "core/mesh/tensor_grid.h"
+#include "core/models/two_fluid/granular.h"
 #include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/point_eval.h"
 #include "core/solve/anderson.h"
@@ -44,9 +45,6 @@ typedef struct tfp_boundary {
   double pressure;        /* outlet */
 } tfp_boundary;
 
-/* The quantities the 2-D model offers its solids-stress closures, by input name. */
-enum { TFP_Q_PHI, TFP_Q_SLIP, TFP_Q_THETA, TFP_Q_RHO_F, TFP_Q_MU_F, TFP_Q_RHO_S, TFP_Q_D_P, TFP_Q_SPHERICITY,
-       TFP_Q_GRAVITY, TFP_Q_SLIP_WALL, TFP_Q_WALL_DISTANCE, TFP_Q_SHEAR_RATE, TFP_Q_DENSITY, TFP_Q_N };
 
 /* The solids phase's stress (two_fluid_plane_solids.c): its viscosity in the
  * cells from [solid] viscosity, [closure.viscosity] and [closure.granular]
@@ -59,7 +57,7 @@ typedef struct tfp_solids {
   int kinetic_pressure; /* the granular closure's p_s joins the solids pressure */
   int wall_energy;      /* the wall closure's theta_flux enters the transported theta through the walls */
   double mu_const;            /* [solid] viscosity */
-  double *qv[TFP_Q_N];        /* the constant quantities, per point (corners: more than cells) */
+  double *qv[TF_Q_N];        /* the constant quantities, per point (corners: more than cells) */
   /* cells [nc]: the viscosity, its tangent mu_s + gdot dmu_s/dgdot (Newton in the shear rate), the shear rate,
      the mixture density, the drag coefficient (the mean of the faces), the normal part 2 S':S' - 2 S_xy^2 of
      gdot^2; theta of the accepted state and of the iterate */
