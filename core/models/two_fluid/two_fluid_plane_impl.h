@@ -5,8 +5,8 @@
  *
  * The staggered (MAC) grid of Harlow & Welch (1965; core/fv/grid.h): phi,
  * the pressure p and the solids pressure P_s in the cells; the normal
- * components of the fluid and solids velocities on the faces. It carries the 1-D column's face
- * scheme (two_fluid_step.c) over to two dimensions: each face balances the
+ * components of the fluid and solids velocities on the faces. The 1-D
+ * column is its n x 1 case with column_form (two_fluid_step.c): each face balances the
  * two cells it separates, so a checkerboard of phi drives the face fluxes
  * that relax it (a collocated or Taylor-Hood form averages it away).
  *
@@ -108,6 +108,9 @@ typedef struct tfp_model {
   int column, col_dir, col_n;
   int *col_face;
   double col_j, col_j_new, *col_uf0;
+  int col_inlet_given; /* the inlet's superficial velocity is col_inlet (inward), not its expression: the 1-D
+                          column's inlet, which may be an equilibrium (two_fluid_step.c) */
+  double col_inlet;
   /* the step's work arrays */
   double *phf, *phg, *w, *K, *dK, *slip, *sn, *ps, *dps, *flux, *alpha, *inflow, *x, *rhs;
   /* the linear system: its triplets (the pattern kept) */

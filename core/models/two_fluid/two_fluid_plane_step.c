@@ -177,7 +177,7 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
     double x = dir == 0 ? xf[f % (m->fv.nx + 1)] : m->fv.xc[(f - m->fv.nfx) % m->fv.nx];
     double y = dir == 0 ? m->fv.yc[f / (m->fv.nx + 1)] : yf[(f - m->fv.nfx) / m->fv.nx];
     double v[4] = {x, y, t, m->c.case_index};
-    double U = sl_expr_eval(m->b[m->fv.bound[f]].velocity.e, v);
+    double U = m->col_inlet_given ? m->col_inlet : sl_expr_eval(m->b[m->fv.bound[f]].velocity.e, v);
     if (!isfinite(U))
       return sl_diag_set(d, SL_EFAILED, "the inlet velocity is not a finite number (%g) at (%g, %g), t = %g", U, x, y,
                          t);
@@ -201,7 +201,8 @@ static double face_phi(const tfp_model *m, const double *phi, int f) {
   if (lo < 0 || hi < 0) v = phi[lo < 0 ? hi : lo];
   else {
     double gd = m->g[face_dir(m, f)];
-    v = gd < 0.0 ? phi[lo] : gd > 0.0 ? phi[hi] : 0.5 * (phi[lo] + phi[hi]);
+    /* the column without gravity takes the cell below (two_fluid.h) */
+    v = gd < 0.0 || (gd == 0.0 && m->column) ? phi[lo] : gd > 0.0 ? phi[hi] : 0.5 * (phi[lo] + phi[hi]);
   }
   return fmax(v, PHI_FLOOR);
 }
@@ -641,7 +642,7 @@ int tfp_column_start(tfp_model *m, int fluid_given, const char *where, sl_diag *
   if ((dir ? nx : ny) != 1 || n < 2)
     return sl_diag_set(d, SL_EBADINPUT, "%s: the column's form needs a grid one cell across (%d x %d cells)", where,
                        nx, ny);
-  if (m->g[1 - dir] != 0.0 || m->g[dir] == 0.0 || m->fv.periodic[dir] || m->axi || m->s.any || m->convection ||
+  if (m->g[1 - dir] != 0.0 || m->fv.periodic[dir] || m->axi || m->s.any || m->convection ||
       m->accelerate)
     return sl_diag_set(d, SL_EBADINPUT, "%s: the column's form needs gravity along the column (%s), no periodic ends, "
                                         "a planar scene, no solids stress, no [flow] convection and no acceleration",
@@ -668,7 +669,7 @@ void tfp_column_restored(tfp_model *m) {
 }
 
 /* The converged column step's fluid velocity and pressure at the step's final phi, as the 1-D column gives them
- * (two_fluid_step.c): u_f = (j - phi u_s)/eps at every face, and dp/dx from the fluid momentum,
+ * (two_fluid.h): u_f = (j - phi u_s)/eps at every face, and dp/dx from the fluid momentum,
  * dp/dx = rho_f g - K s/eps - rho_f du_f/dt, s = (j - u_s)/eps, summed from the outlet (or from p = 0 at the
  * top of a closed column) over the centres' distances. */
 static int column_finish(tfp_model *m, double dt, sl_diag *d) {
