@@ -411,7 +411,9 @@ static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_
 /* Drag and solids pressure at the iterate: K, dK/d|s| and the normal slip at
  * every face, P_s and dP_s/dphi in the cells. */
 static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_diag *d) {
-  for (int f = 0; f < m->fv.nf; ++f) {
+  /* the faces with momentum equations: all, or the column's (contiguous; the others are closed) */
+  const int fa = m->column ? m->col_face[0] : 0, fb = m->column ? m->col_face[m->col_n] + 1 : m->fv.nf;
+  for (int f = fa; f < fb; ++f) {
     m->phf[f] = face_phi(m, phi_drag, f);
     /* the weight's phi: implicit, Newton-coupled (below); the column's is the drag's */
     m->phg[f] = m->column ? m->phf[f] : face_phi(m, m->phi_frozen ? m->phi : phi, f);
@@ -430,9 +432,9 @@ static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_
     st /= n;
     m->slip[f] = hypot(m->sn[f], st);
   }
-  int rc = tf_closure_eval(&m->c.drag, m->fv.nf, m->phf, m->slip, m->K, m->dK, d);
+  int rc = tf_closure_eval(&m->c.drag, fb - fa, m->phf + fa, m->slip + fa, m->K + fa, m->dK + fa, d);
   if (rc) return sl_diag_prefix(d, rc, "drag");
-  for (int f = 0; f < m->fv.nf; ++f)
+  for (int f = fa; f < fb; ++f)
     if (!isfinite(m->K[f]) || m->K[f] < 0.0 || !isfinite(m->dK[f]))
       return sl_diag_set(d, SL_EFAILED, "[closure.drag] gave K = %g (dK/dslip = %g) at face %d, phi = %g, slip %g m/s",
                          m->K[f], m->dK[f], f, m->phf[f], m->slip[f]);
@@ -492,7 +494,8 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
        dp/dn) on the solids, - (rho_f g - dp/dn) on the fluid. Without it the weight lags the transport, and
        a stratified suspension (the smeared top of a settling one) overturns once N dt exceeds about 1, N the
        buoyancy frequency. */
-    { /* emitted for every face (zero where phi_g is floored), so that the pattern stays the same */
+    if (!m->column) { /* emitted for every face (zero where phi_g is floored), so that the pattern stays the same;
+                         the column's weight takes the drag's phi, with nothing to linearise */
       double gradp = lo >= 0 && hi >= 0 ? (m->p_new[hi] - m->p_new[lo]) / m->fv.dist[f]
                      : lo < 0           ? (m->p_new[hi] - p_out) / m->fv.dist[f]
                                         : (p_out - m->p_new[lo]) / m->fv.dist[f];
@@ -524,7 +527,7 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
       double big = 0.0, diag = V * (ph * rho_s / dt + Keff), scale = 1.0;
       for (int q = 0; q < nc; ++q) big = fmax(big, fabs(Ss * dphi[q]));
       if (big > 0.5 * diag) scale = 0.5 * diag / big;
-      if (m->phi_frozen || m->column) scale = 0.0; /* phi_g is the step's start or the drag's: nothing to linearise */
+      if (m->phi_frozen) scale = 0.0; /* phi_g is the step's start: nothing to linearise */
       for (int q = 0; q < nc; ++q) {
         double ds = scale * dphi[q];
         rc |= add(m, rs, m->us_row[cols[q]], -Ss * ds);
