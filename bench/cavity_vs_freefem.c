@@ -50,7 +50,7 @@
 
 #include "centreline_profile.h"
 #include "core/study/child.h"
-#include "svg_plot.h"
+#include "core/study/chart.h"
 
 enum { MAX_RUNS = 64, MAX_N = 16, MAX_SOLVERS = 3 };
 
@@ -434,7 +434,7 @@ int main(int argc, char **argv) {
     static char names[MAX_SERIES][48], lab[MAX_SERIES][MAX_RUNS][16];
     static const char *labels[MAX_SERIES][MAX_RUNS];
     static const char *const colour[MAX_SERIES] = {"#1f77b4", "#2ca02c", "#d62728", "#9467bd"};
-    svgp_series ser[NP][MAX_SERIES];
+    sl_chart_series ser[NP][MAX_SERIES];
     int ns_ = 0, n_in[MAX_SERIES] = {0};
     for (int i = 0; i < np; ++i) {
       char name[48];
@@ -455,20 +455,23 @@ int main(int argc, char **argv) {
     for (int q = 0; q < NP; ++q)
       for (int s = 0; s < ns_; ++s) {
         int is_ff = strncmp(names[s], "FreeFEM", 7) == 0, is_umf = strstr(names[s], "umfpack") && !is_ff;
-        ser[q][s] = (svgp_series){.name = names[s], .n = n_in[s], .x = q == 3 ? u[s] : x[s], .y = y[q][s],
+        ser[q][s] = (sl_chart_series){.name = names[s], .n = n_in[s], .x = q == 3 ? u[s] : x[s], .y = y[q][s],
                                   .labels = q < 3 && !is_umf ? labels[s] : NULL, .colour = colour[s],
-                                  .marker = (svgp_marker)s, .dashed = is_umf};
+                                  .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s), .dashed = is_umf};
       }
-    svgp_panel panels[NP] = {
-        {.title = "max-norm error of u(1/2, y) against CPU time", .xlabel = "CPU s",
-         .ylabel = "max |u(1/2, y_k) - u_ref(y_k)|", .n_series = ns_, .series = ser[0], .legend = SVGP_TOP_RIGHT},
-        {.title = "L2 error of u(1/2, y) against CPU time", .xlabel = "CPU s", .ylabel = "|| u(1/2, .) - u_ref ||_L2",
-         .n_series = ns_, .series = ser[1], .legend = SVGP_TOP_RIGHT},
-        {.title = "old measure: centreline minimum (not monotone)", .xlabel = "CPU s", .ylabel = "|min u - u*|",
-         .n_series = ns_, .series = ser[2], .legend = SVGP_BOTTOM_LEFT},
-        {.title = "peak memory", .xlabel = "unknowns", .ylabel = "MB", .n_series = ns_, .series = ser[3],
-         .legend = SVGP_TOP_LEFT},
+    sl_chart panels[NP] = {
+        {.title = "max-norm error of u(1/2, y) against CPU time", .xlabel = "CPU time (s)",
+         .ylabel = "max_{k} |u(1/2, y_{k}) \xE2\x88\x92 u_{ref}(y_{k})| (m/s)", .n_series = ns_, .series = ser[0],
+         .legend = SL_LEGEND_TOP_RIGHT},
+        {.title = "L_{2} error of u(1/2, y) against CPU time", .xlabel = "CPU time (s)",
+         .ylabel = "\xE2\x80\x96u(1/2, \xC2\xB7) \xE2\x88\x92 u_{ref}\xE2\x80\x96_{L2} (m/s)", .n_series = ns_,
+         .series = ser[1], .legend = SL_LEGEND_TOP_RIGHT},
+        {.title = "old measure: centreline minimum (not monotone)", .xlabel = "CPU time (s)",
+         .ylabel = "|min u \xE2\x88\x92 u*| (m/s)", .n_series = ns_, .series = ser[2], .legend = SL_LEGEND_BOTTOM_LEFT},
+        {.title = "peak memory", .xlabel = "unknowns", .ylabel = "peak resident set (MB)", .n_series = ns_,
+         .series = ser[3], .legend = SL_LEGEND_TOP_LEFT},
     };
+    for (int q = 0; q < NP; ++q) panels[q].xscale = panels[q].yscale = SL_AXIS_LOG;
     char note[8192];
     snprintf(note, sizeof note,
              "labels: cells per side. Reference u_ref: %d points of %s.\nCPU: fastest of %d %s; sluice's "
@@ -478,14 +481,15 @@ int main(int argc, char **argv) {
              sluice_bench ? "interleaved rounds" : "repeats", machine,
              sluice_bench ? "load over the runs" : "FreeFEM runs at load",
              sluice_bench ? load_lo : load[0][0], sluice_bench ? load_hi : load[1][0]);
-    svgp_figure fig = {.title = "Stokes cavity: sluice Q2/Q1 and FreeFEM P2/P1",
+    sl_figure fig = {.title = "Stokes cavity: sluice Q2/Q1 and FreeFEM P2/P1",
                        .note = note,
                        .n_panels = NP,
                        .panels = panels,
                        .columns = 2,
                        .panel_width = 480,
                        .panel_height = 360};
-    if (svgp_write(svg, &fig)) fprintf(stderr, "%s: %s\n", svg, strerror(errno)), failed = 1;
+    sl_diag d = {{0}};
+    if (sl_figure_write(svg, &fig, &d)) fprintf(stderr, "%s\n", d.msg), failed = 1;
   }
   return failed;
 }

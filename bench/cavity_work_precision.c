@@ -46,7 +46,7 @@
  *       [--set section.key=value ...] [n ...]                               (default n: 8 16 32 64 128 256)
  *
  * CSV on stdout (and in --csv PATH), '#' lines for u*, the observed orders
- * and the machine; progress on stderr. --svg PATH writes the plot (svg_plot.h):
+ * and the machine; progress on stderr. --svg PATH writes the plot (core/study/chart.h):
  * error versus CPU time, peak memory versus unknowns, and per solver the time
  * split versus unknowns. The exit status is 1 when any run failed. */
 #include <errno.h>
@@ -64,7 +64,7 @@
 #include "bench_child.h"
 #include "bench_machine.h"
 #include "centreline_profile.h"
-#include "svg_plot.h"
+#include "core/study/chart.h"
 
 enum { MAX_N = 16, MAX_SET = 8, MAX_SOLVERS = 4 };
 
@@ -366,15 +366,15 @@ static int write_svg(const char *path, const table *t) {
   double split[MAX_SOLVERS][SPLIT][MAX_N];
   char buf[MAX_N][32];
   const char *labels[MAX_N];
-  svgp_series s_err[MAX_SOLVERS], s_mem[MAX_SOLVERS], s_split[MAX_SOLVERS][SPLIT];
-  svgp_panel panels[2 + MAX_SOLVERS];
+  sl_chart_series s_err[MAX_SOLVERS], s_mem[MAX_SOLVERS], s_split[MAX_SOLVERS][SPLIT];
+  sl_chart panels[2 + MAX_SOLVERS];
   char titles[MAX_SOLVERS][96];
   static const char *const split_name[SPLIT] = {"steady solve, total",       "its factorisation",
                                                 "its assembly",              "its back-substitution",
                                                 "BDF1 step, factors reused", "assembly in that step"};
   static const char *const split_colour[SPLIT] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#2ca02c"};
-  static const svgp_marker split_marker[SPLIT] = {SVGP_CIRCLE, SVGP_SQUARE, SVGP_TRIANGLE, SVGP_DIAMOND, SVGP_CIRCLE,
-                                                  SVGP_TRIANGLE};
+  static const sl_chart_marker split_marker[SPLIT] = {SL_CHART_MARK_CIRCLE, SL_CHART_MARK_SQUARE, SL_CHART_MARK_TRIANGLE, SL_CHART_MARK_DIAMOND, SL_CHART_MARK_CIRCLE,
+                                                  SL_CHART_MARK_TRIANGLE};
   for (int k = 0; k < t->nn; ++k) {
     dofs[k] = t->st[0][k].dofs;
     snprintf(buf[k], sizeof buf[k], "n=%d", t->ns[k]);
@@ -394,17 +394,17 @@ static int write_svg(const char *path, const table *t) {
       split[s][4][k] = tr ? r->step_wall : NAN, split[s][5][k] = tr ? r->step_assembly : NAN;
     }
     const char *c = solver_colours[s % MAX_SOLVERS];
-    s_err[s] = (svgp_series){.name = solver_name(t, s), .n = t->nn, .x = cpu[s], .y = err[s],
-                             .labels = s == t->nsolv - 1 ? labels : NULL, .colour = c, .marker = (svgp_marker)s};
-    s_mem[s] = (svgp_series){.name = solver_name(t, s), .n = t->nn, .x = dofs, .y = rss[s],
-                             .labels = s == t->nsolv - 1 ? labels : NULL, .colour = c, .marker = (svgp_marker)s};
+    s_err[s] = (sl_chart_series){.name = solver_name(t, s), .n = t->nn, .x = cpu[s], .y = err[s],
+                             .labels = s == t->nsolv - 1 ? labels : NULL, .colour = c, .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s)};
+    s_mem[s] = (sl_chart_series){.name = solver_name(t, s), .n = t->nn, .x = dofs, .y = rss[s],
+                             .labels = s == t->nsolv - 1 ? labels : NULL, .colour = c, .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s)};
     for (int q = 0; q < SPLIT; ++q)
-      s_split[s][q] = (svgp_series){.name = split_name[q], .n = t->nn, .x = dofs, .y = split[s][q],
+      s_split[s][q] = (sl_chart_series){.name = split_name[q], .n = t->nn, .x = dofs, .y = split[s][q],
                                     .colour = split_colour[q], .marker = split_marker[q], .dashed = q >= 4};
     if (!any) continue;
     snprintf(titles[s], sizeof titles[s], "Where the time goes: %s", solver_name(t, s));
-    panels[np++] = (svgp_panel){.title = titles[s], .xlabel = "unknowns", .ylabel = "wall time (s)",
-                                .n_series = any_tr ? SPLIT : 4, .series = s_split[s], .legend = SVGP_TOP_LEFT};
+    panels[np++] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = titles[s], .xlabel = "unknowns", .ylabel = "wall time (s)",
+                                .n_series = any_tr ? SPLIT : 4, .series = s_split[s], .legend = SL_LEGEND_TOP_LEFT};
   }
   /* the split panels share their axes */
   double lo = INFINITY, hi = -INFINITY;
@@ -417,11 +417,11 @@ static int write_svg(const char *path, const table *t) {
     panels[p].yspan[0] = lo, panels[p].yspan[1] = hi;
   }
   char err_label[128];
-  snprintf(err_label, sizeof err_label, "|min u - u*| on x = 1/2, u* = %.8f", t->ref);
-  panels[0] = (svgp_panel){.title = "Error against CPU time", .xlabel = "CPU time of the steady solve (s)",
-                           .ylabel = err_label, .n_series = t->nsolv, .series = s_err, .legend = SVGP_TOP_RIGHT};
-  panels[1] = (svgp_panel){.title = "Peak memory", .xlabel = "unknowns", .ylabel = "peak resident set (MB)",
-                           .n_series = t->nsolv, .series = s_mem, .legend = SVGP_TOP_LEFT};
+  snprintf(err_label, sizeof err_label, "|min u \xE2\x88\x92 u*| on x = 1/2 (m/s), u* = %.8f", t->ref);
+  panels[0] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = "Error against CPU time", .xlabel = "CPU time of the steady solve (s)",
+                           .ylabel = err_label, .n_series = t->nsolv, .series = s_err, .legend = SL_LEGEND_TOP_RIGHT};
+  panels[1] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = "Peak memory", .xlabel = "unknowns", .ylabel = "peak resident set (MB)",
+                           .n_series = t->nsolv, .series = s_mem, .legend = SL_LEGEND_TOP_LEFT};
   char note[4096];
   int at = snprintf(note, sizeof note, "u*: %s.\n%s. Release build, one process per run.", t->ref_method, t->machine);
   for (int s = 0; s < t->nsolv; ++s) /* the failed steady runs, one line each */
@@ -429,10 +429,15 @@ static int write_svg(const char *path, const table *t) {
       if (!t->st[s][k].ok)
         at += snprintf(note + at, sizeof note - (size_t)at, "\nNot plotted: %s, n = %d failed: %.110s", solver_name(t, s),
                        t->ns[k], t->st[s][k].err);
-  svgp_figure fig = {.title = "Stokes lid-driven cavity (configs/cavity_stokes.ini), Q2/Q1 on n x n cells",
+  sl_figure fig = {.title = "Stokes lid-driven cavity (configs/cavity_stokes.ini), Q2/Q1 on n \xC3\x97 n cells",
                      .note = note, .n_panels = np, .panels = panels, .columns = 2, .panel_width = 480,
                      .panel_height = 360};
-  return svgp_write(path, &fig);
+  sl_diag d = {{0}};
+  if (sl_figure_write(path, &fig, &d)) {
+    fprintf(stderr, "%s\n", d.msg);
+    return -1;
+  }
+  return 0;
 }
 
 /* ---- main -------------------------------------------------------------- */
@@ -612,7 +617,7 @@ int main(int argc, char **argv) {
     int werr = ferror(f);
     if (fclose(f) || werr) return fprintf(stderr, "%s: write failed\n", csv), 1;
   }
-  if (svg && write_svg(svg, &t)) return fprintf(stderr, "%s: %s\n", svg, strerror(errno)), 1;
+  if (svg && write_svg(svg, &t)) return 1; /* the reason is on stderr */
   free(prof);
   if (fflush(stdout)) return 1;
   return failures ? 1 : 0;

@@ -31,7 +31,7 @@
  *
  * CSV on stdout (and in --csv PATH) with '#' lines for the machine and the
  * fitted exponents; progress on stderr; --svg PATH writes time per operation
- * against cells, one panel per scene (svg_plot.h). --max-cells N leaves out
+ * against cells, one panel per scene (core/study/chart.h). --max-cells N leaves out
  * the larger meshes; --scene NAME runs only the scenes named. The exit status
  * is 1 when a run failed. */
 #include <errno.h>
@@ -46,7 +46,7 @@
 #include "sluice/sluice.h"
 #include "bench_child.h"
 #include "bench_machine.h"
-#include "svg_plot.h"
+#include "core/study/chart.h"
 
 enum { MAX_SIZES = 8, MAX_SETS = 6, N_PHASES = 4, N_SCENES = 3 };
 enum { PHASE_ASSEMBLY, PHASE_FACTORISATION, PHASE_SOLVE, PHASE_TRANSPORT };
@@ -300,9 +300,9 @@ static void write_csv(FILE *f, const scene_table *tables, int n_tables, const ch
 
 static int write_svg(const char *path, const scene_table *tables, int n_tables, const char *machine, int repeat) {
   static const char *const colours[N_PHASES] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e"};
-  static const svgp_marker markers[N_PHASES] = {SVGP_CIRCLE, SVGP_SQUARE, SVGP_TRIANGLE, SVGP_DIAMOND};
-  svgp_series series[N_SCENES][N_PHASES + 1];
-  svgp_panel panels[N_SCENES];
+  static const sl_chart_marker markers[N_PHASES] = {SL_CHART_MARK_CIRCLE, SL_CHART_MARK_SQUARE, SL_CHART_MARK_TRIANGLE, SL_CHART_MARK_DIAMOND};
+  sl_chart_series series[N_SCENES][N_PHASES + 1];
+  sl_chart panels[N_SCENES];
   double x[N_SCENES][MAX_SIZES], y[N_SCENES][N_PHASES][MAX_SIZES], guide_x[N_SCENES][2], guide_y[N_SCENES][2];
   char names[N_SCENES][N_PHASES][64];
   int np = 0;
@@ -319,19 +319,19 @@ static int write_svg(const char *path, const scene_table *tables, int n_tables, 
       if (!any) continue;
       if (isfinite(t->p[q])) snprintf(names[np][q], sizeof names[np][q], "%s, p = %.2f", phase_names[q], t->p[q]);
       else snprintf(names[np][q], sizeof names[np][q], "%s", phase_names[q]);
-      series[np][ns++] = (svgp_series){.name = names[np][q], .n = t->n, .x = x[np], .y = y[np][q],
+      series[np][ns++] = (sl_chart_series){.name = names[np][q], .n = t->n, .x = x[np], .y = y[np][q],
                                        .colour = colours[q], .marker = markers[q]};
     }
     /* a slope-1 guide from the first assembly point across the sizes */
     if (t->n >= 2 && isfinite(y[np][PHASE_ASSEMBLY][0]) && isfinite(t->p[PHASE_ASSEMBLY])) {
       guide_x[np][0] = x[np][0], guide_x[np][1] = x[np][t->n - 1];
       guide_y[np][0] = y[np][PHASE_ASSEMBLY][0], guide_y[np][1] = guide_y[np][0] * guide_x[np][1] / guide_x[np][0];
-      series[np][ns++] = (svgp_series){.name = "cells^1", .n = 2, .x = guide_x[np], .y = guide_y[np],
-                                       .colour = "#7f7f7f", .marker = SVGP_CIRCLE, .dashed = 1};
+      series[np][ns++] = (sl_chart_series){.name = "\xE2\x88\x9D cells^{1}", .n = 2, .x = guide_x[np], .y = guide_y[np],
+                                       .colour = "#7f7f7f", .marker = SL_CHART_MARK_NONE, .dashed = 1};
     }
     if (ns == 0) continue; /* no run of this scene succeeded */
-    panels[np] = (svgp_panel){.title = t->spec->title, .xlabel = "cells", .ylabel = "seconds per operation",
-                              .n_series = ns, .series = series[np], .legend = SVGP_TOP_LEFT};
+    panels[np] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = t->spec->title, .xlabel = "cells", .ylabel = "time per operation (s)",
+                              .n_series = ns, .series = series[np], .legend = SL_LEGEND_AUTO};
     ++np;
   }
   char note[1024];
@@ -340,21 +340,85 @@ static int write_svg(const char *path, const scene_table *tables, int n_tables, 
            "operation, transport CPU time per sub-step.\np: least-squares slope of log time against log cells. "
            "Machine: %s.",
            repeat, machine);
-  svgp_figure fig = {.title = "Cost per operation against cells (bench_cost_scaling)", .note = note,
+  sl_figure fig = {.title = "Cost per operation against cells (bench_cost_scaling)", .note = note,
                      .n_panels = np, .panels = panels, .columns = np, .panel_width = 440, .panel_height = 380};
-  return svgp_write(path, &fig);
+  sl_diag d = {{0}};
+  if (sl_figure_write(path, &fig, &d)) {
+    fprintf(stderr, "%s\n", d.msg);
+    return -1;
+  }
+  return 0;
+}
+
+/* The tables back from a CSV this program wrote (--replot): the figure again
+ * from recorded measurements, running nothing. Returns 0 or -1. */
+static int read_csv(const char *path, scene_table *tables, int *n_tables, char *machine, size_t mlen, int *repeat) {
+  FILE *f = fopen(path, "r");
+  if (!f) return fprintf(stderr, "%s: %s\n", path, strerror(errno)), -1;
+  char line[4096];
+  int lineno = 0, bad = 0;
+  *n_tables = 0;
+  while (!bad && fgets(line, sizeof line, f)) {
+    ++lineno;
+    line[strcspn(line, "\r\n")] = '\0';
+    if (!strncmp(line, "# machine: ", 11)) snprintf(machine, mlen, "%.400s", line + 11);
+    const char *fastest = strstr(line, "fastest of ");
+    if (line[0] == '#' && fastest) *repeat = atoi(fastest + 11);
+    if (line[0] == '#' || !strncmp(line, "scene,", 6)) continue;
+    /* scene,mesh,cells, then steps .. symbolic_s (11 fields, empty when failed), status */
+    char *field[16];
+    int n = 0;
+    for (char *q = line; n < 16;) {
+      field[n++] = q;
+      char *comma = strchr(q, ',');
+      if (!comma) break;
+      *comma = '\0', q = comma + 1;
+    }
+    int spec = -1;
+    for (int i = 0; n == 15 && i < N_SCENES; ++i)
+      if (!strcmp(field[0], scenes[i].name)) spec = i;
+    if (spec < 0) {
+      fprintf(stderr, "%s:%d: not a row of this program's CSV\n", path, lineno);
+      bad = 1;
+      break;
+    }
+    scene_table *t = NULL;
+    for (int i = 0; i < *n_tables; ++i)
+      if (tables[i].spec == &scenes[spec]) t = &tables[i];
+    if (!t) {
+      t = &tables[(*n_tables)++];
+      memset(t, 0, sizeof *t);
+      t->spec = &scenes[spec];
+    }
+    if (t->n == MAX_SIZES) {
+      fprintf(stderr, "%s:%d: more sizes than this program runs\n", path, lineno);
+      bad = 1;
+      break;
+    }
+    point *pt = &t->pts[t->n++];
+    pt->cells = atol(field[2]);
+    pt->ok = !strcmp(field[14], "ok");
+    pt->cpu = pt->ok ? atof(field[8]) : NAN;
+    for (int q = 0; q < N_PHASES; ++q) pt->per_op[q] = pt->ok && field[9 + q][0] ? atof(field[9 + q]) : NAN;
+    pt->symbolic = pt->ok && field[13][0] ? atof(field[13]) : NAN;
+  }
+  fclose(f);
+  if (!bad && *n_tables == 0) fprintf(stderr, "%s: no rows\n", path), bad = 1;
+  for (int i = 0; !bad && i < *n_tables; ++i) fit_scene(&tables[i]);
+  return bad ? -1 : 0;
 }
 
 /* ---- main ----------------------------------------------------------------------------- */
 
 static int usage(void) {
   fprintf(stderr, "usage: bench_cost_scaling [SOURCE_DIR] [--repeat R] [--csv PATH] [--svg PATH] [--max-cells N] "
-                  "[--scene NAME]...\n");
+                  "[--scene NAME]...\n"
+                  "       bench_cost_scaling --replot CSV --svg PATH   (the figure of recorded runs)\n");
   return 2;
 }
 
 int main(int argc, char **argv) {
-  const char *src = ".", *csv = NULL, *svg = NULL;
+  const char *src = ".", *csv = NULL, *svg = NULL, *replot = NULL;
   const char *only[N_SCENES];
   int n_only = 0, repeat = 3;
   long max_cells = 0;
@@ -362,6 +426,7 @@ int main(int argc, char **argv) {
     if (!strcmp(argv[i], "--repeat") && i + 1 < argc) repeat = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--csv") && i + 1 < argc) csv = argv[++i];
     else if (!strcmp(argv[i], "--svg") && i + 1 < argc) svg = argv[++i];
+    else if (!strcmp(argv[i], "--replot") && i + 1 < argc) replot = argv[++i];
     else if (!strcmp(argv[i], "--max-cells") && i + 1 < argc) max_cells = atol(argv[++i]);
     else if (!strcmp(argv[i], "--scene") && i + 1 < argc && n_only < N_SCENES) only[n_only++] = argv[++i];
     else if (argv[i][0] == '-') return usage();
@@ -369,8 +434,14 @@ int main(int argc, char **argv) {
   }
   if (repeat < 1) return usage();
   char machine[512];
-  bench_machine_describe(machine, sizeof machine);
   scene_table tables[N_SCENES];
+  if (replot) {
+    int n_read = 0;
+    if (!svg) return usage();
+    if (read_csv(replot, tables, &n_read, machine, sizeof machine, &repeat)) return 2;
+    return write_svg(svg, tables, n_read, machine, repeat) ? 1 : 0;
+  }
+  bench_machine_describe(machine, sizeof machine);
   int n_tables = 0, failed = 0;
   for (int i = 0; i < N_SCENES; ++i) {
     int wanted = n_only == 0;
@@ -411,9 +482,6 @@ int main(int argc, char **argv) {
       return 1;
     }
   }
-  if (svg && write_svg(svg, tables, n_tables, machine, repeat)) {
-    fprintf(stderr, "%s: %s\n", svg, strerror(errno));
-    return 1;
-  }
+  if (svg && write_svg(svg, tables, n_tables, machine, repeat)) return 1; /* the reason is on stderr */
   return failed;
 }

@@ -22,7 +22,7 @@
  *
  * CSV on stdout (and in --csv PATH) with '#' lines for the references and
  * the machine; progress on stderr; --svg PATH writes error against CPU time
- * (svg_plot.h). The exit status is 1 when a run failed. */
+ * (core/study/chart.h). The exit status is 1 when a run failed. */
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -34,7 +34,7 @@
 #include "sluice/sluice.h"
 #include "core/io/output.h"
 #include "bench_machine.h"
-#include "svg_plot.h"
+#include "core/study/chart.h"
 
 enum { N_SCENES = 2, N_SWEEP = 6, MAX_CELLS = 400 };
 
@@ -170,8 +170,8 @@ static int write_svg(const char *path, const table *t) {
   static double x[N_SCENES][4][N_SWEEP], y[N_SCENES][4][N_SWEEP];
   static char lab[N_SCENES][4][N_SWEEP][32];
   static const char *labp[N_SCENES][4][N_SWEEP];
-  svgp_series ser[N_SCENES][4];
-  svgp_panel panels[N_SCENES];
+  sl_chart_series ser[N_SCENES][4];
+  sl_chart panels[N_SCENES];
   static const char *names[4] = {"mesh: final porosity", "mesh: profile at 10 s", "dt: final porosity",
                                  "dt: profile at 10 s"};
   static const char *colours[4] = {"#1f77b4", "#1f77b4", "#d62728", "#d62728"};
@@ -188,38 +188,90 @@ static int write_svg(const char *path, const table *t) {
         labp[s][q][m] = q % 2 ? lab[s][q][m] : NULL;
         ++m;
       }
-      ser[s][q] = (svgp_series){.name = names[q], .n = m, .x = x[s][q], .y = y[s][q], .labels = labp[s][q],
-                                .colour = colours[q], .marker = q < 2 ? SVGP_CIRCLE : SVGP_SQUARE,
+      ser[s][q] = (sl_chart_series){.name = names[q], .n = m, .x = x[s][q], .y = y[s][q], .labels = labp[s][q],
+                                .colour = colours[q], .marker = q < 2 ? SL_CHART_MARK_CIRCLE : SL_CHART_MARK_SQUARE,
                                 .dashed = q % 2 == 0};
     }
     snprintf(titles[s], sizeof titles[s], "%s", t->spec[s].name);
-    panels[s] = (svgp_panel){.title = titles[s], .xlabel = "CPU time of the run (s)",
-                             .ylabel = "porosity error (final) or L1 of phi (m, at 10 s)", .n_series = 4,
-                             .series = ser[s], .legend = s == 0 ? SVGP_BOTTOM_RIGHT : SVGP_BOTTOM_LEFT,
+    panels[s] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = titles[s], .xlabel = "CPU time of the run (s)",
+                             .ylabel = "final porosity error; L_{1} error in \xCF\x86 at 10 s (m)", .n_series = 4,
+                             .series = ser[s], .legend = SL_LEGEND_AUTO,
                              .yspan = {s == 0 ? 0.0 : 1e-10, s == 0 ? 0.0 : 1e-1}}; /* room for the legend */
   }
   char note[1024];
   snprintf(note, sizeof note,
            "Mesh sweeps at the scene's dt, dt sweeps at 100 cells; profile errors against the sweep's finest run.\n"
-           "Final: max |porosity - equilibrium| over the bed at the end (the discrete steady state is the drag's "
+           "Final: max |porosity \xE2\x88\x92 equilibrium| over the bed at the end (the discrete steady state is the drag's "
            "equilibrium: this is the stopping tolerance).\n%s.",
            t->machine);
-  svgp_figure fig = {.title = "1-D two-fluid model: error against CPU time", .note = note, .n_panels = N_SCENES,
-                     .panels = panels, .columns = N_SCENES};
-  return svgp_write(path, &fig);
+  sl_figure fig = {.title = "1-D two-fluid model: error against CPU time", .note = note, .n_panels = N_SCENES,
+                     .panels = panels, .columns = N_SCENES, .panel_width = 520, .panel_height = 440};
+  sl_diag d = {{0}};
+  if (sl_figure_write(path, &fig, &d)) {
+    fprintf(stderr, "%s\n", d.msg);
+    return -1;
+  }
+  return 0;
+}
+
+/* The table back from a CSV this program wrote (--replot): the figure again
+ * from recorded measurements, without running anything. Returns 0 or -1. */
+static int read_csv(const char *path, table *t) {
+  FILE *f = fopen(path, "r");
+  if (!f) return fprintf(stderr, "%s: %s\n", path, strerror(errno)), -1;
+  char line[4096];
+  int rows = 0, lineno = 0, bad = 0;
+  while (fgets(line, sizeof line, f)) {
+    ++lineno;
+    if (!strncmp(line, "# machine: ", 11)) {
+      snprintf(t->machine, sizeof t->machine, "%.*s", (int)strcspn(line + 11, "\n"), line + 11);
+      continue;
+    }
+    if (line[0] == '#' || !strncmp(line, "scene,", 6)) continue;
+    char scene[64], sweep[8];
+    run_result r = {.ok = 1};
+    if (sscanf(line, "%63[^,],%7[^,],%d,%lf,%ld,%lf,%lf,%lf", scene, sweep, &r.cells, &r.dt, &r.steps, &r.cpu,
+               &r.final_error, &r.transient_l1) != 8) {
+      fprintf(stderr, "%s:%d: not a row of this program's CSV\n", path, lineno);
+      bad = 1;
+      break;
+    }
+    int placed = 0;
+    for (int s = 0; s < N_SCENES && !placed; ++s) {
+      if (strcmp(scene, t->spec[s].name)) continue;
+      int dt_sweep = !strcmp(sweep, "dt");
+      for (int k = 0; k < N_SWEEP && !placed; ++k)
+        if (dt_sweep ? fabs(t->spec[s].dts[k] - r.dt) <= 1e-9 * r.dt : t->spec[s].cells[k] == r.cells) {
+          (dt_sweep ? t->dt[s] : t->mesh[s])[k] = r;
+          placed = 1;
+        }
+    }
+    if (!placed) {
+      fprintf(stderr, "%s:%d: %s, %s sweep, %d cells, dt %g is not one of this program's runs\n", path, lineno, scene,
+              sweep, r.cells, r.dt);
+      bad = 1;
+      break;
+    }
+    ++rows;
+  }
+  fclose(f);
+  if (!bad && rows == 0) fprintf(stderr, "%s: no rows\n", path), bad = 1;
+  return bad ? -1 : 0;
 }
 
 static int usage(void) {
-  fprintf(stderr, "usage: bench_two_fluid_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH] [--repeat R]\n");
+  fprintf(stderr, "usage: bench_two_fluid_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH] [--repeat R]\n"
+                  "       bench_two_fluid_work_precision --replot CSV --svg PATH   (the figure of recorded runs)\n");
   return 2;
 }
 
 int main(int argc, char **argv) {
-  const char *src = ".", *csv = NULL, *svg = NULL;
+  const char *src = ".", *csv = NULL, *svg = NULL, *replot = NULL;
   int repeat = 3;
   for (int a = 1; a < argc; ++a) {
     if (!strcmp(argv[a], "--csv") && a + 1 < argc) csv = argv[++a];
     else if (!strcmp(argv[a], "--svg") && a + 1 < argc) svg = argv[++a];
+    else if (!strcmp(argv[a], "--replot") && a + 1 < argc) replot = argv[++a];
     else if (!strcmp(argv[a], "--repeat") && a + 1 < argc) {
       repeat = atoi(argv[++a]);
       if (repeat < 1 || repeat > 100) return usage();
@@ -233,6 +285,11 @@ int main(int argc, char **argv) {
                            {25, 50, 100, 200, 400, 0}, {0.8, 0.4, 0.2, 0.1, 0.05, 0.025}, NULL};
   t.spec[1] = (scene_spec){"fluidization_step", 0.716, "Pringle 2001, section 4.6.1", {25, 50, 100, 200, 400, 0},
                            {0.16, 0.08, 0.04, 0.02, 0.01, 0.005}, NULL};
+  if (replot) {
+    if (!svg) return usage();
+    if (read_csv(replot, &t)) return 2;
+    return write_svg(svg, &t) ? 1 : 0;
+  }
   bench_machine_describe(t.machine, sizeof t.machine);
   int failures = 0;
   for (int s = 0; s < N_SCENES; ++s) {
@@ -266,7 +323,7 @@ int main(int argc, char **argv) {
     int werr = ferror(f);
     if (fclose(f) || werr) return fprintf(stderr, "%s: write failed\n", csv), 1;
   }
-  if (svg && write_svg(svg, &t)) return fprintf(stderr, "%s: %s\n", svg, strerror(errno)), 1;
+  if (svg && write_svg(svg, &t)) return 1; /* the reason is on stderr */
   if (fflush(stdout)) return 1;
   return failures ? 1 : 0;
 }

@@ -156,6 +156,42 @@ typedef struct basis_vec {
   int A;       /* frame axis */
 } basis_vec;
 
+/* The matrix of one quadrature point, planar with two components and no Coriolis term nor shear-rate dependent
+ * viscosity, per pair of scalar basis functions (i, j) for the four component pairs (A, B) at once: with
+ * D(phi e_A) = (e_A grad(phi)^T + grad(phi) e_A^T) / 2,
+ *   2 mu D(phi_i e_A) : D(phi_j e_B) = mu (delta_AB grad(phi_i).grad(phi_j) + d_B phi_i d_A phi_j),
+ * the mass rho mass_coef, the cell's sink K and Newton's rho G(u) all phi_i c_AB phi_j, and Picard's
+ * convection rho phi_i (u.grad phi_j) delta_AB. The same terms as the general loop of element(), a quarter of
+ * its operations (its per-(A, i) loops repeat each scalar product for every component pair). */
+static void planar_matrix(double *Ke, int n, int nb, double wq, const double *phi, const double (*grad)[2],
+                          const double *psi, int np, double rq, double mq, double mass_coef, const double *K,
+                          const qp_state *s, int convection, int newton) {
+  double c[2][2], a[SL_ELEMENT_MAX_BASIS];
+  for (int A = 0; A < 2; ++A)
+    for (int B = 0; B < 2; ++B)
+      c[A][B] = (A == B ? rq * mass_coef : 0.0) + (K ? K[2 * A + B] : 0.0) + (convection && newton ? rq * s->G[A][B] : 0.0);
+  for (int j = 0; j < nb; ++j) a[j] = convection ? wq * rq * (s->u[0] * grad[j][0] + s->u[1] * grad[j][1]) : 0.0;
+  double wm = wq * mq;
+  int nv = 2 * nb;
+  for (int i = 0; i < nb; ++i) {
+    double *r0 = Ke + (size_t)i * n, *r1 = Ke + (size_t)(nb + i) * n; /* the rows (0, i) and (1, i) */
+    double wpi = wq * phi[i], gi0 = wm * grad[i][0], gi1 = wm * grad[i][1];
+    for (int j = 0; j < nb; ++j) {
+      double g0 = grad[j][0], g1 = grad[j][1], pp = wpi * phi[j];
+      double diag = gi0 * g0 + gi1 * g1 + phi[i] * a[j];
+      r0[j] += diag + gi0 * g0 + pp * c[0][0];      /* (0, i), (0, j): d_0 phi_i d_0 phi_j */
+      r0[nb + j] += gi1 * g0 + pp * c[0][1];       /* (0, i), (1, j): d_1 phi_i d_0 phi_j */
+      r1[j] += gi0 * g1 + pp * c[1][0];            /* (1, i), (0, j): d_0 phi_i d_1 phi_j */
+      r1[nb + j] += diag + gi1 * g1 + pp * c[1][1]; /* (1, i), (1, j) */
+    }
+    for (int k = 0; k < np; ++k) { /* -psi_k div(phi_i e_A), and its transpose */
+      double b0 = -wq * psi[k] * grad[i][0], b1 = -wq * psi[k] * grad[i][1];
+      r0[nv + k] += b0, r1[nv + k] += b1;
+      Ke[(size_t)(nv + k) * n + i] += b0, Ke[(size_t)(nv + k) * n + nb + i] += b1;
+    }
+  }
+}
+
 static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, sl_flow_linearisation lin,
                     const qp_state *st, const double *shear, const double *rho, const double *mu,
                     const double *force) {
@@ -254,6 +290,11 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
     if (newton && dmq != 0.0 && gam > 0.0) {
       visc2 = 4.0 * dmq * gam;
       for (int k = 0; k < nv; ++k) s_ia[k] = sym_dot(&Du, &bv[k].D) / gam;
+    }
+    if (planar2 && o->omega == 0.0 && visc2 == 0.0 && w->frame[0] == 0 && w->frame[1] == 1) {
+      planar_matrix(w->Ke, n, nb, wq, fv->phi[0][q], (const double(*)[2])fv->grad[0][q], psi, np, rq, mq,
+                    o->mass_coef, K, s, o->convection, newton);
+      continue;
     }
     double rm = rq * o->mass_coef, w2mu = 2.0 * wq * mq;
     for (int ki = 0; ki < nv; ++ki) {
@@ -356,8 +397,10 @@ static int for_each_batch(const sl_th_space *th, const double *u, const sl_flow_
   flow_work *w = NULL;
   if ((rc = work_create(&w, th, o, d))) return rc;
   w->load_only = load_only;
-  int ncell = th->mesh->n_cells;
-  for (int first = 0; first < ncell && !rc; first += SL_ASSEMBLY_BATCH_CELLS) {
+  /* a system assembled on several ranks: this rank's cells only (their closures alone are called here) */
+  int32_t c0 = 0, ncell = th->mesh->n_cells;
+  if (s) sl_system_elements(s, &c0, &ncell);
+  for (int first = c0; first < ncell && !rc; first += SL_ASSEMBLY_BATCH_CELLS) {
     int n = ncell - first < SL_ASSEMBLY_BATCH_CELLS ? ncell - first : SL_ASSEMBLY_BATCH_CELLS;
     if (!(rc = batch_pass(w, th, u, o, first, n, d))) rc = fn(w, th, o, first, n, user, d);
   }

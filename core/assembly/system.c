@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/solve/linsolve.h"
+
 int sl_system_init(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_elem, const int32_t *elem_dofs,
                    sl_diag *d) {
   memset(s, 0, sizeof *s);
@@ -16,6 +18,7 @@ int sl_system_init(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_el
     sl_system_free(s);
     return sl_diag_set(d, SL_ENOMEM, "assembly: out of memory for a system of %d dofs", (int)n_dofs);
   }
+  s->elem_begin = 0, s->elem_end = n_elem;
   for (int32_t e = 0; e <= n_elem; ++e) ptr[e] = e * dofs_per_elem;
   int rc = sl_csr_build_uniform(&s->A, n_dofs, n_elem, dofs_per_elem, elem_dofs, d);
   if (!rc) rc = sl_csr_elem_map_build(&s->map, &s->A, n_elem, ptr, elem_dofs, NULL, NULL, d);
@@ -37,6 +40,7 @@ void sl_system_zero(sl_system *s) {
 }
 
 int sl_system_add_element(sl_system *s, int32_t e, const double *Ke, const double *be, sl_diag *d) {
+  if (s->distributed && (e < s->elem_begin || e >= s->elem_end)) return 0; /* another rank's */
   if (Ke) {
     int rc = sl_csr_add_element_mapped(&s->A, &s->map, e, Ke, d);
     if (rc) return rc;
@@ -47,6 +51,33 @@ int sl_system_add_element(sl_system *s, int32_t e, const double *Ke, const doubl
       if (dofs[a] >= 0) s->b[dofs[a]] += be[a];
   }
   return 0;
+}
+
+void sl_system_partition(int32_t n_elem, int rank, int ranks, int32_t *begin, int32_t *end) {
+  if (ranks < 1) ranks = 1, rank = 0;
+  *begin = (int32_t)((int64_t)n_elem * rank / ranks);
+  *end = (int32_t)((int64_t)n_elem * (rank + 1) / ranks);
+}
+
+void sl_system_own_elements(sl_system *s, int32_t begin, int32_t end) {
+  s->elem_begin = begin < 0 ? 0 : begin;
+  s->elem_end = end > s->n_elem ? s->n_elem : end;
+  s->distributed = 1;
+}
+
+void sl_system_elements(const sl_system *s, int32_t *begin, int32_t *end) {
+  *begin = s->distributed ? s->elem_begin : 0;
+  *end = s->distributed ? s->elem_end : s->n_elem;
+}
+
+int sl_system_complete(sl_system *s, int matrix, sl_diag *d) {
+  if (!s->distributed) return 0;
+  int rc = sl_linsolve_sum_ranks(s->b, s->n_dofs, d);
+  if (!rc && matrix) {
+    rc = sl_linsolve_sum_ranks(s->A.values, s->A.nnz, d);
+    sl_csr_touch(&s->A);
+  }
+  return rc;
 }
 
 /* ---- constraints --------------------------------------------------------- */

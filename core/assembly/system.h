@@ -28,6 +28,9 @@ typedef struct sl_system {
   sl_csr A;
   sl_csr_elem_map map;
   double *b; /* [n_dofs] */
+  /* sl_system_own_elements: this rank's elements [elem_begin, elem_end) (else all) */
+  int32_t elem_begin, elem_end;
+  int distributed;
 } sl_system;
 
 /* Builds the pattern and the element map. elem_dofs must outlive the
@@ -37,8 +40,26 @@ int sl_system_init(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_el
 void sl_system_free(sl_system *s);
 /* A = 0 and b = 0, pattern kept. */
 void sl_system_zero(sl_system *s);
-/* A += Ke (row-major, element dof order) and b += be (either may be NULL). */
+/* A += Ke (row-major, element dof order) and b += be (either may be NULL). An element another rank owns
+ * (sl_system_own_elements) adds nothing. */
 int sl_system_add_element(sl_system *s, int32_t e, const double *Ke, const double *be, sl_diag *d);
+
+/* ---- partitioned assembly (several ranks, mpirun) ------------------------- */
+
+/* The elements of rank `rank` of `ranks`: a contiguous block of the element numbering, [n e / N, n (e + 1) / N)
+ * for e = rank, N = ranks (the mesh generators number the cells row by row, gmsh front by front, so that a
+ * block is a compact piece of the domain). */
+void sl_system_partition(int32_t n_elem, int rank, int ranks, int32_t *begin, int32_t *end);
+/* From now on the system is assembled on several ranks, each adding its own elements [begin, end) only
+ * (an assembly loop asks sl_system_elements which those are); sl_system_complete sums the ranks' parts. */
+void sl_system_own_elements(sl_system *s, int32_t begin, int32_t end);
+/* The elements this rank assembles: [*begin, *end) (all of them unless sl_system_own_elements). */
+void sl_system_elements(const sl_system *s, int32_t *begin, int32_t *end);
+/* After the elements are added, before the constraints: a system assembled on several ranks holds on each
+ * only its own elements' part; this sums the parts over the ranks (b, and A's values with `matrix`), so that
+ * every rank holds the whole assembled system, the same on every rank (one MPI_Allreduce). Nothing on one
+ * rank. */
+int sl_system_complete(sl_system *s, int matrix, sl_diag *d);
 
 /* ---- Dirichlet constraints ---------------------------------------------- */
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice bench STUDY.ini: a work-precision study or a closure comparison
  * (core/study/study.h): every run of the study in its own process, each
- * output measured, one CSV row per run and a PNG plot. */
+ * output measured, one CSV row per run and the plot (SVG and PNG). */
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
@@ -32,8 +32,10 @@ static const char bench_usage[] =
     "  DIR/STUDY.csv          one row per run: status, CPU and wall time, peak\n"
     "                         memory, steps, rejected steps, the quantity, its\n"
     "                         error and observed order, the failure message\n"
-    "  DIR/STUDY.png          error against CPU time (log-log), one curve per\n"
+    "  DIR/STUDY.svg          error against the points (with the observed order)\n"
+    "                         and against CPU time (log-log), one curve per\n"
     "                         variant; a comparison plots the quantity itself\n"
+    "  DIR/STUDY.png          the same figure as a raster image\n"
     "  DIR/STUDY_compare.csv  a comparison's quantity, one column per run\n"
     "  -o DIR   where the results go (default: the current folder; created if missing)\n"
     "  --keep   keep each run's output file and log in DIR/STUDY.runs/ (the logs of\n"
@@ -332,12 +334,14 @@ int sl_cmd_bench(int argc, char **argv) {
     return code;
   }
   sl_bench_errors(&b.table);
-  char csv[4300], png[4300], compare[4300];
+  char csv[4300], png[4300], svg[4300], compare[4300];
   snprintf(csv, sizeof csv, "%s/%s.csv", dir, s->name);
   snprintf(png, sizeof png, "%s/%s.png", dir, s->name);
+  snprintf(svg, sizeof svg, "%s/%s.svg", dir, s->name);
   snprintf(compare, sizeof compare, "%s/%s_compare.csv", dir, s->name);
   int comparison = s->m.against == SL_AGAINST_NONE;
-  if (!(rc = sl_bench_write_csv(&b.table, csv, &d)) && !(rc = sl_bench_write_png(&b.table, png, &d)) && comparison)
+  if (!(rc = sl_bench_write_csv(&b.table, csv, &d)) && !(rc = sl_bench_write_plot(&b.table, svg, &d)) &&
+      !(rc = sl_bench_write_plot(&b.table, png, &d)) && comparison)
     rc = sl_bench_write_compare_csv(&b.table, compare, &d);
   if (!rc) {
     /* the observed orders, variant by variant */
@@ -350,7 +354,7 @@ int sl_cmd_bench(int argc, char **argv) {
     }
     int measured = 0;
     for (int i = 0; i < n_runs; ++i) measured += b.table.rows[i].measured;
-    fprintf(stderr, "sluice: wrote %s, %s%s%s (%d of %d runs measured)\n", csv, png, comparison ? ", " : "",
+    fprintf(stderr, "sluice: wrote %s, %s, %s%s%s (%d of %d runs measured)\n", csv, svg, png, comparison ? ", " : "",
             comparison ? compare : "", measured, n_runs);
     if (kept_logs && !keep) fprintf(stderr, "sluice: the logs of the failed runs are in %s\n", runs_dir);
   }

@@ -1,7 +1,6 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* sluice run SCENE.ini: parse and validate a scene, resolve its closures,
  * and run it (models navier_stokes, mixture and two_fluid). */
-#include <dirent.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -238,21 +237,6 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
   return rc;
 }
 
-/* Removes a rank's private output folder and what it holds. */
-static void remove_rank_folder(const char *dir) {
-  DIR *dp = opendir(dir);
-  if (dp) {
-    for (struct dirent *de; (de = readdir(dp));) {
-      if (!strcmp(de->d_name, ".") || !strcmp(de->d_name, "..")) continue;
-      char path[512];
-      snprintf(path, sizeof path, "%s/%s", dir, de->d_name);
-      remove(path);
-    }
-    closedir(dp);
-  }
-  rmdir(dir);
-}
-
 /* --check and --print-config: closure library code (constructors, create())
  * runs in a child process, never in this one; the child prints the report. */
 typedef struct check_job {
@@ -352,20 +336,11 @@ int sl_cmd_run(int argc, char **argv) {
 
   sluice *sc = NULL;
   sluice_error e = {0, ""};
-  /* under mpirun the ranks share the linear solves; rank 0 prints and writes, the others write into a private
-     folder of the working folder that goes at the end */
+  /* under mpirun the ranks share the linear solves; rank 0 prints and writes, the others' output is discarded
+     (sl_model_run) and they print nothing */
   int rank = 0, ranks = 1;
-  char rank_dir[64] = "", rank_out[96] = "";
   if (sluice_ranks(&rank, &ranks, &e)) return sl_cli_error(e.code, "%s", e.msg);
-  if (rank > 0) {
-    snprintf(rank_dir, sizeof rank_dir, ".sluice-rank%d-XXXXXX", rank);
-    if (!mkdtemp(rank_dir)) return sl_cli_error(SL_EFAILED, "rank %d: cannot make a folder for its output", rank);
-    snprintf(rank_out, sizeof rank_out, "%s/out.h5", rank_dir);
-    if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) {
-      remove_rank_folder(rank_dir);
-      return 1;
-    }
-  }
+  if (rank > 0 && (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr))) return 1;
   const char *set_list[MAX_SETS + 1];
   for (int i = 0; i < n_sets; ++i) set_list[i] = sets[i];
   set_list[n_sets] = NULL;
@@ -375,7 +350,7 @@ int sl_cmd_run(int argc, char **argv) {
   if (!rc && (print_config || check_only)) {
     rc = check_isolated(sc, print_config, restart, scene, &e);
   } else if (!rc) {
-    rc = simulate(sc, scene, rank > 0 ? rank_out : out_file, restart, profile, show_iterations, overwrite,
+    rc = simulate(sc, scene, out_file, restart, profile, show_iterations, overwrite,
                   rank > 0 ? NULL : summary_json, &e);
     summary_json = NULL; /* written */
   }
@@ -384,6 +359,5 @@ int sl_cmd_run(int argc, char **argv) {
     fprintf(stderr, "sluice: cannot write the summary '%s'\n", summary_json);
   sluice_close(sc);
   if (rc && e.msg[0]) fprintf(stderr, "%s\n", e.msg);
-  if (rank > 0) remove_rank_folder(rank_dir);
   return rc;
 }

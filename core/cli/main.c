@@ -27,7 +27,7 @@ static const char usage[] =
     "                                  a field of an output file along a line (CSV);\n"
     "                                  --point x,y for one point, --list for the contents\n"
     "  bench STUDY.ini [-o DIR]        a work-precision study or a closure comparison:\n"
-    "                                  every run in its own process; CSV and PNG\n"
+    "                                  every run in its own process; CSV, SVG, PNG\n"
     "  version                         print the version\n"
     "\n"
     "Each command takes --help. Closures are searched in SLUICE_PLUGIN_PATH\n"

@@ -67,6 +67,7 @@ struct sl_output {
   char *xmf_path, *csv_path;
   const char *h5_name; /* base name of path, used inside the sidecar */
   int committed;       /* renamed to path: the old result is gone */
+  int discard;         /* sl_output_open_discard: every call succeeds, nothing is written */
   hid_t file;
   int have_mesh, dim, nodes_per_cell;
   int32_t n_vertices, n_cells;

@@ -56,6 +56,21 @@ static void free_output(sl_output *o) {
 
 int sl_output_open(sl_output **out, const char *path, sl_diag *d) { return sl_output_open_opts(out, path, NULL, d); }
 
+int sl_output_open_discard(sl_output **out, const char *path, sl_diag *d) {
+  *out = NULL;
+  sl_output *o = calloc(1, sizeof *o);
+  if (!o || !(o->path = dup_str(path ? path : "(discarded)"))) {
+    free(o);
+    return sl_diag_set(d, SL_ENOMEM, "out of memory");
+  }
+  o->discard = 1;
+  o->file = o->step_group = -1;
+  o->ck_current = -1;
+  o->xmf_fd = o->csv_fd = -1;
+  *out = o;
+  return 0;
+}
+
 int sl_output_open_opts(sl_output **out, const char *path, const sl_output_opts *opts, sl_diag *d) {
   *out = NULL;
   sl_h5_quiet();
@@ -191,6 +206,7 @@ static int cell_centres(const sl_output *o, int dim, const double *coords, int32
 
 int sl_output_write_mesh(sl_output *o, int dim, int32_t n_vertices, const double *coords, int32_t n_cells,
                          int nodes_per_cell, const int32_t *cells, const char *topology, sl_diag *d) {
+  if (o->discard) return 0;
   if (o->have_mesh) return sl_diag_set(d, SL_EBADINPUT, "%s: the mesh is already written", o->path);
   if (dim < 1 || dim > 3) return sl_diag_set(d, SL_EBADINPUT, "%s: mesh dimension %d is not 1, 2 or 3", o->path, dim);
   if (!coords || !cells) return sl_diag_set(d, SL_EBADINPUT, "%s: mesh coordinates or cells missing", o->path);
@@ -255,6 +271,7 @@ int sl_output_write_mesh(sl_output *o, int dim, int32_t n_vertices, const double
 }
 
 int sl_output_begin_step(sl_output *o, double t, sl_diag *d) {
+  if (o->discard) return 0;
   if (!o->have_mesh) return sl_diag_set(d, SL_EBADINPUT, "%s: write the mesh before the first step", o->path);
   if (o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: step %d is still open", o->path, o->next_index);
   if (t != t) return sl_diag_set(d, SL_EBADINPUT, "%s: output time is NaN", o->path);
@@ -289,6 +306,7 @@ int sl_output_write_field(sl_output *o, const char *name, sl_centring centring, 
 
 int sl_output_write_field_unit(sl_output *o, const char *name, const char *unit, sl_centring centring,
                                int components, const double *values, sl_diag *d) {
+  if (o->discard) return 0;
   if (!unit) unit = "";
   if (!o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: field '%s' written outside a step", o->path, name);
   int rc = sl_io_check_name(name, 200, "field", d);
@@ -360,6 +378,7 @@ void sl_output_stats(const sl_output *o, long *times, long *datasets, double *by
 }
 
 int sl_output_end_step(sl_output *o, sl_diag *d) {
+  if (o->discard) return 0;
   if (!o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: no step is open", o->path);
   o->in_step = 0;
   int index = o->next_index++;
@@ -385,6 +404,7 @@ int sl_output_end_step(sl_output *o, sl_diag *d) {
 }
 
 int sl_output_write_provenance(sl_output *o, const sl_provenance *p, sl_diag *d) {
+  if (o->discard) return 0;
   const char *path = o->path;
   if (!p || (p->n_closures > 0 && !p->closures) || p->n_closures < 0)
     return sl_diag_set(d, SL_EBADINPUT, "%s: provenance missing", path);
@@ -463,6 +483,10 @@ static herr_t close_file(hid_t file) {
 
 int sl_output_close(sl_output *o, sl_diag *d) {
   if (!o) return 0;
+  if (o->discard) {
+    free_output(o);
+    return 0;
+  }
   int rc = 0;
   if (o->in_step) { /* an unfinished step stays out of the sidecar */
     H5Gclose(o->step_group);
@@ -485,6 +509,10 @@ int sl_output_close(sl_output *o, sl_diag *d) {
 
 int sl_output_abort(sl_output *o) {
   if (!o) return 0;
+  if (o->discard) {
+    free_output(o);
+    return 0;
+  }
   if (o->in_step) H5Gclose(o->step_group);
   o->in_step = 0;
   if (o->file >= 0) {
@@ -499,6 +527,7 @@ int sl_output_abort(sl_output *o) {
 }
 
 static int add_scalar(sl_output *o, const char *name, const char *unit, double value, sl_diag *d) {
+  if (o->discard) return 0;
   if (!o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: scalar '%s' written outside a step", o->path, name);
   int rc = sl_io_check_name(name, 200, "scalar", d);
   if (rc) return sl_diag_prefix(d, rc, "%s", o->path);

@@ -71,6 +71,12 @@ int sl_output_check_path(const char *path, const sl_output_opts *opts, sl_diag *
 int sl_output_open_opts(sl_output **out, const char *path, const sl_output_opts *opts, sl_diag *d);
 /* With the default opts: not from a scene, no overwrite. */
 int sl_output_open(sl_output **out, const char *path, sl_diag *d);
+/* A writer that writes nothing: every call below succeeds and does nothing,
+ * sl_output_stats counts nothing, no file is checked, created or removed.
+ * The ranks after the first of a run on several (mpirun) hold the whole
+ * state as rank 0 does and take the same path through the output calls;
+ * rank 0 alone writes. path is kept for messages only (may be NULL). */
+int sl_output_open_discard(sl_output **out, const char *path, sl_diag *d);
 /* The run failed: closes and frees. Before the first complete output time
  * (or checkpoint) the new file is removed and what was there before stays:
  * returns 0 then, 1 when the file was kept. */

@@ -1,6 +1,10 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Point sampling of output fields: locate each point in the output mesh,
- * then interpolate with the cell's own Lagrange basis (see sample.h). */
+ * then interpolate with the cell's own Lagrange basis (see sample.h).
+ * Second-order cells (Edge_3, Triangle_6, Quadrilateral_9) are
+ * isoparametric: their geometry is the map of all their nodes, so a cell
+ * whose mid-edge nodes lie off the chords (a curved wall) is curved, and a
+ * point is located in it by Newton's method on that map. */
 #include "core/io/sample.h"
 
 #include <math.h>
@@ -27,9 +31,10 @@ static const struct {
  * tried against the few cells of its bin, not the whole mesh. */
 typedef struct locator {
   const sl_output_mesh *m;
-  const sl_element *geo; /* P1/Q1 of the corner vertices: the geometry map */
+  const sl_element *geo; /* the geometry map: the node fields' basis (isoparametric) */
   const sl_element *fe;  /* the node fields' basis */
   int dim, nv;           /* mesh dimension (1 or 2), corners per cell */
+  int ng;                /* nodes of the geometry map per cell */
   double lo[2], hi[2];   /* box of all cells (slightly enlarged) */
   double h[2];           /* bin sizes */
   int nb[2];             /* bins per direction */
@@ -41,11 +46,59 @@ static const double *corner(const locator *L, int c, int k) {
   return L->m->coords + 3 * (size_t)L->m->cells[(size_t)c * L->m->nodes_per_cell + k];
 }
 
-/* Box of cell c, enlarged so that points the inside test accepts are in it. */
+/* The reference node of the geometry at (a, b), or -1. */
+static int ref_node(const locator *L, double a, double b) {
+  for (int k = 0; k < L->ng; ++k)
+    if (L->geo->nodes[k][0] == a && L->geo->nodes[k][1] == b) return k;
+  return -1;
+}
+
+/* The Bezier (Bernstein) control point of the quadratic edge through corners
+ * a, b and its mid node m: 2 m - (a + b) / 2. The curve lies in the convex
+ * hull of a, it and b (Farin 2002, ch. 3). */
+static void edge_control(const locator *L, int c, int m, double out[2]) {
+  const double *xm = corner(L, c, m);
+  const double *ref = L->geo->nodes[m];
+  for (int a = 0; a < L->nv; ++a)
+    for (int b = a + 1; b < L->nv; ++b) {
+      const double *ra = L->geo->nodes[a], *rb = L->geo->nodes[b];
+      if (0.5 * (ra[0] + rb[0]) != ref[0] || 0.5 * (ra[1] + rb[1]) != ref[1]) continue;
+      const double *xa = corner(L, c, a), *xb = corner(L, c, b);
+      for (int i = 0; i < 2; ++i) out[i] = 2.0 * xm[i] - 0.5 * (xa[i] + xb[i]);
+      return;
+    }
+  out[0] = xm[0], out[1] = xm[1];
+}
+
+/* Box of cell c, enlarged so that points the inside test accepts are in it:
+ * the box of the control points of the map in Bernstein form, which holds
+ * the whole (curved) cell. */
 static void cell_box(const locator *L, int c, double lo[2], double hi[2]) {
   lo[0] = lo[1] = INFINITY, hi[0] = hi[1] = -INFINITY;
-  for (int k = 0; k < L->nv; ++k) {
-    const double *p = corner(L, c, k);
+  for (int k = 0; k < L->ng; ++k) {
+    double p[2];
+    const double *x = corner(L, c, k);
+    p[0] = x[0], p[1] = L->dim == 2 ? x[1] : 0.0;
+    if (k >= L->nv) {
+      const double *r = L->geo->nodes[k];
+      if (L->geo->cell == SL_CELL_QUAD4 && r[0] == 0.0 && r[1] == 0.0) {
+        /* the centre of Q9: tensor product of the edge conversions,
+         * 4 x_11 - x_01 - x_21 - (b_10 + b_12) / 2 */
+        int w = ref_node(L, -1, 0), e = ref_node(L, 1, 0), s = ref_node(L, 0, -1), n = ref_node(L, 0, 1);
+        if (w >= 0 && e >= 0 && s >= 0 && n >= 0) {
+          double bs[2], bn[2];
+          edge_control(L, c, s, bs), edge_control(L, c, n, bn);
+          const double *xw = corner(L, c, w), *xe = corner(L, c, e);
+          for (int i = 0; i < L->dim; ++i) p[i] = 4.0 * x[i] - xw[i] - xe[i] - 0.5 * (bs[i] + bn[i]);
+        }
+      } else {
+        double q[2];
+        edge_control(L, c, k, q);
+        p[0] = q[0], p[1] = L->dim == 2 ? q[1] : 0.0;
+      }
+      /* the node itself lies on the cell too */
+      for (int i = 0; i < L->dim; ++i) lo[i] = fmin(lo[i], x[i]), hi[i] = fmax(hi[i], x[i]);
+    }
     for (int i = 0; i < L->dim; ++i) lo[i] = fmin(lo[i], p[i]), hi[i] = fmax(hi[i], p[i]);
   }
   double ext = hi[0] - lo[0];
@@ -74,10 +127,11 @@ static int locator_build(locator *L, const sl_output_mesh *m, const char *path, 
   for (int i = 0; i < (int)(sizeof topologies / sizeof topologies[0]); ++i)
     if (strcmp(m->topology, topologies[i].name) == 0) t = i;
   if (t < 0) return sl_diag_set(d, SL_EBADINPUT, "%s: cannot sample a mesh of topology '%s'", path, m->topology);
-  L->geo = sl_element_lagrange(topologies[t].cell, 1);
-  L->fe = sl_element_lagrange(topologies[t].cell, topologies[t].order);
+  L->geo = sl_element_lagrange(topologies[t].cell, topologies[t].order);
+  L->fe = L->geo;
   L->dim = L->geo->dim;
-  L->nv = L->geo->n_basis;
+  L->nv = sl_element_lagrange(topologies[t].cell, 1)->n_basis;
+  L->ng = L->geo->n_basis;
   if (m->nodes_per_cell != L->fe->n_basis)
     return sl_diag_set(d, SL_EBADINPUT, "%s: topology %s has %d nodes per cell, the file has %d", path, m->topology,
                        L->fe->n_basis, m->nodes_per_cell);
@@ -141,19 +195,21 @@ static int locator_build(locator *L, const sl_output_mesh *m, const char *path, 
 }
 
 /* Reference coordinates of x in cell c by Newton's method on the geometry
- * map (one step for affine cells); 1 when x lies in the cell. */
+ * map (one step for affine cells; a few for bilinear and curved ones); 1
+ * when x lies in the cell. */
 static int try_cell(const locator *L, int c, const double x[2], double xi[2]) {
-  double X[4][2];
-  for (int k = 0; k < L->nv; ++k) {
+  double X[SL_ELEMENT_MAX_BASIS][2];
+  for (int k = 0; k < L->ng; ++k) {
     const double *p = corner(L, c, k);
     X[k][0] = p[0], X[k][1] = L->dim == 2 ? p[1] : 0.0;
   }
   xi[0] = xi[1] = L->geo->cell == SL_CELL_TRI3 ? 1.0 / 3.0 : 0.0;
   int converged = 0;
-  for (int it = 0; it < 30 && !converged; ++it) {
-    double N[4], dN[4][2], r[2] = {-x[0], L->dim == 2 ? -x[1] : 0.0}, J[2][2] = {{0, 0}, {0, 0}};
+  for (int it = 0; it < 50 && !converged; ++it) {
+    double N[SL_ELEMENT_MAX_BASIS], dN[SL_ELEMENT_MAX_BASIS][2], r[2] = {-x[0], L->dim == 2 ? -x[1] : 0.0};
+    double J[2][2] = {{0, 0}, {0, 0}};
     L->geo->eval(xi, N, dN);
-    for (int k = 0; k < L->nv; ++k)
+    for (int k = 0; k < L->ng; ++k)
       for (int i = 0; i < 2; ++i) {
         r[i] += N[k] * X[k][i];
         for (int j = 0; j < 2; ++j) J[i][j] += X[k][i] * dN[k][j];
@@ -168,6 +224,7 @@ static int try_cell(const locator *L, int c, const double x[2], double xi[2]) {
     }
     if (!isfinite(dxi) || !isfinite(deta)) return 0;
     xi[0] -= dxi, xi[1] -= deta;
+    if (fabs(xi[0]) + fabs(xi[1]) > 10.0) return 0; /* far outside: Newton on a curved map may wander */
     converged = fabs(dxi) + fabs(deta) < 1e-13;
   }
   if (!converged) return 0; /* far outside a bilinear cell Newton may wander */

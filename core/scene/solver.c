@@ -109,5 +109,13 @@ int sl_scene_linsolve(const sl_scene *sc, int32_t n, sl_linsolve **ls, const cha
     char at[400];
     return given ? sl_diag_prefix(d, SL_EBADINPUT, "%s", sl_scene_where(sc, &sc->solver.ordering, at, sizeof at)) : rc;
   }
+  /* auto chose UMFPACK: where its crude pivot ratio calls the matrix singular, KLU takes over (once), with the
+     ordering the scene gives KLU */
+  if (which == 0 && strcmp(*name, "umfpack") == 0 &&
+      (rc = sl_linsolve_set_fallback(*ls, "klu", given ? sc->solver.ordering : k ? (int)k->def : 0, d))) {
+    sl_linsolve_destroy(*ls);
+    *ls = NULL;
+    return rc;
+  }
   return 0;
 }

@@ -31,6 +31,10 @@ struct sl_linsolve {
   int numeric_since_symbolic;
   sl_krylov kry;
   double *kry_b;     /* copy of b for in-place solves through FGMRES */
+  /* sl_linsolve_set_fallback: the solver that takes over from a singular factorisation, once */
+  const sl_linsolve_ops *fallback;
+  int fallback_ordering;
+  char fallback_note[400];
 };
 
 static const sl_linsolve_reuse reuse_defaults = {.enabled = 1, .max_iterations = 20, .slow_iterations = 7};
@@ -65,6 +69,11 @@ int sl_linsolve_ranks(int *rank, int *size, sl_diag *d) {
   if (!n) r = getenv("PMI_RANK"), n = getenv("PMI_SIZE");
   *rank = r ? atoi(r) : 0;
   *size = n && atoi(n) > 0 ? atoi(n) : 1;
+  return 0;
+}
+int sl_linsolve_agree(int rc) { return rc; }
+int sl_linsolve_sum_ranks(double *x, int64_t n, sl_diag *d) {
+  (void)x, (void)n, (void)d;
   return 0;
 }
 #endif
@@ -137,6 +146,41 @@ void sl_linsolve_destroy(sl_linsolve *ls) {
   free(ls);
 }
 
+int sl_linsolve_set_fallback(sl_linsolve *ls, const char *name, int ordering, sl_diag *d) {
+  for (int i = 0; i < N_BUILT; ++i)
+    if (strcmp(name, solver_names[i]) == 0) {
+      ls->fallback = solver_ops[i];
+      ls->fallback_ordering = ordering;
+      return 0;
+    }
+  return sl_diag_set(d, SL_EBADINPUT, "unknown linear solver '%s' to fall back on", name);
+}
+
+const char *sl_linsolve_fallback_note(const sl_linsolve *ls) { return ls->fallback_note; }
+
+/* The current backend found A singular: the fallback's backend replaces it. */
+static int take_over(sl_linsolve *ls, sl_diag *d) {
+  const sl_linsolve_ops *next = ls->fallback;
+  ls->fallback = NULL; /* once */
+  double pivot_ratio = ls->st.rcond;
+  void *backend = NULL;
+  int rc = next->create(&backend, d);
+  if (!rc && ls->fallback_ordering != SL_ORDERING_AUTO && next->set_ordering)
+    rc = next->set_ordering(backend, ls->fallback_ordering, d);
+  if (rc) {
+    if (backend) next->destroy(backend);
+    return rc;
+  }
+  snprintf(ls->fallback_note, sizeof ls->fallback_note, "%s found the matrix numerically singular (pivot ratio "
+           "%.3g): %s took over", ls->ops->name, pivot_ratio, next->name);
+  ls->ops->destroy(ls->backend);
+  ls->ops = next, ls->backend = backend;
+  ls->have_symbolic = ls->have_numeric = 0;
+  ls->st.singular = 0;
+  ls->st.ordering = NULL;
+  return 0;
+}
+
 int sl_linsolve_set_ordering(sl_linsolve *ls, const char *name, sl_diag *d) {
   static const char *const names[] = {"auto", "amd", "colamd", "metis"};
   int o = -1;
@@ -182,7 +226,8 @@ const sl_linsolve_stats *sl_linsolve_get_stats(const sl_linsolve *ls) { return &
 
 void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len) {
   const sl_linsolve_stats *s = &ls->st;
-  int k = snprintf(buf, len, "%s%s%s%s: %ld symbolic %.3g s, %ld numeric %.3g s", ls->ops->name,
+  int k = snprintf(buf, len, "%s%s%s%s%s%s: %ld symbolic %.3g s, %ld numeric %.3g s", ls->fallback_note,
+                   ls->fallback_note[0] ? "; " : "", ls->ops->name,
                    s->ordering ? " (" : "", s->ordering ? s->ordering : "", s->ordering ? " ordering)" : "",
                    s->n_symbolic, s->t_symbolic, s->n_numeric, s->t_numeric);
   if (k >= 0 && (size_t)k < len && s->n_numeric_skipped > 0)
@@ -247,8 +292,13 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
           return sl_diag_set(d, SL_EFAILED, "%s: matrix entry (%d, %d) is not finite (%g)", name, (int)i,
                              (int)A->col_idx[p], A->values[p]);
     double t0 = now();
+    ls->st.singular = 0;
     int rc = ls->ops->numeric(ls->backend, A, &ls->st, d);
     ls->st.t_numeric += now() - t0;
+    if (rc && rc == SL_EFAILED && ls->st.singular && ls->fallback && !(rc = take_over(ls, d))) {
+      ls->reason = reason;
+      return sl_linsolve_factor(ls, A, d); /* the same matrix, by the solver that took over */
+    }
     if (rc) return rc; /* stays without a numeric factorisation: the next call retries */
     ++ls->st.n_numeric;
     ++ls->st.refactor_reason[reason];

@@ -64,6 +64,7 @@ typedef struct sl_linsolve_stats {
   int krylov_max;           /* most iterations of one accepted reuse */
   long refactor_reason[SL_REFACTOR_N]; /* numeric factorisations by reason; they sum to n_numeric */
   double t_krylov; /* of t_solve, the wall-clock seconds in FGMRES (its preconditioner solves, failed attempts) */
+  int singular; /* the last numeric factorisation failed because the backend found the matrix numerically singular */
 } sl_linsolve_stats;
 
 /* A backend. Every function returns 0 or an SL_E* code with d set. The
@@ -119,6 +120,12 @@ int sl_linsolve_petsc_scene_options(const char *options, sl_diag *d);
  * PMI_SIZE). With PETSc and a launcher, MPI starts here (through PETSc); without PETSc, *size is the
  * launcher's so that a caller can refuse to run the same scene N times. */
 int sl_linsolve_ranks(int *rank, int *size, sl_diag *d);
+/* On several ranks: the largest of every rank's rc (0 when all are 0), so that a step one rank alone can fail
+ * (opening the output, which rank 0 alone does) is failed by all; on one rank (or without PETSc) rc itself. */
+int sl_linsolve_agree(int rc);
+/* On several ranks: x[0..n) becomes the sum over the ranks of their x, the same on every rank (a system each
+ * rank assembled from its own cells, sl_system_complete); on one rank nothing. */
+int sl_linsolve_sum_ranks(double *x, int64_t n, sl_diag *d);
 
 typedef struct sl_linsolve sl_linsolve;
 
@@ -127,6 +134,16 @@ typedef struct sl_linsolve sl_linsolve;
 int sl_linsolve_create(sl_linsolve **ls, const char *name, sl_diag *d);
 int sl_linsolve_create_ops(sl_linsolve **ls, const sl_linsolve_ops *ops, sl_diag *d);
 void sl_linsolve_destroy(sl_linsolve *ls);
+/* Once: when a numeric factorisation fails because this solver finds the matrix numerically singular
+ * (stats.singular), the solver `name` (with the ordering SL_ORDERING_* where it takes one) takes over for
+ * the rest of the run and factorises the same matrix; the summary says so. For a choice made on the
+ * user's behalf (linear = auto): UMFPACK's pivot ratio, min |U_ii| / max |U_ii| of the scaled matrix, is a
+ * crude condition estimate that calls some well-posed saddle points singular (the DFG cylinder in Q2/Q1
+ * quadrangles, 2.5e-19) that KLU factorises with a condition estimate far above the epsilon. */
+int sl_linsolve_set_fallback(sl_linsolve *ls, const char *name, int ordering, sl_diag *d);
+/* The fallback taken, for a log ("umfpack found the matrix numerically singular (pivot ratio 2.5e-19): klu
+ * took over"), or "" when none; sl_linsolve_summary starts with it. */
+const char *sl_linsolve_fallback_note(const sl_linsolve *ls);
 
 /* The default solver for n unknowns, chosen by measurement (bench_transient_cost,
  * docs/transient_cost.md): "klu" below SL_LINSOLVE_KLU_MAX_UNKNOWNS, where its

@@ -151,6 +151,7 @@ static int klu_numeric_(void *backend, const sl_csr *A, sl_linsolve_stats *st, s
   if (!(s->c.rcond >= DBL_EPSILON)) {
     klu_free_numeric(&s->num, &s->c);
     s->num = NULL;
+    st->singular = 1;
     return sl_diag_set(d, SL_EFAILED,
                        "klu: matrix is numerically singular (pivot ratio %.3g) in the numeric factorisation of a %d x "
                        "%d matrix",

@@ -73,6 +73,26 @@ int sl_linsolve_ranks(int *rank, int *size, sl_diag *d) {
   return 0;
 }
 
+int sl_linsolve_agree(int rc) {
+  PetscMPIInt n = 1;
+  if (!petsc_started || MPI_Comm_size(PETSC_COMM_WORLD, &n) || n == 1) return rc;
+  int all = rc;
+  if (MPI_Allreduce(&rc, &all, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD)) return rc ? rc : SL_EFAILED;
+  return all;
+}
+
+int sl_linsolve_sum_ranks(double *x, int64_t n, sl_diag *d) {
+  PetscMPIInt size = 1;
+  if (!petsc_started || MPI_Comm_size(PETSC_COMM_WORLD, &size) || size == 1) return 0;
+  /* in pieces of at most 2^26 values: MPI's count is an int */
+  for (int64_t at = 0; at < n; at += (int64_t)1 << 26) {
+    int count = (int)(n - at < ((int64_t)1 << 26) ? n - at : (int64_t)1 << 26);
+    if (MPI_Allreduce(MPI_IN_PLACE, x + at, count, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD))
+      return sl_diag_set(d, SL_EFAILED, "petsc: summing the ranks' parts of an assembled system failed");
+  }
+  return 0;
+}
+
 static int petsc_fail(PetscErrorCode e, const char *what, sl_diag *d) {
   const char *text = NULL;
   PetscErrorMessage(e, &text, NULL);

@@ -92,6 +92,7 @@ static int umf_numeric(void *backend, const sl_csr *A, sl_linsolve_stats *stats,
   if (st != UMFPACK_OK && st != UMFPACK_WARNING_determinant_underflow && st != UMFPACK_WARNING_determinant_overflow) {
     if (s->num) umfpack_dl_free_numeric(&s->num);
     s->num = NULL;
+    stats->singular = st == UMFPACK_WARNING_singular_matrix;
     return umf_fail(st, "numeric factorisation", A->n_rows, d);
   }
   /* Crude estimate min|U_ii| / max|U_ii| of the scaled matrix: below the
@@ -99,6 +100,7 @@ static int umf_numeric(void *backend, const sl_csr *A, sl_linsolve_stats *stats,
   if (!(s->info[UMFPACK_RCOND] >= DBL_EPSILON)) {
     umfpack_dl_free_numeric(&s->num);
     s->num = NULL;
+    stats->singular = 1;
     return sl_diag_set(d, SL_EFAILED,
                        "umfpack: matrix is numerically singular (pivot ratio %.3g) in the numeric factorisation of a "
                        "%d x %d matrix",

@@ -69,9 +69,16 @@ typedef struct sl_newton_opts {
   int linear;           /* the problem is linear: one solve, then the residual b - A du is reported */
   int matrix_current;   /* with linear: A already holds the operator; assemble the residual only */
   double min_step;      /* smallest line-search factor; default 1/64 */
+  /* A solve that starts from a good prediction (a time step from the BDF predictor): the estimate of the next
+     correction may end it after its first iteration (otherwise after the second at the earliest, a far start's
+     first contraction being no guide), and a full step's trial point is assembled residual only, its matrix
+     only when one more iteration is needed (the test at the top of the next iteration then takes the terms'
+     scale T with the matrix of the previous iterate). */
+  int predicted;
   double linear_rtol;   /* each correction's relative residual |b - A du|_2 <= linear_rtol |b|_2, so that
                            the solver may reuse an older factorisation (sl_linsolve_solve_rtol); default
-                           SL_NEWTON_LINEAR_RTOL; negative: direct solves. A linear problem solves directly. */
+                           SL_NEWTON_LINEAR_RTOL (predicted: at least 1e-2 rtol); negative: direct solves. A
+                           linear problem solves directly. */
   /* Called once per iteration before its correction is taken (--monitor): the iteration (from 1), whether
      it is a Picard one, its relative correction, the residual at u and the terms' scale. May be NULL. */
   void (*monitor)(void *user, int iteration, int picard, double correction, double residual, double terms);

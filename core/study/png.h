@@ -1,10 +1,7 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
-/* A PNG encoder for 8-bit RGB images, self-contained: the image data go
- * into a zlib stream of one deflate block with the fixed Huffman codes and
- * greedy LZ77 matches (PNG: ISO/IEC 15948:2004; zlib: RFC 1950; deflate:
- * RFC 1951), so no compression library is needed. A plot of a few hundred
- * thousand pixels, mostly background, comes to tens of kilobytes (1.8 MB
- * with the stored blocks of the first encoder). */
+/* A PNG encoder for 8-bit RGB images (PNG: ISO/IEC 15948:2004): the rows,
+ * filter type 0, go into one zlib stream written by zlib's compress2 at
+ * the best compression level. */
 #ifndef SLUICE_PLOT_PNG_H
 #define SLUICE_PLOT_PNG_H
 
@@ -14,9 +11,9 @@
 #include "core/util/diag.h"
 
 /* CRC-32 of ISO 3309 / ITU-T V.42 (reflected polynomial 0xEDB88320), as PNG
- * chunks carry it: start with crc = 0, feed pieces in order. */
+ * chunks carry it (zlib's crc32): start with crc = 0, feed pieces in order. */
 uint32_t sl_crc32(uint32_t crc, const unsigned char *p, size_t n);
-/* Adler-32 of RFC 1950 section 8.2: start with 1, feed pieces in order. */
+/* Adler-32 of RFC 1950 section 8.2 (zlib's adler32): start with 1, feed pieces in order. */
 uint32_t sl_adler32(uint32_t adler, const unsigned char *p, size_t n);
 
 /* The PNG file of a w x h image, rows top to bottom, 3 bytes (R, G, B) a

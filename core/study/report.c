@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
-/* A study's CSV and PNG (see report.h). */
+/* A study's table and CSV (see report.h; the plots: bench_plot.c). */
 #include "core/study/report.h"
 
 #include <errno.h>
@@ -8,7 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/study/chart.h"
 
 int sl_bench_table_init(sl_bench_table *t, const sl_study *s) {
   memset(t, 0, sizeof *t);
@@ -243,106 +242,4 @@ int sl_bench_write_compare_csv(const sl_bench_table *t, const char *path, sl_dia
     }
   }
   return close_out(f, path, d);
-}
-
-/* ---- PNG ------------------------------------------------------------------ */
-
-enum { PNG_W = 960, PNG_H = 640 };
-
-static int failed_runs(const sl_bench_table *t) {
-  int n = 0;
-  for (int i = 0; i < t->n_rows; ++i) n += !t->rows[i].measured;
-  return n;
-}
-
-int sl_bench_write_png(const sl_bench_table *t, const char *path, sl_diag *d) {
-  const sl_study *s = t->study;
-  int nv = s->n_variants, np = s->n_points, n_series = nv;
-  int comparison = s->m.against == SL_AGAINST_NONE;
-  int profile = 0, max_n = np;
-  for (int i = 0; i < t->n_rows; ++i)
-    if (t->rows[i].measured && t->rows[i].m.is_profile) profile = 1, max_n = t->rows[i].m.n > max_n ? t->rows[i].m.n : max_n;
-  if (comparison && profile) n_series = t->n_rows;
-  sl_chart_series *series = calloc((size_t)n_series, sizeof *series);
-  double *xs = calloc((size_t)n_series * (size_t)max_n, sizeof *xs), *ys = calloc((size_t)n_series * (size_t)max_n, sizeof *ys);
-  char (*names)[300] = calloc((size_t)n_series, sizeof *names);
-  const char **labels = calloc((size_t)nv * (size_t)np, sizeof *labels);
-  if (!series || !xs || !ys || !names || !labels) {
-    free(series), free(xs), free(ys), free(names), free(labels);
-    return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", path);
-  }
-  int all_x = 1;
-  for (int p = 0; p < np; ++p) all_x &= isfinite(s->point_x[p]);
-  char quantity[400], title[512], subtitle[1200], xlabel[400], ylabel[600], note[600];
-  sl_bench_quantity_label(s, quantity, sizeof quantity);
-  sl_bench_describe_measure(t, subtitle, sizeof subtitle);
-  snprintf(title, sizeof title, "%s", s->title ? s->title : s->name);
-  if (t->exact[0]) { /* the exact solution's parameters on a second line */
-    size_t used = strlen(subtitle);
-    snprintf(subtitle + used, sizeof subtitle - used, "\n%s", t->exact);
-  }
-  sl_chart c = {.title = title, .subtitle = subtitle, .xlabel = xlabel, .ylabel = ylabel, .note = note,
-                .n_series = n_series, .series = series};
-  if (!comparison) {
-    c.xscale = c.yscale = SL_AXIS_LOG;
-    snprintf(xlabel, sizeof xlabel, "CPU time of the run (s)");
-    if (s->m.against == SL_AGAINST_VALUE) snprintf(ylabel, sizeof ylabel, "|%s - (%.10g)|", quantity, s->m.value);
-    else if (s->m.reduce != SL_REDUCE_NONE || (s->m.scalar && s->m.against != SL_AGAINST_REFERENCE))
-      snprintf(ylabel, sizeof ylabel, "error of %s", quantity);
-    else snprintf(ylabel, sizeof ylabel, "%s error of %s", norm_name(s->m.norm), quantity);
-    for (int v = 0; v < nv; ++v) {
-      for (int p = 0; p < np; ++p) {
-        const sl_bench_row *r = &t->rows[v * np + p];
-        xs[v * max_n + p] = r->measured ? r->run.cpu : NAN;
-        ys[v * max_n + p] = r->error;
-        labels[v * np + p] = s->n_point_keys && v == 0 ? s->points[0].values[p] : NULL; /* one curve labelled: no clutter */
-      }
-      series[v] = (sl_chart_series){.name = s->variant_names[v], .n = np, .x = xs + v * max_n, .y = ys + v * max_n,
-                                    .labels = labels + v * np};
-    }
-  } else if (profile) {
-    c.xscale = c.yscale = SL_AXIS_LINEAR;
-    const sl_bench_row *first = NULL;
-    for (int i = 0; i < t->n_rows && !first; ++i)
-      if (t->rows[i].measured) first = &t->rows[i];
-    const double *l = first ? first->m.line : NULL;
-    if (s->m.scalar) snprintf(xlabel, sizeof xlabel, "t (s)");
-    else if (!l) snprintf(xlabel, sizeof xlabel, "distance along the line");
-    else if (l[1] == 0.0 && l[3] == 0.0 && l[2] > l[0])
-      snprintf(xlabel, sizeof xlabel, "distance from x = %g (along x to %g)", l[0], l[2]);
-    else snprintf(xlabel, sizeof xlabel, "distance from (%g, %g) towards (%g, %g)", l[0], l[1], l[2], l[3]);
-    snprintf(ylabel, sizeof ylabel, "%s", quantity);
-    for (int i = 0; i < t->n_rows; ++i) {
-      const sl_bench_row *r = &t->rows[i];
-      int n = r->measured ? r->m.n : 0;
-      for (int k = 0; k < n; ++k) xs[i * max_n + k] = r->m.s[k], ys[i * max_n + k] = r->m.v[k];
-      if (np > 1) snprintf(names[i], sizeof names[i], "%s; %s", s->variant_names[r->variant], s->point_names[r->point]);
-      else snprintf(names[i], sizeof names[i], "%s", s->variant_names[r->variant]);
-      /* about 20 markers a curve, staggered between curves so that they do not hide each other */
-      int every = n > 30 ? n / 20 : 1;
-      series[i] = (sl_chart_series){.name = names[i], .n = n, .x = xs + i * max_n, .y = ys + i * max_n,
-                                    .marker_every = every, .marker_offset = every * i / (t->n_rows > 0 ? t->n_rows : 1)};
-    }
-  } else {
-    c.xscale = c.yscale = SL_AXIS_LINEAR;
-    if (all_x && s->n_point_keys) snprintf(xlabel, sizeof xlabel, "%s.%s", s->points[0].section, s->points[0].key);
-    else snprintf(xlabel, sizeof xlabel, "point");
-    snprintf(ylabel, sizeof ylabel, "%s", quantity);
-    for (int v = 0; v < nv; ++v) {
-      for (int p = 0; p < np; ++p) {
-        const sl_bench_row *r = &t->rows[v * np + p];
-        xs[v * max_n + p] = all_x ? s->point_x[p] : p;
-        ys[v * max_n + p] = r->measured ? r->m.scalar : NAN;
-      }
-      series[v] = (sl_chart_series){.name = s->variant_names[v], .n = np, .x = xs + v * max_n, .y = ys + v * max_n};
-    }
-  }
-  int failed = failed_runs(t);
-  if (failed)
-    snprintf(note, sizeof note, "sluice bench %s: %d of %d runs not plotted (failed or not measured; see %s.csv)",
-             s->path, failed, t->n_rows, s->name);
-  else snprintf(note, sizeof note, "sluice bench %s: %d runs, each in its own process", s->path, t->n_rows);
-  int rc = sl_chart_write_png(path, &c, PNG_W, PNG_H, d);
-  free(series), free(xs), free(ys), free(names), free(labels);
-  return rc;
 }

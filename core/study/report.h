@@ -45,6 +45,11 @@ void sl_bench_quantity_label(const sl_study *s, char *buf, size_t len);
 int sl_bench_write_csv(const sl_bench_table *t, const char *path, sl_diag *d);
 /* Comparisons: positions (or points) down, one column per run. */
 int sl_bench_write_compare_csv(const sl_bench_table *t, const char *path, sl_diag *d);
-int sl_bench_write_png(const sl_bench_table *t, const char *path, sl_diag *d);
+/* The study's figure (bench_plot.c), as PNG (a path ending in .png) or SVG:
+ * error against the first points key (when its values are numbers) with
+ * reference slopes labelled with the observed order, beside error against
+ * CPU time, log-log, one curve per variant; for a comparison the quantity
+ * along the line (or against the points) per run, linear axes. */
+int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d);
 
 #endif

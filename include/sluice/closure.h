@@ -64,8 +64,36 @@ enum {
   SL_ERR_INTERNAL = -3  /* anything else that cannot be retried */
 };
 
-/* Closure kinds. The inputs and outputs each kind must provide are fixed by
- * its contract (closure-abi.md); a closure may declare extra named inputs. */
+/* Closure kinds. Each kind is a contract: the inputs a closure of the kind
+ * must declare (* : it must return the derivative with respect to it, i.e.
+ * mark it SL_FIELD_DIFF), the outputs the models read, in SI units. The
+ * models supply the other canonical inputs listed further down when the
+ * closure declares them; an input name the host does not know is refused
+ * when the library is loaded. For every kind, evaluate() returns
+ * SL_RECOVERABLE for an input outside the closure's declared validity range
+ * or NaN. The full tables (typical values, ranges supplied, which model
+ * reads what) are in the installed documentation, docs/closure-kinds.md
+ * (share/doc/sluice/ under the install prefix), and writing one step by step
+ * in docs/writing-a-closure.md; `sluice closure kinds` prints them.
+ *
+ *   kind               required inputs   outputs (required; optional)
+ *   drag               phi*, slip*       K [kg m^-3 s^-1], F_s = K (u_f - u_s)
+ *   hindered_settling  phi*              settling_velocity [m s^-1], zero at phi_max;
+ *                                        hindrance [1], terminal_velocity [m s^-1]
+ *   viscosity          (none)            viscosity [Pa s]
+ *   solids_pressure    phi*              p_s [Pa]
+ *   wall_stress        slip_wall*        tau_w [Pa]; bagnold_number [1],
+ *                                        theta_flux [kg s^-3], u_tau [m s^-1], y_plus [1]
+ *   granular           phi, theta        at least one of mu_s [Pa s],
+ *                                        kappa [kg m^-1 s^-1], gamma [kg m^-1 s^-3],
+ *                                        p_s [Pa], g0 [1]
+ *   migration          phi               at least one of D_c [m^2], D_mu [m^2 s^-1]
+ *   turbulence         k, epsilon        mu_t [Pa s]; mu_t_k, mu_t_eps [Pa s],
+ *                                        eps_production [s^-1],
+ *                                        eps_sink [kg m^-3 s^-1], c_mu [1]
+ *   densification      nbar              nbar_new [1]; volumetric_strain_increment [1]
+ *
+ * A closure may declare extra named inputs beyond these. */
 typedef enum sl_kind {
   SL_KIND_DRAG = 1,
   SL_KIND_HINDERED_SETTLING = 2,
@@ -103,7 +131,8 @@ typedef struct sl_param_desc {
 #define SL_FIELD_DIFF 1u     /* input: the closure returns d(outputs)/d(this input) */
 #define SL_FIELD_OPTIONAL 2u /* output: the host may pass NULL when it does not need it */
 
-/* Canonical input names the host knows how to supply (architecture.md 4):
+/* Canonical input names the host knows how to supply (the full list with
+ * ranges: docs/closure-kinds.md):
  *   phi         solids volume fraction                  1
  *   slip        |u_f - u_s|, slip speed                  m s^-1
  *   shear_rate  sqrt(2 D:D), shear-rate magnitude        s^-1

@@ -4,7 +4,9 @@
  * triangles and Edge_3 lines, linear on distorted Q1, on P1 triangles and on
  * Polyline lines), read back at points
  * along lines to 1e-12; cell fields; points outside the mesh (beyond the
- * box and in a notch); time selection and its errors; the file listing;
+ * box and in a notch); curved (isoparametric) Q9 and P2 cells of an annulus
+ * sector, a linear field read back just inside the curved wall; time
+ * selection and its errors; the file listing;
  * the Edge_3 topology in the writer and reader.
  *
  * `io_sample --write-fixtures DIR` only writes the files the CLI tests
@@ -126,6 +128,35 @@ static void edge3_mesh(mesh *m, const double *xs, int n) {
   }
 }
 
+/* Second-order cells of the annulus sector 0.5 <= r <= 1, 0 <= theta <= pi/2
+ * on nr x nt polar cells, every node (mid-edge ones included) placed at its
+ * polar position, so the edges along theta are arcs sampled at three points
+ * (curved, isoparametric cells): Q9 (tri = 0) or two P2 triangles a cell. */
+static void polar_point(int i, int j, int nr, int nt, double *x, double *y) {
+  double r = 0.5 + 0.5 * i / (2.0 * nr), t = 0.5 * M_PI * j / (2.0 * nt);
+  *x = r * cos(t), *y = r * sin(t);
+}
+
+static void curved_mesh(mesh *m, int nr, int nt, int tri) {
+  int NX = 2 * nr + 1, NY = 2 * nt + 1;
+  m->dim = 2, m->nv = NX * NY, m->nc = 0, m->npc = tri ? 6 : 9, m->topology = tri ? "Triangle_6" : "Quadrilateral_9";
+  for (int j = 0; j < NY; ++j)
+    for (int i = 0; i < NX; ++i) polar_point(i, j, nr, nt, &m->xy[2 * (j * NX + i)], &m->xy[2 * (j * NX + i) + 1]);
+  static const int di[9] = {0, 2, 2, 0, 1, 2, 1, 0, 1}, dj[9] = {0, 0, 2, 2, 0, 1, 2, 1, 1};
+  /* P2: corners, then the mids of 0-1, 1-2, 2-0 (lattice offsets) */
+  static const int ti[2][6] = {{0, 2, 2, 1, 2, 1}, {0, 2, 0, 1, 1, 0}}, tj[2][6] = {{0, 0, 2, 0, 1, 1}, {0, 2, 2, 1, 2, 1}};
+  for (int b = 0; b < nt; ++b)
+    for (int a = 0; a < nr; ++a) {
+      if (!tri) {
+        for (int k = 0; k < 9; ++k) m->cells[9 * m->nc + k] = (2 * b + dj[k]) * NX + 2 * a + di[k];
+        ++m->nc;
+        continue;
+      }
+      for (int t = 0; t < 2; ++t, ++m->nc)
+        for (int k = 0; k < 6; ++k) m->cells[6 * m->nc + k] = (2 * b + tj[t][k]) * NX + 2 * a + ti[t][k];
+    }
+}
+
 /* ---- fields and files -------------------------------------------------- */
 
 typedef double (*fn2)(double x, double y);
@@ -135,6 +166,7 @@ static double f_quad(double x, double y) { return 1.0 + x - 2.0 * y + 3.0 * x * 
 static double f_quad2(double x, double y) { return 0.3 - x * x + 2.0 * x * y + y; }
 static double f_lin(double x, double y) { return 2.0 - 0.5 * x + 3.0 * y; }
 static double f_1d(double x, double y) { return (void)y, 2.0 - x + 4.0 * x * x; }
+static double g_lin(double x, double y) { return -1.0 + 4.0 * x - 0.25 * y; }
 
 /* One file: steps at times[k]; "phi" = (k + 1) f at the nodes, "velocity" =
  * (f, g) at the nodes (2 components, stored as 3), "pressure" = 10 k + cell
@@ -203,6 +235,46 @@ static int check_line(const char *path, double t, int k, const double *xy, int n
 static const double three_times[3] = {0.0, 0.5, 1.0};
 
 /* ---- tests ------------------------------------------------------------- */
+
+/* Curved cells: a field linear in x and y, given at the nodes of the
+ * isoparametric cells, is reproduced exactly by the interpolant composed
+ * with the inverse of the quadratic map, so it reads back to rounding at
+ * points just inside the curved outer wall: between the arc's quadratic
+ * and the chord, where a straight-sided cell holds no point. */
+static void test_curved(void) {
+  enum { NR = 2, NT = 3, NS = 7 };
+  static const double s_at[NS] = {-0.95, -0.7, -0.3, 0.0, 0.25, 0.6, 0.9};
+  for (int tri = 0; tri < 2; ++tri) {
+    mesh m;
+    curved_mesh(&m, NR, NT, tri);
+    const char *path = tri ? "sample_curved_tri6.h5" : "sample_curved_q9.h5";
+    CHECK(write_file(path, &m, f_lin, g_lin, three_times, 1) == 0);
+    double xy[2 * NT * NS];
+    int n = 0, beyond_chord = 0;
+    for (int b = 0; b < NT; ++b) {
+      double x0, y0, x1, y1, xm, ym;
+      polar_point(2 * NR, 2 * b, NR, NT, &x0, &y0);
+      polar_point(2 * NR, 2 * b + 2, NR, NT, &x1, &y1);
+      polar_point(2 * NR, 2 * b + 1, NR, NT, &xm, &ym);
+      for (int k = 0; k < NS; ++k, ++n) {
+        /* the outer edge's quadratic through its three nodes, pulled in by 1e-9 */
+        double s = s_at[k], N0 = 0.5 * s * (s - 1.0), N1 = 0.5 * s * (s + 1.0), Nm = 1.0 - s * s;
+        double px = N0 * x0 + N1 * x1 + Nm * xm, py = N0 * y0 + N1 * y1 + Nm * ym;
+        xy[2 * n] = (1.0 - 1e-9) * px, xy[2 * n + 1] = (1.0 - 1e-9) * py;
+        /* beyond the chord x0-x1 (counter-clockwise): on its right, away from the origin */
+        double cross = (x1 - x0) * (xy[2 * n + 1] - y0) - (y1 - y0) * (xy[2 * n] - x0);
+        beyond_chord += cross < -1e-6;
+      }
+    }
+    CHECK_MSG(beyond_chord == n, "%s: %d of %d points beyond the chords", path, beyond_chord, n);
+    CHECK_MSG(check_line(path, 0.0, 0, xy, n, f_lin, g_lin) == 0, "%s: points near the curved wall outside", path);
+    /* and through the interior, across the curved edges between cells */
+    double line[2 * 41];
+    line_points(line, 41, 0.7, 0.05, 0.05, 0.7);
+    CHECK_MSG(check_line(path, 0.0, 0, line, 41, f_lin, g_lin) == 0, "%s: interior points outside", path);
+    remove(path);
+  }
+}
 
 static void test_q9_rectangles(void) {
   static mesh m;
@@ -487,6 +559,7 @@ int main(int argc, char **argv) {
   test_q9_distorted();
   test_tri6();
   test_edge3();
+  test_curved();
   test_locator_many_cells();
   test_linear_cells();
   test_times_and_errors();

@@ -26,7 +26,11 @@
  * converges. The averages of the 25-45 % tables are printed (and recorded in
  * docs/pipe.md) rather than asserted: the model misses them at low velocity,
  * by up to 70 % at 45 %, as Krampa's CFX-4 models missed above about 10 %.
- * The predictions go to krampa_tables_c_predicted.csv. */
+ * A third variant, model B in full: the kinetic theory's pressure in the radial balance
+ * (kinetic_pressure = true) with the transported granular temperature (granular_temperature = transport),
+ * its own roughness from the 5 % table; the same targets on the rows that converge, and at most 2 of
+ * its 152 rows stopping (named: a limit cycle of k and phi at the wall, C.3 3.48 m/s down and C.4 3.78 up).
+ * The predictions go to krampa_tables_c_predicted.csv (and _model_a, _model_b_full). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -45,7 +49,7 @@ typedef struct row {
 
 static row rows[MAX_ROWS];
 static int n_rows;
-static char scene_b[8192], scene_a[8192];
+static char scene_b[8192], scene_a[8192], scene_bt[8192];
 static const char *scene = scene_b;
 static long runs, failures;
 
@@ -82,6 +86,12 @@ static int load(void) {
            "%.*s\n[closure.solids_pressure]\nmodel = gidaspow_elastic\nmodulus_ref = 1\ncompaction = 600\n"
            "phi_max = 0.63\n",
            (int)(gran - scene_b), scene_b);
+  /* model B in full: the kinetic theory's pressure in the radial balance, theta transported (conduction) */
+  char *kp = strstr(scene_b, "kinetic_pressure = false");
+  CHECK_MSG(kp != NULL, "vertical_pipe.ini has no kinetic_pressure = false");
+  if (!kp) return 1;
+  snprintf(scene_bt, sizeof scene_bt, "%.*skinetic_pressure = true\ngranular_temperature = transport%s",
+           (int)(kp - scene_b), scene_b, kp + strlen("kinetic_pressure = false"));
   return n_rows == 76 ? 0 : 1;
 }
 
@@ -161,7 +171,7 @@ static double calibrate(void) {
 }
 
 typedef struct score {
-  int n, n_avg_ok, n_ud_ok;
+  int n, n_avg_ok, n_ud_ok, n_failed;
   double mean_avg, worst_avg, worst_ud, mean_up, mean_down;
 } score;
 
@@ -170,6 +180,10 @@ static score table_score(const char *table) {
   for (int i = 0; i < n_rows; ++i) {
     const row *r = &rows[i];
     if (strcmp(r->table, table) != 0) continue;
+    if (!isfinite(r->p_up) || !isfinite(r->p_down)) { /* a run that stopped (named; counted in model()) */
+      ++s.n_failed;
+      continue;
+    }
     double avg = 0.5 * (r->p_up + r->p_down), ea = avg / r->avg - 1.0, diff = r->up - r->down;
     double eu = (r->p_up - r->up) / diff, ed = (r->p_down - r->down) / diff;
     double lim = r->v >= 2.5 ? 0.10 : 0.20;
@@ -184,7 +198,7 @@ static score table_score(const char *table) {
 }
 
 /* Calibrates, runs every row, writes the CSV, prints the table; returns the counts asserted. */
-static void model(const char *label, const char *csv, int assert_targets) {
+static void model(const char *label, const char *csv, int assert_targets, long max_failures) {
   runs = 0, failures = 0;
   double ks = calibrate();
   printf("%s: roughness calibrated on Table C.1 (5 %%) alone: k_s = %.3g m (%.3g um)\n", label, ks, 1e6 * ks);
@@ -193,7 +207,7 @@ static void model(const char *label, const char *csv, int assert_targets) {
   failures = 0;
   run_rows(NULL, ks);
   printf("%ld runs in the fit, %ld with every row (%ld failed)\n", fit_runs, runs - fit_runs, failures);
-  CHECK_MSG(failures == 0, "%ld runs failed", failures);
+  CHECK_MSG(failures <= max_failures, "%ld runs failed (at most %ld)", failures, max_failures);
   FILE *f = fopen(csv, "w");
   if (f) {
     fprintf(f,
@@ -215,6 +229,7 @@ static void model(const char *label, const char *csv, int assert_targets) {
   const int pct[7] = {5, 25, 30, 35, 40, 45, 45};
   for (int k = 0; k < 7; ++k) {
     score s = table_score(tables[k]);
+    if (s.n_failed) printf("(%s: %d rows not converged, left out)\n", tables[k], s.n_failed);
     printf("| %s | %d %% | %d | %+.1f %% | %+.1f %% | %d of %d | %+.1f %%, %+.1f %% | %.1f %% | %d of %d |\n",
            tables[k], pct[k], s.n, 100.0 * s.mean_avg, 100.0 * s.worst_avg, s.n_avg_ok, s.n, 100.0 * s.mean_up,
            100.0 * s.mean_down, 100.0 * s.worst_ud, s.n_ud_ok, s.n);
@@ -238,9 +253,12 @@ static void model(const char *label, const char *csv, int assert_targets) {
 int main(void) {
   if (load()) return sl_test_summary();
   scene = scene_b;
-  model("model B (vertical_pipe.ini: the kinetic viscosity of Lun et al.)", "krampa_tables_c_predicted.csv", 1);
+  model("model B (vertical_pipe.ini: the kinetic viscosity of Lun et al.)", "krampa_tables_c_predicted.csv", 1, 0);
   scene = scene_a;
   model("model A (no kinetic theory: Bouillard's solids pressure, mu_s = 1e-8 Pa s)",
-        "krampa_tables_c_predicted_model_a.csv", 1);
+        "krampa_tables_c_predicted_model_a.csv", 1, 0);
+  scene = scene_bt;
+  model("model B in full (the kinetic pressure in the radial balance, theta transported)",
+        "krampa_tables_c_predicted_model_b_full.csv", 1, 2);
   return sl_test_summary();
 }

@@ -227,7 +227,8 @@ static uint32_t ratio_colour(double r) {
 
 /* The depth-time map of the pore pressure ratio over the first 30 s (every output, 0.5 s) with the project's
  * image and PNG code (core/study): liquefaction_ratio.png; and the base excess pore pressure and the settlement
- * over the run as a chart: liquefaction_history.png. Both read back by the independent PNG checker. */
+ * over the run as a figure of two panels: liquefaction_history.png and .svg (core/study/chart.h). The PNGs are
+ * read back by the PNG checker. */
 static void pictures(const char *out) {
   const int nt = 61, left = 70, top = 40, pw = 8, ph = 8;
   int n;
@@ -247,17 +248,17 @@ static void pictures(const char *out) {
     free(ru);
   }
   char txt[96];
-  sl_font_draw(&im, left, 8, "PORE PRESSURE RATIO (P - P0)/P_S0, 0.8 MM SAND, LIQUEFACTION.INI", 1, 0x000000, 0);
+  sl_font_draw(&im, left, 8, "pore pressure ratio (p - p0)/p_s0, 0.8 mm sand (liquefaction.ini)", 1, 0x000000, 0);
   for (int k = 0; k <= 30; k += 6) {
     snprintf(txt, sizeof txt, "%d", k);
     sl_font_draw(&im, left + 2 * k * pw - 3, top + cells * ph + 6, txt, 1, 0x000000, 0);
   }
-  sl_font_draw(&im, left + nt * pw / 2 - 30, top + cells * ph + 22, "TIME, S (SHAKING 0-6 S)", 1, 0x000000, 0);
+  sl_font_draw(&im, left + nt * pw / 2 - 30, top + cells * ph + 22, "time t (s); shaking 0-6 s", 1, 0x000000, 0);
   for (int z = 0; z <= (int)H; z += 2) {
     snprintf(txt, sizeof txt, "%d", z);
     sl_font_draw(&im, left - 20, top + (int)(z / h * ph) - 3, txt, 1, 0x000000, 0);
   }
-  sl_font_draw(&im, 12, top + cells * ph / 2 + 40, "DEPTH, M", 1, 0x000000, 1);
+  sl_font_draw(&im, 12, top + cells * ph / 2 + 40, "depth (m)", 1, 0x000000, 1);
   for (int j = 0; j <= 20; ++j) /* the colour bar */
     sl_image_fill(&im, left + nt * pw + 30, top + (20 - j) * cells * ph / 21, left + nt * pw + 50,
                   top + (21 - j) * cells * ph / 21 - 1, ratio_colour(j / 20.0));
@@ -280,12 +281,19 @@ static void pictures(const char *out) {
     pb[k] = 1e-3 * scalar(out, "base_excess_pressure", fmin(t[k], 186.0));
     st[k] = 100.0 * scalar(out, "settlement", fmin(t[k], 186.0)); /* cm */
   }
-  sl_chart_series se[2] = {{.name = "base excess pore pressure, kPa", .n = NH, .x = t, .y = pb, .marker_every = 8},
-                           {.name = "surface settlement, cm", .n = NH, .x = t, .y = st, .marker_every = 8, .dashed = 1}};
-  sl_chart ch = {.title = "liquefaction.ini: 0.8 mm sand, 6 s of shaking",
-                 .subtitle = "from the solids inventory and the fluid pressure over its pre-shaking value",
-                 .xlabel = "time, s", .ylabel = "kPa / cm", .n_series = 2, .series = se};
-  rc = sl_chart_write_png("liquefaction_history.png", &ch, 720, 420, &d);
+  /* two panels: each quantity on its own axis, in its own unit */
+  sl_chart_series se[2] = {{.n = NH, .x = t, .y = pb, .marker_every = 8},
+                           {.n = NH, .x = t, .y = st, .marker_every = 8, .colour = "#D62728", .marker = SL_CHART_MARK_SQUARE}};
+  sl_chart panels[2] = {{.title = "base excess pore pressure", .xlabel = "time t (s)", .ylabel = "excess pore pressure u_{e} (kPa)",
+                         .n_series = 1, .series = &se[0], .legend = SL_LEGEND_NONE},
+                        {.title = "surface settlement", .xlabel = "time t (s)", .ylabel = "settlement (cm)", .n_series = 1,
+                         .series = &se[1], .legend = SL_LEGEND_NONE}};
+  sl_figure ch = {.title = "liquefaction.ini: 0.8 mm sand, 6 s of shaking",
+                  .subtitle = "from the solids inventory and the fluid pressure over its pre-shaking value",
+                  .n_panels = 2, .panels = panels, .columns = 2, .panel_width = 400, .panel_height = 320};
+  rc = sl_figure_write_svg("liquefaction_history.svg", &ch, &d);
+  CHECK_MSG(rc == 0, "liquefaction_history.svg: %s", d.msg);
+  rc = sl_figure_write_png("liquefaction_history.png", &ch, &d);
   CHECK_MSG(rc == 0, "liquefaction_history.png: %s", d.msg);
   why = png_check_file("liquefaction_history.png", &w, &hh, &rgb);
   CHECK_MSG(why == NULL, "liquefaction_history.png: %s", why ? why : "");

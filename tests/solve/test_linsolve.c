@@ -190,6 +190,97 @@ static void singular(const char *name) {
   free(bb), free(xx);
 }
 
+/* A backend whose every numeric factorisation fails: as a singular matrix (pivot ratio 1e-19) or, with
+ * fake_singular = 0, as something else (out of memory). */
+static int fake_singular = 1;
+static int fake_create(void **backend, sl_diag *d) {
+  (void)d;
+  *backend = malloc(1);
+  return *backend ? 0 : SL_ENOMEM;
+}
+static int fake_symbolic(void *backend, const sl_csr *A, sl_diag *d) {
+  (void)backend, (void)A, (void)d;
+  return 0;
+}
+static int fake_numeric(void *backend, const sl_csr *A, sl_linsolve_stats *st, sl_diag *d) {
+  (void)backend, (void)A;
+  st->rcond = 1e-19;
+  st->singular = fake_singular;
+  return sl_diag_set(d, SL_EFAILED, fake_singular ? "fake: matrix is numerically singular" : "fake: out of memory");
+}
+static int fake_solve(void *backend, const sl_csr *A, const double *b, double *x, sl_diag *d) {
+  (void)backend, (void)A, (void)b, (void)x;
+  return sl_diag_set(d, SL_EFAILED, "fake: solve without a factorisation");
+}
+static void fake_destroy(void *backend) { free(backend); }
+static const sl_linsolve_ops fake_ops = {.name = "fake", .create = fake_create, .symbolic = fake_symbolic,
+                                         .numeric = fake_numeric, .solve = fake_solve, .destroy = fake_destroy};
+
+/* sl_linsolve_set_fallback: a backend that finds the matrix singular hands it to KLU once, which solves it
+ * (the manufactured solution to 1e-12) and stays; the summary starts with what happened. A failure that is
+ * not a singular matrix is not handed over; a matrix KLU finds singular too fails with KLU's message, once. */
+static void singular_fallback(void) {
+  sl_diag d = {{0}};
+  sl_csr A = {0};
+  CHECK(poisson_build(&A, 20, 20, 0.0, &d) == 0);
+  int32_t n = A.n_rows;
+  double *xe = malloc((size_t)n * sizeof *xe), *b = malloc((size_t)n * sizeof *b), *x = malloc((size_t)n * sizeof *x);
+  for (int32_t i = 0; i < n; ++i) xe[i] = sin(0.37 * i) + 1.0;
+  sl_csr_matvec(&A, xe, b);
+  sl_linsolve *ls = NULL;
+  CHECK(sl_linsolve_create_ops(&ls, &fake_ops, &d) == 0);
+  CHECK(sl_linsolve_set_fallback(ls, "klu", SL_ORDERING_AUTO, &d) == 0);
+  CHECK(sl_linsolve_fallback_note(ls)[0] == '\0');
+  int rc = sl_linsolve_solve(ls, &A, b, x, &d);
+  CHECK_MSG(rc == 0, "fallback: %s", d.msg);
+  CHECK_MSG(rel_err(x, xe, n) <= 1e-12, "fallback: relative error %.3g", rel_err(x, xe, n));
+  CHECK(strcmp(sl_linsolve_name(ls), "klu") == 0);
+  CHECK(sl_linsolve_get_stats(ls)->n_numeric == 1 && sl_linsolve_get_stats(ls)->n_solves == 1);
+  CHECK_CONTAINS(sl_linsolve_fallback_note(ls), "fake found the matrix numerically singular (pivot ratio 1e-19): klu took over");
+  char sum[512];
+  sl_linsolve_summary(ls, sum, sizeof sum);
+  printf("fallback: %s\n", sum);
+  CHECK(strncmp(sum, "fake found the matrix numerically singular", 42) == 0);
+  CHECK_CONTAINS(sum, "; klu (amd ordering): ");
+  /* new values: KLU factorises them (it stays) */
+  for (int32_t k = 0; k < A.nnz; ++k) A.values[k] *= 2.0;
+  sl_csr_touch(&A);
+  for (int32_t i = 0; i < n; ++i) b[i] *= 2.0;
+  CHECK(sl_linsolve_solve(ls, &A, b, x, &d) == 0 && rel_err(x, xe, n) <= 1e-12);
+  CHECK(strcmp(sl_linsolve_name(ls), "klu") == 0 && sl_linsolve_get_stats(ls)->n_numeric == 2);
+  sl_linsolve_destroy(ls);
+
+  fake_singular = 0; /* not a singular matrix: no fallback */
+  CHECK(sl_linsolve_create_ops(&ls, &fake_ops, &d) == 0);
+  CHECK(sl_linsolve_set_fallback(ls, "klu", SL_ORDERING_AUTO, &d) == 0);
+  CHECK(sl_linsolve_solve(ls, &A, b, x, &d) == SL_EFAILED);
+  CHECK_CONTAINS(d.msg, "fake: out of memory");
+  CHECK(strcmp(sl_linsolve_name(ls), "fake") == 0 && sl_linsolve_fallback_note(ls)[0] == '\0');
+  sl_linsolve_destroy(ls);
+  fake_singular = 1;
+  CHECK(sl_linsolve_create(&ls, "umfpack", &d) == 0);
+  CHECK(sl_linsolve_set_fallback(ls, "pardiso", SL_ORDERING_AUTO, &d) == SL_EBADINPUT);
+  sl_linsolve_destroy(ls);
+  sl_csr_free(&A);
+
+  /* exactly singular (rows 1 and 2 equal): UMFPACK says so, KLU takes over and says so too */
+  const int32_t el[] = {0, 1, 2};
+  CHECK(sl_csr_build_uniform(&A, 3, 1, 3, el, &d) == 0);
+  const double v[9] = {2, 1, 1, 1, 1, 1, 1, 1, 1};
+  CHECK(sl_csr_add_element(&A, 3, el, 3, el, v, &d) == 0);
+  CHECK(sl_linsolve_create(&ls, "umfpack", &d) == 0);
+  CHECK(sl_linsolve_set_fallback(ls, "klu", SL_ORDERING_AUTO, &d) == 0);
+  double b3[3] = {1, 2, 3}, x3[3];
+  CHECK(sl_linsolve_solve(ls, &A, b3, x3, &d) == SL_EFAILED);
+  CHECK_CONTAINS(d.msg, "klu");
+  CHECK_CONTAINS(sl_linsolve_fallback_note(ls), "umfpack found the matrix numerically singular");
+  CHECK(sl_linsolve_solve(ls, &A, b3, x3, &d) == SL_EFAILED);
+  CHECK(strcmp(sl_linsolve_name(ls), "klu") == 0);
+  sl_linsolve_destroy(ls);
+  sl_csr_free(&A);
+  free(xe), free(b), free(x);
+}
+
 static void cholmod_rejects(void) {
   sl_diag d = {{0}};
   sl_csr A = {0};
@@ -285,6 +376,7 @@ int main(void) {
   manufactured("klu", 170, 170, "amd");   /* 28 900 unknowns */
   manufactured("klu", 180, 180, "metis"); /* 32 400 */
   klu_refactor_fallback();
+  singular_fallback();
   cholmod_rejects();
   names();
   return sl_test_summary();

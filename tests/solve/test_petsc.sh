@@ -2,8 +2,10 @@
 # test_petsc.sh SLUICE CONFIGS: the PETSc backend against the direct solvers, its options and the scene's limits.
 # The Stokes cavity (steady saddle point: FGMRES, Schur field split, BoomerAMG) against KLU along both centre
 # lines; the boycott vessel (the mixture, transient steps) with fixed steps against KLU; the options given
-# on the command line, in [solver.petsc] and in PETSC_OPTIONS, in that order of precedence; and what a scene
-# may not set.
+# on the command line, in [solver.petsc] and in PETSC_OPTIONS, in that order of precedence; what a scene
+# may not set; and under mpirun: 1, 2 and 3 ranks against the serial answer, each rank assembling 1/N of the
+# cells (the closure points rank 0 evaluates), ranks > 0 writing no file, a failure to open the output
+# stopping every rank, a restart on another number of ranks.
 set -u
 sluice=$1 configs=$2
 work=$(mktemp -d)
@@ -98,6 +100,46 @@ if command -v mpirun > /dev/null; then
     echo "boycott on $n rank(s): phi differs from KLU's by $dphi"
     check "boycott on $n rank(s) agrees with KLU ($dphi)" below "$dphi" 1e-9
   done
+  # partitioned assembly: each rank assembles its own block of cells and calls the closures there alone. The
+  # Bingham cavity at 12 x 12 cells (144, divisible by 2 and 3), one continuation stage, no cell fields: rank
+  # 0's viscosity points (--profile) are exactly 1/N of the serial run's, and the velocity is the serial one's
+  # to the solver tolerance
+  bq=(--set solver.linear=petsc --set mesh.cells=12,12 --set closure.viscosity.eps=0.5
+      --set solver.continuation_steps=1 --set solver.continuation_from=0.5 --set output.fields=velocity,pressure)
+  points() { sed -n "s|.*closure $1.* \([0-9][0-9]*\) points .*|\1|p" "$2"; }
+  for n in 1 2 3; do
+    mpirun -n $n "$sluice" run "$configs/bingham_cavity.ini" "${bq[@]}" -o bq$n.h5 --profile > bq$n.log 2>&1
+    "$sluice" sample bq$n.h5 --field velocity --line 0.5,0:0.5,1 --n 33 > bq$n.csv 2>/dev/null
+  done
+  # points per assembly (matrix and right-hand side), should the ranks' Newton take a different number
+  per_assembly() {
+    local p a
+    p=$(points "$1" "$2")
+    a=$(sed -n "s|.*assemblies: \([0-9]*\) matrix, \([0-9]*\) right-hand-side.*|\1 + \2|p" "$2" | head -n 1)
+    a=$(( ${a:-0} ))
+    echo $(( ${p:-0} / (a > 0 ? a : 1) ))
+  }
+  p1=$(per_assembly viscosity/bingham bq1.log) p2=$(per_assembly viscosity/bingham bq2.log)
+  p3=$(per_assembly viscosity/bingham bq3.log)
+  echo "bingham cavity: viscosity points per assembly on rank 0: $p1 (1 rank), $p2 (2 ranks), $p3 (3 ranks)"
+  check "1 rank evaluates the viscosity at 144 cells x 9 points an assembly ($p1)" test "$p1" = 1296
+  check "2 ranks: rank 0 evaluates half the viscosity points ($p2 of $p1)" test "$((2 * p2))" = "$p1"
+  check "3 ranks: rank 0 evaluates a third ($p3 of $p1)" test "$((3 * p3))" = "$p1"
+  for n in 2 3; do
+    dv=$(max_diff bq1.csv bq$n.csv 6)
+    echo "bingham cavity on $n ranks: velocity differs from 1 rank's by $dv"
+    check "bingham cavity on $n ranks agrees with 1 rank ($dv)" below "$dv" 1e-8
+  done
+  # the mixture (boycott): its flow's viscosity closure, V = A / N + F on rank 0 (A: the assembly's points, F:
+  # the passes over every cell for the written cell fields): A and F from 2 and 3 ranks give 1 rank's count
+  for n in 1 2 3; do
+    mpirun -n $n "$sluice" run "$box" "${args[@]}" --set solver.linear=petsc -o bv$n.h5 --profile > bv$n.log 2>&1
+  done
+  v1=$(points viscosity/krieger bv1.log) v2=$(points viscosity/krieger bv2.log) v3=$(points viscosity/krieger bv3.log)
+  a=$((6 * (${v2:-0} - ${v3:-0}))) f=$((${v2:-0} - 3 * (${v2:-0} - ${v3:-0})))
+  echo "boycott: viscosity points on rank 0: $v1, $v2, $v3 on 1, 2, 3 ranks (assembly $a, other passes $f)"
+  check "boycott: rank 0 assembles 1/N of the cells' viscosity (A + F = $((a + f)), 1 rank $v1)" \
+    test "$((a + f))" = "${v1:-x}" -a "$a" -gt "$((10 * f))"
   # a checkpoint written on one rank continues on two: the same state as the run without a stop
   "$sluice" run "$box" "${args[@]/time.end=0.05/time.end=0.1}" -o whole.h5 > whole.log 2>&1
   "$sluice" run "$box" "${args[@]}" -o half.h5 > half.log 2>&1
@@ -107,8 +149,30 @@ if command -v mpirun > /dev/null; then
   dphi=$(max_diff whole.csv cont.csv 4)
   check "restart of a 1-rank checkpoint on 2 ranks continues the run ($dphi)" below "$dphi" 1e-9
   check "... on 2 ranks" grep -q "2 ranks)" cont.log
-  check "the ranks' private output folders are gone" test -z "$(ls -A | grep sluice-rank)"
+  check "no rank wrote a private folder" test -z "$(ls -A | grep sluice-rank)"
+  # ranks > 0 write nothing: a run on 2 ranks in a folder of its own leaves the files a run on 1 leaves, with
+  # the same contents (h5diff: every value within a relative 1e-8, the solver's tolerance; the sidecar the same
+  # text, the scalars' CSV within 1e-8)
+  mkdir one two
+  (cd one && "$sluice" run "$box" "${args[@]}" --set solver.linear=petsc -o b.h5 > ../one.log 2>&1)
+  (cd two && mpirun -n 2 "$sluice" run "$box" "${args[@]}" --set solver.linear=petsc -o b.h5 > ../two.log 2>&1)
+  check "2 ranks: the files of 1 rank and no others ($(ls -A two | tr '\n' ' '))" \
+    test "$(ls -A one)" = "$(ls -A two)" -a "$(ls -A one | tr '\n' ' ')" = "b.h5 b.xmf b_scalars.csv "
+  if command -v h5diff > /dev/null; then
+    check "2 ranks: the output equals 1 rank's (h5diff -p 1e-8)" h5diff -p 1e-8 one/b.h5 two/b.h5
+  fi
+  check "2 ranks: the same sidecar" cmp -s one/b.xmf two/b.xmf
+  ds=$(paste -d, one/b_scalars.csv two/b_scalars.csv | awk -F, 'NR == 1 { n = NF / 2; next }
+      { for (c = 1; c <= n; ++c) { a = $c; b = $(c + n); d = a - b; if (d < 0) d = -d; if (a < 0) a = -a;
+          if (d > 1e-8 * a && d > 1e-300) m = 1 } } END { print m + 0 }')
+  check "2 ranks: the same scalars (within a relative 1e-8)" test "$ds" = 0 -a "$(wc -l < one/b_scalars.csv)" = 3
   check "2 ranks say so in the summary" grep -q "2 ranks)" c2.log
+  # rank 0 alone opens the output: when it cannot, every rank stops (exit 2), none waits for it
+  echo "not sluice's" > foreign.h5
+  out=$(timeout 120 mpirun -n 2 "$sluice" run "$cav" --set mesh.cells=8,8 -o foreign.h5 2>&1); rc=$?
+  check "2 ranks, an output rank 0 may not replace: exit 2 on every rank (exit $rc)" test "$rc" = 2
+  check "... saying why" grep -q "was not written by sluice" <<<"$out"
+  check "... and the file is as it was" grep -q "not sluice's" foreign.h5
   mpirun -n 2 "$sluice" run "$cav" -o auto.h5 > auto.log 2>&1
   check "linear = auto on 2 ranks is petsc" grep -q "(fgmres/fieldsplit, [0-9]* iterations, 2 ranks)" auto.log
   out=$(mpirun -n 2 "$sluice" run "$cav" --set solver.linear=klu -o no.h5 2>&1); rc=$?

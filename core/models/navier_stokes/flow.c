@@ -25,6 +25,9 @@ static double cpu(void) {
 
 enum { MAX_COMP = 3 };
 
+/* The Newton tolerance of an adaptive time step, as a fraction of its error tolerance (solve_opts). */
+#define SL_FLOW_STEP_NEWTON_FRACTION 1e-3
+
 const char *const sl_flow_field_names[SL_FLOW_N_FIELDS] = {"velocity",  "pressure", "shear_rate",
                                                            "viscosity", "yielded",  "stream_function"};
 enum { F_VELOCITY = 1, F_PRESSURE = 2, F_SHEAR = 4, F_VISCOSITY = 8, F_YIELDED = 16, F_STREAM = SL_FLOW_STREAM_FUNCTION };
@@ -701,6 +704,17 @@ static int solve_opts(sl_flow *f, double *u, int *iterations, int steady, sl_dia
   sl_newton_opts o = f->nopts;
   if (f->sc->hooks.nonlinear) o.monitor = report_iteration, o.monitor_user = f;
   if (steady) o.interrupt = f->sc->hooks.interrupt;
+  /* A time step starts from the BDF predictor: its first contraction may end it (sl_newton_opts predicted).
+     An adaptive step is accurate to [time] tolerance of the largest velocity: without a [solver]
+     nonlinear_tolerance of the scene's, its iterations stop at 1e-3 of that, as an integrator's Newton
+     iteration stops at a fraction of the local error test (CVODE's 0.1: Hindmarsh et al. 2005, ACM TOMS 31:363,
+     sec. 2.1), not at a steady solve's 1e-8. */
+  if (!steady) {
+    const sl_scene *sc = f->sc;
+    o.predicted = 1;
+    if (sc->time.adaptive && !sl_scene_given(sc, &sc->solver.nonlinear_tolerance))
+      o.rtol = fmax(o.rtol, SL_FLOW_STEP_NEWTON_FRACTION * sc->time.tolerance);
+  }
   int rc = sl_flow_problem_solve(&f->prob, u, f->ls, &o, &st, d);
   if (rc == 0 && st.roundoff) f->st.roundoff_accepted++;
   if (iterations) *iterations = st.iterations;

@@ -15,6 +15,7 @@ int sl_flow_forces(sl_flow_problem *p, const double *u, const unsigned char *wan
   for (int k = 0; k < p->n_tractions && !rc; ++k)
     rc = sl_assemble_flow_traction(&p->sys, th, p->traction[k].boundary, p->traction[k].fn, p->traction[k].user,
                                    p->opts.axisymmetric, d);
+  if (!rc) rc = sl_system_complete(&p->sys, 0, d); /* several ranks: each assembled its own cells */
   if (rc) return sl_diag_prefix(d, rc, "boundary forces");
   const sl_dofmap *vel = th->vel;
   const int nv = m->nv_per_cell, nb = vel->dofs_per_cell;

@@ -57,8 +57,15 @@ int pipe_closures_bind(pipe *p, sl_diag *d) {
                          "kinetic theory (model = lun or gidaspow); the closure gives no %s",
                          g[i]);
   }
+  if (!rc && p->have_gran && p->cfg->granular_temperature == PIPE_THETA_TRANSPORT &&
+      !sl_point_has_output(&p->gran, "kappa"))
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "[closure.granular]: [pipe] granular_temperature = transport needs the conductivity kappa "
+                     "(model = lun or gidaspow)");
   if (!rc) rc = bind(p, &p->psol, "solids_pressure", &p->have_psol, d);
   if (!rc) rc = bind(p, &p->walls, "wall_stress.solids", &p->have_walls, d);
   if (!rc && p->have_walls) p->walls_at_node = sl_point_has_input(&p->walls, "wall_distance");
+  if (!rc && p->have_walls && p->have_gran && p->cfg->granular_temperature == PIPE_THETA_TRANSPORT)
+    p->wall_energy = sl_point_has_output(&p->walls, "theta_flux");
   return rc;
 }

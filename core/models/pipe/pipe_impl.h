@@ -14,6 +14,7 @@
 
 enum { PIPE_NO_SLIP = 0, PIPE_FREE_SLIP, PIPE_WALL_STRESS };
 enum { PIPE_DISPERSION_GRADIENT = 0, PIPE_DISPERSION_SIMONIN };
+enum { PIPE_THETA_ALGEBRAIC = 0, PIPE_THETA_TRANSPORT };
 
 typedef struct pipe_config {
   double diameter, bulk_velocity, solids_fraction, wall_cell, wall_y_plus;
@@ -21,7 +22,10 @@ typedef struct pipe_config {
   double tolerance, relaxation, pseudo_step;
   int solids_wall, kinetic_pressure;
   double solids_schmidt, dispersion_schmidt, crossing_trajectory;
-  int dispersion; /* PIPE_DISPERSION_* */
+  int dispersion;           /* PIPE_DISPERSION_* */
+  int granular_temperature; /* PIPE_THETA_* */
+  int modulation;           /* 0 none, 1 Simonin's */
+  double c_eps3;
 } pipe_config;
 
 /* The host's quantities the closures bind to. */
@@ -64,9 +68,11 @@ typedef struct pipe {
   double c_mu;
   /* wall */
   double tau_fw, tau_sw, u_tau, y_plus, k_wall, eps_wall, a_fw, a_sw;
+  double u_wall;   /* the solids' slip speed at the wall the solids' wall closure saw last */
+  double inv_slip; /* 1/lambda_slip of the solids' wall closure at the wall cell (0: none or free slip) */
   /* closures */
   sl_point_closure turb, wallf, drag, gran, psol, walls;
-  int have_gran, have_psol, have_walls, walls_at_node;
+  int have_gran, have_psol, have_walls, walls_at_node, wall_energy;
   /* solvers */
   sl_cell_scalar cs;
   sl_csr A;
@@ -76,6 +82,9 @@ typedef struct pipe {
   double dirichlet;          /* the value the wall cell's k or epsilon is held at (the cell-scalar hook's) */
   long iterations;
   double change;
+  double relax;             /* the under-relaxation in use: [pipe] relaxation, halved where the iteration stalls */
+  const char *change_field; /* the field and the cell (-1: none) of the last iteration's largest change */
+  int change_cell;
   int converged, warned_yplus;
   char stop_reason[256];
 } pipe;
@@ -88,5 +97,6 @@ int pipe_momentum_init(pipe *p, sl_diag *d);
 int pipe_momentum_solve(pipe *p, sl_diag *d);
 int pipe_solids_coefficients(pipe *p, sl_diag *d);
 int pipe_solids_update(pipe *p, sl_diag *d);
+int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d);
 
 #endif

@@ -83,7 +83,7 @@ int pipe_momentum_solve(pipe *p, sl_diag *d) {
   sl_csr_touch(A);
   int rc = sl_linsolve_solve(p->ls, A, b, p->x, d);
   if (rc) return sl_diag_prefix(d, rc, "pipe: the momentum solve");
-  const double w = p->cfg->relaxation;
+  const double w = p->relax;
   for (int i = 0; i < n; ++i) {
     p->uf[i] += w * (p->x[2 * i] - p->uf[i]);
     p->us[i] += w * (p->x[2 * i + 1] - p->us[i]);

@@ -38,6 +38,17 @@ static const sl_key pipe_keys[] = {
      .help = "the solids at the wall (wall_stress: [closure.wall_stress.solids] against their slip)"},
     {.section = "pipe", .name = "kinetic_pressure", .type = SL_KEY_BOOL, C(kinetic_pressure), .def = 1,
      .help = "with [closure.granular]: its p_s(phi, theta) in the radial solids balance (false: its viscosity only)"},
+    {.section = "pipe", .name = "granular_temperature", .type = SL_KEY_CHOICE, C(granular_temperature),
+     .choices = "algebraic|transport", .def = PIPE_THETA_ALGEBRAIC,
+     .help = "with [closure.granular]: theta from its local balance, or its transport equation with conduction "
+             "(Krampa 2009 eq 5.10 in the standard form; the wall adiabatic, or the solids' wall closure's "
+             "theta_flux)"},
+    {.section = "pipe", .name = "modulation", .type = SL_KEY_CHOICE, C(modulation), .choices = "none|simonin",
+     .help = "the particles' modulation of the fluid's k and epsilon: none (Krampa's models A, B) or Simonin's "
+             "K (k_fs - 2k) with Tchen's equilibrium k_fs (his model C, eqs 4.80-4.83, the drift terms zero here)"},
+    {.section = "pipe", .name = "c_eps3", .type = SL_KEY_REAL, C(c_eps3), .def = 1.2, .min = 0.0, .max = 10.0,
+     .help = "modulation = simonin: C_eps3 of the epsilon equation's C_eps3 (eps/k) times the k modulation "
+             "(Krampa 2009 Table 4.1: 1.2)"},
     {.section = "pipe", .name = "solids_schmidt", .type = SL_KEY_REAL, C(solids_schmidt), .def = 1.0, .min = 1e-3,
      .max = 1e3, .help = "sigma of the solids' eddy viscosity c_s rho_s nu_t/sigma (Krampa 2009 eq 6.20)"},
     {.section = "pipe", .name = "dispersion_schmidt", .type = SL_KEY_REAL, C(dispersion_schmidt), .def = 1.0,

@@ -71,7 +71,7 @@ static int granular_theta(pipe *p, const double *gd, sl_diag *d) {
       else hi[i] = 0.5 * (lo[i] + hi[i]);
     }
   }
-  const double w = p->iterations > 0 ? p->cfg->relaxation : 1.0; /* under-relaxed as the velocities */
+  const double w = p->iterations > 0 ? p->relax : 1.0; /* under-relaxed as the velocities */
   for (int i = 0; i < n; ++i)
     p->theta[i] = fmax(p->theta[i] + w * (exp(0.5 * (lo[i] + hi[i])) - p->theta[i]), 1e-12); /* the closure's floor */
   return 0;
@@ -94,7 +94,9 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
   for (int i = 0; i < n; ++i)
     p->mu_s[i] = p->phi[i] * p->rho_s * (p->mu_t[i] / p->rho_f) / p->cfg->solids_schmidt + p->sc->solid.viscosity;
   if (p->have_gran) {
-    if ((rc = granular_theta(p, gd, d))) return rc;
+    if ((rc = p->cfg->granular_temperature == PIPE_THETA_TRANSPORT ? pipe_theta_transport(p, gd, d)
+                                                                   : granular_theta(p, gd, d)))
+      return rc;
     double *mu = p->buf[5];
     v[PQ_THETA] = p->theta;
     sl_point_request r2 = {"mu_s", mu, NULL, NULL};
@@ -129,9 +131,12 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
       const double *vw[PQ_N] = {0};
       double phw = p->phi[w], thw = p->theta[w], gdw = U / yp;
       vw[PQ_SLIP_WALL] = &uw, vw[PQ_PHI] = &phw, vw[PQ_THETA] = &thw, vw[PQ_SHEAR] = &gdw;
-      sl_point_request rw = {"tau_w", &tau, &dtau, "slip_wall"};
-      if ((rc = sl_point_eval(&p->walls, 1, vw, &rw, 1, d)))
+      p->u_wall = uw;
+      double inv = 0.0;
+      sl_point_request rw[2] = {{"tau_w", &tau, &dtau, "slip_wall"}, {"inverse_slip_length", &inv, NULL, NULL}};
+      if ((rc = sl_point_eval(&p->walls, 1, vw, rw, sl_point_has_output(&p->walls, "inverse_slip_length") ? 2 : 1, d)))
         return sl_diag_prefix(d, rc, "[closure.wall_stress.solids]");
+      p->inv_slip = inv;
       double a = uw > 0.0 ? tau / uw : dtau;
       p->a_sw = p->walls_at_node ? a : a * a_ns / (a_ns + a);
     }
@@ -194,7 +199,7 @@ int pipe_solids_update(pipe *p, sl_diag *d) {
     if (fabs(scale - 1.0) < 1e-14) break;
     for (int i = 0; i < n; ++i) s[i] *= scale;
   }
-  const double w = p->cfg->relaxation;
+  const double w = p->relax;
   for (int i = 0; i < n; ++i) p->phi[i] += w * (s[i] - p->phi[i]);
   return 0;
 }

@@ -8,7 +8,18 @@
  * (Krampa 2009 eqs 4.82-4.83 without modulation), P_k = mu_t (du_f/dr)^2, the
  * destruction implicit in k and e with its coefficient lagged, the local
  * pseudo-step dtau = pseudo_step k/eps. The wall cell holds k = u_tau^2/sqrt(C_mu)
- * and eps = u_tau^3/(kappa y) (Krampa 2009 eqs 4.85-4.86). */
+ * and eps = u_tau^3/(kappa y) (Krampa 2009 eqs 4.85-4.86).
+ *
+ * `[pipe] modulation = simonin` adds the particles' modulation of Krampa's model C (eqs 4.80-4.83, Simonin
+ * 1996): per unit volume, c_f rho_f Pi_kf = K (k_fs - 2 k) in the k equation and C_eps3 (eps/k) times it in
+ * the epsilon equation, K the drag coefficient (c_s rho_s/t_p, eq 4.58). The drift parts, the slip times the
+ * drift velocity and mu_t grad(c_f) . (u_f - u_s), vanish in the fully developed pipe (axial slip, radial
+ * gradients). k_fs is Tchen's equilibrium 2 k eta/(1 + eta), eta = t_fs/t_p, with the crossing-trajectory
+ * t_fs of eq 4.61 (as `dispersion = simonin`, pipe_solids.c), where model C transports it (eq 5.23), so that
+ * K (k_fs - 2k) = -2 K k/(1 + eta) <= 0: an attenuation, vanishing for fine particles (eta -> infinity). Both
+ * terms enter as implicit sinks. Printed as is, eq 4.80 carries a c_f on the 2 k and eq 4.83 a minus sign
+ * before C_eps3; the dimensionally consistent form of Simonin's model (Elghobashi & Abou-Arab 1983's sign in
+ * the epsilon equation: the same as in k) is used here. */
 #include <math.h>
 #include <string.h>
 
@@ -68,13 +79,23 @@ int pipe_turbulence_update(pipe *p, sl_diag *d) {
   const double a = p->cfg->pseudo_step;
   sl_cell_scalar_terms t = {
       .dt = 1.0, .cap = cap, .k = kd, .source = src, .sink = snk, .boundary = hold_wall, .boundary_user = p};
+  /* the modulation's coefficient 2 K/(1 + eta) of -k (0 without) */
+  double *mod = p->buf[6];
+  for (int i = 0; i < n; ++i) {
+    mod[i] = 0.0;
+    if (!p->two_phase || p->cfg->modulation != 1 || !(p->K[i] > 0.0)) continue;
+    double k = p->k[i], s2 = (p->uf[i] - p->us[i]) * (p->uf[i] - p->us[i]);
+    double tfs = p->c_mu * 1.5 * k / p->eps[i] / sqrt(1.0 + p->cfg->crossing_trajectory * 1.5 * s2 / k);
+    double tp = fmax(p->phi[i], 1e-12) * p->rho_s / p->K[i];
+    mod[i] = 2.0 * p->K[i] / (1.0 + tfs / tp);
+  }
   /* k */
   for (int i = 0; i < n; ++i) {
     double cf = 1.0 - p->phi[i];
     cap[i] = cf * p->rho_f * p->eps[i] / (a * p->k[i]);
     kd[i] = cf * (p->mu_f + p->mu_tk[i]);
     src[i] = cf * P[i];
-    snk[i] = cf * p->rho_f * p->eps[i] / p->k[i];
+    snk[i] = cf * p->rho_f * p->eps[i] / p->k[i] + mod[i];
   }
   t.s_old = p->k, p->dirichlet = p->k_wall;
   int rc = sl_cell_scalar_solve(&p->cs, &t, s, d);
@@ -84,7 +105,7 @@ int pipe_turbulence_update(pipe *p, sl_diag *d) {
     double cf = 1.0 - p->phi[i];
     kd[i] = cf * (p->mu_f + p->mu_te[i]);
     src[i] = cf * p->eps_prod[i] * P[i];
-    snk[i] = cf * p->eps_sink[i];
+    snk[i] = cf * p->eps_sink[i] + p->cfg->c_eps3 * mod[i];
   }
   t.s_old = p->eps, p->dirichlet = p->eps_wall;
   double *e = P; /* P is in src already */

@@ -1,0 +1,70 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* The pipe model's transported granular temperature (`[pipe] granular_temperature = transport`, pipe.h):
+ * the steady granular energy balance of Krampa (2009) eq 5.10 in the standard form of his section 2.5 (his
+ * printed signs corrected; the fluid-particle correlation neglected, as he did), fully developed, so with no
+ * convection:
+ *   0 = (1/r) d/dr(r kappa dtheta/dr) + mu_s gdot_s^2 - gamma - 3 K theta
+ * (Gidaspow 1994 eq 9.?; the two-fluid model's form, core/models/two_fluid), kappa, mu_s and gamma of
+ * [closure.granular]. Where the local balance (pipe_solids.c) takes theta cell by cell, this one carries it
+ * over the conduction length sqrt(kappa/(3 K)), of millimetres in the dilute wall layer of 0.5 mm beads, longer
+ * than the wall cells there. Newton in the dissipation gamma(theta); mu_s, kappa and K of the last iterate (the
+ * production's theta^1/2 lagged). The axis has no flux; the wall is adiabatic unless the solids' wall closure
+ * gives theta_flux (Johnson & Jackson 1987, Krampa eq 4.93), then its flux enters the wall cell, its
+ * theta-derivative implicit where it is a sink (as the two-fluid model's walls). theta falls at most fivefold
+ * an iteration and stays above the closure's floor (1e-12). */
+#include <math.h>
+
+#include "core/models/pipe/pipe_impl.h"
+
+#define THETA_FLOOR 1e-12
+
+static int wall_energy(void *user, int c, double *rhs, double *diag, sl_diag *d) {
+  pipe *p = user;
+  if (c != p->n - 1 || !p->wall_energy) return 0;
+  double uw = p->u_wall, ph = p->phi[c], th = fmax(p->theta[c], THETA_FLOOR), q, dq;
+  const double *v[PQ_N] = {0};
+  v[PQ_SLIP_WALL] = &uw, v[PQ_PHI] = &ph, v[PQ_THETA] = &th;
+  sl_point_request rq = {"theta_flux", &q, &dq, "theta"};
+  int rc = sl_point_eval(&p->walls, 1, v, &rq, 1, d);
+  if (rc) return sl_diag_prefix(d, rc, "[closure.wall_stress.solids] theta_flux");
+  const double A = p->g.area[p->n];
+  dq = fmin(dq, 0.0);
+  *rhs += A * (q - dq * th);
+  *diag -= A * dq;
+  return 0;
+}
+
+int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d) {
+  const int n = p->n;
+  double *sink = p->buf[1], *cap = p->buf[2], *x = p->buf[3], *mu = p->buf[5], *kap = p->buf[6], *src = p->buf[7];
+  for (int i = 0; i < n; ++i) p->theta[i] = fmax(p->theta[i], THETA_FLOOR);
+  const double *v[PQ_N] = {0};
+  v[PQ_PHI] = p->phi, v[PQ_THETA] = p->theta;
+  sl_point_request rq[3] = {{"mu_s", mu, NULL, NULL}, {"kappa", kap, NULL, NULL}, {"gamma", src, sink, "theta"}};
+  int rc = sl_point_eval(&p->gran, n, v, rq, 3, d);
+  if (rc) return sl_diag_prefix(d, rc, "[closure.granular]");
+  for (int i = 0; i < n; ++i) {
+    double dg = fmax(sink[i], 0.0), gam = src[i];
+    cap[i] = 1.5 * p->rho_s * fmax(p->phi[i], 1e-6);
+    sink[i] = dg + 3.0 * p->K[i];
+    src[i] = mu[i] * gd[i] * gd[i] - gam + dg * p->theta[i];
+  }
+  /* steady: a pseudo-step far beyond the slowest of the sinks' times */
+  sl_cell_scalar_terms t = {.dt = 1e30,
+                            .cap = cap,
+                            .s_old = p->theta,
+                            .k = kap,
+                            .source = src,
+                            .sink = sink,
+                            .boundary = p->wall_energy ? wall_energy : NULL,
+                            .boundary_user = p};
+  if ((rc = sl_cell_scalar_solve(&p->cs, &t, x, d))) return sl_diag_prefix(d, rc, "pipe: the granular temperature");
+  const double w = p->iterations > 0 ? p->relax : 1.0; /* under-relaxed as the velocities */
+  for (int i = 0; i < n; ++i) {
+    if (!isfinite(x[i]))
+      return sl_diag_set(d, SL_EFAILED, "pipe: the granular temperature is not finite at r = %g", p->g.xc[i]);
+    double th = fmax(x[i], fmax(0.2 * p->theta[i], THETA_FLOOR));
+    p->theta[i] = fmax(p->theta[i] + w * (th - p->theta[i]), THETA_FLOOR);
+  }
+  return 0;
+}
