@@ -24,6 +24,7 @@
  *   bench_cavity_vs_freefem SOURCE_DIR [--sluice-csv PATH] [--sluice-bench EXE]
  *       [--profile-ref FILE] [--reference U*] [--repeat R] [--csv PATH]
  *       [--svg PATH] [n ...]                  (default n: 8 16 32 64 128)
+ *   bench_cavity_vs_freefem --replot CSV --svg PATH
  *
  * The sluice CSV defaults to SOURCE_DIR/bench/results/cavity_vs_freefem.sluice.csv.
  * With --sluice-bench EXE (bench_cavity_work_precision) the sluice runs are
@@ -36,8 +37,10 @@
  * err_l2, min_u, min_err, cpu_s, peak_rss_mb; then, for each FreeFEM run and
  * each sluice solver, the CPU time sluice needs for the same error, by
  * linear interpolation of log(cpu) against log(error) between the two sluice
- * meshes whose errors bracket FreeFEM's. Exit status 1 when a run failed, 2
- * on bad usage. */
+ * meshes whose errors bracket FreeFEM's. --svg PATH draws the errors against
+ * cells per side (with the observed order) and against CPU time;
+ * --replot CSV draws it from a CSV this program wrote, running nothing.
+ * Exit status 1 when a run failed, 2 on bad usage or a CSV it cannot read. */
 #define _DEFAULT_SOURCE /* wait4, getloadavg */
 #include <errno.h>
 #include <math.h>
@@ -48,6 +51,7 @@
 #include <sys/types.h>
 #include <unistd.h>
 
+#include "bench_csv.h"
 #include "centreline_profile.h"
 #include "core/study/child.h"
 #include "core/study/chart.h"
@@ -108,30 +112,6 @@ static int run_freefem(const char *script, const char *points, const centreline_
   return 0;
 }
 
-/* The column of `name` in a CSV header line, or -1. */
-static int column(const char *header, const char *name) {
-  int k = 0;
-  size_t len = strlen(name);
-  for (const char *s = header; *s; ++k) {
-    const char *e = strpbrk(s, ",\n");
-    size_t w = e ? (size_t)(e - s) : strlen(s);
-    if (w == len && strncmp(s, name, len) == 0) return k;
-    if (!e || *e == '\n') break;
-    s = e + 1;
-  }
-  return -1;
-}
-
-/* Field k of a CSV line (no quoting: bench CSVs have none) into buf. */
-static void field(const char *line, int k, char *buf, size_t cap) {
-  const char *s = line;
-  for (int i = 0; i < k && s; ++i) s = strchr(s, ','), s = s ? s + 1 : NULL;
-  buf[0] = '\0';
-  if (!s) return;
-  size_t w = strcspn(s, ",\n");
-  snprintf(buf, cap, "%.*s", (int)(w < cap ? w : cap - 1), s);
-}
-
 /* The steady runs of bench_cavity_work_precision's CSV (made with
  * --profile-ref); its "# machine:" line into machine, and the number of
  * profile points of its "# profile reference:" line into *n_prof. */
@@ -158,7 +138,7 @@ static int read_sluice(const char *path, point *pts, int max, char *machine, siz
     if (!header[0]) {
       snprintf(header, sizeof header, "%s", line);
       int bad = 0;
-      for (int k = 0; k < NC; ++k) bad |= (c[k] = column(header, names[k])) < 0;
+      for (int k = 0; k < NC; ++k) bad |= (c[k] = bench_csv_column(header, names[k])) < 0;
       if (bad) {
         fclose(f);
         return fprintf(stderr, "%s: not a bench_cavity_work_precision CSV with profile errors\n", path), -1;
@@ -176,14 +156,14 @@ static int read_sluice(const char *path, point *pts, int max, char *machine, siz
       return fprintf(stderr, "%s: a line longer than %zu characters\n", path, sizeof p->raw - 1), -1;
     }
     memcpy(p->raw, line, len + 1);
-    field(line, c[0], p->solver, sizeof p->solver);
-    field(line, c[1], buf, sizeof buf), p->n = atoi(buf);
-    field(line, c[2], buf, sizeof buf), p->unknowns = atol(buf);
-    field(line, c[3], buf, sizeof buf), p->umin = buf[0] ? strtod(buf, NULL) : NAN;
-    field(line, c[4], buf, sizeof buf), p->cpu = strtod(buf, NULL);
-    field(line, c[5], buf, sizeof buf), p->mb = strtod(buf, NULL);
-    field(line, c[6], buf, sizeof buf), p->err_max = buf[0] ? strtod(buf, NULL) : NAN;
-    field(line, c[7], buf, sizeof buf), p->err_l2 = buf[0] ? strtod(buf, NULL) : NAN;
+    bench_csv_field(line, c[0], p->solver, sizeof p->solver);
+    bench_csv_field(line, c[1], buf, sizeof buf), p->n = atoi(buf);
+    bench_csv_field(line, c[2], buf, sizeof buf), p->unknowns = atol(buf);
+    bench_csv_field(line, c[3], buf, sizeof buf), p->umin = buf[0] ? strtod(buf, NULL) : NAN;
+    bench_csv_field(line, c[4], buf, sizeof buf), p->cpu = strtod(buf, NULL);
+    bench_csv_field(line, c[5], buf, sizeof buf), p->mb = strtod(buf, NULL);
+    bench_csv_field(line, c[6], buf, sizeof buf), p->err_max = buf[0] ? strtod(buf, NULL) : NAN;
+    bench_csv_field(line, c[7], buf, sizeof buf), p->err_l2 = buf[0] ? strtod(buf, NULL) : NAN;
     /* a failed run has no time; a run without a reference profile no profile error */
     if (p->n > 0 && isfinite(p->umin) && p->cpu > 0 && isfinite(p->err_max) && isfinite(p->err_l2)) ++n;
   }
@@ -238,14 +218,157 @@ static reach_result time_to_reach(const point *pts, const int *idx, int m, doubl
   return r;
 }
 
+/* the observed order: the least-squares slope over the finest meshes, n = 64..128 in the shipped sweep */
+enum { MAX_SERIES = 4, NP = 6, SLOPE_POINTS = 5 };
+
+/* The figure (core/study/chart.h): for the max-norm and the L2 error of the
+ * profile, the error against cells per side (one series per code, the
+ * solvers giving the same error, with the observed order) and against CPU
+ * time (one series per code and solver); the centreline-minimum error and
+ * the peak memory. Returns 0, or -1 with the reason on stderr. */
+static int write_figure(const char *path, const point *pts, int np, const char *note) {
+  static double x[MAX_SERIES][MAX_RUNS], xn[MAX_SERIES][MAX_RUNS], y[4][MAX_SERIES][MAX_RUNS], u[MAX_SERIES][MAX_RUNS];
+  static char names[MAX_SERIES][48], codes[MAX_SERIES][48], lab[MAX_SERIES][MAX_RUNS][16];
+  static const char *labels[MAX_SERIES][MAX_RUNS];
+  static const char *const colour[MAX_SERIES] = {"#1f77b4", "#2ca02c", "#d62728", "#9467bd"};
+  sl_chart_series ser[4][MAX_SERIES], by_n[2][MAX_SERIES];
+  int ns_ = 0, n_in[MAX_SERIES] = {0}, n_codes = 0;
+  for (int i = 0; i < np; ++i) {
+    const char *code = strcmp(pts[i].code, "sluice") ? "FreeFEM P2/P1" : "sluice Q2/Q1";
+    char name[48];
+    snprintf(name, sizeof name, "%s, %s", code, pts[i].solver);
+    int s = 0;
+    while (s < ns_ && strcmp(names[s], name)) ++s;
+    if (s == ns_) {
+      if (ns_ == MAX_SERIES) continue;
+      snprintf(names[ns_], sizeof names[0], "%s", name), snprintf(codes[ns_++], sizeof codes[0], "%s", code);
+    }
+    int k = n_in[s]++;
+    x[s][k] = pts[i].cpu, xn[s][k] = pts[i].n, u[s][k] = (double)pts[i].unknowns;
+    y[0][s][k] = pts[i].err_max, y[1][s][k] = pts[i].err_l2, y[2][s][k] = pts[i].min_err, y[3][s][k] = pts[i].mb;
+    snprintf(lab[s][k], sizeof lab[s][k], "%d", pts[i].n);
+    labels[s][k] = lab[s][k];
+  }
+  for (int q = 0; q < 4; ++q)
+    for (int s = 0; s < ns_; ++s) {
+      int is_ff = strncmp(names[s], "FreeFEM", 7) == 0, is_umf = strstr(names[s], "umfpack") && !is_ff;
+      ser[q][s] = (sl_chart_series){.name = names[s], .n = n_in[s], .x = q == 3 ? u[s] : x[s], .y = y[q][s],
+                                    .labels = q < 3 && !is_umf ? labels[s] : NULL, .colour = colour[s],
+                                    .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s), .dashed = is_umf};
+    }
+  for (int s = 0; s < ns_; ++s) { /* against the mesh: a code's first solver */
+    int first = 1;
+    for (int j = 0; j < s; ++j) first &= strcmp(codes[j], codes[s]) != 0;
+    if (!first) continue;
+    for (int q = 0; q < 2; ++q)
+      by_n[q][n_codes] = (sl_chart_series){.name = codes[s], .n = n_in[s], .x = xn[s], .y = y[q][s],
+                                           .colour = colour[s], .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s),
+                                           .slope_points = SLOPE_POINTS, .slope_format = "order %.2f", .slope_negate = 1};
+    ++n_codes;
+  }
+  static const char *const ylab[3] = {"max_{k} |u(1/2, y_{k}) \xE2\x88\x92 u_{ref}(y_{k})| (m/s)",
+                                      "L_{2} error of u(1/2, y) over y (m/s)",
+                                      "|min u \xE2\x88\x92 u*| on x = 1/2 (m/s)"};
+  sl_chart panels[NP] = {
+      {.title = "max-norm error of u(1/2, y) against the mesh", .xlabel = "cells per side n", .ylabel = ylab[0],
+       .n_series = n_codes, .series = by_n[0], .legend = SL_LEGEND_TOP_RIGHT},
+      {.title = "max-norm error against CPU time", .xlabel = "CPU time of the solve (s)", .ylabel = ylab[0],
+       .n_series = ns_, .series = ser[0], .legend = SL_LEGEND_TOP_RIGHT},
+      {.title = "old measure: centreline minimum (not monotone)", .xlabel = "CPU time of the solve (s)",
+       .ylabel = ylab[2], .n_series = ns_, .series = ser[2], .legend = SL_LEGEND_BOTTOM_LEFT},
+      {.title = "L_{2} error of u(1/2, y) against the mesh", .xlabel = "cells per side n", .ylabel = ylab[1],
+       .n_series = n_codes, .series = by_n[1], .legend = SL_LEGEND_TOP_RIGHT},
+      {.title = "L_{2} error against CPU time", .xlabel = "CPU time of the solve (s)", .ylabel = ylab[1],
+       .n_series = ns_, .series = ser[1], .legend = SL_LEGEND_TOP_RIGHT},
+      {.title = "peak memory", .xlabel = "unknowns (velocity and pressure)", .ylabel = "peak resident set (MB)",
+       .n_series = ns_, .series = ser[3], .legend = SL_LEGEND_TOP_LEFT},
+  };
+  for (int q = 0; q < NP; ++q) panels[q].xscale = panels[q].yscale = SL_AXIS_LOG;
+  sl_figure fig = {.title = "Stokes cavity: sluice Q2/Q1 and FreeFEM P2/P1", .note = note, .n_panels = NP,
+                   .panels = panels, .columns = 3, .panel_width = 480, .panel_height = 360};
+  sl_diag d = {{0}};
+  if (sl_figure_write(path, &fig, &d)) return fprintf(stderr, "%s\n", d.msg), -1;
+  return 0;
+}
+
+/* --replot: the runs back from a CSV this program wrote (its columns by
+ * name; '#' lines give the note: the reference, the machine, how the CPU
+ * time was taken), and the figure drawn from them, running nothing.
+ * Returns 0, or -1 with file:line on stderr. */
+static int replot(const char *csv, const char *path) {
+  FILE *f = fopen(csv, "r");
+  if (!f) return fprintf(stderr, "%s: %s\n", csv, strerror(errno)), -1;
+  enum { CODE, SOLVER, N, UNKNOWNS, EMAX, EL2, MINU, MINERR, CPU, RSS, NC };
+  static const char *const names[NC] = {"code",  "solver", "n",       "unknowns", "err_max",
+                                        "err_l2", "min_u", "min_err", "cpu_s",    "peak_rss_mb"};
+  static point pts[MAX_RUNS];
+  char line[4096], header[4096] = "", ref[1024] = "", machine[1024] = "", cpu[1024] = "";
+  int c[NC], np = 0, lineno = 0, bad = 0;
+  while (!bad && fgets(line, sizeof line, f)) {
+    ++lineno;
+    line[strcspn(line, "\r\n")] = '\0';
+    if (line[0] == '#') {
+      const char *r = strstr(line, "against the reference profile ");
+      if (r && !ref[0]) { /* "... profile PATH (N points); ..." */
+        r += strlen("against the reference profile ");
+        const char *semi = strchr(r, ';'), *end = semi ? semi : r + strlen(r);
+        for (const char *q = r; q < end; ++q)
+          if (*q == '/') r = q + 1;
+        snprintf(ref, sizeof ref, "%.*s", (int)(end - r), r);
+      } else if (!strncmp(line, "# machine", 9)) snprintf(machine, sizeof machine, "%.1000s", line + 2);
+      else if (!strncmp(line, "# cpu_s: ", 9)) snprintf(cpu, sizeof cpu, "%.1000s", line + 9);
+      continue;
+    }
+    if (!header[0]) {
+      snprintf(header, sizeof header, "%s", line);
+      for (int k = 0; k < NC; ++k)
+        if ((c[k] = bench_csv_column(header, names[k])) < 0)
+          fprintf(stderr, "%s:%d: no column %s: not a bench_cavity_vs_freefem CSV\n", csv, lineno, names[k]), bad = 1;
+      continue;
+    }
+    if (np == MAX_RUNS) {
+      fprintf(stderr, "%s:%d: more than %d runs\n", csv, lineno, MAX_RUNS);
+      bad = 1;
+      break;
+    }
+    point *p = &pts[np];
+    memset(p, 0, sizeof *p);
+    bench_csv_field(line, c[CODE], p->code, sizeof p->code);
+    bench_csv_field(line, c[SOLVER], p->solver, sizeof p->solver);
+    double n = bench_csv_number(line, c[N]);
+    p->n = (int)n, p->unknowns = (long)bench_csv_number(line, c[UNKNOWNS]);
+    p->err_max = bench_csv_number(line, c[EMAX]), p->err_l2 = bench_csv_number(line, c[EL2]);
+    p->umin = bench_csv_number(line, c[MINU]), p->min_err = bench_csv_number(line, c[MINERR]);
+    p->cpu = bench_csv_number(line, c[CPU]), p->mb = bench_csv_number(line, c[RSS]);
+    if ((strcmp(p->code, "sluice") && strcmp(p->code, "freefem")) || !p->solver[0] || !(n >= 1 && n == floor(n)) ||
+        !(p->cpu > 0) || !isfinite(p->err_max) || !isfinite(p->err_l2)) {
+      fprintf(stderr, "%s:%d: not a row of bench_cavity_vs_freefem's CSV\n", csv, lineno);
+      bad = 1;
+      break;
+    }
+    ++np;
+  }
+  fclose(f);
+  if (!bad && !np) fprintf(stderr, "%s: no rows\n", csv), bad = 1;
+  if (bad) return -1;
+  char note[4096];
+  snprintf(note, sizeof note,
+           "labels: cells per side; order: least-squares slope of the five finest meshes. Reference u_{ref}: %s.\n"
+           "CPU: %s.\n%s.",
+           ref[0] ? ref : "not recorded", cpu[0] ? cpu : "not recorded", machine[0] ? machine : "machine not recorded");
+  return write_figure(path, pts, np, note);
+}
+
 static void usage(void) {
   fputs("usage: bench_cavity_vs_freefem SOURCE_DIR [--sluice-csv PATH] [--sluice-bench EXE] [--profile-ref FILE]\n"
-        "                              [--reference U*] [--repeat R] [--csv PATH] [--svg PATH] [n ...]\n",
+        "                              [--reference U*] [--repeat R] [--csv PATH] [--svg PATH] [n ...]\n"
+        "       bench_cavity_vs_freefem --replot CSV --svg PATH   (the figure of recorded runs)\n",
         stderr);
 }
 
 int main(int argc, char **argv) {
-  const char *src = NULL, *sluice_csv = NULL, *csv = NULL, *svg = NULL, *prof_path = NULL, *sluice_bench = NULL;
+  const char *src = NULL, *sluice_csv = NULL, *csv = NULL, *svg = NULL, *prof_path = NULL, *sluice_bench = NULL,
+             *replot_csv = NULL;
   double ref = -0.207755897;
   int repeat = 1, ns[MAX_N], n_ns = 0;
   for (int i = 1; i < argc; ++i) {
@@ -258,10 +381,15 @@ int main(int argc, char **argv) {
     else if (strcmp(a, "--repeat") == 0 && more) repeat = atoi(argv[++i]);
     else if (strcmp(a, "--csv") == 0 && more) csv = argv[++i];
     else if (strcmp(a, "--svg") == 0 && more) svg = argv[++i];
+    else if (strcmp(a, "--replot") == 0 && more) replot_csv = argv[++i];
     else if (a[0] == '-') return usage(), 2;
     else if (!src) src = a;
     else if (n_ns < MAX_N && atoi(a) > 0) ns[n_ns++] = atoi(a);
     else return usage(), 2;
+  }
+  if (replot_csv) {
+    if (!svg || src) return usage(), 2;
+    return replot(replot_csv, svg) ? 2 : 0;
   }
   if (!src || repeat < 1) return usage(), 2;
   if (!n_ns) {
@@ -428,68 +556,16 @@ int main(int argc, char **argv) {
   if (out[1] && fclose(out[1])) failed = 1;
 
   if (svg) {
-    /* One series per code and solver, in mesh order. */
-    enum { MAX_SERIES = 4, NP = 4 };
-    static double x[MAX_SERIES][MAX_RUNS], y[NP][MAX_SERIES][MAX_RUNS], u[MAX_SERIES][MAX_RUNS];
-    static char names[MAX_SERIES][48], lab[MAX_SERIES][MAX_RUNS][16];
-    static const char *labels[MAX_SERIES][MAX_RUNS];
-    static const char *const colour[MAX_SERIES] = {"#1f77b4", "#2ca02c", "#d62728", "#9467bd"};
-    sl_chart_series ser[NP][MAX_SERIES];
-    int ns_ = 0, n_in[MAX_SERIES] = {0};
-    for (int i = 0; i < np; ++i) {
-      char name[48];
-      snprintf(name, sizeof name, "%s %s", strcmp(pts[i].code, "sluice") ? "FreeFEM P2/P1," : "sluice Q2/Q1,",
-               pts[i].solver);
-      int s = 0;
-      while (s < ns_ && strcmp(names[s], name)) ++s;
-      if (s == ns_) {
-        if (ns_ == MAX_SERIES) continue;
-        snprintf(names[ns_++], sizeof names[0], "%s", name);
-      }
-      int k = n_in[s]++;
-      x[s][k] = pts[i].cpu, u[s][k] = (double)pts[i].unknowns;
-      y[0][s][k] = pts[i].err_max, y[1][s][k] = pts[i].err_l2, y[2][s][k] = pts[i].min_err, y[3][s][k] = pts[i].mb;
-      snprintf(lab[s][k], sizeof lab[s][k], "%d", pts[i].n);
-      labels[s][k] = lab[s][k];
-    }
-    for (int q = 0; q < NP; ++q)
-      for (int s = 0; s < ns_; ++s) {
-        int is_ff = strncmp(names[s], "FreeFEM", 7) == 0, is_umf = strstr(names[s], "umfpack") && !is_ff;
-        ser[q][s] = (sl_chart_series){.name = names[s], .n = n_in[s], .x = q == 3 ? u[s] : x[s], .y = y[q][s],
-                                  .labels = q < 3 && !is_umf ? labels[s] : NULL, .colour = colour[s],
-                                  .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s), .dashed = is_umf};
-      }
-    sl_chart panels[NP] = {
-        {.title = "max-norm error of u(1/2, y) against CPU time", .xlabel = "CPU time (s)",
-         .ylabel = "max_{k} |u(1/2, y_{k}) \xE2\x88\x92 u_{ref}(y_{k})| (m/s)", .n_series = ns_, .series = ser[0],
-         .legend = SL_LEGEND_TOP_RIGHT},
-        {.title = "L_{2} error of u(1/2, y) against CPU time", .xlabel = "CPU time (s)",
-         .ylabel = "\xE2\x80\x96u(1/2, \xC2\xB7) \xE2\x88\x92 u_{ref}\xE2\x80\x96_{L2} (m/s)", .n_series = ns_,
-         .series = ser[1], .legend = SL_LEGEND_TOP_RIGHT},
-        {.title = "old measure: centreline minimum (not monotone)", .xlabel = "CPU time (s)",
-         .ylabel = "|min u \xE2\x88\x92 u*| (m/s)", .n_series = ns_, .series = ser[2], .legend = SL_LEGEND_BOTTOM_LEFT},
-        {.title = "peak memory", .xlabel = "unknowns", .ylabel = "peak resident set (MB)", .n_series = ns_,
-         .series = ser[3], .legend = SL_LEGEND_TOP_LEFT},
-    };
-    for (int q = 0; q < NP; ++q) panels[q].xscale = panels[q].yscale = SL_AXIS_LOG;
     char note[8192];
     snprintf(note, sizeof note,
-             "labels: cells per side. Reference u_ref: %d points of %s.\nCPU: fastest of %d %s; sluice's "
-             "from bench_cavity_work_precision (process CPU of the solve), FreeFEM's from mesh to solution.\n%s; "
-             "%s %.2f-%.2f.",
+             "labels: cells per side; order: least-squares slope of the five finest meshes. Reference u_{ref}: %d "
+             "points of %s.\nCPU: fastest of %d %s; sluice's from bench_cavity_work_precision (process CPU of the "
+             "solve), FreeFEM's from mesh to solution.\n%s; %s %.2f-%.2f.",
              pr.n, strrchr(prof_path, '/') ? strrchr(prof_path, '/') + 1 : prof_path, repeat,
              sluice_bench ? "interleaved rounds" : "repeats", machine,
              sluice_bench ? "load over the runs" : "FreeFEM runs at load",
              sluice_bench ? load_lo : load[0][0], sluice_bench ? load_hi : load[1][0]);
-    sl_figure fig = {.title = "Stokes cavity: sluice Q2/Q1 and FreeFEM P2/P1",
-                       .note = note,
-                       .n_panels = NP,
-                       .panels = panels,
-                       .columns = 2,
-                       .panel_width = 480,
-                       .panel_height = 360};
-    sl_diag d = {{0}};
-    if (sl_figure_write(svg, &fig, &d)) fprintf(stderr, "%s\n", d.msg), failed = 1;
+    if (write_figure(svg, pts, np, note)) failed = 1;
   }
   return failed;
 }

@@ -45,10 +45,15 @@
  *       [--repeat R] [--reference VALUE] [--profile-ref FILE]
  *       [--set section.key=value ...] [n ...]                               (default n: 8 16 32 64 128 256)
  *
+ *   bench_cavity_work_precision --replot CSV --svg PATH
+ *
  * CSV on stdout (and in --csv PATH), '#' lines for u*, the observed orders
  * and the machine; progress on stderr. --svg PATH writes the plot (core/study/chart.h):
- * error versus CPU time, peak memory versus unknowns, and per solver the time
- * split versus unknowns. The exit status is 1 when any run failed. */
+ * error versus cells per side with the observed order (least-squares slope
+ * of the last three meshes), error versus CPU time, peak memory versus
+ * unknowns, and per solver the time split versus unknowns. --replot CSV
+ * draws it from a CSV this program wrote, running nothing. The exit status
+ * is 1 when any run failed, 2 on bad usage or a CSV it cannot read. */
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -62,6 +67,7 @@
 #include "sluice/sluice.h"
 #include "core/io/sample.h"
 #include "bench_child.h"
+#include "bench_csv.h"
 #include "bench_machine.h"
 #include "centreline_profile.h"
 #include "core/study/chart.h"
@@ -303,6 +309,7 @@ typedef struct table {
   char machine[512];
   const char *prof_path; /* the reference profile, or NULL */
   int n_prof;
+  char solver_buf[MAX_SOLVERS][32]; /* the solvers' names, read back by --replot */
 } table;
 
 static const char *solver_name(const table *t, int s) { return t->solvers[s] ? t->solvers[s] : "scene"; }
@@ -366,8 +373,9 @@ static int write_svg(const char *path, const table *t) {
   double split[MAX_SOLVERS][SPLIT][MAX_N];
   char buf[MAX_N][32];
   const char *labels[MAX_N];
-  sl_chart_series s_err[MAX_SOLVERS], s_mem[MAX_SOLVERS], s_split[MAX_SOLVERS][SPLIT];
-  sl_chart panels[2 + MAX_SOLVERS];
+  sl_chart_series s_err[MAX_SOLVERS], s_mem[MAX_SOLVERS], s_split[MAX_SOLVERS][SPLIT], s_order;
+  sl_chart panels[3 + MAX_SOLVERS];
+  double cells[MAX_N], err_n[MAX_N];
   char titles[MAX_SOLVERS][96];
   static const char *const split_name[SPLIT] = {"steady solve, total",       "its factorisation",
                                                 "its assembly",              "its back-substitution",
@@ -380,7 +388,12 @@ static int write_svg(const char *path, const table *t) {
     snprintf(buf[k], sizeof buf[k], "n=%d", t->ns[k]);
     labels[k] = buf[k];
   }
-  int np = 2; /* a split panel for each solver with a successful run */
+  for (int k = 0; k < t->nn; ++k) cells[k] = t->ns[k], err_n[k] = isfinite(t->umin[k]) ? t->err[k] : NAN;
+  /* the minimum of one mesh is the same with every solver (to the spread the CSV gives): one series */
+  s_order = (sl_chart_series){.name = "all solvers", .n = t->nn, .x = cells, .y = err_n, .colour = "#000000",
+                              .marker = SL_CHART_MARK_CIRCLE, .slope_points = 3, .slope_format = "order %.2f",
+                              .slope_negate = 1};
+  int np = 3; /* a split panel for each solver with a successful run */
   for (int s = 0; s < t->nsolv; ++s) {
     int any_tr = 0, any = 0;
     for (int k = 0; k < t->nn; ++k) {
@@ -403,7 +416,7 @@ static int write_svg(const char *path, const table *t) {
                                     .colour = split_colour[q], .marker = split_marker[q], .dashed = q >= 4};
     if (!any) continue;
     snprintf(titles[s], sizeof titles[s], "Where the time goes: %s", solver_name(t, s));
-    panels[np++] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = titles[s], .xlabel = "unknowns", .ylabel = "wall time (s)",
+    panels[np++] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = titles[s], .xlabel = "unknowns (velocity and pressure)", .ylabel = "wall time (s)",
                                 .n_series = any_tr ? SPLIT : 4, .series = s_split[s], .legend = SL_LEGEND_TOP_LEFT};
   }
   /* the split panels share their axes */
@@ -412,25 +425,38 @@ static int write_svg(const char *path, const table *t) {
     for (int q = 0; q < SPLIT; ++q)
       for (int k = 0; k < t->nn; ++k)
         if (split[s][q][k] > 0.0) lo = fmin(lo, split[s][q][k]), hi = fmax(hi, split[s][q][k]);
-  for (int p = 2; p < np; ++p) {
+  for (int p = 3; p < np; ++p) {
     panels[p].xspan[0] = dofs[0], panels[p].xspan[1] = dofs[t->nn - 1];
     panels[p].yspan[0] = lo, panels[p].yspan[1] = hi;
   }
   char err_label[128];
-  snprintf(err_label, sizeof err_label, "|min u \xE2\x88\x92 u*| on x = 1/2 (m/s), u* = %.8f", t->ref);
-  panels[0] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = "Error against CPU time", .xlabel = "CPU time of the steady solve (s)",
-                           .ylabel = err_label, .n_series = t->nsolv, .series = s_err, .legend = SL_LEGEND_TOP_RIGHT};
-  panels[1] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = "Peak memory", .xlabel = "unknowns", .ylabel = "peak resident set (MB)",
-                           .n_series = t->nsolv, .series = s_mem, .legend = SL_LEGEND_TOP_LEFT};
+  snprintf(err_label, sizeof err_label, "|min u \xE2\x88\x92 u*| on x = 1/2 (m/s)");
+  panels[0] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = "Error against the mesh",
+                         .xlabel = "cells per side n (n \xC3\x97 n cells)", .ylabel = err_label, .n_series = 1,
+                         .series = &s_order, .legend = SL_LEGEND_NONE};
+  panels[1] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = "Error against CPU time",
+                         .xlabel = "CPU time of the steady solve (s)", .ylabel = err_label, .n_series = t->nsolv,
+                         .series = s_err, .legend = SL_LEGEND_AUTO};
+  panels[2] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = "Peak memory",
+                         .xlabel = "unknowns (velocity and pressure)", .ylabel = "peak resident set (MB)",
+                         .n_series = t->nsolv, .series = s_mem, .legend = SL_LEGEND_TOP_LEFT};
+  double elo = INFINITY, ehi = -INFINITY; /* the two error panels share their error axis */
+  for (int s = 0; s < t->nsolv; ++s)
+    for (int k = 0; k < t->nn; ++k)
+      if (err[s][k] > 0.0) elo = fmin(elo, err[s][k]), ehi = fmax(ehi, err[s][k]);
+  for (int p = 0; p < 2 && elo <= ehi; ++p) panels[p].yspan[0] = elo, panels[p].yspan[1] = ehi;
   char note[4096];
-  int at = snprintf(note, sizeof note, "u*: %s.\n%s. Release build, one process per run.", t->ref_method, t->machine);
+  int at = snprintf(note, sizeof note,
+                    "u* = %.8f m/s: %s. Order: least-squares slope of the last three meshes.\n%s. Release build, "
+                    "one process per run.",
+                    t->ref, t->ref_method, t->machine);
   for (int s = 0; s < t->nsolv; ++s) /* the failed steady runs, one line each */
     for (int k = 0; k < t->nn && at > 0 && (size_t)at < sizeof note; ++k)
       if (!t->st[s][k].ok)
         at += snprintf(note + at, sizeof note - (size_t)at, "\nNot plotted: %s, n = %d failed: %.110s", solver_name(t, s),
                        t->ns[k], t->st[s][k].err);
   sl_figure fig = {.title = "Stokes lid-driven cavity (configs/cavity_stokes.ini), Q2/Q1 on n \xC3\x97 n cells",
-                     .note = note, .n_panels = np, .panels = panels, .columns = 2, .panel_width = 480,
+                     .note = note, .n_panels = np, .panels = panels, .columns = 3, .panel_width = 480,
                      .panel_height = 360};
   sl_diag d = {{0}};
   if (sl_figure_write(path, &fig, &d)) {
@@ -440,12 +466,113 @@ static int write_svg(const char *path, const table *t) {
   return 0;
 }
 
+/* ---- --replot: the table back from a CSV this program wrote ------------ */
+
+/* The figure again from recorded measurements, running nothing: the steady
+ * and BDF1 columns the figure plots, by header name (older CSVs lack the
+ * later columns), u* and the machine from the '#' lines, the failed runs'
+ * reasons from their "# failed:" lines. Returns 0, or -1 with file:line on
+ * stderr. */
+static int read_csv(const char *path, table *t) {
+  FILE *f = fopen(path, "r");
+  if (!f) return fprintf(stderr, "%s: %s\n", path, strerror(errno)), -1;
+  enum { SOLVER, N, UNKNOWNS, UMIN, CPU, WALL, ASM, SYM, NUM, SOLVE, RSS, TR_STEP, TR_ASM, NC };
+  static const char *const names[NC] = {"solver",   "n",          "unknowns",      "umin",    "cpu_s",
+                                        "wall_s",   "assembly_s", "symbolic_s",    "numeric_s", "solve_s",
+                                        "peak_rss_mb", "tr_step_s", "tr_step_assembly_s"};
+  static char failed[2 * MAX_SOLVERS * MAX_N][sizeof t->st[0][0].err];
+  char line[4096], header[4096] = "";
+  int c[NC], lineno = 0, n_failed = 0, rows = 0, bad = 0;
+  t->ref = NAN;
+  while (!bad && fgets(line, sizeof line, f)) {
+    ++lineno;
+    line[strcspn(line, "\r\n")] = '\0';
+    if (line[0] == '#') {
+      double r;
+      int at = 0;
+      if (!strncmp(line, "# machine: ", 11)) snprintf(t->machine, sizeof t->machine, "%.500s", line + 11);
+      else if (sscanf(line, "# reference min u* = %lf: %n", &r, &at) == 1 && at > 0)
+        t->ref = r, snprintf(t->ref_method, sizeof t->ref_method, "%.250s", line + at);
+      else if (!strncmp(line, "# failed: ", 10) && n_failed < (int)(sizeof failed / sizeof failed[0]))
+        snprintf(failed[n_failed++], sizeof failed[0], "%.2000s", line + 10);
+      continue;
+    }
+    if (!header[0]) {
+      snprintf(header, sizeof header, "%s", line);
+      for (int k = 0; k < NC; ++k)
+        if ((c[k] = bench_csv_column(header, names[k])) < 0) {
+          fprintf(stderr, "%s:%d: no column %s: not a bench_cavity_work_precision CSV\n", path, lineno, names[k]);
+          bad = 1;
+        }
+      continue;
+    }
+    char solver[32];
+    bench_csv_field(line, c[SOLVER], solver, sizeof solver);
+    double n = bench_csv_number(line, c[N]), dofs = bench_csv_number(line, c[UNKNOWNS]);
+    if (!solver[0] || !(n >= 1 && n <= 4096 && n == floor(n)) || !(dofs > 0)) {
+      fprintf(stderr, "%s:%d: not a row of bench_cavity_work_precision's CSV\n", path, lineno);
+      bad = 1;
+      break;
+    }
+    int s = 0, k = 0;
+    while (s < t->nsolv && strcmp(t->solver_buf[s], solver)) ++s;
+    if (s == t->nsolv) {
+      if (s == MAX_SOLVERS) {
+        fprintf(stderr, "%s:%d: more than %d solvers\n", path, lineno, MAX_SOLVERS);
+        bad = 1;
+        break;
+      }
+      snprintf(t->solver_buf[s], sizeof t->solver_buf[s], "%s", solver);
+      t->solvers[t->nsolv++] = strcmp(solver, "scene") ? t->solver_buf[s] : NULL;
+    }
+    while (k < t->nn && t->ns[k] != (int)n) ++k;
+    if (k == t->nn) {
+      if (k == MAX_N || (k > 0 && t->ns[k - 1] > (int)n)) {
+        fprintf(stderr, "%s:%d: n = %d: at most %d meshes, in ascending order\n", path, lineno, (int)n, MAX_N);
+        bad = 1;
+        break;
+      }
+      t->ns[t->nn++] = (int)n;
+    }
+    run_result *a = &t->st[s][k], *r = &t->tr[s][k];
+    a->dofs = (int)dofs, a->umin = bench_csv_number(line, c[UMIN]);
+    a->ok = isfinite(a->umin);
+    if (a->ok) {
+      a->cpu = bench_csv_number(line, c[CPU]), a->wall = bench_csv_number(line, c[WALL]);
+      a->assembly = bench_csv_number(line, c[ASM]), a->t_symbolic = bench_csv_number(line, c[SYM]);
+      a->t_numeric = bench_csv_number(line, c[NUM]), a->t_solve = bench_csv_number(line, c[SOLVE]);
+      a->rss_kb = (long)(bench_csv_number(line, c[RSS]) * 1024.0);
+      r->step_wall = bench_csv_number(line, c[TR_STEP]), r->step_assembly = bench_csv_number(line, c[TR_ASM]);
+      t->have_tr[s][k] = r->ok = isfinite(r->step_wall);
+    } else {
+      char prefix[64];
+      snprintf(prefix, sizeof prefix, "%s, n = %d: ", solver, (int)n);
+      snprintf(a->err, sizeof a->err, "no reason recorded");
+      for (int j = 0; j < n_failed; ++j)
+        if (!strncmp(failed[j], prefix, strlen(prefix))) snprintf(a->err, sizeof a->err, "%s", failed[j] + strlen(prefix));
+    }
+    ++rows;
+  }
+  fclose(f);
+  if (!bad && !rows) fprintf(stderr, "%s: no rows\n", path), bad = 1;
+  if (!bad && !isfinite(t->ref)) fprintf(stderr, "%s: no \"# reference min u* = \" line\n", path), bad = 1;
+  if (bad) return -1;
+  for (int k = 0; k < t->nn; ++k) { /* per mesh, from the first solver that ran it, as a run records it */
+    t->umin[k] = NAN;
+    for (int s = 0; s < t->nsolv && isnan(t->umin[k]); ++s)
+      if (t->st[s][k].ok) t->umin[k] = t->st[s][k].umin;
+    t->err[k] = fabs(t->umin[k] - t->ref);
+  }
+  return 0;
+}
+
 /* ---- main -------------------------------------------------------------- */
 
 static int usage(void) {
   fprintf(stderr, "usage: bench_cavity_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH] [--solvers A,B|scene] "
                   "[--steps K] [--dt DT] [--transient-max N] [--repeat R] [--reference VALUE] [--profile-ref FILE] "
-                  "[--set section.key=value ...] [n ...]\n");
+                  "[--set section.key=value ...] [n ...]\n"
+                  "       bench_cavity_work_precision --replot CSV --svg PATH   (the figure of recorded runs)\n");
   return 2;
 }
 
@@ -498,7 +625,7 @@ static void fit_order(table *t) {
 
 int main(int argc, char **argv) {
   bench_opts bo = {.src = ".", .steps = 10, .dt = 0.01};
-  const char *csv = NULL, *svg = NULL;
+  const char *csv = NULL, *svg = NULL, *replot = NULL;
   char solvers_arg[256] = "umfpack,klu";
   long transient_max = 1L << 30;
   int repeat = 1;
@@ -511,6 +638,7 @@ int main(int argc, char **argv) {
     char *end;
     if (!strcmp(a, "--csv") && i + 1 < argc) csv = argv[++i];
     else if (!strcmp(a, "--svg") && i + 1 < argc) svg = argv[++i];
+    else if (!strcmp(a, "--replot") && i + 1 < argc) replot = argv[++i];
     else if (!strcmp(a, "--solvers") && i + 1 < argc) {
       if (strlen(argv[++i]) >= sizeof solvers_arg) return usage();
       snprintf(solvers_arg, sizeof solvers_arg, "%s", argv[i]);
@@ -543,6 +671,11 @@ int main(int argc, char **argv) {
     } else {
       return usage();
     }
+  }
+  if (replot) {
+    if (!svg || t.nn) return usage();
+    if (read_csv(replot, &t)) return 2;
+    return write_svg(svg, &t) ? 1 : 0;
   }
   for (char *tok = strtok(solvers_arg, ","); tok; tok = strtok(NULL, ",")) {
     if (t.nsolv == MAX_SOLVERS) return fprintf(stderr, "at most %d solvers\n", MAX_SOLVERS), 2;

@@ -243,6 +243,7 @@ typedef struct {
   token prev;    /* the one before (kind T_END before the first) */
   const char *const *vars;
   int n_vars;
+  const sl_expr_constants *named; /* the caller's named constants (NULL: none) */
   sl_ins *code;
   int n, cap;
   int nest;
@@ -478,13 +479,14 @@ static int expected_operand(parser *P) {
 static int unknown_name(parser *P, const token *t, int as_function) {
   char name[80];
   snprintf(name, sizeof name, "%.*s", t->len > 64 ? 64 : t->len, t->s);
-  const char *cand[N_FUNCS + N_CONSTS + SL_EXPR_MAX_VARS];
+  const char *cand[N_FUNCS + N_CONSTS + SL_EXPR_MAX_VARS + SL_EXPR_MAX_CONSTANTS];
   int n = 0;
   /* Prefer names of the same kind: functions before '(', values elsewhere. */
   if (as_function)
     for (int i = 0; i < N_FUNCS; ++i) cand[n++] = funcs[i].name;
   for (int i = 0; i < P->n_vars; ++i) cand[n++] = P->vars[i];
   for (int i = 0; i < N_CONSTS; ++i) cand[n++] = consts[i].name;
+  for (int i = 0; P->named && i < P->named->n && i < SL_EXPR_MAX_CONSTANTS; ++i) cand[n++] = P->named->names[i];
   const char *best = sl_suggest(name, cand, n);
   if (!best && !as_function) {
     for (int i = 0; i < N_FUNCS; ++i) cand[i] = funcs[i].name;
@@ -561,6 +563,12 @@ static int parse_primary(parser *P) {
         if (name_is(t.s, t.len, P->vars[i])) {
           if ((rc = emit(P, OP_VAR, i, 0)) || (rc = advance(P))) return rc;
           if (P->tok.kind == T_LPAREN) return fail(P, t.col, "'%s' is a variable, not a function", P->vars[i]);
+          return 0;
+        }
+      for (int i = 0; P->named && i < P->named->n; ++i)
+        if (name_is(t.s, t.len, P->named->names[i])) {
+          if ((rc = emit(P, OP_CONST, 0, P->named->values[i])) || (rc = advance(P))) return rc;
+          if (P->tok.kind == T_LPAREN) return fail(P, t.col, "'%s' is a parameter, not a function", P->named->names[i]);
           return 0;
         }
       int ci = find_const(t.s, t.len);
@@ -744,6 +752,16 @@ static int check_vars(const char *const *vars, int n_vars, sl_diag *d) {
 }
 
 int sl_expr_compile(const char *text, const char *const *vars, int n_vars, sl_expr **out, sl_diag *d) {
+  return sl_expr_compile_with(text, vars, n_vars, NULL, out, d);
+}
+
+int sl_expr_is_builtin(const char *name) {
+  int len = (int)strlen(name);
+  return find_func(name, len) >= 0 || find_const(name, len) >= 0;
+}
+
+int sl_expr_compile_with(const char *text, const char *const *vars, int n_vars, const sl_expr_constants *named,
+                         sl_expr **out, sl_diag *d) {
   if (out) *out = NULL;
   if (!text || !out) return sl_diag_set(d, SL_EBADINPUT, "expression: no text or no output");
   int rc = check_vars(vars, n_vars, d);
@@ -759,6 +777,7 @@ int sl_expr_compile(const char *text, const char *const *vars, int n_vars, sl_ex
   P->col = 1;
   P->vars = vars;
   P->n_vars = n_vars;
+  P->named = named && named->n > 0 ? named : NULL;
   P->d = d;
   P->cap = 16;
   P->code = malloc((size_t)P->cap * sizeof *P->code);
@@ -901,6 +920,11 @@ void sl_expr_free(sl_expr *e) { free(e); }
 
 int sl_expr_compile_list(const char *text, const char *const *vars, int n_vars, int max, sl_expr **out, int *n,
                          sl_diag *d) {
+  return sl_expr_compile_list_with(text, vars, n_vars, NULL, max, out, n, d);
+}
+
+int sl_expr_compile_list_with(const char *text, const char *const *vars, int n_vars, const sl_expr_constants *named,
+                              int max, sl_expr **out, int *n, sl_diag *d) {
   *n = 0;
   const char *p = text;
   while (*p) {
@@ -912,7 +936,7 @@ int sl_expr_compile_list(const char *text, const char *const *vars, int n_vars, 
     char buf[4096];
     snprintf(buf, sizeof buf, "%.*s", (int)(q - p), p);
     sl_diag d2;
-    if (!rc && sl_expr_compile(buf, vars, n_vars, &out[*n], &d2))
+    if (!rc && sl_expr_compile_with(buf, vars, n_vars, named, &out[*n], &d2))
       rc = sl_diag_set(d, SL_EBADINPUT, "component %d ('%s'): %s", *n + 1, buf, d2.msg);
     if (rc) {
       for (int i = 0; i < *n; ++i) sl_expr_free(out[i]), out[i] = NULL;

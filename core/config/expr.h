@@ -36,8 +36,20 @@ enum {
   SL_EXPR_MAX_LEN = 4096,  /* characters of text */
   SL_EXPR_MAX_STACK = 64,  /* evaluation stack slots */
   SL_EXPR_MAX_NEST = 200,  /* nesting of parentheses, unary operators, powers, ternaries */
-  SL_EXPR_MAX_VARS = 64
+  SL_EXPR_MAX_VARS = 64,
+  SL_EXPR_MAX_CONSTANTS = 64 /* named constants of sl_expr_compile_with */
 };
+
+/* Named constants an expression may use beside its variables: a scene's
+ * [parameters] (core/config/ini.h, sl_ini_parameters). A name is looked up
+ * after the variables and before the built-in constants pi and e; it
+ * compiles to its value, so an expression of constants only is folded to a
+ * number. */
+typedef struct sl_expr_constants {
+  const char *const *names;
+  const double *values;
+  int n; /* at most SL_EXPR_MAX_CONSTANTS */
+} sl_expr_constants;
 
 typedef struct sl_expr sl_expr;
 
@@ -49,6 +61,12 @@ typedef struct sl_expr sl_expr;
  * (1-based column in UTF-8 characters within `text`); the caller prefixes
  * file:line:key. */
 int sl_expr_compile(const char *text, const char *const *vars, int n_vars, sl_expr **out, sl_diag *d);
+
+/* The same with the named constants k (NULL: none). */
+int sl_expr_compile_with(const char *text, const char *const *vars, int n_vars, const sl_expr_constants *k,
+                         sl_expr **out, sl_diag *d);
+/* 1 when name is a built-in function or constant (sin, pi, ...). */
+int sl_expr_is_builtin(const char *name);
 
 /* Value with values[i] for vars[i] (values may be NULL when no variable is
  * used). Does not allocate or modify e: safe to call from several threads. */
@@ -70,5 +88,7 @@ void sl_expr_free(sl_expr *e);
  * ("component 2 ('...'): ...") for the caller to prefix. */
 int sl_expr_compile_list(const char *text, const char *const *vars, int n_vars, int max, sl_expr **out, int *n,
                          sl_diag *d);
+int sl_expr_compile_list_with(const char *text, const char *const *vars, int n_vars, const sl_expr_constants *k,
+                              int max, sl_expr **out, int *n, sl_diag *d);
 
 #endif

@@ -21,6 +21,7 @@
 #include "core/config/ini.h"
 
 #include "core/config/expr.h"
+#include "core/config/parameters.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -268,6 +269,7 @@ void sl_ini_free(sl_ini *ini) {
   free(ini->sections);
   for (int i = 0; i < ini->n_files; ++i) free(ini->files[i]);
   free(ini->files);
+  sl_ini_params_free(ini->params);
   free(ini);
 }
 
@@ -884,12 +886,16 @@ int sl_parse_real(const char *s, double *out) {
 }
 
 int sl_parse_real_expr(const char *s, double *out, char *why, size_t why_len) {
+  return sl_parse_real_expr_with(s, NULL, out, why, why_len);
+}
+
+int sl_parse_real_expr_with(const char *s, const sl_expr_constants *k, double *out, char *why, size_t why_len) {
   if (why && why_len) why[0] = '\0';
   if (sl_parse_real(s, out) == 0) return 0;
   if (!s || !*s) return SL_EBADINPUT;
   sl_expr *e = NULL;
   sl_diag d;
-  if (sl_expr_compile(s, NULL, 0, &e, &d)) {
+  if (sl_expr_compile_with(s, NULL, 0, k, &e, &d)) {
     /* A long message may be cut to the caller's buffer; that is intended. */
     if (why && snprintf(why, why_len, "%s", d.msg) >= (int)why_len) why[why_len - 1] = '\0';
     return SL_EBADINPUT;
@@ -994,7 +1000,7 @@ int sl_ini_get_real(const sl_ini *ini, const char *section, const char *key, int
   if (!e->value[0] && !e->quoted) return empty_err(e, section, d, "a real number");
   double v;
   char why[200];
-  if (sl_parse_real_expr(e->value, &v, why, sizeof why))
+  if (sl_parse_real_expr_with(e->value, sl_ini_constants(ini), &v, why, sizeof why))
     return value_err(e, section, 0, d, ": expected a real number or a constant expression (like 2, 0.5, 1e-3 or 2*pi)%s%s",
                      why[0] ? ": " : "", why);
   if (v < min || v > max) {
@@ -1135,7 +1141,7 @@ int sl_ini_get_real_list(const sl_ini *ini, const char *section, const char *key
     if (len >= sizeof item) return value_err(e, section, col, d, ": item %d is not a real number", count + 1);
     memcpy(item, s, len);
     item[len] = '\0';
-    if (sl_parse_real_expr(item, &x, why, sizeof why))
+    if (sl_parse_real_expr_with(item, sl_ini_constants(ini), &x, why, sizeof why))
       return value_err(e, section, col, d, ": item %d ('%s') is not a real number or a constant expression%s%s",
                        count + 1, item, why[0] ? ": " : "", why);
     if (vals) vals[count] = x;

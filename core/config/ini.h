@@ -37,6 +37,7 @@ typedef struct sl_ini {
   sl_ini_section *sections;
   int n_files, cap_files;
   char **files; /* every file read, for diagnostics and provenance */
+  struct sl_ini_params *params; /* [parameters] once resolved (parameters.h), else NULL */
 } sl_ini;
 
 /* Parse a file (and its includes). Returns 0 or SL_EBADINPUT with d set. */
@@ -86,6 +87,9 @@ int sl_parse_real(const char *s, double *out);
  * sqrt(2)/2, 10^-4) whose value is finite. SL_EBADINPUT with the reason in
  * why (the expression's own error, column in s) otherwise. */
 int sl_parse_real_expr(const char *s, double *out, char *why, size_t why_len);
+/* The same with named constants (NULL: none): a scene's [parameters]. */
+struct sl_expr_constants;
+int sl_parse_real_expr_with(const char *s, const struct sl_expr_constants *k, double *out, char *why, size_t why_len);
 int sl_parse_long(const char *s, long *out);
 int sl_parse_bool(const char *s, int *out);
 

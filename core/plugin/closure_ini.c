@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/config/parameters.h"
 #include "core/plugin/kinds.h"
 
 int sl_closure_section_kind(const char *section, sl_kind *kind, sl_diag *d) {
@@ -43,7 +44,7 @@ static int resolve(const sl_registry *r, const sl_ini *ini, const char *section,
   for (int i = 0; i < sec->n_entries; ++i) {
     sl_ini_entry *e = &sec->entries[i];
     if (strcmp(e->key, "model") == 0 || strcmp(e->key, "library") == 0) continue;
-    rc = sl_params_set(entry->desc, params, e->key, e->value, d);
+    rc = sl_params_set_with(entry->desc, params, e->key, e->value, sl_ini_constants(ini), d);
     if (rc) {
       sl_params_free(params);
       return located(d, rc, e);

@@ -86,6 +86,11 @@ static int choice_index(const char *choices, const char *value, char *list, size
 }
 
 int sl_params_set(const sl_closure_desc *desc, void *params, const char *key, const char *value, sl_diag *d) {
+  return sl_params_set_with(desc, params, key, value, NULL, d);
+}
+
+int sl_params_set_with(const sl_closure_desc *desc, void *params, const char *key, const char *value,
+                       const sl_expr_constants *named, sl_diag *d) {
   int i = sl_params_find(desc, key);
   if (i < 0) {
     const char *cands[128];
@@ -103,7 +108,7 @@ int sl_params_set(const sl_closure_desc *desc, void *params, const char *key, co
     case SL_PARAM_REAL: {
       double v;
       char why[200];
-      if (sl_parse_real_expr(value, &v, why, sizeof why))
+      if (sl_parse_real_expr_with(value, named, &v, why, sizeof why))
         return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not a number or a constant expression%s%s", key, value,
                            why[0] ? ": " : "", why);
       if (v < p->min || v > p->max)

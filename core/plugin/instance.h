@@ -7,6 +7,7 @@
 
 #include <stdio.h>
 
+#include "core/config/expr.h"
 #include "core/plugin/registry.h"
 
 typedef struct sl_closure {
@@ -31,6 +32,9 @@ void sl_params_free(void *params);
 /* Sets one parameter from text, checking type and bounds; unknown keys get a
  * did-you-mean. The message carries no location: callers prefix it. */
 int sl_params_set(const sl_closure_desc *desc, void *params, const char *key, const char *value, sl_diag *d);
+/* The same with named constants in real values (a scene's [parameters]; NULL: none). */
+int sl_params_set_with(const sl_closure_desc *desc, void *params, const char *key, const char *value,
+                       const sl_expr_constants *k, sl_diag *d);
 /* Index of a parameter by name, or -1. */
 int sl_params_find(const sl_closure_desc *desc, const char *key);
 /* The value of parameter i as text ("4.65", "true", "rowe"). */

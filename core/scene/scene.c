@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/config/parameters.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/kinds.h"
 #include "core/scene/mesh.h"
@@ -81,7 +82,7 @@ static int compile(builder *b, const sl_key *k, const char *section, const sl_in
   int nv = split_vars(k->vars, store, names, SL_EXPR_MAX_VARS), rc;
   if (k->type == SL_KEY_EXPR) {
     sl_scene_expr *x = slot;
-    if ((rc = sl_expr_compile(text, names, nv, &x->e, d)))
+    if ((rc = sl_expr_compile_with(text, names, nv, sl_ini_constants(b->ini), &x->e, d)))
       return e ? sl_diag_prefix(d, rc, "%s:%d: [%s] %s", e->file, e->line, section, k->name)
                : sl_diag_prefix(d, rc, "[%s] %s (default '%s')", section, k->name, text);
     x->text = text;
@@ -89,7 +90,7 @@ static int compile(builder *b, const sl_key *k, const char *section, const sl_in
   }
   sl_scene_exprs *x = slot;
   int max = k->max_n > 0 && k->max_n <= SL_EXPRS_MAX ? k->max_n : SL_EXPRS_MAX;
-  if ((rc = sl_expr_compile_list(text, names, nv, max, x->e, &x->n, d)))
+  if ((rc = sl_expr_compile_list_with(text, names, nv, sl_ini_constants(b->ini), max, x->e, &x->n, d)))
     return e ? sl_diag_prefix(d, rc, "%s:%d: [%s] %s", e->file, e->line, section, k->name)
              : sl_diag_prefix(d, rc, "[%s] %s (default '%s')", section, k->name, text);
   x->text = text;
@@ -232,7 +233,7 @@ static int check_sections(builder *b, sl_diag *d) {
   model_label(s, label, sizeof label);
   for (int i = 0; i < ini->n_sections; ++i) {
     const sl_ini_section *sec = &ini->sections[i];
-    if (strcmp(sec->name, "plugins") == 0) continue;
+    if (strcmp(sec->name, "plugins") == 0 || strcmp(sec->name, "parameters") == 0) continue;
     if (strcmp(sec->name, "solver.petsc") == 0 && sl_schema_key(s, "solver", "linear")) {
       int rc = sl_scene_petsc_section(sec, &b->sc->solver.petsc_options, d);
       if (rc) return rc;
@@ -515,10 +516,12 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
   builder b = {.sc = sc, .ini = ini, .o = o};
   int rc = 0;
   if (!(sc->config = calloc(1, schema->config_size ? schema->config_size : 1))) rc = oom(d);
+  if (!rc) rc = sl_ini_parameters(ini, d); /* [parameters]: named constants of every value below */
   if (!rc) rc = check_sections(&b, d);
   for (int i = 0; i < ini->n_sections && !rc; ++i) {
     const sl_ini_section *sec = &ini->sections[i];
     if (strncmp(sec->name, "boundary.", 9) == 0 || strncmp(sec->name, "closure.", 8) == 0) continue;
+    if (strcmp(sec->name, "parameters") == 0) continue;
     if (strcmp(sec->name, "solver.petsc") == 0) continue; /* checked with the sections */
     rc = check_keys(&b, sec, sec->name, d);
   }

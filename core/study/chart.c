@@ -372,13 +372,14 @@ static void linear_ticks(axis *a, double lo, double hi, int log_positions) {
 }
 
 /* The axis over [lo, hi] (data values), 4 % of the span added each side. */
-static void make_axis(axis *a, sl_axis_scale s, double lo, double hi) {
+/* margin: the fraction of the span added at each end */
+static void make_axis(axis *a, sl_axis_scale s, double lo, double hi, double margin) {
   memset(a, 0, sizeof *a);
   a->scale = s;
   if (s == SL_AXIS_LOG) {
     double L = log10(lo), H = log10(hi);
     if (!(H - L > 1e-9)) L -= 0.5, H += 0.5;
-    double pad = 0.04 * (H - L);
+    double pad = margin * (H - L);
     a->lo = L - pad, a->hi = H + pad;
     int e0 = (int)ceil(a->lo - 1e-9), e1 = (int)floor(a->hi + 1e-9), decades = (int)ceil(a->hi) - (int)floor(a->lo);
     int plain = floor(a->lo) >= -2 && ceil(a->hi) <= 4;
@@ -411,7 +412,7 @@ static void make_axis(axis *a, sl_axis_scale s, double lo, double hi) {
     double pad = lo != 0.0 ? 0.1 * fabs(lo) : 1.0;
     lo -= pad, hi += pad;
   }
-  double pad = 0.04 * (hi - lo);
+  double pad = margin * (hi - lo);
   a->lo = lo - pad, a->hi = hi + pad;
   linear_ticks(a, a->lo, a->hi, 0);
 }
@@ -501,6 +502,12 @@ static int fit_axes(panel *p) {
       if (!point_ok(c, x, y)) continue;
       xlo = fmin(xlo, x), xhi = fmax(xhi, x), ylo = fmin(ylo, y), yhi = fmax(yhi, y);
     }
+  const sl_chart_heatmap *hm = c->heatmap;
+  if (hm && hm->nx > 0 && hm->ny > 0) /* the map's extent */
+    for (int k = 0; k < 2; ++k) {
+      double x = hm->x_edges[k ? hm->nx : 0], y = hm->y_edges[k ? hm->ny : 0];
+      if (point_ok(c, x, y)) xlo = fmin(xlo, x), xhi = fmax(xhi, x), ylo = fmin(ylo, y), yhi = fmax(yhi, y);
+    }
   int any = xlo <= xhi;
   if (any) {
     for (int k = 0; k < 2; ++k) {
@@ -519,20 +526,21 @@ static int fit_axes(panel *p) {
     ylo = xlo, yhi = xhi;
     if (c->yscale != c->xscale) ylo = c->yscale == SL_AXIS_LOG ? 1.0 : 0.0, yhi = c->yscale == SL_AXIS_LOG ? 10.0 : 1.0;
   }
-  make_axis(&p->ax, c->xscale, xlo, xhi);
-  make_axis(&p->ay, c->yscale, ylo, yhi);
+  double margin = hm ? 0.0 : 0.04;
+  make_axis(&p->ax, c->xscale, xlo, xhi, margin);
+  make_axis(&p->ay, c->yscale, ylo, yhi, margin);
   return any;
 }
 
 static void draw_axes(canvas *cv, const panel *p, double ox, double oy, double head_y) {
   const sl_chart *c = p->c;
   (void)oy;
-  for (int k = 0; k < p->ax.n_ticks; ++k) {
+  for (int k = 0; k < p->ax.n_ticks && !c->heatmap; ++k) {
     const tick *t = &p->ax.ticks[k];
     double x = pxc(p, t->v);
     cv_line(cv, x, p->y0, x, p->y1, 1, t->major ? GRID : MINOR_GRID, 0);
   }
-  for (int k = 0; k < p->ay.n_ticks; ++k) {
+  for (int k = 0; k < p->ay.n_ticks && !c->heatmap; ++k) {
     const tick *t = &p->ay.ticks[k];
     double y = pyc(p, t->v);
     cv_line(cv, p->x0, y, p->x1, y, 1, t->major ? GRID : MINOR_GRID, 0);
@@ -603,9 +611,15 @@ static void draw_series(canvas *cv, const panel *p) {
       if (!point_ok(c, s->x[i], s->y[i])) continue;
       double x = px(p, s->x[i]), y = py(p, s->y[i]);
       if ((i - s->marker_offset) % every == 0) cv_marker(cv, x, y, series_marker(s, k), 3.8, col);
-      if (s->labels && s->labels[i]) cv_text(cv, x + 6, y + 4 + SMALL, s->labels[i], SMALL, START, 0, INK, 0, "point");
+      if (s->labels && s->labels[i]) { /* right of the point, or left of it where it would leave the frame */
+        int left = x + 6 + text_width(s->labels[i], SMALL) > p->x1;
+        cv_text(cv, left ? x - 6 : x + 6, y + 4 + SMALL, s->labels[i], SMALL, left ? END : START, 0, INK, 0, "point");
+      }
     }
   }
+  enum { MAX_PLACED = 16 };
+  double placed[MAX_PLACED][3]; /* the slope labels drawn: centre, baseline, half width */
+  int n_placed = 0;
   for (int k = 0; k < c->n_series; ++k) {
     const triangle *t = &p->tri[k];
     if (!t->on) continue;
@@ -622,7 +636,14 @@ static void draw_series(canvas *cv, const panel *p) {
     if (cv->f) fputs("<g class=\"slope-triangle\">\n", cv->f);
     cv_polyline(cv, 4, lx, ly, 1.2, col, 0);
     double bottom = fmax(Y[0], Y[1]);
-    cv_text(cv, 0.5 * (X[0] + X[1]), bottom + 4 + SMALL, t->label, SMALL + 1, MIDDLE, 0, col, 0, "slope");
+    double half = 0.5 * text_width(t->label, SMALL + 1), at = 0.5 * (X[0] + X[1]); /* inside the frame */
+    at = fmax(p->x0 + half + 2, fmin(at, p->x1 - half - 2));
+    double base = bottom + 4 + SMALL;
+    for (int j = 0; j < n_placed; ++j) /* below a label already there */
+      if (fabs(placed[j][0] - at) < placed[j][2] + half && fabs(placed[j][1] - base) < SMALL + 2)
+        base = placed[j][1] + SMALL + 3, j = -1;
+    if (n_placed < MAX_PLACED) placed[n_placed][0] = at, placed[n_placed][1] = base, placed[n_placed++][2] = half;
+    cv_text(cv, at, base, t->label, SMALL + 1, MIDDLE, 0, col, 0, "slope");
     if (cv->f) fputs("</g>\n", cv->f);
   }
 }
@@ -674,6 +695,76 @@ static void draw_legend(canvas *cv, const panel *p) {
 }
 
 /* The panel in the box (ox, oy, w, h). */
+/* ---- heat maps ------------------------------------------------------------ */
+
+uint32_t sl_chart_heat_colour(double t) {
+  static const double stop[5][3] = {{255, 255, 255}, {255, 230, 120}, {250, 150, 40}, {215, 40, 30}, {110, 0, 20}};
+  double r = (isfinite(t) ? fmin(fmax(t, 0.0), 1.0) : 0.0) * 4.0;
+  int k = (int)fmin(floor(r), 3.0);
+  double w = r - k, col[3];
+  for (int j = 0; j < 3; ++j) col[j] = stop[k][j] + w * (stop[k + 1][j] - stop[k][j]);
+  return (uint32_t)lround(col[0]) << 16 | (uint32_t)lround(col[1]) << 8 | (uint32_t)lround(col[2]);
+}
+
+static double heat_fraction(const sl_chart_heatmap *hm, double v) {
+  return hm->hi > hm->lo ? (v - hm->lo) / (hm->hi - hm->lo) : 0.5;
+}
+
+enum { BAR_GAP = 14, BAR_W = 14, BAR_STRIPS = 64 };
+
+/* The width right of the plot area the colour bar takes: gap, bar, ticks and labels, title. */
+static double colourbar_width(const sl_chart_heatmap *hm, const axis *bar) {
+  double w = 0;
+  for (int k = 0; k < bar->n_ticks; ++k) w = fmax(w, text_width(bar->ticks[k].label, TICKS));
+  return BAR_GAP + BAR_W + 6 + w + (hm->label ? 8 + LABEL : 0) + 4;
+}
+
+static void draw_heatmap(canvas *cv, const panel *p) {
+  const sl_chart *c = p->c;
+  const sl_chart_heatmap *hm = c->heatmap;
+  if (cv->f) fprintf(cv->f, "<g class=\"heatmap\" shape-rendering=\"crispEdges\" data-lo=\"%.10g\" data-hi=\"%.10g\">\n",
+                     hm->lo, hm->hi);
+  cv_clip_begin(cv, p->x0, p->y0, p->x1, p->y1);
+  for (int j = 0; j < hm->ny; ++j)
+    for (int i = 0; i < hm->nx; ++i) {
+      double v = hm->values[(size_t)j * (size_t)hm->nx + (size_t)i];
+      if (!isfinite(v) || !point_ok(c, hm->x_edges[i], hm->y_edges[j]) ||
+          !point_ok(c, hm->x_edges[i + 1], hm->y_edges[j + 1]))
+        continue;
+      double x0 = px(p, hm->x_edges[i]), x1 = px(p, hm->x_edges[i + 1]);
+      double y0 = py(p, hm->y_edges[j + 1]), y1 = py(p, hm->y_edges[j]);
+      cv_rect(cv, fmin(x0, x1), fmin(y0, y1), fmax(x0, x1), fmax(y0, y1), sl_chart_heat_colour(heat_fraction(hm, v)), -1);
+    }
+  cv_clip_end(cv);
+  if (cv->f) fputs("</g>\n", cv->f);
+}
+
+static void draw_colourbar(canvas *cv, const panel *p, const axis *bar) {
+  const sl_chart_heatmap *hm = p->c->heatmap;
+  double x0 = p->x1 + BAR_GAP, x1 = x0 + BAR_W, y0 = p->y0, y1 = p->y1;
+  if (cv->f) fprintf(cv->f, "<g class=\"colourbar\" shape-rendering=\"crispEdges\" data-lo=\"%.10g\" data-hi=\"%.10g\">\n",
+                     bar->lo, bar->hi);
+  for (int k = 0; k < BAR_STRIPS; ++k) { /* from lo at the bottom, each strip the colour of its middle */
+    double v = bar->lo + (k + 0.5) / BAR_STRIPS * (bar->hi - bar->lo);
+    double ya = y1 - (double)(k + 1) / BAR_STRIPS * (y1 - y0), yb = y1 - (double)k / BAR_STRIPS * (y1 - y0);
+    cv_rect(cv, x0, ya, x1, yb, sl_chart_heat_colour(heat_fraction(hm, v)), -1);
+  }
+  cv_rect(cv, x0, y0, x1, y1, -1, FRAME);
+  double widest = 0;
+  for (int k = 0; k < bar->n_ticks; ++k) {
+    const tick *t = &bar->ticks[k];
+    double y = y1 - (t->v - bar->lo) / (bar->hi - bar->lo) * (y1 - y0);
+    cv_line(cv, x1, y, x1 + 4, y, 1, FRAME, 0);
+    cv_text(cv, x1 + 6, y + 0.35 * TICKS, t->label, TICKS, START, 0, INK, 0, "tick");
+    widest = fmax(widest, text_width(t->label, TICKS));
+  }
+  if (hm->label) {
+    double size = fmax(9.0, fmin(LABEL, LABEL * (y1 - y0) / fmax(text_width(hm->label, LABEL), 1.0)));
+    cv_text(cv, x1 + 6 + widest + 8 + 0.8 * LABEL, 0.5 * (y0 + y1), hm->label, size, MIDDLE, 1, INK, 0, "barlabel");
+  }
+  if (cv->f) fputs("</g>\n", cv->f);
+}
+
 static int draw_panel(canvas *cv, const sl_chart *c, double ox, double oy, double w, double h, int heading,
                       sl_diag *d) {
   panel p = {.c = c};
@@ -685,13 +776,20 @@ static int draw_panel(canvas *cv, const sl_chart *c, double ox, double oy, doubl
   double top = oy + 8 + (heading && c->title ? HEAD + 8 : 0);
   p.x0 = ox + 10 + (c->ylabel ? LABEL + 10 : 0) + label_w + 8;
   p.x1 = ox + w - 18;
+  axis bar;
+  if (c->heatmap) {
+    make_axis(&bar, SL_AXIS_LINEAR, c->heatmap->lo, c->heatmap->hi, 0.0);
+    p.x1 -= colourbar_width(c->heatmap, &bar);
+  }
   p.y0 = top + 4;
   p.y1 = oy + h - (6 + TICKS + 8 + (c->xlabel ? LABEL + 8 : 0) + 4);
   if (p.x1 - p.x0 < 50 || p.y1 - p.y0 < 50) {
     free(p.tri);
     return sl_diag_set(d, SL_EBADINPUT, "plot: a %.0f x %.0f pixel panel leaves no room for the plot", w, h);
   }
+  if (c->heatmap) draw_heatmap(cv, &p);
   draw_axes(cv, &p, ox, oy, heading ? oy + 8 + HEAD : 0);
+  if (c->heatmap) draw_colourbar(cv, &p, &bar);
   draw_series(cv, &p);
   draw_legend(cv, &p);
   if (!p.any) cv_text(cv, 0.5 * (p.x0 + p.x1), 0.5 * (p.y0 + p.y1), "no point to plot", LABEL, MIDDLE, 0, 0xA00000, 0, NULL);

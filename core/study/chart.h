@@ -71,6 +71,21 @@ typedef struct sl_chart_series {
   int slope_negate;
 } sl_chart_series;
 
+/* A heat map drawn under the series: cell (i, j) spans x_edges[i] ..
+ * x_edges[i + 1] by y_edges[j] .. y_edges[j + 1] (nx + 1 and ny + 1 edges,
+ * ascending) and is filled with the colour of values[j nx + i] on
+ * sl_chart_heat_colour's scale from lo (0) to hi (1), clamped; a non-finite
+ * value is left blank. A colour bar right of the panel, titled label, shows
+ * the scale. The axes span the edges without margin; no grid is drawn over
+ * the map. */
+typedef struct sl_chart_heatmap {
+  int nx, ny;
+  const double *x_edges, *y_edges;
+  const double *values;
+  double lo, hi;
+  const char *label;
+} sl_chart_heatmap;
+
 typedef struct sl_chart {
   const char *title, *subtitle, *xlabel, *ylabel, *note; /* each may be NULL; note: small print at the bottom */
   sl_axis_scale xscale, yscale;
@@ -78,6 +93,7 @@ typedef struct sl_chart {
   const sl_chart_series *series;
   sl_legend_place legend;
   double xspan[2], yspan[2]; /* values the axes must also cover (a range shared between panels); unused when equal */
+  const sl_chart_heatmap *heatmap; /* or NULL */
 } sl_chart;
 
 /* Panels in a grid, row by row, under one title. A panel's title heads it;
@@ -92,6 +108,11 @@ typedef struct sl_figure {
 
 /* The colour of series k (0xRRGGBB), as the legend shows it. */
 uint32_t sl_chart_colour(int k);
+
+/* A heat map's colour (0xRRGGBB) for t in [0, 1] (clamped): white, yellow,
+ * orange, red, dark red, linear between those five stops at t = 0, 1/4,
+ * 1/2, 3/4, 1. Lightness falls monotonically, so the scale reads in grey. */
+uint32_t sl_chart_heat_colour(double t);
 
 /* The least-squares slope of log10 y on log10 x over the last `points`
  * plottable points of s (all when points < 2 or more than there are), as the

@@ -78,6 +78,7 @@ static double residual(sl_transport *t, const double *q, const double *w, const 
                        double *res) {
   const sl_mesh *m = t->m;
   memset(res, 0, (size_t)m->n_cells * sizeof *res);
+  memset(t->bres, 0, (size_t)m->n_boundaries * sizeof *t->bres);
   double inflow = 0;
   for (int f = 0; f < m->n_faces; ++f) {
     int kind = t->fkind[f];
@@ -95,12 +96,12 @@ static double residual(sl_transport *t, const double *q, const double *w, const 
       b = phi[n];
       if (muscl) b += t->grad[2 * n] * (xn[0] - t->xc[2 * n]) + t->grad[2 * n + 1] * (xn[1] - t->xc[2 * n + 1]);
     } else {
-      b = t->bc_phi[m->face_tag[f]];
+      b = t->face_phi ? t->face_phi[f] : t->bc_phi[m->face_tag[f]];
     }
     double g = sl_godunov_flux(&t->tab, qf, wf, a, b);
     res[o] -= g;
     if (n >= 0) res[n] += g;
-    else inflow -= g;
+    else inflow -= g, t->bres[m->face_tag[f]] -= g;
   }
   return inflow;
 }
@@ -261,6 +262,7 @@ static int substep(sl_transport *t, const double *q, const double *w, double h, 
     double vl = 0, cl = 0;
     sl_transport_reconstruct(t, cur);
     double in1 = residual(t, q, w, cur, 1, res);
+    memcpy(t->bres1, t->bres, (size_t)t->m->n_boundaries * sizeof *t->bres1);
     if (t->extra) add_extra(t, cur, t->xflux, h, res, &nl, &vl);
     bad = euler(t, cur, res, h, stage, &cl) >= 0;
     if (!bad) {
@@ -276,6 +278,7 @@ static int substep(sl_transport *t, const double *q, const double *w, double h, 
       if (!bad) { /* the mean of two states in bounds is in bounds */
         for (int c = 0; c < nc; ++c) cur[c] = 0.5 * (cur[c] + stage[c]);
         st->boundary_inflow += 0.5 * h * (in1 + in2);
+        for (int b = 0; b < t->m->n_boundaries; ++b) t->bstep[b] += 0.5 * h * (t->bres1[b] + t->bres[b]);
         st->clamped += 0.5 * cl;
         st->n_extra_limited += nl;
         st->extra_limited += 0.5 * vl;
@@ -294,6 +297,7 @@ static int substep(sl_transport *t, const double *q, const double *w, double h, 
                        stage[c], c, t->xc[2 * c], t->xc[2 * c + 1], t->o.phi_max, st->max_divergence);
   memcpy(cur, stage, (size_t)nc * sizeof *cur);
   st->boundary_inflow += h * in;
+  for (int b = 0; b < t->m->n_boundaries; ++b) t->bstep[b] += h * t->bres[b];
   return 0;
 }
 
@@ -302,6 +306,7 @@ int sl_transport_step(sl_transport *t, double dt, const double *q, const double 
   sl_transport_stats local;
   if (!st) st = &local;
   memset(st, 0, sizeof *st);
+  memset(t->bstep, 0, (size_t)t->m->n_boundaries * sizeof *t->bstep);
   st->limiting_cell = -1;
   st->dt_extra = HUGE_VAL;
   int rc = check_inputs(t, dt, q, w, phi, d);

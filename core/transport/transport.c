@@ -21,6 +21,8 @@ void sl_transport_destroy(sl_transport *t) {
   free(t->vnb);
   free(t->bc_type);
   free(t->bc_phi);
+  free(t->face_phi);
+  free(t->bres), free(t->bres1), free(t->bstep);
   free(t->fkind);
   free(t->partner);
   free(t->pshift);
@@ -166,6 +168,9 @@ int sl_transport_create(const sl_mesh *m, const sl_transport_opts *o, sl_transpo
   t->lsq = malloc(3 * nc * sizeof *t->lsq);
   t->bc_type = calloc(nb + 1, sizeof *t->bc_type);
   t->bc_phi = calloc(nb + 1, sizeof *t->bc_phi);
+  t->bres = calloc(nb + 1, sizeof *t->bres);
+  t->bres1 = calloc(nb + 1, sizeof *t->bres1);
+  t->bstep = calloc(nb + 1, sizeof *t->bstep);
   t->fkind = malloc(nf * sizeof *t->fkind);
   t->res = malloc(nc * sizeof *t->res);
   t->cur = malloc(nc * sizeof *t->cur);
@@ -174,6 +179,7 @@ int sl_transport_create(const sl_mesh *m, const sl_transport_opts *o, sl_transpo
   t->sens = malloc(nc * sizeof *t->sens);
   int rc;
   if (!t->vol || !t->area || !t->normal || !t->xf || !t->xc || !t->lsq || !t->bc_type || !t->bc_phi || !t->fkind ||
+      !t->bres || !t->bres1 || !t->bstep ||
       !t->res || !t->cur || !t->stage || !t->grad || !t->sens) {
     rc = sl_diag_set(d, SL_ENOMEM, "transport: out of memory");
     goto fail;
@@ -206,8 +212,10 @@ int sl_transport_set_boundary(sl_transport *t, int b, sl_transport_bc type, doub
                        m->boundary_names[b], phi_outside, t->o.phi_max);
   t->bc_type[b] = (int)type;
   t->bc_phi[b] = type == SL_TRANSPORT_OPEN ? phi_outside : 0;
-  for (int i = m->bface_start[b]; i < m->bface_start[b + 1]; ++i)
+  for (int i = m->bface_start[b]; i < m->bface_start[b + 1]; ++i) {
     t->fkind[m->bface[i]] = type == SL_TRANSPORT_OPEN ? SL_FACE_OPEN : SL_FACE_WALL;
+    if (t->face_phi) t->face_phi[m->bface[i]] = t->bc_phi[b];
+  }
   return 0;
 }
 

@@ -149,6 +149,19 @@ void sl_transport_destroy(sl_transport *t);
  * pair is refused. */
 int sl_transport_set_boundary(sl_transport *t, int b, sl_transport_bc type, double phi_outside, sl_diag *d);
 
+/* Exterior states that vary along the open boundary b: phi_faces[i] is the
+ * state outside the face m->bface[m->bface_start[b] + i] (one per face of
+ * b, each in [0, phi_max]), used by the Godunov flux in place of the
+ * boundary's phi_outside until set again (an inflow profile of the channel
+ * coordinate, Nigam 1999 eq 4.148, or one that changes in time). Returns 0,
+ * or SL_EBADINPUT (no such boundary, not open, a value out of range: the
+ * face point is named) with nothing changed. */
+int sl_transport_set_boundary_values(sl_transport *t, int b, const double *phi_faces, sl_diag *d);
+/* The solids volume that entered through boundary b (negative: left) in the
+ * last successful sl_transport_step, in the units of boundary_inflow; the
+ * boundaries' values sum to its boundary_inflow. */
+double sl_transport_boundary_flow(const sl_transport *t, int b);
+
 /* Periodic pair: the faces of mesh boundaries a and b, which must match by
  * one translation s (x_b = x_a + s), become interior faces between their two
  * cells: Godunov flux, MUSCL reconstruction (the neighbour's cell point

@@ -31,6 +31,9 @@ struct sl_transport {
   int vnb_pairs;
   int *bc_type;   /* [n_boundaries] sl_transport_bc, or SL_TRANSPORT_PERIODIC_ (below) */
   double *bc_phi; /* [n_boundaries] */
+  double *bres, *bres1, *bstep; /* [n_boundaries + 1]: solids into each boundary's cells: one residual, its first
+                                   stage, the last sl_transport_step (sl_transport_boundary_flow) */
+  double *face_phi; /* [n_faces] exterior states per open face (inflow.c), NULL: bc_phi of the face's boundary */
   int *fkind;     /* [n_faces] SL_FACE_* */
   /* Periodic pairs (NULL until the first sl_transport_set_periodic). */
   int *partner;   /* [n_faces] the paired face, -1 for the others */

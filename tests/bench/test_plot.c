@@ -132,6 +132,76 @@ static void svg_slope(void) {
   CHECK_MSG(ylo < 1.0 / 32, "the axis (from %g) leaves room for the triangle", ylo);
 }
 
+/* Text kept inside the frame: the label of a point at the right end of the
+ * x axis is set to its left (anchored at its end), the others to the right;
+ * the slope labels of two curves whose triangles nearly coincide, y = x^-2.5
+ * and y = 0.95 x^-2.4 over 1..4 (orders 2.50 and 2.40: least squares of
+ * exact powers), are stacked a line apart, not drawn over each other. */
+static void svg_text_in_frame(void) {
+  const double x[3] = {1, 2, 4}, ya[3] = {1, pow(2, -2.5), pow(4, -2.5)};
+  const double yb[3] = {0.95, 0.95 * pow(2, -2.4), 0.95 * pow(4, -2.4)};
+  const char *const lab[3] = {"n=1", "n=2", "n=4"};
+  sl_chart_series s[2] = {{.name = "a", .n = 3, .x = x, .y = ya, .labels = lab, .slope_points = 3,
+                           .slope_format = "order %.2f", .slope_negate = 1},
+                          {.name = "b", .n = 3, .x = x, .y = yb, .slope_points = 3, .slope_format = "order %.2f",
+                           .slope_negate = 1}};
+  sl_chart c = {.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .n_series = 2, .series = s, .legend = SL_LEGEND_NONE};
+  sl_diag d = {{0}};
+  CHECK(sl_chart_write_svg("plot_frame.svg", &c, 480, 360, &d) == 0);
+  char a1[32], a3[32], t1[32], t2[32];
+  xpath("plot_frame.svg", "string((//*[@class='point'])[1]/@text-anchor)", a1, sizeof a1);
+  xpath("plot_frame.svg", "string((//*[@class='point'])[3]/@text-anchor)", a3, sizeof a3);
+  CHECK_MSG(!strcmp(a1, "start") && !strcmp(a3, "end"), "point labels anchored %s .. %s", a1, a3);
+  xpath("plot_frame.svg", "string((//*[@class='slope'])[1])", t1, sizeof t1);
+  xpath("plot_frame.svg", "string((//*[@class='slope'])[2])", t2, sizeof t2);
+  CHECK_MSG(!strcmp(t1, "order 2.50") && !strcmp(t2, "order 2.40"), "slope labels %s, %s", t1, t2);
+  double y1 = xpath_number("plot_frame.svg", "string((//*[@class='slope'])[1]/@y)");
+  double y2 = xpath_number("plot_frame.svg", "string((//*[@class='slope'])[2]/@y)");
+  double x1 = xpath_number("plot_frame.svg", "string((//*[@class='slope'])[1]/@x)");
+  double x2 = xpath_number("plot_frame.svg", "string((//*[@class='slope'])[2]/@x)");
+  CHECK_MSG(fabs(y1 - y2) >= 12.0 || fabs(x1 - x2) >= 60.0, "slope labels at (%g, %g) and (%g, %g) overlap", x1, y1,
+            x2, y2);
+}
+
+/* A heat map: the colour scale at its stops and half-way between two (linear
+ * in each channel, rounded), the axes on the cells' edges exactly, the colour
+ * bar over lo..hi, and a cell's middle pixel in the raster its value's colour. */
+static void svg_heatmap(void) {
+  CHECK(sl_chart_heat_colour(0.0) == 0xFFFFFF && sl_chart_heat_colour(-1.0) == 0xFFFFFF);
+  CHECK(sl_chart_heat_colour(0.25) == 0xFFE678 && sl_chart_heat_colour(0.5) == 0xFA9628);
+  CHECK(sl_chart_heat_colour(1.0) == 0x6E0014 && sl_chart_heat_colour(2.0) == 0x6E0014);
+  CHECK_MSG(sl_chart_heat_colour(0.125) == 0xFFF3BC, "%06X", (unsigned)sl_chart_heat_colour(0.125)); /* (255, 242.5, 187.5) */
+  const double xe[3] = {0, 1, 2}, ye[3] = {0, 0.5, 1}, v[4] = {0, 5, 7.5, 10}; /* row j = 0, then j = 1 */
+  sl_chart_heatmap hm = {.nx = 2, .ny = 2, .x_edges = xe, .y_edges = ye, .values = v, .lo = 0, .hi = 10,
+                         .label = "value"};
+  sl_chart c = {.xlabel = "x (m)", .ylabel = "y (m)", .legend = SL_LEGEND_NONE, .heatmap = &hm};
+  sl_diag d = {{0}};
+  CHECK(sl_chart_write_svg("plot_heat.svg", &c, 400, 300, &d) == 0);
+  const char *f = "plot_heat.svg";
+  CHECK(xpath_number(f, "string((//*[@data-axis='x'])[1]/@data-lo)") == 0.0);
+  CHECK(xpath_number(f, "string((//*[@data-axis='x'])[1]/@data-hi)") == 2.0);
+  CHECK(xpath_number(f, "string((//*[@data-axis='y'])[1]/@data-hi)") == 1.0);
+  CHECK(xpath_number(f, "string(//*[@class='colourbar']/@data-lo)") == 0.0);
+  CHECK(xpath_number(f, "string(//*[@class='colourbar']/@data-hi)") == 10.0);
+  /* the cells follow the clip path's rect: cell (1, 1), value 10, is the fifth */
+  double x = xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@x)");
+  double y = xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@y)");
+  double w = xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@width)");
+  double h = xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@height)");
+  char fill[16];
+  xpath(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@fill)", fill, sizeof fill);
+  CHECK_MSG(!strcmp(fill, "#6E0014"), "cell (1, 1) filled %s", fill);
+  sl_image im = {0};
+  CHECK(sl_chart_draw(&c, 400, 300, &im, &d) == 0);
+  if (im.rgb && isfinite(x + y + w + h)) {
+    int X = (int)floor(x + 0.5 * w), Y = (int)floor(y + 0.5 * h);
+    const unsigned char *q = im.rgb + 3 * ((size_t)Y * (size_t)im.w + (size_t)X);
+    uint32_t col = (uint32_t)q[0] << 16 | (uint32_t)q[1] << 8 | q[2];
+    CHECK_MSG(col == 0x6E0014, "pixel (%d, %d) is %06X", X, Y, (unsigned)col);
+  }
+  sl_image_free(&im);
+}
+
 /* Labels in words: a vector component with its unit, numbers as powers. */
 static void labels(void) {
   char buf[256];
@@ -214,6 +284,8 @@ int main(void) {
   svg_powers();
   svg_linear();
   svg_slope();
+  svg_text_in_frame();
+  svg_heatmap();
   png();
   return sl_test_summary();
 }

@@ -32,9 +32,6 @@
 
 #include "bench/png_check.h"
 #include "core/study/chart.h"
-#include "core/study/font.h"
-#include "core/study/image.h"
-#include "core/study/png.h"
 #include "scene_fields.h"
 #include "scene_runner.h"
 #include "testing.h"
@@ -215,59 +212,45 @@ static void terzaghi(void) {
   CHECK_MSG(pU > 0.9 && pu > 0.9 && log2(eU[0] / eU[1]) > 0.9, "Terzaghi order %g %g", pU, pu);
 }
 
-/* A colour of the pore pressure ratio r in [0, 1]: white, yellow, orange, red, dark red. */
-static uint32_t ratio_colour(double r) {
-  static const double stop[5][3] = {{255, 255, 255}, {255, 230, 120}, {250, 150, 40}, {215, 40, 30}, {110, 0, 20}};
-  r = fmin(fmax(r, 0.0), 1.0) * 4.0;
-  int k = (int)fmin(floor(r), 3.0);
-  double w = r - k, c[3];
-  for (int j = 0; j < 3; ++j) c[j] = stop[k][j] + w * (stop[k + 1][j] - stop[k][j]);
-  return (uint32_t)c[0] << 16 | (uint32_t)c[1] << 8 | (uint32_t)c[2];
-}
-
-/* The depth-time map of the pore pressure ratio over the first 30 s (every output, 0.5 s) with the project's
- * image and PNG code (core/study): liquefaction_ratio.png; and the base excess pore pressure and the settlement
- * over the run as a figure of two panels: liquefaction_history.png and .svg (core/study/chart.h). The PNGs are
- * read back by the PNG checker. */
+/* The depth-time map of the pore pressure ratio over the first 30 s (every output, 0.5 s) as a heat-map panel
+ * with a colour bar: liquefaction_ratio.svg and .png; and the base excess pore pressure and the settlement over
+ * the run as a figure of two panels: liquefaction_history.png and .svg (core/study/chart.h). The PNGs are read
+ * back by the PNG checker. */
 static void pictures(const char *out) {
-  const int nt = 61, left = 70, top = 40, pw = 8, ph = 8;
+  enum { NT = 61 };
   int n;
   double *ru0 = field_at(out, "pore_pressure_ratio", 0.0, &n, NULL);
   if (!ru0) return;
   free(ru0);
   double H = scalar(out, "deposit_height", 0.0), h = 17.0 / n;
   int cells = (int)floor(H / h + 0.5);
-  sl_image im;
-  if (sl_image_init(&im, left + nt * pw + 120, top + cells * ph + 60, 0xffffff)) return;
-  for (int k = 0; k < nt; ++k) {
+  double te[NT + 1], *ze = malloc((size_t)(cells + 1) * sizeof *ze), *map = malloc((size_t)cells * NT * sizeof *map);
+  CHECK(ze && map);
+  if (!ze || !map) {
+    free(ze), free(map);
+    return;
+  }
+  /* output k (t = 0.5 k) in a column centred on its time, the first and last cut at 0 and 30 s */
+  for (int k = 0; k <= NT; ++k) te[k] = k == 0 ? 0.0 : k == NT ? 0.5 * (NT - 1) : 0.5 * k - 0.25;
+  for (int i = 0; i <= cells; ++i) ze[i] = i * h; /* height above the base */
+  for (int k = 0; k < NT; ++k) {
     double *ru = field_at(out, "pore_pressure_ratio", 0.5 * k, &n, NULL);
-    if (!ru) break;
-    for (int i = 0; i < cells; ++i) /* depth downwards: cell cells-1 at the top */
-      sl_image_fill(&im, left + k * pw, top + (cells - 1 - i) * ph, left + (k + 1) * pw - 1,
-                    top + (cells - i) * ph - 1, ratio_colour(ru[i]));
+    for (int i = 0; i < cells; ++i) map[(size_t)i * NT + (size_t)k] = ru && i < n ? ru[i] : NAN;
     free(ru);
   }
-  char txt[96];
-  sl_font_draw(&im, left, 8, "pore pressure ratio (p - p0)/p_s0, 0.8 mm sand (liquefaction.ini)", 1, 0x000000, 0);
-  for (int k = 0; k <= 30; k += 6) {
-    snprintf(txt, sizeof txt, "%d", k);
-    sl_font_draw(&im, left + 2 * k * pw - 3, top + cells * ph + 6, txt, 1, 0x000000, 0);
-  }
-  sl_font_draw(&im, left + nt * pw / 2 - 30, top + cells * ph + 22, "time t (s); shaking 0-6 s", 1, 0x000000, 0);
-  for (int z = 0; z <= (int)H; z += 2) {
-    snprintf(txt, sizeof txt, "%d", z);
-    sl_font_draw(&im, left - 20, top + (int)(z / h * ph) - 3, txt, 1, 0x000000, 0);
-  }
-  sl_font_draw(&im, 12, top + cells * ph / 2 + 40, "depth (m)", 1, 0x000000, 1);
-  for (int j = 0; j <= 20; ++j) /* the colour bar */
-    sl_image_fill(&im, left + nt * pw + 30, top + (20 - j) * cells * ph / 21, left + nt * pw + 50,
-                  top + (21 - j) * cells * ph / 21 - 1, ratio_colour(j / 20.0));
-  sl_font_draw(&im, left + nt * pw + 56, top - 2, "1", 1, 0x000000, 0);
-  sl_font_draw(&im, left + nt * pw + 56, top + cells * ph - 8, "0", 1, 0x000000, 0);
+  sl_chart_heatmap hm = {.nx = NT, .ny = cells, .x_edges = te, .y_edges = ze, .values = map, .lo = 0.0, .hi = 1.0,
+                         .label = "pore pressure ratio (p \xE2\x88\x92 p_{0})/p'_{s0}"};
+  sl_chart c = {.xlabel = "time t (s); shaking 0 to 6 s", .ylabel = "height above the base z (m)",
+                .legend = SL_LEGEND_NONE, .heatmap = &hm};
+  sl_figure fig = {.title = "liquefaction.ini: 0.8 mm sand, 6 s of shaking",
+                   .subtitle = "pore pressure ratio over the deposit, every output (0.5 s)", .n_panels = 1,
+                   .panels = &c, .panel_width = 640, .panel_height = 360};
   sl_diag d = {{0}};
-  int rc = sl_png_write("liquefaction_ratio.png", im.rgb, im.w, im.h, &d);
+  int rc = sl_figure_write_svg("liquefaction_ratio.svg", &fig, &d);
+  CHECK_MSG(rc == 0, "liquefaction_ratio.svg: %s", d.msg);
+  rc = sl_figure_write_png("liquefaction_ratio.png", &fig, &d);
   CHECK_MSG(rc == 0, "liquefaction_ratio.png: %s", d.msg);
-  sl_image_free(&im);
+  free(ze), free(map);
   int w, hh;
   unsigned char *rgb = NULL;
   const char *why = png_check_file("liquefaction_ratio.png", &w, &hh, &rgb);

@@ -13,6 +13,7 @@
 #include "core/config/expr.h"
 #include "core/fe/field.h"
 #include "core/fv/face_flux.h"
+#include "core/models/mixture/inflow.h"
 #include "core/models/navier_stokes/flow.h"
 #include "core/plugin/instance.h"
 #include "core/plugin/kinds.h"
@@ -76,6 +77,7 @@ typedef struct mixture {
   int no_load;                  /* the remainder of the hydrostatic split is at round-off: the flow is not loaded */
   sl_transport_opts topts;
   sl_transport *tr;
+  sl_mixture_inflow *inflow_bc; /* phi of the inflow along boundaries or in time (inflow.h), or NULL */
   sl_face_flux *ff;
   double *phi, *trial, *q, *w; /* cells, cells, faces, faces */
   double *q_acc;               /* [n_faces] the conservative fluxes of the last accepted step */
@@ -495,23 +497,6 @@ static int initial_phi(mixture *x, sl_diag *d) {
   return rc;
 }
 
-/* Open boundaries let solids in with [boundary.N] phi (default 0). */
-static int transport_boundaries(mixture *x, const unsigned char *open, sl_diag *d) {
-  for (int b = 0; b < x->m->n_boundaries; ++b) {
-    if (!open || !open[b]) continue;
-    const ns_boundary *nb = sl_scene_boundary(x->sc, b);
-    double v = nb->phi;
-    if (v > x->phi_max) {
-      char at[400];
-      return sl_diag_set(d, SL_EBADINPUT, "%s = %g is outside the allowed range [0, %g] (phi_max)",
-                         sl_scene_where(x->sc, &nb->phi, at, sizeof at), v, x->phi_max);
-    }
-    int rc = sl_transport_set_boundary(x->tr, b, SL_TRANSPORT_OPEN, v, d);
-    if (rc) return rc;
-  }
-  return 0;
-}
-
 /* Periodic pairs: the transport pairs the faces itself; the face fluxes get
  * the same pairs from the mesh's match. */
 static int periodic_setup(mixture *x, const unsigned char *open, const sl_periodic_pair *pairs, int n_pairs,
@@ -638,7 +623,7 @@ static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag
                                  .settling = settling_fn,
                                  .settling_user = &x->st};
   if ((rc = sl_transport_create(x->m, &x->topts, &x->tr, d))) return sl_diag_prefix(d, rc, "solids transport");
-  if ((rc = transport_boundaries(x, open, d))) return rc;
+  if ((rc = sl_mixture_inflow_create(sc, x->tr, open, x->phi_max, &x->inflow_bc, d))) return rc;
   if ((rc = periodic_setup(x, open, pairs, n_pairs, d))) return rc;
   const double *area = sl_transport_face_areas(x->tr);
   for (int f = 0; f < nf; ++f) x->area_max = fmax(x->area_max, area[f]);
@@ -697,11 +682,13 @@ static int advance(mixture *x, double t, double dt, const double *u, const doubl
         (rc = sl_migration_set_shear_rate(x->mg, x->shear, d)))
       return rc;
   }
+  if ((rc = sl_mixture_inflow_update(x->inflow_bc, t + dt, d))) return rc;
   sl_transport_stats st;
   rc = sl_transport_step(x->tr, dt, x->q, x->st.c ? x->w : NULL, x->trial, &st, d);
   if (rc) return sl_diag_prefix(d, SL_EFAILED, "solids transport from t = %.6g over dt = %.3g", t, dt);
   x->trial_substeps = st.n_substeps, x->trial_fallbacks = st.n_fallbacks;
   x->trial_inflow = st.boundary_inflow;
+  sl_mixture_inflow_stepped(x->inflow_bc);
   x->max_div = fmax(x->max_div, st.max_divergence);
   return x->relative_flux_stress ? stress_of(x, x->trial, d) : 0;
 }
@@ -713,6 +700,7 @@ static void accept(mixture *x) {
   memcpy(x->phi, x->trial, (size_t)x->m->n_cells * sizeof *x->phi);
   memcpy(x->q_acc, x->q, (size_t)x->m->n_faces * sizeof *x->q_acc);
   x->inflow += x->trial_inflow;
+  sl_mixture_inflow_accept(x->inflow_bc);
   x->inventory = sl_transport_mass(x->tr, x->phi);
   x->substeps += x->trial_substeps, x->fallbacks += x->trial_fallbacks, ++x->advances;
   x->max_raw_div = fmax(x->max_raw_div, x->trial_raw_div);
@@ -727,6 +715,7 @@ static int write(mixture *x, sl_output *out, sl_diag *d) {
   /* the solids volume per unit depth (planar) or per radian (axisymmetric) */
   if (!rc) rc = sl_output_write_scalar_unit(out, "solids_inventory", x->axi ? "m^3/rad" : "m^2", inv, d);
   if (!rc) rc = sl_output_write_scalar(out, "solids_conservation_error", err, d);
+  if (!rc) rc = sl_mixture_inflow_write(x->inflow_bc, out, x->axi, d);
   for (int k = 0; k < x->n_inv && !rc; ++k) {
     const unsigned char *mask = x->inv_mask + (size_t)k * x->m->n_cells;
     for (int c = 0; c < x->m->n_cells; ++c) x->inv_phi[c] = mask[c] ? x->phi[c] : 0.0;
@@ -750,11 +739,12 @@ static int checkpoint(mixture *x, sl_checkpoint_array *a, int max) {
   x->book[0] = x->inventory0, x->book[1] = x->inflow;
   snprintf(a[1].name, sizeof a[1].name, "solids_book");
   a[1].n = 2, a[1].data = x->book;
-  if (!x->relative_flux_stress || max < 3) return 2;
+  int n = 2 + sl_mixture_inflow_checkpoint(x->inflow_bc, a + 2, max - 2);
+  if (!x->relative_flux_stress || max < n + 1) return n;
   /* it holds the slip direction of the last step, which phi alone does not give */
-  snprintf(a[2].name, sizeof a[2].name, "relative_flux_stress");
-  a[2].n = 6 * (int64_t)x->th->pres->n_dofs, a[2].data = x->node_stress;
-  return 3;
+  snprintf(a[n].name, sizeof a[n].name, "relative_flux_stress");
+  a[n].n = 6 * (int64_t)x->th->pres->n_dofs, a[n].data = x->node_stress;
+  return n + 1;
 }
 
 static int restore(mixture *x, const sl_checkpoint *ck, sl_diag *d) {
@@ -763,6 +753,7 @@ static int restore(mixture *x, const sl_checkpoint *ck, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "restart: the checkpoint holds no solids fraction of %d cells", x->m->n_cells);
   memcpy(x->phi, p->data, (size_t)p->n * sizeof *x->phi);
   x->inventory0 = b->data[0], x->inflow = b->data[1];
+  sl_mixture_inflow_restore(x->inflow_bc, sl_checkpoint_find(ck, "solids_through"));
   x->inventory = sl_transport_mass(x->tr, x->phi);
   hydrostatic_update(x);
   if (!x->relative_flux_stress) return 0;
@@ -779,6 +770,7 @@ static int restore(mixture *x, const sl_checkpoint *ck, sl_diag *d) {
 
 static void mixture_free(mixture *x) {
   sl_transport_destroy(x->tr);
+  sl_mixture_inflow_destroy(x->inflow_bc);
   sl_face_flux_destroy(x->ff);
   free(x->phi), free(x->trial), free(x->q), free(x->w), free(x->q_acc), free(x->acc), free(x->b_face);
   free(x->cell_stress), free(x->settle_speed), free(x->node_stress), free(x->node_weight);
@@ -852,9 +844,11 @@ static const sl_key extra_keys[] = {
     {.section = "output", .name = "inventory_where", .type = SL_KEY_EXPRS, M(inventory_where), .vars = "x,y",
      .max_n = 3, .help = "regions as expressions of x, y (a cell counts where its centroid gives > 0), their solids "
                          "volume written as solids_inventory_where_K"},
-    {.section = "boundary", .name = "phi", .type = SL_KEY_REAL, SL_AT_BOUNDARY(ns_boundary, phi), .min = 0.0,
-     .max = 1.0, .when_type = (1u << NS_OPEN) | (1u << NS_PRESSURE) | (1u << NS_TRACTION),
-     .help = "the solids fraction of what flows in"},
+    {.section = "boundary", .name = "phi", .type = SL_KEY_EXPR, SL_AT_BOUNDARY(ns_boundary, phi), .vars = "x,y,t",
+     .when_type = (1u << NS_OPEN) | (1u << NS_PRESSURE) | (1u << NS_TRACTION) | (1u << NS_VELOCITY),
+     .def_doc = "0",
+     .help = "the solids fraction of what flows in, an expression of x, y, t along the boundary (in [0, phi_max]); "
+             "a velocity boundary lets solids through only when it gives phi"},
 };
 TABLE(mixture_extra_keys, extra_keys);
 

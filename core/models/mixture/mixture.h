@@ -31,7 +31,8 @@
  *   [mixture]    slip_acceleration, reference_acceleration, diffusivity,
  *                relative_flux_stress
  *   [initial]    phi = expression of x, y (cell centroids)
- *   [boundary.N] phi = the solids fraction of inflow on open boundaries
+ *   [boundary.N] phi = the solids fraction of inflow, an expression of x, y, t
+ *                (open boundaries, and velocity boundaries that give it: inflow.h)
  *   [transport]  order = 1|2, limiter = mc|minmod, cfl
  *   [output]     interface = levels of phi whose heights are reported
  * Output: the cell field phi and, per output time, the attributes

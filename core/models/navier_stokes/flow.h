@@ -46,7 +46,7 @@ typedef struct ns_boundary {
   double pressure;
   sl_reals traction;
   const char *partner;
-  double phi; /* the mixture: the solids fraction of inflow on an open boundary */
+  sl_scene_expr phi; /* the mixture: the solids fraction of inflow, of x, y, t (core/models/mixture/inflow.h) */
   int force;  /* write the force of the fluid on this boundary (wall, velocity) with every output */
 } ns_boundary;
 

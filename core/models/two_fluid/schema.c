@@ -220,8 +220,8 @@ static const sl_key plane_keys[] = {
      .def_doc = "1e-6", .help = "a transported granular temperature"},
     {.section = "boundary", .name = "type", .type = SL_KEY_CHOICE, SL_AT_BOUNDARY(tfp_boundary, type),
      .choices = "wall|slip|axis|inlet|outlet|periodic",
-     .help = "wall, slip (both phases), axis (r = 0), inlet (fluid enters, solids held), outlet (a pressure), periodic "
-             "(both opposite sides)"},
+     .help = "wall, slip (both phases), axis (r = 0), inlet (fluid enters; solids held, or entering with "
+             "solids_flux), outlet (a pressure), periodic (both opposite sides)"},
     {.section = "boundary", .name = "velocity", .type = SL_KEY_EXPR, SL_AT_BOUNDARY(tfp_boundary, velocity),
      .vars = "x,y,t,case", .units = "m s^-1", .when_type = ON(TFP_WALL) | ON(TFP_INLET),
      .when_doc = "an inlet (the inflow) or a wall (its speed along itself)",
@@ -232,6 +232,10 @@ static const sl_key plane_keys[] = {
     {.section = "boundary", .name = "solids", .type = SL_KEY_CHOICE, SL_AT_BOUNDARY(tfp_boundary, solids),
      .choices = "no_slip|free_slip|wall_stress", .when_type = ON(TFP_WALL), .when_doc = "a wall",
      .help = "the solids at a wall (wall_stress: [closure.wall_stress] against their slip)"},
+    {.section = "boundary", .name = "solids_flux", .type = SL_KEY_EXPR, SL_AT_BOUNDARY(tfp_boundary, solids_flux),
+     .vars = "x,y,t,case", .units = "m s^-1", .when_type = ON(TFP_INLET), .when_doc = "an inlet",
+     .def_doc = "none (the solids are held)",
+     .help = "the superficial solids velocity entering (solids volume flux per area: G_s / rho_s), with the fluid"},
 };
 TABLE(tf_plane_keys, plane_keys);
 

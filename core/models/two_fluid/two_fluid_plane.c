@@ -16,7 +16,9 @@
  *   axis    the symmetry axis of an axisymmetric scene (r = 0)
  *   inlet   velocity = the superficial fluid velocity entering (m/s, along
  *           the inward normal), an expression of x, y, t and case; the
- *           solids are held (u_s = 0); tangential velocities 0
+ *           solids are held (u_s = 0), or enter with it at the superficial
+ *           velocity solids_flux (an expression of x, y, t and case, >= 0);
+ *           tangential velocities 0
  *   outlet  pressure (default 0); velocities free (zero normal gradient),
  *           solids leave where they are carried out
  *   periodic both opposite sides (left and right, or bottom and top; an
@@ -74,6 +76,21 @@ static int boundaries(tfp_run *r, sl_diag *d) {
         return sl_diag_set(d, SL_EBADINPUT, "[%s] velocity: an inlet needs the superficial fluid velocity entering "
                                             "(m/s), an expression of x, y, t and case", sec);
       r->has_inlet = 1;
+      /* the solids entering: finite and not negative at the inlet's face centres at t = 0 (later times: the step
+         checks) */
+      const sl_tensor_grid *g = &r->m.grid;
+      for (int side = 0; b->solids_flux.e && side < 4; ++side)
+        for (int s = 0; s < (side < 2 ? g->ny : g->nx); ++s) {
+          if (g->side_tag[side][s] != k) continue;
+          double x = side < 2 ? g->xf[side == SL_SIDE_LEFT ? 0 : g->nx] : 0.5 * (g->xf[s] + g->xf[s + 1]);
+          double y = side < 2 ? 0.5 * (g->yf[s] + g->yf[s + 1]) : g->yf[side == SL_SIDE_BOTTOM ? 0 : g->ny];
+          double v[4] = {x, y, 0.0, r->m.c.case_index}, J = sl_expr_eval(b->solids_flux.e, v);
+          if (isfinite(J) && J >= 0.0) continue;
+          const sl_src *src = sl_scene_src(r->sc, &b->solids_flux);
+          return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] solids_flux = %g at (%g, %g), t = 0: it must be finite "
+                                              "and not negative (m/s)", src ? src->file : "?", src ? src->line : 0,
+                             sec, J, x, y);
+        }
     }
     if (b->type == TFP_OUTLET) r->has_outlet = 1;
   }

@@ -43,6 +43,7 @@ typedef struct tfp_boundary {
   sl_scene_expr velocity; /* inlet: superficial fluid velocity entering; wall: its own speed along the side (+x along
                              the bottom and top, +y along the left and right); of (x, y, t, case) (e NULL: 0) */
   double pressure;        /* outlet */
+  sl_scene_expr solids_flux; /* inlet: the superficial solids velocity entering, of (x, y, t, case) (e NULL: held) */
 } tfp_boundary;
 
 
@@ -94,6 +95,7 @@ typedef struct tfp_model {
   int *end_wall;                  /* [2 nf]: per end, the wall (boundary index) along which the face runs, -1 none */
   double *end_u;                  /* [2 nf]: that wall's speed along the face's direction */
   double *end_us;                 /* [2 nf]: the solids velocity at that wall (its slip under a wall stress) */
+  double *js;                     /* [nf]: an inlet face's given solids volume flux per area, along +x or +y */
   /* state: cells phi, p, P_s; faces the fluid and solids velocities (boundary faces hold their values) */
   double *phi, *p, *uf, *us;
   double *phi_new, *p_new, *uf_new, *us_new;

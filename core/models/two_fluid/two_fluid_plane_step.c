@@ -76,7 +76,7 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k)
     if (!(*ia[k] = calloc(nf, sizeof(int)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   if (!(m->wall_stats = calloc(5 * (size_t)m->n_b, sizeof(double))) || !(m->tan_noslip = calloc(4 * nf, sizeof(int))) || !(m->end_wall = calloc(2 * nf, sizeof(int))) ||
-      !(m->end_u = calloc(2 * nf, sizeof(double))) || !(m->end_us = calloc(2 * nf, sizeof(double))))
+      !(m->end_u = calloc(2 * nf, sizeof(double))) || !(m->end_us = calloc(2 * nf, sizeof(double))) || !(m->js = calloc(nf, sizeof(double))))
     return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   for (int f = 0; f < m->fv.nf; ++f) {
     if (m->fv.image[f]) m->ftype[f] = TFP_FACE_IMAGE;
@@ -132,7 +132,7 @@ void tfp_free(tfp_model *m) {
   double *all[] = {m->phi,  m->p,
                    m->uf,  m->us,  m->phi_new, m->p_new, m->uf_new, m->us_new, m->phf, m->phg,  m->w,    m->K,
                    m->dK,  m->slip, m->sn,    m->ps,     m->dps,    m->flux,  m->alpha, m->inflow, m->x,
-                   m->rhs, m->end_u, m->end_us, m->wall_stats, m->acc_x, m->acc_g, m->acc_scale, m->col_uf0};
+                   m->rhs, m->end_u, m->end_us, m->js, m->wall_stats, m->acc_x, m->acc_g, m->acc_scale, m->col_uf0};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   int *ia[] = {m->ftype, m->us_row, m->uf_row, m->tan_noslip, m->end_wall, m->col_face};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k) free(ia[k]);
@@ -152,7 +152,9 @@ double tfp_inventory(const tfp_model *m, const double *phi) {
 }
 
 /* The inlet faces' superficial velocity (along +x or +y) is eps u_f with u_s
- * = 0; u_f takes eps of the inside cell. The walls' own speeds at the ends
+ * = 0; u_f takes eps of the inside cell. With solids_flux the solids enter
+ * too: their volume flux phi u_s per area is given (js), u_s = js / phi of
+ * the inside cell. The walls' own speeds at the ends
  * of the faces that run along them. */
 int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
   const double *xf = m->grid.xf, *yf = m->grid.yf;
@@ -182,7 +184,13 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
       return sl_diag_set(d, SL_EFAILED, "the inlet velocity is not a finite number (%g) at (%g, %g), t = %g", U, x, y,
                          t);
     double inward = m->fv.lo[f] < 0 ? 1.0 : -1.0;
-    m->us[f] = 0.0;
+    double J = 0.0;
+    const sl_scene_expr *je = &m->b[m->fv.bound[f]].solids_flux;
+    if (je->e && !(isfinite(J = sl_expr_eval(je->e, v)) && J >= 0.0))
+      return sl_diag_set(d, SL_EFAILED, "the inlet's solids flux is %g at (%g, %g), t = %g: it must be finite and "
+                                        "not negative", J, x, y, t);
+    m->js[f] = inward * J;
+    m->us[f] = phi[inside] > PHI_FLOOR ? m->js[f] / phi[inside] : 0.0;
     m->uf[f] = inward * U / (1.0 - phi[inside]);
   }
   return 0;
@@ -578,7 +586,7 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
         rc |= add(m, row, m->uf_row[f], A * (1.0 - ph));
       } else if (m->ftype[f] == TFP_FACE_INLET) { /* eps u_f of the inside cell: the given superficial velocity */
         int in = m->fv.lo[f] >= 0 ? m->fv.lo[f] : m->fv.hi[f];
-        m->rhs[row] -= A * (1.0 - m->phi[in]) * m->uf[f];
+        m->rhs[row] -= A * ((1.0 - m->phi[in]) * m->uf[f] + m->js[f]);
       }
     }
   }
@@ -827,6 +835,7 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
         if (m->ftype[f] == TFP_FACE_INLET) {
           int in = m->fv.lo[f] >= 0 ? m->fv.lo[f] : m->fv.hi[f];
           m->uf_new[f] = m->uf[f] * (1.0 - m->phi[in]) / (1.0 - m->phi_new[in]);
+          m->us_new[f] = m->phi_new[in] > PHI_FLOOR ? m->js[f] / m->phi_new[in] : 0.0;
         }
       return 0;
     }

@@ -6,8 +6,9 @@
  * linear reconstruction along the face's normal (order 2: MUSCL, van Leer
  * 1979, in Heun's two stages), plus the particle diffusivity -D grad phi;
  * sub-stepped within the CFL limit (halved at order 2); what enters a cell
- * scaled so that it cannot pass phi_max. Solids never enter from outside
- * (clear fluid at an outlet, held solids at an inlet). The image faces of a
+ * scaled so that it cannot pass phi_max. Solids enter from outside only
+ * through an inlet with a solids flux (its given js; clear fluid at an
+ * outlet, held solids at any other inlet). The image faces of a
  * periodic row carry nothing: the row's first face carries its flux. */
 #include <math.h>
 #include <stdlib.h>
@@ -98,6 +99,7 @@ static void transport_stage(tfp_model *m, const double *us, const double *phi, d
     /* nothing enters from outside (clear fluid at an outlet; held solids at an inlet) */
     if (q > 0.0 && lo >= 0) F[f] = q * (w ? phi[lo] + w->half[2 * lo + dir] : phi[lo]);
     else if (q < 0.0 && hi >= 0) F[f] = q * (w ? phi[hi] - w->half[2 * hi + dir] : phi[hi]);
+    if (m->ftype[f] == TFP_FACE_INLET) F[f] = m->fv.area[f] * m->js[f]; /* the given inflow (0: held) */
     if (D > 0.0 && lo >= 0 && hi >= 0) F[f] -= D * m->fv.area[f] * (phi[hi] - phi[lo]) / m->fv.dist[f];
     if (F[f] > 0.0 && hi >= 0) in[hi] += F[f];
     else if (F[f] < 0.0 && lo >= 0) in[lo] -= F[f];

@@ -1,0 +1,107 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""What configs/spectrometer.ini's output says (Nigam 1999, section 4.3):
+
+  spectrometer_report.py OUT.h5 [OUT2.h5 ...]
+
+per output time: the solids inventories downstream of the slot (inner_down,
+outer_down) and the efficiency outer_down/(inner_down + outer_down); the
+solids leaving through each outlet per unit time since the previous output
+(from solids_through_*, the transport's own fluxes, per radian) and the
+outer outlet's share; the share passing the slot, 1 - (inner outlet + the
+inner channel's inventory growth)/inflow; the most retrograde swirl u_theta in the slot
+(its nodes); the largest phi in the cells on the inclined walls (the
+sediment); and at the last time the velocity across the inner channel half
+way to the slot against the rotating-channel profile of the inflow."""
+import math
+import sys
+
+import h5py
+import numpy as np
+
+Q = 0.195
+G = math.pi / 4
+DELTA = Q / (4 * math.pi)
+S, C = math.sin(G), math.cos(G)
+XI0 = 1 / S
+XA, XB, XE = XI0 + 11 * DELTA, XI0 + 13 * DELTA, XI0 + 24 * DELTA
+W = DELTA / 2
+
+
+def chan(x, y):
+    """(xi, n): along the cone's generator and across it."""
+    return x * S - y * C, x * C + y * S
+
+
+def report(path):
+    f = h5py.File(path, "r")
+    xy = f["mesh/coordinates"][:, :2]
+    cells = f["mesh/topology"][:]
+    cc = f["mesh/cell_centres"][:, :2]
+    xi_n, n_n = chan(xy[:, 0], xy[:, 1])
+    xi_c, n_c = chan(cc[:, 0], cc[:, 1])
+    slot_nodes = (n_n > DELTA - 1e-9) & (n_n < DELTA + W + 1e-9) & (xi_n > XA - 1e-9) & (xi_n < XB + 1e-9)
+    # wall cells: within one cell of a channel wall, downstream of the slot
+    wall_band = 0.2 * DELTA
+    down = xi_c > XB
+    walls = {
+        "inner channel, outer wall (below the slot)": down & (n_c > DELTA - wall_band) & (n_c < DELTA),
+        "outer channel, outer wall (below the slot)": down & (n_c > 3 * DELTA + W - wall_band),
+        "outer channel, outer wall (above the slot's end)": (xi_c < XB) & (n_c > 3 * DELTA + W - wall_band),
+    }
+    steps = sorted(k for k in f if k.startswith("step_"))
+    prev = None
+    print(f"{path}:")
+    print("   t      inner_down   outer_down   eff(inv)   solids out/time: inner  outer  eff(flux)  in        passing"
+          "  min u_theta slot  max phi walls")
+    for k in steps:
+        g = f[k]
+        a = g.attrs
+        if "solids_inventory_inner_down" not in a:
+            continue
+        t = a["time"]
+        i_d, o_d = a["solids_inventory_inner_down"], a["solids_inventory_outer_down"]
+        eff = o_d / (i_d + o_d) if i_d + o_d > 0 else float("nan")
+        phi = g["phi"][:].ravel()
+        # the solids leaving through each outlet since the last output (the transport's own fluxes)
+        inner = a["solids_inventory_inner_up"] + a["solids_inventory_inner_slot"] + a["solids_inventory_inner_down"]
+        cum = (-a["solids_through_inner_outlet"], -a["solids_through_outer_outlet"], a["solids_through_inner_inlet"],
+               inner)
+        dt = t - prev[0] if prev else 0
+        fl_in, fl_out, fl_src, grow = ((cum[i] - prev[1][i]) / dt for i in range(4)) if dt > 0 else (0.0,) * 4
+        prev = (t, cum)
+        efl = fl_out / (fl_in + fl_out) if fl_in + fl_out > 0 else float("nan")
+        passing = 1 - (fl_in + grow) / fl_src if fl_src > 0 else float("nan")
+        ut = g["u_theta"][:].ravel()
+        sw = ut[slot_nodes].min()
+        mw = [phi[m].max() if m.any() else 0 for m in walls.values()]
+        print(f"  {t:5.2f}  {i_d:.4e}  {o_d:.4e}  {100*eff:6.1f} %  {fl_in:.3e} {fl_out:.3e}  {100*efl:6.1f} % {fl_src:.3e} {100*passing:6.1f} %"
+              f"  {sw:8.3f}   " + "  ".join(f"{m:.3f}" for m in mw))
+    print("  walls:", "; ".join(walls.keys()))
+    # the velocity profile half way to the slot against the inflow's
+    g = f[steps[-1]]
+    u = g["velocity"][:]
+    ut = g["u_theta"][:].ravel()
+    xi_m = 0.5 * (XI0 + XA)
+    sel = (np.abs(xi_n - xi_m) < 0.6 * (XA - XI0) / 11 / 3) & (n_n < DELTA + 1e-9)
+    if sel.any():
+        Ro, Re = 4.22e-4, 1.06
+        E1 = Ro / (Re * S * DELTA**2)
+        aa = 1 / math.sqrt(E1)
+        G1 = 2 * aa * (math.cosh(2 * aa) + math.cos(2 * aa)) / (math.sinh(2 * aa) - math.sin(2 * aa))
+        D2 = (math.cosh(aa) * math.cos(aa)) ** 2 + (math.sinh(aa) * math.sin(aa)) ** 2
+        k1 = G1 * math.cosh(aa) * math.cos(aa) / (2 * D2)
+        k2 = -G1 * math.sinh(aa) * math.sin(aa) / (2 * D2)
+        K = Q / (2 * math.pi * DELTA)
+        z = n_n[sel] / DELTA
+        r = xy[sel, 0]
+        U = -k1 * np.sinh(aa * z) * np.sin(aa * z) - k2 * np.cosh(aa * z) * np.cos(aa * z)
+        V = -G1 / 2 + k1 * np.cosh(aa * z) * np.cos(aa * z) - k2 * np.sinh(aa * z) * np.sin(aa * z)
+        uxi = u[sel, 0] * S - u[sel, 1] * C
+        print(f"  half way to the slot (xi - xi0 = {xi_m - XI0:.4f}), t = {g.attrs['time']:.2f}: u_xi against K U/r "
+              f"{np.abs(uxi - K * U / r).max():.3e} of max {np.abs(K * U / r).max():.3f}; u_theta against K V/r "
+              f"{np.abs(ut[sel] - K * V / r).max():.3e} of max {np.abs(K * V / r).max():.3f}")
+
+
+for p in sys.argv[1:]:
+    report(p)
