@@ -42,7 +42,7 @@ SCENE_RUNNERS()
 static const double g = 9.81, rho_s = 2650.0, rho_f = 1000.0, A = 0.015;
 
 /* The Terzaghi deposit at rest (no drop): the discrete effective-stress balance p_s(i-1) - p_s(i) = h phi_{i-1}
- * (rho_s - rho_f) g at every face inside the deposit (two_fluid_step.c: a face takes its gravity-side cell's
+ * (rho_s - rho_f) g at every face inside the deposit (two_fluid_plane_step.c: a face takes its gravity-side cell's
  * phi), and the pore pressure hydrostatic but for the surface cell, whose solids the column holds on the fluid
  * (its face to the clear water carries them by drag; the scheme's surface cell, docs/liquefaction.md): a
  * uniform static excess equal to their buoyant weight. */

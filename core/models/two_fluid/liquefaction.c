@@ -136,7 +136,8 @@ static double surface_height(tf_liquefaction *L, const tf_column *c) {
   return z;
 }
 
-/* The hydrostatic pressure in the cells by the column's own recursion (two_fluid_step.c) with dp/dx = rho_f g,
+/* The hydrostatic pressure in the cells by the column's own recursion (two_fluid_plane_step.c, column_finish)
+ * with dp/dx = rho_f g,
  * into L->ph. */
 static void hydrostatic(tf_liquefaction *L, const tf_column *c) {
   const int n = L->n;

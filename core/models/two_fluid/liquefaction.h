@@ -29,7 +29,8 @@
  * - A deposit built in the model: [deposit] settle lets [initial]'s
  *   suspension settle and consolidate before t = 0 (thesis section 5.4:
  *   the deposit "constructed" by settling).
- * The vertical two-fluid step is the column's (two_fluid_step.c) with nbar
+ * The vertical two-fluid step is the column's (two_fluid_step.c: the 2-D
+ * model's step on n x 1 cells) with nbar
  * held over the step; drainage and re-consolidation are its drag and solids
  * pressure. */
 #ifndef SLUICE_MODELS_TWO_FLUID_LIQUEFACTION_H

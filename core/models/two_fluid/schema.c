@@ -197,6 +197,9 @@ static const sl_key plane_keys[] = {
     {.section = "two_fluid", .name = "kinetic_pressure", .type = SL_KEY_BOOL, C(kinetic_pressure),
      .def_doc = "true with a transported theta when [closure.granular] gives p_s",
      .help = "the kinetic theory's p_s(phi, theta) joins the solids pressure"},
+    {.section = "two_fluid", .name = "column_form", .type = SL_KEY_BOOL, C(column_form),
+     .help = "a grid one cell across, gravity along it: the 1-D column's equations (no fluid viscous stress, the "
+             "weight's phi that of the drag, the fluid's inertia and the pressure from the mixture flux)"},
     {.section = "flow", .name = "gravity", .type = SL_KEY_REALS, SL_AT_SCENE(flow.gravity), .max_n = 3,
      .def_list = (const double[]){0.0, -9.81}, .n_def = 2, .units = "m s^-2", .help = "gravity (x, y)"},
     {.section = "flow", .name = "convection", .type = SL_KEY_BOOL, SL_AT_SCENE(flow.convection),

@@ -12,6 +12,7 @@
 #include "core/config/expr.h"
 #include "core/scene/mesh.h"
 #include "core/models/two_fluid/two_fluid.h"
+#include "core/models/two_fluid/granular.h"
 #include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/point_eval.h"
@@ -21,16 +22,8 @@ enum { SOLIDS_NO_SLIP = 0, SOLIDS_FREE_SLIP = 1, SOLIDS_WALL_STRESS = 2 };
 enum { F_PHI = 1, F_UF = 2, F_US = 4, F_THETA = 8, F_PS = 16 };
 static const char *const field_names[] = {"phi", "velocity_fluid", "velocity_solid", "theta", "solids_pressure"};
 
-/* The quantities the layer offers its closures, by input name. */
-enum { Q_PHI, Q_SLIP, Q_THETA, Q_RHO_F, Q_MU_F, Q_RHO_S, Q_D_P, Q_SPHERICITY, Q_GRAVITY, Q_SLIP_WALL, Q_WALL_DISTANCE,
-       Q_SHEAR_RATE, Q_DENSITY, Q_N };
-static const char *const quantity_names[Q_N] = {"phi",     "slip",       "theta",    "rho_f",
-                                                "mu_f",    "rho_s",      "d_p",      "sphericity",
-                                                "gravity", "slip_wall", "wall_distance", "shear_rate",
-                                                "density"};
 
 #define SH_PI 3.14159265358979323846
-#define THETA_FLOOR 1e-12 /* m^2/s^2: the kinetic closures' lowest valid theta */
 
 typedef struct sh_wall {
   const char *name;
@@ -62,7 +55,7 @@ typedef struct sh_layer {
   double *gdc, *rhoc, *mumc; /* cells: solids shear rate, mixture density, mixture viscosity */
   double *blk;                     /* per node: lower, diagonal, upper 3x3 blocks and the rhs (STRIDE) */
   int b;                           /* block size: 2 (u_f, u_s) or 3 (and theta, transported) */
-  double *qv[Q_N];                 /* per-point values of constant quantities */
+  double *qv[TF_Q_N];                 /* per-point values of constant quantities */
   sl_closure *drag_c, *gran_c, *wall_c, *visc_c;
   sl_point_closure drag, gran, wall, visc;
   sh_wall wall_at[2];
@@ -79,19 +72,19 @@ typedef struct sh_layer {
 /* ---- closures at points ----------------------------------------------------------- */
 
 /* Input arrays for Q points: the constants, then the given varying ones. */
-static void point_values(sh_layer *L, const double *v[Q_N], const double *phi, const double *slip,
+static void point_values(sh_layer *L, const double *v[TF_Q_N], const double *phi, const double *slip,
                          const double *theta) {
-  for (int k = 0; k < Q_N; ++k) v[k] = L->qv[k];
-  if (phi) v[Q_PHI] = phi;
-  if (slip) v[Q_SLIP] = slip;
-  if (theta) v[Q_THETA] = theta;
+  for (int k = 0; k < TF_Q_N; ++k) v[k] = L->qv[k];
+  if (phi) v[TF_Q_PHI] = phi;
+  if (slip) v[TF_Q_SLIP] = slip;
+  if (theta) v[TF_Q_THETA] = theta;
 }
 
 /* K and dK/dslip at the nodes for the iterate's slip. */
 static int eval_drag(sh_layer *L, sl_diag *d) {
   int N = L->n + 1;
   for (int k = 0; k < N; ++k) L->slip[k] = fabs(L->uf1[k] - L->us1[k]);
-  const double *v[Q_N];
+  const double *v[TF_Q_N];
   point_values(L, v, L->phin, L->slip, NULL);
   sl_point_request rq = {"K", L->K, L->dK, "slip"};
   return sl_point_eval(&L->drag, N, v, &rq, 1, d);
@@ -115,19 +108,19 @@ static int eval_solids_viscosity(sh_layer *L, sl_diag *d) {
     L->muc[i] = L->mu_s_const, L->muk[i] = L->dmuc[i] = 0.0;
   }
   if (L->visc_c) {
-    const double *v[Q_N];
+    const double *v[TF_Q_N];
     point_values(L, v, L->phi, NULL, NULL);
-    v[Q_SHEAR_RATE] = L->gdc, v[Q_DENSITY] = L->rhoc;
+    v[TF_Q_SHEAR_RATE] = L->gdc, v[TF_Q_DENSITY] = L->rhoc;
     sl_point_request rq = {"viscosity", L->mumc, NULL, NULL};
     if ((rc = sl_point_eval(&L->visc, L->n, v, &rq, 1, d))) return rc;
     for (int i = 0; i < L->n; ++i)
       L->muc[i] += fmax(L->mumc[i] - (1.0 - L->phi[i]) * L->mu_f, 0.0);
   }
   if (!L->granular) return 0;
-  for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th1[i] + L->th1[i + 1]), THETA_FLOOR);
-  const double *v[Q_N];
+  for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th1[i] + L->th1[i + 1]), TF_THETA_FLOOR);
+  const double *v[TF_Q_N];
   point_values(L, v, L->phi, NULL, L->thc);
-  v[Q_SHEAR_RATE] = L->gdc, v[Q_DENSITY] = L->rhoc;
+  v[TF_Q_SHEAR_RATE] = L->gdc, v[TF_Q_DENSITY] = L->rhoc;
   sl_point_request rq[2] = {{"mu_s", L->muk, L->dmuc, "theta"}, {"kappa", L->kapc, NULL, NULL}};
   rc = sl_point_eval(&L->gran, L->n, v, rq, L->algebraic ? 1 : 2, d);
   for (int i = 0; i < L->n && !rc; ++i) L->muc[i] += L->muk[i];
@@ -141,11 +134,11 @@ static int eval_wall(sh_layer *L, sh_wall *w, double *tau, double *dtau, double 
                      double *bn, sl_diag *d) {
   int ref = w->wall_function ? w->inner : w->node;
   double sl = fabs(L->us1[ref] - w->u), dist = fabs(L->x[w->inner] - L->x[w->node]);
-  double phi = L->phin[ref], th = fmax(L->th1[w->node], THETA_FLOOR);
-  double one[Q_N];
-  const double *v[Q_N];
-  for (int k = 0; k < Q_N; ++k) one[k] = L->qv[k][0], v[k] = &one[k];
-  one[Q_PHI] = phi, one[Q_THETA] = th, one[Q_SLIP_WALL] = sl, one[Q_WALL_DISTANCE] = dist, one[Q_SLIP] = sl;
+  double phi = L->phin[ref], th = fmax(L->th1[w->node], TF_THETA_FLOOR);
+  double one[TF_Q_N];
+  const double *v[TF_Q_N];
+  for (int k = 0; k < TF_Q_N; ++k) one[k] = L->qv[k][0], v[k] = &one[k];
+  one[TF_Q_PHI] = phi, one[TF_Q_THETA] = th, one[TF_Q_SLIP_WALL] = sl, one[TF_Q_WALL_DISTANCE] = dist, one[TF_Q_SLIP] = sl;
   /* one closure call: tau_w with its slip and theta derivatives (0 when it
    * has no theta input), and the optional outputs the closure gives */
   double tau_again;
@@ -277,7 +270,7 @@ static double phase_row(sh_layer *L, int p, int k, const double *mu, const doubl
  * equilibrium (production/dissipation derivatives 1/2 : 3/2). */
 static double theta_row(sh_layer *L, int k, double dt) {
   double *D = DIAG(L, k);
-  double cap = 1.5 * L->rho_s * L->phin[k] * L->V[k] / dt, X = L->exchange ? 3.0 * L->K[k] : 0.0;
+  double cap = tf_theta_capacity(L->rho_s, L->phin[k]) * L->V[k] / dt, X = tf_theta_exchange(L->exchange, L->K[k]);
   double r = cap * (L->th1[k] - L->th[k]) + L->V[k] * (L->gam[k] + X * L->th1[k]);
   D[3 * T + T] += cap + L->V[k] * (L->dgam[k] + X);
   for (int side = 0; side < 2; ++side) {
@@ -301,8 +294,8 @@ static int newton_update(sh_layer *L, double dt, double *du, double *dth, sl_dia
   const int N = L->n + 1, b = L->b;
   int rc = eval_drag(L, d);
   if (!rc && b == 3) {
-    const double *v[Q_N];
-    for (int k = 0; k < N; ++k) L->th1[k] = fmax(L->th1[k], THETA_FLOOR);
+    const double *v[TF_Q_N];
+    for (int k = 0; k < N; ++k) L->th1[k] = fmax(L->th1[k], TF_THETA_FLOOR);
     point_values(L, v, L->phin, NULL, L->th1);
     sl_point_request rq = {"gamma", L->gam, L->dgam, "theta"};
     rc = sl_point_eval(&L->gran, N, v, &rq, 1, d);
@@ -373,7 +366,7 @@ static int newton_update(sh_layer *L, double dt, double *du, double *dth, sl_dia
     L->uf1[k] += x[F], L->us1[k] += x[S];
     mu = fmax(mu, fmax(fabs(x[F]), fabs(x[S])));
     if (b == 3) { /* theta stays positive: at most a fivefold fall per iteration */
-      double th = fmax(L->th1[k] + x[T], fmax(0.2 * L->th1[k], THETA_FLOOR));
+      double th = tf_theta_bounded(L->th1[k] + x[T], L->th1[k]);
       mt = fmax(mt, fabs(th - L->th1[k]));
       L->th1[k] = th;
     }
@@ -391,7 +384,7 @@ static int theta_algebraic(sh_layer *L, double *dmax, sl_diag *d) {
   int N = L->n + 1;
   double *one = L->work, *mu0 = L->gam, *g0 = L->dgam;
   for (int k = 0; k < N; ++k) one[k] = 1.0;
-  const double *v[Q_N];
+  const double *v[TF_Q_N];
   point_values(L, v, L->phin, NULL, one);
   sl_point_request rq[2] = {{"mu_s", mu0, NULL, NULL}, {"gamma", g0, NULL, NULL}};
   int rc = sl_point_eval(&L->gran, N, v, rq, 2, d);
@@ -404,12 +397,7 @@ static int theta_algebraic(sh_layer *L, double *dmax, sl_diag *d) {
   }
   double m = 0.0;
   for (int k = 0; k < N; ++k) {
-    double A = mu0[k] * L->prod[k] / L->V[k], B = g0[k], C = L->exchange ? 3.0 * L->K[k] : 0.0, th;
-    if (B > 0.0) {
-      double sq = (-C + sqrt(C * C + 4.0 * A * B)) / (2.0 * B);
-      th = sq * sq;
-    } else th = THETA_FLOOR;
-    th = fmax(th, THETA_FLOOR);
+    double th = tf_theta_algebraic(mu0[k] * L->prod[k] / L->V[k], g0[k], tf_theta_exchange(L->exchange, L->K[k]), NULL);
     m = fmax(m, fabs(th - L->th1[k]));
     L->th1[k] = th;
   }
@@ -438,7 +426,7 @@ static int layer_step(sh_layer *L, double t, double dt, int *iterations, sl_diag
     if (!rc) rc = newton_update(L, dt, &du, &dth, d);
     if (!rc && L->granular && L->algebraic) rc = theta_algebraic(L, &dth, d);
     if (rc) return rc;
-    double th_scale = THETA_FLOOR;
+    double th_scale = TF_THETA_FLOOR;
     for (int k = 0; k < N; ++k) th_scale = fmax(th_scale, L->th1[k]);
     *iterations = it;
     if (du <= L->tolerance * v_scale && dth <= L->tolerance * th_scale) return 0;
@@ -502,7 +490,7 @@ static int geometry(sh_layer *L, sl_diag *d) {
   for (size_t k = 0; k < sizeof cells / sizeof cells[0]; ++k)
     if (!(*cells[k] = calloc((size_t)n, sizeof(double))))
       return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
-  for (int k = 0; k < Q_N; ++k)
+  for (int k = 0; k < TF_Q_N; ++k)
     if (!(L->qv[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   if (!(L->blk = calloc(N * 30, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   for (size_t k = 0; k < N; ++k) L->x[k] = m->xy[2 * L->vertex[k]];
@@ -543,7 +531,7 @@ static int physics(sh_layer *L, sl_diag *d) {
   L->algebraic = cfg->granular_temperature, L->exchange = cfg->interphase_dissipation;
   const char *model = "the two_fluid shear layer";
   L->drag_c = sl_scene_closure(sc, "drag");
-  if ((rc = sl_point_bind(&L->drag, L->drag_c, quantity_names, Q_N, "closure.drag", model, d))) return rc;
+  if ((rc = sl_point_bind(&L->drag, L->drag_c, tf_quantity_names, TF_Q_N, "closure.drag", model, d))) return rc;
   if (sl_point_has_input(&L->drag, "shear_rate"))
     return sl_diag_set(d, SL_EBADINPUT, "[closure.drag]: the shear layer gives a drag closure no shear_rate");
   if (!sl_point_has_output(&L->drag, "K") || !sl_point_has_input(&L->drag, "slip"))
@@ -555,7 +543,7 @@ static int physics(sh_layer *L, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature: needs [closure.granular] (a "
                                         "kinetic theory, e.g. model = lun)", gt->file, gt->line);
   if (L->granular) {
-    if ((rc = sl_point_bind(&L->gran, L->gran_c, quantity_names, Q_N, "closure.granular", model, d))) return rc;
+    if ((rc = sl_point_bind(&L->gran, L->gran_c, tf_quantity_names, TF_Q_N, "closure.granular", model, d))) return rc;
     static const char *const need[] = {"mu_s", "kappa", "gamma"};
     for (int k = 0; k < 3; ++k)
       if (!sl_point_has_output(&L->gran, need[k]))
@@ -563,38 +551,19 @@ static int physics(sh_layer *L, sl_diag *d) {
                                             "(phi, theta); this closure gives no %s", need[k]);
   }
   if ((L->visc_c = sl_scene_closure(sc, "viscosity"))) {
-    if ((rc = sl_point_bind(&L->visc, L->visc_c, quantity_names, Q_N, "closure.viscosity", model, d))) return rc;
+    if ((rc = sl_point_bind(&L->visc, L->visc_c, tf_quantity_names, TF_Q_N, "closure.viscosity", model, d))) return rc;
     if (!sl_point_has_output(&L->visc, "viscosity"))
       return sl_diag_set(d, SL_EBADINPUT, "[closure.viscosity]: the closure gives no viscosity");
   }
   if ((L->wall_c = sl_scene_closure(sc, "wall_stress"))) {
-    if ((rc = sl_point_bind(&L->wall, L->wall_c, quantity_names, Q_N, "closure.wall_stress", model, d))) return rc;
+    if ((rc = sl_point_bind(&L->wall, L->wall_c, tf_quantity_names, TF_Q_N, "closure.wall_stress", model, d))) return rc;
     if (sl_point_has_input(&L->wall, "shear_rate"))
       return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: the shear layer gives a wall closure no shear_rate "
                                           "(its slip_wall and wall_distance give the wall's shear rate)");
   }
   for (int k = 0; k <= L->n; ++k) {
-    L->qv[Q_RHO_F][k] = L->rho_f, L->qv[Q_MU_F][k] = L->mu_f, L->qv[Q_RHO_S][k] = L->rho_s;
-    L->qv[Q_D_P][k] = L->d_p, L->qv[Q_SPHERICITY][k] = L->sphericity, L->qv[Q_GRAVITY][k] = L->gravity;
-  }
-  return 0;
-}
-
-/* The kinetic scaling the algebraic theta relies on: mu_s ~ sqrt(theta),
- * gamma ~ theta^1.5 at fixed phi. */
-static int check_kinetic_scaling(sh_layer *L, sl_diag *d) {
-  double th[2] = {1.0, 4.0}, ph[2], mu[2], g[2];
-  ph[0] = ph[1] = fmin(0.5 * L->phi_max, 0.3);
-  const double *v[Q_N];
-  point_values(L, v, ph, NULL, th);
-  sl_point_request rq[2] = {{"mu_s", mu, NULL, NULL}, {"gamma", g, NULL, NULL}};
-  int rc = sl_point_eval(&L->gran, 2, v, rq, 2, d);
-  if (rc) return rc;
-  if (fabs(mu[1] / mu[0] - 2.0) > 1e-9 || fabs(g[1] / g[0] - 8.0) > 1e-9) {
-    char at[400];
-    return sl_diag_set(d, SL_EBADINPUT, "%s = algebraic needs a kinetic closure (mu_s ~ theta^0.5, gamma ~ "
-                                        "theta^1.5); [closure.granular] is not one (use transport)",
-                       sl_scene_where(L->sc, &L->cfg->granular_temperature, at, sizeof at));
+    L->qv[TF_Q_RHO_F][k] = L->rho_f, L->qv[TF_Q_MU_F][k] = L->mu_f, L->qv[TF_Q_RHO_S][k] = L->rho_s;
+    L->qv[TF_Q_D_P][k] = L->d_p, L->qv[TF_Q_SPHERICITY][k] = L->sphericity, L->qv[TF_Q_GRAVITY][k] = L->gravity;
   }
   return 0;
 }
@@ -683,7 +652,7 @@ static int initial_state(sh_layer *L, sl_diag *d) {
     L->phin[k] = num / den;
   }
   for (int i = 0; i < L->n; ++i) L->rhoc[i] = L->rho_f * (1.0 - L->phi[i]) + L->rho_s * L->phi[i];
-  for (int k = 0; k <= L->n; ++k) L->qv[Q_DENSITY][k] = L->rho_f * (1.0 - L->phin[k]) + L->rho_s * L->phin[k];
+  for (int k = 0; k <= L->n; ++k) L->qv[TF_Q_DENSITY][k] = L->rho_f * (1.0 - L->phin[k]) + L->rho_s * L->phin[k];
   if (!L->granular)
     for (int k = 0; k <= L->n; ++k) L->th[k] = 0.0;
   for (int side = 0; side < 2; ++side) {
@@ -730,10 +699,10 @@ static int write_state(sh_layer *L, sl_output *out, sl_diag *d) {
     rc = sl_output_write_field(out, field_names[f + 1], SL_CENTRE_NODE, 1, L->node_out, d);
   }
   if (!rc && (L->fields & F_PS)) { /* p_s(phi, theta) of [closure.granular], theta the mean of the cell's nodes */
-    for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th[i] + L->th[i + 1]), THETA_FLOOR);
-    const double *v[Q_N];
+    for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th[i] + L->th[i + 1]), TF_THETA_FLOOR);
+    const double *v[TF_Q_N];
     point_values(L, v, L->phi, NULL, L->thc);
-    v[Q_SHEAR_RATE] = L->gdc, v[Q_DENSITY] = L->rhoc;
+    v[TF_Q_SHEAR_RATE] = L->gdc, v[TF_Q_DENSITY] = L->rhoc;
     sl_point_request rq = {"p_s", L->psc, NULL, NULL};
     rc = sl_point_eval(&L->gran, L->n, v, &rq, 1, d);
     for (int i = 0; i < L->n && !rc; ++i) L->cell_out[L->cell_of[i]] = L->psc[i];
@@ -810,7 +779,7 @@ static int layer_trial(void *self, sl_step *s, int *iterations, sl_diag *d) {
 static void layer_accept(void *self, const sl_step *s, int *steady) {
   sh_layer *L = self;
   const int N = L->n + 1;
-  double dt = s->dt, rate_u = 0.0, rate_t = 0.0, th_max = THETA_FLOOR, v_scale = L->v_ref;
+  double dt = s->dt, rate_u = 0.0, rate_t = 0.0, th_max = TF_THETA_FLOOR, v_scale = L->v_ref;
   for (int k = 0; k < N; ++k) {
     rate_u = fmax(rate_u, fmax(fabs(L->uf1[k] - L->uf[k]), fabs(L->us1[k] - L->us[k])));
     rate_t = fmax(rate_t, fabs(L->th1[k] - L->th[k]));
@@ -842,7 +811,7 @@ static void release(sh_layer *L) {
                    L->rhoc,   L->mumc,   L->prod, L->gam,  L->dgam, L->work, L->blk,  L->node_out, L->cell_out,
                    L->psc};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
-  for (int k = 0; k < Q_N; ++k) free(L->qv[k]);
+  for (int k = 0; k < TF_Q_N; ++k) free(L->qv[k]);
   sl_point_release(&L->drag), sl_point_release(&L->gran), sl_point_release(&L->wall), sl_point_release(&L->visc);
   free(L->vertex), free(L->cell_of);
   free(L);
@@ -860,7 +829,11 @@ static int layer_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   }
   if (!rc) rc = geometry(L, d);
   if (!rc) rc = physics(L, d);
-  if (!rc && L->granular && L->algebraic) rc = check_kinetic_scaling(L, d);
+  if (!rc && L->granular && L->algebraic) {
+    char at[400];
+    rc = tf_granular_check_kinetic(&L->gran, L->qv, L->phi_max, 0,
+                                   sl_scene_where(L->sc, &L->cfg->granular_temperature, at, sizeof at), d);
+  }
   L->b = L->granular && !L->algebraic ? 3 : 2;
   if (!rc) rc = walls(L, d);
   if (!rc) rc = initial_state(L, d);

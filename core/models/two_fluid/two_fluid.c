@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The 1-D two-fluid model (see two_fluid.h): the scene, the time loop and
- * the output. One step is core/models/two_fluid_step.c. */
+ * the output. One step is two_fluid_step.c (the 2-D model's step on n x 1 cells). */
 #include "core/models/two_fluid/two_fluid.h"
 
 #include <math.h>
@@ -10,6 +10,7 @@
 #include <time.h>
 
 #include "core/models/two_fluid/two_fluid_impl.h"
+#include "core/models/two_fluid/two_fluid_plane_impl.h"
 #include "core/models/two_fluid/liquefaction.h"
 #include "core/plugin/kinds.h"
 #include "core/scene/mesh.h"
@@ -181,9 +182,8 @@ static int initial_state(tf_run *r, sl_diag *d) {
 
 static int allocate(tf_column *c, sl_diag *d) {
   size_t n = (size_t)c->n, f = n + 1;
-  double **cells[] = {&c->phi, &c->p, &c->phi_new, &c->p_new, &c->ps_v, &c->ps_d, &c->alpha, &c->slope, &c->stage};
-  double **faces[] = {&c->u,  &c->uf,   &c->u_new, &c->uf_new, &c->w,  &c->K,   &c->dK,   &c->phif,
-                      &c->slip, &c->lo, &c->di,    &c->up,     &c->rhs, &c->flux, &c->dpdx};
+  double **cells[] = {&c->phi, &c->p, &c->phi_new, &c->p_new, &c->alpha};
+  double **faces[] = {&c->u, &c->uf, &c->u_new, &c->uf_new};
   for (size_t i = 0; i < sizeof cells / sizeof cells[0]; ++i)
     if (!(*cells[i] = calloc(n, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   for (size_t i = 0; i < sizeof faces / sizeof faces[0]; ++i)
@@ -193,10 +193,10 @@ static int allocate(tf_column *c, sl_diag *d) {
 
 static void release(tf_run *r) {
   tf_column *c = &r->c;
-  double *all[] = {c->slope, c->stage, c->h, c->xc, c->xf, c->dual, c->phi, c->p, c->phi_new, c->p_new, c->ps_v,
-                   c->ps_d,  c->alpha, c->u,   c->uf,     c->u_new, c->uf_new, c->w,     c->K,       c->dK,
-                   c->phif,  c->slip, c->lo,   c->di,     c->up,    c->rhs,  c->flux,  c->dpdx,    r->node};
+  double *all[] = {c->h,     c->xc,    c->xf,    c->dual, c->phi, c->p,     c->phi_new,
+                   c->p_new, c->alpha, c->u,     c->uf,   c->u_new, c->uf_new, r->node};
   for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i) free(all[i]);
+  tf_plane_free(c);
   sl_point_release(&c->drag.pc), sl_point_release(&c->ps.pc);
   tfl_free(r->lq);
   free(r->face_vertex), free(r->cell_of);
@@ -408,6 +408,7 @@ static int column_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag 
     c->v_ref = fmax(c->v_ref, fabs(j));
   }
   if (!rc && shaken) rc = tfl_create(sc, r->cfg, &r->c, r->cell_of, &r->lq, d);
+  if (!rc) rc = tf_plane_create(&r->c, sc, r->cfg, d);
   /* settling the deposit is a time integration: a run's, not --check's (bounded like any run only by its end) */
   if (!rc && r->cfg->lq.settle > 0.0 && !sc->hooks.checking) rc = settle(r, d);
   if (!rc && r->lq) rc = tfl_start(r->lq, &r->c, d);
@@ -446,7 +447,12 @@ static void column_stats(void *self, const sl_run_result *res, sl_model_stats *s
     snprintf(st->coupling_summary + at, sizeof st->coupling_summary - at, "; settled %.4g s in %ld steps before t = 0; "
              "smallest dt %.3g s; %s", r->settle_time, r->settle_steps, r->dt_min, line);
   }
-  snprintf(st->linear_summary, sizeof st->linear_summary, "tridiagonal, %d faces", r->c.n + 1);
+  const tfp_model *m = r->c.plane;
+  if (m && m->ls) {
+    st->linear = *sl_linsolve_get_stats(m->ls), st->has_linear = 1;
+    snprintf(st->linear_summary, sizeof st->linear_summary, "%s, %d unknowns (the staggered grid's %d x 1 cells)",
+             r->c.linear, m->n_unknowns, r->c.n);
+  }
 }
 
 static void column_destroy(void *self) { release(self); }

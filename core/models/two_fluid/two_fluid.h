@@ -23,8 +23,9 @@
  * (eq 4.20 at steady state), U = eps s; at rest dp_s/dx = phi (rho_s - rho_f) g
  * (eq 4.30 at rest). The pressure written is p from the fluid equation.
  *
- * Discretisation (core/models/two_fluid_step.c): phi as cell averages, u_s
- * and u_f at the faces (the mesh vertices); backward Euler, drag implicit
+ * Discretisation (two_fluid_step.c: the 2-D model's step, two_fluid_plane_step.c,
+ * on n x 1 cells with column_form): phi as cell averages, u_s and u_f at
+ * the faces (the mesh vertices); backward Euler, drag implicit
  * (Newton-linearised in the slip), p_s implicit through its derivative
  * (Pringle 2001 eq 4.31's Taylor expansion about the latest iterate), the
  * step iterated to convergence; phi moved conservatively with the new u_s

@@ -27,7 +27,8 @@ typedef struct tf_lq_config {
 typedef struct tf_config {
   long iterations, order, case_index;
   double tolerance, cfl, steady_tolerance, diffusivity;
-  int limiter, motion, cross_section, granular_temperature, interphase_dissipation, acceleration, kinetic_pressure;
+  int limiter, motion, cross_section, granular_temperature, interphase_dissipation, acceleration, kinetic_pressure,
+      column_form;
   sl_scene_expr phi, porosity, theta;            /* [initial]: the column and the 2-D model (x, y, case) */
   sl_scene_exprs velocity_fluid, velocity_solid; /* [initial]: the 2-D model (two components) */
   sl_scene_expr sh_phi, sh_theta, sh_uf, sh_us;  /* [initial]: the shear layer (of x) */
@@ -82,13 +83,15 @@ typedef struct tf_column {
   /* state: cells phi, p; faces u (solids), uf (fluid) */
   double *phi, *u, *uf, *p;
   double *nbar; /* [n] the reference porosity of each cell (liquefaction.h), or NULL */
-  /* the step's trial and work arrays */
+  /* the step's trial; scratch of n cells */
   double *phi_new, *u_new, *uf_new, *p_new;
-  double *w, *K, *dK, *ps_v, *ps_d, *phif, *slip, *lo, *di, *up, *rhs, *flux, *alpha, *dpdx, *slope, *stage;
+  double *alpha;
+  struct tfp_model *plane; /* the n x 1 grid of the 2-D model the step runs on (two_fluid_step.c) */
+  const char *linear;      /* its sparse solver's name */
   double outflow_trial; /* solids volume per unit area that left during the trial */
   int fatal;            /* the trial failed for a reason a smaller step cannot cure (the inlet's value) */
   long substeps_trial;
-  double transport_cpu; /* CPU seconds in tf_transport over the run (profile) */
+  double transport_cpu; /* CPU seconds in the solids transport over the run (profile) */
   long last_substeps;     /* of the last transport call */
   long accepted_substeps; /* of the last accepted step's transport (0: none yet) */
   int iterations_trial;
@@ -105,15 +108,16 @@ int tf_mixture_flux(tf_column *c, double t, double *j, sl_diag *d);
  * K(phi, s) s = phi (1 - phi) (rho_s - rho_f) |g|, U = (1 - phi) s. */
 int tf_equilibrium_velocity(tf_column *c, double porosity, double *U, sl_diag *d);
 
+/* The column's step runs on the 2-D model's n x 1 grid (two_fluid_step.c):
+ * built once the column's physics, boundaries, state and closures are set
+ * (0, or an error with d set; tf_plane_free releases it in any case). */
+int tf_plane_create(tf_column *c, const sl_scene *sc, const tf_config *cfg, sl_diag *d);
+void tf_plane_free(tf_column *c);
+
 /* One backward-Euler step from (phi, u) at t over dt into the *_new arrays.
  * 0, or SL_EFAILED with the reason (no convergence, a closure outside its
  * validity, a non-finite value): the caller retries smaller. */
 int tf_step(tf_column *c, double t, double dt, sl_diag *d);
-
-/* The bounded conservative transport of phi0 over dt with the face
- * velocities u into phi (see two_fluid_step.c). */
-int tf_transport(tf_column *c, const double *phi0, const double *u, double dt, double *phi, long *substeps,
-                 double *outflow, sl_diag *d);
 
 /* The scene's physics into c (two_fluid_scene.c): [fluid], [solid], [flow]
  * gravity (dim components; 2-D: into gravity[], default (0, -9.81), and

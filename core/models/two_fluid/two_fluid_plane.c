@@ -286,6 +286,7 @@ static int plane_restore(void *self, const sl_checkpoint *ck, sl_diag *d) {
   int rc = tf_checkpoint_restore(ck, "2-D two_fluid (the same grid)", &st, d);
   if (!rc && st.theta) memcpy(r->m.s.theta_new, r->m.s.theta, (size_t)r->m.fv.nc * sizeof *r->m.s.theta);
   if (!rc) r->inventory0 = st.inventory0, r->outflow = st.outflow;
+  if (!rc && r->m.column) tfp_column_restored(&r->m);
   return rc;
 }
 
@@ -312,6 +313,7 @@ static void plane_accept(void *self, const sl_step *s, int *steady) {
   r->outflow += m->outflow_trial;
   r->substeps += m->substeps_trial, ++r->advances;
   m->accepted_substeps = m->last_substeps;
+  m->col_j = m->col_j_new;
   *steady = r->steady_tol > 0.0 && rate < r->steady_tol;
 }
 
@@ -360,6 +362,11 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
     }
   }
   if (!rc) rc = tfp_boundary_values(&r->m, 0.0, r->m.phi, d);
+  if (!rc && r->cfg->column_form) {
+    char at[400];
+    rc = tfp_column_start(&r->m, sl_scene_src(sc, &r->cfg->velocity_fluid) != NULL,
+                          sl_scene_where(sc, &r->cfg->column_form, at, sizeof at), d);
+  }
   unsigned mask = 0;
   unsigned all = F_PHI | F_US | F_UF | F_P | (r->m.c.ps.c ? F_PS : 0) | (r->m.s.granular ? F_THETA : 0);
   if (!rc) rc = sl_scene_output_fields(sc, all, &mask, d);

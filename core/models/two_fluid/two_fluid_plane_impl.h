@@ -5,8 +5,8 @@
  *
  * The staggered (MAC) grid of Harlow & Welch (1965; core/fv/grid.h): phi,
  * the pressure p and the solids pressure P_s in the cells; the normal
- * components of the fluid and solids velocities on the faces. It carries the 1-D column's face
- * scheme (two_fluid_step.c) over to two dimensions: each face balances the
+ * components of the fluid and solids velocities on the faces. The 1-D
+ * column is its n x 1 case with column_form (two_fluid_step.c): each face balances the
  * two cells it separates, so a checkerboard of phi drives the face fluxes
  * that relax it (a collocated or Taylor-Hood form averages it away).
  *
@@ -20,6 +20,7 @@
 #include "core/fv/cell_scalar.h"
 #include "core/fv/grid.h"
 #include "core/mesh/tensor_grid.h"
+#include "core/models/two_fluid/granular.h"
 #include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/point_eval.h"
 #include "core/solve/anderson.h"
@@ -45,9 +46,6 @@ typedef struct tfp_boundary {
   sl_scene_expr solids_flux; /* inlet: the superficial solids velocity entering, of (x, y, t, case) (e NULL: held) */
 } tfp_boundary;
 
-/* The quantities the 2-D model offers its solids-stress closures, by input name. */
-enum { TFP_Q_PHI, TFP_Q_SLIP, TFP_Q_THETA, TFP_Q_RHO_F, TFP_Q_MU_F, TFP_Q_RHO_S, TFP_Q_D_P, TFP_Q_SPHERICITY,
-       TFP_Q_GRAVITY, TFP_Q_SLIP_WALL, TFP_Q_WALL_DISTANCE, TFP_Q_SHEAR_RATE, TFP_Q_DENSITY, TFP_Q_N };
 
 /* The solids phase's stress (two_fluid_plane_solids.c): its viscosity in the
  * cells from [solid] viscosity, [closure.viscosity] and [closure.granular]
@@ -60,7 +58,7 @@ typedef struct tfp_solids {
   int kinetic_pressure; /* the granular closure's p_s joins the solids pressure */
   int wall_energy;      /* the wall closure's theta_flux enters the transported theta through the walls */
   double mu_const;            /* [solid] viscosity */
-  double *qv[TFP_Q_N];        /* the constant quantities, per point (corners: more than cells) */
+  double *qv[TF_Q_N];        /* the constant quantities, per point (corners: more than cells) */
   /* cells [nc]: the viscosity, its tangent mu_s + gdot dmu_s/dgdot (Newton in the shear rate), the shear rate,
      the mixture density, the drag coefficient (the mean of the faces), the normal part 2 S':S' - 2 S_xy^2 of
      gdot^2; theta of the accepted state and of the iterate */
@@ -105,6 +103,16 @@ typedef struct tfp_model {
   int *us_row, *uf_row;
   int n_vel, n_unknowns;
   int closed; /* no outlet: the pressure takes its datum in cell 0 */
+  /* [two_fluid] column_form: a grid one cell across along direction col_dir takes the 1-D column's equations
+     (two_fluid.h; two_fluid_plane_step.c): col_n cells, col_face[k] (k = 0..col_n) its faces upwards along
+     col_dir; col_j the mixture flux along +col_dir of the accepted state and col_j_new of the trial; col_uf0 the
+     accepted fluid velocities (the inlet's before its new value) */
+  int column, col_dir, col_n;
+  int *col_face;
+  double col_j, col_j_new, *col_uf0;
+  int col_inlet_given; /* the inlet's superficial velocity is col_inlet (inward), not its expression: the 1-D
+                          column's inlet, which may be an equilibrium (two_fluid_step.c) */
+  double col_inlet;
   /* the step's work arrays */
   double *phf, *phg, *w, *K, *dK, *slip, *sn, *ps, *dps, *flux, *alpha, *inflow, *x, *rhs;
   /* the linear system: its triplets (the pattern kept) */
@@ -173,6 +181,13 @@ int tfp_solids_pressure(tfp_model *m, const double *phi, double *ps, double *dps
  * face velocity u near u0 = us[f]; mu the solids viscosity of the half cell
  * next to the wall, h its width. Updates end_us. */
 int tfp_solids_wall(tfp_model *m, int f, int end, double mu, double h, double *R0, double *dR, sl_diag *d);
+
+/* [two_fluid] column_form (two_fluid_plane_step.c): checks the grid is one cell across with gravity along it, and
+ * starts the fluid with the inlet's mixture flux, as the column does. After tfp_setup and the initial state;
+ * `where` names the key for errors. 0, SL_EBADINPUT or SL_ENOMEM. */
+int tfp_column_start(tfp_model *m, int fluid_given, const char *where, sl_diag *d);
+/* The column's mixture flux from a restored state. */
+void tfp_column_restored(tfp_model *m);
 
 /* The solids volume (per radian when axisymmetric) in the domain. */
 double tfp_inventory(const tfp_model *m, const double *phi);

@@ -51,11 +51,6 @@
 #include "core/models/two_fluid/two_fluid_plane_impl.h"
 #include "core/solve/linsolve.h"
 
-static const char *const quantity_names[TFP_Q_N] = {"phi",        "slip",          "theta",      "rho_f",
-                                                    "mu_f",       "rho_s",         "d_p",        "sphericity",
-                                                    "gravity",    "slip_wall",     "wall_distance", "shear_rate",
-                                                    "density"};
-#define THETA_FLOOR 1e-12 /* m^2/s^2: the kinetic closures' lowest valid theta */
 
 void tfp_solids_free(tfp_solids *s) {
   double *all[] = {s->mu,    s->mu_t,  s->gdot, s->rho,    s->Kc,      s->theta,       s->theta_new,
@@ -64,32 +59,8 @@ void tfp_solids_free(tfp_solids *s) {
                    s->dgam,  s->th_old, s->th_cap, s->th_src, s->th_sink, s->th_x};
   sl_cell_scalar_free(&s->th);
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
-  for (int k = 0; k < TFP_Q_N; ++k) free(s->qv[k]);
+  for (int k = 0; k < TF_Q_N; ++k) free(s->qv[k]);
   free(s->visc.buf), free(s->gran.buf), free(s->wall.buf);
-}
-
-/* The kinetic scaling the algebraic theta relies on: mu_s ~ sqrt(theta),
- * gamma ~ theta^1.5 (and p_s ~ theta, when it is used) at fixed phi. */
-static int check_kinetic_scaling(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_diag *d) {
-  tfp_solids *s = &m->s;
-  double th[2] = {1.0, 4.0}, ph[2], mu[2], g[2], one[TFP_Q_N];
-  ph[0] = ph[1] = fmin(0.5 * m->c.phi_max, 0.3);
-  const double *v[TFP_Q_N];
-  for (int k = 0; k < TFP_Q_N; ++k) one[k] = s->qv[k][0];
-  double pair[TFP_Q_N][2];
-  for (int k = 0; k < TFP_Q_N; ++k) pair[k][0] = pair[k][1] = one[k], v[k] = pair[k];
-  v[TFP_Q_PHI] = ph, v[TFP_Q_THETA] = th;
-  double ps[2] = {1.0, 4.0};
-  sl_point_request rq[3] = {{"mu_s", mu, NULL, NULL}, {"gamma", g, NULL, NULL}, {"p_s", ps, NULL, NULL}};
-  int rc = sl_point_eval(&s->gran, 2, v, rq, s->kinetic_pressure ? 3 : 2, d);
-  if (rc) return rc;
-  if (fabs(mu[1] / mu[0] - 2.0) > 1e-9 || fabs(g[1] / g[0] - 8.0) > 1e-9 || fabs(ps[1] / ps[0] - 4.0) > 1e-9) {
-    const sl_src *e = sl_scene_src(sc, &cfg->granular_temperature);
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature = algebraic needs a kinetic closure "
-                                        "(mu_s ~ theta^0.5, gamma ~ theta^1.5%s); [closure.granular] is not one",
-                       e ? e->file : "", e ? e->line : 0, s->kinetic_pressure ? ", p_s ~ theta" : "");
-  }
-  return 0;
 }
 
 int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_diag *d) {
@@ -101,19 +72,19 @@ int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_d
                   &s->dgam,  &s->th_old, &s->th_cap, &s->th_src, &s->th_sink, &s->th_x};
   for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
     if (!(*a[k] = calloc(nk, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
-  for (int k = 0; k < TFP_Q_N; ++k)
+  for (int k = 0; k < TF_Q_N; ++k)
     if (!(s->qv[k] = calloc(nk, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   for (size_t c = 0; c < nk; ++c) {
-    s->qv[TFP_Q_RHO_F][c] = m->c.rho_f, s->qv[TFP_Q_MU_F][c] = m->c.mu_f, s->qv[TFP_Q_RHO_S][c] = m->c.rho_s;
-    s->qv[TFP_Q_D_P][c] = m->c.d_p, s->qv[TFP_Q_SPHERICITY][c] = m->c.sphericity;
-    s->qv[TFP_Q_GRAVITY][c] = fabs(m->c.g), s->one[c] = 1.0;
+    s->qv[TF_Q_RHO_F][c] = m->c.rho_f, s->qv[TF_Q_MU_F][c] = m->c.mu_f, s->qv[TF_Q_RHO_S][c] = m->c.rho_s;
+    s->qv[TF_Q_D_P][c] = m->c.d_p, s->qv[TF_Q_SPHERICITY][c] = m->c.sphericity;
+    s->qv[TF_Q_GRAVITY][c] = fabs(m->c.g), s->one[c] = 1.0;
   }
   s->mu_const = sc->solid.viscosity;
   int rc = 0;
   char at[400];
   const char *model = "the 2-D two_fluid model";
   if ((s->visc_c = sl_scene_closure(sc, "viscosity"))) {
-    if ((rc = sl_point_bind(&s->visc, s->visc_c, quantity_names, TFP_Q_N, "closure.viscosity", model, d))) return rc;
+    if ((rc = sl_point_bind(&s->visc, s->visc_c, tf_quantity_names, TF_Q_N, "closure.viscosity", model, d))) return rc;
     if (!sl_point_has_output(&s->visc, "viscosity"))
       return sl_diag_set(d, SL_EBADINPUT, "[closure.viscosity]: the closure gives no viscosity");
   }
@@ -126,7 +97,7 @@ int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_d
   if (s->granular) {
     s->algebraic = cfg->granular_temperature;
     s->exchange = cfg->interphase_dissipation;
-    if ((rc = sl_point_bind(&s->gran, s->gran_c, quantity_names, TFP_Q_N, "closure.granular", model, d))) return rc;
+    if ((rc = sl_point_bind(&s->gran, s->gran_c, tf_quantity_names, TF_Q_N, "closure.granular", model, d))) return rc;
     static const char *const need[] = {"mu_s", "gamma", "kappa"};
     for (int k = 0; k < (s->algebraic ? 2 : 3); ++k)
       if (!sl_point_has_output(&s->gran, need[k]))
@@ -141,7 +112,12 @@ int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_d
     if (s->kinetic_pressure && !has_ps)
       return sl_diag_set(d, SL_EBADINPUT, "%s = true: [closure.granular] gives no p_s",
                          sl_scene_where(sc, &cfg->kinetic_pressure, at, sizeof at));
-    if (s->algebraic && (rc = check_kinetic_scaling(m, sc, cfg, d))) return rc;
+    if (s->algebraic) {
+      char gt_at[400];
+      if ((rc = tf_granular_check_kinetic(&s->gran, s->qv, m->c.phi_max, s->kinetic_pressure,
+                                          sl_scene_where(sc, &cfg->granular_temperature, gt_at, sizeof gt_at), d)))
+        return rc;
+    }
   } else {
     const void *keys[] = {&cfg->interphase_dissipation, &cfg->kinetic_pressure};
     for (int k = 0; k < 2; ++k)
@@ -154,7 +130,7 @@ int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_d
   for (int f = 0; f < 2 * m->fv.nf; ++f)
     any_stress |= m->end_wall[f] >= 0 && m->b[m->end_wall[f]].solids == TFP_SOLIDS_WALL_STRESS;
   if ((s->wall_c = sl_scene_closure(sc, "wall_stress"))) {
-    if ((rc = sl_point_bind(&s->wall, s->wall_c, quantity_names, TFP_Q_N, "closure.wall_stress", model, d))) return rc;
+    if ((rc = sl_point_bind(&s->wall, s->wall_c, tf_quantity_names, TF_Q_N, "closure.wall_stress", model, d))) return rc;
     if (!sl_point_has_output(&s->wall, "tau_w"))
       return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: the closure gives no tau_w");
     if (sl_point_has_input(&s->wall, "shear_rate"))
@@ -170,8 +146,8 @@ int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_d
                                         "johnson_jackson)");
   }
   s->any = s->mu_const > 0.0 || s->visc_c || s->granular || any_stress;
-  for (size_t c = 0; c < nc; ++c) s->theta[c] = s->theta_new[c] = THETA_FLOOR;
-  for (size_t k = 0; k < nk; ++k) s->theta_k[k] = THETA_FLOOR;
+  for (size_t c = 0; c < nc; ++c) s->theta[c] = s->theta_new[c] = TF_THETA_FLOOR;
+  for (size_t k = 0; k < nk; ++k) s->theta_k[k] = TF_THETA_FLOOR;
   return 0;
 }
 
@@ -278,29 +254,24 @@ static int corner_cells(const tfp_model *m, int i, int j, int cells[4]) {
 static int solids_mu_points(tfp_model *m, int N, const double *phi, const double *gdot, const double *rho,
                             const double *K, double *theta, double *mu, double *mu_t, sl_diag *d) {
   tfp_solids *s = &m->s;
-  const double *v[TFP_Q_N];
+  const double *v[TF_Q_N];
   int rc;
-  for (int k = 0; k < TFP_Q_N; ++k) v[k] = s->qv[k];
-  v[TFP_Q_PHI] = phi, v[TFP_Q_SHEAR_RATE] = gdot, v[TFP_Q_DENSITY] = rho, v[TFP_Q_THETA] = theta;
+  for (int k = 0; k < TF_Q_N; ++k) v[k] = s->qv[k];
+  v[TF_Q_PHI] = phi, v[TF_Q_SHEAR_RATE] = gdot, v[TF_Q_DENSITY] = rho, v[TF_Q_THETA] = theta;
   for (int q = 0; q < N; ++q) mu[q] = s->mu_const;
   if (s->granular && !s->algebraic) { /* theta given: the kinetic viscosity at it, no shear dependence of its own */
     sl_point_request rq = {"mu_s", s->mu_k, NULL, NULL};
     for (int q = 0; q < N; ++q) s->kap[q] = 0.0;
     if ((rc = sl_point_eval(&s->gran, N, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
   } else if (s->granular) {
-    v[TFP_Q_THETA] = s->one;
+    v[TF_Q_THETA] = s->one;
     sl_point_request rq[2] = {{"mu_s", s->mu_k, NULL, NULL}, {"gamma", s->gam, NULL, NULL}};
     if ((rc = sl_point_eval(&s->gran, N, v, rq, 2, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
-    v[TFP_Q_THETA] = theta;
+    v[TF_Q_THETA] = theta;
     for (int q = 0; q < N; ++q) {
-      double A = s->mu_k[q] * gdot[q] * gdot[q], B = s->gam[q], C = s->exchange ? 3.0 * K[q] : 0.0, sq = 0.0;
-      s->kap[q] = 0.0; /* d ln sqrt(theta) / d ln gdot: 1 without the sink, up to 2 with it */
-      if (B > 0.0) {
-        double root = sqrt(C * C + 4.0 * A * B);
-        sq = (-C + root) / (2.0 * B);
-        if (sq > 0.0) s->kap[q] = 2.0 * A / (sq * root);
-      }
-      theta[q] = fmax(sq * sq, THETA_FLOOR);
+      /* kap: d ln sqrt(theta) / d ln gdot */
+      theta[q] = tf_theta_algebraic(s->mu_k[q] * gdot[q] * gdot[q], s->gam[q], tf_theta_exchange(s->exchange, K[q]),
+                                    &s->kap[q]);
       s->mu_k[q] *= sqrt(theta[q]);
     }
   }
@@ -377,13 +348,13 @@ static int wall_energy(tfp_model *m, int c, const int cf[4], double *rhs, double
       for (int t = 0; t < 2; ++t) { /* the faces along the wall: x-faces along a bottom or top, y-faces along a side */
         int ft = tfp_primary(m, cf[2 * (1 - dir) + t]), e = 2 * ft + side, b = m->end_wall[e];
         if (b < 0 || m->b[b].solids != TFP_SOLIDS_WALL_STRESS) continue;
-        double one[TFP_Q_N], q, dq;
-        const double *v[TFP_Q_N];
-        for (int k = 0; k < TFP_Q_N; ++k) one[k] = s->qv[k][0], v[k] = &one[k];
-        one[TFP_Q_PHI] = m->phi_new[c], one[TFP_Q_THETA] = s->th_old[c];
-        one[TFP_Q_SLIP_WALL] = one[TFP_Q_SLIP] = fabs(m->end_us[e] - m->end_u[e]);
-        one[TFP_Q_WALL_DISTANCE] = 0.5 * (dir ? m->fv.hy[c / m->fv.nx] : m->fv.hx[c % m->fv.nx]);
-        one[TFP_Q_SHEAR_RATE] = s->gdot[c], one[TFP_Q_DENSITY] = s->rho[c];
+        double one[TF_Q_N], q, dq;
+        const double *v[TF_Q_N];
+        for (int k = 0; k < TF_Q_N; ++k) one[k] = s->qv[k][0], v[k] = &one[k];
+        one[TF_Q_PHI] = m->phi_new[c], one[TF_Q_THETA] = s->th_old[c];
+        one[TF_Q_SLIP_WALL] = one[TF_Q_SLIP] = fabs(m->end_us[e] - m->end_u[e]);
+        one[TF_Q_WALL_DISTANCE] = 0.5 * (dir ? m->fv.hy[c / m->fv.nx] : m->fv.hx[c % m->fv.nx]);
+        one[TF_Q_SHEAR_RATE] = s->gdot[c], one[TF_Q_DENSITY] = s->rho[c];
         sl_point_request rq = {"theta_flux", &q, &dq, "theta"};
         int rc = sl_point_eval(&s->wall, 1, v, &rq, 1, d);
         if (rc) return sl_diag_prefix(d, rc, "[closure.wall_stress] theta_flux in cell (%d, %d)", c % m->fv.nx, c / m->fv.nx);
@@ -424,18 +395,18 @@ int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
   if (!s->th.ls && (rc = sl_cell_scalar_init(&s->th, &m->fv, d)))
     return sl_diag_prefix(d, rc, "the granular temperature's system");
   shear_rate(m, m->us_new);
-  for (int c = 0; c < nc; ++c) s->th_old[c] = fmax(s->theta_new[c], THETA_FLOOR);
-  const double *v[TFP_Q_N];
-  for (int k = 0; k < TFP_Q_N; ++k) v[k] = s->qv[k];
-  v[TFP_Q_PHI] = m->phi_new, v[TFP_Q_THETA] = s->th_old, v[TFP_Q_SHEAR_RATE] = s->gdot, v[TFP_Q_DENSITY] = s->rho;
+  for (int c = 0; c < nc; ++c) s->th_old[c] = fmax(s->theta_new[c], TF_THETA_FLOOR);
+  const double *v[TF_Q_N];
+  for (int k = 0; k < TF_Q_N; ++k) v[k] = s->qv[k];
+  v[TF_Q_PHI] = m->phi_new, v[TF_Q_THETA] = s->th_old, v[TF_Q_SHEAR_RATE] = s->gdot, v[TF_Q_DENSITY] = s->rho;
   sl_point_request rq[3] = {{"mu_s", s->mu_k, NULL, NULL}, {"kappa", s->kap, NULL, NULL},
                             {"gamma", s->gam, s->dgam, "theta"}};
   if ((rc = sl_point_eval(&s->gran, nc, v, rq, 3, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
   /* (3/2) rho_s phi, the production less the dissipation (Newton in gamma), the sinks: the dissipation's
      derivative and the drag's 3 K */
   for (int c = 0; c < nc; ++c) {
-    double ph = fmax(m->phi_new[c], 1e-6), X = s->exchange ? 3.0 * s->Kc[c] : 0.0, dg = fmax(s->dgam[c], 0.0);
-    s->th_cap[c] = 1.5 * m->c.rho_s * ph;
+    double ph = fmax(m->phi_new[c], 1e-6), X = tf_theta_exchange(s->exchange, s->Kc[c]), dg = fmax(s->dgam[c], 0.0);
+    s->th_cap[c] = tf_theta_capacity(m->c.rho_s, ph);
     s->th_sink[c] = dg + X;
     s->th_src[c] = s->mu_k[c] * s->gdot[c] * s->gdot[c] - s->gam[c] + dg * s->th_old[c];
   }
@@ -450,7 +421,7 @@ int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
       return sl_diag_set(d, SL_EFAILED, "the granular temperature is not finite in cell (%d, %d)", c % m->fv.nx,
                          c / m->fv.nx);
     /* theta stays positive: at most a fivefold fall per iteration */
-    double th = fmax(s->th_x[c], fmax(0.2 * s->th_old[c], THETA_FLOOR));
+    double th = tf_theta_bounded(s->th_x[c], s->th_old[c]);
     ch = fmax(ch, fabs(th - s->th_old[c]));
     s->theta_new[c] = th;
   }
@@ -461,13 +432,13 @@ int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
 int tfp_solids_pressure(tfp_model *m, const double *phi, double *ps, double *dps, sl_diag *d) {
   tfp_solids *s = &m->s;
   if (!s->granular || !s->kinetic_pressure) return 0;
-  const double *v[TFP_Q_N];
-  for (int k = 0; k < TFP_Q_N; ++k) v[k] = s->qv[k];
-  for (int c = 0; c < m->fv.nc; ++c) s->th_old[c] = fmax(s->theta_new[c], THETA_FLOOR);
+  const double *v[TF_Q_N];
+  for (int k = 0; k < TF_Q_N; ++k) v[k] = s->qv[k];
+  for (int c = 0; c < m->fv.nc; ++c) s->th_old[c] = fmax(s->theta_new[c], TF_THETA_FLOOR);
   /* the algebraic theta of an iterate may leave the closure's range (a wall started impulsively shears its
      cell at U / (h/2)): p_s ~ theta is evaluated at theta = 1 and scaled (checked at set-up) */
-  v[TFP_Q_PHI] = phi, v[TFP_Q_THETA] = s->algebraic ? s->one : s->th_old;
-  v[TFP_Q_SHEAR_RATE] = s->gdot, v[TFP_Q_DENSITY] = s->rho;
+  v[TF_Q_PHI] = phi, v[TF_Q_THETA] = s->algebraic ? s->one : s->th_old;
+  v[TF_Q_SHEAR_RATE] = s->gdot, v[TF_Q_DENSITY] = s->rho;
   sl_point_request rq = {"p_s", s->mum, s->gam, "phi"};
   int rc = sl_point_eval(&s->gran, m->fv.nc, v, &rq, 1, d);
   if (rc) return sl_diag_prefix(d, rc, "[closure.granular] p_s");
@@ -485,17 +456,17 @@ int tfp_solids_pressure(tfp_model *m, const double *phi, double *ps, double *dps
 static int wall_tau(tfp_model *m, int f, double phi, double slip, double dist, double *tau, double *dtau,
                     sl_diag *d) {
   tfp_solids *s = &m->s;
-  double one[TFP_Q_N], th = 0.0, gd = 0.0, rho = 0.0;
+  double one[TF_Q_N], th = 0.0, gd = 0.0, rho = 0.0;
   int n = 0;
   for (int side = 0; side < 2; ++side) {
     int c = side ? m->fv.hi[f] : m->fv.lo[f];
     if (c >= 0) th += s->theta_new[c], gd += s->gdot[c], rho += s->rho[c], ++n;
   }
-  const double *v[TFP_Q_N];
-  for (int k = 0; k < TFP_Q_N; ++k) one[k] = s->qv[k][0], v[k] = &one[k];
-  one[TFP_Q_PHI] = phi, one[TFP_Q_THETA] = fmax(th / n, THETA_FLOOR), one[TFP_Q_SLIP_WALL] = slip;
-  one[TFP_Q_SLIP] = slip, one[TFP_Q_WALL_DISTANCE] = dist, one[TFP_Q_SHEAR_RATE] = gd / n;
-  one[TFP_Q_DENSITY] = rho / n;
+  const double *v[TF_Q_N];
+  for (int k = 0; k < TF_Q_N; ++k) one[k] = s->qv[k][0], v[k] = &one[k];
+  one[TF_Q_PHI] = phi, one[TF_Q_THETA] = fmax(th / n, TF_THETA_FLOOR), one[TF_Q_SLIP_WALL] = slip;
+  one[TF_Q_SLIP] = slip, one[TF_Q_WALL_DISTANCE] = dist, one[TF_Q_SHEAR_RATE] = gd / n;
+  one[TF_Q_DENSITY] = rho / n;
   sl_point_request rq[2] = {{"tau_w", tau, dtau, "slip_wall"}, {"bagnold_number", &s->last_bagnold, NULL, NULL}};
   s->last_bagnold = NAN;
   return sl_point_eval(&s->wall, 1, v, rq, sl_point_has_output(&s->wall, "bagnold_number") ? 2 : 1, d);

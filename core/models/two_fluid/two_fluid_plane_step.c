@@ -132,9 +132,9 @@ void tfp_free(tfp_model *m) {
   double *all[] = {m->phi,  m->p,
                    m->uf,  m->us,  m->phi_new, m->p_new, m->uf_new, m->us_new, m->phf, m->phg,  m->w,    m->K,
                    m->dK,  m->slip, m->sn,    m->ps,     m->dps,    m->flux,  m->alpha, m->inflow, m->x,
-                   m->rhs, m->end_u, m->end_us, m->js, m->wall_stats, m->acc_x, m->acc_g, m->acc_scale};
+                   m->rhs, m->end_u, m->end_us, m->js, m->wall_stats, m->acc_x, m->acc_g, m->acc_scale, m->col_uf0};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
-  int *ia[] = {m->ftype, m->us_row, m->uf_row, m->tan_noslip, m->end_wall};
+  int *ia[] = {m->ftype, m->us_row, m->uf_row, m->tan_noslip, m->end_wall, m->col_face};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k) free(ia[k]);
   sl_csr_free(&m->A);
   sl_triplets_free(&m->trip);
@@ -179,7 +179,7 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
     double x = dir == 0 ? xf[f % (m->fv.nx + 1)] : m->fv.xc[(f - m->fv.nfx) % m->fv.nx];
     double y = dir == 0 ? m->fv.yc[f / (m->fv.nx + 1)] : yf[(f - m->fv.nfx) / m->fv.nx];
     double v[4] = {x, y, t, m->c.case_index};
-    double U = sl_expr_eval(m->b[m->fv.bound[f]].velocity.e, v);
+    double U = m->col_inlet_given ? m->col_inlet : sl_expr_eval(m->b[m->fv.bound[f]].velocity.e, v);
     if (!isfinite(U))
       return sl_diag_set(d, SL_EFAILED, "the inlet velocity is not a finite number (%g) at (%g, %g), t = %g", U, x, y,
                          t);
@@ -209,7 +209,8 @@ static double face_phi(const tfp_model *m, const double *phi, int f) {
   if (lo < 0 || hi < 0) v = phi[lo < 0 ? hi : lo];
   else {
     double gd = m->g[face_dir(m, f)];
-    v = gd < 0.0 ? phi[lo] : gd > 0.0 ? phi[hi] : 0.5 * (phi[lo] + phi[hi]);
+    /* the column without gravity takes the cell below (two_fluid.h) */
+    v = gd < 0.0 || (gd == 0.0 && m->column) ? phi[lo] : gd > 0.0 ? phi[hi] : 0.5 * (phi[lo] + phi[hi]);
   }
   return fmax(v, PHI_FLOOR);
 }
@@ -418,9 +419,12 @@ static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_
 /* Drag and solids pressure at the iterate: K, dK/d|s| and the normal slip at
  * every face, P_s and dP_s/dphi in the cells. */
 static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_diag *d) {
-  for (int f = 0; f < m->fv.nf; ++f) {
+  /* the faces with momentum equations: all, or the column's (contiguous; the others are closed) */
+  const int fa = m->column ? m->col_face[0] : 0, fb = m->column ? m->col_face[m->col_n] + 1 : m->fv.nf;
+  for (int f = fa; f < fb; ++f) {
     m->phf[f] = face_phi(m, phi_drag, f);
-    m->phg[f] = face_phi(m, m->phi_frozen ? m->phi : phi, f);
+    /* the weight's phi: implicit, Newton-coupled (below); the column's is the drag's */
+    m->phg[f] = m->column ? m->phf[f] : face_phi(m, m->phi_frozen ? m->phi : phi, f);
     /* the transverse slip: the mean over the faces of the other family around f */
     double st = 0.0;
     int n = 0;
@@ -436,9 +440,9 @@ static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_
     st /= n;
     m->slip[f] = hypot(m->sn[f], st);
   }
-  int rc = tf_closure_eval(&m->c.drag, m->fv.nf, m->phf, m->slip, m->K, m->dK, d);
+  int rc = tf_closure_eval(&m->c.drag, fb - fa, m->phf + fa, m->slip + fa, m->K + fa, m->dK + fa, d);
   if (rc) return sl_diag_prefix(d, rc, "drag");
-  for (int f = 0; f < m->fv.nf; ++f)
+  for (int f = fa; f < fb; ++f)
     if (!isfinite(m->K[f]) || m->K[f] < 0.0 || !isfinite(m->dK[f]))
       return sl_diag_set(d, SL_EFAILED, "[closure.drag] gave K = %g (dK/dslip = %g) at face %d, phi = %g, slip %g m/s",
                          m->K[f], m->dK[f], f, m->phf[f], m->slip[f]);
@@ -482,7 +486,10 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
     /* fluid */
     rc |= add(m, rf, rf, V * (eps * rho_f / dt + Keff));
     rc |= add(m, rf, rs, -V * Keff);
-    m->rhs[rf] += V * (eps * rho_f * m->uf[f] / dt + eg * rho_f * gd + (Keff - K) * s);
+    /* the column's fluid inertia is that of its mixture flux j: with u_f = (j - phi u_s)/eps at the face's phi
+       of the iterate, the old u_f is (j_old - phi u_s,old)/eps (two_fluid.h eliminates p so) */
+    const double uf_old = m->column ? (m->col_j - ph * m->us[f]) / eps : m->uf[f];
+    m->rhs[rf] += V * (eps * rho_f * uf_old / dt + eg * rho_f * gd + (Keff - K) * s);
     /* the pressure gradient, A (p_hi - p_lo), p_out outside */
     for (int side = 0; side < 2; ++side) {
       int c = side ? hi : lo;
@@ -495,7 +502,8 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
        dp/dn) on the solids, - (rho_f g - dp/dn) on the fluid. Without it the weight lags the transport, and
        a stratified suspension (the smeared top of a settling one) overturns once N dt exceeds about 1, N the
        buoyancy frequency. */
-    { /* emitted for every face (zero where phi_g is floored), so that the pattern stays the same */
+    if (!m->column) { /* emitted for every face (zero where phi_g is floored), so that the pattern stays the same;
+                         the column's weight takes the drag's phi, with nothing to linearise */
       double gradp = lo >= 0 && hi >= 0 ? (m->p_new[hi] - m->p_new[lo]) / m->fv.dist[f]
                      : lo < 0           ? (m->p_new[hi] - p_out) / m->fv.dist[f]
                                         : (p_out - m->p_new[lo]) / m->fv.dist[f];
@@ -557,7 +565,7 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
       rc |= convection(m, 1, f, rs, V * ph * rho_s, 1);
     }
     if (rc) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
-    if ((rc = viscous(m, 0, f, rf, m->phi_new, d))) return rc;
+    if (!m->column && (rc = viscous(m, 0, f, rf, m->phi_new, d))) return rc; /* the column has no fluid stress */
     if (m->s.any && (rc = viscous(m, 1, f, rs, m->phi_new, d))) return rc;
   }
   /* continuity: the mixture's volume flux out of each cell; in a closed vessel cell 0 holds the datum p = 0 */
@@ -626,6 +634,88 @@ static int wall_stresses(tfp_model *m, sl_diag *d) {
   return 0;
 }
 
+/* ---- the 1-D column as the grid's one-cell-wide case ------------------------------------ */
+
+/* The column's mixture flux along +col_dir at the inlet's current value (tfp_boundary_values, with the step's
+ * starting phi of its cell), 0 without an inlet. */
+static double column_flux(const tfp_model *m) {
+  for (int e = 0; e < 2; ++e) {
+    int f = m->col_face[e ? m->col_n : 0];
+    if (m->ftype[f] != TFP_FACE_INLET) continue;
+    int in = m->fv.lo[f] >= 0 ? m->fv.lo[f] : m->fv.hi[f];
+    return (1.0 - m->phi[in]) * m->uf[f];
+  }
+  return 0.0;
+}
+
+int tfp_column_start(tfp_model *m, int fluid_given, const char *where, sl_diag *d) {
+  const int nx = m->fv.nx, ny = m->fv.ny, dir = ny > 1 ? 1 : 0, n = dir ? ny : nx;
+  if ((dir ? nx : ny) != 1 || n < 2)
+    return sl_diag_set(d, SL_EBADINPUT, "%s: the column's form needs a grid one cell across (%d x %d cells)", where,
+                       nx, ny);
+  if (m->g[1 - dir] != 0.0 || m->fv.periodic[dir] || m->axi || m->s.any || m->convection ||
+      m->accelerate)
+    return sl_diag_set(d, SL_EBADINPUT, "%s: the column's form needs gravity along the column (%s), no periodic ends, "
+                                        "a planar scene, no solids stress, no [flow] convection and no acceleration",
+                       where, dir ? "along y" : "along x");
+  m->column = 1, m->col_dir = dir, m->col_n = n;
+  if (!(m->col_face = malloc((size_t)(n + 1) * sizeof *m->col_face)) ||
+      !(m->col_uf0 = calloc((size_t)m->fv.nf, sizeof *m->col_uf0)))
+    return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
+  for (int k = 0; k <= n; ++k) m->col_face[k] = dir ? m->fv.nfx + k : k;
+  m->col_j = column_flux(m);
+  if (!fluid_given) /* the column's start: the fluid carries the inflow through every cell, u_s = 0 */
+    for (int k = 0; k <= n; ++k) {
+      int cell = k == 0 ? 0 : k == n ? n - 1 : (m->g[dir] <= 0.0 ? k - 1 : k);
+      m->uf[m->col_face[k]] = m->col_j / (1.0 - m->phi[cell]);
+    }
+  return 0;
+}
+
+void tfp_column_restored(tfp_model *m) {
+  /* the faces hold u_f = (j - phi u_s)/eps; an end face has u_s = 0 unless it is an outlet */
+  int f = m->col_face[0];
+  double ph = face_phi(m, m->phi, f);
+  m->col_j = ph * m->us[f] + (1.0 - ph) * m->uf[f];
+}
+
+/* The converged column step's fluid velocity and pressure at the step's final phi, as the 1-D column gives them
+ * (two_fluid.h): u_f = (j - phi u_s)/eps at every face, and dp/dx from the fluid momentum,
+ * dp/dx = rho_f g - K s/eps - rho_f du_f/dt, s = (j - u_s)/eps, summed from the outlet (or from p = 0 at the
+ * top of a closed column) over the centres' distances. */
+static int column_finish(tfp_model *m, double dt, sl_diag *d) {
+  const int n = m->col_n;
+  const double j = column_flux(m), g = m->g[m->col_dir], rho_f = m->c.rho_f;
+  double *ph = m->phg, *slip = m->sn, *K = m->K, *dK = m->dK, *dpdx = m->flux;
+  for (int k = 0; k <= n; ++k) {
+    int f = m->col_face[k];
+    ph[k] = face_phi(m, m->phi_new, f);
+    slip[k] = fabs(j - m->us_new[f]) / (1.0 - ph[k]);
+  }
+  int rc = tf_closure_eval(&m->c.drag, n + 1, ph, slip, K, dK, d);
+  if (rc) return sl_diag_prefix(d, rc, "drag");
+  for (int k = 0; k <= n; ++k) {
+    int f = m->col_face[k];
+    double eps = 1.0 - ph[k], s = (j - m->us_new[f]) / eps;
+    m->uf_new[f] = (j - ph[k] * m->us_new[f]) / eps;
+    dpdx[k] = rho_f * g - K[k] * s / eps - rho_f * (m->uf_new[f] - m->col_uf0[f]) / dt;
+  }
+  const int f0 = m->col_face[0], f1 = m->col_face[n];
+  const int out0 = m->ftype[f0] == TFP_FACE_OUTLET, out1 = m->ftype[f1] == TFP_FACE_OUTLET;
+  const double *L = m->fv.dist; /* half cells at the ends, centre to centre inside */
+  if (out0 && !out1) {
+    m->p_new[0] = m->b[m->fv.bound[f0]].pressure + L[f0] * dpdx[0];
+    for (int i = 1; i < n; ++i) m->p_new[i] = m->p_new[i - 1] + L[m->col_face[i]] * dpdx[i];
+  } else {
+    m->p_new[n - 1] = (out1 ? m->b[m->fv.bound[f1]].pressure : 0.0) - L[f1] * dpdx[n];
+    for (int i = n - 2; i >= 0; --i) m->p_new[i] = m->p_new[i + 1] - L[m->col_face[i + 1]] * dpdx[i + 1];
+  }
+  for (int i = 0; i < n; ++i)
+    if (!isfinite(m->p_new[i])) return sl_diag_set(d, SL_EFAILED, "the pressure is not finite in cell %d", i);
+  m->col_j_new = j;
+  return 0;
+}
+
 /* ---- one step ------------------------------------------------------------------------ */
 
 /* Anderson acceleration of the iteration (`[two_fluid] acceleration`,
@@ -690,6 +780,7 @@ static void acceleration_apply(tfp_model *m, double v_scale, double th_scale) {
 
 int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
   const int nf = m->fv.nf, nc = m->fv.nc;
+  if (m->column) memcpy(m->col_uf0, m->uf, (size_t)nf * sizeof *m->uf);
   int rc = tfp_boundary_values(m, t + dt, m->phi, d);
   if (rc) return rc;
   memcpy(m->us_new, m->us, (size_t)nf * sizeof *m->us);
@@ -714,8 +805,12 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
     for (int f = 0; f < nf; ++f) {
       if (m->us_row[f] < 0) continue;
       double us = m->x[m->us_row[f]], uf = m->x[m->uf_row[f]];
-      change = fmax(change, fmax(fabs(us - m->us_new[f]), fabs(uf - m->uf_new[f])));
-      umax = fmax(umax, fmax(fabs(us), fabs(uf)));
+      if (m->column) { /* the column's measure: the solids velocity (the fluid's follows from j) */
+        change = fmax(change, fabs(us - m->us_new[f])), umax = fmax(umax, fabs(us));
+      } else {
+        change = fmax(change, fmax(fabs(us - m->us_new[f]), fabs(uf - m->uf_new[f])));
+        umax = fmax(umax, fmax(fabs(us), fabs(uf)));
+      }
       m->us_new[f] = us, m->uf_new[f] = uf;
     }
     for (int c = 0; c < nc; ++c) m->p_new[c] = m->x[m->n_vel + c];
@@ -734,6 +829,7 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
     if (converged) {
       m->outflow_trial = out;
       if ((rc = wall_stresses(m, d))) return rc;
+      if (m->column) return column_finish(m, dt, d);
       /* the inlet's u_f with the new phi of its cell */
       for (int f = 0; f < nf; ++f)
         if (m->ftype[f] == TFP_FACE_INLET) {

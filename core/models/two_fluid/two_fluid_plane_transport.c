@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The solids-fraction transport of the 2-D two-fluid model on the staggered
- * grid (two_fluid_plane_impl.h): T(phi^n, u_s) of one step, the column's
- * bounded scheme (two_fluid_step.c) in two dimensions. Face fluxes of the
+ * grid (two_fluid_plane_impl.h): T(phi^n, u_s) of one step, bounded and
+ * conservative (the 1-D column's too: its n x 1 case). Face fluxes of the
  * face solids velocities with the upwind cell's phi (order 1) or its limited
  * linear reconstruction along the face's normal (order 2: MUSCL, van Leer
  * 1979, in Heun's two stages), plus the particle diffusivity -D grad phi;
@@ -36,10 +36,10 @@ typedef struct muscl {
  *   monotonised central (van Leer 1977): s = minmod(central difference, 2 dl / h, 2 dr / h),
  *     delta = minmod(gc (dl + dr), dl, dr);
  * gl = h / (h + h_l), gr = h / (h + h_r), gc = h / (2 h + h_l + h_r) (Sweby 1984; LeVeque 2002, Finite Volume
- * Methods, section 6.12). On a uniform grid that is the column's slope (two_fluid_step.c); on a graded one the
+ * Methods, section 6.12). On a uniform grid that is the slope of the one-sided differences per metre; on a graded one the
  * MC bound 2 dphi / h with the cell's own size keeps each face value between the cell's phi and its neighbour's
  * (the uniform grid's 2 dphi / dx would not), hence within [0, phi_max] and [0, 2 phi_c]. Next to the boundary
- * the slope is 0 (first order there, and nothing enters through a wall), as in the column's end cells. */
+ * the slope is 0 (first order there, and nothing enters through a wall). */
 static int muscl_setup(const tfp_model *m, muscl *w) {
   const int nc = m->fv.nc;
   w->nb = malloc(4 * (size_t)nc * sizeof *w->nb);
