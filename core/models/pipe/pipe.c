@@ -33,6 +33,7 @@ static void release(pipe *p) {
   for (int i = 0; i < 12; ++i) free(p->buf[i]);
   sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls};
   for (size_t i = 0; i < sizeof pc / sizeof pc[0]; ++i) sl_point_release(pc[i]);
+  pipe_march_release(p);
   sl_cell_scalar_free(&p->cs);
   sl_csr_free(&p->A);
   sl_linsolve_destroy(p->ls);
@@ -87,6 +88,11 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
   if (p->two_phase && c->solids_fraction > p->phi_max - 0.01)
     rc = sl_diag_set(d, SL_EBADINPUT, "%s = %g: at most [solid] phi_max - 0.01 = %g",
                      sl_scene_where(sc, &c->solids_fraction, at, sizeof at), c->solids_fraction, p->phi_max - 0.01);
+  if (!rc && p->two_phase && sl_scene_given(sc, &c->length))
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s = %g with [pipe] length: the developing pipe carries water alone (the march of the "
+                     "solids fraction is not built); leave length out for the fully developed slurry",
+                     sl_scene_where(sc, &c->solids_fraction, at, sizeof at), c->solids_fraction);
   if (!rc && p->two_phase && !sl_scene_closure(sc, "drag"))
     rc = sl_diag_set(d, SL_EBADINPUT, "%s = %g: a slurry needs [closure.drag] (e.g. model = gidaspow)",
                      sl_scene_where(sc, &c->solids_fraction, at, sizeof at), c->solids_fraction);
@@ -112,6 +118,7 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
   if (!rc) rc = pipe_closures_bind(p, d);
   if (!rc) rc = sl_cell_scalar_init(&p->cs, &p->g, d);
   if (!rc) rc = pipe_momentum_init(p, d);
+  if (!rc && sl_scene_given(sc, &c->length)) rc = pipe_march_setup(p, d);
   if (rc) {
     release(p);
     return rc;
@@ -140,10 +147,10 @@ static double rel_change(const double *a, const double *b, int n, int *at) {
   return den > 0.0 ? num / den : num;
 }
 
-/* The steady solve: outer iterations of the momentum (u_f, u_s, G), the turbulence and the solids fraction,
-   each with the others' last values, until one changes them all by less than the tolerance. */
-static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d) {
-  pipe *p = self;
+/* Outer iterations of the momentum (u_f, u_s, G), the turbulence and the solids fraction, each with the others'
+   last values, until one changes them all by less than the tolerance (p->converged), or [pipe] iterations: the
+   fully developed pipe's steady solve, and each station of the developing pipe's march (pipe_march.c). */
+int pipe_converge(pipe *p, sl_diag *d) {
   const pipe_config *c = p->cfg;
   const int n = p->n;
   double *old[4] = {p->buf[8], p->buf[9], p->buf[10], p->buf[11]};
@@ -159,6 +166,7 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
     memcpy(old[0], p->uf, (size_t)n * sizeof(double)), memcpy(old[1], p->k, (size_t)n * sizeof(double));
     memcpy(old[2], p->eps, (size_t)n * sizeof(double)), memcpy(old[3], p->phi, (size_t)n * sizeof(double));
     double G_old = p->G;
+    if (p->march.on) pipe_march_fluxes(p);
     if (!rc) rc = pipe_turbulence_coefficients(p, d);
     if (!rc) rc = pipe_wall_function(p, d);
     if (!rc && p->two_phase) rc = pipe_solids_coefficients(p, d);
@@ -192,6 +200,15 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
       window_change = ch;
     }
   }
+  return rc;
+}
+
+/* The steady solve: pipe_converge for the fully developed pipe, the march along z for the developing one. */
+static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d) {
+  pipe *p = self;
+  const pipe_config *c = p->cfg;
+  const int n = p->n;
+  int rc = p->march.on ? pipe_march_solve(p, d) : pipe_converge(p, d);
   /* the last coefficients and wall stresses of the state reached */
   if (!rc) rc = pipe_turbulence_coefficients(p, d);
   if (!rc) rc = pipe_wall_function(p, d);
@@ -229,7 +246,8 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
 /* ---- output ---------------------------------------------------------------------------- */
 
 static int pipe_write_mesh(void *self, sl_output *out, sl_diag *d) {
-  const sl_mesh *m = ((pipe *)self)->mesh;
+  const pipe *p = self;
+  const sl_mesh *m = p->march.on ? p->march.mesh : p->mesh;
   int32_t *cells = malloc((size_t)m->n_cells * m->nv_per_cell * sizeof *cells);
   if (!cells) return sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
   for (int i = 0; i < m->n_cells * m->nv_per_cell; ++i) cells[i] = m->cell_vertices[i];
@@ -255,6 +273,7 @@ static int pipe_write(void *self, sl_output *out, double t, const double *u, sl_
   unsigned mask;
   int rc = sl_scene_output_fields(p->sc, 0x7fu, &mask, d);
   const double *fields[7] = {p->uf, p->us, p->phi, p->k, p->eps, p->mu_t, p->theta};
+  if (!rc && p->march.on) rc = pipe_march_write(p, out, mask, d), mask = 0; /* its 2-D fields */
   for (int k = 0; k < 7 && !rc; ++k) {
     if (!(mask >> k & 1u)) continue;
     double *v = p->buf[0];
