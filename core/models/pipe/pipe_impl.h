@@ -127,6 +127,7 @@ void pipe_march_release(pipe *p);
 void pipe_march_fluxes(pipe *p);
 void pipe_march_momentum(const pipe *p, sl_csr *A, double *b);
 void pipe_march_scalar(pipe *p, const double *cap_pseudo, const double *s_iter, const double *s_up);
+void pipe_march_solids(pipe *p, double *cap, double *flux);
 int pipe_march_solve(pipe *p, sl_diag *d);
 int pipe_march_write(pipe *p, sl_output *out, unsigned mask, sl_diag *d);
 

@@ -85,7 +85,7 @@ int pipe_march_setup(pipe *p, sl_diag *d) {
   const double V = c->bulk_velocity, k0 = 1.5 * (c->inlet_intensity * V) * (c->inlet_intensity * V);
   const double l0 = sl_scene_given(p->sc, &c->inlet_length_scale) ? c->inlet_length_scale : 0.007 * c->diameter;
   for (int i = 0; i < n; ++i) {
-    m->uf_up[i] = m->us_up[i] = V, m->phi_up[i] = 0.0;
+    m->uf_up[i] = m->us_up[i] = V, m->phi_up[i] = c->solids_fraction;
     m->k_up[i] = k0, m->eps_up[i] = pow(0.09, 0.75) * pow(k0, 1.5) / l0;
   }
   return 0;
@@ -145,6 +145,21 @@ void pipe_march_scalar(pipe *p, const double *cap_pseudo, const double *s_iter, 
   }
 }
 
+/* The solids' march (pipe_solids.c): the radial balance of the fully developed pipe, phi v - D phi' (v the
+   kinetic pressure's drift in flux), gains the axial convection, [(phi u_s)_j - (phi u_s)_{j-1}]/h, as cap
+   u_s/h and m->s_old, and the radial convection by the mixture's volume flux j = F_f + F_s, added to flux:
+     [(phi u_s)_j - (phi u_s)_{j-1}]/h + (1/r) d/dr(r (phi (j + v) - D phi')) = 0,
+   the solids' continuity with their radial flux phi j plus the drift relative to the mixture. */
+void pipe_march_solids(pipe *p, double *cap, double *flux) {
+  pipe_march *m = &p->march;
+  for (int i = 0; i < p->n; ++i) {
+    double us = fmax(p->us[i], 1e-12 * p->cfg->bulk_velocity);
+    cap[i] = us / m->h;
+    m->s_old[i] = m->phi_up[i] * m->us_up[i] / us;
+  }
+  for (int f = 1; f < p->n; ++f) flux[f] += m->ff[f] + m->fs[f];
+}
+
 /* The station's fields into the 2-D arrays (row j). */
 static void store(pipe *p, int j) {
   pipe_march *m = &p->march;
@@ -160,6 +175,7 @@ int pipe_march_solve(pipe *p, sl_diag *d) {
   /* the first iterate: the inlet */
   memcpy(p->uf, m->uf_up, (size_t)n * sizeof(double)), memcpy(p->us, m->us_up, (size_t)n * sizeof(double));
   memcpy(p->k, m->k_up, (size_t)n * sizeof(double)), memcpy(p->eps, m->eps_up, (size_t)n * sizeof(double));
+  memcpy(p->phi, m->phi_up, (size_t)n * sizeof(double));
   m->iterations = 0, m->worst_station_iterations = 0, m->pressure_drop = 0.0;
   p->G = 0.0;
   double z_last = 0.0;
@@ -182,6 +198,8 @@ int pipe_march_solve(pipe *p, sl_diag *d) {
     }
     /* the wall stress of the converged station */
     if ((rc = pipe_turbulence_coefficients(p, d)) || (rc = pipe_wall_function(p, d))) return rc;
+    if (p->two_phase && (rc = pipe_solids_coefficients(p, d))) return rc;
+    if (p->two_phase) p->tau_sw = p->a_sw * p->us[n - 1];
     store(p, j);
     m->pressure_drop -= p->G * m->h;
     memcpy(m->uf_up, p->uf, (size_t)n * sizeof(double)), memcpy(m->us_up, p->us, (size_t)n * sizeof(double));
