@@ -15,7 +15,7 @@ static const sl_key pipe_keys[] = {
      .min = 1e-3, .max = 100.0, .units = "m s^-1",
      .help = "the mixture's bulk velocity V = Q/A along the flow (the pressure gradient is what meets it)"},
     {.section = "pipe", .name = "solids_fraction", .type = SL_KEY_REAL, C(solids_fraction), .min = 0.0, .max = 0.73,
-     .help = "the section-mean solids fraction, held (0: water alone)"},
+     .help = "the section-mean solids fraction, held (0: water alone); with length: the inlet's, uniform"},
     {.section = "pipe", .name = "cells", .type = SL_KEY_INT, C(cells), .def = 40, .min = 4, .max = 4000,
      .help = "radial cells"},
     {.section = "pipe", .name = "wall_cell", .type = SL_KEY_REAL, C(wall_cell), .min = 1e-9, .max = 5.0, .units = "m",
@@ -98,7 +98,8 @@ const sl_schema sl_pipe_schema = {
                "axisymmetric grid graded towards the wall): k-epsilon with wall functions, the two-fluid axial "
                "momentum with one pressure gradient at a given bulk velocity, the radial solids balance of turbulent "
                "dispersion and solids pressure at a fixed mean solids fraction; up-flow or down-flow by the sign of "
-               "gravity (Krampa 2009).",
+               "gravity (Krampa 2009). With [pipe] length: the developing pipe from uniform inlet profiles on the 2-D "
+               "axisymmetric grid, marched along z.",
     .tables = {&sl_keys_scene, &sl_keys_fluid, &sl_keys_output, &sl_keys_plugins, &pipe_key_table},
     .n_tables = 5,
     .roles = {{"turbulence", 1, "the fluid's turbulence (model = k_epsilon)"},
