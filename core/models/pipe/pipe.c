@@ -226,8 +226,13 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
              p->iterations, p->change, c->tolerance, where, p->relax);
     rc = sl_diag_set(d, SL_EFAILED, "pipe: %s", p->stop_reason);
   } else if (!rc) {
-    snprintf(p->stop_reason, sizeof p->stop_reason, "converged in %ld iterations (change %.2g)", p->iterations,
-             p->change);
+    if (p->march.on)
+      snprintf(p->stop_reason, sizeof p->stop_reason,
+               "converged at each of %d stations along %g m: %ld iterations, at most %ld a station (last change %.2g)",
+               p->march.nz, c->length, p->iterations, p->march.worst_station_iterations, p->change);
+    else
+      snprintf(p->stop_reason, sizeof p->stop_reason, "converged in %ld iterations (change %.2g)", p->iterations,
+               p->change);
     if (p->relax < c->relaxation) {
       size_t L = strlen(p->stop_reason);
       snprintf(p->stop_reason + L, sizeof p->stop_reason - L, ", relaxation lowered to %.3g", p->relax);
@@ -239,6 +244,22 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
             "sluice: warning: pipe: the wall cell's centre is at y+ = %.3g, outside the wall function's 30-200 (Krampa "
             "2009 section 2.9): set [pipe] wall_cell or wall_y_plus\n",
             p->y_plus);
+  }
+  if (!rc && p->march.on && !p->warned_yplus) { /* the developing pipe: every station's wall cell */
+    double lo = INFINITY, hi = 0.0;
+    int at_lo = 0, at_hi = 0;
+    for (int j = 0; j < p->march.nz; ++j) {
+      if (p->march.y_plus[j] < lo) lo = p->march.y_plus[j], at_lo = j;
+      if (p->march.y_plus[j] > hi) hi = p->march.y_plus[j], at_hi = j;
+    }
+    if (lo < 30.0 || hi > 200.0) {
+      p->warned_yplus = 1;
+      int j = lo < 30.0 ? at_lo : at_hi;
+      fprintf(stderr,
+              "sluice: warning: pipe: the wall cell's centre is at y+ = %.3g at z = %g m, outside the wall function's "
+              "30-200 (Krampa 2009 section 2.9; y+ %.3g-%.3g along the pipe): set [pipe] wall_cell or wall_y_plus\n",
+              lo < 30.0 ? lo : hi, p->march.g.yc[j], lo, hi);
+    }
   }
   return rc;
 }
