@@ -88,11 +88,6 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
   if (p->two_phase && c->solids_fraction > p->phi_max - 0.01)
     rc = sl_diag_set(d, SL_EBADINPUT, "%s = %g: at most [solid] phi_max - 0.01 = %g",
                      sl_scene_where(sc, &c->solids_fraction, at, sizeof at), c->solids_fraction, p->phi_max - 0.01);
-  if (!rc && sl_scene_given(sc, &c->length) && c->granular_temperature == PIPE_THETA_TRANSPORT)
-    rc = sl_diag_set(d, SL_EBADINPUT,
-                     "%s = transport with [pipe] length: the developing pipe takes theta from its local balance "
-                     "(granular_temperature = algebraic); the march of theta's transport is not built",
-                     sl_scene_where(sc, &c->granular_temperature, at, sizeof at));
   if (!rc && p->two_phase && !sl_scene_closure(sc, "drag"))
     rc = sl_diag_set(d, SL_EBADINPUT, "%s = %g: a slurry needs [closure.drag] (e.g. model = gidaspow)",
                      sl_scene_where(sc, &c->solids_fraction, at, sizeof at), c->solids_fraction);

@@ -58,8 +58,8 @@ extern const char *const pipe_quantity_names[PQ_N];
 typedef struct pipe_march {
   int on, nz, j;
   double h;                                        /* from the last station (the inlet for the first) to this */
-  double *uf_up, *us_up, *phi_up, *k_up, *eps_up;  /* [n] the last station's state */
-  double *ff, *fs, *rff;                           /* [nf] the fluid's and the solids' radial volume fluxes, rho_f ff */
+  double *uf_up, *us_up, *phi_up, *k_up, *eps_up, *theta_up; /* [n] the last station's state */
+  double *ff, *fs, *rff, *rfs; /* [nf] the fluid's and the solids' radial volume fluxes, rho_f ff, 1.5 rho_s fs */
   double *cap, *s_old;                             /* [n] a march step's storage and start for k or epsilon */
   double *field[7];                                /* [n nz] every station's fields (the schema's order) */
   double *G, *tau_fw, *tau_sw, *y_plus;            /* [nz] */
@@ -128,6 +128,7 @@ void pipe_march_fluxes(pipe *p);
 void pipe_march_momentum(const pipe *p, sl_csr *A, double *b);
 void pipe_march_scalar(pipe *p, const double *cap_pseudo, const double *s_iter, const double *s_up);
 void pipe_march_solids(pipe *p, double *cap, double *flux);
+void pipe_march_theta(pipe *p, const double *cap_pseudo);
 int pipe_march_solve(pipe *p, sl_diag *d);
 int pipe_march_write(pipe *p, sl_output *out, unsigned mask, sl_diag *d);
 
