@@ -141,6 +141,9 @@ static const sl_key column_keys[] = {
     {.section = "deposit", .name = "nbar_min", .type = SL_KEY_REAL, C(lq.nbar_min), .min = 0.01, .max = 0.99,
      .def_doc = "the nbar whose P_s at phi_max is twice the deposit's largest", .help = "the densest reference "
                                                                                "porosity densification may reach"},
+    {.section = "solver", .name = "linear", .type = SL_KEY_CHOICE, SL_AT_SCENE(solver.linear),
+     .choices = SL_SCENE_LINEAR_CHOICES, .help = "the coupled system's solver: auto, the banded LU of the column's n "
+                                                 "x 1 grid; a named one, the general sparse factorisation"},
     {.section = "boundary", .name = "type", .type = SL_KEY_CHOICE, SL_AT_BOUNDARY(tfc_boundary, type),
      .choices = "wall|inlet|outlet", .help = "wall (closed), inlet (fluid enters, solids held), outlet (a pressure; "
                                              "solids leave when carried)"},
@@ -205,7 +208,8 @@ static const sl_key plane_keys[] = {
     {.section = "flow", .name = "convection", .type = SL_KEY_BOOL, SL_AT_SCENE(flow.convection),
      .help = "the phases' convective acceleration rho alpha (u.grad)u"},
     {.section = "solver", .name = "linear", .type = SL_KEY_CHOICE, SL_AT_SCENE(solver.linear), .def = 2,
-     .choices = SL_SCENE_LINEAR_CHOICES, .help = "the sparse direct solver of the coupled system"},
+     .choices = SL_SCENE_LINEAR_CHOICES, .help = "the sparse direct solver of the coupled system (auto on a grid one "
+                                                 "cell across: banded LU)"},
     {.section = "solver", .name = "ordering", .type = SL_KEY_CHOICE, SL_AT_SCENE(solver.ordering), .def = 2,
      .choices = SL_SCENE_ORDERING_CHOICES, .help = "klu's fill-reducing ordering"},
     {.section = "initial", .name = "phi", .type = SL_KEY_EXPR, C(phi), .vars = "x,y,case",

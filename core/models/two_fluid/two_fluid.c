@@ -449,9 +449,9 @@ static void column_stats(void *self, const sl_run_result *res, sl_model_stats *s
   }
   const tfp_model *m = r->c.plane;
   if (m && m->ls) {
-    st->linear = *sl_linsolve_get_stats(m->ls), st->has_linear = 1;
+    st->linear = tfp_linear_stats(m), st->has_linear = 1;
     snprintf(st->linear_summary, sizeof st->linear_summary, "%s, %d unknowns (the staggered grid's %d x 1 cells)",
-             r->c.linear, m->n_unknowns, r->c.n);
+             tfp_linear_name(m, r->c.linear), m->n_unknowns, r->c.n);
   }
 }
 

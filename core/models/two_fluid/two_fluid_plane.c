@@ -350,6 +350,7 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
                                    "the coupled two-fluid matrix (both phases' velocities and the pressure) is "
                                    "nonsymmetric",
                                    &r->m.ls, &r->linear, d);
+  if (!rc) r->m.band_allowed = sc->solver.linear == 0 && strcmp(r->linear, "petsc") != 0; /* auto: the fast path */
   if (!rc) { /* the velocity scale: the Stokes velocity, or the largest inflow at t = 0 */
     for (int k = 0; k < r->mesh->n_boundaries; ++k) {
       if (r->b[k].type != TFP_INLET) continue;
@@ -385,7 +386,7 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
 static void plane_stats(void *self, const sl_run_result *res, sl_model_stats *st) {
   tfp_run *r = self;
   st->cpu_coupled = r->m.transport_cpu, st->cpu_flow = fmax(res->solve - r->m.transport_cpu, 0.0);
-  if (r->m.ls) st->linear = *sl_linsolve_get_stats(r->m.ls), st->has_linear = 1;
+  if (r->m.ls) st->linear = tfp_linear_stats(&r->m), st->has_linear = 1;
   if (r->advances) {
     double base = r->inventory0, err = base > 0.0 ? (tfp_inventory(&r->m, r->m.phi) + r->outflow - base) / base : 0.0;
     double pmax = 0.0;
@@ -396,7 +397,9 @@ static void plane_stats(void *self, const sl_run_result *res, sl_model_stats *st
              r->m.fv.nx, r->m.fv.ny, (double)r->iterations / (double)r->advances, (double)r->substeps / (double)r->advances,
              err, pmax, r->m.c.phi_max);
   }
-  if (r->m.ls) snprintf(st->linear_summary, sizeof st->linear_summary, "%s, %d unknowns", r->linear, r->m.n_unknowns);
+  if (r->m.ls)
+    snprintf(st->linear_summary, sizeof st->linear_summary, "%s, %d unknowns", tfp_linear_name(&r->m, r->linear),
+             r->m.n_unknowns);
 }
 
 static void plane_destroy(void *self) { release(self); }

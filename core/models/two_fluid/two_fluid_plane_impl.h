@@ -24,6 +24,7 @@
 #include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/point_eval.h"
 #include "core/solve/anderson.h"
+#include "core/solve/band.h"
 #include "core/solve/linsolve.h"
 #include "core/solve/triplets.h"
 
@@ -90,6 +91,7 @@ typedef struct tfp_model {
      none), [5 b + 4] the length (or area per radian) averaged over */
   double *wall_stats;
   int *ftype;                     /* [nf]: TFP_FACE_* */
+  int *open_face, n_open;         /* the faces a flux can cross (not closed, not an image), ascending */
   int *tan_noslip;                /* [4 nf]: per phase (fluid 0, solids 1) and end (minus 0, plus 1) of the face
                                      across its family, 1 when a boundary there holds the phase (no-slip) */
   int *end_wall;                  /* [2 nf]: per end, the wall (boundary index) along which the face runs, -1 none */
@@ -121,6 +123,15 @@ typedef struct tfp_model {
   int sink_frozen;      /* this iteration keeps the drag coefficient of the granular sink 3 K theta */
   sl_csr A;
   sl_linsolve *ls;
+  /* the fast path of a grid one cell across (two_fluid_plane_step.c, band_start): with band_allowed (the
+     caller's: [solver] linear = auto) the unknowns numbered along the grid (band_of[row]) make a banded matrix,
+     assembled straight into `band` and solved by banded LU instead of the general sparse factorisation;
+     band_on once the first system's bands were found narrow; band_miss an entry outside them (back to the
+     general path for good) */
+  int band_allowed, band_on, band_miss;
+  sl_band band;
+  int32_t *band_of;
+  double *band_x;
   /* Anderson acceleration of the step's iteration (two_fluid_plane_step.c): its state, the iterate x and the
      map's value g over [us (nf), uf (nf), theta (nc), the walls' solids velocities end_us (2 nf), phi (nc)], and
      their scales */
@@ -188,6 +199,10 @@ int tfp_solids_wall(tfp_model *m, int f, int end, double mu, double h, double *R
 int tfp_column_start(tfp_model *m, int fluid_given, const char *where, sl_diag *d);
 /* The column's mixture flux from a restored state. */
 void tfp_column_restored(tfp_model *m);
+
+/* The linear solver's name and counters, the fast path's when it is on (band_start). */
+const char *tfp_linear_name(const tfp_model *m, const char *general);
+sl_linsolve_stats tfp_linear_stats(const tfp_model *m);
 
 /* The solids volume (per radian when axisymmetric) in the domain. */
 double tfp_inventory(const tfp_model *m, const double *phi);

@@ -72,7 +72,7 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
       {&m->x, 2 * nf + nc}, {&m->rhs, 2 * nf + nc}};
   for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
     if (!(*a[k].p = calloc(a[k].n, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
-  int **ia[] = {&m->ftype, &m->us_row, &m->uf_row};
+  int **ia[] = {&m->ftype, &m->us_row, &m->uf_row, &m->open_face};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k)
     if (!(*ia[k] = calloc(nf, sizeof(int)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   if (!(m->wall_stats = calloc(5 * (size_t)m->n_b, sizeof(double))) || !(m->tan_noslip = calloc(4 * nf, sizeof(int))) || !(m->end_wall = calloc(2 * nf, sizeof(int))) ||
@@ -87,6 +87,8 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
       m->ftype[f] = t == TFP_INLET ? TFP_FACE_INLET : t == TFP_OUTLET ? TFP_FACE_OUTLET : TFP_FACE_CLOSED;
     }
   }
+  for (int f = 0; f < m->fv.nf; ++f)
+    if (m->ftype[f] != TFP_FACE_IMAGE && m->ftype[f] != TFP_FACE_CLOSED) m->open_face[m->n_open++] = f;
   /* the tangential conditions: a face touching a side at one of its ends (x-faces: bottom, top; y-faces:
      left, right) takes the side faces that meet there; no-slip when one of them holds the phase; a wall there
      gives its speed and, for the solids, its stress */
@@ -134,10 +136,12 @@ void tfp_free(tfp_model *m) {
                    m->dK,  m->slip, m->sn,    m->ps,     m->dps,    m->flux,  m->alpha, m->inflow, m->x,
                    m->rhs, m->end_u, m->end_us, m->js, m->wall_stats, m->acc_x, m->acc_g, m->acc_scale, m->col_uf0};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
-  int *ia[] = {m->ftype, m->us_row, m->uf_row, m->tan_noslip, m->end_wall, m->col_face};
+  int *ia[] = {m->ftype, m->us_row, m->uf_row, m->tan_noslip, m->end_wall, m->col_face, m->open_face};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k) free(ia[k]);
   sl_csr_free(&m->A);
   sl_triplets_free(&m->trip);
+  sl_band_free(&m->band);
+  free(m->band_of), free(m->band_x);
   sl_linsolve_destroy(m->ls);
   sl_fv_grid_free(&m->fv);
   sl_tensor_grid_free(&m->grid);
@@ -198,7 +202,14 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
 
 /* ---- the linear system ------------------------------------------------------------ */
 
-static int add(tfp_model *m, int row, int col, double v) { return sl_triplets_add(&m->trip, row, col, v); }
+/* A(row, col) += v: into the triplets, or on the fast path straight into the band (a given value, row or col
+ * negative, skipped as the triplets skip it; an entry outside the bands sends the step back to the general
+ * path). */
+static inline int add(tfp_model *m, int row, int col, double v) {
+  if (!m->band_on) return sl_triplets_add(&m->trip, row, col, v);
+  if (row >= 0 && col >= 0 && sl_band_add(&m->band, m->band_of[row], m->band_of[col], v)) m->band_miss = 1;
+  return 0;
+}
 
 /* The face's phi in its momentum equations and its continuity flux: the
  * cell on gravity's side of it, the mean of its two cells when gravity runs
@@ -466,7 +477,8 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
   const double rho_s = m->c.rho_s, rho_f = m->c.rho_f;
   const int P = m->n_vel;
   int rc = 0;
-  sl_triplets_clear(&m->trip);
+  if (m->band_on) sl_band_zero(&m->band), m->band_miss = 0;
+  else sl_triplets_clear(&m->trip);
   memset(m->rhs, 0, (size_t)m->n_unknowns * sizeof *m->rhs);
   for (int f = 0; f < m->fv.nf; ++f) {
     int rs = m->us_row[f], rf = m->uf_row[f];
@@ -716,6 +728,68 @@ static int column_finish(tfp_model *m, double dt, sl_diag *d) {
   return 0;
 }
 
+/* ---- the fast path of a grid one cell across ------------------------------------------- */
+
+/* Bands wider than this go the general way (the banded LU's work grows as n kl (kl + ku)). */
+enum { BAND_MAX = 16 };
+
+/* Once, at the first system (in m->A): on a grid one cell across, not periodic along it, the unknowns numbered
+ * along the grid, each face's before the cell beyond it (the faces across the grid and the pressure with their
+ * cell), make a banded matrix; the column's has kl = ku = 3 (a face's momentum couples the pressures of its two
+ * cells and, through P_s's Newton term, the faces of both; a cell's continuity its two faces). Bands at most
+ * BAND_MAX wide turn the fast path on, with this system copied into the band. */
+static int band_start(tfp_model *m, sl_diag *d) {
+  m->band_allowed = 0; /* decided once */
+  const int nx = m->fv.nx, ny = m->fv.ny, dir = ny == 1 ? 0 : 1, n = m->n_unknowns;
+  if ((nx != 1 && ny != 1) || m->fv.periodic[dir]) return 0;
+  int32_t *key = malloc((size_t)n * sizeof *key), kl = 0, ku = 0;
+  if (!key || !(m->band_of = malloc((size_t)n * sizeof *m->band_of)) ||
+      !(m->band_x = malloc((size_t)n * sizeof *m->band_x))) {
+    free(key);
+    return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
+  }
+  for (int f = 0; f < m->fv.nf; ++f) {
+    if (m->us_row[f] < 0 || m->ftype[f] == TFP_FACE_IMAGE) continue;
+    int fd = face_dir(m, f), i = fd == 0 ? f % (nx + 1) : (f - m->fv.nfx) % nx;
+    int j = fd == 0 ? f / (nx + 1) : (f - m->fv.nfx) / nx, along = dir == 0 ? i : j;
+    key[m->us_row[f]] = key[m->uf_row[f]] = fd == dir ? 2 * along : 2 * along + 1;
+  }
+  for (int c = 0; c < m->fv.nc; ++c) key[m->n_vel + c] = 2 * (dir == 0 ? c % nx : c / nx) + 1;
+  int rc = sl_band_permutation(&m->A, key, m->band_of, &kl, &ku, d);
+  free(key);
+  if (rc || kl > BAND_MAX || ku > BAND_MAX) return rc;
+  if ((rc = sl_band_init(&m->band, n, kl, ku, d))) return rc;
+  for (int r = 0; r < n; ++r)
+    for (int32_t e = m->A.row_ptr[r]; e < m->A.row_ptr[r + 1]; ++e)
+      sl_band_add(&m->band, m->band_of[r], m->band_of[m->A.col_idx[e]], m->A.values[e]);
+  m->band_on = 1;
+  return 0;
+}
+
+/* x = A^-1 rhs by banded LU, in the band's numbering. */
+static int band_solve(tfp_model *m, sl_diag *d) {
+  const int n = m->n_unknowns;
+  for (int r = 0; r < n; ++r) m->band_x[m->band_of[r]] = m->rhs[r];
+  int rc = sl_band_factor(&m->band, d);
+  if (rc) return rc;
+  sl_band_solve(&m->band, m->band_x);
+  for (int r = 0; r < n; ++r) m->x[r] = m->band_x[m->band_of[r]];
+  return 0;
+}
+
+const char *tfp_linear_name(const tfp_model *m, const char *general) {
+  return m->band_on ? "banded LU (a grid one cell across)" : general;
+}
+
+sl_linsolve_stats tfp_linear_stats(const tfp_model *m) {
+  sl_linsolve_stats st = *sl_linsolve_get_stats(m->ls);
+  if (m->band_on) { /* the band's factorisations and solves (the general solver's, none, or before it took over) */
+    st.n_numeric += m->band.n_factor, st.n_solves += m->band.n_factor;
+    st.refactor_reason[SL_REFACTOR_DIRECT] += m->band.n_factor;
+  }
+  return st;
+}
+
 /* ---- one step ------------------------------------------------------------------------ */
 
 /* Anderson acceleration of the iteration (`[two_fluid] acceleration`,
@@ -799,8 +873,17 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
     m->sink_frozen = it > FREEZE_PHI_AFTER;
     if ((rc = closures(m, it > FREEZE_PHI_AFTER ? m->phi : m->phi_new, m->phi_new, d))) return rc;
     if ((rc = tfp_solids_viscosity(m, m->us_new, m->phi_new, d))) return rc;
-    if ((rc = assemble(m, dt, d)) || (rc = sl_triplets_to_csr(&m->trip, &m->A, m->n_unknowns, d))) return rc;
-    if ((rc = sl_linsolve_solve(m->ls, &m->A, m->rhs, m->x, d))) return sl_diag_prefix(d, rc, "the coupled solve");
+    if ((rc = assemble(m, dt, d))) return rc;
+    if (m->band_on && m->band_miss) { /* not banded after all: the general path for good */
+      m->band_on = m->band_allowed = 0;
+      if ((rc = assemble(m, dt, d))) return rc;
+    }
+    if (!m->band_on) {
+      if ((rc = sl_triplets_to_csr(&m->trip, &m->A, m->n_unknowns, d))) return rc;
+      if (m->band_allowed && (rc = band_start(m, d))) return rc;
+    }
+    rc = m->band_on ? band_solve(m, d) : sl_linsolve_solve(m->ls, &m->A, m->rhs, m->x, d);
+    if (rc) return sl_diag_prefix(d, rc, "the coupled solve");
     change = 0.0, umax = 0.0;
     for (int f = 0; f < nf; ++f) {
       if (m->us_row[f] < 0) continue;

@@ -9,7 +9,8 @@
  * scaled so that it cannot pass phi_max. Solids enter from outside only
  * through an inlet with a solids flux (its given js; clear fluid at an
  * outlet, held solids at any other inlet). The image faces of a
- * periodic row carry nothing: the row's first face carries its flux. */
+ * periodic row carry nothing: the row's first face carries its flux; nor
+ * do closed faces (walls, the axis): the loops skip both (open_face). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -91,9 +92,9 @@ static void transport_stage(tfp_model *m, const double *us, const double *phi, d
   double *F = m->flux, *alpha = m->alpha, *in = m->inflow;
   if (w) muscl_increments(m, w, phi);
   memset(in, 0, (size_t)m->fv.nc * sizeof *in);
-  for (int f = 0; f < m->fv.nf; ++f) {
+  for (int k = 0; k < m->n_open; ++k) {
+    const int f = m->open_face[k];
     F[f] = 0.0;
-    if (m->ftype[f] == TFP_FACE_IMAGE) continue;
     int lo = m->fv.lo[f], hi = m->fv.hi[f], dir = f >= m->fv.nfx;
     double q = m->fv.area[f] * us[f];
     /* nothing enters from outside (clear fluid at an outlet; held solids at an inlet) */
@@ -107,15 +108,16 @@ static void transport_stage(tfp_model *m, const double *us, const double *phi, d
   /* what leaves a cell is bounded by the CFL condition (phi stays >= 0); what enters is scaled here */
   for (int c = 0; c < m->fv.nc; ++c)
     alpha[c] = in[c] > 0.0 ? fmin(1.0, fmax(0.0, (phi_max - phi[c]) * m->fv.vol[c] / (ds * in[c]))) : 1.0;
-  for (int f = 0; f < m->fv.nf; ++f) {
-    int lo = m->fv.lo[f], hi = m->fv.hi[f];
+  for (int k = 0; k < m->n_open; ++k) {
+    const int f = m->open_face[k], lo = m->fv.lo[f], hi = m->fv.hi[f];
     if (F[f] > 0.0 && hi >= 0) F[f] *= alpha[hi];
     else if (F[f] < 0.0 && lo >= 0) F[f] *= alpha[lo];
     if (hi < 0) *out += ds * F[f];
     if (lo < 0) *out -= ds * F[f];
   }
   if (next != phi) memcpy(next, phi, (size_t)m->fv.nc * sizeof *next);
-  for (int f = 0; f < m->fv.nf; ++f) {
+  for (int k = 0; k < m->n_open; ++k) {
+    const int f = m->open_face[k];
     if (m->fv.lo[f] >= 0) next[m->fv.lo[f]] -= ds / m->fv.vol[m->fv.lo[f]] * F[f];
     if (m->fv.hi[f] >= 0) next[m->fv.hi[f]] += ds / m->fv.vol[m->fv.hi[f]] * F[f];
   }
@@ -127,9 +129,8 @@ int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double
   double t0 = cpu_now();
   double *rate = m->inflow, rmax = 0.0;
   memset(rate, 0, (size_t)m->fv.nc * sizeof *rate);
-  for (int f = 0; f < m->fv.nf; ++f) {
-    if (m->ftype[f] == TFP_FACE_IMAGE) continue;
-    int lo = m->fv.lo[f], hi = m->fv.hi[f];
+  for (int k = 0; k < m->n_open; ++k) {
+    const int f = m->open_face[k], lo = m->fv.lo[f], hi = m->fv.hi[f];
     double q = m->fv.area[f] * us[f];
     double Df = m->c.diffusivity > 0.0 && lo >= 0 && hi >= 0 ? m->c.diffusivity * m->fv.area[f] / m->fv.dist[f] : 0.0;
     if (lo >= 0) rate[lo] += fmax(q, 0.0) + Df;

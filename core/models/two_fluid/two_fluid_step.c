@@ -127,6 +127,7 @@ int tf_plane_create(tf_column *c, const sl_scene *sc, const tf_config *cfg, sl_d
   if (!rc) rc = tfp_solids_bind(m, sc, cfg, d);
   if (!rc) rc = sl_scene_linsolve_general(sc, m->n_unknowns, "the coupled two-fluid matrix is nonsymmetric", &m->ls,
                                           &c->linear, d);
+  m->band_allowed = sc->solver.linear == 0 && !rc && strcmp(c->linear, "petsc") != 0; /* auto: the fast path */
   m->col_inlet_given = 1, m->col_inlet = 0.0;
   if (!rc) rc = tfp_column_start(m, 1, "[scene] geometry = line (the column)", d);
   return rc;
