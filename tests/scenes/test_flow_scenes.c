@@ -14,6 +14,8 @@
  *  - a transient scene (1-D diffusion of w = sin(pi y) e^{-pi^2 t}): BDF1 and
  *    BDF2 observed orders in time, and a run stopped after 5 steps and
  *    restarted from its checkpoint reproduces the uninterrupted run bit for bit;
+ *  - the split step ([flow] scheme = projection) on a transient manufactured Stokes flow: orders in time 2 in
+ *    the velocity and at least 3/2 in the pressure, the monolithic step's 2 in both;
  *  - a fixed-step constant-coefficient run factorises its matrix once and
  *    assembles it once (later steps assemble the right-hand side only), also
  *    with a time-dependent lid, and then reaches the steady Stokes cavity;
