@@ -51,7 +51,7 @@ struct sl_projection {
   double *phi_trial, m_trial;
   int trial; /* 1: a solved trial, 0: skipped, -1: none */
   double *rhs, *x, *div;
-  double head[3]; /* the checkpoint's [n_hist, m^k, m^{k-1}] */
+  double head[4]; /* the checkpoint's [n_hist, m^k, m^{k-1}, refresh] */
 };
 
 /* B = -int q div(v): the continuity rows of a Stokes assembly (they depend on the geometry alone). */
@@ -357,31 +357,37 @@ void sl_projection_accept(sl_projection *pj) {
 }
 
 void sl_projection_drop_numeric(sl_projection *pj) {
+  /* a restart factorises the checkpointed blocks afresh: so does the run that goes on */
   sl_linsolve_drop_numeric(pj->ls_v);
-  pj->refresh = 1; /* a restart starts with fresh blocks: so does the run that goes on */
+  sl_linsolve_drop_numeric(pj->ls_P);
 }
 
 int sl_projection_checkpoint(sl_projection *pj, sl_checkpoint_array *a, int max) {
-  if (max < 3) return 0;
-  /* [n_hist, m^k, m^{k-1}] and the two increments */
+  if (max < 4) return 0;
+  /* [n_hist, m^k, m^{k-1}, refresh], the two increments and the preconditioner's values */
   double *head = pj->head;
-  head[0] = pj->n_hist, head[1] = pj->m_hist[0], head[2] = pj->m_hist[1];
-  snprintf(a[0].name, sizeof a[0].name, "projection_history"), a[0].n = 3, a[0].data = head;
+  head[0] = pj->n_hist, head[1] = pj->m_hist[0], head[2] = pj->m_hist[1], head[3] = pj->refresh;
+  snprintf(a[0].name, sizeof a[0].name, "projection_history"), a[0].n = 4, a[0].data = head;
   snprintf(a[1].name, sizeof a[1].name, "projection_phi"), a[1].n = pj->np, a[1].data = pj->phi_hist[0];
   snprintf(a[2].name, sizeof a[2].name, "projection_phi_prev"), a[2].n = pj->np, a[2].data = pj->phi_hist[1];
-  return 3;
+  snprintf(a[3].name, sizeof a[3].name, "projection_blocks"), a[3].n = pj->P.nnz, a[3].data = pj->P.values;
+  return 4;
 }
 
 int sl_projection_restore(sl_projection *pj, const sl_checkpoint *ck, sl_diag *d) {
   const sl_checkpoint_array *h = sl_checkpoint_find(ck, "projection_history");
   const sl_checkpoint_array *a = sl_checkpoint_find(ck, "projection_phi");
   const sl_checkpoint_array *b = sl_checkpoint_find(ck, "projection_phi_prev");
-  if (!h && !a && !b) return 0;
-  if (!h || !a || !b || h->n != 3 || a->n != pj->np || b->n != pj->np)
+  const sl_checkpoint_array *P = sl_checkpoint_find(ck, "projection_blocks");
+  if (!h && !a && !b && !P) return 0;
+  if (!h || !a || !b || !P || h->n != 4 || a->n != pj->np || b->n != pj->np || P->n != pj->P.nnz)
     return sl_diag_set(d, SL_EBADINPUT, "checkpoint: the projection's pressure increments do not fit the mesh "
                                         "(%lld pressure values, the scene has %d)",
                        a ? (long long)a->n : 0LL, (int)pj->np);
   pj->n_hist = (int)h->data[0], pj->m_hist[0] = h->data[1], pj->m_hist[1] = h->data[2];
+  pj->refresh = h->data[3] != 0.0;
+  memcpy(pj->P.values, P->data, (size_t)pj->P.nnz * sizeof(double));
+  sl_csr_touch(&pj->P);
   memcpy(pj->phi_hist[0], a->data, (size_t)pj->np * sizeof(double));
   memcpy(pj->phi_hist[1], b->data, (size_t)pj->np * sizeof(double));
   return 0;

@@ -69,8 +69,9 @@ void sl_projection_accept(sl_projection *pj);
 void sl_projection_skip(sl_projection *pj);
 /* Drops the kept factorisations' reuse history (a checkpoint: a restart goes on bit for bit). */
 void sl_projection_drop_numeric(sl_projection *pj);
-/* The increment history to checkpoint (2 arrays) and back; a checkpoint without them restarts from zero
- * increments. */
+/* The increment history and the preconditioner's values to checkpoint (4 arrays) and back, so that a restart
+ * goes on as the uninterrupted run; a checkpoint without them (a monolithic run's) starts the split step afresh
+ * (its first step monolithic). */
 int sl_projection_checkpoint(sl_projection *pj, sl_checkpoint_array *a, int max);
 int sl_projection_restore(sl_projection *pj, const sl_checkpoint *ck, sl_diag *d);
 
