@@ -28,6 +28,10 @@ int sl_system_init(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_el
 }
 
 void sl_system_free(sl_system *s) {
+  sl_linsolve_rows_free(&s->rows);
+  free(s->rows.owned);
+  free(s->rows.global);
+  free(s->rows.local);
   sl_csr_free(&s->A);
   sl_csr_elem_map_free(&s->map);
   free(s->b);
@@ -42,7 +46,7 @@ void sl_system_zero(sl_system *s) {
 int sl_system_add_element(sl_system *s, int32_t e, const double *Ke, const double *be, sl_diag *d) {
   if (s->distributed && (e < s->elem_begin || e >= s->elem_end)) return 0; /* another rank's */
   if (Ke) {
-    int rc = sl_csr_add_element_mapped(&s->A, &s->map, e, Ke, d);
+    int rc = sl_csr_add_element_mapped(&s->A, &s->map, e - (s->distributed ? s->elem_begin : 0), Ke, d);
     if (rc) return rc;
   }
   if (be) {
@@ -59,10 +63,110 @@ void sl_system_partition(int32_t n_elem, int rank, int ranks, int32_t *begin, in
   *end = (int32_t)((int64_t)n_elem * (rank + 1) / ranks);
 }
 
-void sl_system_own_elements(sl_system *s, int32_t begin, int32_t end) {
-  s->elem_begin = begin < 0 ? 0 : begin;
-  s->elem_end = end > s->n_elem ? s->n_elem : end;
+/* Row ownership and the ranks' numbering (see system.h): owner[i] is the rank of the first element holding dof i
+ * (the elements are visited in increasing order, so that is the lowest); a dof of no element goes to the last
+ * rank. */
+static int build_rows(sl_system *s, int rank, int ranks, sl_diag *d) {
+  int32_t n = s->n_dofs;
+  sl_rows *r = &s->rows;
+  int32_t *owner = malloc((size_t)n * sizeof *owner), *count = calloc((size_t)ranks + 1, sizeof *count);
+  r->owned = calloc((size_t)n, 1);
+  r->global = malloc((size_t)n * sizeof *r->global);
+  if (!owner || !count || !r->owned || !r->global) {
+    free(owner), free(count);
+    return sl_diag_set(d, SL_ENOMEM, "assembly: out of memory for the rows of %d dofs", (int)n);
+  }
+  for (int32_t i = 0; i < n; ++i) owner[i] = -1;
+  for (int q = 0; q < ranks; ++q) {
+    int32_t e0, e1;
+    sl_system_partition(s->n_elem, q, ranks, &e0, &e1);
+    for (int64_t k = (int64_t)e0 * s->dofs_per_elem; k < (int64_t)e1 * s->dofs_per_elem; ++k) {
+      int32_t i = s->elem_dofs[k];
+      if (i >= 0 && i < n && owner[i] < 0) owner[i] = q;
+    }
+  }
+  for (int32_t i = 0; i < n; ++i) {
+    if (owner[i] < 0) owner[i] = ranks - 1;
+    ++count[owner[i] + 1];
+  }
+  for (int q = 0; q < ranks; ++q) count[q + 1] += count[q]; /* count[q]: the first row of rank q */
+  r->n = n, r->begin = count[rank], r->end = count[rank + 1];
+  r->local = malloc(((size_t)(r->end - r->begin) + 1) * sizeof *r->local);
+  int rc = 0;
+  if (!r->local) rc = sl_diag_set(d, SL_ENOMEM, "assembly: out of memory for the rows of %d dofs", (int)n);
+  for (int32_t i = 0; i < n && !rc; ++i) {
+    int32_t g = count[owner[i]]++;
+    r->global[i] = g;
+    if (owner[i] == rank) r->owned[i] = 1, r->local[g - r->begin] = i;
+  }
+  free(owner), free(count);
+  return rc;
+}
+
+int sl_system_init_ranks(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_elem, const int32_t *elem_dofs,
+                         int rank, int ranks, sl_diag *d) {
+  if (ranks <= 1) return sl_system_init(s, n_dofs, n_elem, dofs_per_elem, elem_dofs, d);
+  memset(s, 0, sizeof *s);
+  s->n_dofs = n_dofs, s->n_elem = n_elem, s->dofs_per_elem = dofs_per_elem, s->elem_dofs = elem_dofs;
   s->distributed = 1;
+  sl_system_partition(n_elem, rank, ranks, &s->elem_begin, &s->elem_end);
+  s->b = calloc((size_t)n_dofs, sizeof *s->b);
+  if (!s->b) return sl_diag_set(d, SL_ENOMEM, "assembly: out of memory for a system of %d dofs", (int)n_dofs);
+  int rc = build_rows(s, rank, ranks, d);
+  if (rc) {
+    sl_system_free(s);
+    return rc;
+  }
+  /* The pattern: the own elements' rows and columns, and the rows this rank owns of the other ranks' elements
+   * that touch them (so that an owned row has its complete pattern here); other rows of those are skipped. */
+  const int dpe = dofs_per_elem;
+  int32_t n_own = s->elem_end - s->elem_begin, n_ghost = 0;
+  for (int32_t e = 0; e < n_elem; ++e) {
+    if (e >= s->elem_begin && e < s->elem_end) continue;
+    for (int a = 0; a < dpe; ++a) {
+      int32_t i = elem_dofs[(size_t)e * dpe + a];
+      if (i >= 0 && i < n_dofs && s->rows.owned[i]) {
+        ++n_ghost;
+        break;
+      }
+    }
+  }
+  int32_t m = n_own + n_ghost;
+  int32_t *ptr = malloc(((size_t)m + 1) * sizeof *ptr);
+  int32_t *row_dofs = malloc(((size_t)m * dpe + 1) * sizeof *row_dofs);
+  int32_t *col_dofs = malloc(((size_t)m * dpe + 1) * sizeof *col_dofs);
+  if (!ptr || !row_dofs || !col_dofs) {
+    free(ptr), free(row_dofs), free(col_dofs);
+    sl_system_free(s);
+    return sl_diag_set(d, SL_ENOMEM, "assembly: out of memory for a system of %d dofs", (int)n_dofs);
+  }
+  for (int32_t e = 0; e <= m; ++e) ptr[e] = e * dpe;
+  memcpy(row_dofs, elem_dofs + (size_t)s->elem_begin * dpe, (size_t)n_own * dpe * sizeof *row_dofs);
+  memcpy(col_dofs, row_dofs, (size_t)n_own * dpe * sizeof *col_dofs);
+  int32_t k = n_own;
+  for (int32_t e = 0; e < n_elem; ++e) {
+    if (e >= s->elem_begin && e < s->elem_end) continue;
+    const int32_t *dofs = elem_dofs + (size_t)e * dpe;
+    int touches = 0;
+    for (int a = 0; a < dpe; ++a) touches |= dofs[a] >= 0 && dofs[a] < n_dofs && s->rows.owned[dofs[a]];
+    if (!touches) continue;
+    for (int a = 0; a < dpe; ++a) {
+      int own = dofs[a] >= 0 && dofs[a] < n_dofs && s->rows.owned[dofs[a]];
+      row_dofs[(size_t)k * dpe + a] = own ? dofs[a] : -1;
+      col_dofs[(size_t)k * dpe + a] = dofs[a];
+    }
+    ++k;
+  }
+  rc = sl_csr_build(&s->A, n_dofs, n_dofs, m, ptr, row_dofs, ptr, col_dofs, d);
+  free(row_dofs), free(col_dofs);
+  if (!rc) rc = sl_csr_elem_map_build(&s->map, &s->A, n_own, ptr, elem_dofs + (size_t)s->elem_begin * dpe, NULL, NULL, d);
+  free(ptr);
+  if (rc) {
+    sl_system_free(s);
+    return rc;
+  }
+  s->A.rows = &s->rows;
+  return 0;
 }
 
 void sl_system_elements(const sl_system *s, int32_t *begin, int32_t *end) {
@@ -72,12 +176,14 @@ void sl_system_elements(const sl_system *s, int32_t *begin, int32_t *end) {
 
 int sl_system_complete(sl_system *s, int matrix, sl_diag *d) {
   if (!s->distributed) return 0;
-  int rc = sl_linsolve_sum_ranks(s->b, s->n_dofs, d);
-  if (!rc && matrix) {
-    rc = sl_linsolve_sum_ranks(s->A.values, s->A.nnz, d);
-    sl_csr_touch(&s->A);
-  }
-  return rc;
+  return sl_linsolve_rows_complete(&s->rows, &s->A, s->b, matrix, d);
+}
+
+int sl_system_agree(const sl_system *s, int rc, sl_diag *d) {
+  if (!s->distributed) return rc;
+  int all = sl_linsolve_agree(rc);
+  if (all && !rc) return sl_diag_set(d, all, "another rank's assembly failed (its message is on that rank)");
+  return rc ? rc : all;
 }
 
 /* ---- constraints --------------------------------------------------------- */

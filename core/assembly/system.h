@@ -28,9 +28,11 @@ typedef struct sl_system {
   sl_csr A;
   sl_csr_elem_map map;
   double *b; /* [n_dofs] */
-  /* sl_system_own_elements: this rank's elements [elem_begin, elem_end) (else all) */
+  /* sl_system_init_ranks on several ranks: this rank's elements [elem_begin, elem_end) (else all), and the
+   * rows it owns (A.rows points here: the system must not be moved) */
   int32_t elem_begin, elem_end;
   int distributed;
+  sl_rows rows;
 } sl_system;
 
 /* Builds the pattern and the element map. elem_dofs must outlive the
@@ -40,8 +42,8 @@ int sl_system_init(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_el
 void sl_system_free(sl_system *s);
 /* A = 0 and b = 0, pattern kept. */
 void sl_system_zero(sl_system *s);
-/* A += Ke (row-major, element dof order) and b += be (either may be NULL). An element another rank owns
- * (sl_system_own_elements) adds nothing. */
+/* A += Ke (row-major, element dof order) and b += be (either may be NULL). An element another rank assembles
+ * (sl_system_init_ranks) adds nothing. */
 int sl_system_add_element(sl_system *s, int32_t e, const double *Ke, const double *be, sl_diag *d);
 
 /* ---- partitioned assembly (several ranks, mpirun) ------------------------- */
@@ -50,16 +52,26 @@ int sl_system_add_element(sl_system *s, int32_t e, const double *Ke, const doubl
  * for e = rank, N = ranks (the mesh generators number the cells row by row, gmsh front by front, so that a
  * block is a compact piece of the domain). */
 void sl_system_partition(int32_t n_elem, int rank, int ranks, int32_t *begin, int32_t *end);
-/* From now on the system is assembled on several ranks, each adding its own elements [begin, end) only
- * (an assembly loop asks sl_system_elements which those are); sl_system_complete sums the ranks' parts. */
-void sl_system_own_elements(sl_system *s, int32_t begin, int32_t end);
-/* The elements this rank assembles: [*begin, *end) (all of them unless sl_system_own_elements). */
+/* As sl_system_init, for rank `rank` of `ranks` (one rank: sl_system_init). On several ranks the system is
+ * distributed: this rank assembles its own elements (sl_system_partition) only, and owns the rows of the dofs
+ * whose lowest-numbered element is one of its own (so a rank owns the rows of its part of the domain, a dof
+ * on the border between two parts going to the lower rank). Its matrix holds only the rows its elements touch
+ * and the complete pattern of the rows it owns; A.rows says which those are and numbers every rank's rows
+ * contiguously, in the sluice order within a rank (core/solve/sparse.h). */
+int sl_system_init_ranks(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_elem, const int32_t *elem_dofs,
+                         int rank, int ranks, sl_diag *d);
+/* The elements this rank assembles: [*begin, *end) (all of them on one rank). */
 void sl_system_elements(const sl_system *s, int32_t *begin, int32_t *end);
-/* After the elements are added, before the constraints: a system assembled on several ranks holds on each
- * only its own elements' part; this sums the parts over the ranks (b, and A's values with `matrix`), so that
- * every rank holds the whole assembled system, the same on every rank (one MPI_Allreduce). Nothing on one
- * rank. */
+/* After the elements are added, before the constraints: on several ranks each rank holds only its own
+ * elements' part; this adds the parts of every row into the rank that owns it (PETSc's MatSetValues with
+ * ADD_VALUES and its VecSetValues: a row another rank owns travels there, sl_linsolve_rows_complete), so that
+ * each rank holds its own rows complete (b, and A's values with `matrix`) and zeros in the others. Nothing on
+ * one rank. Collective: every rank calls it, with the same `matrix`. */
 int sl_system_complete(sl_system *s, int matrix, sl_diag *d);
+/* Collective on a distributed system: rc when every rank's rc is 0 or this rank failed itself; otherwise the
+ * largest rank's failure, with a message that another rank failed (so that no rank waits in a later exchange
+ * for one that stopped). rc itself on one rank. */
+int sl_system_agree(const sl_system *s, int rc, sl_diag *d);
 
 /* ---- Dirichlet constraints ---------------------------------------------- */
 

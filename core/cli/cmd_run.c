@@ -12,6 +12,7 @@
 #include "core/cli/progress.h"
 #include "core/plugin/guard.h"
 #include "core/plugin/isolate.h"
+#include "core/solve/linsolve.h"
 #include "core/cli/summary_json.h"
 #include "sluice/sluice.h"
 
@@ -36,7 +37,9 @@ static const char run_usage[] =
     "  --profile        after the summary, what the run did and skipped: assemblies,\n"
     "                   factorisations (and reuses), closure calls and points per\n"
     "                   closure with their time, the plugin libraries loaded, the\n"
-    "                   output written, and the CPU time of each phase\n"
+    "                   output written, and the CPU time of each phase; under\n"
+    "                   mpirun the rows rank 0 owns and the time their exchange\n"
+    "                   takes (the ranks then meet before each exchange)\n"
     "  --petsc \"OPTS\"   PETSc options for [solver] linear = petsc, over the scene's\n"
     "                   [solver.petsc] (PETSC_OPTIONS over both), as \"-ksp_monitor\",\n"
     "                   \"-log_view\" or \"-pc_type lu\"\n"
@@ -138,6 +141,15 @@ static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, do
   if (m->roundoff_accepted > 0)
     fprintf(f, "%s %ld nonlinear solve%s ended with the residual at round-off\n", p, m->roundoff_accepted,
             m->roundoff_accepted == 1 ? "" : "s");
+  sl_rows_stats rs;
+  sl_linsolve_rows_stats(&rs);
+  if (rs.ranks > 1)
+    fprintf(f,
+            "%s rows on %d ranks: this rank owns %ld of %ld rows; its matrix %ld entries, %ld of them in its rows, of "
+            "%ld in all; the parts exchanged in %.3g s (%ld assemblies, %ld with the matrix; before them %.3g s "
+            "waiting for the other ranks)\n",
+            p, rs.ranks, rs.owned_rows, rs.rows, rs.entries_here, rs.owned_entries, rs.all_entries, rs.seconds,
+            rs.calls, rs.matrix_calls, rs.waiting);
   sluice_print_closure_profile(sc, f, p, cpu_total);
   if (m->output_times > 0)
     fprintf(f, "%s output: %ld output times, %ld datasets, %.3g MB of field values\n", p, m->output_times,
@@ -307,6 +319,7 @@ int sl_cmd_run(int argc, char **argv) {
       check_only = 1;
     } else if (strcmp(argv[i], "--profile") == 0) {
       profile = 1;
+      sl_linsolve_rows_profile(1);
     } else if (strcmp(argv[i], "--overwrite") == 0) {
       overwrite = 1;
     } else if (strcmp(argv[i], "--summary-json") == 0 && i + 1 < argc) {

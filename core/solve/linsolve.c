@@ -72,10 +72,17 @@ int sl_linsolve_ranks(int *rank, int *size, sl_diag *d) {
   return 0;
 }
 int sl_linsolve_agree(int rc) { return rc; }
-int sl_linsolve_sum_ranks(double *x, int64_t n, sl_diag *d) {
+int sl_linsolve_sum_ordered(double *x, int n, sl_diag *d) {
   (void)x, (void)n, (void)d;
   return 0;
 }
+int sl_linsolve_rows_complete(sl_rows *rows, sl_csr *A, double *b, int matrix, sl_diag *d) {
+  (void)rows, (void)A, (void)b, (void)matrix;
+  return sl_diag_set(d, SL_EFAILED, "a system divided among ranks needs a build with PETSc");
+}
+void sl_linsolve_rows_free(sl_rows *rows) { (void)rows; }
+void sl_linsolve_rows_stats(sl_rows_stats *st) { memset(st, 0, sizeof *st); }
+void sl_linsolve_rows_profile(int on) { (void)on; }
 #endif
 enum { N_SOLVERS = (int)(sizeof solver_names / sizeof solver_names[0]) };
 /* sl_linsolve_names lists what this build can run; petsc is last and named even without it for a clear error. */
@@ -274,8 +281,13 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
   }
   int stale = !ls->have_numeric || ls->force_numeric || ls->values_gen != A->values_gen || ls->matrix != A ||
               ls->values != A->values;
-  if (stale && ls->have_numeric && !ls->force_numeric && ls->n_factored == A->nnz &&
-      memcmp(ls->factored, A->values, (size_t)A->nnz * sizeof *A->values) == 0) {
+  /* rows divided among ranks: each rank sees its own rows, and the numeric step is collective, so the ranks
+   * decide together (any rank's new values refactorise on all) */
+  if (A->rows) stale = sl_linsolve_agree(stale);
+  int same = stale && ls->have_numeric && !ls->force_numeric && ls->n_factored == A->nnz &&
+             memcmp(ls->factored, A->values, (size_t)A->nnz * sizeof *A->values) == 0;
+  if (A->rows && stale) same = !sl_linsolve_agree(!same);
+  if (same) {
     /* same pattern, bitwise the same values: the factorisation still holds */
     ++ls->st.n_numeric_skipped;
     ls->values_gen = A->values_gen, ls->matrix = A, ls->values = A->values;
@@ -286,11 +298,19 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
                                                                                       : SL_REFACTOR_DIRECT;
     ls->have_numeric = 0;
     /* A NaN from a closure would otherwise surface as a misleading "singular". */
-    for (int32_t i = 0; i < A->n_rows; ++i)
+    int bad = 0;
+    for (int32_t i = 0; i < A->n_rows && !bad; ++i)
       for (int32_t p = A->row_ptr[i]; p < A->row_ptr[i + 1]; ++p)
-        if (!isfinite(A->values[p]))
-          return sl_diag_set(d, SL_EFAILED, "%s: matrix entry (%d, %d) is not finite (%g)", name, (int)i,
-                             (int)A->col_idx[p], A->values[p]);
+        if (!isfinite(A->values[p])) {
+          bad = sl_diag_set(d, SL_EFAILED, "%s: matrix entry (%d, %d) is not finite (%g)", name, (int)i,
+                            (int)A->col_idx[p], A->values[p]);
+          break;
+        }
+    if (A->rows) {
+      int all = sl_linsolve_agree(bad);
+      if (all && !bad) bad = sl_diag_set(d, all, "%s: a matrix entry on another rank is not finite", name);
+    }
+    if (bad) return bad;
     double t0 = now();
     ls->st.singular = 0;
     int rc = ls->ops->numeric(ls->backend, A, &ls->st, d);

@@ -123,9 +123,34 @@ int sl_linsolve_ranks(int *rank, int *size, sl_diag *d);
 /* On several ranks: the largest of every rank's rc (0 when all are 0), so that a step one rank alone can fail
  * (opening the output, which rank 0 alone does) is failed by all; on one rank (or without PETSc) rc itself. */
 int sl_linsolve_agree(int rc);
-/* On several ranks: x[0..n) becomes the sum over the ranks of their x, the same on every rank (a system each
- * rank assembled from its own cells, sl_system_complete); on one rank nothing. */
-int sl_linsolve_sum_ranks(double *x, int64_t n, sl_diag *d);
+/* On several ranks: x[0..n) becomes the sum over the ranks of their x, added in rank order on every rank so
+ * that every rank gets bitwise the same sums (Newton's norms of a system whose rows are divided among the ranks:
+ * identical numbers, identical decisions); n is small (an MPI_Allgather of n values a rank). Nothing on one
+ * rank. */
+int sl_linsolve_sum_ordered(double *x, int n, sl_diag *d);
+/* A system whose rows are divided among the ranks (core/assembly/system.h): A and b hold this rank's part of
+ * every row it touches; afterwards each rank holds the rows it owns complete and zeros elsewhere. The parts are
+ * added with PETSc's MatSetValues and VecSetValues (ADD_VALUES), a row another rank owns travelling there
+ * through PETSc's stash in MatAssemblyBegin/End, into a matrix and a vector kept in rows->exchange; A's values
+ * only with `matrix` (then A is touched). Collective. SL_EFAILED without PETSc. */
+int sl_linsolve_rows_complete(sl_rows *rows, sl_csr *A, double *b, int matrix, sl_diag *d);
+/* Frees rows->exchange. */
+void sl_linsolve_rows_free(sl_rows *rows);
+/* What sl_linsolve_rows_complete did in this process (the last pattern's sizes): all zero on one rank. */
+typedef struct sl_rows_stats {
+  double seconds;          /* wall seconds in sl_linsolve_rows_complete */
+  double waiting;          /* with sl_linsolve_rows_profile: of those, before them, waiting for the other ranks */
+  long calls, matrix_calls; /* its calls, those with the matrix among them */
+  int ranks;
+  long rows, owned_rows;   /* the system's rows, this rank's */
+  long entries_here;       /* this rank's matrix: the entries of the rows its elements touch */
+  long owned_entries;      /* of those, in its own rows */
+  long all_entries;        /* the owned entries of every rank: the whole matrix's entries */
+} sl_rows_stats;
+void sl_linsolve_rows_stats(sl_rows_stats *st);
+/* On (`sluice run --profile`): the ranks meet (MPI_Barrier) before each sl_linsolve_rows_complete, so that its
+ * time is the exchange's own and the time a rank waited for a slower one is counted apart (stats.waiting). */
+void sl_linsolve_rows_profile(int on);
 
 typedef struct sl_linsolve sl_linsolve;
 

@@ -21,6 +21,7 @@
 #include <petscksp.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "core/solve/linsolve.h"
 
@@ -29,6 +30,14 @@ _Static_assert(sizeof(PetscScalar) == sizeof(double), "PETSc built with real dou
 
 enum { PETSC_EXACT_MAX_IT = 10000 };
 #define PETSC_EXACT_RTOL 1e-10
+
+typedef struct rows_exchange {
+  Mat M;               /* the owned rows, complete after MatAssemblyEnd */
+  Vec v;               /* the owned entries of b */
+  uint64_t pattern_id; /* of the sluice matrix M was preallocated for */
+  PetscInt *cols;      /* one row's columns in the ranks' numbering */
+  int32_t n_cols;
+} rows_exchange;
 
 typedef struct petsc_state {
   Mat A;
@@ -43,6 +52,8 @@ typedef struct petsc_state {
   int configured;   /* the KSP has its type and options */
   int user_tolerances; /* -ksp_rtol or -ksp_max_it given: they replace the exact solve's */
   long iterations;
+  const sl_rows *rows; /* the matrix's rows are divided among the ranks (A->rows): this rank's own rows only */
+  rows_exchange map;   /* a row's columns in the ranks' numbering (its cols buffer) */
 } petsc_state;
 
 static int petsc_started;
@@ -81,18 +92,6 @@ int sl_linsolve_agree(int rc) {
   return all;
 }
 
-int sl_linsolve_sum_ranks(double *x, int64_t n, sl_diag *d) {
-  PetscMPIInt size = 1;
-  if (!petsc_started || MPI_Comm_size(PETSC_COMM_WORLD, &size) || size == 1) return 0;
-  /* in pieces of at most 2^26 values: MPI's count is an int */
-  for (int64_t at = 0; at < n; at += (int64_t)1 << 26) {
-    int count = (int)(n - at < ((int64_t)1 << 26) ? n - at : (int64_t)1 << 26);
-    if (MPI_Allreduce(MPI_IN_PLACE, x + at, count, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD))
-      return sl_diag_set(d, SL_EFAILED, "petsc: summing the ranks' parts of an assembled system failed");
-  }
-  return 0;
-}
-
 static int petsc_fail(PetscErrorCode e, const char *what, sl_diag *d) {
   const char *text = NULL;
   PetscErrorMessage(e, &text, NULL);
@@ -104,6 +103,177 @@ static int petsc_fail(PetscErrorCode e, const char *what, sl_diag *d) {
     PetscErrorCode e_ = (call);                   \
     if (e_) return petsc_fail(e_, (what), d);     \
   } while (0)
+
+int sl_linsolve_sum_ordered(double *x, int n, sl_diag *d) {
+  PetscMPIInt size = 1, rank = 0;
+  if (!petsc_started || MPI_Comm_size(PETSC_COMM_WORLD, &size) || size == 1 || n <= 0) return 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  double *all = malloc((size_t)size * (size_t)n * sizeof *all);
+  if (!all) return sl_diag_set(d, SL_ENOMEM, "petsc: out of memory");
+  if (MPI_Allgather(x, n, MPI_DOUBLE, all, n, MPI_DOUBLE, PETSC_COMM_WORLD)) {
+    free(all);
+    return sl_diag_set(d, SL_EFAILED, "petsc: gathering the ranks' partial sums failed");
+  }
+  for (int k = 0; k < n; ++k) {
+    double sum = 0.0;
+    for (PetscMPIInt q = 0; q < size; ++q) sum += all[(size_t)q * n + k]; /* rank order, the same everywhere */
+    x[k] = sum;
+  }
+  free(all);
+  return 0;
+}
+
+/* ---- a system whose rows are divided among the ranks ------------------------------------------------------ */
+
+
+static sl_rows_stats rows_stats;
+
+static int rows_profile;
+
+void sl_linsolve_rows_stats(sl_rows_stats *st) { *st = rows_stats; }
+void sl_linsolve_rows_profile(int on) { rows_profile = on; }
+
+static double wall_now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void sl_linsolve_rows_free(sl_rows *rows) {
+  rows_exchange *x = rows->exchange;
+  if (!x) return;
+  if (petsc_started) {
+    if (x->M) MatDestroy(&x->M);
+    if (x->v) VecDestroy(&x->v);
+  }
+  free(x->cols);
+  free(x);
+  rows->exchange = NULL;
+}
+
+/* Row i's columns in the ranks' numbering, into a buffer of the longest row. */
+static PetscInt *global_cols(rows_exchange *x, const sl_rows *rows, const sl_csr *A, int32_t i) {
+  int32_t k0 = A->row_ptr[i], nc = A->row_ptr[i + 1] - k0;
+  for (int32_t k = 0; k < nc; ++k) x->cols[k] = rows->global[A->col_idx[k0 + k]];
+  return x->cols;
+}
+
+/* A distributed AIJ matrix of the owned rows of A (their complete pattern), preallocated exactly: the diagonal
+ * block's and the off-diagonal block's entries of each owned row. */
+static int create_owned_matrix(const sl_rows *rows, const sl_csr *A, Mat *M, sl_diag *d) {
+  int32_t nloc = rows->end - rows->begin;
+  PetscInt *dn = malloc(((size_t)nloc + 1) * sizeof *dn), *on = malloc(((size_t)nloc + 1) * sizeof *on);
+  if (!dn || !on) {
+    free(dn), free(on);
+    return sl_diag_set(d, SL_ENOMEM, "petsc: out of memory");
+  }
+  for (int32_t k = 0; k < nloc; ++k) {
+    int32_t i = rows->local[k];
+    dn[k] = on[k] = 0;
+    for (int32_t p = A->row_ptr[i]; p < A->row_ptr[i + 1]; ++p) {
+      int32_t g = rows->global[A->col_idx[p]];
+      if (g >= rows->begin && g < rows->end) ++dn[k];
+      else ++on[k];
+    }
+  }
+  PetscErrorCode e = MatCreate(PETSC_COMM_WORLD, M);
+  if (!e) e = MatSetSizes(*M, nloc, nloc, A->n_rows, A->n_cols);
+  if (!e) e = MatSetType(*M, MATMPIAIJ);
+  if (!e) e = MatMPIAIJSetPreallocation(*M, 0, dn, 0, on);
+  if (!e) e = MatSetOption(*M, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE);
+  free(dn), free(on);
+  if (e) return petsc_fail(e, "creating the distributed matrix", d);
+  return 0;
+}
+
+static int rows_prepare(rows_exchange *x, const sl_rows *rows, const sl_csr *A, sl_diag *d) {
+  int32_t longest = 1;
+  for (int32_t i = 0; i < A->n_rows; ++i)
+    if (A->row_ptr[i + 1] - A->row_ptr[i] > longest) longest = A->row_ptr[i + 1] - A->row_ptr[i];
+  if (longest > x->n_cols) {
+    PetscInt *c = realloc(x->cols, (size_t)longest * sizeof *c);
+    if (!c) return sl_diag_set(d, SL_ENOMEM, "petsc: out of memory");
+    x->cols = c, x->n_cols = longest;
+  }
+  if (x->M) MatDestroy(&x->M);
+  int rc = create_owned_matrix(rows, A, &x->M, d);
+  if (rc) return rc;
+  x->pattern_id = A->pattern_id;
+  sl_rows_stats *st = &rows_stats;
+  PetscMPIInt size = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  st->ranks = size, st->rows = rows->n, st->owned_rows = rows->end - rows->begin, st->entries_here = A->nnz;
+  st->owned_entries = 0;
+  for (int32_t k = 0; k < rows->end - rows->begin; ++k)
+    st->owned_entries += A->row_ptr[rows->local[k] + 1] - A->row_ptr[rows->local[k]];
+  if (MPI_Allreduce(&st->owned_entries, &st->all_entries, 1, MPI_LONG, MPI_SUM, PETSC_COMM_WORLD))
+    return sl_diag_set(d, SL_EFAILED, "petsc: counting the matrix's entries over the ranks failed");
+  return 0;
+}
+
+int sl_linsolve_rows_complete(sl_rows *rows, sl_csr *A, double *b, int matrix, sl_diag *d) {
+  int rc = petsc_start(d);
+  if (rc) return rc;
+  double t0 = wall_now();
+  if (rows_profile) {
+    if (MPI_Barrier(PETSC_COMM_WORLD)) return sl_diag_set(d, SL_EFAILED, "petsc: MPI_Barrier failed");
+    double t1 = wall_now();
+    rows_stats.waiting += t1 - t0;
+    t0 = t1;
+  }
+  rows_exchange *x = rows->exchange;
+  if (!x) {
+    if (!(x = calloc(1, sizeof *x))) return sl_diag_set(d, SL_ENOMEM, "petsc: out of memory");
+    rows->exchange = x;
+  }
+  int32_t nloc = rows->end - rows->begin;
+  if (matrix) {
+    if (!x->M || x->pattern_id != A->pattern_id) {
+      if ((rc = rows_prepare(x, rows, A, d))) return rc;
+    } else {
+      TRY(MatZeroEntries(x->M), "MatZeroEntries");
+    }
+    /* every row this rank's elements touched: its own rows stay here, the others go to their owners */
+    for (int32_t i = 0; i < A->n_rows; ++i) {
+      int32_t k0 = A->row_ptr[i], nc = A->row_ptr[i + 1] - k0;
+      if (nc == 0) continue;
+      PetscInt g = rows->global[i];
+      TRY(MatSetValues(x->M, 1, &g, nc, global_cols(x, rows, A, i), A->values + k0, ADD_VALUES), "MatSetValues");
+    }
+    TRY(MatAssemblyBegin(x->M, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    TRY(MatAssemblyEnd(x->M, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    /* the owned rows back, complete; the others zero (another rank holds them) */
+    for (int32_t i = 0; i < A->n_rows; ++i) {
+      int32_t k0 = A->row_ptr[i], nc = A->row_ptr[i + 1] - k0;
+      if (nc == 0) continue;
+      if (!rows->owned[i]) {
+        memset(A->values + k0, 0, (size_t)nc * sizeof *A->values);
+        continue;
+      }
+      PetscInt g = rows->global[i];
+      TRY(MatGetValues(x->M, 1, &g, nc, global_cols(x, rows, A, i), A->values + k0), "MatGetValues");
+    }
+    sl_csr_touch(A);
+    ++rows_stats.matrix_calls;
+  }
+  if (!x->v) TRY(VecCreateMPI(PETSC_COMM_WORLD, nloc, rows->n, &x->v), "VecCreateMPI");
+  TRY(VecSet(x->v, 0.0), "VecSet");
+  for (int32_t i = 0; i < rows->n; ++i) {
+    if (b[i] == 0.0) continue;
+    PetscInt g = rows->global[i];
+    TRY(VecSetValues(x->v, 1, &g, b + i, ADD_VALUES), "VecSetValues");
+  }
+  TRY(VecAssemblyBegin(x->v), "VecAssemblyBegin");
+  TRY(VecAssemblyEnd(x->v), "VecAssemblyEnd");
+  memset(b, 0, (size_t)rows->n * sizeof *b);
+  const PetscScalar *v;
+  TRY(VecGetArrayRead(x->v, &v), "VecGetArrayRead");
+  for (int32_t k = 0; k < nloc; ++k) b[rows->local[k]] = v[k];
+  TRY(VecRestoreArrayRead(x->v, &v), "VecRestoreArrayRead");
+  ++rows_stats.calls;
+  rows_stats.seconds += wall_now() - t0;
+  return 0;
+}
 
 static int keep(char **level, const char *options, sl_diag *d) {
   free(*level);
@@ -173,6 +343,8 @@ static int petsc_create(void **backend, sl_diag *d) {
 }
 
 static void petsc_release(petsc_state *s) {
+  free(s->map.cols);
+  s->map.cols = NULL, s->map.n_cols = 0, s->rows = NULL;
   if (s->to_all) VecScatterDestroy(&s->to_all);
   if (s->x_all) VecDestroy(&s->x_all);
   if (s->ksp) KSPDestroy(&s->ksp);
@@ -198,6 +370,27 @@ static int petsc_set_blocks(void *backend, int32_t split, int transient, sl_diag
   return 0;
 }
 
+/* Rows divided among the ranks: this rank's rows of the velocity (sluice rows below split) and of the pressure,
+ * in the ranks' numbering (increasing there, as local[] is). */
+static int field_sets(const petsc_state *s, IS *u, IS *p, sl_diag *d) {
+  const sl_rows *r = s->rows;
+  int32_t nloc = r->end - r->begin, nu = 0;
+  PetscInt *iu = malloc(((size_t)nloc + 1) * sizeof *iu), *ip = malloc(((size_t)nloc + 1) * sizeof *ip);
+  if (!iu || !ip) {
+    free(iu), free(ip);
+    return sl_diag_set(d, SL_ENOMEM, "petsc: out of memory");
+  }
+  for (int32_t k = 0; k < nloc; ++k) {
+    if (r->local[k] < s->split) iu[nu++] = r->begin + k;
+    else ip[k - nu] = r->begin + k;
+  }
+  PetscErrorCode e = ISCreateGeneral(PETSC_COMM_WORLD, nu, iu, PETSC_COPY_VALUES, u);
+  if (!e) e = ISCreateGeneral(PETSC_COMM_WORLD, nloc - nu, ip, PETSC_COPY_VALUES, p);
+  free(iu), free(ip);
+  if (e) return petsc_fail(e, "ISCreateGeneral", d);
+  return 0;
+}
+
 /* The KSP's type and preconditioner for the system's structure, then the user's options over them. */
 static int configure(petsc_state *s, sl_diag *d) {
   int rc = insert_levels(d);
@@ -210,10 +403,14 @@ static int configure(petsc_state *s, sl_diag *d) {
     TRY(KSPSetType(s->ksp, KSPFGMRES), "KSPSetType");
     TRY(PCSetType(pc, PCFIELDSPLIT), "PCSetType");
     IS u, p;
-    /* this rank's rows of each field */
-    int32_t u0 = s->r0, u1 = s->r1 < s->split ? s->r1 : s->split, p0 = s->r0 > s->split ? s->r0 : s->split;
-    TRY(ISCreateStride(PETSC_COMM_WORLD, u1 > u0 ? u1 - u0 : 0, u0, 1, &u), "ISCreateStride");
-    TRY(ISCreateStride(PETSC_COMM_WORLD, s->r1 > p0 ? s->r1 - p0 : 0, p0, 1, &p), "ISCreateStride");
+    if (s->rows) { /* this rank's rows of each field, in the ranks' numbering */
+      rc = field_sets(s, &u, &p, d);
+      if (rc) return rc;
+    } else { /* this rank's rows of each field */
+      int32_t u0 = s->r0, u1 = s->r1 < s->split ? s->r1 : s->split, p0 = s->r0 > s->split ? s->r0 : s->split;
+      TRY(ISCreateStride(PETSC_COMM_WORLD, u1 > u0 ? u1 - u0 : 0, u0, 1, &u), "ISCreateStride");
+      TRY(ISCreateStride(PETSC_COMM_WORLD, s->r1 > p0 ? s->r1 - p0 : 0, p0, 1, &p), "ISCreateStride");
+    }
     PetscErrorCode e = PCFieldSplitSetIS(pc, "u", u);
     if (!e) e = PCFieldSplitSetIS(pc, "p", p);
     ISDestroy(&u);
@@ -275,6 +472,18 @@ static int petsc_symbolic(void *backend, const sl_csr *A, sl_diag *d) {
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
   s->size = size;
+  if (A->rows) { /* each rank holds its own rows: they go to PETSc as they are */
+    s->rows = A->rows;
+    s->r0 = A->rows->begin, s->r1 = A->rows->end;
+    int rc = rows_prepare(&s->map, A->rows, A, d);
+    if (!rc) s->A = s->map.M, s->map.M = NULL;
+    if (rc) return rc;
+    TRY(VecCreateMPI(PETSC_COMM_WORLD, s->r1 - s->r0, A->n_rows, &s->b), "VecCreateMPI");
+    TRY(VecDuplicate(s->b, &s->x), "VecDuplicate");
+    TRY(VecScatterCreateToAll(s->x, &s->to_all, &s->x_all), "VecScatterCreateToAll");
+    TRY(KSPCreate(PETSC_COMM_WORLD, &s->ksp), "KSPCreate");
+    return 0;
+  }
   owned_rows(A, rank, size, &s->r0, &s->r1);
   int32_t nloc = s->r1 - s->r0;
   TRY(MatCreate(PETSC_COMM_WORLD, &s->A), "MatCreate");
@@ -305,7 +514,16 @@ static int petsc_symbolic(void *backend, const sl_csr *A, sl_diag *d) {
 static int petsc_numeric(void *backend, const sl_csr *A, sl_linsolve_stats *st, sl_diag *d) {
   (void)st;
   petsc_state *s = backend;
-  if (s->size == 1) {
+  if (s->rows) { /* this rank's own rows, complete here */
+    for (int32_t k = 0; k < s->r1 - s->r0; ++k) {
+      int32_t i = s->rows->local[k];
+      PetscInt g = s->r0 + k, k0 = A->row_ptr[i], nc = A->row_ptr[i + 1] - k0;
+      TRY(MatSetValues(s->A, 1, &g, nc, global_cols(&s->map, s->rows, A, i), A->values + k0, INSERT_VALUES),
+          "MatSetValues");
+    }
+    TRY(MatAssemblyBegin(s->A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    TRY(MatAssemblyEnd(s->A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  } else if (s->size == 1) {
     PetscScalar *v;
     TRY(MatSeqAIJGetArray(s->A, &v), "MatSeqAIJGetArray");
     memcpy(v, A->values, (size_t)A->nnz * sizeof *v); /* the same pattern, in the same order */
@@ -324,11 +542,32 @@ static int petsc_numeric(void *backend, const sl_csr *A, sl_linsolve_stats *st, 
   return 0;
 }
 
+static int converged(petsc_state *s, double rtol, sl_diag *d);
+
+/* Rows divided among the ranks: b's owned entries into PETSc's vector, the solution gathered on every rank (in
+ * the ranks' numbering) and read back in sluice's, so that every rank goes on with the same state. */
+static int solve_rows(petsc_state *s, const double *b, double *x, double rtol, sl_diag *d) {
+  const sl_rows *r = s->rows;
+  PetscScalar *v;
+  TRY(VecGetArray(s->b, &v), "VecGetArray");
+  for (int32_t k = 0; k < r->end - r->begin; ++k) v[k] = b[r->local[k]];
+  TRY(VecRestoreArray(s->b, &v), "VecRestoreArray");
+  TRY(KSPSolve(s->ksp, s->b, s->x), "KSPSolve");
+  TRY(VecScatterBegin(s->to_all, s->x, s->x_all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+  TRY(VecScatterEnd(s->to_all, s->x, s->x_all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  const PetscScalar *all;
+  TRY(VecGetArrayRead(s->x_all, &all), "VecGetArrayRead");
+  for (int32_t i = 0; i < r->n; ++i) x[i] = all[r->global[i]];
+  TRY(VecRestoreArrayRead(s->x_all, &all), "VecRestoreArrayRead");
+  return converged(s, rtol, d);
+}
+
 static int solve_to(petsc_state *s, const double *b, double *x, double rtol, sl_diag *d) {
   if (!s->user_tolerances)
     TRY(KSPSetTolerances(s->ksp, rtol, 0.0, PETSC_DEFAULT, PETSC_EXACT_MAX_IT), "KSPSetTolerances");
   else
     KSPGetTolerances(s->ksp, &rtol, NULL, NULL, NULL);
+  if (s->rows) return solve_rows(s, b, x, rtol, d);
   /* this rank's part of b (every rank has all of it); the solution gathered on every rank, so that every rank
    * goes on with the same state */
   TRY(VecPlaceArray(s->b, b + s->r0), "VecPlaceArray");
@@ -345,6 +584,10 @@ static int solve_to(petsc_state *s, const double *b, double *x, double rtol, sl_
     memcpy(x, all, (size_t)s->n * sizeof *x);
     TRY(VecRestoreArrayRead(s->x_all, &all), "VecRestoreArrayRead");
   }
+  return converged(s, rtol, d);
+}
+
+static int converged(petsc_state *s, double rtol, sl_diag *d) {
   KSPConvergedReason why;
   PetscInt its = 0;
   TRY(KSPGetConvergedReason(s->ksp, &why), "KSPGetConvergedReason");

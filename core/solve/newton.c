@@ -14,10 +14,17 @@ static double wall(void) {
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static double norm2(const double *x, int32_t n) {
+/* Rows divided among ranks (A->rows): each rank's sum of squares over its own rows, the other rows being zero
+ * here, added over the ranks in rank order, so that every rank gets the same norm and decides the same. */
+static double across_ranks(const sl_csr *A, double sum_sq) {
+  if (A->rows && sl_linsolve_sum_ordered(&sum_sq, 1, NULL)) return NAN;
+  return sqrt(sum_sq);
+}
+
+static double norm2(const sl_csr *A, const double *x, int32_t n) {
   double s = 0.0;
   for (int32_t i = 0; i < n; ++i) s += x[i] * x[i];
-  return sqrt(s);
+  return across_ranks(A, s);
 }
 
 static double norm_inf(const double *x, int32_t n) {
@@ -44,7 +51,7 @@ static double term_scale(const sl_csr *A, const double *u) {
     }
     if (equation) s += t * t;
   }
-  return sqrt(s);
+  return across_ranks(A, s);
 }
 
 typedef struct nl_ctx {
@@ -64,11 +71,14 @@ static int assemble(nl_ctx *c, const double *u, sl_nl_mode mode, sl_diag *d) {
   c->st->t_assembly += wall() - t0;
   if (mode == SL_NL_RESIDUAL) ++c->st->residuals;
   else ++c->st->assemblies;
-  if (rc) return rc;
-  for (int32_t i = 0; i < c->n; ++i)
+  for (int32_t i = 0; i < c->n && !rc; ++i)
     if (!isfinite(c->b[i]))
-      return sl_diag_set(d, SL_EFAILED, "nonlinear solve: the residual is not finite (entry %d)", (int)i);
-  return 0;
+      rc = sl_diag_set(d, SL_EFAILED, "nonlinear solve: the residual is not finite (entry %d)", (int)i);
+  if (c->A->rows) { /* every rank goes on, or none */
+    int all = sl_linsolve_agree(rc);
+    if (all && !rc) rc = sl_diag_set(d, all, "nonlinear solve: the assembly failed on another rank");
+  }
+  return rc;
 }
 
 int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_fn fn, void *user, sl_linsolve *ls,
@@ -98,7 +108,7 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
   sl_nl_mode mode = picard_left > 0 ? SL_NL_PICARD : SL_NL_NEWTON;
   /* A linear operator already in A: b only, and A keeps its values generation (no refactorisation). */
   int rc = assemble(&c, u, o.linear && o.matrix_current ? SL_NL_RESIDUAL : mode, d);
-  double res = rc ? NAN : norm2(b, n);
+  double res = rc ? NAN : norm2(A, b, n);
   st->residual0 = st->residual = res;
   int converged = 0;
   double res_prev = INFINITY;
@@ -140,7 +150,7 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
     if (need_matrix) { /* the matrix at u (b again, the same sum) */
       need_matrix = 0;
       if ((rc = assemble(&c, u, mode, d))) break;
-      res = norm2(b, n);
+      res = norm2(A, b, n);
       res_prev = res;
     }
     if (o.interrupt && *o.interrupt) {
@@ -172,7 +182,7 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
       if (o.linear) {
         /* R is affine, so -R(u + du) = b - A du: no second assembly. */
         sl_csr_matvec_add(A, -1.0, du, 1.0, b);
-        st->residual = norm2(b, n);
+        st->residual = norm2(A, b, n);
       }
       converged = 1;
       break;
@@ -191,7 +201,7 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
         rc = 0;
         trial_res = INFINITY;
       } else {
-        trial_res = norm2(b, n);
+        trial_res = norm2(A, b, n);
       }
       /* A Picard step is a fixed-point step: accept it unless it blows up. */
       if (trial_res <= (1.0 - 1e-4 * lambda) * res || (mode == SL_NL_PICARD && trial_res <= 10.0 * res)) {

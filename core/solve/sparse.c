@@ -286,7 +286,8 @@ int sl_csr_set_dirichlet(sl_csr *A, int32_t n, const int32_t *rows, const double
       free(which);
       return sl_diag_set(d, SL_EBADINPUT, "dirichlet: row %d outside [0, %d)", (int)r, (int)A->n_rows);
     }
-    if (find_in_row(A, r, r) < 0) {
+    /* another rank's row: its column is eliminated here, the row there */
+    if ((!A->rows || A->rows->owned[r]) && find_in_row(A, r, r) < 0) {
       free(which);
       return sl_diag_set(d, SL_EBADINPUT, "dirichlet: row %d has no diagonal entry in the pattern", (int)r);
     }
@@ -305,7 +306,7 @@ int sl_csr_set_dirichlet(sl_csr *A, int32_t n, const int32_t *rows, const double
     }
   }
   for (int32_t r = 0; r < A->n_rows; ++r) {
-    if (!which[r]) continue;
+    if (!which[r] || (A->rows && !A->rows->owned[r])) continue;
     for (int32_t p = A->row_ptr[r]; p < A->row_ptr[r + 1]; ++p) A->values[p] = A->col_idx[p] == r ? 1.0 : 0.0;
     if (b) b[r] = vals ? vals[which[r] - 1] : 0.0;
   }

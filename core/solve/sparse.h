@@ -14,6 +14,20 @@
 
 #include "core/util/diag.h"
 
+/* How a matrix's rows are divided among the ranks of a run (mpirun; core/assembly/system.h builds it): each
+ * row is complete on the one rank that owns it (owned[i] != 0) and zero on the others. global[i] is row i's
+ * index in the ranks' numbering, in which every rank's rows are contiguous, [begin, end) here, in the order of
+ * local[0 .. end - begin) (rows of this rank in increasing sluice order). `exchange` is the linear solver's
+ * (PETSc's matrix and vector the ranks add their parts into, sl_linsolve_rows_complete). */
+typedef struct sl_rows {
+  int32_t n;
+  unsigned char *owned; /* [n] */
+  int32_t *global;      /* [n] */
+  int32_t *local;       /* [end - begin] */
+  int32_t begin, end;
+  void *exchange;
+} sl_rows;
+
 typedef struct sl_csr {
   int32_t n_rows, n_cols;
   int32_t nnz;
@@ -22,6 +36,9 @@ typedef struct sl_csr {
   double *values;      /* nnz */
   uint64_t pattern_id; /* unique in the process; new for every pattern built */
   uint64_t values_gen; /* incremented whenever values change */
+  /* Several ranks: the rows this rank holds complete (the others are another rank's and zero here). NULL: every
+   * row (one rank). Borrowed. */
+  const sl_rows *rows;
 } sl_csr;
 
 /* Build the pattern from element connectivity. Element e couples the rows
@@ -99,7 +116,8 @@ void sl_csr_matvec_add(const sl_csr *A, double alpha, const double *x, double be
  * a Newton Jacobian). With `symmetric`, the columns are eliminated as well:
  * b[i] -= A(i, r) vals[r] and A(i, r) = 0 for the other rows, keeping a
  * symmetric matrix symmetric (needed for cholmod). Every Dirichlet row must
- * have its diagonal entry in the pattern. Returns 0 or SL_EBADINPUT. */
+ * have its diagonal entry in the pattern. A matrix whose rows are divided among ranks (A->rows) changes only
+ * the rows this rank owns. Returns 0 or SL_EBADINPUT. */
 int sl_csr_set_dirichlet(sl_csr *A, int32_t n, const int32_t *rows, const double *vals, double *b, int symmetric,
                          sl_diag *d);
 

@@ -4,7 +4,7 @@
 # lines; the boycott vessel (the mixture, transient steps) with fixed steps against KLU; the options given
 # on the command line, in [solver.petsc] and in PETSC_OPTIONS, in that order of precedence; what a scene
 # may not set; and under mpirun: 1, 2 and 3 ranks against the serial answer, each rank assembling 1/N of the
-# cells (the closure points rank 0 evaluates), ranks > 0 writing no file, a failure to open the output
+# cells (the closure points rank 0 evaluates) and keeping only its own rows, ranks > 0 writing no file, a failure to open the output
 # stopping every rank, a restart on another number of ranks.
 set -u
 sluice=$1 configs=$2
@@ -89,16 +89,43 @@ done
 if command -v mpirun > /dev/null; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
   for n in 1 2 3; do
-    mpirun -n $n "$sluice" run "$cav" --set solver.linear=petsc -o c$n.h5 > c$n.log 2>&1
+    mpirun -n $n "$sluice" run "$cav" --set solver.linear=petsc -o c$n.h5 --profile > c$n.log 2>&1
     "$sluice" sample c$n.h5 --field velocity --line 0.5,0:0.5,1 --n 65 > c$n.csv 2>/dev/null
     dv=$(max_diff k_velocity_cav.csv c$n.csv 6)
     echo "cavity on $n rank(s): velocity differs from KLU's by $dv"
     check "cavity on $n rank(s) agrees with KLU ($dv)" below "$dv" 1e-7
     mpirun -n $n "$sluice" run "$box" "${args[@]}" --set solver.linear=petsc -o b$n.h5 > b$n.log 2>&1
     "$sluice" sample b$n.h5 --field phi --line 0.5,0.1:1.2,0.9 --n 41 > b$n.csv 2>/dev/null
+    "$sluice" sample b$n.h5 --field velocity --line 0.5,0.1:1.2,0.9 --n 41 > bu$n.csv 2>/dev/null
     dphi=$(max_diff k_phi.csv b$n.csv 4)
     echo "boycott on $n rank(s): phi differs from KLU's by $dphi"
     check "boycott on $n rank(s) agrees with KLU ($dphi)" below "$dphi" 1e-9
+  done
+  # against the 1-rank PETSc run, to the serial comparisons' tolerances: the cavity's velocity, the boycott's
+  # velocity (each rank holding only its own rows, Newton's norms summed over the ranks)
+  for n in 2 3; do
+    dv=$(max_diff c1.csv c$n.csv 6) dbu=$(max_diff bu1.csv bu$n.csv 6)
+    echo "on $n ranks against 1 rank: cavity velocity differs by $dv, boycott velocity by $dbu"
+    check "cavity on $n ranks agrees with 1 rank ($dv)" below "$dv" 1e-8
+    check "boycott velocity on $n ranks agrees with 1 rank ($dbu)" below "$dbu" 1e-9
+  done
+  # each rank keeps only its own rows: the rows the ranks own hold together exactly the entries of the serial
+  # matrix (PETSc's on one rank, -ksp_view; none lost, none counted twice), and rank 0's matrix is its share,
+  # 1/N of them and its border with rank 1 (under 10 % more on this 32 x 32 mesh), not the whole
+  "$sluice" run "$cav" --set solver.linear=petsc -o kv.h5 --petsc "-ksp_view" > kv.log 2>&1
+  nnz1=$(sed -n 's/^ *total: nonzeros=\([0-9]*\),.*/\1/p' kv.log | tail -n 1)
+  rows1=$(sed -n 's/^ *rows=\([0-9]*\), cols=.*/\1/p' kv.log | tail -n 1)
+  for n in 2 3; do
+    line=$(grep "profile: rows on $n ranks" c$n.log)
+    own=$(sed -n 's/.*this rank owns \([0-9]*\) of \([0-9]*\) rows.*/\1 \2/p' <<<"$line")
+    ent=$(sed -n 's/.*its matrix \([0-9]*\) entries, \([0-9]*\) of them in its rows, of \([0-9]*\) in all.*/\1 \3/p' <<<"$line")
+    read -r own_rows all_rows <<<"$own"
+    read -r here all <<<"$ent"
+    echo "cavity on $n ranks: rank 0 owns ${own_rows:-?} of ${all_rows:-?} rows, holds ${here:-?} of ${all:-?} entries (serial: ${rows1:-?} rows, ${nnz1:-?} entries)"
+    check "$n ranks: the ranks' own rows hold the serial matrix's ${nnz1:-?} entries (${all:-?})" \
+      test -n "$nnz1" -a "${all:-x}" = "$nnz1" -a "${all_rows:-x}" = "$rows1"
+    check "$n ranks: rank 0 holds its share of the entries (${here:-?} of ${all:-?})" \
+      test -n "$here" -a "$((10 * n * ${here:-0}))" -lt "$((11 * ${all:-0}))" -a "$((10 * n * ${own_rows:-0}))" -lt "$((11 * ${all_rows:-0}))"
   done
   # partitioned assembly: each rank assembles its own block of cells and calls the closures there alone. The
   # Bingham cavity at 12 x 12 cells (144, divisible by 2 and 3), one continuation stage, no cell fields: rank

@@ -10,22 +10,16 @@
 int sl_flow_problem_init(sl_flow_problem *p, const sl_th_space *th, sl_diag *d) {
   memset(p, 0, sizeof *p);
   p->th = th;
-  int rc = sl_system_init(&p->sys, th->n_dofs, th->mesh->n_cells, th->dofs_per_cell, th->cell_dofs, d);
+  /* on several ranks (mpirun) each assembles its own block of cells and owns their rows (system.h) */
+  int rank = 0, ranks = 1;
+  int rc = sl_linsolve_ranks(&rank, &ranks, d);
+  if (rc) return rc;
+  if (!sl_linsolve_built("petsc")) rank = 0, ranks = 1; /* without PETSc the scene refuses several ranks */
+  rc = sl_system_init_ranks(&p->sys, th->n_dofs, th->mesh->n_cells, th->dofs_per_cell, th->cell_dofs, rank, ranks, d);
   if (rc) return rc;
   if ((rc = sl_constraints_init(&p->bc, th->n_dofs, d))) {
     sl_system_free(&p->sys);
     return rc;
-  }
-  /* on several ranks (mpirun) each assembles its own block of cells; sl_system_complete sums the parts */
-  int rank = 0, ranks = 1;
-  if ((rc = sl_linsolve_ranks(&rank, &ranks, d))) {
-    sl_flow_problem_free(p);
-    return rc;
-  }
-  if (ranks > 1 && sl_linsolve_built("petsc")) { /* without PETSc the scene refuses several ranks */
-    int32_t c0, c1;
-    sl_system_partition(th->mesh->n_cells, rank, ranks, &c0, &c1);
-    sl_system_own_elements(&p->sys, c0, c1);
   }
   p->opts.density.value = 1.0;
   p->opts.viscosity_value = 1.0;
@@ -98,6 +92,7 @@ static int linear_residual(sl_flow_problem *p, const double *u, double *b, sl_di
   memset(b, 0, (size_t)p->th->n_dofs * sizeof *b);
   int rc = sl_assemble_flow(&p->sys, p->th, u, &p->opts, SL_FLOW_LOAD, d);
   if (!rc) rc = add_tractions(p, d);
+  rc = sl_system_agree(&p->sys, rc, d);
   if (!rc) rc = sl_system_complete(&p->sys, 0, d);
   if (rc) return rc;
   sl_csr_matvec_add(&p->sys.A, -1.0, u, 1.0, b);
@@ -114,6 +109,7 @@ int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_cs
   if (mode != SL_NL_RESIDUAL) p->matrix.valid = 0;
   int rc = sl_assemble_flow(&p->sys, p->th, u, &p->opts, lin[mode], d);
   if (!rc) rc = add_tractions(p, d);
+  rc = sl_system_agree(&p->sys, rc, d);
   if (!rc) rc = sl_system_complete(&p->sys, mode != SL_NL_RESIDUAL, d);
   if (rc) return rc;
   if (mode == SL_NL_RESIDUAL) {

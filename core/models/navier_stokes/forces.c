@@ -5,6 +5,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "core/solve/linsolve.h"
+
 int sl_flow_forces(sl_flow_problem *p, const double *u, const unsigned char *want, unsigned char *work, double *F,
                    sl_diag *d) {
   const sl_th_space *th = p->th;
@@ -15,7 +17,8 @@ int sl_flow_forces(sl_flow_problem *p, const double *u, const unsigned char *wan
   for (int k = 0; k < p->n_tractions && !rc; ++k)
     rc = sl_assemble_flow_traction(&p->sys, th, p->traction[k].boundary, p->traction[k].fn, p->traction[k].user,
                                    p->opts.axisymmetric, d);
-  if (!rc) rc = sl_system_complete(&p->sys, 0, d); /* several ranks: each assembled its own cells */
+  rc = sl_system_agree(&p->sys, rc, d);
+  if (!rc) rc = sl_system_complete(&p->sys, 0, d); /* several ranks: each holds its own rows of b */
   if (rc) return sl_diag_prefix(d, rc, "boundary forces");
   const sl_dofmap *vel = th->vel;
   const int nv = m->nv_per_cell, nb = vel->dofs_per_cell;
@@ -39,5 +42,9 @@ int sl_flow_forces(sl_flow_problem *p, const double *u, const unsigned char *wan
     /* b = -R: the force on the body, -R(v_i), is the sum of b */
     for (int i = 0; i < th->n_comp; ++i) F[th->n_comp * bd + i] = scale * f[i];
   }
+  /* several ranks: each summed the rows it owns (b is zero in the others) */
+  for (int bd = 0; bd < m->n_boundaries && p->sys.distributed; ++bd)
+    if (want[bd] && (rc = sl_linsolve_sum_ordered(F + th->n_comp * bd, th->n_comp, d)))
+      return sl_diag_prefix(d, rc, "boundary forces");
   return 0;
 }
