@@ -1099,6 +1099,12 @@ static int projection_setup(sl_flow *f, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "%s = projection: a split time step needs a transient [time] scheme "
                                         "(bdf1 or bdf2); a steady scene is solved monolithic",
                        sl_scene_where(sc, &sc->flow.scheme, at, sizeof at));
+  int rank = 0, ranks = 1, rc0 = sl_linsolve_ranks(&rank, &ranks, d);
+  if (rc0) return rc0;
+  if (ranks > 1) /* its operators are assembled and solved whole on one rank */
+    return sl_diag_set(d, SL_EBADINPUT, "%s = projection runs on one rank (this run has %d): use scheme = monolithic "
+                                        "under mpirun",
+                       sl_scene_where(sc, &sc->flow.scheme, at, sizeof at), ranks);
   sl_projection_opts o = {.chi = f->riding ? fmin(f->ph.density, f->rho_solid) : f->ph.density,
                           .mu_rotational = f->ph.visc ? 0.0 : f->ph.viscosity,
                           .open = f->bcs.open,

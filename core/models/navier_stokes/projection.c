@@ -60,9 +60,6 @@ static int build_divergence(sl_projection *pj, const sl_flow_problem *prob, sl_d
   sl_system s;
   int rc = sl_system_init(&s, th->n_dofs, th->mesh->n_cells, th->dofs_per_cell, th->cell_dofs, d);
   if (rc) return rc;
-  int32_t e0, e1;
-  sl_system_elements(&prob->sys, &e0, &e1);
-  if (e0 != 0 || e1 != th->mesh->n_cells) sl_system_own_elements(&s, e0, e1);
   sl_flow_opts o = {.axisymmetric = prob->opts.axisymmetric, .density = {NULL, NULL, 1.0}, .viscosity_value = 1.0,
                     .quad_degree = prob->opts.quad_degree};
   double *zero = calloc((size_t)th->n_dofs, sizeof *zero);
@@ -101,9 +98,6 @@ static int build_poisson(sl_projection *pj, const sl_flow_problem *prob, sl_diag
   const sl_mesh *m = pj->th->mesh;
   int rc = sl_system_init(&pj->psys, pm->n_dofs, m->n_cells, pm->dofs_per_cell, pm->cell_dofs, d);
   if (rc) return rc;
-  int32_t e0, e1;
-  sl_system_elements(&prob->sys, &e0, &e1);
-  if (e0 != 0 || e1 != m->n_cells) sl_system_own_elements(&pj->psys, e0, e1);
   sl_system_zero(&pj->psys);
   sl_diffusion_opts o = {.diffusivity = {NULL, NULL, 1.0}, .source = {NULL, NULL, 1.0},
                          .axisymmetric = prob->opts.axisymmetric};
