@@ -11,6 +11,7 @@
  *   umfpack        ... with [solver] linear = umfpack;
  *   klu            ... with [solver] linear = klu;
  *   no reuse       ... with [solver] reuse = never (a factorisation per changed matrix);
+ *   projection     ... with [flow] scheme = projection (the split step), and with it at [time] tolerance 2.5e-4;
  *   before         --before BIN: another build (e.g. of the commit before the change), with its defaults;
  *   before, ref. BLAS  the same with --reference-blas DIR first on LD_LIBRARY_PATH (Debian's reference
  *                  libblas.so.3, e.g. /usr/lib/x86_64-linux-gnu/blas).
@@ -80,21 +81,25 @@ enum { N_CASES = (int)(sizeof cases / sizeof cases[0]) };
 typedef struct variant {
   const char *name;
   const char *set;   /* an override, or NULL */
+  const char *set2;  /* a second one, or NULL */
   const char *petsc; /* --petsc options, or NULL */
   int before;      /* runs --before BIN */
   int ref_blas;    /* with --reference-blas first on LD_LIBRARY_PATH */
 } variant;
 
 static const variant variants[] = {
-    {"before, ref. BLAS", NULL, NULL, 1, 1},
-    {"before", NULL, NULL, 1, 0},
-    {"no reuse", "solver.reuse=never", NULL, 0, 0},
-    {"umfpack", "solver.linear=umfpack", NULL, 0, 0},
-    {"klu", "solver.linear=klu", NULL, 0, 0},
-    {"after", NULL, NULL, 0, 0},
+    {"before, ref. BLAS", NULL, NULL, NULL, 1, 1},
+    {"before", NULL, NULL, NULL, 1, 0},
+    {"no reuse", "solver.reuse=never", NULL, NULL, 0, 0},
+    {"umfpack", "solver.linear=umfpack", NULL, NULL, 0, 0},
+    {"klu", "solver.linear=klu", NULL, NULL, 0, 0},
+    {"after", NULL, NULL, NULL, 0, 0},
+    /* the split step (core/models/navier_stokes/projection.h), at the scene's tolerance and at a quarter of it */
+    {"projection", "flow.scheme=projection", NULL, NULL, 0, 0},
+    {"projection, tolerance 2.5e-4", "flow.scheme=projection", "time.tolerance=2.5e-4", NULL, 0, 0},
     /* a build with -DSLUICE_WITH_PETSC=ON: its defaults, and MUMPS (parallel direct) through it */
-    {"petsc", "solver.linear=petsc", NULL, 0, 0},
-    {"petsc, mumps", "solver.linear=petsc", "-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps", 0, 0},
+    {"petsc", "solver.linear=petsc", NULL, NULL, 0, 0},
+    {"petsc, mumps", "solver.linear=petsc", NULL, "-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps", 0, 0},
 };
 enum { N_VARIANTS = (int)(sizeof variants / sizeof variants[0]) };
 
@@ -238,13 +243,14 @@ int main(int argc, char **argv) {
         if (!use_var[v] || (cases[c].iterative_only && strcmp(variants[v].name, "petsc") != 0)) continue;
         char scene[4096];
         snprintf(scene, sizeof scene, "%s/configs/%s.ini", src, cases[c].scene);
-        char *args[4 + 2 * MAX_SETS + 4];
+        char *args[4 + 2 * MAX_SETS + 6];
         int na = 0;
         args[na++] = (char *)(variants[v].before ? before : self);
         args[na++] = "run";
         args[na++] = scene;
         for (int k = 0; cases[c].sets[k]; ++k) args[na++] = "--set", args[na++] = (char *)cases[c].sets[k];
         if (variants[v].set) args[na++] = "--set", args[na++] = (char *)variants[v].set;
+        if (variants[v].set2) args[na++] = "--set", args[na++] = (char *)variants[v].set2;
         if (variants[v].petsc) args[na++] = "--petsc", args[na++] = (char *)variants[v].petsc;
         args[na++] = "-o", args[na++] = out;
         args[na] = NULL;

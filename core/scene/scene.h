@@ -102,6 +102,7 @@ typedef struct sl_scene {
   } solid;
   struct {
     int third_component, convection;
+    int scheme; /* 0 monolithic, 1 projection (core/models/navier_stokes/projection.h) */
     sl_reals gravity, rotation_centre;
     sl_scene_exprs body_force; /* of x, y, t */
     double rotation;

@@ -35,6 +35,7 @@ typedef struct box_scene {
   double end, dt, every;
   int convection;         /* [flow] convection = true, with adaptive BDF2 steps (else Stokes flow, fixed BDF1) */
   int solve_every_step;   /* solve the flow even where its result is known ([solver] skip_known = false) */
+  int projection;         /* [flow] scheme = projection (the split step) */
   const char *extra;      /* more sections at the end, or NULL */
 } box_scene;
 
@@ -70,8 +71,11 @@ static inline void box_text(const box_scene *s, char *buf, size_t len) {
 static inline int box_run(const box_scene *s, const char *out, sluice_summary *res, sl_diag *d) {
   static char text[8192];
   box_text(s, text, sizeof text);
-  const char *every[] = {"solver.skip_known=false", NULL};
-  sluice_open_opts oo = {.sets = s->solve_every_step ? every : NULL};
+  const char *sets[3] = {NULL, NULL, NULL};
+  int n_sets = 0;
+  if (s->solve_every_step) sets[n_sets++] = "solver.skip_known=false";
+  if (s->projection) sets[n_sets++] = "flow.scheme=projection";
+  sluice_open_opts oo = {.sets = n_sets ? sets : NULL};
   sluice *sc = NULL;
   sluice_error e = {0, ""};
   sluice_summary r;

@@ -134,3 +134,11 @@ int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const 
   oo.matrix_current = oo.linear && matrix_current(p);
   return sl_newton_solve(&p->sys.A, p->sys.b, p->th->n_dofs, u, sl_flow_problem_assemble, p, ls, &oo, st, d);
 }
+
+int sl_flow_problem_linearise(sl_flow_problem *p, double *u, sl_diag *d) {
+  int rc = collect_fixed(p, d);
+  if (rc) return rc;
+  sl_constraints_impose(&p->bc, u);
+  sl_system_zero(&p->sys);
+  return sl_flow_problem_assemble(p, u, SL_NL_NEWTON, &p->sys.A, p->sys.b, d);
+}

@@ -1,0 +1,400 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* The projection step of the flow (projection.h). */
+#include "core/models/navier_stokes/projection.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "core/assembly/operators.h"
+#include "core/solve/krylov.h"
+
+static double wall(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+struct sl_projection {
+  const sl_th_space *th;
+  sl_projection_opts o;
+  int32_t nv, np;
+  /* the velocity block of the monolithic matrix: its own pattern, values copied through map */
+  sl_system vsys;
+  int32_t *vel_cell_dofs;
+  int32_t *map; /* [vsys.A.nnz]: index into the monolithic matrix's values */
+  uint64_t map_pattern;
+  sl_linsolve *ls_v; /* F directly: the fallback */
+  /* The preconditioner of F: its diagonal blocks, one per velocity component (the couplings between components
+   * dropped), factorised when a solve becomes slow and kept meanwhile (P's values are F's of that step). */
+  sl_csr P;
+  int32_t *comp_dofs, *pmap; /* the per-component element dofs; [P.nnz] indices into F's values */
+  sl_linsolve *ls_P;
+  sl_krylov kry;
+  int refresh;           /* copy F into P (and so refactorise) at the next solve */
+  long krylov_solves, krylov_iterations, refreshes, direct_solves;
+  /* the divergence: B = -int q div(v) (pressure rows, velocity columns), and the lumped pressure mass */
+  sl_csr B;
+  double *mass;
+  /* the Poisson operator, constrained, factorised once */
+  sl_system psys;
+  sl_constraints pbc;
+  int32_t n_pfixed, *pfixed;
+  sl_linsolve *ls_p;
+  long poisson_solves;
+  /* the increments of the last two accepted steps and their mass coefficients; the trial's */
+  int n_hist;
+  double m_hist[2];
+  double *phi_hist[2];
+  double *phi_trial, m_trial;
+  int trial; /* 1: a solved trial, 0: skipped, -1: none */
+  double *rhs, *x, *div;
+  double head[4]; /* the checkpoint's [n_hist, m^k, m^{k-1}, refresh] */
+};
+
+/* B = -int q div(v): the continuity rows of a Stokes assembly (they depend on the geometry alone). */
+static int build_divergence(sl_projection *pj, const sl_flow_problem *prob, sl_diag *d) {
+  const sl_th_space *th = pj->th;
+  sl_system s;
+  int rc = sl_system_init(&s, th->n_dofs, th->mesh->n_cells, th->dofs_per_cell, th->cell_dofs, d);
+  if (rc) return rc;
+  sl_flow_opts o = {.axisymmetric = prob->opts.axisymmetric, .density = {NULL, NULL, 1.0}, .viscosity_value = 1.0,
+                    .quad_degree = prob->opts.quad_degree};
+  double *zero = calloc((size_t)th->n_dofs, sizeof *zero);
+  if (!zero) rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
+  if (!rc) rc = sl_assemble_flow(&s, th, zero, &o, SL_FLOW_NEWTON, d);
+  if (!rc) rc = sl_system_complete(&s, 1, d);
+  free(zero);
+  int32_t nv = pj->nv, np = pj->np, nnz = 0;
+  const sl_csr *A = &s.A;
+  if (!rc) {
+    for (int32_t i = 0; i < np; ++i)
+      for (int32_t k = A->row_ptr[nv + i]; k < A->row_ptr[nv + i + 1]; ++k) nnz += A->col_idx[k] < nv;
+    pj->B.n_rows = np, pj->B.n_cols = nv, pj->B.nnz = nnz;
+    pj->B.row_ptr = malloc((size_t)(np + 1) * sizeof *pj->B.row_ptr);
+    pj->B.col_idx = malloc((size_t)(nnz + 1) * sizeof *pj->B.col_idx);
+    pj->B.values = malloc((size_t)(nnz + 1) * sizeof *pj->B.values);
+    if (!pj->B.row_ptr || !pj->B.col_idx || !pj->B.values) rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
+  }
+  if (!rc) {
+    int32_t j = 0;
+    pj->B.row_ptr[0] = 0;
+    for (int32_t i = 0; i < np; ++i) {
+      for (int32_t k = A->row_ptr[nv + i]; k < A->row_ptr[nv + i + 1]; ++k)
+        if (A->col_idx[k] < nv) pj->B.col_idx[j] = A->col_idx[k], pj->B.values[j++] = A->values[k];
+      pj->B.row_ptr[i + 1] = j;
+    }
+  }
+  sl_system_free(&s);
+  return rc;
+}
+
+/* The Poisson operator int grad(phi).grad(q) (r-weighted axisymmetric) with its Dirichlet nodes, and the
+ * lumped mass int q (the same weight). */
+static int build_poisson(sl_projection *pj, const sl_flow_problem *prob, sl_diag *d) {
+  const sl_dofmap *pm = pj->th->pres;
+  const sl_mesh *m = pj->th->mesh;
+  int rc = sl_system_init(&pj->psys, pm->n_dofs, m->n_cells, pm->dofs_per_cell, pm->cell_dofs, d);
+  if (rc) return rc;
+  sl_system_zero(&pj->psys);
+  sl_diffusion_opts o = {.diffusivity = {NULL, NULL, 1.0}, .source = {NULL, NULL, 1.0},
+                         .axisymmetric = prob->opts.axisymmetric};
+  if ((rc = sl_assemble_diffusion(&pj->psys, pm, &o, d))) return rc;
+  if ((rc = sl_system_complete(&pj->psys, 1, d))) return rc;
+  memcpy(pj->mass, pj->psys.b, (size_t)pj->np * sizeof *pj->mass);
+  if ((rc = sl_constraints_init(&pj->pbc, pm->n_dofs, d))) return rc;
+  int any = 0;
+  for (int b = 0; b < m->n_boundaries && !rc; ++b)
+    if (pj->o.open && pj->o.open[b]) {
+      rc = sl_constraints_fix_boundary(&pj->pbc, pm, m->boundary_names[b], 0, NULL, NULL, 0.0, d);
+      any = 1;
+    }
+  if (rc) return rc;
+  if (!any) sl_constraints_fix(&pj->pbc, 0, 0.0); /* the datum: phi, like p, up to a constant */
+  pj->pfixed = malloc(((size_t)pj->pbc.n_fixed + 1) * sizeof *pj->pfixed);
+  if (!pj->pfixed) return sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
+  for (int32_t i = 0; i < pm->n_dofs; ++i)
+    if (pj->pbc.fixed[i]) pj->pfixed[pj->n_pfixed++] = i;
+  return sl_csr_set_dirichlet(&pj->psys.A, pj->n_pfixed, pj->pfixed, NULL, NULL, 1, d);
+}
+
+int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *o, sl_projection **out,
+                         sl_diag *d) {
+  *out = NULL;
+  if (!(o->chi > 0.0)) {
+    sl_linsolve_destroy(o->velocity_solver), sl_linsolve_destroy(o->poisson_solver);
+    sl_linsolve_destroy(o->preconditioner_solver);
+    return sl_diag_set(d, SL_EBADINPUT, "projection: the smallest density %g is not positive", o->chi);
+  }
+  sl_projection *pj = calloc(1, sizeof *pj);
+  if (!pj) {
+    sl_linsolve_destroy(o->velocity_solver), sl_linsolve_destroy(o->poisson_solver);
+    sl_linsolve_destroy(o->preconditioner_solver);
+    return sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
+  }
+  pj->ls_v = o->velocity_solver, pj->ls_p = o->poisson_solver, pj->ls_P = o->preconditioner_solver;
+  pj->refresh = 1;
+  const sl_th_space *th = prob->th;
+  pj->th = th, pj->o = *o, pj->nv = th->p_offset, pj->np = th->pres->n_dofs, pj->trial = -1;
+  int nc = th->mesh->n_cells, nbv = th->n_comp * th->vel->dofs_per_cell;
+  pj->vel_cell_dofs = malloc((size_t)nc * nbv * sizeof *pj->vel_cell_dofs);
+  pj->mass = malloc((size_t)pj->np * sizeof *pj->mass);
+  pj->phi_hist[0] = calloc((size_t)pj->np, sizeof(double));
+  pj->phi_hist[1] = calloc((size_t)pj->np, sizeof(double));
+  pj->phi_trial = calloc((size_t)pj->np, sizeof(double));
+  pj->rhs = malloc((size_t)(pj->nv > pj->np ? pj->nv : pj->np) * sizeof *pj->rhs);
+  pj->x = malloc((size_t)(pj->nv > pj->np ? pj->nv : pj->np) * sizeof *pj->x);
+  pj->div = malloc((size_t)pj->np * sizeof *pj->div);
+  int rc = 0;
+  if (!pj->vel_cell_dofs || !pj->mass || !pj->phi_hist[0] || !pj->phi_hist[1] || !pj->phi_trial || !pj->rhs ||
+      !pj->x || !pj->div)
+    rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
+  /* each cell's velocity dofs lead its combined list (core/fe/dofmap.h) */
+  for (int c = 0; c < nc && !rc; ++c)
+    memcpy(pj->vel_cell_dofs + (size_t)c * nbv, th->cell_dofs + (size_t)c * th->dofs_per_cell,
+           (size_t)nbv * sizeof *pj->vel_cell_dofs);
+  if (!rc) rc = sl_system_init(&pj->vsys, pj->nv, nc, nbv, pj->vel_cell_dofs, d);
+  if (!rc) pj->map = malloc(((size_t)pj->vsys.A.nnz + 1) * sizeof *pj->map);
+  if (!rc && !pj->map) rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
+  int ncomp = th->n_comp, nb = th->vel->dofs_per_cell;
+  if (!rc && !(pj->comp_dofs = malloc((size_t)nc * nbv * sizeof *pj->comp_dofs)))
+    rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
+  if (!rc) { /* element (cell, component): that component's dofs of the cell */
+    memcpy(pj->comp_dofs, pj->vel_cell_dofs, (size_t)nc * nbv * sizeof *pj->comp_dofs);
+    rc = sl_csr_build_uniform(&pj->P, pj->nv, nc * ncomp, nb, pj->comp_dofs, d);
+  }
+  if (!rc && !(pj->pmap = malloc(((size_t)pj->P.nnz + 1) * sizeof *pj->pmap)))
+    rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
+  if (!rc) { /* P's entries among F's (the same rows, fewer columns) */
+    const sl_csr *F = &pj->vsys.A, *P = &pj->P;
+    for (int32_t i = 0; i < pj->nv && !rc; ++i) {
+      int32_t k = F->row_ptr[i], end = F->row_ptr[i + 1];
+      for (int32_t j = P->row_ptr[i]; j < P->row_ptr[i + 1]; ++j) {
+        while (k < end && F->col_idx[k] < P->col_idx[j]) ++k;
+        if (k == end || F->col_idx[k] != P->col_idx[j]) {
+          rc = sl_diag_set(d, SL_EFAILED, "projection: a diagonal block's entry is not in the velocity block");
+          break;
+        }
+        pj->pmap[j] = k;
+      }
+    }
+  }
+  if (!rc) rc = sl_krylov_init(&pj->kry, pj->nv, SL_PROJECTION_KRYLOV_BUDGET, d);
+  if (!rc) rc = build_divergence(pj, prob, d);
+  if (!rc) rc = build_poisson(pj, prob, d);
+  if (rc) {
+    sl_projection_destroy(pj);
+    return rc;
+  }
+  *out = pj;
+  return 0;
+}
+
+void sl_projection_destroy(sl_projection *pj) {
+  if (!pj) return;
+  sl_linsolve_destroy(pj->ls_v), sl_linsolve_destroy(pj->ls_p), sl_linsolve_destroy(pj->ls_P);
+  sl_csr_free(&pj->P);
+  sl_krylov_free(&pj->kry);
+  free(pj->comp_dofs), free(pj->pmap);
+  sl_system_free(&pj->vsys), sl_system_free(&pj->psys);
+  sl_constraints_free(&pj->pbc);
+  sl_csr_free(&pj->B);
+  free(pj->vel_cell_dofs), free(pj->map), free(pj->mass), free(pj->pfixed);
+  free(pj->phi_hist[0]), free(pj->phi_hist[1]), free(pj->phi_trial);
+  free(pj->rhs), free(pj->x), free(pj->div);
+  free(pj);
+}
+
+/* The entries of the monolithic A's velocity block in the velocity pattern (a subset of A's rows, the same
+ * element couplings), once per pattern of A. */
+static int build_map(sl_projection *pj, const sl_csr *A, sl_diag *d) {
+  const sl_csr *F = &pj->vsys.A;
+  for (int32_t i = 0; i < pj->nv; ++i) {
+    int32_t k = A->row_ptr[i], end = A->row_ptr[i + 1];
+    for (int32_t j = F->row_ptr[i]; j < F->row_ptr[i + 1]; ++j) {
+      while (k < end && A->col_idx[k] < F->col_idx[j]) ++k;
+      if (k == end || A->col_idx[k] != F->col_idx[j])
+        return sl_diag_set(d, SL_EFAILED, "projection: the velocity block's entry (%d, %d) is not in the matrix",
+                           (int)i, (int)F->col_idx[j]);
+      pj->map[j] = k;
+    }
+  }
+  pj->map_pattern = A->pattern_id;
+  return 0;
+}
+
+static int apply_F(void *user, const double *x, double *y, sl_diag *d) {
+  (void)d;
+  sl_csr_matvec(user, x, y);
+  return 0;
+}
+
+static int apply_P(void *user, const double *x, double *y, sl_diag *d) {
+  sl_projection *pj = user;
+  return sl_linsolve_solve(pj->ls_P, &pj->P, x, y, d);
+}
+
+/* F x = b to the relative residual rtol: FGMRES preconditioned by the diagonal blocks of an earlier F
+ * (block Jacobi: Saad 2003, Iterative Methods for Sparse Linear Systems, 2nd ed., chapter 12), the blocks refactorised after a solve that needed more than
+ * SL_PROJECTION_SLOW iterations or failed; a solve that fails with fresh blocks is solved directly. */
+static int velocity_solve(sl_projection *pj, sl_csr *F, const double *b, double rtol, sl_diag *d) {
+  double *x = pj->x;
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    int fresh = pj->refresh;
+    if (pj->refresh) {
+      for (int32_t j = 0; j < pj->P.nnz; ++j) pj->P.values[j] = F->values[pj->pmap[j]];
+      sl_csr_touch(&pj->P);
+      pj->refresh = 0, pj->refreshes++;
+    }
+    memset(x, 0, (size_t)pj->nv * sizeof *x);
+    sl_krylov_opts ko = {.rtol = rtol, .restart = SL_PROJECTION_KRYLOV_BUDGET,
+                         .max_iterations = SL_PROJECTION_KRYLOV_BUDGET, .predict = 1};
+    sl_krylov_result kr;
+    sl_diag dk = {{0}};
+    int rc = sl_fgmres(&pj->kry, apply_F, F, apply_P, pj, b, x, &ko, &kr, &dk);
+    pj->krylov_iterations += kr.iterations;
+    if (rc == 0 && kr.status == SL_KRYLOV_CONVERGED) {
+      pj->krylov_solves++;
+      if (kr.iterations > SL_PROJECTION_SLOW) pj->refresh = 1;
+      return 0;
+    }
+    pj->refresh = 1;
+    if (fresh) break; /* fresh blocks did not do: F itself */
+  }
+  pj->direct_solves++;
+  return sl_linsolve_solve(pj->ls_v, F, b, x, d);
+}
+
+/* The pressure predictor's increments: p# = p^k + sum_j w_j phi^{k-j} (projection.h). The BDF2 coefficients
+ * follow from m h = a0 = (1 + 2 w)/(1 + w) (core/time/bdf.h): w = (a0 - 1)/(2 - a0); BDF1 has a0 = 1. */
+static void predictor_weights(const sl_projection *pj, double m, double h, double w[2]) {
+  double a0 = m * h;
+  w[0] = w[1] = 0.0;
+  if (pj->n_hist == 0) return;
+  if (fabs(a0 - 1.0) < 1e-12 || pj->n_hist < 2) { /* BDF1 (or a first history): c_0 = -1/h */
+    w[0] = 1.0 / (h * pj->m_hist[0]);
+    return;
+  }
+  double om = (a0 - 1.0) / (2.0 - a0);
+  double c0 = -(1.0 + om) / h, c1 = om * om / ((1.0 + om) * h);
+  w[0] = -c0 / pj->m_hist[0], w[1] = -c1 / pj->m_hist[1];
+}
+
+int sl_projection_step(sl_projection *pj, sl_flow_problem *prob, const sl_step *s, double *u, double linear_rtol,
+                       double *t_assembly, sl_diag *d) {
+  const int32_t nv = pj->nv, np = pj->np;
+  double m = s->mass_coef, w[2];
+  predictor_weights(pj, m, s->dt, w);
+  /* the iterate: the predictor's velocity, the predicted pressure */
+  double *p = u + nv;
+  const double *pk = s->state ? s->state + nv : p;
+  for (int32_t i = 0; i < np; ++i) p[i] = pk[i] + w[0] * pj->phi_hist[0][i] + w[1] * pj->phi_hist[1][i];
+  double t0 = wall();
+  int rc = sl_flow_problem_linearise(prob, u, d);
+  if (t_assembly) *t_assembly += wall() - t0;
+  if (rc) return rc;
+  const sl_csr *A = &prob->sys.A;
+  if (A->pattern_id != pj->map_pattern && (rc = build_map(pj, A, d))) return rc;
+  sl_csr *F = &pj->vsys.A;
+  for (int32_t j = 0; j < F->nnz; ++j) F->values[j] = A->values[pj->map[j]];
+  sl_csr_touch(F);
+  if ((rc = velocity_solve(pj, F, prob->sys.b, linear_rtol, d))) return sl_diag_prefix(d, rc, "projection: the velocity solve");
+  for (int32_t i = 0; i < nv; ++i) u[i] += pj->x[i];
+  /* the increment: int grad(phi).grad(q) = chi m (B u~)_q */
+  sl_csr_matvec(&pj->B, u, pj->div);
+  double f = pj->o.chi * m;
+  for (int32_t i = 0; i < np; ++i) pj->rhs[i] = f * pj->div[i];
+  for (int32_t k = 0; k < pj->n_pfixed; ++k) pj->rhs[pj->pfixed[k]] = 0.0;
+  if ((rc = sl_linsolve_solve(pj->ls_p, &pj->psys.A, pj->rhs, pj->phi_trial, d)))
+    return sl_diag_prefix(d, rc, "projection: the pressure Poisson solve");
+  pj->poisson_solves++;
+  /* p^{k+1} = p^k + phi - mu div u~, div u~ ~ -(B u~) / mass (lumped) */
+  double mu = pj->o.mu_rotational;
+  for (int32_t i = 0; i < np; ++i) p[i] = pk[i] + pj->phi_trial[i] + (mu > 0.0 ? mu * pj->div[i] / pj->mass[i] : 0.0);
+  if (pj->o.datum) { /* the pressure datum stays 0, as the monolithic solve's */
+    double p0 = p[0];
+    for (int32_t i = 0; i < np; ++i) p[i] -= p0;
+  }
+  pj->m_trial = m, pj->trial = 1;
+  return 0;
+}
+
+int sl_projection_needs_start(const sl_projection *pj) { return pj->n_hist == 0; }
+
+void sl_projection_started(sl_projection *pj, double mass_coef) {
+  memset(pj->phi_trial, 0, (size_t)pj->np * sizeof *pj->phi_trial);
+  pj->m_trial = mass_coef, pj->trial = 1;
+}
+
+void sl_projection_skip(sl_projection *pj) {
+  memset(pj->phi_trial, 0, (size_t)pj->np * sizeof *pj->phi_trial);
+  pj->trial = 0;
+}
+
+void sl_projection_accept(sl_projection *pj) {
+  if (pj->trial < 0) return;
+  if (pj->trial == 0) { /* a skipped step: no increment, and the history restarts */
+    pj->n_hist = 0;
+    memset(pj->phi_hist[0], 0, (size_t)pj->np * sizeof(double));
+    memset(pj->phi_hist[1], 0, (size_t)pj->np * sizeof(double));
+    pj->trial = -1;
+    return;
+  }
+  double *old = pj->phi_hist[1];
+  pj->phi_hist[1] = pj->phi_hist[0], pj->m_hist[1] = pj->m_hist[0];
+  pj->phi_hist[0] = pj->phi_trial, pj->m_hist[0] = pj->m_trial;
+  pj->phi_trial = old;
+  if (pj->n_hist < 2) pj->n_hist++;
+  pj->trial = -1;
+}
+
+void sl_projection_drop_numeric(sl_projection *pj) {
+  /* a restart factorises the checkpointed blocks afresh: so does the run that goes on */
+  sl_linsolve_drop_numeric(pj->ls_v);
+  sl_linsolve_drop_numeric(pj->ls_P);
+}
+
+int sl_projection_checkpoint(sl_projection *pj, sl_checkpoint_array *a, int max) {
+  if (max < 4) return 0;
+  /* [n_hist, m^k, m^{k-1}, refresh], the two increments and the preconditioner's values */
+  double *head = pj->head;
+  head[0] = pj->n_hist, head[1] = pj->m_hist[0], head[2] = pj->m_hist[1], head[3] = pj->refresh;
+  snprintf(a[0].name, sizeof a[0].name, "projection_history"), a[0].n = 4, a[0].data = head;
+  snprintf(a[1].name, sizeof a[1].name, "projection_phi"), a[1].n = pj->np, a[1].data = pj->phi_hist[0];
+  snprintf(a[2].name, sizeof a[2].name, "projection_phi_prev"), a[2].n = pj->np, a[2].data = pj->phi_hist[1];
+  snprintf(a[3].name, sizeof a[3].name, "projection_blocks"), a[3].n = pj->P.nnz, a[3].data = pj->P.values;
+  return 4;
+}
+
+int sl_projection_restore(sl_projection *pj, const sl_checkpoint *ck, sl_diag *d) {
+  const sl_checkpoint_array *h = sl_checkpoint_find(ck, "projection_history");
+  const sl_checkpoint_array *a = sl_checkpoint_find(ck, "projection_phi");
+  const sl_checkpoint_array *b = sl_checkpoint_find(ck, "projection_phi_prev");
+  const sl_checkpoint_array *P = sl_checkpoint_find(ck, "projection_blocks");
+  if (!h && !a && !b && !P) return 0;
+  if (!h || !a || !b || !P || h->n != 4 || a->n != pj->np || b->n != pj->np || P->n != pj->P.nnz)
+    return sl_diag_set(d, SL_EBADINPUT, "checkpoint: the projection's pressure increments do not fit the mesh "
+                                        "(%lld pressure values, the scene has %d)",
+                       a ? (long long)a->n : 0LL, (int)pj->np);
+  pj->n_hist = (int)h->data[0], pj->m_hist[0] = h->data[1], pj->m_hist[1] = h->data[2];
+  pj->refresh = h->data[3] != 0.0;
+  memcpy(pj->P.values, P->data, (size_t)pj->P.nnz * sizeof(double));
+  sl_csr_touch(&pj->P);
+  memcpy(pj->phi_hist[0], a->data, (size_t)pj->np * sizeof(double));
+  memcpy(pj->phi_hist[1], b->data, (size_t)pj->np * sizeof(double));
+  return 0;
+}
+
+const sl_linsolve *sl_projection_velocity_solver(const sl_projection *pj) { return pj->ls_P; }
+
+void sl_projection_summary(const sl_projection *pj, char *buf, size_t cap) {
+  const sl_linsolve_stats *ps = sl_linsolve_get_stats(pj->ls_p);
+  long n = pj->krylov_solves + pj->direct_solves;
+  snprintf(buf, cap,
+           "projection: velocity %ld solves, %ld reused (FGMRES with its diagonal blocks' factors, %.1f iterations a "
+           "solve), %ld numeric (the blocks), %ld direct; pressure Poisson %ld factorisation%s, %ld solves",
+           n, pj->krylov_solves, pj->krylov_solves ? (double)pj->krylov_iterations / pj->krylov_solves : 0.0,
+           pj->refreshes, pj->direct_solves, ps->n_numeric, ps->n_numeric == 1 ? "" : "s", pj->poisson_solves);
+}
