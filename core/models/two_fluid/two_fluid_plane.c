@@ -320,6 +320,7 @@ static void plane_accept(void *self, const sl_step *s, int *steady) {
 static void release(tfp_run *r) {
   free(r->cellbuf);
   sl_point_release(&r->m.c.drag.pc), sl_point_release(&r->m.c.ps.pc);
+  tfp_dispersion_free(&r->m.disp);
   tfp_free(&r->m);
   free(r);
 }
@@ -340,6 +341,7 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   if (!rc) r->m.n_b = r->mesh->n_boundaries;
   if (!rc) rc = tfp_setup(&r->m, d);
   if (!rc) rc = tfp_solids_bind(&r->m, sc, r->cfg, d);
+  if (!rc) rc = tfp_dispersion_bind(&r->m, sc, r->cfg, d);
   /* the phases' convective acceleration, off by default as in the 1-D column (which has none) */
   r->m.convection = sc->flow.convection;
   if (!rc && !(r->cellbuf = calloc(2 * (size_t)r->m.fv.nc, sizeof *r->cellbuf)))

@@ -75,6 +75,18 @@ typedef struct tfp_solids {
   int any; /* the solids carry a stress (a viscosity at all) */
 } tfp_solids;
 
+/* The turbulent dispersion of the solids (two_fluid_plane_dispersion.c), with [closure.turbulence]: the cells' k
+ * and epsilon (of the scene's expressions) and eddy viscosity, per face the gradient flux's diffusivity and the
+ * turbophoretic drift velocity; their solids flux is added to the transport's. */
+typedef struct tfp_dispersion {
+  int on, turbophoretic;
+  double schmidt;
+  sl_closure *c; /* the scene's (not owned) */
+  sl_point_closure pc;
+  double *k, *eps, *mu_t, *tau, *slip, *K, *dK, *phi; /* cells [nc] */
+  double *D, *v;                                        /* faces [nf]: m^2/s, m/s along +x or +y */
+} tfp_dispersion;
+
 typedef struct tfp_model {
   sl_tensor_grid grid;
   sl_fv_grid fv;   /* its staggered grid: cells, faces, neighbours, periodic images, geometry */
@@ -82,6 +94,7 @@ typedef struct tfp_model {
   int convection;  /* [flow] convection: the phases' rho alpha (u . grad) u */
   double g[2];
   tfp_solids s;
+  tfp_dispersion disp; /* zero: none */
   tf_column c; /* the physics, the closures and the numerical keys (its column geometry is unused) */
   const tfp_boundary *b; /* [n_b] */
   int n_b;
@@ -188,6 +201,14 @@ int tfp_solids_wall(tfp_model *m, int f, int end, double mu, double h, double *R
 int tfp_column_start(tfp_model *m, int fluid_given, const char *where, sl_diag *d);
 /* The column's mixture flux from a restored state. */
 void tfp_column_restored(tfp_model *m);
+
+/* [closure.turbulence] and the [two_fluid] dispersion keys bound (two_fluid_plane_dispersion.c): nothing when the
+ * scene has neither; SL_EBADINPUT with file:line for a key without the closure or k, epsilon outside (0, 1e6],
+ * (0, 1e9] at a cell. After tfp_setup. */
+int tfp_dispersion_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_diag *d);
+/* The faces' D and v at the solids fraction phi and the iterate's velocities (uf, us). 0 or SL_EFAILED. */
+int tfp_dispersion_update(tfp_model *m, const double *phi, const double *uf, const double *us, sl_diag *d);
+void tfp_dispersion_free(tfp_dispersion *p);
 
 /* The solids volume (per radian when axisymmetric) in the domain. */
 double tfp_inventory(const tfp_model *m, const double *phi);
