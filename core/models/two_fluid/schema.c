@@ -209,6 +209,9 @@ static const sl_key plane_keys[] = {
     {.section = "two_fluid", .name = "dispersion_schmidt", .type = SL_KEY_REAL, C(dispersion_schmidt), .def = 1.0,
      .min = 1e-3, .max = 1e3, .help = "sigma_d of the solids' turbulent dispersion nu_t/sigma_d (Krampa 2009 eq 4.59: "
                                       "1)"},
+    {.section = "two_fluid", .name = "swirl", .type = SL_KEY_BOOL, C(swirl),
+     .help = "axisymmetric: both phases' azimuthal velocities, driven by walls' angular_velocity (carried by the "
+             "meridional flow; no centrifugal force back on it)"},
     {.section = "two_fluid", .name = "dispersion", .type = SL_KEY_CHOICE, C(dispersion),
      .choices = "gradient|turbophoretic", .help = "with [closure.turbulence]: the solids flux -nu_t/sigma_d grad phi "
                                                   "(gradient), or with the drift -phi tau_p grad(2k/3) down the "
@@ -245,6 +248,10 @@ static const sl_key plane_keys[] = {
     {.section = "boundary", .name = "solids", .type = SL_KEY_CHOICE, SL_AT_BOUNDARY(tfp_boundary, solids),
      .choices = "no_slip|free_slip|wall_stress", .when_type = ON(TFP_WALL), .when_doc = "a wall",
      .help = "the solids at a wall (wall_stress: [closure.wall_stress] against their slip)"},
+    {.section = "boundary", .name = "angular_velocity", .type = SL_KEY_REAL,
+     SL_AT_BOUNDARY(tfp_boundary, angular_velocity), .min = -1e6, .max = 1e6, .units = "rad s^-1",
+     .when_type = ON(TFP_WALL), .when_doc = "a wall", .help = "with [two_fluid] swirl: the wall's rotation about the "
+                                                            "axis (u_theta = omega r)"},
     {.section = "boundary", .name = "solids_flux", .type = SL_KEY_EXPR, SL_AT_BOUNDARY(tfp_boundary, solids_flux),
      .vars = "x,y,t,case", .units = "m s^-1", .when_type = ON(TFP_INLET), .when_doc = "an inlet",
      .def_doc = "none (the solids are held)",
@@ -253,7 +260,7 @@ static const sl_key plane_keys[] = {
 TABLE(tf_plane_keys, plane_keys);
 
 static const char *const plane_fields[] = {"phi", "velocity_solid", "velocity_fluid", "pressure", "solids_pressure",
-                                           "theta"};
+                                           "theta", "swirl_fluid", "swirl_solid"};
 
 const sl_schema sl_two_fluid_plane_schema = {
     .model = "two_fluid",
@@ -277,7 +284,7 @@ const sl_schema sl_two_fluid_plane_schema = {
     .config_size = sizeof(tf_config),
     .boundary_size = sizeof(tfp_boundary),
     .fields = plane_fields,
-    .n_fields = 6,
+    .n_fields = 8,
 };
 
 /* ---- the shear layer ------------------------------------------------------------------------- */

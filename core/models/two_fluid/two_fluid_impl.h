@@ -40,6 +40,7 @@ typedef struct tf_config {
   sl_scene_expr turb_k, turb_eps;
   double dispersion_schmidt;
   int dispersion;
+  int swirl; /* [two_fluid] swirl: the 2-D axisymmetric model's azimuthal velocities (two_fluid_plane_swirl.c) */
 } tf_config;
 
 /* A boundary of the 1-D column. */
