@@ -92,6 +92,7 @@ typedef struct tfp_dispersion {
  * fluid [0, nc) then solids [nc, 2 nc), of the accepted step and of the trial; their linear system. */
 typedef struct tfp_swirl {
   int on;
+  double *buf;        /* the allocation (om and om_new swap within it) */
   double *om, *om_new;
   double *rhs, *K, *slip; /* [2 nc], [nc], [nc] scratch */
   sl_triplets trip;

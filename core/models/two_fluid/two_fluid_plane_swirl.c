@@ -20,7 +20,8 @@
  * the drag K of the cell (the slip's magnitude with the swirl's), the
  * convection (with [flow] convection only, as the meridional inertia) of
  * the upwind cell's Omega by the phase's mass flux. Both phases in one
- * linear system (2 nc unknowns, KLU), backward Euler, after each converged
+ * linear system (2 nc unknowns, KLU; the same pattern every step, zeros
+ * where a term is absent), backward Euler, after each converged
  * step at its meridional velocities and phi.
  *
  * Boundaries: a wall holds each phase it holds (no-slip; the solids' free
@@ -37,7 +38,7 @@
 #include "core/models/two_fluid/two_fluid_plane_impl.h"
 
 void tfp_swirl_free(tfp_swirl *w) {
-  free(w->om);
+  free(w->buf);
   sl_triplets_free(&w->trip), sl_csr_free(&w->A);
   if (w->ls) sl_linsolve_destroy(w->ls);
   memset(w, 0, sizeof *w);
@@ -47,7 +48,7 @@ int tfp_swirl_setup(tfp_model *m, const char *linear, sl_diag *d) {
   tfp_swirl *w = &m->sw;
   const size_t nc = (size_t)m->fv.nc;
   w->on = 1;
-  if (!(w->om = calloc(8 * nc, sizeof *w->om))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
+  if (!(w->buf = w->om = calloc(8 * nc, sizeof *w->om))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   w->om_new = w->om + 2 * nc, w->rhs = w->om + 4 * nc, w->K = w->om + 6 * nc, w->slip = w->om + 7 * nc;
   return sl_linsolve_create(&w->ls, linear, d);
 }
@@ -112,30 +113,33 @@ int tfp_swirl_step(tfp_model *m, double dt, sl_diag *d) {
     double rf = dir ? m->fv.xc[i] : m->grid.xf[i], a = m->fv.area[f] * rf * rf / m->fv.dist[f];
     for (int phase = 0; phase < 2; ++phase) {
       const double *u = phase ? m->us_new : m->uf_new;
-      if (lo >= 0 && hi >= 0) {
-        if (phase == 1 && !(m->phi_new[lo] > 1e-12 && m->phi_new[hi] > 1e-12)) continue;
-        double g = a * 0.5 * (visc(m, phase, lo) + visc(m, phase, hi));
+      if (lo >= 0 && hi >= 0) { /* the same entries every step (the solver keeps the pattern): zeros where none */
+        int empty = phase == 1 && !(m->phi_new[lo] > 1e-12 && m->phi_new[hi] > 1e-12);
+        double g = empty ? 0.0 : a * 0.5 * (visc(m, phase, lo) + visc(m, phase, hi));
         int rl = phase * nc + lo, rh = phase * nc + hi;
         rc |= sl_triplets_add(&w->trip, rl, rl, g), rc |= sl_triplets_add(&w->trip, rl, rh, -g);
         rc |= sl_triplets_add(&w->trip, rh, rh, g), rc |= sl_triplets_add(&w->trip, rh, rl, -g);
         if (m->convection) { /* the mass flux's angular momentum, of the upwind cell */
           double al = 0.5 * (phase ? m->phi_new[lo] + m->phi_new[hi] : 2.0 - m->phi_new[lo] - m->phi_new[hi]);
-          double q = rho[phase] * al * u[f] * m->fv.area[f] * rf * rf;
-          int up = q > 0.0 ? rl : rh;
-          rc |= sl_triplets_add(&w->trip, rl, up, q), rc |= sl_triplets_add(&w->trip, rh, up, -q);
+          double q = empty ? 0.0 : rho[phase] * al * u[f] * m->fv.area[f] * rf * rf, qp = fmax(q, 0.0), qm = fmin(q, 0.0);
+          rc |= sl_triplets_add(&w->trip, rl, rl, qp), rc |= sl_triplets_add(&w->trip, rl, rh, qm);
+          rc |= sl_triplets_add(&w->trip, rh, rl, -qp), rc |= sl_triplets_add(&w->trip, rh, rh, -qm);
         }
         continue;
       }
       int c = lo >= 0 ? lo : hi;
       double om;
-      if (c < 0 || !held(m, f, phase, &om) || (phase == 1 && !(m->phi_new[c] > 1e-12))) continue;
-      double g = a * visc(m, phase, c);
-      rc |= sl_triplets_add(&w->trip, phase * nc + c, phase * nc + c, g);
-      w->rhs[phase * nc + c] += g * om;
+      if (c < 0) continue;
+      int empty = phase == 1 && !(m->phi_new[c] > 1e-12);
+      if (held(m, f, phase, &om)) {
+        double g = empty ? 0.0 : a * visc(m, phase, c);
+        rc |= sl_triplets_add(&w->trip, phase * nc + c, phase * nc + c, g);
+        w->rhs[phase * nc + c] += g * om;
+      }
       if (m->convection && m->ftype[f] == TFP_FACE_OUTLET) { /* what leaves carries its cell's Omega */
         double al = phase ? m->phi_new[c] : 1.0 - m->phi_new[c];
-        double q = rho[phase] * al * u[f] * m->fv.area[f] * rf * rf * (lo >= 0 ? 1.0 : -1.0);
-        if (q > 0.0) rc |= sl_triplets_add(&w->trip, phase * nc + c, phase * nc + c, q);
+        double q = empty ? 0.0 : rho[phase] * al * u[f] * m->fv.area[f] * rf * rf * (lo >= 0 ? 1.0 : -1.0);
+        rc |= sl_triplets_add(&w->trip, phase * nc + c, phase * nc + c, fmax(q, 0.0));
       }
     }
   }
