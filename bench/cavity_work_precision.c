@@ -459,10 +459,7 @@ static int write_svg(const char *path, const table *t) {
                      .note = note, .n_panels = np, .panels = panels, .columns = 3, .panel_width = 480,
                      .panel_height = 360};
   sl_diag d = {{0}};
-  if (sl_figure_write(path, &fig, &d)) {
-    fprintf(stderr, "%s\n", d.msg);
-    return -1;
-  }
+  if (sl_figure_write(path, &fig, &d)) return fprintf(stderr, "%s\n", d.msg), -1;
   return 0;
 }
 

@@ -343,10 +343,7 @@ static int write_svg(const char *path, const scene_table *tables, int n_tables, 
   sl_figure fig = {.title = "Cost per operation against cells (bench_cost_scaling)", .note = note,
                      .n_panels = np, .panels = panels, .columns = np, .panel_width = 440, .panel_height = 380};
   sl_diag d = {{0}};
-  if (sl_figure_write(path, &fig, &d)) {
-    fprintf(stderr, "%s\n", d.msg);
-    return -1;
-  }
+  if (sl_figure_write(path, &fig, &d)) return fprintf(stderr, "%s\n", d.msg), -1;
   return 0;
 }
 

@@ -30,12 +30,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "../tests/scenes/mixture_box.h"
+#include "core/study/child.h"
 #include "bench_child.h"
 #include "bench_machine.h"
 
@@ -147,26 +146,17 @@ static int foam_run(const char *src, const char *dir, int n, double dt, foam_res
     snprintf(r->msg, sizeof r->msg, "the case or blockMesh failed (%.100s)", dir);
     return -1;
   }
-  pid_t pid = fork();
-  if (pid < 0) return snprintf(r->msg, sizeof r->msg, "fork failed"), -1;
-  if (pid == 0) {
-    if (chdir(dir) != 0) _exit(126);
-    FILE *log = freopen("driftFluxFoam.log", "w", stdout);
-    if (!log || !freopen("driftFluxFoam.log", "a", stderr)) _exit(126);
-    setenv("WM_PROJECT_DIR", "/usr/share/openfoam", 1);
-    execlp("driftFluxFoam", "driftFluxFoam", (char *)NULL);
-    _exit(127);
-  }
-  int status = 0;
-  struct rusage r0, r1;
-  getrusage(RUSAGE_CHILDREN, &r0);
-  if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    snprintf(r->msg, sizeof r->msg, "driftFluxFoam failed (status %d; %.100s/driftFluxFoam.log)", status, dir);
+  char *const argv[] = {"driftFluxFoam", NULL};
+  const char *const env[] = {"WM_PROJECT_DIR=/usr/share/openfoam", NULL};
+  sl_child_opts co = {.argv = argv, .result_fd = -1, .dir = dir, .env = env, .out = "driftFluxFoam.log",
+                      .err = "driftFluxFoam.log"};
+  sl_child_result cr;
+  if (sl_child_run(&co, &cr) || cr.exit_code != 0 || cr.signal_number) {
+    snprintf(r->msg, sizeof r->msg, "driftFluxFoam failed (exit %d, signal %d%s%.60s; %.100s/driftFluxFoam.log)",
+             cr.exit_code, cr.signal_number, cr.message[0] ? ", " : "", cr.message, dir);
     return -1;
   }
-  getrusage(RUSAGE_CHILDREN, &r1); /* the children waited for since r0: driftFluxFoam alone */
-  r->cpu = (double)(r1.ru_utime.tv_sec - r0.ru_utime.tv_sec) + (double)(r1.ru_stime.tv_sec - r0.ru_stime.tv_sec) +
-           1e-6 * (double)(r1.ru_utime.tv_usec - r0.ru_utime.tv_usec + r1.ru_stime.tv_usec - r0.ru_stime.tv_usec);
+  r->cpu = cr.cpu; /* the child's own user + system time, from wait4 */
   char path[4096];
   double *a = NULL, *u = NULL;
   snprintf(path, sizeof path, "%s/%g/alpha.sludge", dir, t_step);

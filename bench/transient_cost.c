@@ -33,19 +33,15 @@
  * stderr. The exit status is 1 when a run failed. */
 #define _DEFAULT_SOURCE /* mkstemp, setenv, wait4 */
 #include <errno.h>
-#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
-#include <sys/time.h>
-#include <sys/types.h>
-#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "bench_machine.h"
+#include "core/study/child.h"
 
 enum { MAX_SETS = 8, MAX_VARIANTS = 8, MAX_CASES = 8 };
 
@@ -142,44 +138,28 @@ static void parse(const char *text, result *r) {
   }
 }
 
-/* Runs bin with args, stderr and stdout into a temporary file; CPU from wait4. */
-static int run(const char *bin, char *const *args, const char *ld_path, result *r) {
+/* Runs args[0] with args, stderr and stdout into a temporary file; CPU and peak memory are the child's own. */
+static int run(char *const *args, const char *ld_path, result *r) {
   char log[] = "/tmp/sluice_bench_transient_XXXXXX";
   int fd = mkstemp(log);
   if (fd < 0) {
     snprintf(r->why, sizeof r->why, "mkstemp: %s", strerror(errno));
     return -1;
   }
-  fflush(NULL);
-  pid_t pid = fork();
-  if (pid < 0) {
-    snprintf(r->why, sizeof r->why, "fork: %s", strerror(errno));
-    close(fd), unlink(log);
+  close(fd);
+  char ld[4096];
+  const char *old = getenv("LD_LIBRARY_PATH");
+  if (ld_path) snprintf(ld, sizeof ld, "LD_LIBRARY_PATH=%s%s%s", ld_path, old ? ":" : "", old ? old : "");
+  const char *const env[] = {ld, NULL};
+  sl_child_opts co = {.argv = args, .result_fd = -1, .env = ld_path ? env : NULL, .out = log, .err = log};
+  sl_child_result cr;
+  if (sl_child_run(&co, &cr)) {
+    snprintf(r->why, sizeof r->why, "%.200s", cr.message);
+    unlink(log);
     return -1;
   }
-  if (pid == 0) {
-    dup2(fd, 1), dup2(fd, 2);
-    if (ld_path) {
-      const char *old = getenv("LD_LIBRARY_PATH");
-      char buf[4096];
-      snprintf(buf, sizeof buf, "%s%s%s", ld_path, old ? ":" : "", old ? old : "");
-      setenv("LD_LIBRARY_PATH", buf, 1);
-    }
-    execv(bin, args);
-    _exit(127);
-  }
-  close(fd);
-  int status = 0;
-  struct rusage ru;
-  while (wait4(pid, &status, 0, &ru) < 0)
-    if (errno != EINTR) {
-      snprintf(r->why, sizeof r->why, "wait4: %s", strerror(errno));
-      unlink(log);
-      return -1;
-    }
-  r->peak_mb = (double)ru.ru_maxrss / 1024.0;
-  r->cpu = (double)ru.ru_utime.tv_sec + 1e-6 * (double)ru.ru_utime.tv_usec + (double)ru.ru_stime.tv_sec +
-           1e-6 * (double)ru.ru_stime.tv_usec;
+  r->peak_mb = cr.peak_rss_mb;
+  r->cpu = cr.cpu;
   FILE *f = fopen(log, "r");
   char *text = NULL;
   size_t n = 0;
@@ -193,11 +173,11 @@ static int run(const char *bin, char *const *args, const char *ld_path, result *
   }
   unlink(log);
   if (text) text[n] = 0;
-  r->ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  r->ok = cr.exit_code == 0 && !cr.signal_number;
   if (text) parse(text, r);
   if (!r->ok) {
     const char *e = text ? strstr(text, "error") : NULL;
-    snprintf(r->why, sizeof r->why, "exit status %d%s%.200s", WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+    snprintf(r->why, sizeof r->why, "exit status %d%s%.200s", cr.signal_number ? -1 : cr.exit_code,
              e ? ": " : "", e ? e : "");
   } else if (!r->steps_known) {
     r->ok = 0;
@@ -270,7 +250,7 @@ int main(int argc, char **argv) {
         args[na] = NULL;
         result r = {0};
         fprintf(stderr, "round %d: %s, %s ... ", round + 1, cases[c].name, variants[v].name);
-        int rc = run(args[0], args, variants[v].ref_blas ? ref_blas : NULL, &r);
+        int rc = run(args, variants[v].ref_blas ? ref_blas : NULL, &r);
         char xmf[300];
         snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)strlen(out) - 3, out);
         remove(out), remove(xmf);

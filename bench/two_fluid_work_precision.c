@@ -207,10 +207,7 @@ static int write_svg(const char *path, const table *t) {
   sl_figure fig = {.title = "1-D two-fluid model: error against CPU time", .note = note, .n_panels = N_SCENES,
                      .panels = panels, .columns = N_SCENES, .panel_width = 520, .panel_height = 440};
   sl_diag d = {{0}};
-  if (sl_figure_write(path, &fig, &d)) {
-    fprintf(stderr, "%s\n", d.msg);
-    return -1;
-  }
+  if (sl_figure_write(path, &fig, &d)) return fprintf(stderr, "%s\n", d.msg), -1;
   return 0;
 }
 

@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int sl_test_passed, sl_test_failed;
@@ -43,6 +44,20 @@ static int sl_test_passed, sl_test_failed;
 
 #define CHECK_CONTAINS(haystack, needle) \
   CHECK_MSG(strstr((haystack), (needle)) != NULL, "\"%s\" does not contain \"%s\"", (haystack), (needle))
+
+/* Reads the file at rel (relative to $SLUICE_SOURCE_DIR, else the working
+ * directory) into buf, NUL-terminated; 0 on success, a failed check if not. */
+static inline int sl_test_read_source(const char *rel, char *buf, size_t cap) {
+  const char *src = getenv("SLUICE_SOURCE_DIR");
+  char path[4096];
+  snprintf(path, sizeof path, "%s/%s", src ? src : ".", rel);
+  FILE *f = fopen(path, "rb");
+  size_t n = f ? fread(buf, 1, cap - 1, f) : 0;
+  if (f) fclose(f);
+  buf[n] = '\0';
+  CHECK_MSG(n > 0, "cannot read %s", path);
+  return n > 0 ? 0 : 1;
+}
 
 static inline int sl_test_summary(void) {
   printf("%d passed, %d failed\n", sl_test_passed, sl_test_failed);

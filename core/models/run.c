@@ -2,7 +2,6 @@
 /* A run of a scene (run.h). */
 #include "core/models/run.h"
 
-#include <ctype.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
@@ -49,36 +48,6 @@ static void prepared_free(prepared *p) {
   memset(p, 0, sizeof *p);
 }
 
-/* A model's bad-input message that names a section or key ("[boundary.top] velocity: ...", "[closure.drag]: ...")
- * but not where it is gets the file:line of that key, else of the section (the last one given). */
-static int locate(const sl_ini *ini, int rc, sl_diag *d) {
-  if (rc != SL_EBADINPUT || d->msg[0] != '[') return rc;
-  const char *close = strchr(d->msg, ']');
-  if (!close || close - d->msg > 200) return rc;
-  char section[256], key[128] = "";
-  memcpy(section, d->msg + 1, (size_t)(close - d->msg - 1));
-  section[close - d->msg - 1] = '\0';
-  const char *k = close + 1;
-  if (*k == ' ') {
-    size_t n = 0;
-    for (++k; (isalnum((unsigned char)k[n]) || k[n] == '_') && n + 1 < sizeof key; ++n) key[n] = k[n];
-    key[n] = '\0';
-  }
-  const char *file = NULL;
-  int line = 0;
-  for (int i = 0; i < ini->n_sections; ++i) {
-    const sl_ini_section *sec = &ini->sections[i];
-    if (strcmp(sec->name, section) != 0) continue;
-    if (!key[0] || !file) file = sec->file, line = sec->line;
-    for (int e = 0; e < sec->n_entries && key[0]; ++e)
-      if (strcmp(sec->entries[e].key, key) == 0) file = sec->entries[e].file, line = sec->entries[e].line;
-  }
-  if (!file) return rc;
-  char msg[sizeof d->msg];
-  memcpy(msg, d->msg, sizeof msg);
-  return sl_diag_set(d, rc, "%s:%d: %.1900s", file, line, msg);
-}
-
 static int prepare(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, prepared *p, sl_diag *d) {
   memset(p, 0, sizeof *p);
   int rc = sl_model_scene(ini, reg, 1, 1, &p->entry, &p->sc, d);
@@ -86,7 +55,7 @@ static int prepare(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, pr
   if (!rc && o)
     p->sc->hooks = (sl_run_hooks){.nonlinear = o->nonlinear, .user = o->nonlinear_user, .interrupt = o->interrupt,
                                   .checking = o->checking};
-  if (!rc) rc = locate(ini, ops->setup(&p->self, p->sc, &p->info, d), d);
+  if (!rc) rc = sl_scene_locate(p->sc, ops->setup(&p->self, p->sc, &p->info, d), d);
   if (!rc && !(rc = sl_time_loop_init(&p->loop, &p->info, &p->sc->time, d))) p->have_loop = 1;
   /* a restart is checked against the scene before anything is written */
   if (!rc && o && o->restart) {

@@ -3,6 +3,7 @@
 #include "core/scene/scene.h"
 #include "core/scene/solver.h"
 
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -817,4 +818,35 @@ int sl_scene_set_real(sl_scene *sc, const char *key, double v, sl_diag *d) {
   const sl_key *k = sl_schema_key(sc->schema, section, name);
   char *base = k->target == SL_IN_SCENE ? (char *)sc : (char *)sc->config;
   return sl_ini_get_real(sc->ini, section, name, 1, 0.0, k->min, k->max, (double *)(base + k->offset), d);
+}
+
+/* A model's bad-input message that names a section or key ("[boundary.top] velocity: ...", "[closure.drag]: ...")
+ * but not where it is gets the file:line of that key, else of the section (the last one given). */
+int sl_scene_locate(const sl_scene *sc, int rc, sl_diag *d) {
+  const sl_ini *ini = sc->ini;
+  if (rc != SL_EBADINPUT || d->msg[0] != '[') return rc;
+  const char *close = strchr(d->msg, ']');
+  if (!close || close - d->msg > 200) return rc;
+  char section[256], key[128] = "";
+  memcpy(section, d->msg + 1, (size_t)(close - d->msg - 1));
+  section[close - d->msg - 1] = '\0';
+  const char *k = close + 1;
+  if (*k == ' ') {
+    size_t n = 0;
+    for (++k; (isalnum((unsigned char)k[n]) || k[n] == '_') && n + 1 < sizeof key; ++n) key[n] = k[n];
+    key[n] = '\0';
+  }
+  const char *file = NULL;
+  int line = 0;
+  for (int i = 0; i < ini->n_sections; ++i) {
+    const sl_ini_section *sec = &ini->sections[i];
+    if (strcmp(sec->name, section) != 0) continue;
+    if (!key[0] || !file) file = sec->file, line = sec->line;
+    for (int e = 0; e < sec->n_entries && key[0]; ++e)
+      if (strcmp(sec->entries[e].key, key) == 0) file = sec->entries[e].file, line = sec->entries[e].line;
+  }
+  if (!file) return rc;
+  char msg[sizeof d->msg];
+  memcpy(msg, d->msg, sizeof msg);
+  return sl_diag_set(d, rc, "%s:%d: %.1900s", file, line, msg);
 }

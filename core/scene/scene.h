@@ -169,6 +169,10 @@ const char *sl_scene_where(const sl_scene *sc, const void *field, char *buf, siz
  * required key" error (SL_EBADINPUT), for keys that a model requires only in
  * some cases. */
 int sl_scene_require(const sl_scene *sc, const void *field, sl_diag *d);
+
+/* A bad-input message (rc == SL_EBADINPUT) that names a section or key ("[boundary.top] velocity: ...")
+ * but not where it is gets the file:line of that key, else of the section; rc is returned. */
+int sl_scene_locate(const sl_scene *sc, int rc, sl_diag *d);
 /* 1 when the scene file has the section (e.g. "time"). */
 int sl_scene_has_section(const sl_scene *sc, const char *section);
 

@@ -49,6 +49,17 @@ static void redirect(const char *path, int to) {
 }
 
 static _Noreturn void in_child(const sl_child_opts *o, int res_w, int out_w) {
+  if (o->dir && chdir(o->dir) != 0) {
+    fprintf(stderr, "cannot enter %s: %s\n", o->dir, strerror(errno));
+    _exit(126);
+  }
+  for (const char *const *e = o->env; e && *e; ++e) {
+    const char *eq = strchr(*e, '=');
+    char name[256];
+    if (!eq || eq == *e || (size_t)(eq - *e) >= sizeof name) _exit(126);
+    memcpy(name, *e, (size_t)(eq - *e)), name[eq - *e] = '\0';
+    if (setenv(name, eq + 1, 1) != 0) _exit(126);
+  }
   if (out_w >= 0) dup2(out_w, STDOUT_FILENO), close(out_w);
   else if (o->out) redirect(o->out, STDOUT_FILENO);
   if (o->err && o->out && out_w < 0 && strcmp(o->err, o->out) == 0) dup2(STDOUT_FILENO, STDERR_FILENO); /* one log */

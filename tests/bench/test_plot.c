@@ -12,28 +12,8 @@
 
 #include "core/study/chart.h"
 #include "core/study/label.h"
+#include "svg_query.h"
 #include "testing.h"
-
-/* xmllint's answer to an XPath string expression, or "" */
-static void xpath(const char *file, const char *expr, char *out, size_t n) {
-  char cmd[1024];
-  snprintf(cmd, sizeof cmd, "xmllint --xpath \"%s\" %s 2>/dev/null", expr, file);
-  out[0] = '\0';
-  FILE *p = popen(cmd, "r");
-  if (!p) return;
-  size_t got = fread(out, 1, n - 1, p);
-  out[got] = '\0';
-  pclose(p);
-  while (got > 0 && (out[got - 1] == '\n' || out[got - 1] == ' ')) out[--got] = '\0';
-}
-
-static double xpath_number(const char *file, const char *expr) {
-  char buf[256];
-  xpath(file, expr, buf, sizeof buf);
-  char *end;
-  double v = strtod(buf, &end);
-  return end == buf ? NAN : v;
-}
 
 /* The tick labels of axis ("x" or "y") of the first panel, joined by '|'. */
 static void tick_labels(const char *file, const char *axis, char *out, size_t n) {
@@ -41,14 +21,12 @@ static void tick_labels(const char *file, const char *axis, char *out, size_t n)
   for (int k = 1; k < 40; ++k) {
     char expr[256], buf[128];
     snprintf(expr, sizeof expr, "string((//*[@data-axis='%s'])[1]/*[@class='tick'][%d])", axis, k);
-    xpath(file, expr, buf, sizeof buf);
+    svg_xpath(file, expr, buf, sizeof buf);
     if (!buf[0]) break;
     size_t used = strlen(out);
     snprintf(out + used, n - used, "%s%s", used ? "|" : "", buf);
   }
 }
-
-static int have_xmllint(void) { return system("xmllint --version >/dev/null 2>&1") == 0; }
 
 /* log-log, 1 <= x <= 4, 1/32 <= y <= 1: 4 % of each log span added, so the
  * ends are 10^(-0.04 log10 4) and 4 x 10^(0.04 log10 4) on x; decades and
@@ -62,10 +40,10 @@ static void svg_log_axes(void) {
   sl_diag d = {{0}};
   CHECK(sl_chart_write_svg("plot_log.svg", &c, 640, 480, &d) == 0);
   CHECK(system("xmllint --noout plot_log.svg") == 0); /* well-formed XML */
-  double xlo = xpath_number("plot_log.svg", "string((//*[@data-axis='x'])[1]/@data-lo)");
-  double xhi = xpath_number("plot_log.svg", "string((//*[@data-axis='x'])[1]/@data-hi)");
-  double ylo = xpath_number("plot_log.svg", "string((//*[@data-axis='y'])[1]/@data-lo)");
-  double yhi = xpath_number("plot_log.svg", "string((//*[@data-axis='y'])[1]/@data-hi)");
+  double xlo = svg_xpath_number("plot_log.svg", "string((//*[@data-axis='x'])[1]/@data-lo)");
+  double xhi = svg_xpath_number("plot_log.svg", "string((//*[@data-axis='x'])[1]/@data-hi)");
+  double ylo = svg_xpath_number("plot_log.svg", "string((//*[@data-axis='y'])[1]/@data-lo)");
+  double yhi = svg_xpath_number("plot_log.svg", "string((//*[@data-axis='y'])[1]/@data-hi)");
   double px = 0.04 * log10(4.0), py = 0.04 * log10(32.0);
   CHECK_MSG(fabs(xlo - pow(10.0, -px)) < 1e-8 && fabs(xhi - 4.0 * pow(10.0, px)) < 1e-8, "x axis %.10g .. %.10g", xlo, xhi);
   CHECK_MSG(fabs(ylo - pow(10.0, -py) / 32.0) < 1e-9 && fabs(yhi - pow(10.0, py)) < 1e-8, "y axis %.10g .. %.10g", ylo, yhi);
@@ -75,7 +53,7 @@ static void svg_log_axes(void) {
   tick_labels("plot_log.svg", "y", ticks, sizeof ticks);
   CHECK_MSG(!strcmp(ticks, "0.05|0.1|0.2|0.5|1"), "y ticks %s", ticks);
   char text[256];
-  xpath("plot_log.svg", "string(//*[@class='ylabel'])", text, sizeof text);
+  svg_xpath("plot_log.svg", "string(//*[@class='ylabel'])", text, sizeof text);
   CHECK_MSG(!strcmp(text, "error in \xCF\x86"), "y label %s", text); /* phi as the letter */
 }
 
@@ -91,7 +69,7 @@ static void svg_powers(void) {
   tick_labels("plot_pow.svg", "x", ticks, sizeof ticks);
   CHECK_MSG(!strcmp(ticks, "10\xE2\x88\x92" "6|10\xE2\x88\x92" "5|10\xE2\x88\x92" "4|10\xE2\x88\x92" "3"), "x ticks %s", ticks);
   char n[64];
-  xpath("plot_pow.svg", "count((//*[@data-axis='x'])[1]/*[@class='tick']/*[local-name()='tspan'])", n, sizeof n);
+  svg_xpath("plot_pow.svg", "count((//*[@data-axis='x'])[1]/*[@class='tick']/*[local-name()='tspan'])", n, sizeof n);
   CHECK_MSG(!strcmp(n, "4"), "%s superscripts", n);
 }
 
@@ -102,8 +80,8 @@ static void svg_linear(void) {
   sl_chart c = {.n_series = 1, .series = &s};
   sl_diag d = {{0}};
   CHECK(sl_chart_write_svg("plot_lin.svg", &c, 640, 480, &d) == 0);
-  double xlo = xpath_number("plot_lin.svg", "string((//*[@data-axis='x'])[1]/@data-lo)");
-  double yhi = xpath_number("plot_lin.svg", "string((//*[@data-axis='y'])[1]/@data-hi)");
+  double xlo = svg_xpath_number("plot_lin.svg", "string((//*[@data-axis='x'])[1]/@data-lo)");
+  double yhi = svg_xpath_number("plot_lin.svg", "string((//*[@data-axis='y'])[1]/@data-hi)");
   CHECK_MSG(fabs(xlo + 0.4) < 1e-12 && fabs(yhi - 3.16) < 1e-12, "x from %.10g, y to %.10g", xlo, yhi);
   char ticks[512];
   tick_labels("plot_lin.svg", "x", ticks, sizeof ticks);
@@ -125,10 +103,10 @@ static void svg_slope(void) {
   sl_diag d = {{0}};
   CHECK(sl_chart_write_svg("plot_slope.svg", &c, 640, 480, &d) == 0);
   char text[128];
-  xpath("plot_slope.svg", "string(//*[@class='slope'])", text, sizeof text);
+  svg_xpath("plot_slope.svg", "string(//*[@class='slope'])", text, sizeof text);
   CHECK_MSG(!strcmp(text, "order 2.50"), "slope label %s", text);
   /* the triangle lies below the data: every corner under the fitted line */
-  double ylo = xpath_number("plot_slope.svg", "string((//*[@data-axis='y'])[1]/@data-lo)");
+  double ylo = svg_xpath_number("plot_slope.svg", "string((//*[@data-axis='y'])[1]/@data-lo)");
   CHECK_MSG(ylo < 1.0 / 32, "the axis (from %g) leaves room for the triangle", ylo);
 }
 
@@ -149,16 +127,16 @@ static void svg_text_in_frame(void) {
   sl_diag d = {{0}};
   CHECK(sl_chart_write_svg("plot_frame.svg", &c, 480, 360, &d) == 0);
   char a1[32], a3[32], t1[32], t2[32];
-  xpath("plot_frame.svg", "string((//*[@class='point'])[1]/@text-anchor)", a1, sizeof a1);
-  xpath("plot_frame.svg", "string((//*[@class='point'])[3]/@text-anchor)", a3, sizeof a3);
+  svg_xpath("plot_frame.svg", "string((//*[@class='point'])[1]/@text-anchor)", a1, sizeof a1);
+  svg_xpath("plot_frame.svg", "string((//*[@class='point'])[3]/@text-anchor)", a3, sizeof a3);
   CHECK_MSG(!strcmp(a1, "start") && !strcmp(a3, "end"), "point labels anchored %s .. %s", a1, a3);
-  xpath("plot_frame.svg", "string((//*[@class='slope'])[1])", t1, sizeof t1);
-  xpath("plot_frame.svg", "string((//*[@class='slope'])[2])", t2, sizeof t2);
+  svg_xpath("plot_frame.svg", "string((//*[@class='slope'])[1])", t1, sizeof t1);
+  svg_xpath("plot_frame.svg", "string((//*[@class='slope'])[2])", t2, sizeof t2);
   CHECK_MSG(!strcmp(t1, "order 2.50") && !strcmp(t2, "order 2.40"), "slope labels %s, %s", t1, t2);
-  double y1 = xpath_number("plot_frame.svg", "string((//*[@class='slope'])[1]/@y)");
-  double y2 = xpath_number("plot_frame.svg", "string((//*[@class='slope'])[2]/@y)");
-  double x1 = xpath_number("plot_frame.svg", "string((//*[@class='slope'])[1]/@x)");
-  double x2 = xpath_number("plot_frame.svg", "string((//*[@class='slope'])[2]/@x)");
+  double y1 = svg_xpath_number("plot_frame.svg", "string((//*[@class='slope'])[1]/@y)");
+  double y2 = svg_xpath_number("plot_frame.svg", "string((//*[@class='slope'])[2]/@y)");
+  double x1 = svg_xpath_number("plot_frame.svg", "string((//*[@class='slope'])[1]/@x)");
+  double x2 = svg_xpath_number("plot_frame.svg", "string((//*[@class='slope'])[2]/@x)");
   CHECK_MSG(fabs(y1 - y2) >= 12.0 || fabs(x1 - x2) >= 60.0, "slope labels at (%g, %g) and (%g, %g) overlap", x1, y1,
             x2, y2);
 }
@@ -178,18 +156,18 @@ static void svg_heatmap(void) {
   sl_diag d = {{0}};
   CHECK(sl_chart_write_svg("plot_heat.svg", &c, 400, 300, &d) == 0);
   const char *f = "plot_heat.svg";
-  CHECK(xpath_number(f, "string((//*[@data-axis='x'])[1]/@data-lo)") == 0.0);
-  CHECK(xpath_number(f, "string((//*[@data-axis='x'])[1]/@data-hi)") == 2.0);
-  CHECK(xpath_number(f, "string((//*[@data-axis='y'])[1]/@data-hi)") == 1.0);
-  CHECK(xpath_number(f, "string(//*[@class='colourbar']/@data-lo)") == 0.0);
-  CHECK(xpath_number(f, "string(//*[@class='colourbar']/@data-hi)") == 10.0);
+  CHECK(svg_xpath_number(f, "string((//*[@data-axis='x'])[1]/@data-lo)") == 0.0);
+  CHECK(svg_xpath_number(f, "string((//*[@data-axis='x'])[1]/@data-hi)") == 2.0);
+  CHECK(svg_xpath_number(f, "string((//*[@data-axis='y'])[1]/@data-hi)") == 1.0);
+  CHECK(svg_xpath_number(f, "string(//*[@class='colourbar']/@data-lo)") == 0.0);
+  CHECK(svg_xpath_number(f, "string(//*[@class='colourbar']/@data-hi)") == 10.0);
   /* the cells follow the clip path's rect: cell (1, 1), value 10, is the fifth */
-  double x = xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@x)");
-  double y = xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@y)");
-  double w = xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@width)");
-  double h = xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@height)");
+  double x = svg_xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@x)");
+  double y = svg_xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@y)");
+  double w = svg_xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@width)");
+  double h = svg_xpath_number(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@height)");
   char fill[16];
-  xpath(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@fill)", fill, sizeof fill);
+  svg_xpath(f, "string((//*[@class='heatmap']//*[local-name()='rect'])[5]/@fill)", fill, sizeof fill);
   CHECK_MSG(!strcmp(fill, "#6E0014"), "cell (1, 1) filled %s", fill);
   sl_image im = {0};
   CHECK(sl_chart_draw(&c, 400, 300, &im, &d) == 0);
@@ -250,8 +228,8 @@ static void png(void) {
   CHECK(uncompress(raw, &raw_n, z, (uLong)zn) == Z_OK && raw_n == (uLongf)(3 * 400 + 1) * 300);
   printf("plot.png: %zu bytes for %lu bytes of rows\n", len, (unsigned long)raw_n);
   /* the pixel at the middle point's marker (from the SVG: same layout) is the series colour */
-  double cx = xpath_number("plot_same.svg", "string((//*[local-name()='rect'][@width='6.46'])[2]/@x)") + 3.23;
-  double cy = xpath_number("plot_same.svg", "string((//*[local-name()='rect'][@width='6.46'])[2]/@y)") + 3.23;
+  double cx = svg_xpath_number("plot_same.svg", "string((//*[local-name()='rect'][@width='6.46'])[2]/@x)") + 3.23;
+  double cy = svg_xpath_number("plot_same.svg", "string((//*[local-name()='rect'][@width='6.46'])[2]/@y)") + 3.23;
   CHECK_MSG(isfinite(cx) && isfinite(cy), "no marker in the SVG");
   if (isfinite(cx) && isfinite(cy)) {
     int X = (int)floor(cx), Y = (int)floor(cy);
@@ -276,7 +254,7 @@ static void png(void) {
 
 int main(void) {
   labels();
-  if (!have_xmllint()) {
+  if (!svg_have_xmllint()) {
     printf("SKIP: xmllint not found (Debian libxml2-utils)\n");
     return sl_test_summary();
   }

@@ -18,6 +18,7 @@
 #include <string.h>
 #include <sys/wait.h>
 
+#include "svg_query.h"
 #include "testing.h"
 
 static int run(const char *cmd) {
@@ -25,33 +26,13 @@ static int run(const char *cmd) {
   return st == -1 || !WIFEXITED(st) ? -1 : WEXITSTATUS(st);
 }
 
-/* xmllint's answer to an XPath expression, or "" */
-static void xpath(const char *file, const char *expr, char *out, size_t n) {
-  char cmd[2048];
-  snprintf(cmd, sizeof cmd, "xmllint --xpath \"%s\" %s 2>/dev/null", expr, file);
-  out[0] = '\0';
-  FILE *p = popen(cmd, "r");
-  if (!p) return;
-  size_t got = fread(out, 1, n - 1, p);
-  out[got] = '\0';
-  pclose(p);
-  while (got > 0 && (out[got - 1] == '\n' || out[got - 1] == ' ')) out[--got] = '\0';
-}
-
-static double number(const char *file, const char *expr) {
-  char buf[128], *end;
-  xpath(file, expr, buf, sizeof buf);
-  double v = strtod(buf, &end);
-  return end == buf ? NAN : v;
-}
-
 /* panel k's axis a ("x" or "y") covers lo..hi */
 static void covers(const char *file, int k, const char *a, double lo, double hi) {
   char e[128];
   snprintf(e, sizeof e, "string((//*[@data-axis='%s'])[%d]/@data-lo)", a, k);
-  double l = number(file, e);
+  double l = svg_xpath_number(file, e);
   snprintf(e, sizeof e, "string((//*[@data-axis='%s'])[%d]/@data-hi)", a, k);
-  double h = number(file, e);
+  double h = svg_xpath_number(file, e);
   CHECK_MSG(l <= lo && h >= hi, "%s panel %d: %s axis %g .. %g does not cover %g .. %g", file, k, a, l, h, lo, hi);
 }
 
@@ -65,16 +46,16 @@ int main(void) {
   snprintf(cmd, sizeof cmd, "%s --replot %s/bench/results/cavity_work_precision.csv --svg replot_cwp.svg", cwp, src);
   CHECK(run(cmd) == 0);
   CHECK(run("xmllint --noout replot_cwp.svg") == 0);
-  xpath("replot_cwp.svg", "string(//*[@class='slope'])", out, sizeof out);
+  svg_xpath("replot_cwp.svg", "string(//*[@class='slope'])", out, sizeof out);
   CHECK_MSG(!strcmp(out, "order 1.95"), "slope: %s", out);
-  CHECK(number("replot_cwp.svg", "count(//*[@class='slope'])") == 1.0);
+  CHECK(svg_xpath_number("replot_cwp.svg", "count(//*[@class='slope'])") == 1.0);
   covers("replot_cwp.svg", 1, "x", 8, 256);         /* error against n */
   covers("replot_cwp.svg", 1, "y", 3.407e-8, 7.433e-4);
   covers("replot_cwp.svg", 2, "x", 0.01053, 279.4); /* against CPU time */
   covers("replot_cwp.svg", 2, "y", 3.407e-8, 7.433e-4);
   covers("replot_cwp.svg", 3, "y", 9.2, 3108.5);    /* peak memory */
   /* umfpack's n = 256 failed: said in the note */
-  xpath("replot_cwp.svg", "string(//*[contains(text(), 'Not plotted')])", out, sizeof out);
+  svg_xpath("replot_cwp.svg", "string(//*[contains(text(), 'Not plotted')])", out, sizeof out);
   CHECK_MSG(strstr(out, "umfpack, n = 256 failed") != NULL, "note: %s", out);
 
   snprintf(cmd, sizeof cmd, "%s --replot %s/bench/results/cavity_vs_freefem.csv --svg replot_cvf.svg", cvf, src);
@@ -84,10 +65,10 @@ int main(void) {
   for (int k = 0; k < 4; ++k) {
     char e[96];
     snprintf(e, sizeof e, "string((//*[@class='slope'])[%d])", k + 1);
-    xpath("replot_cvf.svg", e, out, sizeof out);
+    svg_xpath("replot_cvf.svg", e, out, sizeof out);
     CHECK_MSG(!strcmp(out, orders[k]), "slope %d: %s, expected %s", k + 1, out, orders[k]);
   }
-  CHECK(number("replot_cvf.svg", "count(//*[@class='slope'])") == 4.0);
+  CHECK(svg_xpath_number("replot_cvf.svg", "count(//*[@class='slope'])") == 4.0);
   covers("replot_cvf.svg", 1, "y", 5.4471e-07, 4.3460e-03); /* max-norm against n */
   covers("replot_cvf.svg", 2, "x", 0.01058, 43.79);          /* against CPU time */
   covers("replot_cvf.svg", 3, "y", 2.207e-08, 7.433e-04);    /* |min u - u*| */

@@ -53,22 +53,10 @@ static char scene_b[8192], scene_a[8192], scene_bt[8192];
 static const char *scene = scene_b;
 static long runs, failures;
 
-static int read_file(const char *rel, char *buf, size_t cap) {
-  const char *src = getenv("SLUICE_SOURCE_DIR");
-  char path[4096];
-  snprintf(path, sizeof path, "%s/%s", src ? src : ".", rel);
-  FILE *f = fopen(path, "rb");
-  size_t n = f ? fread(buf, 1, cap - 1, f) : 0;
-  if (f) fclose(f);
-  buf[n] = '\0';
-  CHECK_MSG(n > 0, "cannot read %s", path);
-  return n > 0 ? 0 : 1;
-}
-
 static int load(void) {
   static char csv[1 << 16];
-  if (read_file("configs/vertical_pipe.ini", scene_b, sizeof scene_b) ||
-      read_file("configs/data/krampa_2009_tables_c.csv", csv, sizeof csv))
+  if (sl_test_read_source("configs/vertical_pipe.ini", scene_b, sizeof scene_b) ||
+      sl_test_read_source("configs/data/krampa_2009_tables_c.csv", csv, sizeof csv))
     return 1;
   for (char *line = strtok(csv, "\n"); line; line = strtok(NULL, "\n")) {
     if (line[0] == '#' || strncmp(line, "table", 5) == 0) continue;

@@ -44,18 +44,6 @@ static int n_rows;
 static char scene[8192];
 static const double D = 0.04, rho_f = 998.0, rho_s = 1400.0, d_p = 3.4e-3, g = 9.81;
 
-static int read_file(const char *rel, char *buf, size_t cap) {
-  const char *src = getenv("SLUICE_SOURCE_DIR");
-  char path[4096];
-  snprintf(path, sizeof path, "%s/%s", src ? src : ".", rel);
-  FILE *f = fopen(path, "rb");
-  size_t n = f ? fread(buf, 1, cap - 1, f) : 0;
-  if (f) fclose(f);
-  buf[n] = '\0';
-  CHECK_MSG(n > 0, "cannot read %s", path);
-  return n > 0 ? 0 : 1;
-}
-
 /* One CSV field as a number: empty is NaN. */
 static double field(char **s) {
   char *p = *s, *e = strchr(p, ',');
@@ -66,8 +54,8 @@ static double field(char **s) {
 
 static int load(void) {
   static char csv[1 << 14], raw[8192];
-  if (read_file("configs/pvc_pipe.ini", raw, sizeof raw) ||
-      read_file("configs/data/krampa_2009_tables_5_3_5_4.csv", csv, sizeof csv))
+  if (sl_test_read_source("configs/pvc_pipe.ini", raw, sizeof raw) ||
+      sl_test_read_source("configs/data/krampa_2009_tables_5_3_5_4.csv", csv, sizeof csv))
     return 1;
   /* model A type: the scene without [closure.granular] */
   char *gran = strstr(raw, "\n[closure.granular]");

@@ -33,6 +33,7 @@ static void release(pipe *p) {
   for (int i = 0; i < 12; ++i) free(p->buf[i]);
   sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls};
   for (size_t i = 0; i < sizeof pc / sizeof pc[0]; ++i) sl_point_release(pc[i]);
+  pipe_march_release(p);
   sl_cell_scalar_free(&p->cs);
   sl_csr_free(&p->A);
   sl_linsolve_destroy(p->ls);
@@ -112,6 +113,7 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
   if (!rc) rc = pipe_closures_bind(p, d);
   if (!rc) rc = sl_cell_scalar_init(&p->cs, &p->g, d);
   if (!rc) rc = pipe_momentum_init(p, d);
+  if (!rc && sl_scene_given(sc, &c->length)) rc = pipe_march_setup(p, d);
   if (rc) {
     release(p);
     return rc;
@@ -140,10 +142,10 @@ static double rel_change(const double *a, const double *b, int n, int *at) {
   return den > 0.0 ? num / den : num;
 }
 
-/* The steady solve: outer iterations of the momentum (u_f, u_s, G), the turbulence and the solids fraction,
-   each with the others' last values, until one changes them all by less than the tolerance. */
-static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d) {
-  pipe *p = self;
+/* Outer iterations of the momentum (u_f, u_s, G), the turbulence and the solids fraction, each with the others'
+   last values, until one changes them all by less than the tolerance (p->converged), or [pipe] iterations: the
+   fully developed pipe's steady solve, and each station of the developing pipe's march (pipe_march.c). */
+int pipe_converge(pipe *p, sl_diag *d) {
   const pipe_config *c = p->cfg;
   const int n = p->n;
   double *old[4] = {p->buf[8], p->buf[9], p->buf[10], p->buf[11]};
@@ -159,6 +161,7 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
     memcpy(old[0], p->uf, (size_t)n * sizeof(double)), memcpy(old[1], p->k, (size_t)n * sizeof(double));
     memcpy(old[2], p->eps, (size_t)n * sizeof(double)), memcpy(old[3], p->phi, (size_t)n * sizeof(double));
     double G_old = p->G;
+    if (p->march.on) pipe_march_fluxes(p);
     if (!rc) rc = pipe_turbulence_coefficients(p, d);
     if (!rc) rc = pipe_wall_function(p, d);
     if (!rc && p->two_phase) rc = pipe_solids_coefficients(p, d);
@@ -192,6 +195,15 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
       window_change = ch;
     }
   }
+  return rc;
+}
+
+/* The steady solve: pipe_converge for the fully developed pipe, the march along z for the developing one. */
+static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d) {
+  pipe *p = self;
+  const pipe_config *c = p->cfg;
+  const int n = p->n;
+  int rc = p->march.on ? pipe_march_solve(p, d) : pipe_converge(p, d);
   /* the last coefficients and wall stresses of the state reached */
   if (!rc) rc = pipe_turbulence_coefficients(p, d);
   if (!rc) rc = pipe_wall_function(p, d);
@@ -209,8 +221,13 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
              p->iterations, p->change, c->tolerance, where, p->relax);
     rc = sl_diag_set(d, SL_EFAILED, "pipe: %s", p->stop_reason);
   } else if (!rc) {
-    snprintf(p->stop_reason, sizeof p->stop_reason, "converged in %ld iterations (change %.2g)", p->iterations,
-             p->change);
+    if (p->march.on)
+      snprintf(p->stop_reason, sizeof p->stop_reason,
+               "converged at each of %d stations along %g m: %ld iterations, at most %ld a station (last change %.2g)",
+               p->march.nz, c->length, p->iterations, p->march.worst_station_iterations, p->change);
+    else
+      snprintf(p->stop_reason, sizeof p->stop_reason, "converged in %ld iterations (change %.2g)", p->iterations,
+               p->change);
     if (p->relax < c->relaxation) {
       size_t L = strlen(p->stop_reason);
       snprintf(p->stop_reason + L, sizeof p->stop_reason - L, ", relaxation lowered to %.3g", p->relax);
@@ -223,13 +240,30 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
             "2009 section 2.9): set [pipe] wall_cell or wall_y_plus\n",
             p->y_plus);
   }
+  if (!rc && p->march.on && !p->warned_yplus) { /* the developing pipe: every station's wall cell */
+    double lo = INFINITY, hi = 0.0;
+    int at_lo = 0, at_hi = 0;
+    for (int j = 0; j < p->march.nz; ++j) {
+      if (p->march.y_plus[j] < lo) lo = p->march.y_plus[j], at_lo = j;
+      if (p->march.y_plus[j] > hi) hi = p->march.y_plus[j], at_hi = j;
+    }
+    if (lo < 30.0 || hi > 200.0) {
+      p->warned_yplus = 1;
+      int j = lo < 30.0 ? at_lo : at_hi;
+      fprintf(stderr,
+              "sluice: warning: pipe: the wall cell's centre is at y+ = %.3g at z = %g m, outside the wall function's "
+              "30-200 (Krampa 2009 section 2.9; y+ %.3g-%.3g along the pipe): set [pipe] wall_cell or wall_y_plus\n",
+              lo < 30.0 ? lo : hi, p->march.g.yc[j], lo, hi);
+    }
+  }
   return rc;
 }
 
 /* ---- output ---------------------------------------------------------------------------- */
 
 static int pipe_write_mesh(void *self, sl_output *out, sl_diag *d) {
-  const sl_mesh *m = ((pipe *)self)->mesh;
+  const pipe *p = self;
+  const sl_mesh *m = p->march.on ? p->march.mesh : p->mesh;
   int32_t *cells = malloc((size_t)m->n_cells * m->nv_per_cell * sizeof *cells);
   if (!cells) return sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
   for (int i = 0; i < m->n_cells * m->nv_per_cell; ++i) cells[i] = m->cell_vertices[i];
@@ -255,6 +289,7 @@ static int pipe_write(void *self, sl_output *out, double t, const double *u, sl_
   unsigned mask;
   int rc = sl_scene_output_fields(p->sc, 0x7fu, &mask, d);
   const double *fields[7] = {p->uf, p->us, p->phi, p->k, p->eps, p->mu_t, p->theta};
+  if (!rc && p->march.on) rc = pipe_march_write(p, out, mask, d), mask = 0; /* its 2-D fields */
   for (int k = 0; k < 7 && !rc; ++k) {
     if (!(mask >> k & 1u)) continue;
     double *v = p->buf[0];

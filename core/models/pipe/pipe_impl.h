@@ -5,6 +5,7 @@
 
 #include "core/fv/cell_scalar.h"
 #include "core/fv/grid.h"
+#include "core/io/output.h"
 #include "core/mesh/mesh.h"
 #include "core/mesh/tensor_grid.h"
 #include "core/plugin/point_eval.h"
@@ -26,6 +27,9 @@ typedef struct pipe_config {
   int granular_temperature; /* PIPE_THETA_* */
   int modulation;           /* 0 none, 1 Simonin's */
   double c_eps3;
+  /* the developing pipe (pipe_march.c): length 0 for the fully developed one */
+  double length, inlet_intensity, inlet_length_scale;
+  long axial_cells;
 } pipe_config;
 
 /* The host's quantities the closures bind to. */
@@ -48,6 +52,23 @@ enum {
   PQ_N
 };
 extern const char *const pipe_quantity_names[PQ_N];
+
+/* The developing pipe (`[pipe] length`, pipe_march.c): the stations along z, the last station's state, the
+   radial volume fluxes of the phases through the row's faces, and every station's fields. */
+typedef struct pipe_march {
+  int on, nz, j;
+  double h;                                        /* from the last station (the inlet for the first) to this */
+  double *uf_up, *us_up, *phi_up, *k_up, *eps_up, *theta_up; /* [n] the last station's state */
+  double *ff, *fs, *rff, *rfs; /* [nf] the fluid's and the solids' radial volume fluxes, rho_f ff, 1.5 rho_s fs */
+  double *cap, *s_old;                             /* [n] a march step's storage and start for k or epsilon */
+  double *field[7];                                /* [n nz] every station's fields (the schema's order) */
+  double *G, *tau_fw, *tau_sw, *y_plus;            /* [nz] */
+  double pressure_drop;                            /* p(0) - p(L) */
+  long iterations, worst_station_iterations;
+  sl_mesh *mesh;
+  sl_tensor_grid tg;
+  sl_fv_grid g;
+} pipe_march;
 
 typedef struct pipe {
   const sl_scene *sc;
@@ -87,6 +108,7 @@ typedef struct pipe {
   int change_cell;
   int converged, warned_yplus;
   char stop_reason[256];
+  pipe_march march;
 } pipe;
 
 int pipe_closures_bind(pipe *p, sl_diag *d);
@@ -98,5 +120,16 @@ int pipe_momentum_solve(pipe *p, sl_diag *d);
 int pipe_solids_coefficients(pipe *p, sl_diag *d);
 int pipe_solids_update(pipe *p, sl_diag *d);
 int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d);
+int pipe_converge(pipe *p, sl_diag *d);
+/* the developing pipe (pipe_march.c) */
+int pipe_march_setup(pipe *p, sl_diag *d);
+void pipe_march_release(pipe *p);
+void pipe_march_fluxes(pipe *p);
+void pipe_march_momentum(const pipe *p, sl_csr *A, double *b);
+void pipe_march_scalar(pipe *p, const double *cap_pseudo, const double *s_iter, const double *s_up);
+void pipe_march_solids(pipe *p, double *cap, double *flux);
+void pipe_march_theta(pipe *p, const double *cap_pseudo);
+int pipe_march_solve(pipe *p, sl_diag *d);
+int pipe_march_write(pipe *p, sl_output *out, unsigned mask, sl_diag *d);
 
 #endif

@@ -79,6 +79,7 @@ int pipe_momentum_solve(pipe *p, sl_diag *d) {
     add(A, iG, f, cf * V), add(A, iG, s, cs * V);
     Vsum += V;
   }
+  if (p->march.on) pipe_march_momentum(p, A, b); /* the developing pipe's convection (pipe_march.c) */
   b[iG] = p->cfg->bulk_velocity * Vsum;
   sl_csr_touch(A);
   int rc = sl_linsolve_solve(p->ls, A, b, p->x, d);

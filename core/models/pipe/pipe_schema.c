@@ -15,7 +15,7 @@ static const sl_key pipe_keys[] = {
      .min = 1e-3, .max = 100.0, .units = "m s^-1",
      .help = "the mixture's bulk velocity V = Q/A along the flow (the pressure gradient is what meets it)"},
     {.section = "pipe", .name = "solids_fraction", .type = SL_KEY_REAL, C(solids_fraction), .min = 0.0, .max = 0.73,
-     .help = "the section-mean solids fraction, held (0: water alone)"},
+     .help = "the section-mean solids fraction, held (0: water alone); with length: the inlet's, uniform"},
     {.section = "pipe", .name = "cells", .type = SL_KEY_INT, C(cells), .def = 40, .min = 4, .max = 4000,
      .help = "radial cells"},
     {.section = "pipe", .name = "wall_cell", .type = SL_KEY_REAL, C(wall_cell), .min = 1e-9, .max = 5.0, .units = "m",
@@ -59,6 +59,17 @@ static const sl_key pipe_keys[] = {
     {.section = "pipe", .name = "crossing_trajectory", .type = SL_KEY_REAL, C(crossing_trajectory), .def = 0.45,
      .min = 0.0, .max = 10.0,
      .help = "simonin: C_beta of t_fs (Csanady 1963: 1.8 - 1.35 cos^2, the slip along the mean motion)"},
+    {.section = "pipe", .name = "length", .type = SL_KEY_REAL, C(length), .min = 1e-3, .max = 1e4, .units = "m",
+     .def_doc = "none: fully developed",
+     .help = "a developing pipe of this length from uniform inlet profiles, marched along z (Krampa 2009's CFX-4 "
+             "set-up: 4 m); the outputs' scalars are the outlet's"},
+    {.section = "pipe", .name = "axial_cells", .type = SL_KEY_INT, C(axial_cells), .def = 50, .min = 1,
+     .max = 100000, .help = "with length: the uniform cells along z (Krampa 2009: 50), each centre a station"},
+    {.section = "pipe", .name = "inlet_intensity", .type = SL_KEY_REAL, C(inlet_intensity), .def = 0.1, .min = 1e-4,
+     .max = 1.0, .help = "with length: the inlet's turbulence intensity TI, k = 1.5 (TI V)^2 (Krampa 2009: 0.1)"},
+    {.section = "pipe", .name = "inlet_length_scale", .type = SL_KEY_REAL, C(inlet_length_scale), .min = 1e-9,
+     .max = 10.0, .units = "m", .def_doc = "0.007 D",
+     .help = "with length: the inlet's epsilon = C_mu^(3/4) k^(3/2)/l (Krampa 2009's command file: 0.007 D)"},
     {.section = "solid", .name = "density", .type = SL_KEY_REAL, SL_AT_SCENE(solid.density), .def = 2500.0,
      .min = 1e-3, .max = 1e5, .units = "kg m^-3", .help = "particle density"},
     {.section = "solid", .name = "diameter", .type = SL_KEY_REAL, SL_AT_SCENE(solid.diameter), .def = 5e-4,
@@ -87,7 +98,8 @@ const sl_schema sl_pipe_schema = {
                "axisymmetric grid graded towards the wall): k-epsilon with wall functions, the two-fluid axial "
                "momentum with one pressure gradient at a given bulk velocity, the radial solids balance of turbulent "
                "dispersion and solids pressure at a fixed mean solids fraction; up-flow or down-flow by the sign of "
-               "gravity (Krampa 2009).",
+               "gravity (Krampa 2009). With [pipe] length: the developing pipe from uniform inlet profiles on the 2-D "
+               "axisymmetric grid, marched along z.",
     .tables = {&sl_keys_scene, &sl_keys_fluid, &sl_keys_output, &sl_keys_plugins, &pipe_key_table},
     .n_tables = 5,
     .roles = {{"turbulence", 1, "the fluid's turbulence (model = k_epsilon)"},

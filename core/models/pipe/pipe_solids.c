@@ -34,7 +34,9 @@
  * it drives solids from where they are fewest; in dilute flow (5 %) this runs
  * away near the wall and the steady solve does not converge. The pseudo-time
  * step keeps the section's solids inventory; phi is kept below phi_max - 0.01
- * and the inventory restored to the given mean. */
+ * and the inventory restored to the given mean. In the developing pipe the balance gains the axial convection
+ * of the solids and the radial convection by the mixture's volume flux (pipe_march.c), and carries the inlet's
+ * solids flux in place of an inventory. */
 #include <math.h>
 #include <string.h>
 
@@ -188,13 +190,18 @@ int pipe_solids_update(pipe *p, sl_diag *d) {
   }
   sl_cell_scalar_terms t = {
       .dt = 1e3 * p->R * p->R / fmax(Dmax, 1e-300), .cap = cap, .s_old = p->phi, .k = D, .flux = kinetic ? flux : NULL};
+  if (p->march.on) { /* the developing pipe: the solids' flux marched along z (pipe_march.c) */
+    pipe_march_solids(p, cap, flux);
+    t.dt = 1.0, t.s_old = p->march.s_old, t.flux = flux;
+  }
   rc = sl_cell_scalar_solve(&p->cs, &t, s, d);
   if (rc) return sl_diag_prefix(d, rc, "pipe: the radial solids balance");
-  /* bound and restore the inventory */
+  /* bound and restore the inventory (the developing pipe carries its inlet's flux instead: bounded only) */
   double target = p->cfg->solids_fraction, cap_phi = p->phi_max - 0.01;
-  for (int pass = 0; pass < 20; ++pass) {
+  for (int pass = 0; pass < (p->march.on ? 1 : 20); ++pass) {
     double m = 0.0, A = 0.0;
     for (int i = 0; i < n; ++i) s[i] = fmin(fmax(s[i], 0.0), cap_phi), m += g->vol[i] * s[i], A += g->vol[i];
+    if (p->march.on) break;
     double scale = target * A / m;
     if (fabs(scale - 1.0) < 1e-14) break;
     for (int i = 0; i < n; ++i) s[i] *= scale;

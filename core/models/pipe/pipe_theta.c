@@ -58,6 +58,10 @@ int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d) {
                             .sink = sink,
                             .boundary = p->wall_energy ? wall_energy : NULL,
                             .boundary_user = p};
+  if (p->march.on) { /* the developing pipe's convection (pipe_march.c) */
+    pipe_march_theta(p, cap);
+    t.dt = 1.0, t.cap = p->march.cap, t.s_old = p->march.s_old, t.flux = p->march.rfs;
+  }
   if ((rc = sl_cell_scalar_solve(&p->cs, &t, x, d))) return sl_diag_prefix(d, rc, "pipe: the granular temperature");
   const double w = p->iterations > 0 ? p->relax : 1.0; /* under-relaxed as the velocities */
   for (int i = 0; i < n; ++i) {

@@ -8,7 +8,8 @@
  * (Krampa 2009 eqs 4.82-4.83 without modulation), P_k = mu_t (du_f/dr)^2, the
  * destruction implicit in k and e with its coefficient lagged, the local
  * pseudo-step dtau = pseudo_step k/eps. The wall cell holds k = u_tau^2/sqrt(C_mu)
- * and eps = u_tau^3/(kappa y) (Krampa 2009 eqs 4.85-4.86).
+ * and eps = u_tau^3/(kappa y) (Krampa 2009 eqs 4.85-4.86). In the developing pipe the march's axial and radial
+ * convection join both equations (pipe_march.c).
  *
  * `[pipe] modulation = simonin` adds the particles' modulation of Krampa's model C (eqs 4.80-4.83, Simonin
  * 1996): per unit volume, c_f rho_f Pi_kf = K (k_fs - 2 k) in the k equation and C_eps3 (eps/k) times it in
@@ -98,6 +99,10 @@ int pipe_turbulence_update(pipe *p, sl_diag *d) {
     snk[i] = cf * p->rho_f * p->eps[i] / p->k[i] + mod[i];
   }
   t.s_old = p->k, p->dirichlet = p->k_wall;
+  if (p->march.on) { /* the developing pipe's convection (pipe_march.c) */
+    pipe_march_scalar(p, cap, p->k, p->march.k_up);
+    t.cap = p->march.cap, t.s_old = p->march.s_old, t.flux = p->march.rff;
+  }
   int rc = sl_cell_scalar_solve(&p->cs, &t, s, d);
   if (rc) return sl_diag_prefix(d, rc, "pipe: the k equation");
   /* epsilon, with the k of the step's start in its coefficients */
@@ -108,6 +113,10 @@ int pipe_turbulence_update(pipe *p, sl_diag *d) {
     snk[i] = cf * p->eps_sink[i] + p->cfg->c_eps3 * mod[i];
   }
   t.s_old = p->eps, p->dirichlet = p->eps_wall;
+  if (p->march.on) {
+    pipe_march_scalar(p, cap, p->eps, p->march.eps_up);
+    t.s_old = p->march.s_old;
+  }
   double *e = P; /* P is in src already */
   rc = sl_cell_scalar_solve(&p->cs, &t, e, d);
   if (rc) return sl_diag_prefix(d, rc, "pipe: the epsilon equation");
