@@ -155,7 +155,8 @@ static const sl_kind_info contracts[] = {
          0,
          "k <= 0 or epsilon <= 0 (the eddy viscosity k^2/eps and eps/k diverge); any NaN",
          "pipe (Krampa 2009): mu_t, mu_t_k, mu_t_eps, eps_production, eps_sink and c_mu of (k, epsilon) in the "
-         "k-epsilon equations"},
+         "k-epsilon equations; two_fluid 2-D model: mu_t of the k and epsilon the scene states, the eddy "
+         "viscosity of the solids' turbulent dispersion"},
     [SL_KIND_DENSIFICATION] =
         {"new reference porosity nbar of a sand after a half-cycle of shear strain (cyclic densification, the "
          "source of liquefaction)",

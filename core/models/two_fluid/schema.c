@@ -203,6 +203,22 @@ static const sl_key plane_keys[] = {
     {.section = "two_fluid", .name = "column_form", .type = SL_KEY_BOOL, C(column_form),
      .help = "a grid one cell across, gravity along it: the 1-D column's equations (no fluid viscous stress, the "
              "weight's phi that of the drag, the fluid's inertia and the pressure from the mixture flux)"},
+    {.section = "two_fluid", .name = "turbulence_k", .type = SL_KEY_EXPR, C(turb_k), .vars = "x,y,case",
+     .units = "m^2 s^-2", .def_doc = "required with [closure.turbulence]",
+     .help = "the fluid's turbulent kinetic energy, as the scene states it, for [closure.turbulence]'s eddy viscosity "
+             "that disperses the solids"},
+    {.section = "two_fluid", .name = "turbulence_epsilon", .type = SL_KEY_EXPR, C(turb_eps), .vars = "x,y,case",
+     .units = "m^2 s^-3", .def_doc = "required with [closure.turbulence]", .help = "its dissipation rate"},
+    {.section = "two_fluid", .name = "dispersion_schmidt", .type = SL_KEY_REAL, C(dispersion_schmidt), .def = 1.0,
+     .min = 1e-3, .max = 1e3, .help = "sigma_d of the solids' turbulent dispersion nu_t/sigma_d (Krampa 2009 eq 4.59: "
+                                      "1)"},
+    {.section = "two_fluid", .name = "swirl", .type = SL_KEY_BOOL, C(swirl),
+     .help = "axisymmetric: both phases' azimuthal velocities, driven by walls' angular_velocity (carried by the "
+             "meridional flow; no centrifugal force back on it)"},
+    {.section = "two_fluid", .name = "dispersion", .type = SL_KEY_CHOICE, C(dispersion),
+     .choices = "gradient|turbophoretic", .help = "with [closure.turbulence]: the solids flux -nu_t/sigma_d grad phi "
+                                                  "(gradient), or with the drift -phi tau_p grad(2k/3) down the "
+                                                  "turbulent intensity (turbophoretic; Young & Leeming 1997)"},
     {.section = "flow", .name = "gravity", .type = SL_KEY_REALS, SL_AT_SCENE(flow.gravity), .max_n = 3,
      .def_list = (const double[]){0.0, -9.81}, .n_def = 2, .units = "m s^-2", .help = "gravity (x, y)"},
     {.section = "flow", .name = "convection", .type = SL_KEY_BOOL, SL_AT_SCENE(flow.convection),
@@ -236,6 +252,10 @@ static const sl_key plane_keys[] = {
     {.section = "boundary", .name = "solids", .type = SL_KEY_CHOICE, SL_AT_BOUNDARY(tfp_boundary, solids),
      .choices = "no_slip|free_slip|wall_stress", .when_type = ON(TFP_WALL), .when_doc = "a wall",
      .help = "the solids at a wall (wall_stress: [closure.wall_stress] against their slip)"},
+    {.section = "boundary", .name = "angular_velocity", .type = SL_KEY_REAL,
+     SL_AT_BOUNDARY(tfp_boundary, angular_velocity), .min = -1e6, .max = 1e6, .units = "rad s^-1",
+     .when_type = ON(TFP_WALL), .when_doc = "a wall", .help = "with [two_fluid] swirl: the wall's rotation about the "
+                                                            "axis (u_theta = omega r)"},
     {.section = "boundary", .name = "solids_flux", .type = SL_KEY_EXPR, SL_AT_BOUNDARY(tfp_boundary, solids_flux),
      .vars = "x,y,t,case", .units = "m s^-1", .when_type = ON(TFP_INLET), .when_doc = "an inlet",
      .def_doc = "none (the solids are held)",
@@ -244,7 +264,7 @@ static const sl_key plane_keys[] = {
 TABLE(tf_plane_keys, plane_keys);
 
 static const char *const plane_fields[] = {"phi", "velocity_solid", "velocity_fluid", "pressure", "solids_pressure",
-                                           "theta"};
+                                           "theta", "swirl_fluid", "swirl_solid"};
 
 const sl_schema sl_two_fluid_plane_schema = {
     .model = "two_fluid",
@@ -262,12 +282,13 @@ const sl_schema sl_two_fluid_plane_schema = {
               {"solids_pressure", 0, "the solids pressure p_s(phi) of the particles in contact"},
               {"viscosity", 0, "a suspension viscosity: the solids' share of it"},
               {"granular", 0, "kinetic theory: the solids viscosity, conductivity, dissipation and pressure of theta"},
-              {"wall_stress", 0, "the solids' stress at walls with solids = wall_stress"}},
-    .n_roles = 5,
+              {"wall_stress", 0, "the solids' stress at walls with solids = wall_stress"},
+              {"turbulence", 0, "the eddy viscosity mu_t(k, epsilon) that disperses the solids (model = k_epsilon)"}},
+    .n_roles = 6,
     .config_size = sizeof(tf_config),
     .boundary_size = sizeof(tfp_boundary),
     .fields = plane_fields,
-    .n_fields = 6,
+    .n_fields = 8,
 };
 
 /* ---- the shear layer ------------------------------------------------------------------------- */

@@ -35,6 +35,12 @@ typedef struct tf_config {
   sl_scene_expr nbar;                            /* [initial]: the column's reference porosity (liquefaction.h) */
   const char *from;                              /* [initial]: an output file whose last state the column starts from */
   tf_lq_config lq;
+  /* [two_fluid] the 2-D model's turbulent dispersion of the solids (two_fluid_plane_dispersion.c): k and epsilon of
+     (x, y, case) for [closure.turbulence], the Schmidt number of the gradient flux, gradient|turbophoretic */
+  sl_scene_expr turb_k, turb_eps;
+  double dispersion_schmidt;
+  int dispersion;
+  int swirl; /* [two_fluid] swirl: the 2-D axisymmetric model's azimuthal velocities (two_fluid_plane_swirl.c) */
 } tf_config;
 
 /* A boundary of the 1-D column. */

@@ -25,8 +25,12 @@
  *           axisymmetric scene: bottom and top only) are this type: what
  *           leaves one enters the other; no mean pressure gradient along it
  *
+ *           (with [two_fluid] swirl, axisymmetric: angular_velocity, its
+ *           rotation about the axis in rad/s; two_fluid_plane_swirl.c)
+ *
  * Output: cell fields phi, velocity_solid, velocity_fluid, pressure,
- * solids_pressure, theta (with [closure.granular]); scalars
+ * solids_pressure, theta (with [closure.granular]), swirl_fluid and
+ * swirl_solid (u_theta, with [two_fluid] swirl); scalars
  * solids_inventory, solids_conservation_error and, per wall NAME,
  * wall_shear_stress_fluid_NAME and wall_shear_stress_solid_NAME (the mean
  * stress each phase exerts on the wall along its positive direction) and
@@ -42,7 +46,7 @@
 #include "core/models/two_fluid/two_fluid_plane_impl.h"
 #include "core/scene/solver.h"
 
-enum { F_PHI = 1, F_US = 2, F_UF = 4, F_P = 8, F_PS = 16, F_THETA = 32 };
+enum { F_PHI = 1, F_US = 2, F_UF = 4, F_P = 8, F_PS = 16, F_THETA = 32, F_SWF = 64, F_SWS = 128 };
 
 typedef struct tfp_run {
   const sl_scene *sc;
@@ -246,6 +250,12 @@ static int plane_write(void *self, sl_output *out, double t, const double *u_sta
   }
   if (!rc && (r->fields & F_THETA) && m->s.granular)
     rc = sl_output_write_field(out, "theta", SL_CENTRE_CELL, 1, to_mesh_order(r, m->s.theta, NULL), d);
+  for (int phase = 0; phase < 2 && !rc && m->sw.on; ++phase) { /* u_theta = r Omega */
+    if (!(r->fields & (phase ? F_SWS : F_SWF))) continue;
+    for (int c = 0; c < m->fv.nc; ++c) vx[c] = m->fv.xc[c % m->fv.nx] * m->sw.om[phase * m->fv.nc + c];
+    rc = sl_output_write_field(out, phase ? "swirl_solid" : "swirl_fluid", SL_CENTRE_CELL, 1,
+                               to_mesh_order(r, vx, NULL), d);
+  }
   for (int b = 0; b < m->n_b && !rc; ++b) {
     if (r->b[b].type != TFP_WALL) continue;
     static const char *const what[4] = {"wall_shear_stress_fluid", "wall_shear_stress_solid", "wall_slip",
@@ -283,6 +293,9 @@ static int plane_checkpoint(void *self, sl_checkpoint_array *a, int max) {
 static int plane_restore(void *self, const sl_checkpoint *ck, sl_diag *d) {
   tfp_run *r = self;
   tf_state st = plane_state(r);
+  if (r->m.sw.on)
+    return sl_diag_set(d, SL_EBADINPUT, "[two_fluid] swirl: a checkpoint does not hold the swirl; run the scene "
+                                        "from its start");
   int rc = tf_checkpoint_restore(ck, "2-D two_fluid (the same grid)", &st, d);
   if (!rc && st.theta) memcpy(r->m.s.theta_new, r->m.s.theta, (size_t)r->m.fv.nc * sizeof *r->m.s.theta);
   if (!rc) r->inventory0 = st.inventory0, r->outflow = st.outflow;
@@ -310,6 +323,7 @@ static void plane_accept(void *self, const sl_step *s, int *steady) {
   sw = m->us, m->us = m->us_new, m->us_new = sw;
   sw = m->uf, m->uf = m->uf_new, m->uf_new = sw;
   if (m->s.granular) memcpy(m->s.theta, m->s.theta_new, (size_t)m->fv.nc * sizeof *m->s.theta);
+  if (m->sw.on) sw = m->sw.om, m->sw.om = m->sw.om_new, m->sw.om_new = sw;
   r->outflow += m->outflow_trial;
   r->substeps += m->substeps_trial, ++r->advances;
   m->accepted_substeps = m->last_substeps;
@@ -317,9 +331,36 @@ static void plane_accept(void *self, const sl_step *s, int *steady) {
   *steady = r->steady_tol > 0.0 && rate < r->steady_tol;
 }
 
+/* [two_fluid] swirl: axisymmetric only, no wall-stress solids (their slip along theta is not modelled); a wall's
+   angular_velocity only with it. */
+static int swirl_setup(tfp_run *r, sl_diag *d) {
+  const sl_scene *sc = r->sc;
+  char at[400];
+  for (int k = 0; k < r->mesh->n_boundaries; ++k) {
+    const sl_src *src = sl_scene_src(sc, &r->b[k].angular_velocity);
+    if (src && !r->cfg->swirl)
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [boundary.%s] angular_velocity: only with [two_fluid] swirl = true",
+                         src->file, src->line, r->mesh->boundary_names[k]);
+    if (r->cfg->swirl && r->b[k].type == TFP_WALL && r->b[k].solids == TFP_SOLIDS_WALL_STRESS)
+      return sl_diag_set(d, SL_EBADINPUT, "[boundary.%s] solids = wall_stress: [two_fluid] swirl takes walls that "
+                                          "hold the solids or let them slip (no_slip, free_slip)",
+                         r->mesh->boundary_names[k]);
+  }
+  if (!r->cfg->swirl) return 0;
+  if (!r->m.axi)
+    return sl_diag_set(d, SL_EBADINPUT, "%s: [two_fluid] swirl: only an axisymmetric scene has a swirl "
+                                        "([scene] geometry = axisymmetric)", sl_scene_where(sc, &r->cfg->swirl, at, sizeof at));
+  if (r->cfg->column_form)
+    return sl_diag_set(d, SL_EBADINPUT, "%s: [two_fluid] swirl: not with column_form",
+                       sl_scene_where(sc, &r->cfg->swirl, at, sizeof at));
+  return tfp_swirl_setup(&r->m, r->linear, d);
+}
+
 static void release(tfp_run *r) {
   free(r->cellbuf);
   sl_point_release(&r->m.c.drag.pc), sl_point_release(&r->m.c.ps.pc);
+  tfp_dispersion_free(&r->m.disp);
+  tfp_swirl_free(&r->m.sw);
   tfp_free(&r->m);
   free(r);
 }
@@ -340,6 +381,7 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   if (!rc) r->m.n_b = r->mesh->n_boundaries;
   if (!rc) rc = tfp_setup(&r->m, d);
   if (!rc) rc = tfp_solids_bind(&r->m, sc, r->cfg, d);
+  if (!rc) rc = tfp_dispersion_bind(&r->m, sc, r->cfg, d);
   /* the phases' convective acceleration, off by default as in the 1-D column (which has none) */
   r->m.convection = sc->flow.convection;
   if (!rc && !(r->cellbuf = calloc(2 * (size_t)r->m.fv.nc, sizeof *r->cellbuf)))
@@ -362,6 +404,7 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
         }
     }
   }
+  if (!rc) rc = swirl_setup(r, d);
   if (!rc) rc = tfp_boundary_values(&r->m, 0.0, r->m.phi, d);
   if (!rc && r->cfg->column_form) {
     char at[400];
@@ -369,7 +412,8 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
                           sl_scene_where(sc, &r->cfg->column_form, at, sizeof at), d);
   }
   unsigned mask = 0;
-  unsigned all = F_PHI | F_US | F_UF | F_P | (r->m.c.ps.c ? F_PS : 0) | (r->m.s.granular ? F_THETA : 0);
+  unsigned all = F_PHI | F_US | F_UF | F_P | (r->m.c.ps.c ? F_PS : 0) | (r->m.s.granular ? F_THETA : 0) |
+                 (r->m.sw.on ? F_SWF | F_SWS : 0);
   if (!rc) rc = sl_scene_output_fields(sc, all, &mask, d);
   r->fields = (int)mask;
   if (rc) {

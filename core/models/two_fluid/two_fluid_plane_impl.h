@@ -45,6 +45,7 @@ typedef struct tfp_boundary {
                              the bottom and top, +y along the left and right); of (x, y, t, case) (e NULL: 0) */
   double pressure;        /* outlet */
   sl_scene_expr solids_flux; /* inlet: the superficial solids velocity entering, of (x, y, t, case) (e NULL: held) */
+  double angular_velocity;   /* wall, with [two_fluid] swirl: its rotation about the axis, rad/s */
 } tfp_boundary;
 
 
@@ -76,6 +77,30 @@ typedef struct tfp_solids {
   int any; /* the solids carry a stress (a viscosity at all) */
 } tfp_solids;
 
+/* The turbulent dispersion of the solids (two_fluid_plane_dispersion.c), with [closure.turbulence]: the cells' k
+ * and epsilon (of the scene's expressions) and eddy viscosity, per face the gradient flux's diffusivity and the
+ * turbophoretic drift velocity; their solids flux is added to the transport's. */
+typedef struct tfp_dispersion {
+  int on, turbophoretic;
+  double schmidt;
+  sl_closure *c; /* the scene's (not owned) */
+  sl_point_closure pc;
+  double *k, *eps, *mu_t, *tau, *slip, *K, *dK, *phi; /* cells [nc] */
+  double *D, *v;                                        /* faces [nf]: m^2/s, m/s along +x or +y */
+} tfp_dispersion;
+
+/* The swirl of an axisymmetric scene (two_fluid_plane_swirl.c): both phases' angular velocities in the cells,
+ * fluid [0, nc) then solids [nc, 2 nc), of the accepted step and of the trial; their linear system. */
+typedef struct tfp_swirl {
+  int on;
+  double *buf;        /* the allocation (om and om_new swap within it) */
+  double *om, *om_new;
+  double *rhs, *K, *slip; /* [2 nc], [nc], [nc] scratch */
+  sl_triplets trip;
+  sl_csr A;
+  sl_linsolve *ls;
+} tfp_swirl;
+
 typedef struct tfp_model {
   sl_tensor_grid grid;
   sl_fv_grid fv;   /* its staggered grid: cells, faces, neighbours, periodic images, geometry */
@@ -83,6 +108,8 @@ typedef struct tfp_model {
   int convection;  /* [flow] convection: the phases' rho alpha (u . grad) u */
   double g[2];
   tfp_solids s;
+  tfp_dispersion disp; /* zero: none */
+  tfp_swirl sw;        /* zero: none */
   tf_column c; /* the physics, the closures and the numerical keys (its column geometry is unused) */
   const tfp_boundary *b; /* [n_b] */
   int n_b;
@@ -203,6 +230,20 @@ void tfp_column_restored(tfp_model *m);
 /* The linear solver's name and counters, the fast path's when it is on (band_start). */
 const char *tfp_linear_name(const tfp_model *m, const char *general);
 sl_linsolve_stats tfp_linear_stats(const tfp_model *m);
+
+/* [closure.turbulence] and the [two_fluid] dispersion keys bound (two_fluid_plane_dispersion.c): nothing when the
+ * scene has neither; SL_EBADINPUT with file:line for a key without the closure or k, epsilon outside (0, 1e6],
+ * (0, 1e9] at a cell. After tfp_setup. */
+int tfp_dispersion_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_diag *d);
+/* The faces' D and v at the solids fraction phi and the iterate's velocities (uf, us). 0 or SL_EFAILED. */
+int tfp_dispersion_update(tfp_model *m, const double *phi, const double *uf, const double *us, sl_diag *d);
+void tfp_dispersion_free(tfp_dispersion *p);
+
+/* [two_fluid] swirl: its arrays and solver (`linear` names it). 0 or SL_ENOMEM. */
+int tfp_swirl_setup(tfp_model *m, const char *linear, sl_diag *d);
+/* The trial's swirl (om_new) over dt at the converged step's velocities and phi. 0 or SL_EFAILED. */
+int tfp_swirl_step(tfp_model *m, double dt, sl_diag *d);
+void tfp_swirl_free(tfp_swirl *w);
 
 /* The solids volume (per radian when axisymmetric) in the domain. */
 double tfp_inventory(const tfp_model *m, const double *phi);

@@ -920,6 +920,7 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
           m->uf_new[f] = m->uf[f] * (1.0 - m->phi[in]) / (1.0 - m->phi_new[in]);
           m->us_new[f] = m->phi_new[in] > PHI_FLOOR ? m->js[f] / m->phi_new[in] : 0.0;
         }
+      if (m->sw.on) return tfp_swirl_step(m, dt, d); /* two_fluid_plane_swirl.c */
       return 0;
     }
   }

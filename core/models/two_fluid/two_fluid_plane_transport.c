@@ -8,7 +8,8 @@
  * sub-stepped within the CFL limit (halved at order 2); what enters a cell
  * scaled so that it cannot pass phi_max. Solids enter from outside only
  * through an inlet with a solids flux (its given js; clear fluid at an
- * outlet, held solids at any other inlet). The image faces of a
+ * outlet, held solids at any other inlet). With [closure.turbulence] the
+ * turbulent dispersion's face fluxes join (two_fluid_plane_dispersion.c). The image faces of a
  * periodic row carry nothing: the row's first face carries its flux; nor
  * do closed faces (walls, the axis): the loops skip both (open_face). */
 #include <math.h>
@@ -102,6 +103,10 @@ static void transport_stage(tfp_model *m, const double *us, const double *phi, d
     else if (q < 0.0 && hi >= 0) F[f] = q * (w ? phi[hi] - w->half[2 * hi + dir] : phi[hi]);
     if (m->ftype[f] == TFP_FACE_INLET) F[f] = m->fv.area[f] * m->js[f]; /* the given inflow (0: held) */
     if (D > 0.0 && lo >= 0 && hi >= 0) F[f] -= D * m->fv.area[f] * (phi[hi] - phi[lo]) / m->fv.dist[f];
+    if (m->disp.on && lo >= 0 && hi >= 0) { /* the turbulent dispersion (two_fluid_plane_dispersion.c) */
+      double a = m->fv.area[f], vd = m->disp.v[f];
+      F[f] += a * vd * (vd > 0.0 ? phi[lo] : phi[hi]) - a * m->disp.D[f] * (phi[hi] - phi[lo]) / m->fv.dist[f];
+    }
     if (F[f] > 0.0 && hi >= 0) in[hi] += F[f];
     else if (F[f] < 0.0 && lo >= 0) in[lo] -= F[f];
   }
@@ -128,11 +133,17 @@ static void transport_stage(tfp_model *m, const double *us, const double *phi, d
 int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double *outflow, sl_diag *d) {
   double t0 = cpu_now();
   double *rate = m->inflow, rmax = 0.0;
+  if (m->disp.on) {
+    int rc = tfp_dispersion_update(m, m->phi, m->uf_new, us, d);
+    if (rc) return rc;
+  }
   memset(rate, 0, (size_t)m->fv.nc * sizeof *rate);
   for (int k = 0; k < m->n_open; ++k) {
     const int f = m->open_face[k], lo = m->fv.lo[f], hi = m->fv.hi[f];
     double q = m->fv.area[f] * us[f];
     double Df = m->c.diffusivity > 0.0 && lo >= 0 && hi >= 0 ? m->c.diffusivity * m->fv.area[f] / m->fv.dist[f] : 0.0;
+    if (m->disp.on && lo >= 0 && hi >= 0)
+      Df += m->fv.area[f] * (m->disp.D[f] / m->fv.dist[f] + fabs(m->disp.v[f]));
     if (lo >= 0) rate[lo] += fmax(q, 0.0) + Df;
     if (hi >= 0) rate[hi] += fmax(-q, 0.0) + Df;
   }
