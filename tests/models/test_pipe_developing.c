@@ -37,15 +37,9 @@ static const char *scene_name = "pipe_water.ini";
 static const double rho = 998.2, mu = 1.002e-3, D = 0.04;
 
 static int load(const char *name, char *buf, size_t cap) {
-  const char *src = getenv("SLUICE_SOURCE_DIR");
-  char path[4096];
-  snprintf(path, sizeof path, "%s/configs/%s", src ? src : ".", name);
-  FILE *f = fopen(path, "rb");
-  size_t n = f ? fread(buf, 1, cap - 1, f) : 0;
-  if (f) fclose(f);
-  buf[n] = '\0';
-  CHECK_MSG(n > 0, "cannot read %s", path);
-  return n > 0 ? 0 : 1;
+  char rel[256];
+  snprintf(rel, sizeof rel, "configs/%s", name);
+  return sl_test_read_source(rel, buf, cap);
 }
 
 static int run_text(const char *text, const char *const *sets, const char *out, sluice_error *e) {
@@ -332,6 +326,31 @@ static void bad_inlet(void) {
   if (f) fclose(f);
 }
 
+/* The shipped configs/pipe_developing.ini (pipe_water.ini included, length = 4) at its outlet against the fully
+ * developed pipe_water.ini: the same friction factor within 0.5 %, as against_fully_developed at Re = 1e5. */
+static void shipped_scene(void) {
+  const char *src = getenv("SLUICE_SOURCE_DIR");
+  char path[4096];
+  snprintf(path, sizeof path, "%s/configs/pipe_developing.ini", src ? src : ".");
+  sluice *s = NULL;
+  sluice_open_opts oo = {0};
+  sluice_run_opts ro = {.output = "pdev_shipped.h5", .version = "test"};
+  sluice_summary sum;
+  sluice_error e = {0, ""};
+  int rc = sluice_open(path, &oo, &s, &e);
+  if (!rc) rc = sluice_run(s, &ro, &sum, &e);
+  sluice_close(s);
+  const char *none[] = {NULL};
+  if (!rc) rc = run(none, "pdev_shipped_fd.h5", &e);
+  CHECK_MSG(rc == 0, "%s: %s", path, e.msg);
+  if (rc) return;
+  double fdv = scalar("pdev_shipped.h5", "friction_factor"), ff = scalar("pdev_shipped_fd.h5", "friction_factor");
+  printf("configs/pipe_developing.ini: outlet f %.7f, pipe_water.ini %.7f (%+.4f %%)\n", fdv, ff,
+         100.0 * (fdv / ff - 1.0));
+  CHECK_MSG(fabs(fdv / ff - 1.0) < 0.005, "shipped developing pipe: outlet f %.7f against %.7f", fdv, ff);
+  CHECK_MSG(scalar("pdev_shipped.h5", "stations") == 50.0, "the shipped scene marches 50 stations");
+}
+
 int main(void) {
   if (load("pipe_water.ini", scene, sizeof scene)) return sl_test_summary();
   remove("pdev_bad.h5");
@@ -347,5 +366,6 @@ int main(void) {
   const char *full[] = {"pipe.kinetic_pressure=true", "pipe.granular_temperature=transport", NULL};
   slurry("vertical_pipe.ini", full, 1e-3, 2e-3, 1e-3, 5e-3);
   bad_inlet();
+  shipped_scene();
   return sl_test_summary();
 }
