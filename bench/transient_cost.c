@@ -13,6 +13,7 @@
  *   no reuse       ... with [solver] reuse = never (a factorisation per changed matrix);
  *   projection     ... with [flow] scheme = projection (the split step), and with it at [time] tolerance 2.5e-4;
  *   before         --before BIN: another build (e.g. of the commit before the change), with its defaults;
+ *   before, projection  the same with [flow] scheme = projection;
  *   before, ref. BLAS  the same with --reference-blas DIR first on LD_LIBRARY_PATH (Debian's reference
  *                  libblas.so.3, e.g. /usr/lib/x86_64-linux-gnu/blas).
  * The cases: boycott to t = 0.1 and 0.8 (its 24 x 32 mesh), spinup to t = 25
@@ -97,6 +98,7 @@ static const variant variants[] = {
     /* the split step (core/models/navier_stokes/projection.h), at the scene's tolerance and at a quarter of it */
     {"projection", "flow.scheme=projection", NULL, NULL, 0, 0},
     {"projection, tolerance 2.5e-4", "flow.scheme=projection", "time.tolerance=2.5e-4", NULL, 0, 0},
+    {"before, projection", "flow.scheme=projection", NULL, NULL, 1, 0}, /* --before BIN's split step */
     /* a build with -DSLUICE_WITH_PETSC=ON: its defaults, and MUMPS (parallel direct) through it */
     {"petsc", "solver.linear=petsc", NULL, NULL, 0, 0},
     {"petsc, mumps", "solver.linear=petsc", NULL, "-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps", 0, 0},

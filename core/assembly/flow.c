@@ -99,7 +99,9 @@ static int check_input(const sl_system *s, const sl_th_space *th, const sl_flow_
     return sl_diag_set(d, SL_EBADINPUT, "flow: a rotating frame needs a 2-D mesh");
   if (o->omega != 0.0 && o->axisymmetric && th->n_comp != 3)
     return sl_diag_set(d, SL_EBADINPUT, "flow: a rotating axisymmetric frame needs the swirl component");
-  if (s && (s->n_dofs != th->n_dofs || s->n_elem != th->mesh->n_cells || s->dofs_per_elem != th->dofs_per_cell))
+  int32_t n_dofs = o->velocity_block ? th->p_offset : th->n_dofs;
+  int per_cell = o->velocity_block ? th->n_comp * th->vel->dofs_per_cell : th->dofs_per_cell;
+  if (s && (s->n_dofs != n_dofs || s->n_elem != th->mesh->n_cells || s->dofs_per_elem != per_cell))
     return sl_diag_set(d, SL_EBADINPUT, "flow: the system (%d dofs, %d x %d) was not built from this space",
                        (int)s->n_dofs, (int)s->n_elem, s->dofs_per_elem);
   return 0;
@@ -197,7 +199,9 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
                     const double *force) {
   const sl_fe_values *fv = w->fv;
   int c = fv->cell, nc = th->n_comp, nb = th->vel->dofs_per_cell, np = th->pres->dofs_per_cell;
-  int dim = th->mesh->dim, nv = nc * nb, n = nv + np, axi = o->axisymmetric, planar2 = !axi && nc == 2 && dim == 2;
+  /* npc: the pressure dofs the element's rows and columns hold (none for the velocity block alone) */
+  int npc = o->velocity_block ? 0 : np;
+  int dim = th->mesh->dim, nv = nc * nb, n = nv + npc, axi = o->axisymmetric, planar2 = !axi && nc == 2 && dim == 2;
   const int32_t *vd = th->vel->cell_dofs + (size_t)c * nb;
   int matrix = lin == SL_FLOW_NEWTON || lin == SL_FLOW_PICARD, newton = lin == SL_FLOW_NEWTON;
   if (matrix) memset(w->Ke, 0, (size_t)n * n * sizeof *w->Ke);
@@ -282,7 +286,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       w->be[k] -= wq * (m[v->A] * v->phi + 2.0 * mq * sym_dot(&Du, &v->D) - s->p * v->div);
     }
     const double *psi = fv->phi[1][q];
-    for (int k = 0; k < np; ++k) w->be[nv + k] -= wq * (-psi[k] * divu);
+    for (int k = 0; k < npc; ++k) w->be[nv + k] -= wq * (-psi[k] * divu);
     if (!matrix) continue;
     /* The generalized-Newtonian part of the Jacobian: 4 mu' gamma (Dhat:D(v)) (Dhat:D(dv)), Dhat = D(u)/gamma. */
     double s_ia[MAX_VEL];
@@ -292,7 +296,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       for (int k = 0; k < nv; ++k) s_ia[k] = sym_dot(&Du, &bv[k].D) / gam;
     }
     if (planar2 && o->omega == 0.0 && visc2 == 0.0 && w->frame[0] == 0 && w->frame[1] == 1) {
-      planar_matrix(w->Ke, n, nb, wq, fv->phi[0][q], (const double(*)[2])fv->grad[0][q], psi, np, rq, mq,
+      planar_matrix(w->Ke, n, nb, wq, fv->phi[0][q], (const double(*)[2])fv->grad[0][q], psi, npc, rq, mq,
                     o->mass_coef, K, s, o->convection, newton);
       continue;
     }
@@ -318,7 +322,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       if (K && vi->A < dim) /* the cell's momentum sink K (in-plane axes; not symmetric) */
         for (int kj = 0; kj < nv; ++kj)
           if (bv[kj].A < dim) row[kj] += wphi * K[2 * vi->A + bv[kj].A] * bv[kj].phi;
-      for (int k = 0; k < np; ++k) {
+      for (int k = 0; k < npc; ++k) {
         double bval = -wq * psi[k] * vi->div;
         row[nv + k] += bval;
         w->Ke[(size_t)(nv + k) * n + ki] += bval;

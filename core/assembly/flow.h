@@ -77,6 +77,12 @@ typedef struct sl_flow_opts {
   double mass_coef;      /* 0: steady */
   const double *history; /* combined numbering (velocity part read); NULL: zero */
   int quad_degree;       /* 0: 5 planar (exact for the Q2 convective term on affine cells), 7 axisymmetric */
+  /* The momentum equations alone (a split step's velocity solve): the system has the velocity dofs only
+   * (th->p_offset of them, per cell the th->n_comp * th->vel->dofs_per_cell velocity dofs that lead
+   * th->cell_dofs), its matrix the velocity block of the matrix the full assembly gives, b the momentum rows
+   * of its -R(u) (u in the combined numbering: the pressure of u enters them); no continuity rows, no
+   * pressure columns. 0: the whole system. */
+  int velocity_block;
 } sl_flow_opts;
 
 /* Assembles at the iterate u (combined numbering, th->n_dofs): b = -R(u) and,

@@ -75,10 +75,10 @@ static int matrix_current(const sl_flow_problem *p) {
 }
 
 /* The tractions' part of b (they depend on the data only). */
-static int add_tractions(sl_flow_problem *p, sl_diag *d) {
+static int add_tractions(sl_flow_problem *p, sl_system *s, sl_diag *d) {
   int rc = 0;
   for (int k = 0; k < p->n_tractions && !rc; ++k)
-    rc = sl_assemble_flow_traction(&p->sys, p->th, p->traction[k].boundary, p->traction[k].fn, p->traction[k].user,
+    rc = sl_assemble_flow_traction(s, p->th, p->traction[k].boundary, p->traction[k].fn, p->traction[k].user,
                                    p->opts.axisymmetric, d);
   return rc;
 }
@@ -91,7 +91,7 @@ static int add_tractions(sl_flow_problem *p, sl_diag *d) {
 static int linear_residual(sl_flow_problem *p, const double *u, double *b, sl_diag *d) {
   memset(b, 0, (size_t)p->th->n_dofs * sizeof *b);
   int rc = sl_assemble_flow(&p->sys, p->th, u, &p->opts, SL_FLOW_LOAD, d);
-  if (!rc) rc = add_tractions(p, d);
+  if (!rc) rc = add_tractions(p, &p->sys, d);
   rc = sl_system_agree(&p->sys, rc, d);
   if (!rc) rc = sl_system_complete(&p->sys, 0, d);
   if (rc) return rc;
@@ -108,7 +108,7 @@ int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_cs
   if (mode == SL_NL_RESIDUAL && matrix_current(p)) return linear_residual(p, u, b, d);
   if (mode != SL_NL_RESIDUAL) p->matrix.valid = 0;
   int rc = sl_assemble_flow(&p->sys, p->th, u, &p->opts, lin[mode], d);
-  if (!rc) rc = add_tractions(p, d);
+  if (!rc) rc = add_tractions(p, &p->sys, d);
   rc = sl_system_agree(&p->sys, rc, d);
   if (!rc) rc = sl_system_complete(&p->sys, mode != SL_NL_RESIDUAL, d);
   if (rc) return rc;
@@ -135,10 +135,20 @@ int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const 
   return sl_newton_solve(&p->sys.A, p->sys.b, p->th->n_dofs, u, sl_flow_problem_assemble, p, ls, &oo, st, d);
 }
 
-int sl_flow_problem_linearise(sl_flow_problem *p, double *u, sl_diag *d) {
+int sl_flow_problem_linearise_velocity(sl_flow_problem *p, double *u, sl_system *vs, sl_diag *d) {
   int rc = collect_fixed(p, d);
   if (rc) return rc;
   sl_constraints_impose(&p->bc, u);
-  sl_system_zero(&p->sys);
-  return sl_flow_problem_assemble(p, u, SL_NL_NEWTON, &p->sys.A, p->sys.b, d);
+  sl_system_zero(vs);
+  sl_flow_opts o = p->opts;
+  o.velocity_block = 1;
+  rc = sl_assemble_flow(vs, p->th, u, &o, SL_FLOW_NEWTON, d);
+  if (!rc) rc = add_tractions(p, vs, d); /* a traction's element vector leads with its velocity entries */
+  rc = sl_system_agree(vs, rc, d);
+  if (!rc) rc = sl_system_complete(vs, 1, d);
+  if (rc) return rc;
+  /* the constrained velocity dofs: p->fixed is increasing, so they lead it */
+  int32_t nv = 0;
+  while (nv < p->n_fixed && p->fixed[nv] < p->th->p_offset) ++nv;
+  return sl_csr_set_dirichlet(&vs->A, nv, p->fixed, NULL, vs->b, 0, d);
 }

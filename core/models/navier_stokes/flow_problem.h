@@ -68,8 +68,11 @@ int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_cs
 int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const sl_newton_opts *o,
                           sl_newton_stats *st, sl_diag *d);
 
-/* Imposes the constraint values on u, then assembles Newton's matrix and b = -R(u) at u into p->sys, the
- * constrained rows as identity rows with b = 0 there (a split step's linearisation, projection.h). */
-int sl_flow_problem_linearise(sl_flow_problem *p, double *u, sl_diag *d);
+/* Imposes the constraint values on u, then assembles the momentum equations alone at u into vs, a system of
+ * the velocity dofs (sl_flow_opts.velocity_block; a split step's linearisation, projection.h): Newton's
+ * velocity block and the momentum rows of b = -R(u), the constrained velocity rows identity rows with b = 0;
+ * the velocity rows and columns of the monolithic Newton system, without its continuity rows and pressure
+ * columns. p->sys is not touched. */
+int sl_flow_problem_linearise_velocity(sl_flow_problem *p, double *u, sl_system *vs, sl_diag *d);
 
 #endif

@@ -21,11 +21,10 @@ struct sl_projection {
   const sl_th_space *th;
   sl_projection_opts o;
   int32_t nv, np;
-  /* the velocity block of the monolithic matrix: its own pattern, values copied through map */
+  /* the velocity block of the monolithic matrix and the momentum residual, assembled alone
+   * (sl_flow_problem_linearise_velocity) */
   sl_system vsys;
   int32_t *vel_cell_dofs;
-  int32_t *map; /* [vsys.A.nnz]: index into the monolithic matrix's values */
-  uint64_t map_pattern;
   sl_linsolve *ls_v; /* F directly: the fallback */
   /* The preconditioner of F: its diagonal blocks, one per velocity component (the couplings between components
    * dropped), factorised when a solve becomes slow and kept meanwhile (P's values are F's of that step). */
@@ -156,8 +155,6 @@ int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *
     memcpy(pj->vel_cell_dofs + (size_t)c * nbv, th->cell_dofs + (size_t)c * th->dofs_per_cell,
            (size_t)nbv * sizeof *pj->vel_cell_dofs);
   if (!rc) rc = sl_system_init(&pj->vsys, pj->nv, nc, nbv, pj->vel_cell_dofs, d);
-  if (!rc) pj->map = malloc(((size_t)pj->vsys.A.nnz + 1) * sizeof *pj->map);
-  if (!rc && !pj->map) rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
   int ncomp = th->n_comp, nb = th->vel->dofs_per_cell;
   if (!rc && !(pj->comp_dofs = malloc((size_t)nc * nbv * sizeof *pj->comp_dofs)))
     rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
@@ -201,28 +198,10 @@ void sl_projection_destroy(sl_projection *pj) {
   sl_system_free(&pj->vsys), sl_system_free(&pj->psys);
   sl_constraints_free(&pj->pbc);
   sl_csr_free(&pj->B);
-  free(pj->vel_cell_dofs), free(pj->map), free(pj->mass), free(pj->pfixed);
+  free(pj->vel_cell_dofs), free(pj->mass), free(pj->pfixed);
   free(pj->phi_hist[0]), free(pj->phi_hist[1]), free(pj->phi_trial);
   free(pj->rhs), free(pj->x), free(pj->div);
   free(pj);
-}
-
-/* The entries of the monolithic A's velocity block in the velocity pattern (a subset of A's rows, the same
- * element couplings), once per pattern of A. */
-static int build_map(sl_projection *pj, const sl_csr *A, sl_diag *d) {
-  const sl_csr *F = &pj->vsys.A;
-  for (int32_t i = 0; i < pj->nv; ++i) {
-    int32_t k = A->row_ptr[i], end = A->row_ptr[i + 1];
-    for (int32_t j = F->row_ptr[i]; j < F->row_ptr[i + 1]; ++j) {
-      while (k < end && A->col_idx[k] < F->col_idx[j]) ++k;
-      if (k == end || A->col_idx[k] != F->col_idx[j])
-        return sl_diag_set(d, SL_EFAILED, "projection: the velocity block's entry (%d, %d) is not in the matrix",
-                           (int)i, (int)F->col_idx[j]);
-      pj->map[j] = k;
-    }
-  }
-  pj->map_pattern = A->pattern_id;
-  return 0;
 }
 
 static int apply_F(void *user, const double *x, double *y, sl_diag *d) {
@@ -292,15 +271,12 @@ int sl_projection_step(sl_projection *pj, sl_flow_problem *prob, const sl_step *
   const double *pk = s->state ? s->state + nv : p;
   for (int32_t i = 0; i < np; ++i) p[i] = pk[i] + w[0] * pj->phi_hist[0][i] + w[1] * pj->phi_hist[1][i];
   double t0 = wall();
-  int rc = sl_flow_problem_linearise(prob, u, d);
+  int rc = sl_flow_problem_linearise_velocity(prob, u, &pj->vsys, d);
   if (t_assembly) *t_assembly += wall() - t0;
   if (rc) return rc;
-  const sl_csr *A = &prob->sys.A;
-  if (A->pattern_id != pj->map_pattern && (rc = build_map(pj, A, d))) return rc;
   sl_csr *F = &pj->vsys.A;
-  for (int32_t j = 0; j < F->nnz; ++j) F->values[j] = A->values[pj->map[j]];
-  sl_csr_touch(F);
-  if ((rc = velocity_solve(pj, F, prob->sys.b, linear_rtol, d))) return sl_diag_prefix(d, rc, "projection: the velocity solve");
+  if ((rc = velocity_solve(pj, F, pj->vsys.b, linear_rtol, d)))
+    return sl_diag_prefix(d, rc, "projection: the velocity solve");
   for (int32_t i = 0; i < nv; ++i) u[i] += pj->x[i];
   /* the increment: int grad(phi).grad(q) = chi m (B u~)_q */
   sl_csr_matvec(&pj->B, u, pj->div);

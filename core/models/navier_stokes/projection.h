@@ -22,8 +22,9 @@
  *     is left out (the standard incremental form, Guermond & Salgado 2009), whose pressure is first order.
  * Expected orders in time (GMS 2006, Theorem 3.1 and section 3.4): velocity 2 in L2, pressure 3/2.
  *
- * The velocity's matrix F is the velocity block of the monolithic Jacobian, solved by FGMRES preconditioned
- * with the LU factors of its diagonal blocks (one per component; the couplings between components, the
+ * The velocity's matrix F is the velocity block of the monolithic Jacobian, assembled alone with the momentum
+ * residual (sl_flow_problem_linearise_velocity: no continuity rows, no pressure columns), solved by FGMRES
+ * preconditioned with the LU factors of its diagonal blocks (one per component; the couplings between components, the
  * viscous cross terms, convection's Jacobian, the swirl's and the buoyancy's, are left to the Krylov
  * iteration) from an earlier step, refactorised when a solve becomes slow; the Poisson matrix is factorised
  * at the first step and kept. */
