@@ -91,6 +91,7 @@ typedef struct variant {
 static const variant variants[] = {
     {"before, ref. BLAS", NULL, NULL, NULL, 1, 1},
     {"before", NULL, NULL, NULL, 1, 0},
+    {"before, projection", "flow.scheme=projection", NULL, NULL, 1, 0}, /* --before BIN's split step */
     {"no reuse", "solver.reuse=never", NULL, NULL, 0, 0},
     {"umfpack", "solver.linear=umfpack", NULL, NULL, 0, 0},
     {"klu", "solver.linear=klu", NULL, NULL, 0, 0},
@@ -98,7 +99,6 @@ static const variant variants[] = {
     /* the split step (core/models/navier_stokes/projection.h), at the scene's tolerance and at a quarter of it */
     {"projection", "flow.scheme=projection", NULL, NULL, 0, 0},
     {"projection, tolerance 2.5e-4", "flow.scheme=projection", "time.tolerance=2.5e-4", NULL, 0, 0},
-    {"before, projection", "flow.scheme=projection", NULL, NULL, 1, 0}, /* --before BIN's split step */
     /* a build with -DSLUICE_WITH_PETSC=ON: its defaults, and MUMPS (parallel direct) through it */
     {"petsc", "solver.linear=petsc", NULL, NULL, 0, 0},
     {"petsc, mumps", "solver.linear=petsc", NULL, "-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps", 0, 0},
