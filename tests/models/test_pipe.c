@@ -19,6 +19,7 @@
 
 #include "core/io/output.h"
 #include "sluice/sluice.h"
+#include "pipe_testing.h"
 #include "testing.h"
 
 static char scene[4096];
@@ -36,28 +37,7 @@ static int load_scene(void) {
 }
 
 static int run(const char *const *sets, const char *out, sluice_error *e) {
-  sluice *s = NULL;
-  sluice_open_opts oo = {.sets = sets};
-  sluice_run_opts ro = {.output = out, .version = "test"};
-  sluice_summary sum;
-  int rc = sluice_open_text(scene, strlen(scene), "pipe_water.ini", &oo, &s, e);
-  if (!rc) rc = sluice_run(s, &ro, &sum, e);
-  sluice_close(s);
-  return rc;
-}
-
-static double scalar(const char *out, const char *name) {
-  double v = NAN, t;
-  sl_diag d = {{0}};
-  int rc = sl_output_read_scalar(out, name, INFINITY, &v, &t, &d);
-  CHECK_MSG(rc == 0, "%s: %s", out, d.msg);
-  return v;
-}
-
-/* Churchill (1977), Fanning, smooth (Krampa 2009 eqs 2.12-2.13 with k = 0). */
-static double churchill(double Re) {
-  double A = pow(-2.457 * log(pow(7.0 / Re, 0.9)), 16.0), B = pow(37530.0 / Re, 16.0);
-  return 2.0 * pow(pow(8.0 / Re, 12.0) + pow(A + B, -1.5), 1.0 / 12.0);
+  return pipe_run_text(scene, "pipe_water.ini", sets, out, e);
 }
 
 static const double rho = 998.2, mu = 1.002e-3, D = 0.04;
@@ -66,7 +46,7 @@ static const double rho = 998.2, mu = 1.002e-3, D = 0.04;
 static double friction(double Re, int n, const char *out) {
   double V = Re * mu / (rho * D);
   /* u_tau from Churchill's f, the wall cell's centre at y+ = 36 */
-  double ut = V * sqrt(0.5 * churchill(Re)), w = 2.0 * 36.0 * mu / (rho * ut);
+  double ut = V * sqrt(0.5 * pipe_churchill(Re)), w = 2.0 * 36.0 * mu / (rho * ut);
   char s1[64], s2[64], s3[64];
   snprintf(s1, sizeof s1, "pipe.bulk_velocity=%.10g", V);
   snprintf(s2, sizeof s2, "pipe.cells=%d", n);
@@ -75,13 +55,13 @@ static double friction(double Re, int n, const char *out) {
   sluice_error e = {0, ""};
   int rc = run(sets, out, &e);
   CHECK_MSG(rc == 0, "Re %g: %s", Re, e.msg);
-  return rc ? NAN : scalar(out, "friction_factor");
+  return rc ? NAN : pipe_scalar(out, "friction_factor");
 }
 
 static void friction_factors(void) {
   const double Re[3] = {4e4, 1e5, 2e5};
   for (int k = 0; k < 3; ++k) {
-    double f = friction(Re[k], 40, "pipe_f.h5"), fc = churchill(Re[k]), yp = scalar("pipe_f.h5", "y_plus");
+    double f = friction(Re[k], 40, "pipe_f.h5"), fc = pipe_churchill(Re[k]), yp = pipe_scalar("pipe_f.h5", "y_plus");
     printf("Re %.0e: f = %.6f, Churchill %.6f (%+.2f %%), y+ %.1f\n", Re[k], f, fc, 100.0 * (f / fc - 1.0), yp);
     CHECK_MSG(fabs(f / fc - 1.0) < 0.03, "Re %g: f %.6f against Churchill's %.6f", Re[k], f, fc);
     CHECK_MSG(yp > 30.0 && yp < 200.0, "y+ %g at the wall cell", yp);
@@ -98,7 +78,7 @@ static void log_law(void) {
     CHECK_MSG(0, "%s", d.msg);
     return;
   }
-  double ut = sqrt(scalar("pipe_log.h5", "wall_shear_stress_fluid") / rho), R = 0.5 * D, worst = 0.0;
+  double ut = sqrt(pipe_scalar("pipe_log.h5", "wall_shear_stress_fluid") / rho), R = 0.5 * D, worst = 0.0;
   int used = 0;
   for (int c = 0; c < f.n; ++c) {
     double r = 0.0;
@@ -118,7 +98,7 @@ static void log_law(void) {
 
 static void grid(void) {
   double f40 = friction(1e5, 40, "pipe_g40.h5"), f80 = friction(1e5, 80, "pipe_g80.h5");
-  double p40 = scalar("pipe_g40.h5", "pressure_gradient"), p80 = scalar("pipe_g80.h5", "pressure_gradient");
+  double p40 = pipe_scalar("pipe_g40.h5", "pressure_gradient"), p80 = pipe_scalar("pipe_g80.h5", "pressure_gradient");
   printf("40 and 80 cells: f %.6f and %.6f (%+.3f %%), -dP/dz %.2f and %.2f Pa/m\n", f40, f80,
          100.0 * (f80 / f40 - 1.0), p40, p80);
   CHECK_MSG(fabs(f80 / f40 - 1.0) < 0.01, "f changes by %.3f %% from 40 to 80 cells", 100.0 * (f80 / f40 - 1.0));
@@ -131,9 +111,9 @@ static void up_and_down(void) {
     CHECK_MSG(0, "%s", e.msg);
     return;
   }
-  double tu = scalar("pipe_up.h5", "wall_shear_stress_fluid"), td = scalar("pipe_down.h5", "wall_shear_stress_fluid");
-  double mu_ = scalar("pipe_up.h5", "manometric_gradient"), md = scalar("pipe_down.h5", "manometric_gradient");
-  double pu = scalar("pipe_up.h5", "pressure_gradient"), pd = scalar("pipe_down.h5", "pressure_gradient");
+  double tu = pipe_scalar("pipe_up.h5", "wall_shear_stress_fluid"), td = pipe_scalar("pipe_down.h5", "wall_shear_stress_fluid");
+  double mu_ = pipe_scalar("pipe_up.h5", "manometric_gradient"), md = pipe_scalar("pipe_down.h5", "manometric_gradient");
+  double pu = pipe_scalar("pipe_up.h5", "pressure_gradient"), pd = pipe_scalar("pipe_down.h5", "pressure_gradient");
   printf("up-flow: -dP/dz %.3f, manometric %.4f Pa/m; down-flow: %.3f, %.4f; 4 tau_w/D = %.4f\n", pu, mu_, pd, md,
          4.0 * tu / D);
   CHECK_MSG(fabs(tu - td) < 1e-9 * tu, "tau_w up %.12g, down %.12g", tu, td);

@@ -30,6 +30,7 @@
 
 #include "core/io/output.h"
 #include "sluice/sluice.h"
+#include "pipe_testing.h"
 #include "testing.h"
 
 static char scene[4096], slurry_text[8192];
@@ -43,31 +44,10 @@ static int load(const char *name, char *buf, size_t cap) {
 }
 
 static int run_text(const char *text, const char *const *sets, const char *out, sluice_error *e) {
-  sluice *s = NULL;
-  sluice_open_opts oo = {.sets = sets};
-  sluice_run_opts ro = {.output = out, .version = "test"};
-  sluice_summary sum;
-  int rc = sluice_open_text(text, strlen(text), scene_name, &oo, &s, e);
-  if (!rc) rc = sluice_run(s, &ro, &sum, e);
-  sluice_close(s);
-  return rc;
+  return pipe_run_text(text, scene_name, sets, out, e);
 }
 
 static int run(const char *const *sets, const char *out, sluice_error *e) { return run_text(scene, sets, out, e); }
-
-static double scalar(const char *out, const char *name) {
-  double v = NAN, t;
-  sl_diag d = {{0}};
-  int rc = sl_output_read_scalar(out, name, INFINITY, &v, &t, &d);
-  CHECK_MSG(rc == 0, "%s: %s", out, d.msg);
-  return v;
-}
-
-/* Churchill (1977), Fanning, smooth (Krampa 2009 eqs 2.12-2.13 with k = 0). */
-static double churchill(double Re) {
-  double A = pow(-2.457 * log(pow(7.0 / Re, 0.9)), 16.0), B = pow(37530.0 / Re, 16.0);
-  return 2.0 * pow(pow(8.0 / Re, 12.0) + pow(A + B, -1.5), 1.0 / 12.0);
-}
 
 /* A field with its cells' centres (r, z) and volumes per radian (r dr dz). */
 typedef struct {
@@ -129,7 +109,7 @@ static double zmin(const cells *c) {
 
 /* The sets of a run at Re with the wall cell's centre at y+ = 36 (as tests/models/test_pipe.c). */
 static void sets_at(double Re, char s[3][64]) {
-  double V = Re * mu / (rho * D), ut = V * sqrt(0.5 * churchill(Re)), w = 2.0 * 36.0 * mu / (rho * ut);
+  double V = Re * mu / (rho * D), ut = V * sqrt(0.5 * pipe_churchill(Re)), w = 2.0 * 36.0 * mu / (rho * ut);
   snprintf(s[0], 64, "pipe.bulk_velocity=%.10g", V);
   snprintf(s[1], 64, "pipe.wall_cell=%.10g", w);
 }
@@ -169,8 +149,8 @@ static void against_fully_developed(void) {
       CHECK_MSG(0, "Re %g: %s", Re[k], e.msg);
       continue;
     }
-    double ff = scalar("pdev_fd.h5", "friction_factor"), fdv = scalar("pdev.h5", "friction_factor");
-    double fc = churchill(Re[k]), V = Re[k] * mu / (rho * D);
+    double ff = pipe_scalar("pdev_fd.h5", "friction_factor"), fdv = pipe_scalar("pdev.h5", "friction_factor");
+    double fc = pipe_churchill(Re[k]), V = Re[k] * mu / (rho * D);
     double du, su, dk, sk, ua, uf, ka, kf;
     outlet_difference("pdev.h5", "pdev_fd.h5", "velocity_fluid", &du, &su, &ua, &uf);
     outlet_difference("pdev.h5", "pdev_fd.h5", "k", &dk, &sk, &ka, &kf);
@@ -178,8 +158,8 @@ static void against_fully_developed(void) {
            "|du_f|/V %.3f %%, |dk|/max k %.2f %%, centre line %.4f against %.4f m/s (%+.3f %%); excess head %.3f; "
            "%g station iterations at most\n",
            Re[k], fdv, ff, 100.0 * (fdv / ff - 1.0), fc, 100.0 * (fdv / fc - 1.0), 100.0 * du / V, 100.0 * dk / sk,
-           ua, uf, 100.0 * (ua / uf - 1.0), scalar("pdev.h5", "inlet_excess_head"),
-           scalar("pdev.h5", "station_iterations_max"));
+           ua, uf, 100.0 * (ua / uf - 1.0), pipe_scalar("pdev.h5", "inlet_excess_head"),
+           pipe_scalar("pdev.h5", "station_iterations_max"));
     CHECK_MSG(fabs(fdv / ff - 1.0) < 0.005, "Re %g: outlet f %.6f against the fully developed %.6f", Re[k], fdv, ff);
     CHECK_MSG(fabs(fdv / fc - 1.0) < 0.03, "Re %g: outlet f %.6f against Churchill's %.6f", Re[k], fdv, fc);
     CHECK_MSG(du < 0.005 * V, "Re %g: the outlet's u_f off the fully developed by %.3f %% of V", Re[k], 100.0 * du / V);
@@ -228,8 +208,8 @@ static void axial_cells(void) {
     CHECK_MSG(0, "%s", e.msg);
     return;
   }
-  double f50 = scalar("pdev50.h5", "friction_factor"), f200 = scalar("pdev200.h5", "friction_factor");
-  double p50 = scalar("pdev50.h5", "pressure_drop"), p200 = scalar("pdev200.h5", "pressure_drop");
+  double f50 = pipe_scalar("pdev50.h5", "friction_factor"), f200 = pipe_scalar("pdev200.h5", "friction_factor");
+  double p50 = pipe_scalar("pdev50.h5", "pressure_drop"), p200 = pipe_scalar("pdev200.h5", "pressure_drop");
   printf("50 and 200 axial cells: outlet f %.6f and %.6f (%+.3f %%); pressure drop %.1f and %.1f Pa (%+.3f %%)\n",
          f50, f200, 100.0 * (f50 / f200 - 1.0), p50, p200, 100.0 * (p50 / p200 - 1.0));
   CHECK_MSG(fabs(f50 / f200 - 1.0) < 0.002, "f %.6f on 50 axial cells, %.6f on 200", f50, f200);
@@ -241,7 +221,7 @@ static void axial_cells(void) {
     CHECK_MSG(0, "%s", e.msg);
     return;
   }
-  double p25 = scalar("pdev25.h5", "pressure_drop"), p100 = scalar("pdev100.h5", "pressure_drop");
+  double p25 = pipe_scalar("pdev25.h5", "pressure_drop"), p100 = pipe_scalar("pdev100.h5", "pressure_drop");
   double r1 = (p50 - p25) / (p100 - p50), r2 = (p100 - p50) / (p200 - p100);
   printf("pressure drop on 25/50/100/200 axial cells: %.2f %.2f %.2f %.2f Pa; the differences fall by %.3f and %.3f "
          "(order %.2f, %.2f)\n",
@@ -265,16 +245,16 @@ static void slurry(const char *name, const char *const *extra, double tol_grad, 
     CHECK_MSG(0, "%s developing: %s", name, e.msg);
     return;
   }
-  double pm = scalar("pdev_s.h5", "phi_mean");
+  double pm = pipe_scalar("pdev_s.h5", "phi_mean");
   snprintf(phi_set, sizeof phi_set, "pipe.solids_fraction=%.17g", pm);
   fd[n - 1] = phi_set, fd[n] = NULL;
   if (run_text(slurry_text, fd, "pdev_sfd.h5", &e)) {
     CHECK_MSG(0, "%s fully developed: %s", name, e.msg);
     return;
   }
-  double ga = scalar("pdev_s.h5", "pressure_gradient"), gb = scalar("pdev_sfd.h5", "pressure_gradient");
-  double ta = scalar("pdev_s.h5", "wall_shear_stress_fluid"), tb = scalar("pdev_sfd.h5", "wall_shear_stress_fluid");
-  double V = scalar("pdev_s.h5", "velocity_fluid_area_mean");
+  double ga = pipe_scalar("pdev_s.h5", "pressure_gradient"), gb = pipe_scalar("pdev_sfd.h5", "pressure_gradient");
+  double ta = pipe_scalar("pdev_s.h5", "wall_shear_stress_fluid"), tb = pipe_scalar("pdev_sfd.h5", "wall_shear_stress_fluid");
+  double V = pipe_scalar("pdev_s.h5", "velocity_fluid_area_mean");
   double dphi, sphi, dus, sus, a0, b0;
   outlet_difference("pdev_s.h5", "pdev_sfd.h5", "phi", &dphi, &sphi, &a0, &b0);
   outlet_difference("pdev_s.h5", "pdev_sfd.h5", "velocity_solid", &dus, &sus, &a0, &b0);
@@ -305,7 +285,7 @@ static void slurry(const char *name, const char *const *extra, double tol_grad, 
          name, strstr(slurry_text, "solids_fraction = ") ? atof(strstr(slurry_text, "solids_fraction = ") + 18) : NAN, pm,
          ga, gb,
          100.0 * (ga / gb - 1.0), ta, tb, 100.0 * (ta / tb - 1.0), dphi, sphi, 100.0 * dus / sus, sus,
-         worst, scalar("pdev_s.h5", "station_iterations_max"));
+         worst, pipe_scalar("pdev_s.h5", "station_iterations_max"));
   (void)V;
   CHECK_MSG(fabs(ga / gb - 1.0) < tol_grad, "%s: -dP/dz %.6g against %.6g", name, ga, gb);
   CHECK_MSG(fabs(ta / tb - 1.0) < tol_tau, "%s: tau_fw %.6g against %.6g", name, ta, tb);
@@ -344,11 +324,11 @@ static void shipped_scene(void) {
   if (!rc) rc = run(none, "pdev_shipped_fd.h5", &e);
   CHECK_MSG(rc == 0, "%s: %s", path, e.msg);
   if (rc) return;
-  double fdv = scalar("pdev_shipped.h5", "friction_factor"), ff = scalar("pdev_shipped_fd.h5", "friction_factor");
+  double fdv = pipe_scalar("pdev_shipped.h5", "friction_factor"), ff = pipe_scalar("pdev_shipped_fd.h5", "friction_factor");
   printf("configs/pipe_developing.ini: outlet f %.7f, pipe_water.ini %.7f (%+.4f %%)\n", fdv, ff,
          100.0 * (fdv / ff - 1.0));
   CHECK_MSG(fabs(fdv / ff - 1.0) < 0.005, "shipped developing pipe: outlet f %.7f against %.7f", fdv, ff);
-  CHECK_MSG(scalar("pdev_shipped.h5", "stations") == 50.0, "the shipped scene marches 50 stations");
+  CHECK_MSG(pipe_scalar("pdev_shipped.h5", "stations") == 50.0, "the shipped scene marches 50 stations");
 }
 
 int main(void) {

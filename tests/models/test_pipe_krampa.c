@@ -38,6 +38,7 @@
 
 #include "core/io/output.h"
 #include "sluice/sluice.h"
+#include "pipe_testing.h"
 #include "testing.h"
 
 enum { MAX_ROWS = 128 };
@@ -91,13 +92,6 @@ static double water_density(double T) {
 }
 static double water_viscosity(double T) { return 2.414e-5 * pow(10.0, 247.8 / (T + 273.15 - 140.0)); }
 
-static double scalar(const char *out, const char *name) {
-  double v = NAN, t;
-  sl_diag d = {{0}};
-  if (sl_output_read_scalar(out, name, INFINITY, &v, &t, &d)) CHECK_MSG(0, "%s: %s", out, d.msg);
-  return v;
-}
-
 /* One row in one direction: the manometric gradient in kPa/m (NaN when the run fails). */
 static double run_row(const row *r, int down, double ks, double *us) {
   char s[6][80];
@@ -122,8 +116,8 @@ static double run_row(const row *r, int down, double ks, double *us) {
     printf("  %s V = %.2f %s: %s\n", r->table, r->v, down ? "down" : "up", e.msg);
     return NAN;
   }
-  if (us) *us = scalar("pipe_krampa.h5", "solids_mean_velocity");
-  return 1e-3 * scalar("pipe_krampa.h5", "manometric_gradient");
+  if (us) *us = pipe_scalar("pipe_krampa.h5", "solids_mean_velocity");
+  return 1e-3 * pipe_scalar("pipe_krampa.h5", "manometric_gradient");
 }
 
 static void run_rows(const char *table, double ks) {

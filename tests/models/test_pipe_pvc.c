@@ -28,6 +28,7 @@
 
 #include "core/io/output.h"
 #include "sluice/sluice.h"
+#include "pipe_testing.h"
 #include "testing.h"
 
 enum { MAX_ROWS = 64 };
@@ -77,13 +78,6 @@ static int load(void) {
   return n_rows == 45 ? 0 : 1;
 }
 
-static double scalar(const char *out, const char *name) {
-  double v = NAN, t;
-  sl_diag d = {{0}};
-  if (sl_output_read_scalar(out, name, INFINITY, &v, &t, &d)) CHECK_MSG(0, "%s: %s", out, d.msg);
-  return v;
-}
-
 /* The scene's text for a wall condition (kinetic: with Lun et al.'s kinetic viscosity). */
 static void scene_for(const char *bc, int kinetic, char *text, size_t cap, const char **wall) {
   const char *closure = NULL;
@@ -122,10 +116,10 @@ static int run_row(row *r, int kinetic) {
     return rc;
   }
   const char *o = "pipe_pvc.h5";
-  r->m_csw = scalar(o, "phi_wall"), r->m_usw = scalar(o, "velocity_solid_wall");
-  r->m_tfw = scalar(o, "wall_shear_stress_fluid"), r->m_tsw = scalar(o, "wall_shear_stress_solid");
-  r->m_lam = scalar(o, "slip_length"), r->m_im = scalar(o, "i_m");
-  double phi = scalar(o, "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f, dp = scalar(o, "pressure_gradient");
+  r->m_csw = pipe_scalar(o, "phi_wall"), r->m_usw = pipe_scalar(o, "velocity_solid_wall");
+  r->m_tfw = pipe_scalar(o, "wall_shear_stress_fluid"), r->m_tsw = pipe_scalar(o, "wall_shear_stress_solid");
+  r->m_lam = pipe_scalar(o, "slip_length"), r->m_im = pipe_scalar(o, "i_m");
+  double phi = pipe_scalar(o, "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f, dp = pipe_scalar(o, "pressure_gradient");
   double tau = r->m_tfw + r->m_tsw, bal = 4.0 * tau / D + rho_m * g;
   CHECK_MSG(fabs(dp / bal - 1.0) < 1e-6, "%s %s U_m %.2f: -dP/dz %.9g against %.9g", r->table, r->bc, r->um, dp, bal);
   CHECK_MSG(fabs(r->m_im / (4.0 * tau / (rho_f * g * D)) - 1.0) < 1e-12, "%s %s: i_m %.9g", r->table, r->bc, r->m_im);

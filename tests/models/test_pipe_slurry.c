@@ -40,6 +40,7 @@
 
 #include "core/io/output.h"
 #include "sluice/sluice.h"
+#include "pipe_testing.h"
 #include "testing.h"
 
 static char scene[8192];
@@ -77,14 +78,6 @@ static int run(const char *section, const char *replacement, const char *const *
   if (!rc) rc = sluice_run(s, &ro, &sum, e);
   sluice_close(s);
   return rc;
-}
-
-static double scalar(const char *out, const char *name) {
-  double v = NAN, t;
-  sl_diag d = {{0}};
-  int rc = sl_output_read_scalar(out, name, INFINITY, &v, &t, &d);
-  CHECK_MSG(rc == 0, "%s: %s", out, d.msg);
-  return v;
 }
 
 /* A cell field with the cells' radii, sorted from the axis out (n cells). */
@@ -134,10 +127,10 @@ static void balances(void) {
       CHECK_MSG(0, "%s: %s", dirs[k], e.msg);
       continue;
     }
-    double gz = k ? g : -g, phi = scalar("pipe_slurry.h5", "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f;
+    double gz = k ? g : -g, phi = pipe_scalar("pipe_slurry.h5", "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f;
     double tau =
-        scalar("pipe_slurry.h5", "wall_shear_stress_fluid") + scalar("pipe_slurry.h5", "wall_shear_stress_solid");
-    double dp = scalar("pipe_slurry.h5", "pressure_gradient"), bal = 4.0 * tau / D - rho_m * gz;
+        pipe_scalar("pipe_slurry.h5", "wall_shear_stress_fluid") + pipe_scalar("pipe_slurry.h5", "wall_shear_stress_solid");
+    double dp = pipe_scalar("pipe_slurry.h5", "pressure_gradient"), bal = 4.0 * tau / D - rho_m * gz;
     profile pf, ps, pp;
     if (read_profile("pipe_slurry.h5", "velocity_fluid", &pf) ||
         read_profile("pipe_slurry.h5", "velocity_solid", &ps) || read_profile("pipe_slurry.h5", "phi", &pp))
@@ -150,7 +143,7 @@ static void balances(void) {
     }
     printf("%s: -dP/dz %.4f Pa/m, 4 tau_w/D - rho_m g_z %.4f (%.2e), V %.9f, phi_mean %.12f, manometric %.2f\n",
            k ? "down-flow" : "up-flow", dp, bal, dp / bal - 1.0, q / A, phi,
-           scalar("pipe_slurry.h5", "manometric_gradient"));
+           pipe_scalar("pipe_slurry.h5", "manometric_gradient"));
     CHECK_MSG(fabs(dp / bal - 1.0) < 1e-6, "the mixture momentum: %.9g against %.9g", dp, bal);
     CHECK_MSG(fabs(q / A - 3.02) < 1e-6, "the bulk velocity %.9g", q / A);
     CHECK_MSG(fabs(phi - 0.25) < 1e-12, "the solids inventory %.15g", phi);
@@ -171,7 +164,7 @@ static void dispersion_alone(void) {
     return;
   double dev = 0.0;
   for (int i = 0; i < pp.n; ++i) dev = fmax(dev, fabs(pp.v[i] - 0.25));
-  double G = -scalar("pipe_disp.h5", "pressure_gradient"), cs = 0.25, cf = 0.75, mu = 0.9347e-3, d = 1e-4;
+  double G = -pipe_scalar("pipe_disp.h5", "pressure_gradient"), cs = 0.25, cf = 0.75, mu = 0.9347e-3, d = 1e-4;
   double K = 18.0 * mu * cs / (d * d), s = -cs * (rho_s - rho_f) * G / rho_f / (1.0 + cs * rho_s / (cf * rho_f)) / K;
   double s_axis = pf.v[0] - ps.v[0];
   printf(
@@ -218,7 +211,7 @@ static void no_slip_bridge(void) {
       read_profile("pipe_ns.h5", "phi", &pp))
     return;
   int w = pf.n - 1;
-  double tf = scalar("pipe_ns.h5", "wall_shear_stress_fluid"), ts = scalar("pipe_ns.h5", "wall_shear_stress_solid");
+  double tf = pipe_scalar("pipe_ns.h5", "wall_shear_stress_fluid"), ts = pipe_scalar("pipe_ns.h5", "wall_shear_stress_solid");
   double ratio = pp.v[w] * rho_s / rho_f * ps.v[w] / pf.v[w];
   printf("no-slip solids: tau_fw %.4f Pa, tau_sw %.4f Pa, ratio %.6f against (c_s rho_s/rho_f) u_s/u_f %.6f\n", tf, ts,
          ts / tf, ratio);
@@ -251,9 +244,9 @@ static void lprobe(void) {
     if (read_profile("pipe_lprobe.h5", "velocity_fluid", &pf) || read_profile("pipe_lprobe.h5", "velocity_solid", &ps))
       continue;
     double s_axis = pf.v[0] - ps.v[0];
-    double us = scalar("pipe_lprobe.h5", "velocity_solid_area_mean");
-    double uf = scalar("pipe_lprobe.h5", "velocity_fluid_area_mean");
-    double G = -scalar("pipe_lprobe.h5", "pressure_gradient");
+    double us = pipe_scalar("pipe_lprobe.h5", "velocity_solid_area_mean");
+    double uf = pipe_scalar("pipe_lprobe.h5", "velocity_fluid_area_mean");
+    double G = -pipe_scalar("pipe_lprobe.h5", "pressure_gradient");
     double F = -cs * cf * (rho_s - rho_f) * G / (cs * rho_s + cf * rho_f);
     double a = 1.75 * cs * rho_f / d, b = 150.0 * cs * cs * mu / (cf * d * d);
     double s = (-b + sqrt(b * b + 4.0 * a * F)) / (2.0 * a), s_probe = (V[k] - target[k]) / cf;
@@ -300,9 +293,9 @@ static void stability(void) {
       CHECK_MSG(0, "%s: %s", cases[k].name, e.msg);
       continue;
     }
-    double it = scalar("pipe_stab.h5", "iterations"), dp = scalar("pipe_stab.h5", "pressure_gradient");
-    double phi = scalar("pipe_stab.h5", "phi_mean"), rho_m = phi * cases[k].rho_s + (1.0 - phi) * rho_f;
-    double tau = scalar("pipe_stab.h5", "wall_shear_stress_fluid") + scalar("pipe_stab.h5", "wall_shear_stress_solid");
+    double it = pipe_scalar("pipe_stab.h5", "iterations"), dp = pipe_scalar("pipe_stab.h5", "pressure_gradient");
+    double phi = pipe_scalar("pipe_stab.h5", "phi_mean"), rho_m = phi * cases[k].rho_s + (1.0 - phi) * rho_f;
+    double tau = pipe_scalar("pipe_stab.h5", "wall_shear_stress_fluid") + pipe_scalar("pipe_stab.h5", "wall_shear_stress_solid");
     double bal = 4.0 * tau / D - rho_m * cases[k].gz;
     printf("%s: converged in %.0f iterations, -dP/dz %.2f Pa/m (balance %.1e)\n", cases[k].name, it, dp,
            dp / bal - 1.0);
@@ -391,13 +384,13 @@ static void theta_transport(void) {
       CHECK_MSG(0, "transported theta, %s: %s", cases[k].name, e.msg);
       continue;
     }
-    double phi = scalar("pipe_tt.h5", "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f;
-    double tau = scalar("pipe_tt.h5", "wall_shear_stress_fluid") + scalar("pipe_tt.h5", "wall_shear_stress_solid");
-    double dp = scalar("pipe_tt.h5", "pressure_gradient"), bal = 4.0 * tau / D - rho_m * cases[k].gz;
-    double pw = scalar("pipe_tt.h5", "phi_wall");
+    double phi = pipe_scalar("pipe_tt.h5", "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f;
+    double tau = pipe_scalar("pipe_tt.h5", "wall_shear_stress_fluid") + pipe_scalar("pipe_tt.h5", "wall_shear_stress_solid");
+    double dp = pipe_scalar("pipe_tt.h5", "pressure_gradient"), bal = 4.0 * tau / D - rho_m * cases[k].gz;
+    double pw = pipe_scalar("pipe_tt.h5", "phi_wall");
     printf("transported theta, %s: %.0f iterations, phi_wall %.4f (mean %.2f), manometric %.2f Pa/m (balance %.1e)\n",
-           cases[k].name, scalar("pipe_tt.h5", "iterations"), pw, cases[k].phi,
-           scalar("pipe_tt.h5", "manometric_gradient"), dp / bal - 1.0);
+           cases[k].name, pipe_scalar("pipe_tt.h5", "iterations"), pw, cases[k].phi,
+           pipe_scalar("pipe_tt.h5", "manometric_gradient"), dp / bal - 1.0);
     CHECK_MSG(fabs(dp / bal - 1.0) < 1e-6, "%s: -dP/dz %.9g against %.9g", cases[k].name, dp, bal);
     CHECK_MSG(fabs(phi - cases[k].phi) < 1e-12, "%s: inventory %.15g", cases[k].name, phi);
     CHECK_MSG(pw < cases[k].phi, "%s: phi_wall %.4g not below the mean", cases[k].name, pw);
@@ -409,7 +402,7 @@ static void theta_transport(void) {
       const char *sets[] = {"pipe.kinetic_pressure=true", "pipe.granular_temperature=transport", cells[k],
                             c ? "pipe.solids_fraction=0.25" : "pipe.solids_fraction=0.05", NULL};
       sluice_error e = {0, ""};
-      m[k] = run(NULL, NULL, sets, "pipe_tt.h5", &e) ? NAN : scalar("pipe_tt.h5", "manometric_gradient");
+      m[k] = run(NULL, NULL, sets, "pipe_tt.h5", &e) ? NAN : pipe_scalar("pipe_tt.h5", "manometric_gradient");
       CHECK_MSG(isfinite(m[k]), "%s: %s", cells[k], e.msg);
     }
     double r1 = (m[1] - m[0]) / (m[2] - m[1]), r2 = (m[2] - m[1]) / (m[3] - m[2]);
@@ -435,10 +428,10 @@ static void modulation(void) {
   }
   int same = 1, lower = 1;
   for (int i = 0; i < k0.n; ++i) same &= k0.v[i] == kd.v[i], lower &= k1.v[i] < k0.v[i];
-  double t0 = scalar("pipe_mod1.h5", "wall_shear_stress_fluid"), t1 = scalar("pipe_mod2.h5", "wall_shear_stress_fluid");
+  double t0 = pipe_scalar("pipe_mod1.h5", "wall_shear_stress_fluid"), t1 = pipe_scalar("pipe_mod2.h5", "wall_shear_stress_fluid");
   printf("modulation: k on the axis %.4g -> %.4g m2/s2, tau_fw %.4f -> %.4f Pa, manometric %.1f -> %.1f Pa/m\n",
-         k0.v[0], k1.v[0], t0, t1, scalar("pipe_mod1.h5", "manometric_gradient"),
-         scalar("pipe_mod2.h5", "manometric_gradient"));
+         k0.v[0], k1.v[0], t0, t1, pipe_scalar("pipe_mod1.h5", "manometric_gradient"),
+         pipe_scalar("pipe_mod2.h5", "manometric_gradient"));
   CHECK_MSG(same, "modulation = none is not the default");
   CHECK_MSG(lower, "the modulation does not lower k in every cell");
   CHECK_MSG(t1 < t0, "tau_fw %.6g with the modulation, %.6g without", t1, t0);

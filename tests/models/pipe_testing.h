@@ -1,0 +1,42 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* What the pipe model's tests share: a scene run from its text, a scalar of
+ * the output, Churchill's friction factor. */
+#ifndef SLUICE_TESTS_PIPE_TESTING_H
+#define SLUICE_TESTS_PIPE_TESTING_H
+
+#include <math.h>
+#include <string.h>
+
+#include "core/io/output.h"
+#include "sluice/sluice.h"
+#include "testing.h"
+
+/* Runs the scene `text` (named `name` in messages) with the overrides into out; 0 or the error code, e says why. */
+static inline int pipe_run_text(const char *text, const char *name, const char *const *sets, const char *out,
+                                sluice_error *e) {
+  sluice *s = NULL;
+  sluice_open_opts oo = {.sets = sets};
+  sluice_run_opts ro = {.output = out, .version = "test"};
+  sluice_summary sum;
+  int rc = sluice_open_text(text, strlen(text), name, &oo, &s, e);
+  if (!rc) rc = sluice_run(s, &ro, &sum, e);
+  sluice_close(s);
+  return rc;
+}
+
+/* The output's last value of the scalar `name` (a failed check and NaN if it has none). */
+static inline double pipe_scalar(const char *out, const char *name) {
+  double v = NAN, t;
+  sl_diag d = {{0}};
+  int rc = sl_output_read_scalar(out, name, INFINITY, &v, &t, &d);
+  CHECK_MSG(rc == 0, "%s: %s", out, d.msg);
+  return v;
+}
+
+/* Churchill (1977), Fanning, smooth (Krampa 2009 eqs 2.12-2.13 with k = 0). */
+static inline double pipe_churchill(double Re) {
+  double A = pow(-2.457 * log(pow(7.0 / Re, 0.9)), 16.0), B = pow(37530.0 / Re, 16.0);
+  return 2.0 * pow(pow(8.0 / Re, 12.0) + pow(A + B, -1.5), 1.0 / 12.0);
+}
+
+#endif
