@@ -3,6 +3,8 @@
  * boundary not along x or y: core/assembly/slip.h) on an annulus
  * R1 = 0.5 < r < R2 = 1 that the test writes as a Gmsh file, with straight
  * (Q4) or curved (Q9, second-order geometry) quadrilaterals:
+ *  - normals: the node normals radial (planar), and the discrete flux of a
+ *    velocity made tangent zero to round-off, planar and axisymmetric;
  *  - rotation: rigid-body rotation u = (-y, x) between two slip walls is a
  *    transient Stokes flow with no stress anywhere (D(u) = 0): it must stay
  *    so to round-off, with no flow through either wall (u . r/|r| = 0 at
@@ -23,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/assembly/slip.h"
 #include "core/io/output.h"
 #include "scene_runner.h"
 #include "testing.h"
@@ -34,7 +37,7 @@ static const double R1 = 0.5, R2 = 1.0;
 
 /* The annulus in nt x nr quadrilaterals, Gmsh MSH 2.2 ASCII; order 2: 9-node cells with their nodes on the
  * circles (second-order geometry). Physical groups: the curves "inner" and "outer", the surface "ring". */
-static int write_annulus(const char *path, int nt, int nr, int order) {
+static int write_annulus_at(const char *path, int nt, int nr, int order, double cx) {
   FILE *f = fopen(path, "w");
   if (!f) return 1;
   int NI = order * nt, NJ = order * nr + 1; /* the lattice of nodes, periodic in I */
@@ -43,7 +46,7 @@ static int write_annulus(const char *path, int nt, int nr, int order) {
   for (int J = 0; J < NJ; ++J)
     for (int I = 0; I < NI; ++I) {
       double th = 2 * M_PI * I / NI, r = R1 + (R2 - R1) * J / (NJ - 1);
-      fprintf(f, "%d %.17g %.17g 0\n", 1 + J * NI + I, r * cos(th), r * sin(th));
+      fprintf(f, "%d %.17g %.17g 0\n", 1 + J * NI + I, cx + r * cos(th), r * sin(th));
     }
 #define ND(I, J) (1 + (J) * NI + ((I) % NI))
   fprintf(f, "$EndNodes\n$Elements\n%d\n", 2 * nt + nt * nr);
@@ -68,6 +71,8 @@ static int write_annulus(const char *path, int nt, int nr, int order) {
   fprintf(f, "$EndElements\n");
   return fclose(f) != 0;
 }
+
+static int write_annulus(const char *path, int nt, int nr, int order) { return write_annulus_at(path, nt, nr, order, 0.0); }
 
 static int write_text(const char *path, const char *text) {
   FILE *f = fopen(path, "w");
@@ -195,14 +200,70 @@ static void couette_order(void) {
   }
 }
 
+/* The node normals of slip.h on both circles of the annulus: planar, the vertex and midpoint normals are radial
+ * (the boundary's nodes are evenly spaced: each node's two faces mirror each other), on straight and curved
+ * cells; and for any velocity made tangent by sl_slip_impose the discrete flux int u.n w ds through the walls is
+ * zero to round-off, planar (w = 1) and axisymmetric (w = r, the annulus centred at r = 3), while the same
+ * velocity before imposing has a flux of its own size. */
+static void normals(void) {
+  for (int axi = 0; axi < 2; ++axi)
+    for (int order = 1; order <= 2; ++order) {
+      double cx = axi ? 3.0 : 0.0;
+      if (write_annulus_at("slip_normals.msh", 24, 3, order, cx)) {
+        CHECK_MSG(0, "cannot write the mesh");
+        return;
+      }
+      sl_diag d = {{0}};
+      sl_mesh *m = NULL;
+      sl_th_space *th = NULL;
+      sl_constraints bc = {0};
+      sl_slip sl = {0};
+      int ids[2];
+      double *u = NULL;
+      if (sl_mesh_read_gmsh("slip_normals.msh", &m, &d) || sl_th_create(m, 2, &th, &d) ||
+          sl_mesh_boundary_id(m, "inner", &ids[0], &d) || sl_mesh_boundary_id(m, "outer", &ids[1], &d) ||
+          sl_constraints_init(&bc, th->n_dofs, &d) || sl_slip_create(&sl, th, ids, 2, NULL, 0, axi, &bc, &d) ||
+          !(u = malloc((size_t)th->n_dofs * sizeof *u))) {
+        CHECK_MSG(0, "%s", d.msg);
+        goto next;
+      }
+      double worst = 0.0;
+      for (int32_t k = 0; k < sl.n; ++k) {
+        int32_t i = sl.dof_x[k];
+        double x = th->vel->xy[2 * i] - cx, y = th->vel->xy[2 * i + 1], r = hypot(x, y);
+        double sg = r > 0.75 ? 1.0 : -1.0; /* outward: away from the centre on the outer circle */
+        worst = fmax(worst, hypot(sl.normal[2 * k] - sg * x / r, sl.normal[2 * k + 1] - sg * y / r));
+      }
+      unsigned seed = 12345u;
+      for (int32_t i = 0; i < th->n_dofs; ++i) seed = seed * 1103515245u + 12345u, u[i] = (seed >> 8) / 16777216.0 - 0.5;
+      double f0, s0, f1, s1;
+      sl_slip_flux(th, ids, 2, axi, u, &f0, &s0);
+      sl_slip_impose(&sl, u);
+      sl_slip_flux(th, ids, 2, axi, u, &f1, &s1);
+      printf("normals, %s, %s cells: %d wall nodes rotated, %d corners, largest |n - radial| %.2e; flux of a random "
+             "velocity %.3e (of %.3f), made tangent %.2e (of %.3f)\n",
+             axi ? "axisymmetric" : "planar", order == 1 ? "straight" : "curved", (int)sl.n, (int)sl.n_corners, worst,
+             f0, s0, f1, s1);
+      CHECK(sl.n == 2 * 24 * 2 && sl.n_corners == 0);
+      if (!axi) CHECK_MSG(worst < 1e-12, "normal off radial by %.3e", worst);
+      CHECK_MSG(fabs(f1) < 1e-14 * s1 && fabs(f0) > 1e-3 * s0, "flux %.3e of %.3e (before: %.3e)", f1, s1, f0);
+    next:
+      free(u);
+      sl_slip_free(&sl);
+      sl_constraints_free(&bc);
+      sl_th_destroy(th);
+      sl_mesh_destroy(m);
+    }
+}
+
 int main(int argc, char **argv) {
   static const struct {
     const char *name;
     void (*run)(void);
-  } parts[] = {{"rotation", rotation}, {"couette", couette_order}};
+  } parts[] = {{"rotation", rotation}, {"couette", couette_order}, {"normals", normals}};
   int ran = 0;
   for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
     if (argc < 2 || strcmp(argv[1], parts[k].name) == 0) parts[k].run(), ++ran;
-  if (!ran) return fprintf(stderr, "unknown part '%s' (rotation, couette)\n", argv[1]), 2;
+  if (!ran) return fprintf(stderr, "unknown part '%s' (rotation, couette, normals)\n", argv[1]), 2;
   return sl_test_summary();
 }
