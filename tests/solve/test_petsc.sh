@@ -189,9 +189,13 @@ if command -v mpirun > /dev/null; then
     check "2 ranks: the output equals 1 rank's (h5diff -p 1e-8)" h5diff -p 1e-8 one/b.h5 two/b.h5
   fi
   check "2 ranks: the same sidecar" cmp -s one/b.xmf two/b.xmf
-  ds=$(paste -d, one/b_scalars.csv two/b_scalars.csv | awk -F, 'NR == 1 { n = NF / 2; next }
+  # 1 when two scalar tables differ anywhere by more than a relative 1e-8, 0 when not
+  scalars_differ() {
+    paste -d, "$1" "$2" | awk -F, 'NR == 1 { n = NF / 2; next }
       { for (c = 1; c <= n; ++c) { a = $c; b = $(c + n); d = a - b; if (d < 0) d = -d; if (a < 0) a = -a;
-          if (d > 1e-8 * a && d > 1e-300) m = 1 } } END { print m + 0 }')
+          if (d > 1e-8 * a && d > 1e-300) m = 1 } } END { print m + 0 }'
+  }
+  ds=$(scalars_differ one/b_scalars.csv two/b_scalars.csv)
   check "2 ranks: the same scalars (within a relative 1e-8)" test "$ds" = 0 -a "$(wc -l < one/b_scalars.csv)" = 3
   check "2 ranks say so in the summary" grep -q "2 ranks)" c2.log
   # one file, the serial one's layout: the output of 2 and 3 ranks has the groups, datasets, types, shapes and
@@ -217,6 +221,12 @@ if command -v mpirun > /dev/null; then
         read -r dd at <<<"$(h5_files_diff $f"1.h5" $f$n.h5)"
         echo "$what on $n ranks against 1 rank: largest difference $dd (in $at)"
         check "$what on $n ranks: every dataset within $tol of 1 rank's ($dd in $at)" below "$dd" "$tol"
+        check "$what on $n ranks: the 1-rank sidecar (ParaView's .xmf), but for the file's name" \
+          cmp -s <(sed "s/$f$n\.h5/${f}1.h5/g" $f$n.xmf) $f"1.xmf"
+        if [ -e $f"1_scalars.csv" ]; then
+          check "$what on $n ranks: the 1-rank scalars (within a relative 1e-8)" \
+            test -s $f$n"_scalars.csv" -a "$(scalars_differ $f"1_scalars.csv" $f$n"_scalars.csv")" = 0
+        fi
       done
     done
     # restarts: the 2-rank checkpoints at half time, continued on 3 ranks and serially
