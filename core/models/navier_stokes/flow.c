@@ -1110,7 +1110,7 @@ static int slip_setup(sl_flow *f, sl_diag *d) {
   int *other = ids + s->n + 1;
   const char *name = "";
   for (int i = 0; i < s->n; ++i) {
-    if (s->curved[i]) ids[n_slip++] = i, name = s->b[i].name;
+    if (s->curved[i]) ids[n_slip++] = i, name = n_slip == 1 ? s->b[i].name : name;
     else if (s->b[i].type == NS_SLIP || s->b[i].type == NS_AXIS) other[n_other++] = i;
   }
   int rank = 0, ranks = 1;
