@@ -129,6 +129,8 @@ void pipe_march_momentum(const pipe *p, sl_csr *A, double *b);
 void pipe_march_scalar(pipe *p, const double *cap_pseudo, const double *s_iter, const double *s_up);
 void pipe_march_solids(pipe *p, double *cap, double *flux);
 void pipe_march_theta(pipe *p, const double *cap_pseudo);
+const double *pipe_march_drag_fraction(const pipe *p, double *phi_arg);
+void pipe_march_drag(pipe *p, const double *phi_arg, double *dK);
 int pipe_march_solve(pipe *p, sl_diag *d);
 int pipe_march_write(pipe *p, sl_output *out, unsigned mask, sl_diag *d);
 

@@ -84,10 +84,13 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
   double *slip = p->buf[0], *gd = p->buf[4], *dK = p->buf[1];
   for (int i = 0; i < n; ++i) p->slip0[i] = p->uf[i] - p->us[i], slip[i] = fabs(p->slip0[i]);
   const double *v[PQ_N] = {0};
-  v[PQ_PHI] = p->phi, v[PQ_SLIP] = slip;
+  /* the developing pipe: the drag's fraction from the last station (pipe_march_drag) */
+  v[PQ_PHI] = p->march.on ? pipe_march_drag_fraction(p, p->buf[2]) : p->phi, v[PQ_SLIP] = slip;
   sl_point_request rq = {"K", p->K, dK, "slip"};
   int rc = sl_point_eval(&p->drag, n, v, &rq, 1, d);
   if (rc) return sl_diag_prefix(d, rc, "[closure.drag]");
+  if (p->march.on) pipe_march_drag(p, p->buf[2], dK);
+  v[PQ_PHI] = p->phi;
   /* the drag force K(s) s linearised about the last slip: its slope d(K s)/ds = K + s dK/ds (the lagged K alone
      oscillates where K grows with s, K ~ s at high particle Reynolds numbers) */
   for (int i = 0; i < n; ++i) p->Kd[i] = fmax(p->K[i] + slip[i] * dK[i], p->K[i] * 1e-3);
