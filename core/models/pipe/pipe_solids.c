@@ -96,8 +96,17 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
   for (int i = 0; i < n; ++i) p->Kd[i] = fmax(p->K[i] + slip[i] * dK[i], p->K[i] * 1e-3);
   /* mu_s: the dispersed phase's eddy viscosity, the constant, the kinetic theory's */
   if (p->have_gran) solids_shear(p, gd);
-  for (int i = 0; i < n; ++i)
-    p->mu_s[i] = p->phi[i] * p->rho_s * (p->mu_t[i] / p->rho_f) / p->cfg->solids_schmidt + p->sc->solid.viscosity;
+  if (p->cfg->solids_viscosity == PIPE_SOLIDS_VISCOSITY_PEIRANO_LECKNER) /* Krampa's model C (pipe_peirano.c) */
+    for (int i = 0; i < n; ++i) {
+      double s = p->uf[i] - p->us[i];
+      pipe_pl_point q = {.phi = p->phi[i], .k = p->k[i], .eps = p->eps[i], .slip2 = s * s, .K = p->K[i],
+                         .rho_s = p->rho_s, .d_p = p->d_p, .phi_max = p->phi_max,
+                         .restitution = p->cfg->restitution, .c_mu = p->c_mu, .c_beta = p->cfg->crossing_trajectory};
+      p->mu_s[i] = p->phi[i] * p->rho_s * pipe_peirano_leckner(&q, NULL) + p->sc->solid.viscosity;
+    }
+  else
+    for (int i = 0; i < n; ++i)
+      p->mu_s[i] = p->phi[i] * p->rho_s * (p->mu_t[i] / p->rho_f) / p->cfg->solids_schmidt + p->sc->solid.viscosity;
   if (p->have_gran) {
     if ((rc = p->cfg->granular_temperature == PIPE_THETA_TRANSPORT ? pipe_theta_transport(p, gd, d)
                                                                    : granular_theta(p, gd, d)))
