@@ -9,6 +9,7 @@
 #include <time.h>
 
 #include "core/assembly/operators.h"
+#include "core/models/navier_stokes/factor_checkpoint.h"
 #include "core/solve/krylov.h"
 
 static double wall(void) {
@@ -326,14 +327,8 @@ void sl_projection_accept(sl_projection *pj) {
   pj->trial = -1;
 }
 
-void sl_projection_drop_numeric(sl_projection *pj) {
-  /* a restart factorises the checkpointed blocks afresh: so does the run that goes on */
-  sl_linsolve_drop_numeric(pj->ls_v);
-  sl_linsolve_drop_numeric(pj->ls_P);
-}
-
 int sl_projection_checkpoint(sl_projection *pj, sl_checkpoint_array *a, int max) {
-  if (max < 4) return 0;
+  if (max < 6) return 0;
   /* [n_hist, m^k, m^{k-1}, refresh], the two increments and the preconditioner's values */
   double *head = pj->head;
   head[0] = pj->n_hist, head[1] = pj->m_hist[0], head[2] = pj->m_hist[1], head[3] = pj->refresh;
@@ -341,7 +336,12 @@ int sl_projection_checkpoint(sl_projection *pj, sl_checkpoint_array *a, int max)
   snprintf(a[1].name, sizeof a[1].name, "projection_phi"), a[1].n = pj->np, a[1].data = pj->phi_hist[0];
   snprintf(a[2].name, sizeof a[2].name, "projection_phi_prev"), a[2].n = pj->np, a[2].data = pj->phi_hist[1];
   snprintf(a[3].name, sizeof a[3].name, "projection_blocks"), a[3].n = pj->P.nnz, a[3].data = pj->P.values;
-  return 4;
+  /* the blocks' and the fallback's factorisations, which a restart rebuilds (the Poisson operator's, factorised
+     once, it computes afresh as the run did) */
+  int n = 4;
+  n += sl_factor_checkpoint(pj->ls_P, "linsolve_projection_blocks", a + n, max - n);
+  n += sl_factor_checkpoint(pj->ls_v, "linsolve_projection_velocity", a + n, max - n);
+  return n;
 }
 
 int sl_projection_restore(sl_projection *pj, const sl_checkpoint *ck, sl_diag *d) {
@@ -360,7 +360,8 @@ int sl_projection_restore(sl_projection *pj, const sl_checkpoint *ck, sl_diag *d
   sl_csr_touch(&pj->P);
   memcpy(pj->phi_hist[0], a->data, (size_t)pj->np * sizeof(double));
   memcpy(pj->phi_hist[1], b->data, (size_t)pj->np * sizeof(double));
-  return 0;
+  int rc = sl_factor_restore(pj->ls_P, "linsolve_projection_blocks", ck, d);
+  return rc ? rc : sl_factor_restore(pj->ls_v, "linsolve_projection_velocity", ck, d);
 }
 
 const sl_linsolve *sl_projection_velocity_solver(const sl_projection *pj) { return pj->ls_P; }
