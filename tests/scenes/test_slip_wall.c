@@ -164,7 +164,7 @@ static const char *const COUETTE_INI =
     "; Stokes flow between a wall at rest (r = 0.5) and a free-slip wall (r = 1) driven by f_theta = r\n"
     "; (tests/scenes/test_slip_wall.c: u_theta = -r^3/8 + A r + B/r)\n"
     "[scene]\nmodel = navier_stokes\ngeometry = planar\n"
-    "[mesh]\ngenerator = gmsh\nfile = slip_annulus.msh\n"
+    "[mesh]\ngenerator = gmsh\nfile = slip_couette.msh\n"
     "[fluid]\ndensity = 1\nviscosity = 1\n"
     "[flow]\nconvection = false\nbody_force = -y, x\n"
     "[boundary.inner]\ntype = wall\n[boundary.outer]\ntype = slip\n"
@@ -181,7 +181,7 @@ static void couette_order(void) {
     double e[3], s = 0.0, un = 0.0;
     for (int k = 0; k < 3; ++k) {
       int nt = 32 << k, nr = 4 << k;
-      if (write_annulus("slip_annulus.msh", nt, nr, order)) {
+      if (write_annulus("slip_couette.msh", nt, nr, order)) {
         CHECK_MSG(0, "cannot write the mesh");
         return;
       }
