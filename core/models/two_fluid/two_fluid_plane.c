@@ -28,6 +28,11 @@
  *           (with [two_fluid] swirl, axisymmetric: angular_velocity, its
  *           rotation about the axis in rad/s; two_fluid_plane_swirl.c)
  *
+ * [body] box = x0, x1, y0, y1 removes the cells inside a box (a rotor's tip,
+ * a step): its faces are no-slip walls, turning at its angular_velocity
+ * with swirl (two_fluid_plane_body.c). [two_fluid] centrifugal adds the
+ * swirl's centrifugal force to the radial momentum (two_fluid_plane_step.c).
+ *
  * Output: cell fields phi, velocity_solid, velocity_fluid, pressure,
  * solids_pressure, theta (with [closure.granular]), swirl_fluid and
  * swirl_solid (u_theta, with [two_fluid] swirl); scalars

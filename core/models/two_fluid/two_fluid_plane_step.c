@@ -241,6 +241,7 @@ static inline int add(tfp_model *m, int row, int col, double v) {
 static double face_phi(const tfp_model *m, const double *phi, int f) {
   int lo = m->fv.lo[f], hi = m->fv.hi[f];
   double v;
+  if (lo < 0 && hi < 0) return PHI_FLOOR; /* a dead face (inside a body): unused */
   if (lo < 0 || hi < 0) v = phi[lo < 0 ? hi : lo];
   else {
     double gd = m->g[face_dir(m, f)];
