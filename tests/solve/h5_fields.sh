@@ -2,7 +2,8 @@
 #
 # h5_layout A B           exit 0 when both files have the same groups, datasets, types, shapes and attribute names
 #                         (h5dump -H: the layout without the values)
-# h5_files_diff A B [GA GB]  every dataset under group GA of A (default /) against the same path under GB of B:
+# h5_files_diff A B [GA GB [SKIP]]  every dataset under group GA of A (default /) against the same path under GB of B
+#                         (but those whose path matches the extended regular expression SKIP):
 #                         the largest difference of a float dataset's values relative to the dataset's largest
 #                         value (its size: a field near zero somewhere is measured against the field, not against
 #                         itself), printed as "DIFF PATH"; "inf PATH" when a dataset is missing or its shape
@@ -13,12 +14,13 @@ h5_layout() {
   diff <(h5dump -H "$1" | tail -n +2) <(h5dump -H "$2" | tail -n +2) > /dev/null
 }
 
-# h5__dump FILE GROUP: every dataset under GROUP in h5ls's order, a line each: "PATH f|t VALUES...", PATH relative
+# h5__dump FILE GROUP [SKIP]: every dataset under GROUP in h5ls's order, a line each: "PATH f|t VALUES...", PATH relative
 # to GROUP, f for 64-bit floats (then VALUES are the numbers to 17 digits), t for the rest (VALUES as h5dump prints
 # them); one h5dump for all of them
 h5__dump() {
   local g=${2%/} paths
-  paths=$(h5ls -r "$1$g" 2> /dev/null | awk '$2 == "Dataset" { print $1 }' | sed "s|^|$g|")
+  paths=$(h5ls -r "$1$g" 2> /dev/null | awk '$2 == "Dataset" { print $1 }' | sed "s|^|$g|" |
+    { if [ -n "${3:-}" ]; then grep -Ev -- "$3"; else cat; fi; })
   [ -n "$paths" ] || return 0
   # shellcheck disable=SC2046
   h5dump -y -w 0 -m %.17g $(printf -- '-d %s ' $paths) "$1" 2> /dev/null | awk -v g="$g" '
@@ -30,10 +32,10 @@ h5__dump() {
 }
 
 h5_files_diff() {
-  local t=${TMPDIR:-/tmp}/h5f.$$
-  h5__dump "$1" "${3:-/}" > "$t.a"
-  h5__dump "$2" "${4:-/}" > "$t.b"
-  awk -v B="$t.b" -v g="${3%/}" '
+  local t=${TMPDIR:-/tmp}/h5f.$$ ga=${3:-/}
+  h5__dump "$1" "$ga" "${5:-}" > "$t.a"
+  h5__dump "$2" "${4:-/}" "${5:-}" > "$t.b"
+  awk -v B="$t.b" -v g="${ga%/}" '
     { if ((getline lb < B) <= 0) { print "inf", $1; bad = 1; exit }
       na = split($0, a, " "); nb = split(lb, b, " ")
       if (a[1] != b[1] || a[2] != b[2] || (a[2] == "f" && na != nb)) { print "inf", $1; bad = 1; exit }

@@ -244,7 +244,9 @@ if command -v mpirun > /dev/null; then
                 "whole bc3 boycott, 2 ranks then 3" "whole bc1 boycott, 2 ranks then serial"; do
       read -r w c what <<<"$pair"
       read -r df at <<<"$(h5_files_diff $w.h5 $c.h5 "$(last_step $w.h5)" "$(last_step $c.h5)")"
-      read -r dk atk <<<"$(h5_files_diff $w.h5 $c.h5 "$(h5_checkpoint $w.h5)" "$(h5_checkpoint $c.h5)")"
+      # the kept factorisation (arrays/linsolve_*) records how a run reached its state, not the state: a restart
+      # on another number of ranks starts from a fresh one
+      read -r dk atk <<<"$(h5_files_diff $w.h5 $c.h5 "$(h5_checkpoint $w.h5)" "$(h5_checkpoint $c.h5)" '/arrays/linsolve_')"
       echo "restart, $what: the last fields differ from the uninterrupted run's by $df ($at), the checkpoint by $dk"
       check "restart, $what: the last fields within 1e-9 ($df in $at)" below "$df" 1e-9
       check "restart, $what: the checkpoint within 1e-9 ($dk in $atk)" below "$dk" 1e-9
