@@ -12,7 +12,7 @@
 #include "core/config/expr.h"
 #include "core/scene/mesh.h"
 #include "core/models/two_fluid/two_fluid.h"
-#include "core/models/two_fluid/granular.h"
+#include "core/models/two_fluid/quantities.h"
 #include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/point_eval.h"
@@ -117,7 +117,7 @@ static int eval_solids_viscosity(sh_layer *L, sl_diag *d) {
       L->muc[i] += fmax(L->mumc[i] - (1.0 - L->phi[i]) * L->mu_f, 0.0);
   }
   if (!L->granular) return 0;
-  for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th1[i] + L->th1[i + 1]), TF_THETA_FLOOR);
+  for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th1[i] + L->th1[i + 1]), SL_THETA_FLOOR);
   const double *v[TF_Q_N];
   point_values(L, v, L->phi, NULL, L->thc);
   v[TF_Q_SHEAR_RATE] = L->gdc, v[TF_Q_DENSITY] = L->rhoc;
@@ -134,7 +134,7 @@ static int eval_wall(sh_layer *L, sh_wall *w, double *tau, double *dtau, double 
                      double *bn, sl_diag *d) {
   int ref = w->wall_function ? w->inner : w->node;
   double sl = fabs(L->us1[ref] - w->u), dist = fabs(L->x[w->inner] - L->x[w->node]);
-  double phi = L->phin[ref], th = fmax(L->th1[w->node], TF_THETA_FLOOR);
+  double phi = L->phin[ref], th = fmax(L->th1[w->node], SL_THETA_FLOOR);
   double one[TF_Q_N];
   const double *v[TF_Q_N];
   for (int k = 0; k < TF_Q_N; ++k) one[k] = L->qv[k][0], v[k] = &one[k];
@@ -269,10 +269,14 @@ static double phase_row(sh_layer *L, int p, int k, const double *mu, const doubl
  * theta part converges linearly, by a factor of about 3 per iteration at
  * equilibrium (production/dissipation derivatives 1/2 : 3/2). */
 static double theta_row(sh_layer *L, int k, double dt) {
-  double *D = DIAG(L, k);
-  double cap = tf_theta_capacity(L->rho_s, L->phin[k]) * L->V[k] / dt, X = tf_theta_exchange(L->exchange, L->K[k]);
-  double r = cap * (L->th1[k] - L->th[k]) + L->V[k] * (L->gam[k] + X * L->th1[k]);
-  D[3 * T + T] += cap + L->V[k] * (L->dgam[k] + X);
+  double *D = DIAG(L, k), cap, src, sink;
+  /* the node's storage, dissipation and drag's sink as every model linearises them (production 0 here: the
+     cells' below) */
+  sl_theta_local(L->rho_s, L->phin[k], 0.0, L->gam[k], L->dgam[k], sl_theta_exchange(L->exchange, L->K[k]),
+                 L->th1[k], &cap, &src, &sink);
+  cap *= L->V[k] / dt;
+  double r = cap * (L->th1[k] - L->th[k]) - L->V[k] * (src - sink * L->th1[k]);
+  D[3 * T + T] += cap + L->V[k] * sink;
   for (int side = 0; side < 2; ++side) {
     int i = side == 0 ? k : k - 1, nb = side == 0 ? k + 1 : k - 1;
     if (i < 0 || i >= L->n) continue;
@@ -295,7 +299,7 @@ static int newton_update(sh_layer *L, double dt, double *du, double *dth, sl_dia
   int rc = eval_drag(L, d);
   if (!rc && b == 3) {
     const double *v[TF_Q_N];
-    for (int k = 0; k < N; ++k) L->th1[k] = fmax(L->th1[k], TF_THETA_FLOOR);
+    for (int k = 0; k < N; ++k) L->th1[k] = fmax(L->th1[k], SL_THETA_FLOOR);
     point_values(L, v, L->phin, NULL, L->th1);
     sl_point_request rq = {"gamma", L->gam, L->dgam, "theta"};
     rc = sl_point_eval(&L->gran, N, v, &rq, 1, d);
@@ -348,11 +352,10 @@ static int newton_update(sh_layer *L, double dt, double *du, double *dth, sl_dia
         D[3 * S + S] += f * dtau, D[3 * S + T] += f * dtau_th * sg;
       }
       if (b == 3 && sl_point_has_output(&L->wall, "theta_flux")) {
-        /* energy into the layer through the wall; its theta derivative only
-         * where it is a sink (for Johnson & Jackson the slip's heating goes
-         * as theta^1/2, whose derivative is unbounded at theta = 0) */
+        /* energy into the layer through the wall, linearised as every model
+         * does (core/models/granular.h: its sink part implicit) */
         RHS(L, k)[T] += w->theta_area * q;
-        if (dq < 0.0) D[3 * T + T] -= w->theta_area * dq;
+        D[3 * T + T] += w->theta_area * sl_theta_wall_implicit(dq);
       }
     }
   }
@@ -366,7 +369,7 @@ static int newton_update(sh_layer *L, double dt, double *du, double *dth, sl_dia
     L->uf1[k] += x[F], L->us1[k] += x[S];
     mu = fmax(mu, fmax(fabs(x[F]), fabs(x[S])));
     if (b == 3) { /* theta stays positive: at most a fivefold fall per iteration */
-      double th = tf_theta_bounded(L->th1[k] + x[T], L->th1[k]);
+      double th = sl_theta_bounded(L->th1[k] + x[T], L->th1[k]);
       mt = fmax(mt, fabs(th - L->th1[k]));
       L->th1[k] = th;
     }
@@ -397,7 +400,7 @@ static int theta_algebraic(sh_layer *L, double *dmax, sl_diag *d) {
   }
   double m = 0.0;
   for (int k = 0; k < N; ++k) {
-    double th = tf_theta_algebraic(mu0[k] * L->prod[k] / L->V[k], g0[k], tf_theta_exchange(L->exchange, L->K[k]), NULL);
+    double th = sl_theta_algebraic(mu0[k] * L->prod[k] / L->V[k], g0[k], sl_theta_exchange(L->exchange, L->K[k]), NULL);
     m = fmax(m, fabs(th - L->th1[k]));
     L->th1[k] = th;
   }
@@ -426,7 +429,7 @@ static int layer_step(sh_layer *L, double t, double dt, int *iterations, sl_diag
     if (!rc) rc = newton_update(L, dt, &du, &dth, d);
     if (!rc && L->granular && L->algebraic) rc = theta_algebraic(L, &dth, d);
     if (rc) return rc;
-    double th_scale = TF_THETA_FLOOR;
+    double th_scale = SL_THETA_FLOOR;
     for (int k = 0; k < N; ++k) th_scale = fmax(th_scale, L->th1[k]);
     *iterations = it;
     if (du <= L->tolerance * v_scale && dth <= L->tolerance * th_scale) return 0;
@@ -544,11 +547,7 @@ static int physics(sh_layer *L, sl_diag *d) {
                                         "kinetic theory, e.g. model = lun)", gt->file, gt->line);
   if (L->granular) {
     if ((rc = sl_point_bind(&L->gran, L->gran_c, tf_quantity_names, TF_Q_N, "closure.granular", model, d))) return rc;
-    static const char *const need[] = {"mu_s", "kappa", "gamma"};
-    for (int k = 0; k < 3; ++k)
-      if (!sl_point_has_output(&L->gran, need[k]))
-        return sl_diag_set(d, SL_EBADINPUT, "[closure.granular]: the shear layer needs mu_s, kappa and gamma of "
-                                            "(phi, theta); this closure gives no %s", need[k]);
+    if ((rc = sl_granular_require(&L->gran, 1, "the shear layer", d))) return rc;
   }
   if ((L->visc_c = sl_scene_closure(sc, "viscosity"))) {
     if ((rc = sl_point_bind(&L->visc, L->visc_c, tf_quantity_names, TF_Q_N, "closure.viscosity", model, d))) return rc;
@@ -699,7 +698,7 @@ static int write_state(sh_layer *L, sl_output *out, sl_diag *d) {
     rc = sl_output_write_field(out, field_names[f + 1], SL_CENTRE_NODE, 1, L->node_out, d);
   }
   if (!rc && (L->fields & F_PS)) { /* p_s(phi, theta) of [closure.granular], theta the mean of the cell's nodes */
-    for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th[i] + L->th[i + 1]), TF_THETA_FLOOR);
+    for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th[i] + L->th[i + 1]), SL_THETA_FLOOR);
     const double *v[TF_Q_N];
     point_values(L, v, L->phi, NULL, L->thc);
     v[TF_Q_SHEAR_RATE] = L->gdc, v[TF_Q_DENSITY] = L->rhoc;
@@ -779,7 +778,7 @@ static int layer_trial(void *self, sl_step *s, int *iterations, sl_diag *d) {
 static void layer_accept(void *self, const sl_step *s, int *steady) {
   sh_layer *L = self;
   const int N = L->n + 1;
-  double dt = s->dt, rate_u = 0.0, rate_t = 0.0, th_max = TF_THETA_FLOOR, v_scale = L->v_ref;
+  double dt = s->dt, rate_u = 0.0, rate_t = 0.0, th_max = SL_THETA_FLOOR, v_scale = L->v_ref;
   for (int k = 0; k < N; ++k) {
     rate_u = fmax(rate_u, fmax(fabs(L->uf1[k] - L->uf[k]), fabs(L->us1[k] - L->us[k])));
     rate_t = fmax(rate_t, fabs(L->th1[k] - L->th[k]));
@@ -831,7 +830,7 @@ static int layer_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   if (!rc) rc = physics(L, d);
   if (!rc && L->granular && L->algebraic) {
     char at[400];
-    rc = tf_granular_check_kinetic(&L->gran, L->qv, L->phi_max, 0,
+    rc = sl_granular_check_kinetic(&L->gran, TF_Q_N, L->qv, TF_Q_PHI, TF_Q_THETA, L->phi_max, 0,
                                    sl_scene_where(L->sc, &L->cfg->granular_temperature, at, sizeof at), d);
   }
   L->b = L->granular && !L->algebraic ? 3 : 2;
