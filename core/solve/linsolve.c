@@ -22,6 +22,15 @@ struct sl_linsolve {
   double *factored; /* copy of the values last factorised: a re-assembled but
                        unchanged matrix (a constant operator) is not refactorised */
   int32_t n_factored;
+  /* for a checkpoint (sl_linsolve_history): the values the pivots in hand were chosen for (the last fresh
+     factorisation; a refactorisation keeps its pivots), whether the factorisation in hand is a refactorisation,
+     whether the last matrix was divided among ranks */
+  double *pivoted;
+  int32_t n_pivoted;
+  int refactored, distributed;
+  double *history;          /* sl_linsolve_history's array */
+  double *pending;          /* sl_linsolve_restore_history's, rebuilt at the next factorisation or solve */
+  int64_t n_pending;
   sl_linsolve_stats st;
   /* factorisation reuse */
   sl_linsolve_reuse reuse;
@@ -148,6 +157,7 @@ void sl_linsolve_destroy(sl_linsolve *ls) {
   ls->ops->destroy(ls->backend);
   free(ls->work);
   free(ls->factored);
+  free(ls->pivoted), free(ls->history), free(ls->pending);
   sl_krylov_free(&ls->kry);
   free(ls->kry_b);
   free(ls);
@@ -227,6 +237,84 @@ static void settle_fresh(sl_linsolve *ls, const sl_csr *A) {
   ls->have_symbolic = ls->have_numeric = 0;
   ls->reason = SL_REFACTOR_FRESH;
 }
+int64_t sl_linsolve_history(sl_linsolve *ls, const double **out) {
+  *out = NULL;
+  if (!ls || !ls->have_numeric || ls->ops->solve_rtol || ls->distributed || !ls->factored || !ls->pivoted ||
+      ls->n_pivoted != ls->n_factored || ls->pending)
+    return 0;
+  int32_t nnz = ls->n_factored;
+  int64_t n = SL_LINSOLVE_HISTORY_HEAD + (int64_t)nnz * (ls->refactored ? 2 : 1);
+  double *h = realloc(ls->history, (size_t)n * sizeof *h);
+  if (!h) return 0;
+  ls->history = h;
+  h[0] = 1.0, h[1] = ls->refactored, h[2] = ls->refactor_next, h[3] = ls->numeric_since_symbolic, h[4] = nnz;
+  memcpy(h + SL_LINSOLVE_HISTORY_HEAD, ls->pivoted, (size_t)nnz * sizeof *h);
+  if (ls->refactored) memcpy(h + SL_LINSOLVE_HISTORY_HEAD + nnz, ls->factored, (size_t)nnz * sizeof *h);
+  *out = h;
+  return n;
+}
+
+int sl_linsolve_restore_history(sl_linsolve *ls, const double *h, int64_t n, sl_diag *d) {
+  int64_t nnz = n >= SL_LINSOLVE_HISTORY_HEAD ? (int64_t)h[4] : -1;
+  if (nnz < 1 || h[0] != 1.0 || (h[1] != 0.0 && h[1] != 1.0) || n != SL_LINSOLVE_HISTORY_HEAD + nnz * (h[1] ? 2 : 1))
+    return sl_diag_set(d, SL_EBADINPUT, "checkpoint: the %s factorisation's state (%lld values) is not one", ls->ops->name,
+                       (long long)n);
+  double *p = malloc((size_t)n * sizeof *p);
+  if (!p) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", ls->ops->name);
+  memcpy(p, h, (size_t)n * sizeof *p);
+  free(ls->pending);
+  ls->pending = p, ls->n_pending = n;
+  return 0;
+}
+
+/* A checkpoint's factorisation (sl_linsolve_restore_history), rebuilt for A's pattern: the analysis, the fresh
+ * factorisation of the values the pivots were chosen for, and with the same pivots the kept values' (KLU's
+ * refactorisation), as in the run that wrote it. */
+static int rebuild_pending(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
+  if (!ls->pending) return 0;
+  double *h = ls->pending;
+  ls->pending = NULL;
+  int32_t nnz = (int32_t)h[4];
+  int refactored = h[1] != 0.0, rc = 0;
+  if (nnz != A->nnz || A->rows)
+    rc = sl_diag_set(d, SL_EBADINPUT, "checkpoint: the %s factorisation has %d nonzeros, the matrix %d",
+                     ls->ops->name, (int)nnz, (int)A->nnz);
+  sl_csr T = *A;
+  T.values = h + SL_LINSOLVE_HISTORY_HEAD;
+  ls->have_symbolic = ls->have_numeric = 0;
+  ls->fresh_pending = 0;
+  double t0 = now();
+  if (!rc) rc = ls->ops->symbolic(ls->backend, &T, d);
+  ls->st.t_symbolic += now() - t0;
+  if (!rc) ++ls->st.n_symbolic;
+  for (int k = 0; k < 1 + refactored && !rc; ++k) {
+    if (k) T.values = h + SL_LINSOLVE_HISTORY_HEAD + nnz;
+    t0 = now();
+    rc = ls->ops->numeric(ls->backend, &T, &ls->st, d);
+    ls->st.t_numeric += now() - t0;
+    if (!rc) ++ls->st.n_numeric, ++ls->st.refactor_reason[SL_REFACTOR_FRESH];
+  }
+  if (!rc && (!(ls->factored = realloc(ls->factored, (size_t)nnz * sizeof *ls->factored)) ||
+              !(ls->pivoted = realloc(ls->pivoted, (size_t)nnz * sizeof *ls->pivoted))))
+    rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory", ls->ops->name);
+  if (rc) {
+    ls->n_factored = ls->factored ? ls->n_factored : 0, ls->n_pivoted = ls->pivoted ? ls->n_pivoted : 0;
+    free(h);
+    return sl_diag_prefix(d, rc, "restart: rebuilding the checkpoint's factorisation");
+  }
+  memcpy(ls->pivoted, h + SL_LINSOLVE_HISTORY_HEAD, (size_t)nnz * sizeof *h);
+  memcpy(ls->factored, T.values, (size_t)nnz * sizeof *h);
+  ls->n_factored = ls->n_pivoted = nnz;
+  ls->refactored = refactored, ls->distributed = 0;
+  ls->have_symbolic = ls->have_numeric = 1, ls->force_numeric = 0;
+  ls->pattern_id = A->pattern_id, ls->n = A->n_rows;
+  ls->matrix = NULL, ls->values = NULL; /* A's values are compared with the kept ones, as after any step */
+  ls->refactor_next = h[2] != 0.0, ls->numeric_since_symbolic = (int)h[3];
+  ls->reason = -1;
+  free(h);
+  return 0;
+}
+
 const char *sl_linsolve_name(const sl_linsolve *ls) { return ls->ops->name; }
 const char *sl_linsolve_description(const sl_linsolve *ls) { return ls->ops->description; }
 const sl_linsolve_stats *sl_linsolve_get_stats(const sl_linsolve *ls) { return &ls->st; }
@@ -263,6 +351,8 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "%s: matrix is %d x %d, not square", name, (int)A->n_rows, (int)A->n_cols);
   if (A->n_rows <= 0 || !A->row_ptr) return sl_diag_set(d, SL_EBADINPUT, "%s: empty matrix", name);
 
+  int rc0 = rebuild_pending(ls, A, d);
+  if (rc0) return rc0;
   settle_fresh(ls, A);
   int reason = ls->reason;
   ls->reason = -1;
@@ -313,6 +403,7 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
     if (bad) return bad;
     double t0 = now();
     ls->st.singular = 0;
+    long refactors = ls->st.n_refactor, redone = ls->st.n_refactor_redo;
     int rc = ls->ops->numeric(ls->backend, A, &ls->st, d);
     ls->st.t_numeric += now() - t0;
     if (rc && rc == SL_EFAILED && ls->st.singular && ls->fallback && !(rc = take_over(ls, d))) {
@@ -335,6 +426,17 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
       ls->n_factored = ls->factored ? A->nnz : 0;
     }
     if (ls->factored) memcpy(ls->factored, A->values, (size_t)A->nnz * sizeof *A->values);
+    /* a refactorisation (KLU's) keeps the pivots of the last fresh factorisation: remember whose they are */
+    ls->refactored = ls->st.n_refactor > refactors && ls->st.n_refactor_redo == redone;
+    ls->distributed = A->rows != NULL;
+    if (!ls->refactored) {
+      if (ls->n_pivoted != A->nnz) {
+        free(ls->pivoted);
+        ls->pivoted = malloc((size_t)A->nnz * sizeof *ls->pivoted);
+        ls->n_pivoted = ls->pivoted ? A->nnz : 0;
+      }
+      if (ls->pivoted) memcpy(ls->pivoted, A->values, (size_t)A->nnz * sizeof *A->values);
+    }
   }
   return 0;
 }
@@ -421,7 +523,11 @@ int sl_linsolve_solve_rtol(sl_linsolve *ls, const sl_csr *A, const double *b, do
     if (!rc) ++ls->st.n_solves;
     return rc;
   }
-  if (A->n_rows == A->n_cols && A->row_ptr) settle_fresh(ls, A);
+  if (A->n_rows == A->n_cols && A->row_ptr) {
+    int rc0 = rebuild_pending(ls, A, d);
+    if (rc0) return rc0;
+    settle_fresh(ls, A);
+  }
   if (!(rtol > 0.0) || !ls->reuse.enabled || !ls->have_symbolic || !ls->have_numeric || ls->force_numeric ||
       ls->pattern_id != A->pattern_id || ls->n != A->n_rows || A->n_rows != A->n_cols || !ls->factored ||
       ls->n_factored != A->nnz)

@@ -214,6 +214,22 @@ void sl_linsolve_values_changed(sl_linsolve *ls);
  * came before). */
 void sl_linsolve_drop_numeric(sl_linsolve *ls);
 
+/* The factorisation in hand as a checkpoint holds it, so that a restarted run rebuilds the very factorisation
+ * the uninterrupted run goes on with and both go on bit for bit the same (the reuse path's FGMRES and KLU's
+ * refactorisation, which keeps the pivots of an earlier factorisation, depend on what came before): the state
+ * [have a factorisation, refactorised, refactorise at the next solve, factorisations since the analysis,
+ * nonzeros] then the values the pivots were chosen for and, when the factorisation in hand is a
+ * refactorisation, the values it was computed from. *out points into ls (valid until its next factorisation
+ * or destruction); the length is 0 when there is nothing a restart can rebuild that way (no factorisation, an
+ * iterative backend, a matrix divided among ranks): the caller then drops the factorisation
+ * (sl_linsolve_drop_numeric). */
+enum { SL_LINSOLVE_HISTORY_HEAD = 5 };
+int64_t sl_linsolve_history(sl_linsolve *ls, const double **out);
+/* From a checkpoint's array (sl_linsolve_history): the next factorisation or solve analyses its matrix,
+ * factorises the values the pivots were chosen for, refactorises the kept values with those pivots and goes on
+ * as the run that wrote it. SL_EBADINPUT when the array is not such a state. */
+int sl_linsolve_restore_history(sl_linsolve *ls, const double *h, int64_t n, sl_diag *d);
+
 /* x with |b - A x|_2 <= rtol |b|_2: when only A's values changed since the
  * last factorisation and reuse is on, by FGMRES preconditioned with that
  * factorisation; otherwise (rtol <= 0, reuse off, a new pattern, no

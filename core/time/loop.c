@@ -189,7 +189,7 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
     int its = 0, nrc = ops->step(self, &st, &its, &dn);
     res->nonlinear_iterations += its;
     double err = 0.0;
-    if (nrc == 0 && tc->adaptive) err = sl_bdf_error(&s, trial, pred, info->n_err, tc->tolerance, 1e-12);
+    if (nrc == 0 && tc->adaptive) err = fmax(sl_bdf_error(&s, trial, pred, info->n_err, tc->tolerance, 1e-12), st.error);
     int coupled_failed = 0;
     if (nrc == 0 && err <= 1.0 && ops->complete) {
       for (int32_t i = 0; i < n; ++i) rate[i] = s.mass_coef * trial[i] + hist[i]; /* the BDF du/dt at t + hh */

@@ -65,6 +65,9 @@ typedef struct sl_step {
   const double *dudt; /* for `complete`: the BDF du/dt at t + dt */
   const double *state; /* BDF: the last accepted state (at t) */
   int writes;          /* the state after this step is written (an output time, the end, the step limit) */
+  /* set by the step: an error of its own beside the BDF estimate, scaled as sl_bdf_error (the step is accepted when
+     both are <= 1; 0: none). The split flow step's splitting error (core/models/navier_stokes/projection.h). */
+  double error;
 } sl_step;
 
 /* The counts a model adds to the summary and the profile. */

@@ -21,7 +21,11 @@
  *    0.5 % of its largest; the solids flux of the inlet carried by every station to 1e-6. Measured (printed):
  *    P1 6e-6, 3.5e-5, 8e-6, 3.6e-5; the beads 3.4e-4, 7.0e-4, 4.3e-4, 1.6e-3, the flow still developing at
  *    75 D (on 8 m the same differences fall to about 1e-6); the beads again with theta transported (model B
- *    in full: theta convected by the solids);
+ *    in full: theta convected by the solids); P1 with no-slip solids and the kinetic viscosity (pvc_pipe.ini as
+ *    shipped, solids_wall = no_slip), which cycled at its first station before the march took the drag's
+ *    fraction from the upstream station (core/models/pipe/pipe_march.c, pipe_march_drag): measured 1e-10 (its
+ *    outlet in-situ fraction 0.160 for 0.107 delivered: the solids' wall stress, 214 Pa, holds them back), and
+ *    P1 with the Ding-Gidaspow, Ding-Lyczkowski and Bartosik solids walls and the kinetic viscosity;
  *  - an inlet intensity out of range is refused before anything is written (exit 2). */
 #include <math.h>
 #include <stdio.h>
@@ -340,6 +344,18 @@ int main(void) {
   const char *none[] = {NULL}, *kinetic[] = {"pipe.kinetic_pressure=true", NULL};
   /* Krampa's P1 (3.4 mm PVC, 10.7 %, V = 2.25 m/s, free slip: Table 5.3's first row) */
   slurry("pvc_pipe.ini", none, 1e-3, 2e-3, 1e-3, 5e-3);
+  /* P1 as shipped with no-slip solids (the kinetic viscosity of [closure.granular] lun): the wall cell's solids
+     stop to 0.14 m/s and gather past Gidaspow's drag switch at c_f = 0.8 near the inlet (pipe_march_drag) */
+  const char *no_slip[] = {"pipe.solids_wall=no_slip", NULL};
+  slurry("pvc_pipe.ini", no_slip, 1e-3, 2e-3, 1e-3, 5e-3);
+  /* and with the three solids wall closures of Tables 5.3-5.4 (DG90, DL92, B96), the kinetic viscosity on */
+  static const char *const walls[3] = {"closure.wall_stress.solids.model=navier_slip_ding_gidaspow",
+                                       "closure.wall_stress.solids.model=navier_slip_ding_lyczkowski",
+                                       "closure.wall_stress.solids.model=bartosik"};
+  for (int k = 0; k < 3; ++k) {
+    const char *wall[] = {"pipe.solids_wall=wall_stress", walls[k], NULL};
+    slurry("pvc_pipe.ini", wall, 1e-3, 2e-3, 1e-3, 5e-3);
+  }
   /* 0.5 mm glass beads at 25 %, V = 3.02 m/s, with the kinetic theory's pressure (the solids leave the wall) */
   slurry("vertical_pipe.ini", kinetic, 1e-3, 2e-3, 1e-3, 5e-3);
   /* the same with the transported theta (model B in full) */

@@ -24,7 +24,9 @@
  *    tau_sw/tau_fw = (c_s rho_s/(sigma rho_f)) u_s/u_f of the wall cell, to
  *    the steady solve's tolerance (1e-8);
  *  - the L-probe (Krampa 2009 section 3.4): the mean solids velocity at V = 4 m/s
- *    within 10 % of 3.91 m/s, the slip at the axis the Ergun uniform-slip solution;
+ *    within 10 % of 3.91 m/s, the slip at the axis the Ergun uniform-slip solution; at V = 2 m/s every
+ *    closure that could move the slip keeps the mean within 2.5 % (the miss is the V term), and the
+ *    model gives 1.55 m/s at V = 1.58;
  *  - stability: 2.4 mm sand at 30 % (up-flow at 3.02 m/s, down-flow at 1
  *    m/s) and 0.5 mm beads at phi_max - 0.01 = 0.62 (up at 2 m/s, down at 1
  *    m/s) converge, with a finite state and the mixture's momentum held;
@@ -265,6 +267,56 @@ static void lprobe(void) {
   }
 }
 
+/* Why V = 2 misses (issue 21, measured): with phi held, the continuity of the mixture makes the section-mean solids
+   velocity V - c_f <slip>, and the slip term is set by the drag against the beads' buoyant weight. Every closure
+   that could change the slip or the profile: the drag law (Wen-Yu, Di Felice, Syamlal-O'Brien for Gidaspow's
+   Ergun branch), the kinetic pressure with the transported theta (model B in full), Simonin's dispersion,
+   Simonin's modulation (model C's fluid side), no-slip solids. Asserted: each gives the mean within 2.5 % of
+   the scene's (measured -1.6 to +0.6 %), so each misses 1.55 by more than +20 %: the miss is the V term, not a
+   closure's. And the model gives 1.55 m/s at V = 1.58 m/s (within 1 %; measured +0.3 %): the probe's profile
+   is what the model gives some 20 % below the stated V (the thesis's captions disagree on it, digest
+   erratum 15). */
+static void lprobe_terms(void) {
+  static const char *const variants[][3] = {{"closure.drag.model=wen_yu", NULL, NULL},
+                                            {"closure.drag.model=di_felice", NULL, NULL},
+                                            {"closure.drag.model=syamlal_obrien", NULL, NULL},
+                                            {"pipe.kinetic_pressure=true", "pipe.granular_temperature=transport", NULL},
+                                            {"pipe.dispersion=simonin", NULL, NULL},
+                                            {"pipe.modulation=simonin", NULL, NULL},
+                                            {"pipe.solids_wall=no_slip", NULL, NULL}};
+  const char *base_sets[] = {"pipe.bulk_velocity=2", "flow.gravity=-9.81", NULL};
+  sluice_error e = {0, ""};
+  if (run(NULL, NULL, base_sets, "pipe_lprobe_terms.h5", &e)) {
+    CHECK_MSG(0, "V = 2: %s", e.msg);
+    return;
+  }
+  double base = pipe_scalar("pipe_lprobe_terms.h5", "velocity_solid_area_mean");
+  double uf = pipe_scalar("pipe_lprobe_terms.h5", "velocity_fluid_area_mean");
+  printf("L-probe V = 2: mean u_s %.4f m/s = V - c_f <slip>, c_f <slip> = %.4f m/s; the probe's 1.55 needs %.3f\n", base,
+         2.0 - base, 2.0 - 1.55);
+  CHECK_MSG(fabs(0.75 * uf + 0.25 * base - 2.0) < 1e-9, "c_f uf + c_s us = %.12g", 0.75 * uf + 0.25 * base);
+  for (size_t k = 0; k < sizeof variants / sizeof variants[0]; ++k) {
+    const char *sets[6] = {"pipe.bulk_velocity=2", "flow.gravity=-9.81", variants[k][0], variants[k][1], NULL};
+    if (run(NULL, NULL, sets, "pipe_lprobe_terms.h5", &e)) {
+      CHECK_MSG(0, "V = 2, %s: %s", variants[k][0], e.msg);
+      continue;
+    }
+    double us = pipe_scalar("pipe_lprobe_terms.h5", "velocity_solid_area_mean");
+    printf("  %s%s%s: mean u_s %.4f m/s (%+.2f %% of the scene's, %+.1f %% of 1.55)\n", variants[k][0],
+           variants[k][1] ? ", " : "", variants[k][1] ? variants[k][1] : "", us, 100.0 * (us / base - 1.0),
+           100.0 * (us / 1.55 - 1.0));
+    CHECK_MSG(fabs(us / base - 1.0) < 0.025, "%s: mean u_s %.4f against the scene's %.4f", variants[k][0], us, base);
+  }
+  const char *low[] = {"pipe.bulk_velocity=1.58", "flow.gravity=-9.81", NULL};
+  if (run(NULL, NULL, low, "pipe_lprobe_terms.h5", &e)) {
+    CHECK_MSG(0, "V = 1.58: %s", e.msg);
+    return;
+  }
+  double us = pipe_scalar("pipe_lprobe_terms.h5", "velocity_solid_area_mean");
+  printf("  V = 1.58 m/s: mean u_s %.4f m/s (%+.2f %% of 1.55)\n", us, 100.0 * (us / 1.55 - 1.0));
+  CHECK_MSG(fabs(us / 1.55 - 1.0) < 0.01, "V = 1.58: mean u_s %.4f against 1.55", us);
+}
+
 static void stability(void) {
   static const struct {
     const char *name, *sets[6];
@@ -452,6 +504,7 @@ int main(void) {
   kinetic_theory();
   no_slip_bridge();
   lprobe();
+  lprobe_terms();
   stability();
   stability_kinetic();
   theta_transport();

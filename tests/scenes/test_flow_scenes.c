@@ -383,7 +383,7 @@ static void set_configs(const char *sub);
 
 /* A nonlinear transient run (the Re = 100 cavity started from rest, adaptive BDF2), whose Newton solves reuse
  * factorisations: stopped at an output time and restarted from its checkpoint there, it ends bit for bit where the
- * uninterrupted run does (both start the solver afresh at the checkpoints of the output times), with the same
+ * uninterrupted run does (the checkpoint holds the kept factorisation, which the restart rebuilds), with the same
  * steps (the controller's state carries over). */
 static void restart_reuse(void) {
   set_configs("configs");

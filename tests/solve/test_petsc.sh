@@ -189,11 +189,70 @@ if command -v mpirun > /dev/null; then
     check "2 ranks: the output equals 1 rank's (h5diff -p 1e-8)" h5diff -p 1e-8 one/b.h5 two/b.h5
   fi
   check "2 ranks: the same sidecar" cmp -s one/b.xmf two/b.xmf
-  ds=$(paste -d, one/b_scalars.csv two/b_scalars.csv | awk -F, 'NR == 1 { n = NF / 2; next }
+  # 1 when two scalar tables differ anywhere by more than a relative 1e-8, 0 when not
+  scalars_differ() {
+    paste -d, "$1" "$2" | awk -F, 'NR == 1 { n = NF / 2; next }
       { for (c = 1; c <= n; ++c) { a = $c; b = $(c + n); d = a - b; if (d < 0) d = -d; if (a < 0) a = -a;
-          if (d > 1e-8 * a && d > 1e-300) m = 1 } } END { print m + 0 }')
+          if (d > 1e-8 * a && d > 1e-300) m = 1 } } END { print m + 0 }'
+  }
+  ds=$(scalars_differ one/b_scalars.csv two/b_scalars.csv)
   check "2 ranks: the same scalars (within a relative 1e-8)" test "$ds" = 0 -a "$(wc -l < one/b_scalars.csv)" = 3
   check "2 ranks say so in the summary" grep -q "2 ranks)" c2.log
+  # one file, the serial one's layout: the output of 2 and 3 ranks has the groups, datasets, types, shapes and
+  # attributes of the 1-rank run's (h5dump -H), and every dataset (fields at every output time, checkpoint,
+  # mesh) its values to the solver tolerance, relative to the dataset's largest value: the Stokes cavity (steady
+  # navier_stokes, to its pressure's 1e-7 above), the boycott vessel (the mixture, 1e-9) and the cavity at Re = 100
+  # in time (transient navier_stokes, BDF2, fixed steps, 1e-9). Then restarts on another number of ranks: a
+  # 2-rank checkpoint continued on 3 ranks and on 1 (no mpirun, the default direct solver) ends where the
+  # uninterrupted run ends, in its last fields and its checkpoint, to the same tolerance
+  if command -v h5dump > /dev/null && command -v h5ls > /dev/null; then
+    . "$(dirname "$0")/h5_fields.sh"
+    last_step() { h5ls "$1" | awk '/^step_/ { s = $1 } END { print "/" s }'; }
+    ck_time() { h5dump -a "$(h5_checkpoint "$1")/time" "$1" | sed -n 's/^ *(0): *//p'; }
+    ns=(--set time.scheme=bdf2 --set time.dt=0.05 --set time.adaptive=false --set output.every=0.1
+        --set mesh.cells=16,16 --set solver.linear=petsc)
+    for n in 1 2 3; do
+      mpirun -n $n "$sluice" run "$configs/cavity_re100.ini" "${ns[@]}" --set time.end=0.2 -o ns$n.h5 > ns$n.log 2>&1
+    done
+    for n in 2 3; do
+      for pair in "c 1e-7 stokes cavity" "b 1e-9 boycott" "ns 1e-9 re100 cavity in time"; do
+        read -r f tol what <<<"$pair"
+        check "$what on $n ranks: the 1-rank file's layout" h5_layout $f"1.h5" $f$n.h5
+        read -r dd at <<<"$(h5_files_diff $f"1.h5" $f$n.h5)"
+        echo "$what on $n ranks against 1 rank: largest difference $dd (in $at)"
+        check "$what on $n ranks: every dataset within $tol of 1 rank's ($dd in $at)" below "$dd" "$tol"
+        check "$what on $n ranks: the 1-rank sidecar (ParaView's .xmf), but for the file's name" \
+          cmp -s <(sed "s/$f$n\.h5/${f}1.h5/g" $f$n.xmf) $f"1.xmf"
+        if [ -e $f"1_scalars.csv" ]; then
+          check "$what on $n ranks: the 1-rank scalars (within a relative 1e-8)" \
+            test -s $f$n"_scalars.csv" -a "$(scalars_differ $f"1_scalars.csv" $f$n"_scalars.csv")" = 0
+        fi
+      done
+    done
+    # restarts: the 2-rank checkpoints at half time, continued on 3 ranks and serially
+    mpirun -n 2 "$sluice" run "$configs/cavity_re100.ini" "${ns[@]}" --set time.end=0.1 -o nh2.h5 > nh2.log 2>&1
+    mpirun -n 3 "$sluice" run "$configs/cavity_re100.ini" "${ns[@]}" --set time.end=0.2 --restart nh2.h5 \
+      -o nc3.h5 > nc3.log 2>&1
+    "$sluice" run "$configs/cavity_re100.ini" "${ns[@]}" --set solver.linear=auto --set time.end=0.2 \
+      --restart nh2.h5 -o nc1.h5 > nc1.log 2>&1
+    mpirun -n 3 "$sluice" run "$box" "${args[@]/time.end=0.05/time.end=0.1}" --set solver.linear=petsc \
+      --restart b2.h5 -o bc3.h5 > bc3.log 2>&1
+    "$sluice" run "$box" "${args[@]/time.end=0.05/time.end=0.1}" --restart b2.h5 -o bc1.h5 > bc1.log 2>&1
+    check "the re100 restart ran on 3 ranks" grep -q "3 ranks)" nc3.log
+    check "the boycott restart ran on 3 ranks" grep -q "3 ranks)" bc3.log
+    for pair in "ns1 nc3 re100 cavity, 2 ranks then 3" "ns1 nc1 re100 cavity, 2 ranks then serial" \
+                "whole bc3 boycott, 2 ranks then 3" "whole bc1 boycott, 2 ranks then serial"; do
+      read -r w c what <<<"$pair"
+      read -r df at <<<"$(h5_files_diff $w.h5 $c.h5 "$(last_step $w.h5)" "$(last_step $c.h5)")"
+      read -r dk atk <<<"$(h5_files_diff $w.h5 $c.h5 "$(h5_checkpoint $w.h5)" "$(h5_checkpoint $c.h5)")"
+      echo "restart, $what: the last fields differ from the uninterrupted run's by $df ($at), the checkpoint by $dk"
+      check "restart, $what: the last fields within 1e-9 ($df in $at)" below "$df" 1e-9
+      check "restart, $what: the checkpoint within 1e-9 ($dk in $atk)" below "$dk" 1e-9
+      check "restart, $what: the checkpoint at the same time" test -n "$(ck_time $c.h5)" -a "$(ck_time $c.h5)" = "$(ck_time $w.h5)"
+    done
+  else
+    echo "h5dump not found: the files of several ranks are not compared dataset by dataset"
+  fi
   # rank 0 alone opens the output: when it cannot, every rank stops (exit 2), none waits for it
   echo "not sluice's" > foreign.h5
   out=$(timeout 120 mpirun -n 2 "$sluice" run "$cav" --set mesh.cells=8,8 -o foreign.h5 2>&1); rc=$?

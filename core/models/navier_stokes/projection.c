@@ -9,6 +9,7 @@
 #include <time.h>
 
 #include "core/assembly/operators.h"
+#include "core/models/navier_stokes/factor_checkpoint.h"
 #include "core/solve/krylov.h"
 
 static double wall(void) {
@@ -43,6 +44,8 @@ struct sl_projection {
   int32_t n_pfixed, *pfixed;
   sl_linsolve *ls_p;
   long poisson_solves;
+  double volume; /* sum of the lumped pressure mass: the domain's area (volume per radian) */
+  double split_rms;
   /* the increments of the last two accepted steps and their mass coefficients; the trial's */
   int n_hist;
   double m_hist[2];
@@ -103,6 +106,7 @@ static int build_poisson(sl_projection *pj, const sl_flow_problem *prob, sl_diag
   if ((rc = sl_assemble_diffusion(&pj->psys, pm, &o, d))) return rc;
   if ((rc = sl_system_complete(&pj->psys, 1, d))) return rc;
   memcpy(pj->mass, pj->psys.b, (size_t)pj->np * sizeof *pj->mass);
+  for (int32_t i = 0; i < pj->np; ++i) pj->volume += pj->mass[i];
   if ((rc = sl_constraints_init(&pj->pbc, pm->n_dofs, d))) return rc;
   int any = 0;
   for (int b = 0; b < m->n_boundaries && !rc; ++b)
@@ -286,6 +290,13 @@ int sl_projection_step(sl_projection *pj, sl_flow_problem *prob, const sl_step *
   if ((rc = sl_linsolve_solve(pj->ls_p, &pj->psys.A, pj->rhs, pj->phi_trial, d)))
     return sl_diag_prefix(d, rc, "projection: the pressure Poisson solve");
   pj->poisson_solves++;
+  /* The splitting's part of the step: the end-of-step solenoidal velocity is u~ - grad(phi) / (chi m) (GMS 2006,
+     eq 3.15, Guermond & Salgado 2009's chi), the intermediate u~ is kept, so the step's velocity carries
+     delta = grad(phi) / (chi m). Its root mean square: |grad phi|^2 = phi . K phi = chi m phi . (B u~) (the
+     Poisson equation; phi = 0 on its Dirichlet nodes), so |delta|^2 = phi . (B u~) / (chi m). */
+  double g = 0.0;
+  for (int32_t i = 0; i < np; ++i) g += pj->phi_trial[i] * pj->div[i];
+  pj->split_rms = pj->volume > 0.0 && g > 0.0 ? sqrt(g / (f * pj->volume)) : 0.0;
   /* p^{k+1} = p^k + phi - mu div u~, div u~ ~ -(B u~) / mass (lumped) */
   double mu = pj->o.mu_rotational;
   for (int32_t i = 0; i < np; ++i) p[i] = pk[i] + pj->phi_trial[i] + (mu > 0.0 ? mu * pj->div[i] / pj->mass[i] : 0.0);
@@ -298,6 +309,8 @@ int sl_projection_step(sl_projection *pj, sl_flow_problem *prob, const sl_step *
 }
 
 int sl_projection_needs_start(const sl_projection *pj) { return pj->n_hist == 0; }
+
+double sl_projection_split_rms(const sl_projection *pj) { return pj->split_rms; }
 
 void sl_projection_started(sl_projection *pj, double mass_coef) {
   memset(pj->phi_trial, 0, (size_t)pj->np * sizeof *pj->phi_trial);
@@ -326,14 +339,8 @@ void sl_projection_accept(sl_projection *pj) {
   pj->trial = -1;
 }
 
-void sl_projection_drop_numeric(sl_projection *pj) {
-  /* a restart factorises the checkpointed blocks afresh: so does the run that goes on */
-  sl_linsolve_drop_numeric(pj->ls_v);
-  sl_linsolve_drop_numeric(pj->ls_P);
-}
-
 int sl_projection_checkpoint(sl_projection *pj, sl_checkpoint_array *a, int max) {
-  if (max < 4) return 0;
+  if (max < 6) return 0;
   /* [n_hist, m^k, m^{k-1}, refresh], the two increments and the preconditioner's values */
   double *head = pj->head;
   head[0] = pj->n_hist, head[1] = pj->m_hist[0], head[2] = pj->m_hist[1], head[3] = pj->refresh;
@@ -341,7 +348,12 @@ int sl_projection_checkpoint(sl_projection *pj, sl_checkpoint_array *a, int max)
   snprintf(a[1].name, sizeof a[1].name, "projection_phi"), a[1].n = pj->np, a[1].data = pj->phi_hist[0];
   snprintf(a[2].name, sizeof a[2].name, "projection_phi_prev"), a[2].n = pj->np, a[2].data = pj->phi_hist[1];
   snprintf(a[3].name, sizeof a[3].name, "projection_blocks"), a[3].n = pj->P.nnz, a[3].data = pj->P.values;
-  return 4;
+  /* the blocks' and the fallback's factorisations, which a restart rebuilds (the Poisson operator's, factorised
+     once, it computes afresh as the run did) */
+  int n = 4;
+  n += sl_factor_checkpoint(pj->ls_P, "linsolve_projection_blocks", a + n, max - n);
+  n += sl_factor_checkpoint(pj->ls_v, "linsolve_projection_velocity", a + n, max - n);
+  return n;
 }
 
 int sl_projection_restore(sl_projection *pj, const sl_checkpoint *ck, sl_diag *d) {
@@ -360,7 +372,8 @@ int sl_projection_restore(sl_projection *pj, const sl_checkpoint *ck, sl_diag *d
   sl_csr_touch(&pj->P);
   memcpy(pj->phi_hist[0], a->data, (size_t)pj->np * sizeof(double));
   memcpy(pj->phi_hist[1], b->data, (size_t)pj->np * sizeof(double));
-  return 0;
+  int rc = sl_factor_restore(pj->ls_P, "linsolve_projection_blocks", ck, d);
+  return rc ? rc : sl_factor_restore(pj->ls_v, "linsolve_projection_velocity", ck, d);
 }
 
 const sl_linsolve *sl_projection_velocity_solver(const sl_projection *pj) { return pj->ls_P; }

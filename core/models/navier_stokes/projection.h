@@ -68,11 +68,12 @@ void sl_projection_started(sl_projection *pj, double mass_coef);
 void sl_projection_accept(sl_projection *pj);
 /* The next trial is a skipped step (its increment zero). */
 void sl_projection_skip(sl_projection *pj);
-/* Drops the kept factorisations' reuse history (a checkpoint: a restart goes on bit for bit). */
-void sl_projection_drop_numeric(sl_projection *pj);
-/* The increment history and the preconditioner's values to checkpoint (4 arrays) and back, so that a restart
- * goes on as the uninterrupted run; a checkpoint without them (a monolithic run's) starts the split step afresh
- * (its first step monolithic). */
+/* The increment history, the preconditioner's values and the kept factorisations to checkpoint (4-6 arrays)
+ * and back, so that a restart goes on as the uninterrupted run; a checkpoint without them (a monolithic run's)
+ * starts the split step afresh (its first step monolithic). */
+/* The last sl_projection_step's splitting perturbation of the velocity, root mean square over the domain:
+ * |grad phi| / (chi m), what the projection would remove from the intermediate velocity it keeps. */
+double sl_projection_split_rms(const sl_projection *pj);
 int sl_projection_checkpoint(sl_projection *pj, sl_checkpoint_array *a, int max);
 int sl_projection_restore(sl_projection *pj, const sl_checkpoint *ck, sl_diag *d);
 

@@ -98,6 +98,11 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
     rc = sl_diag_set(d, SL_EBADINPUT,
                      "[closure.wall_stress.solids] is read with [pipe] solids_wall = wall_stress "
                      "only; did you mean solids_wall = wall_stress?");
+  if (!rc && c->solids_viscosity == PIPE_SOLIDS_VISCOSITY_PEIRANO_LECKNER && sl_scene_closure(sc, "granular"))
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s = peirano_leckner is Krampa's model C, whose collisional viscosity replaces the kinetic "
+                     "theory's: remove [closure.granular]",
+                     sl_scene_where(sc, &c->solids_viscosity, at, sizeof at));
   if (!rc) rc = build_grid(p, d);
   const int n = p->n;
   if (!rc) {

@@ -16,6 +16,7 @@
 enum { PIPE_NO_SLIP = 0, PIPE_FREE_SLIP, PIPE_WALL_STRESS };
 enum { PIPE_DISPERSION_GRADIENT = 0, PIPE_DISPERSION_SIMONIN };
 enum { PIPE_THETA_ALGEBRAIC = 0, PIPE_THETA_TRANSPORT };
+enum { PIPE_SOLIDS_VISCOSITY_EDDY = 0, PIPE_SOLIDS_VISCOSITY_PEIRANO_LECKNER };
 
 typedef struct pipe_config {
   double diameter, bulk_velocity, solids_fraction, wall_cell, wall_y_plus;
@@ -27,6 +28,8 @@ typedef struct pipe_config {
   int granular_temperature; /* PIPE_THETA_* */
   int modulation;           /* 0 none, 1 Simonin's */
   double c_eps3;
+  int solids_viscosity; /* PIPE_SOLIDS_VISCOSITY_* */
+  double restitution;   /* e of solids_viscosity = peirano_leckner */
   /* the developing pipe (pipe_march.c): length 0 for the fully developed one */
   double length, inlet_intensity, inlet_length_scale;
   long axial_cells;
@@ -111,6 +114,14 @@ typedef struct pipe {
   pipe_march march;
 } pipe;
 
+/* One point of model C's solids viscosity (pipe_peirano.c). */
+typedef struct pipe_pl_point {
+  double phi, k, eps, slip2, K;               /* the solids fraction, the fluid's k and epsilon, slip^2, the drag */
+  double rho_s, d_p, phi_max, restitution;    /* the particles */
+  double c_mu, c_beta;                        /* C_mu, the crossing-trajectory C_beta of t_fs */
+} pipe_pl_point;
+double pipe_peirano_leckner(const pipe_pl_point *q, double *nu_st);
+
 int pipe_closures_bind(pipe *p, sl_diag *d);
 int pipe_turbulence_coefficients(pipe *p, sl_diag *d);
 int pipe_wall_function(pipe *p, sl_diag *d);
@@ -129,6 +140,8 @@ void pipe_march_momentum(const pipe *p, sl_csr *A, double *b);
 void pipe_march_scalar(pipe *p, const double *cap_pseudo, const double *s_iter, const double *s_up);
 void pipe_march_solids(pipe *p, double *cap, double *flux);
 void pipe_march_theta(pipe *p, const double *cap_pseudo);
+const double *pipe_march_drag_fraction(const pipe *p, double *phi_arg);
+void pipe_march_drag(pipe *p, const double *phi_arg, double *dK);
 int pipe_march_solve(pipe *p, sl_diag *d);
 int pipe_march_write(pipe *p, sl_output *out, unsigned mask, sl_diag *d);
 

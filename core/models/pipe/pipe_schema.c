@@ -49,6 +49,13 @@ static const sl_key pipe_keys[] = {
     {.section = "pipe", .name = "c_eps3", .type = SL_KEY_REAL, C(c_eps3), .def = 1.2, .min = 0.0, .max = 10.0,
      .help = "modulation = simonin: C_eps3 of the epsilon equation's C_eps3 (eps/k) times the k modulation "
              "(Krampa 2009 Table 4.1: 1.2)"},
+    {.section = "pipe", .name = "solids_viscosity", .type = SL_KEY_CHOICE, C(solids_viscosity),
+     .choices = "eddy|peirano_leckner",
+     .help = "the solids' turbulent viscosity: the dispersed phase's eddy viscosity c_s rho_s nu_t/sigma (eddy), or "
+             "Peirano & Leckner's kinetic and collisional viscosity with Tchen's equilibrium k_s and k_fs "
+             "(Krampa 2009 model C, eqs 5.15-5.19; replaces [closure.granular])"},
+    {.section = "pipe", .name = "restitution", .type = SL_KEY_REAL, C(restitution), .def = 0.9, .min = 0.0,
+     .max = 1.0, .help = "solids_viscosity = peirano_leckner: the particles' restitution coefficient e"},
     {.section = "pipe", .name = "solids_schmidt", .type = SL_KEY_REAL, C(solids_schmidt), .def = 1.0, .min = 1e-3,
      .max = 1e3, .help = "sigma of the solids' eddy viscosity c_s rho_s nu_t/sigma (Krampa 2009 eq 6.20)"},
     {.section = "pipe", .name = "dispersion_schmidt", .type = SL_KEY_REAL, C(dispersion_schmidt), .def = 1.0,

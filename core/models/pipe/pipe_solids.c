@@ -83,17 +83,29 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
   double *slip = p->buf[0], *gd = p->buf[4], *dK = p->buf[1];
   for (int i = 0; i < n; ++i) p->slip0[i] = p->uf[i] - p->us[i], slip[i] = fabs(p->slip0[i]);
   const double *v[PQ_N] = {0};
-  v[PQ_PHI] = p->phi, v[PQ_SLIP] = slip;
+  /* the developing pipe: the drag's fraction from the last station (pipe_march_drag) */
+  v[PQ_PHI] = p->march.on ? pipe_march_drag_fraction(p, p->buf[2]) : p->phi, v[PQ_SLIP] = slip;
   sl_point_request rq = {"K", p->K, dK, "slip"};
   int rc = sl_point_eval(&p->drag, n, v, &rq, 1, d);
   if (rc) return sl_diag_prefix(d, rc, "[closure.drag]");
+  if (p->march.on) pipe_march_drag(p, p->buf[2], dK);
+  v[PQ_PHI] = p->phi;
   /* the drag force K(s) s linearised about the last slip: its slope d(K s)/ds = K + s dK/ds (the lagged K alone
      oscillates where K grows with s, K ~ s at high particle Reynolds numbers) */
   for (int i = 0; i < n; ++i) p->Kd[i] = fmax(p->K[i] + slip[i] * dK[i], p->K[i] * 1e-3);
   /* mu_s: the dispersed phase's eddy viscosity, the constant, the kinetic theory's */
   if (p->have_gran) solids_shear(p, gd);
-  for (int i = 0; i < n; ++i)
-    p->mu_s[i] = p->phi[i] * p->rho_s * (p->mu_t[i] / p->rho_f) / p->cfg->solids_schmidt + p->sc->solid.viscosity;
+  if (p->cfg->solids_viscosity == PIPE_SOLIDS_VISCOSITY_PEIRANO_LECKNER) /* Krampa's model C (pipe_peirano.c) */
+    for (int i = 0; i < n; ++i) {
+      double s = p->uf[i] - p->us[i];
+      pipe_pl_point q = {.phi = p->phi[i], .k = p->k[i], .eps = p->eps[i], .slip2 = s * s, .K = p->K[i],
+                         .rho_s = p->rho_s, .d_p = p->d_p, .phi_max = p->phi_max,
+                         .restitution = p->cfg->restitution, .c_mu = p->c_mu, .c_beta = p->cfg->crossing_trajectory};
+      p->mu_s[i] = p->phi[i] * p->rho_s * pipe_peirano_leckner(&q, NULL) + p->sc->solid.viscosity;
+    }
+  else
+    for (int i = 0; i < n; ++i)
+      p->mu_s[i] = p->phi[i] * p->rho_s * (p->mu_t[i] / p->rho_f) / p->cfg->solids_schmidt + p->sc->solid.viscosity;
   if (p->have_gran) {
     if ((rc = p->cfg->granular_temperature == PIPE_THETA_TRANSPORT ? pipe_theta_transport(p, gd, d)
                                                                    : granular_theta(p, gd, d)))

@@ -1,0 +1,38 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* Krampa's (2009) model C solids viscosity (pipe.h, `[pipe] solids_viscosity = peirano_leckner`): the kinetic and
+ * collisional viscosity of Peirano & Leckner (1998, Prog. Energy Combust. Sci. 24:259), Krampa's eqs 5.15-5.19,
+ * kinematic (the digest's note on eq 5.16: its nu_st, not mu_st, inside the collisional bracket):
+ *   nu_s  = nu_st + nu_sc                                                                   (5.15)
+ *   nu_sc = (8/5) c_s g0 eta (nu_st + d_p sqrt(2 k_s/(3 pi))),  eta = (1 + e)/2                 (5.16)
+ *   nu_st = (2/3) [(t_fs/t_p) k_fs + (1 + c_s g0 A) k_s] [2/t_p + B/t_c]^-1                   (5.17)
+ *   A = (2/5)(1 + e)(3e - 1),  B = (1/5)(1 + e)(3 - e)                                        (5.18)
+ *   t_c = sqrt(pi)/(24 c_s g0) d_p sqrt(3/(2 k_s))   (the collision time)                     (5.19)
+ * with t_fs the eddy-particle interaction time with the crossing-trajectory effect (eq 4.61; Csanady 1963), t_p =
+ * c_s rho_s/K (eq 4.58), g0 Lun & Savage's (1 - c_s/C_max)^(-2.5 C_max) (eq 4.91). Model C transports k_s and k_fs
+ * (eqs 5.20, 5.23); here both are Tchen's equilibrium for heavy particles, k_fs = 2 k eta_r/(1 + eta_r) and k_s =
+ * k eta_r/(1 + eta_r), eta_r = t_fs/t_p (Simonin 1996; the same k_fs as [pipe] modulation and dispersion =
+ * simonin), so that the model's solids side is algebraic in k, epsilon and the drag. This pair is what eqs 5.20
+ * and 5.23 give without their production, diffusion and collisional terms: 5.20's interaction makes k_s = k_fs/2,
+ * and 5.23's, (1/t_p)[(1 + S) k_fs - 2 k - 2 S k_s] + k_fs/t_fs = 0, then k_fs = 2 k t_fs/(t_fs + t_p). Limits (tests/models/
+ * test_pipe_peirano.c): fine particles (t_p -> 0) follow the fluid, nu_st -> (2/3) t_fs k = C_mu k^2/eps at zero
+ * slip; without collisions (c_s -> 0) nu_s -> (1/3)(t_fs k_fs + t_p k_s), Simonin's dilute form. Written with
+ * t_p in the numerator, (2/3)[t_fs k_fs + t_p (1 + c_s g0 A) k_s]/[2 + B t_p/t_c], finite at t_p = 0. */
+#include <math.h>
+
+#include "core/models/pipe/pipe_impl.h"
+
+double pipe_peirano_leckner(const pipe_pl_point *q, double *nu_st) {
+  const double pi = 3.14159265358979323846;
+  const double cs = fmin(fmax(q->phi, 0.0), q->phi_max - 0.01), k = fmax(q->k, 0.0), e = q->restitution;
+  const double tfs = q->c_mu * 1.5 * k / q->eps / sqrt(1.0 + q->c_beta * 1.5 * q->slip2 / fmax(k, 1e-300));
+  const double tp = q->K > 0.0 ? cs * q->rho_s / q->K : 0.0;
+  const double er = tp > 0.0 ? tfs / tp : INFINITY;
+  const double f = isinf(er) ? 1.0 : er / (1.0 + er), kfs = 2.0 * k * f, ks = k * f;
+  const double g0 = pow(1.0 - cs / q->phi_max, -2.5 * q->phi_max);
+  const double A = 0.4 * (1.0 + e) * (3.0 * e - 1.0), B = 0.2 * (1.0 + e) * (3.0 - e), eta = 0.5 * (1.0 + e);
+  const double inv_tc = 24.0 * cs * g0 * sqrt(2.0 * ks / 3.0) / (sqrt(pi) * q->d_p); /* 1/t_c of eq 5.19 */
+  const double st = (2.0 / 3.0) * (tfs * kfs + tp * (1.0 + cs * g0 * A) * ks) / (2.0 + B * tp * inv_tc);
+  const double sc = 1.6 * cs * g0 * eta * (st + q->d_p * sqrt(2.0 * ks / (3.0 * pi)));
+  if (nu_st) *nu_st = st;
+  return st + sc;
+}
