@@ -10,6 +10,7 @@ struct sl_face_flux {
   const sl_th_space *th;
   int axisymmetric;
   unsigned char *adjustable; /* [n_faces] */
+  unsigned char *closed;     /* [n_faces] or NULL: faces whose flux is zero (sl_face_flux_close) */
   int n_pairs;
   int *pairs;                /* [2 n_pairs] periodic face pairs (fa, fb): one face between their owners */
   sl_csr L;                  /* cell graph Laplacian over adjustable faces, one cell pinned if closed */
@@ -23,6 +24,7 @@ void sl_face_flux_destroy(sl_face_flux *ff) {
   sl_csr_free(&ff->L);
   sl_linsolve_destroy(ff->ls);
   free(ff->adjustable);
+  free(ff->closed);
   free(ff->pairs);
   free(ff->div);
   free(ff->lambda);
@@ -56,7 +58,7 @@ void sl_face_flux_raw(const sl_face_flux *ff, const double *u, double *q) {
       double r = ff->axisymmetric ? xy[2 * geo[j]] : 1.0;
       s += simpson[j] * un * r;
     }
-    q[f] = s;
+    q[f] = ff->closed && ff->closed[f] ? 0.0 : s;
   }
 }
 
@@ -126,6 +128,18 @@ out:
   if (rc) sl_face_flux_destroy(ff);
   else *out = ff;
   return rc;
+}
+
+int sl_face_flux_close(sl_face_flux *ff, const unsigned char *closed, sl_diag *d) {
+  const sl_mesh *m = ff->th->mesh;
+  if (!closed || m->dim != 2) return 0;
+  if (!ff->closed && !(ff->closed = calloc((size_t)m->n_faces + 1, 1)))
+    return sl_diag_set(d, SL_ENOMEM, "face fluxes: out of memory");
+  for (int f = 0; f < m->n_faces; ++f) {
+    int tag = m->face_tag[f];
+    if (tag >= 0 && closed[tag] && !ff->adjustable[f]) ff->closed[f] = 1;
+  }
+  return 0;
 }
 
 int sl_face_flux_conservative(sl_face_flux *ff, const double *u, double floor, double *q, double *raw_divergence,

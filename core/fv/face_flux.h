@@ -50,6 +50,12 @@ int sl_face_flux_create(const sl_th_space *th, int axisymmetric, const unsigned 
                         int n_pairs, sl_face_flux **out, sl_diag *d);
 void sl_face_flux_destroy(sl_face_flux *ff);
 
+/* Marks the faces of the boundaries b with closed[b] != 0 (mesh boundary indices; NULL: none) as carrying
+ * no flux: their raw flux is 0. For walls whose normal velocity is zero in a sense the trace does not show
+ * face by face: a free-slip wall on a curved boundary (core/assembly/slip.h) holds u.n_i = 0 at its nodes with
+ * the nodes' normals, so each chord's own flux is small but not zero, and the chords' fluxes sum to zero. */
+int sl_face_flux_close(sl_face_flux *ff, const unsigned char *closed, sl_diag *d);
+
 /* The raw fluxes of the velocity u (combined numbering) into q[n_faces]. */
 void sl_face_flux_raw(const sl_face_flux *ff, const double *u, double *q);
 

@@ -50,6 +50,7 @@ typedef struct settling {
 } settling;
 
 typedef struct mixture {
+  const unsigned char *closed; /* the flow's curved slip walls (sl_flow_closed): no flux through their faces */
   sl_scene *sc;
   const mixture_config *cfg;
   sl_flow *flow_model; /* the flow it rides on */
@@ -514,6 +515,7 @@ static int periodic_setup(mixture *x, const unsigned char *open, const sl_period
     sl_mesh_periodic_free(&pm);
   }
   if (!rc) rc = sl_face_flux_create(x->th, x->axi, open, fp, n, &x->ff, d);
+  if (!rc) rc = sl_face_flux_close(x->ff, x->closed, d);
   free(fp);
   return rc;
 }
@@ -624,6 +626,7 @@ static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag
                                  .settling_user = &x->st};
   if ((rc = sl_transport_create(x->m, &x->topts, &x->tr, d))) return sl_diag_prefix(d, rc, "solids transport");
   if ((rc = sl_mixture_inflow_create(sc, x->tr, open, x->phi_max, &x->inflow_bc, d))) return rc;
+  x->closed = sl_flow_closed(fl);
   if ((rc = periodic_setup(x, open, pairs, n_pairs, d))) return rc;
   const double *area = sl_transport_face_areas(x->tr);
   for (int f = 0; f < nf; ++f) x->area_max = fmax(x->area_max, area[f]);

@@ -217,7 +217,7 @@ typedef struct bc {
   const char *name; /* the mesh's boundary name */
   const ns_boundary *in;
   int type;
-  int slip_comp;             /* the velocity component normal to a slip boundary */
+  int slip_comp;             /* the velocity component normal to a straight slip boundary; -1: curved (slip.h) */
   double traction[MAX_COMP]; /* traction; or -p n for pressure (p in traction[0]) */
   int n_comp;
   const sl_flow_opts *frame; /* a rotating frame: natural boundaries also get P_ref n (centrifugal_pressure) */
@@ -231,6 +231,7 @@ typedef struct bc_set {
   int n_pairs;     /* periodic pairs (boundary, partner), each once */
   sl_periodic_pair *pairs;
   unsigned char *open; /* [n]: the velocity is free there */
+  unsigned char *curved; /* [n]: a slip boundary not along x or y (its nodes rotated, slip.h); NULL: none */
   const sl_scene *sc;  /* for the location of a value in messages */
 } bc_set;
 
@@ -238,6 +239,7 @@ static void bc_set_free(bc_set *s) {
   free(s->b);
   free(s->pairs);
   free(s->open);
+  free(s->curved);
   memset(s, 0, sizeof *s);
 }
 
@@ -303,11 +305,16 @@ static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag 
       }
       s->time_dependent |= expr_uses_t(&in->velocity);
     } else if (b->type == NS_SLIP) {
-      if ((b->slip_comp = aligned_normal(m, id)) < 0)
-        return sl_diag_set(d, SL_EBADINPUT,
-                           "%s:%d: [%s] type = slip needs a straight boundary along x or y; '%s' is not (use a "
-                           "velocity condition or realign the mesh)",
-                           sec->file, sec->line, sec->section, name);
+      /* along x or y: the normal component fixed (as it always was); any other shape: the nodes' velocity
+         rotated into (n, t) with u_n fixed (core/assembly/slip.h) */
+      if ((b->slip_comp = aligned_normal(m, id)) < 0) {
+        if (m->dim != 2)
+          return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] type = slip: '%s' is not a point of a 1-D mesh", sec->file,
+                             sec->line, sec->section, name);
+        if (!s->curved && !(s->curved = calloc((size_t)s->n + 1, 1)))
+          return sl_diag_set(d, SL_ENOMEM, "out of memory");
+        s->curved[id] = 1;
+      }
     } else if (b->type == NS_AXIS) {
       if (!axi || aligned_normal(m, id) != 0)
         return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] type = axis needs an axisymmetric scene and a boundary at r = 0",
@@ -411,7 +418,7 @@ static int bc_apply(const bc_set *s, const sl_th_space *th, sl_constraints *con,
   for (int pass = 0; pass < 3 && !rc; ++pass)
     for (int i = 0; i < s->n && !rc; ++i) {
       const bc *b = &s->b[i];
-      if (pass == 0 && b->type == NS_SLIP)
+      if (pass == 0 && b->type == NS_SLIP && b->slip_comp >= 0)
         rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, b->slip_comp, 0), NULL, NULL, 0.0, d);
       if (pass == 0 && b->type == NS_AXIS) {
         rc = sl_constraints_fix_boundary(con, th->vel, b->name, sl_th_vel_dof(th, 0, 0), NULL, NULL, 0.0, d);
@@ -467,6 +474,7 @@ struct sl_flow {
   bc_set bcs;
   sl_flow_problem prob;
   sl_linsolve *ls;
+  sl_slip slip;      /* the curved slip walls' nodes (slip.h; prob.slip points here when there are any) */
   sl_projection *pj; /* [flow] scheme = projection: the split transient step (projection.h); NULL: monolithic */
   sl_newton_opts nopts;
   unsigned fields;
@@ -508,6 +516,7 @@ struct sl_flow {
 const sl_th_space *sl_flow_space(const sl_flow *f) { return f->th; }
 const sl_flow_opts *sl_flow_options(const sl_flow *f) { return &f->prob.opts; }
 const unsigned char *sl_flow_open(const sl_flow *f) { return f->bcs.open; }
+const unsigned char *sl_flow_closed(const sl_flow *f) { return f->bcs.curved; }
 int sl_flow_axisymmetric(const sl_flow *f) { return f->prob.opts.axisymmetric; }
 const sl_periodic_pair *sl_flow_periodic(const sl_flow *f, int *n_pairs) {
   *n_pairs = f->bcs.n_pairs;
@@ -1021,7 +1030,8 @@ static int stream_setup(sl_flow *f, sl_diag *d) {
   if (!f->psi || !f->node_psi || (!f->riding && !f->q) || sl_stream_graph_build(&f->pg, m))
     return sl_diag_set(d, SL_ENOMEM, "stream function: out of memory");
   if (f->riding) return 0;
-  return sl_face_flux_create(f->th, f->prob.opts.axisymmetric, f->bcs.open, NULL, 0, &f->ff, d);
+  int rc = sl_face_flux_create(f->th, f->prob.opts.axisymmetric, f->bcs.open, NULL, 0, &f->ff, d);
+  return rc ? rc : sl_face_flux_close(f->ff, f->bcs.curved, d);
 }
 
 static int initial_velocity(const sl_scene *sc, const sl_flow_config *fc, const sl_th_space *th, double *u,
@@ -1097,6 +1107,46 @@ static int check_continuation(const sl_scene *sc, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "%s: continuation needs continuation_from = <the first value>",
                        sl_scene_where(sc, &sv->continuation, at, sizeof at));
   return 0;
+}
+
+/* The curved slip walls (slip.h): their nodes after the other conditions are fixed (walls win corners; a
+ * corner between slip faces is fixed to rest). The rotated rows are combined on one rank with a matrix
+ * sluice assembles whole: not under mpirun, not with PETSc (its field split reads the velocity rows as they
+ * were). */
+static int slip_setup(sl_flow *f, sl_diag *d) {
+  const bc_set *s = &f->bcs;
+  if (!s->curved) return 0;
+  int *ids = malloc(2 * ((size_t)s->n + 1) * sizeof *ids), n_slip = 0, n_other = 0, rc;
+  if (!ids) return sl_diag_set(d, SL_ENOMEM, "out of memory");
+  int *other = ids + s->n + 1;
+  const char *name = "";
+  for (int i = 0; i < s->n; ++i) {
+    if (s->curved[i]) ids[n_slip++] = i, name = n_slip == 1 ? s->b[i].name : name;
+    else if (s->b[i].type == NS_SLIP || s->b[i].type == NS_AXIS) other[n_other++] = i;
+  }
+  int rank = 0, ranks = 1;
+  char at[400];
+  const sl_src *sec = NULL;
+  for (int i = 0; i < s->n && !sec; ++i)
+    if (s->curved[i]) sec = sl_scene_boundary_section(f->sc, i);
+  snprintf(at, sizeof at, "%s:%d: [%s] type = slip", sec ? sec->file : "?", sec ? sec->line : 0,
+           sec ? sec->section : name);
+  if ((rc = sl_linsolve_ranks(&rank, &ranks, d))) goto out;
+  if (ranks > 1 && sl_linsolve_built("petsc")) {
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s on a curved boundary ('%s') runs on one rank (this run has %d)", at, name,
+                     ranks);
+    goto out;
+  }
+  if (f->linear && strcmp(f->linear, "petsc") == 0) {
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s on a curved boundary ('%s') needs a direct solver: [solver] linear = auto, "
+                                      "umfpack or klu, not petsc", at, name);
+    goto out;
+  }
+  rc = sl_slip_create(&f->slip, f->th, ids, n_slip, other, n_other, f->prob.opts.axisymmetric, &f->prob.bc, d);
+  if (!rc) f->prob.slip = &f->slip;
+out:
+  free(ids);
+  return rc;
 }
 
 /* [flow] scheme = projection: the split step's solvers and operators (a transient scene only). chi, the
@@ -1182,6 +1232,7 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
     goto fail;
   /* velocity, then pressure */
   if ((rc = sl_linsolve_set_blocks(f->ls, f->th->p_offset, sc->time.scheme != SL_SCHEME_STEADY, d))) goto fail;
+  if ((rc = slip_setup(f, d))) goto fail;
   f->nopts = (sl_newton_opts){.rtol = sc->solver.nonlinear_tolerance,
                               .max_iterations = (int)sc->solver.max_iterations,
                               .picard_only = sc->solver.nonlinear == 1,
@@ -1234,6 +1285,7 @@ void sl_flow_destroy(sl_flow *f) {
   sl_linsolve_destroy(f->ls);
   sl_projection_destroy(f->pj);
   sl_flow_problem_free(&f->prob);
+  sl_slip_free(&f->slip);
   bc_set_free(&f->bcs);
   physics_free(&f->ph);
   sl_th_destroy(f->th);

@@ -13,7 +13,8 @@
  *   [closure.viscosity]  a generalized-Newtonian law of the shear rate
  *   [flow]   third_component, convection, gravity, body_force, rotation,
  *            rotation_centre
- *   [boundary.NAME] type = wall | velocity | slip | axis | open | pressure
+ *   [boundary.NAME] type = wall | velocity | slip (straight along x or y:
+ *            the normal component fixed; curved: core/assembly/slip.h) | axis | open | pressure
  *            | traction | periodic; velocity = expressions of x, y, t;
  *            pressure; traction; partner; force (wall, velocity: the
  *            boundary force as the output scalars force_x_NAME, force_y_NAME)
@@ -115,6 +116,9 @@ const sl_th_space *sl_flow_space(const sl_flow *f);
 const sl_flow_opts *sl_flow_options(const sl_flow *f);
 /* 1 for the boundaries where the velocity is free (open, pressure, traction), by mesh boundary. */
 const unsigned char *sl_flow_open(const sl_flow *f);
+/* 1 for the curved slip walls (core/assembly/slip.h), by mesh boundary: no flux through their faces, though
+ * each chord's own trace flux is not zero (sl_face_flux_close); NULL: none. */
+const unsigned char *sl_flow_closed(const sl_flow *f);
 const sl_periodic_pair *sl_flow_periodic(const sl_flow *f, int *n_pairs);
 int sl_flow_axisymmetric(const sl_flow *f);
 

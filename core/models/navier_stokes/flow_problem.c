@@ -95,8 +95,11 @@ static int linear_residual(sl_flow_problem *p, const double *u, double *b, sl_di
   rc = sl_system_agree(&p->sys, rc, d);
   if (!rc) rc = sl_system_complete(&p->sys, 0, d);
   if (rc) return rc;
+  /* A's slip rows are rotated (sl_flow_problem_assemble): so is the load, before A u comes off */
+  if (p->slip && (rc = sl_slip_rows(p->slip, NULL, b, d))) return rc;
   sl_csr_matvec_add(&p->sys.A, -1.0, u, 1.0, b);
   for (int32_t k = 0; k < p->n_fixed; ++k) b[p->fixed[k]] = 0.0;
+  if (p->slip) sl_slip_zero_normal(p->slip, b);
   return 0;
 }
 
@@ -114,9 +117,10 @@ int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_cs
   if (rc) return rc;
   if (mode == SL_NL_RESIDUAL) {
     for (int32_t k = 0; k < p->n_fixed; ++k) b[p->fixed[k]] = 0.0;
-    return 0;
+    return p->slip ? sl_slip_rows(p->slip, NULL, b, d) : 0;
   }
   if ((rc = sl_csr_set_dirichlet(A, p->n_fixed, p->fixed, NULL, b, 0, d))) return rc;
+  if (p->slip && (rc = sl_slip_rows(p->slip, A, b, d))) return rc;
   matrix_key k;
   if (!constant_matrix_key(&p->opts, &k)) return 0;
   k.valid = 1, k.pattern_id = A->pattern_id, k.values_gen = A->values_gen;
@@ -129,6 +133,7 @@ int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const 
   int rc = collect_fixed(p, d);
   if (rc) return rc;
   sl_constraints_impose(&p->bc, u);
+  if (p->slip) sl_slip_impose(p->slip, u);
   sl_newton_opts oo = *o;
   if (oo.n_check <= 0) oo.n_check = p->th->p_offset;
   oo.matrix_current = oo.linear && matrix_current(p);
@@ -139,6 +144,7 @@ int sl_flow_problem_linearise_velocity(sl_flow_problem *p, double *u, sl_system 
   int rc = collect_fixed(p, d);
   if (rc) return rc;
   sl_constraints_impose(&p->bc, u);
+  if (p->slip) sl_slip_impose(p->slip, u);
   sl_system_zero(vs);
   sl_flow_opts o = p->opts;
   o.velocity_block = 1;
@@ -150,5 +156,7 @@ int sl_flow_problem_linearise_velocity(sl_flow_problem *p, double *u, sl_system 
   /* the constrained velocity dofs: p->fixed is increasing, so they lead it */
   int32_t nv = 0;
   while (nv < p->n_fixed && p->fixed[nv] < p->th->p_offset) ++nv;
-  return sl_csr_set_dirichlet(&vs->A, nv, p->fixed, NULL, vs->b, 0, d);
+  rc = sl_csr_set_dirichlet(&vs->A, nv, p->fixed, NULL, vs->b, 0, d);
+  if (!rc && p->slip) rc = sl_slip_rows(p->slip, &vs->A, vs->b, d); /* the velocity dofs lead: the same rows */
+  return rc;
 }

@@ -24,6 +24,7 @@
 #define SLUICE_MODELS_FLOW_PROBLEM_H
 
 #include "core/assembly/flow.h"
+#include "core/assembly/slip.h"
 #include "core/assembly/system.h"
 #include "core/solve/newton.h"
 
@@ -42,6 +43,10 @@ typedef struct sl_flow_problem {
   sl_flow_opts opts;
   int n_tractions; /* prescribed tractions (sl_assemble_flow_traction) */
   sl_flow_traction traction[SL_FLOW_MAX_TRACTIONS];
+  /* Free-slip nodes on curved walls (slip.h), rotated after the constraints: their rows become n . du = 0 and
+   * the tangential momentum, and the iterate keeps u . n = 0. NULL: none (the straight slip walls are
+   * constraints). Not owned. */
+  const sl_slip *slip;
   int32_t n_fixed; /* the constrained dofs, collected at solve time */
   int32_t *fixed;
   /* What the matrix in sys.A was assembled from, when it does not depend on

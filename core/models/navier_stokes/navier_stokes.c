@@ -105,8 +105,9 @@ TABLE(sl_flow_keys_solver, solver_keys);
 #define ON(t) (1u << (t))
 static const sl_key boundary_keys[] = {
     {.section = "boundary", .name = "type", .type = SL_KEY_CHOICE, B(type), .choices = NS_BOUNDARY_TYPES,
-     .help = "wall (no slip), velocity (given), slip (no normal flow, no shear; straight along x or y), axis (r = 0), "
-             "open (no traction), pressure (the normal stress), traction, periodic (with its partner)"},
+     .help = "wall (no slip), velocity (given), slip (no normal flow, no shear; along x or y or curved: "
+             "docs/verification.md), axis (r = 0), open (no traction), pressure (the normal stress), traction, "
+             "periodic (with its partner)"},
     {.section = "boundary", .name = "velocity", .type = SL_KEY_EXPRS, B(velocity), .vars = "x,y,t", .max_n = 3,
      .units = "m s^-1", .when_type = ON(NS_VELOCITY), .help = "the velocity, one expression per component"},
     {.section = "boundary", .name = "pressure", .type = SL_KEY_REAL, B(pressure), .min = -1e12, .max = 1e12,
