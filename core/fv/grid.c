@@ -53,10 +53,26 @@ int sl_fv_grid_build(sl_fv_grid *m, const sl_tensor_grid *g, int axi, const int 
   return 0;
 }
 
+int sl_fv_grid_block(sl_fv_grid *m, const int *body, int tag_base, sl_diag *d) {
+  if (!(m->blocked = malloc((size_t)m->nc * sizeof *m->blocked))) return sl_diag_set(d, SL_ENOMEM, "grid: out of memory");
+  memcpy(m->blocked, body, (size_t)m->nc * sizeof *body);
+  for (int f = 0; f < m->nf; ++f) {
+    int lo = m->lo[f], hi = m->hi[f], blo = lo >= 0 ? body[lo] : -1, bhi = hi >= 0 ? body[hi] : -1;
+    if (blo < 0 && bhi < 0) continue;
+    int dir = f >= m->nfx;
+    if (blo >= 0) m->lo[f] = -1;
+    if (bhi >= 0) m->hi[f] = -1;
+    m->bound[f] = tag_base + (blo >= 0 ? blo : bhi);
+    int open = m->lo[f] >= 0 ? m->lo[f] : m->hi[f];
+    if (open >= 0) m->dist[f] = 0.5 * (dir == 0 ? m->hx[open % m->nx] : m->hy[open / m->nx]);
+  }
+  return 0;
+}
+
 void sl_fv_grid_free(sl_fv_grid *m) {
   double *all[] = {m->xc, m->yc, m->hx, m->hy, m->vol, m->area, m->dist};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
-  int *ia[] = {m->lo, m->hi, m->bound, m->image};
+  int *ia[] = {m->lo, m->hi, m->bound, m->image, m->blocked};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k) free(ia[k]);
   memset(m, 0, sizeof *m);
 }

@@ -28,11 +28,28 @@ typedef struct sl_fv_grid {
   int *lo, *hi;              /* [nf] */
   int *bound;                /* [nf]: the boundary (mesh tag) of a boundary face, -1 inside or periodic */
   int *image;                /* [nf]: 1 for a periodic image face */
+  /* [nc]: the body (0, 1, ...) a blocked cell belongs to, -1 for an open cell; NULL: none blocked
+     (sl_fv_grid_block) */
+  int *blocked;
 } sl_fv_grid;
 
 /* The grid on tg; periodic[dir] joins the two sides across dir. 0 or SL_EFAILED (memory). */
 int sl_fv_grid_build(sl_fv_grid *g, const sl_tensor_grid *tg, int axi, const int periodic[2], sl_diag *d);
 void sl_fv_grid_free(sl_fv_grid *g);
+
+/* Removes cells from the grid: body[c] >= 0 blocks cell c as part of body
+ * body[c] (-1: open). A blocked cell is outside the domain: a face between
+ * a blocked and an open cell becomes a boundary face of the open one (its
+ * blocked side -1, its distance half the open cell, its boundary
+ * tag_base + body), a face with blocked or no cells on both sides is dead
+ * (lo = hi = -1, tagged with the body), and sl_fv_neighbour does not cross
+ * into a body. After sl_fv_grid_build; not with periodic directions. 0 or
+ * SL_ENOMEM. */
+int sl_fv_grid_block(sl_fv_grid *g, const int *body, int tag_base, sl_diag *d);
+
+/* 1 for a face with no open cell on either side (inside a body, or on the
+ * domain's side of a blocked cell). */
+static inline int sl_fv_dead(const sl_fv_grid *g, int f) { return g->blocked && g->lo[f] < 0 && g->hi[f] < 0; }
 
 /* The neighbour of cell c along dir (0: x, 1: y) on its minus (side 0) or
  * plus (side 1) side, wrapping along a periodic direction; -1 outside. */
@@ -42,7 +59,8 @@ static inline int sl_fv_neighbour(const sl_fv_grid *g, int c, int dir, int side)
     if (!g->periodic[dir]) return -1;
     k = (k + n) % n;
   }
-  return dir == 0 ? k + g->nx * j : i + g->nx * k;
+  int nb = dir == 0 ? k + g->nx * j : i + g->nx * k;
+  return g->blocked && g->blocked[nb] >= 0 ? -1 : nb;
 }
 
 /* The face whose unknowns face f shares: f, or for an image face the first

@@ -214,7 +214,16 @@ static const sl_key plane_keys[] = {
                                       "1)"},
     {.section = "two_fluid", .name = "swirl", .type = SL_KEY_BOOL, C(swirl),
      .help = "axisymmetric: both phases' azimuthal velocities, driven by walls' angular_velocity (carried by the "
-             "meridional flow; no centrifugal force back on it)"},
+             "meridional flow; its centrifugal force acts back on it with centrifugal = true)"},
+    {.section = "two_fluid", .name = "centrifugal", .type = SL_KEY_BOOL, C(centrifugal),
+     .help = "with swirl: the centrifugal force rho alpha u_theta^2 / r of each phase in its radial momentum (a "
+             "two-way swirl)"},
+    {.section = "body", .name = "box", .type = SL_KEY_REALS, C(body_box), .max_n = 4, .min = -1e6, .max = 1e6,
+     .units = "m", .def_doc = "none (no body)",
+     .help = "a solid body: x0, x1, y0, y1 (r and z when axisymmetric) of the box it fills; the cells whose centres "
+             "lie inside are removed, its edges inside the domain on grid lines; its faces are no-slip walls"},
+    {.section = "body", .name = "angular_velocity", .type = SL_KEY_REAL, C(body_omega), .min = -1e6, .max = 1e6,
+     .units = "rad s^-1", .help = "with [two_fluid] swirl: the body's rotation about the axis (a rotor)"},
     {.section = "two_fluid", .name = "dispersion", .type = SL_KEY_CHOICE, C(dispersion),
      .choices = "gradient|turbophoretic", .help = "with [closure.turbulence]: the solids flux -nu_t/sigma_d grad phi "
                                                   "(gradient), or with the drift -phi tau_p grad(2k/3) down the "

@@ -41,6 +41,10 @@ typedef struct tf_config {
   double dispersion_schmidt;
   int dispersion;
   int swirl; /* [two_fluid] swirl: the 2-D axisymmetric model's azimuthal velocities (two_fluid_plane_swirl.c) */
+  int centrifugal; /* [two_fluid] centrifugal: the swirl's rho alpha u_theta^2 / r back on the radial momentum */
+  /* [body] (two_fluid_plane_body.c): a solid body of blocked cells, the box x0, x1, y0, y1 it fills, its rotation */
+  sl_reals body_box;
+  double body_omega;
 } tf_config;
 
 /* A boundary of the 1-D column. */

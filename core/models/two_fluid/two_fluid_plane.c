@@ -28,6 +28,11 @@
  *           (with [two_fluid] swirl, axisymmetric: angular_velocity, its
  *           rotation about the axis in rad/s; two_fluid_plane_swirl.c)
  *
+ * [body] box = x0, x1, y0, y1 removes the cells inside a box (a rotor's tip,
+ * a step): its faces are no-slip walls, turning at its angular_velocity
+ * with swirl (two_fluid_plane_body.c). [two_fluid] centrifugal adds the
+ * swirl's centrifugal force to the radial momentum (two_fluid_plane_step.c).
+ *
  * Output: cell fields phi, velocity_solid, velocity_fluid, pressure,
  * solids_pressure, theta (with [closure.granular]), swirl_fluid and
  * swirl_solid (u_theta, with [two_fluid] swirl); scalars
@@ -54,6 +59,7 @@ typedef struct tfp_run {
   const sl_mesh *mesh;
   tfp_model m;
   tfp_boundary *b; /* [n_boundaries]: the scene's */
+  tfp_boundary *ball; /* with a [body]: the scene's and the body's wall (m.b) */
   int has_inlet, has_outlet;
   double steady_tol, inventory0, outflow;
   long substeps, iterations, advances;
@@ -173,7 +179,7 @@ static int initial_state(tfp_run *r, sl_diag *d) {
       rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s = %g at (%g, %g): allowed %s = %g", use->file,
                        use->line, use->key, v, xy[0], xy[1],
                        e ? "0 <= phi <= phi_max" : "1 - phi_max <= porosity <= 1, phi_max", m->c.phi_max);
-    m->phi[c] = phi;
+    m->phi[c] = tfp_blocked(m, c) ? 0.0 : phi; /* a body's cell holds nothing */
   }
   if (rc) return rc;
   /* the phases' velocities (default at rest): each face takes its normal component at its centre */
@@ -256,7 +262,7 @@ static int plane_write(void *self, sl_output *out, double t, const double *u_sta
     rc = sl_output_write_field(out, phase ? "swirl_solid" : "swirl_fluid", SL_CENTRE_CELL, 1,
                                to_mesh_order(r, vx, NULL), d);
   }
-  for (int b = 0; b < m->n_b && !rc; ++b) {
+  for (int b = 0; b < r->mesh->n_boundaries && !rc; ++b) { /* the mesh's walls (a body's: none) */
     if (r->b[b].type != TFP_WALL) continue;
     static const char *const what[4] = {"wall_shear_stress_fluid", "wall_shear_stress_solid", "wall_slip",
                                         "bagnold_number"};
@@ -346,7 +352,23 @@ static int swirl_setup(tfp_run *r, sl_diag *d) {
                                           "hold the solids or let them slip (no_slip, free_slip)",
                          r->mesh->boundary_names[k]);
   }
+  if (r->cfg->centrifugal && !r->cfg->swirl)
+    return sl_diag_set(d, SL_EBADINPUT, "%s: [two_fluid] centrifugal: only with swirl = true",
+                       sl_scene_where(sc, &r->cfg->centrifugal, at, sizeof at));
+  r->m.centrifugal = r->cfg->centrifugal;
   if (!r->cfg->swirl) return 0;
+  if (r->m.centrifugal) { /* the velocity scale of the step's convergence: at least the fastest wall's swirl
+                             (a round-off meridional flow has none of its own to compare with) */
+    const sl_tensor_grid *g = &r->m.grid;
+    for (int side = 0; side < 4; ++side)
+      for (int k = 0; k < (side < 2 ? g->ny : g->nx); ++k) {
+        const tfp_boundary *b = &r->m.b[g->side_tag[side][k]];
+        double rw = side == SL_SIDE_LEFT ? g->xf[0] : side == SL_SIDE_RIGHT ? g->xf[g->nx] : g->xf[k + 1];
+        if (b->type == TFP_WALL) r->m.c.v_ref = fmax(r->m.c.v_ref, fabs(b->angular_velocity) * rw);
+      }
+    if (r->m.n_bodies) /* the body's outer radius */
+      r->m.c.v_ref = fmax(r->m.c.v_ref, fabs(r->cfg->body_omega) * fmin(r->cfg->body_box.v[1], g->xf[g->nx]));
+  }
   if (!r->m.axi)
     return sl_diag_set(d, SL_EBADINPUT, "%s: [two_fluid] swirl: only an axisymmetric scene has a swirl "
                                         "([scene] geometry = axisymmetric)", sl_scene_where(sc, &r->cfg->swirl, at, sizeof at));
@@ -358,6 +380,7 @@ static int swirl_setup(tfp_run *r, sl_diag *d) {
 
 static void release(tfp_run *r) {
   free(r->cellbuf);
+  free(r->ball), free(r->m.body_cells);
   sl_point_release(&r->m.c.drag.pc), sl_point_release(&r->m.c.ps.pc);
   tfp_dispersion_free(&r->m.disp);
   tfp_swirl_free(&r->m.sw);
@@ -379,8 +402,14 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   if (!rc) rc = boundaries(r, d);
   r->m.b = r->b;
   if (!rc) r->m.n_b = r->mesh->n_boundaries;
+  if (!rc) rc = tfp_body_bind(&r->m, sc, r->cfg, r->b, r->mesh->n_boundaries, &r->ball, d);
   if (!rc) rc = tfp_setup(&r->m, d);
   if (!rc) rc = tfp_solids_bind(&r->m, sc, r->cfg, d);
+  if (!rc && r->m.n_bodies && r->m.s.granular && !r->m.s.algebraic) {
+    char at[400];
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: [body]: not with a transported granular temperature",
+                     sl_scene_where(sc, &r->cfg->body_box, at, sizeof at));
+  }
   if (!rc) rc = tfp_dispersion_bind(&r->m, sc, r->cfg, d);
   /* the phases' convective acceleration, off by default as in the 1-D column (which has none) */
   r->m.convection = sc->flow.convection;

@@ -111,8 +111,14 @@ typedef struct tfp_model {
   tfp_dispersion disp; /* zero: none */
   tfp_swirl sw;        /* zero: none */
   tf_column c; /* the physics, the closures and the numerical keys (its column geometry is unused) */
-  const tfp_boundary *b; /* [n_b] */
+  const tfp_boundary *b; /* [n_b]: the mesh's boundaries, then the bodies' walls */
   int n_b;
+  /* [body] (two_fluid_plane_body.c): n_bodies solid bodies whose cells are blocked (core/fv/grid.h), their walls
+     the boundaries n_b - n_bodies ... n_b - 1; body_cells [nc] the body of each cell (-1 open), given before
+     tfp_setup (which hands it to the grid, then frees it) */
+  int n_bodies;
+  int *body_cells;
+  int centrifugal; /* [two_fluid] centrifugal: rho alpha u_theta^2 / r of the swirl in the radial momentum */
   /* per boundary b, of the last converged step (walls): [5 b] the fluid's and [5 b + 1] the solids' mean shear
      stress on it, [5 b + 2] the mean solids slip, [5 b + 3] the mean Bagnold number of the wall closure (NAN:
      none), [5 b + 4] the length (or area per radian) averaged over */
@@ -131,7 +137,8 @@ typedef struct tfp_model {
   /* unknown numbering: us_row[f], uf_row[f] (-1: given), p at n_vel + c */
   int *us_row, *uf_row;
   int n_vel, n_unknowns;
-  int closed; /* no outlet: the pressure takes its datum in cell 0 */
+  int closed; /* no outlet: the pressure takes its datum in cell `datum` (0, or the first open cell) */
+  int datum;
   /* [two_fluid] column_form: a grid one cell across along direction col_dir takes the 1-D column's equations
      (two_fluid.h; two_fluid_plane_step.c): col_n cells, col_face[k] (k = 0..col_n) its faces upwards along
      col_dir; col_j the mixture flux along +col_dir of the accepted state and col_j_new of the trial; col_uf0 the
@@ -171,6 +178,10 @@ typedef struct tfp_model {
   int iterations_trial;
   char where[256]; /* where the last failure happened */
 } tfp_model;
+
+/* A blocked cell (inside a body), a dead face (no open cell on either side). */
+static inline int tfp_blocked(const tfp_model *m, int c) { return m->fv.blocked && m->fv.blocked[c] >= 0; }
+static inline int tfp_dead(const tfp_model *m, int f) { return sl_fv_dead(&m->fv, f); }
 
 /* The grid's neighbour and image-face maps (core/fv/grid.h). */
 static inline int tfp_neighbour(const tfp_model *m, int c, int dir, int side) {
@@ -244,6 +255,13 @@ int tfp_swirl_setup(tfp_model *m, const char *linear, sl_diag *d);
 /* The trial's swirl (om_new) over dt at the converged step's velocities and phi. 0 or SL_EFAILED. */
 int tfp_swirl_step(tfp_model *m, double dt, sl_diag *d);
 void tfp_swirl_free(tfp_swirl *w);
+
+/* [body] bound (two_fluid_plane_body.c): nothing without a box; else its cells (m->body_cells, for tfp_setup) and
+ * the boundaries with the body's wall after the mesh's n_mesh_b (*all, the caller's to free; m->b, m->n_b point to
+ * it). After the grid and the boundaries' periodic sides, before tfp_setup. 0, SL_EBADINPUT (file:line) or
+ * SL_ENOMEM. */
+int tfp_body_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, const tfp_boundary *mesh_b, int n_mesh_b,
+                  tfp_boundary **all, sl_diag *d);
 
 /* The solids volume (per radian when axisymmetric) in the domain. */
 double tfp_inventory(const tfp_model *m, const double *phi);

@@ -168,7 +168,16 @@ static void corner_shear(tfp_model *m, const double *us) {
         int below = j - 1, above = j, fa, fb;
         if (m->fv.periodic[1]) below = (below + ny) % ny, above = above % ny;
         double ua, ub, gap;
-        if (below >= 0 && above < ny) {
+        /* a body's wall: a dead face on one side (both: a corner inside the body, no shear) */
+        int dead_b = below >= 0 && tfp_dead(m, i + (nx + 1) * below), dead_a = above < ny && tfp_dead(m, i + (nx + 1) * above);
+        if ((dead_a || above >= ny) && (dead_b || below < 0) && (dead_a || dead_b)) ua = ub = 0.0, gap = 1.0;
+        else if (dead_b) {
+          fa = i + (nx + 1) * above;
+          ua = us[fa], ub = wall_solids(m, fa, 0, ua), gap = 0.5 * m->fv.hy[above];
+        } else if (dead_a) {
+          fb = i + (nx + 1) * below;
+          ub = us[fb], ua = wall_solids(m, fb, 1, ub), gap = 0.5 * m->fv.hy[below];
+        } else if (below >= 0 && above < ny) {
           fa = i + (nx + 1) * above, fb = i + (nx + 1) * below;
           ua = us[fa], ub = us[fb], gap = 0.5 * (m->fv.hy[above] + m->fv.hy[below]);
         } else if (below < 0) { /* the bottom */
@@ -187,7 +196,15 @@ static void corner_shear(tfp_model *m, const double *us) {
         int left = i - 1, right = i, fa, fb;
         if (m->fv.periodic[0]) left = (left + nx) % nx, right = right % nx;
         double ua, ub, gap;
-        if (left >= 0 && right < nx) {
+        int dead_l = left >= 0 && tfp_dead(m, m->fv.nfx + left + nx * j), dead_r = right < nx && tfp_dead(m, m->fv.nfx + right + nx * j);
+        if ((dead_l || left < 0) && (dead_r || right >= nx) && (dead_l || dead_r)) ua = ub = 0.0, gap = 1.0;
+        else if (dead_l) {
+          fa = m->fv.nfx + right + nx * j;
+          ua = us[fa], ub = wall_solids(m, fa, 0, ua), gap = 0.5 * m->fv.hx[right];
+        } else if (dead_r) {
+          fb = m->fv.nfx + left + nx * j;
+          ub = us[fb], ua = wall_solids(m, fb, 1, ub), gap = 0.5 * m->fv.hx[left];
+        } else if (left >= 0 && right < nx) {
           fa = m->fv.nfx + right + nx * j, fb = m->fv.nfx + left + nx * j;
           ua = us[fa], ub = us[fb], gap = 0.5 * (m->fv.hx[right] + m->fv.hx[left]);
         } else if (left < 0) {
@@ -228,9 +245,9 @@ static void shear_rate(tfp_model *m, const double *us) {
 }
 
 /* The cells around corner (i, j) of the grid (wrapping along a periodic
- * direction), their number. */
+ * direction), their number: the open ones (a corner inside a body: all). */
 static int corner_cells(const tfp_model *m, int i, int j, int cells[4]) {
-  int n = 0;
+  int n = 0, open = 0;
   for (int dj = -1; dj <= 0; ++dj)
     for (int di = -1; di <= 0; ++di) {
       int ci = i + di, cj = j + dj;
@@ -238,7 +255,9 @@ static int corner_cells(const tfp_model *m, int i, int j, int cells[4]) {
       if (m->fv.periodic[1]) cj = (cj + m->fv.ny) % m->fv.ny;
       if (ci >= 0 && ci < m->fv.nx && cj >= 0 && cj < m->fv.ny) cells[n++] = ci + m->fv.nx * cj;
     }
-  return n;
+  for (int q = 0; q < n; ++q)
+    if (!tfp_blocked(m, cells[q])) cells[open++] = cells[q];
+  return open ? open : n;
 }
 
 /* mu_s and its tangent mu_s + gdot dmu_s/dgdot at N points from phi, the

@@ -64,6 +64,11 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
   int periodic[2] = {m->fv.periodic[0], m->fv.periodic[1]}; /* the boundaries' */
   int rc = sl_fv_grid_build(&m->fv, g, m->axi, periodic, d);
   if (rc) return rc;
+  if (m->body_cells) { /* the bodies' cells leave the grid; their faces are the bodies' walls */
+    rc = sl_fv_grid_block(&m->fv, m->body_cells, m->n_b - m->n_bodies, d);
+    free(m->body_cells), m->body_cells = NULL;
+    if (rc) return rc;
+  }
   const size_t nc = (size_t)m->fv.nc, nf = (size_t)m->fv.nf;
   struct { double **p; size_t n; } a[] = {
       {&m->phi, nc}, {&m->p, nc}, {&m->uf, nf}, {&m->us, nf}, {&m->phi_new, nc}, {&m->p_new, nc},
@@ -113,8 +118,26 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
       }
     }
   }
+  /* a body's wall at a face's end: the face of its family across is dead (inside the body or on the domain's
+     side of it); the body holds the fluid, the solids as its walls' `solids` says */
+  for (int f = 0; f < m->fv.nf && m->fv.blocked; ++f) {
+    if (tfp_dead(m, f)) continue;
+    int dir = face_dir(m, f), along = dir == 0 ? f % (nx + 1) : (f - m->fv.nfx) / nx;
+    int across = dir == 0 ? f / (nx + 1) : (f - m->fv.nfx) % nx, n_across = dir == 0 ? ny : nx;
+    for (int end = 0; end < 2; ++end) {
+      int to = across + (end ? 1 : -1);
+      if (to < 0 || to >= n_across) continue;
+      int nb = dir == 0 ? along + (nx + 1) * to : m->fv.nfx + to + nx * along, tag = m->fv.bound[nb];
+      if (!tfp_dead(m, nb) || tag < m->n_b - m->n_bodies) continue;
+      m->tan_noslip[4 * f + end] = 1;
+      m->tan_noslip[4 * f + 2 + end] |= m->b[tag].solids == TFP_SOLIDS_NO_SLIP;
+      if (m->end_wall[2 * f + end] < 0) m->end_wall[2 * f + end] = tag;
+    }
+  }
   m->closed = 1;
   for (int f = 0; f < m->fv.nf; ++f) m->closed = m->closed && m->ftype[f] != TFP_FACE_OUTLET;
+  m->datum = 0; /* a closed vessel's pressure datum: the first open cell */
+  while (m->datum < m->fv.nc - 1 && tfp_blocked(m, m->datum)) ++m->datum;
   int n = 0;
   for (int f = 0; f < m->fv.nf; ++f) {
     if (m->ftype[f] == TFP_FACE_IMAGE) { /* the first face of its row or column: already numbered */
@@ -167,8 +190,9 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
     for (int end = 0; end < 2; ++end) {
       int b = m->end_wall[2 * f + end];
       if (b < 0) continue;
-      double x = dir == 0 ? xf[f % (m->fv.nx + 1)] : xf[end ? m->fv.nx : 0];
-      double y = dir == 0 ? yf[end ? m->fv.ny : 0] : yf[(f - m->fv.nfx) / m->fv.nx];
+      /* the corner at the face's end (on a side of the grid or a body's wall) */
+      double x = dir == 0 ? xf[f % (m->fv.nx + 1)] : xf[(f - m->fv.nfx) % m->fv.nx + end];
+      double y = dir == 0 ? yf[f / (m->fv.nx + 1) + end] : yf[(f - m->fv.nfx) / m->fv.nx];
       double v[4] = {x, y, t, m->c.case_index};
       double U = m->b[b].velocity.e ? sl_expr_eval(m->b[b].velocity.e, v) : 0.0;
       if (!isfinite(U))
@@ -217,6 +241,7 @@ static inline int add(tfp_model *m, int row, int col, double v) {
 static double face_phi(const tfp_model *m, const double *phi, int f) {
   int lo = m->fv.lo[f], hi = m->fv.hi[f];
   double v;
+  if (lo < 0 && hi < 0) return PHI_FLOOR; /* a dead face (inside a body): unused */
   if (lo < 0 || hi < 0) v = phi[lo < 0 ? hi : lo];
   else {
     double gd = m->g[face_dir(m, f)];
@@ -278,6 +303,7 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, s
     int to = end ? a + 1 : a - 1;
     int wall = to < 0 || to >= n_across;
     if (wall && m->fv.periodic[1 - dir]) to = (to + n_across) % n_across, wall = 0;
+    if (!wall && m->fv.blocked) wall = tfp_dead(m, dir == 0 ? i + (nx + 1) * to : m->fv.nfx + to + nx * j); /* a body */
     /* the corner's radius and the dual length of the face */
     double r_corner = dir == 0 ? xf[i] : xf[end ? i + 1 : i];
     double across = m->fv.dist[f] * (m->axi ? r_corner : 1.0);
@@ -400,9 +426,11 @@ static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_
     for (int end = 0; end < 2; ++end) {
       int to = end ? a + 1 : a - 1;
       g[end] = -1;
-      if (to < 0 || to >= n_across) {
+      int body = to >= 0 && to < n_across && m->fv.blocked &&
+                 tfp_dead(m, dir == 0 ? i + (nx + 1) * to : m->fv.nfx + to + nx * j);
+      if (to < 0 || to >= n_across || body) {
         if (m->fv.periodic[1 - dir]) to = (to + n_across) % n_across;
-        else { /* a wall (or an open side) half a cell off */
+        else { /* a wall (or an open side, or a body's wall) half a cell off */
           int e = 2 * f + end;
           dist[end] = 0.5 * hs[a];
           if (m->tan_noslip[4 * f + 2 * phase + end]) wall_value[end] = m->end_u[e];
@@ -448,7 +476,7 @@ static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_
       st += (m->uf_new[cf[a]] - m->us_new[cf[a]]) + (m->uf_new[cf[a + 1]] - m->us_new[cf[a + 1]]), n += 2;
     }
     m->sn[f] = m->uf_new[f] - m->us_new[f];
-    st /= n;
+    if (n) st /= n; /* a dead face (inside a body): none */
     m->slip[f] = hypot(m->sn[f], st);
   }
   int rc = tf_closure_eval(&m->c.drag, fb - fa, m->phf + fa, m->slip + fa, m->K + fa, m->dK + fa, d);
@@ -491,17 +519,33 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
     const double p_out = (lo < 0 || hi < 0) ? m->b[m->fv.bound[f]].pressure : 0.0;
     /* the weight and the pressure gradient share the iterate's phi_g (never frozen) */
     const double pg = m->phg[f], eg = 1.0 - pg;
+    /* the body force per unit mass of each phase along the face's normal: gravity, and with [two_fluid]
+       centrifugal on a radial face the swirl's u_theta^2 / r = Omega^2 r of the accepted step (Bird, Stewart &
+       Lightfoot 2002, Table B.6, the r-component's rho u_theta^2 / r), Omega the mean of the face's cells */
+    double gs = gd, gf = gd;
+    if (m->centrifugal && dir == 0) {
+      double om[2] = {0.0, 0.0}, rr = m->grid.xf[f % (m->fv.nx + 1)];
+      for (int phase = 0; phase < 2; ++phase) {
+        int n = 0;
+        for (int side = 0; side < 2; ++side) {
+          int c = side ? hi : lo;
+          if (c >= 0) om[phase] += m->sw.om[phase * m->fv.nc + c], ++n;
+        }
+        om[phase] /= n;
+      }
+      gf += om[0] * om[0] * rr, gs += om[1] * om[1] * rr;
+    }
     /* solids */
     rc |= add(m, rs, rs, V * (ph * rho_s / dt + Keff));
     rc |= add(m, rs, rf, -V * Keff);
-    m->rhs[rs] += V * (ph * rho_s * m->us[f] / dt + pg * rho_s * gd - (Keff - K) * s);
+    m->rhs[rs] += V * (ph * rho_s * m->us[f] / dt + pg * rho_s * gs - (Keff - K) * s);
     /* fluid */
     rc |= add(m, rf, rf, V * (eps * rho_f / dt + Keff));
     rc |= add(m, rf, rs, -V * Keff);
     /* the column's fluid inertia is that of its mixture flux j: with u_f = (j - phi u_s)/eps at the face's phi
        of the iterate, the old u_f is (j_old - phi u_s,old)/eps (two_fluid.h eliminates p so) */
     const double uf_old = m->column ? (m->col_j - ph * m->us[f]) / eps : m->uf[f];
-    m->rhs[rf] += V * (eps * rho_f * uf_old / dt + eg * rho_f * gd + (Keff - K) * s);
+    m->rhs[rf] += V * (eps * rho_f * uf_old / dt + eg * rho_f * gf + (Keff - K) * s);
     /* the pressure gradient, A (p_hi - p_lo), p_out outside */
     for (int side = 0; side < 2; ++side) {
       int c = side ? hi : lo;
@@ -519,7 +563,7 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
       double gradp = lo >= 0 && hi >= 0 ? (m->p_new[hi] - m->p_new[lo]) / m->fv.dist[f]
                      : lo < 0           ? (m->p_new[hi] - p_out) / m->fv.dist[f]
                                         : (p_out - m->p_new[lo]) / m->fv.dist[f];
-      double Ss = pg > PHI_FLOOR ? V * (rho_s * gd - gradp) : 0.0, Sf = pg > PHI_FLOOR ? -V * (rho_f * gd - gradp) : 0.0;
+      double Ss = pg > PHI_FLOOR ? V * (rho_s * gs - gradp) : 0.0, Sf = pg > PHI_FLOOR ? -V * (rho_f * gf - gradp) : 0.0;
       int src[2] = {-1, -1};
       double wt[2] = {1.0, 0.0};
       if (lo < 0 || hi < 0) src[0] = lo < 0 ? hi : lo;
@@ -583,7 +627,7 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
   /* continuity: the mixture's volume flux out of each cell; in a closed vessel cell 0 holds the datum p = 0 */
   for (int c = 0; c < m->fv.nc; ++c) {
     int row = P + c;
-    if (m->closed && c == 0) {
+    if ((m->closed && c == m->datum) || tfp_blocked(m, c)) { /* the datum p = 0; a body's cell: p = 0, unused */
       rc |= add(m, row, row, 1.0);
       continue;
     }
@@ -618,7 +662,7 @@ static int wall_stresses(tfp_model *m, sl_diag *d) {
       if (b < 0 || m->ftype[f] != TFP_FACE_INTERIOR) continue;
       int dir = face_dir(m, f), a = dir == 0 ? f / (m->fv.nx + 1) : (f - m->fv.nfx) % m->fv.nx;
       double h = dir == 0 ? m->fv.hy[a] : m->fv.hx[a];
-      double r = m->axi ? (dir == 0 ? m->grid.xf[f % (m->fv.nx + 1)] : m->grid.xf[end ? m->fv.nx : 0]) : 1.0;
+      double r = m->axi ? (dir == 0 ? m->grid.xf[f % (m->fv.nx + 1)] : m->grid.xf[a + end]) : 1.0;
       double len = m->fv.dist[f] * r, U = m->end_u[e], muf = 0.0, bn = NAN;
       int n = 0;
       for (int s = 0; s < 2; ++s) {

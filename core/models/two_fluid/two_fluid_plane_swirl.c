@@ -27,10 +27,12 @@
  * Boundaries: a wall holds each phase it holds (no-slip; the solids' free
  * slip carries no torque) at its angular velocity `angular_velocity`
  * (rad/s); an inlet brings no swirl (Omega = 0 on its face); the axis,
- * slip walls, outlets and periodic sides carry no torque. The swirl is
- * carried along the meridional flow but does not act back on it: the
- * centrifugal force rho alpha u_theta^2 / r is not in the radial momentum
- * (a one-way coupling, stated in docs/models/two_fluid.md). */
+ * slip walls, outlets and periodic sides carry no torque; a body's walls
+ * ([body], two_fluid_plane_body.c) are walls at its angular_velocity. The
+ * swirl is carried along the meridional flow; with [two_fluid] centrifugal
+ * it acts back on it through rho alpha u_theta^2 / r in the radial momentum
+ * (two_fluid_plane_step.c, at the accepted step's swirl); without, the
+ * coupling is one-way. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -92,6 +94,12 @@ int tfp_swirl_step(tfp_model *m, double dt, sl_diag *d) {
   for (int c = 0; c < nc && !rc; ++c) {
     double r = m->fv.xc[c % nx], V = m->fv.vol[c], r2V = r * r * V;
     double K = m->phi_new[c] > 1e-12 ? w->K[c] * r2V : 0.0;
+    if (tfp_blocked(m, c)) { /* a body's cell turns with it (unused: its faces are the body's walls) */
+      rc |= sl_triplets_add(&w->trip, c, c, 1.0), rc |= sl_triplets_add(&w->trip, nc + c, nc + c, 1.0);
+      rc |= sl_triplets_add(&w->trip, nc + c, c, -1.0);
+      w->rhs[c] = m->b[m->n_b - m->n_bodies + m->fv.blocked[c]].angular_velocity;
+      continue;
+    }
     for (int phase = 0; phase < 2; ++phase) {
       int row = phase * nc + c;
       double alpha = phase ? m->phi_new[c] : 1.0 - m->phi_new[c];
