@@ -13,8 +13,9 @@
  * per-cell hook adds one (a wall's flux, a given value). Periodic
  * directions join the rows as the grid does. The pattern (each cell with
  * its neighbours) is built once, each step's matrix solved directly (KLU).
- * The granular temperature of the 2-D two-fluid model is one; k and
- * epsilon of a turbulence model are two more. */
+ * The granular temperature of the 2-D two-fluid model, the shear layer
+ * (its n x 1 cells) and the pipe is one (core/models/granular.h gives its
+ * terms); the pipe's k, epsilon and radial solids balance are more. */
 #ifndef SLUICE_FV_CELL_SCALAR_H
 #define SLUICE_FV_CELL_SCALAR_H
 

@@ -46,6 +46,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/models/granular.h"
 #include "core/models/pipe/pipe.h"
 #include "core/models/pipe/pipe_impl.h"
 
@@ -117,7 +118,7 @@ void pipe_march_fluxes(pipe *p) {
     m->ff[i + 1] = m->ff[i] - ((1.0 - cs) * p->uf[i] - (1.0 - cs0) * m->uf_up[i]) * q;
     m->fs[i + 1] = m->fs[i] - (cs * p->us[i] - cs0 * m->us_up[i]) * q;
   }
-  for (int f = 0; f <= n; ++f) m->rff[f] = p->rho_f * m->ff[f], m->rfs[f] = 1.5 * p->rho_s * m->fs[f];
+  for (int f = 0; f <= n; ++f) m->rff[f] = p->rho_f * m->ff[f], m->rfs[f] = sl_theta_capacity(p->rho_s, m->fs[f]);
 }
 
 static void add(sl_csr *A, int i, int j, double v) { A->values[sl_csr_find(A, i, j)] += v; }
@@ -202,12 +203,12 @@ void pipe_march_drag(pipe *p, const double *phi_arg, double *dK) {
 }
 
 /* The march's storage of theta's transport (pipe_theta.c, the granular energy (3/2) rho_s phi theta convected
-   by the solids): m->cap and m->s_old beside the steady solve's, the radial convection m->rfs. */
+   by the solids, its capacity every model's: core/models/granular.h): m->cap and m->s_old beside the steady solve's, the radial convection m->rfs. */
 void pipe_march_theta(pipe *p, const double *cap_pseudo) {
   pipe_march *m = &p->march;
   for (int i = 0; i < p->n; ++i) {
-    double ms = 1.5 * p->rho_s * fmax(p->phi[i], 1e-6) * fmax(p->us[i], 0.0) / m->h;
-    double ms0 = 1.5 * p->rho_s * fmax(m->phi_up[i], 1e-6) * m->us_up[i] / m->h;
+    double ms = sl_theta_capacity(p->rho_s, fmax(p->phi[i], 1e-6)) * fmax(p->us[i], 0.0) / m->h;
+    double ms0 = sl_theta_capacity(p->rho_s, fmax(m->phi_up[i], 1e-6)) * m->us_up[i] / m->h;
     m->cap[i] = cap_pseudo[i] * 1e-30 + ms; /* the steady solve's pseudo-step is 1e30 */
     m->s_old[i] = (cap_pseudo[i] * 1e-30 * p->theta[i] + ms0 * m->theta_up[i]) / m->cap[i];
   }

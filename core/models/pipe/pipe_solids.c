@@ -40,6 +40,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "core/models/granular.h"
 #include "core/models/pipe/pipe_impl.h"
 
 /* |du_s/dr| in the cells, from the face gradients (zero at the axis; the wall face's from the last wall stress
@@ -55,27 +56,25 @@ static void solids_shear(const pipe *p, double *gd) {
   }
 }
 
-/* theta of the local balance in every cell. */
-static int granular_theta(pipe *p, const double *gd, sl_diag *d) {
-  const int n = p->n;
-  double *lo = p->buf[1], *hi = p->buf[2], *th = p->buf[3], *mu = p->buf[5], *gam = p->buf[6];
-  for (int i = 0; i < n; ++i) lo[i] = log(1e-12), hi[i] = log(1e2);
+/* mu_s and gamma of [closure.granular] at theta in every cell (sl_theta_balance's closure). */
+static int granular_at(void *user, const double *th, double *mu, double *gam, sl_diag *d) {
+  pipe *p = user;
   const double *v[PQ_N] = {0};
   v[PQ_PHI] = p->phi, v[PQ_THETA] = th;
   sl_point_request rq[2] = {{"mu_s", mu, NULL, NULL}, {"gamma", gam, NULL, NULL}};
-  for (int it = 0; it < 60; ++it) {
-    for (int i = 0; i < n; ++i) th[i] = fmax(exp(0.5 * (lo[i] + hi[i])), 1e-12); /* the closure's floor */
-    int rc = sl_point_eval(&p->gran, n, v, rq, 2, d);
-    if (rc) return sl_diag_prefix(d, rc, "[closure.granular]");
-    for (int i = 0; i < n; ++i) {
-      double excess = mu[i] * gd[i] * gd[i] - gam[i] - 3.0 * p->K[i] * th[i];
-      if (excess > 0.0) lo[i] = 0.5 * (lo[i] + hi[i]);
-      else hi[i] = 0.5 * (lo[i] + hi[i]);
-    }
-  }
+  int rc = sl_point_eval(&p->gran, p->n, v, rq, 2, d);
+  return rc ? sl_diag_prefix(d, rc, "[closure.granular]") : 0;
+}
+
+/* theta of the local balance in every cell (core/models/granular.h). */
+static int granular_theta(pipe *p, const double *gd, sl_diag *d) {
+  const int n = p->n;
+  double *lo = p->buf[1], *hi = p->buf[2], *th = p->buf[3], *X = p->buf[7], *mu = p->buf[5], *gam = p->buf[6];
+  for (int i = 0; i < n; ++i) X[i] = sl_theta_exchange(1, p->K[i]);
+  int rc = sl_theta_balance(n, gd, X, granular_at, p, lo, hi, mu, gam, th, d);
+  if (rc) return rc;
   const double w = p->iterations > 0 ? p->relax : 1.0; /* under-relaxed as the velocities */
-  for (int i = 0; i < n; ++i)
-    p->theta[i] = fmax(p->theta[i] + w * (exp(0.5 * (lo[i] + hi[i])) - p->theta[i]), 1e-12); /* the closure's floor */
+  for (int i = 0; i < n; ++i) p->theta[i] = fmax(p->theta[i] + w * (th[i] - p->theta[i]), SL_THETA_FLOOR);
   return 0;
 }
 

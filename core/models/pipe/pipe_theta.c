@@ -10,45 +10,38 @@
  * than the wall cells there. Newton in the dissipation gamma(theta); mu_s, kappa and K of the last iterate (the
  * production's theta^1/2 lagged). The axis has no flux; the wall is adiabatic unless the solids' wall closure
  * gives theta_flux (Johnson & Jackson 1987, Krampa eq 4.93), then its flux enters the wall cell, its
- * theta-derivative implicit where it is a sink (as the two-fluid model's walls). theta falls at most fivefold
- * an iteration and stays above the closure's floor (1e-12). */
+ * theta-derivative implicit where it is a sink. The pointwise terms, the wall's linearisation and the bound
+ * (theta falls at most fivefold an iteration and stays above the closure's floor) are every model's
+ * (core/models/granular.h); the solve is the shared cell scalar's (core/fv/cell_scalar.h). */
 #include <math.h>
 
+#include "core/models/granular.h"
 #include "core/models/pipe/pipe_impl.h"
-
-#define THETA_FLOOR 1e-12
 
 static int wall_energy(void *user, int c, double *rhs, double *diag, sl_diag *d) {
   pipe *p = user;
   if (c != p->n - 1 || !p->wall_energy) return 0;
-  double uw = p->u_wall, ph = p->phi[c], th = fmax(p->theta[c], THETA_FLOOR), q, dq;
+  double uw = p->u_wall, ph = p->phi[c], th = fmax(p->theta[c], SL_THETA_FLOOR), q, dq;
   const double *v[PQ_N] = {0};
   v[PQ_SLIP_WALL] = &uw, v[PQ_PHI] = &ph, v[PQ_THETA] = &th;
   sl_point_request rq = {"theta_flux", &q, &dq, "theta"};
   int rc = sl_point_eval(&p->walls, 1, v, &rq, 1, d);
   if (rc) return sl_diag_prefix(d, rc, "[closure.wall_stress.solids] theta_flux");
-  const double A = p->g.area[p->n];
-  dq = fmin(dq, 0.0);
-  *rhs += A * (q - dq * th);
-  *diag -= A * dq;
+  sl_theta_wall_row(p->g.area[p->n], q, sl_theta_wall_implicit(dq), th, rhs, diag);
   return 0;
 }
 
 int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d) {
   const int n = p->n;
   double *sink = p->buf[1], *cap = p->buf[2], *x = p->buf[3], *mu = p->buf[5], *kap = p->buf[6], *src = p->buf[7];
-  for (int i = 0; i < n; ++i) p->theta[i] = fmax(p->theta[i], THETA_FLOOR);
+  for (int i = 0; i < n; ++i) p->theta[i] = fmax(p->theta[i], SL_THETA_FLOOR);
   const double *v[PQ_N] = {0};
   v[PQ_PHI] = p->phi, v[PQ_THETA] = p->theta;
-  sl_point_request rq[3] = {{"mu_s", mu, NULL, NULL}, {"kappa", kap, NULL, NULL}, {"gamma", src, sink, "theta"}};
+  sl_point_request rq[3] = {{"mu_s", mu, NULL, NULL}, {"kappa", kap, NULL, NULL}, {"gamma", src, x, "theta"}};
   int rc = sl_point_eval(&p->gran, n, v, rq, 3, d);
   if (rc) return sl_diag_prefix(d, rc, "[closure.granular]");
-  for (int i = 0; i < n; ++i) {
-    double dg = fmax(sink[i], 0.0), gam = src[i];
-    cap[i] = 1.5 * p->rho_s * fmax(p->phi[i], 1e-6);
-    sink[i] = dg + 3.0 * p->K[i];
-    src[i] = mu[i] * gd[i] * gd[i] - gam + dg * p->theta[i];
-  }
+  for (int i = 0; i < n; ++i) sink[i] = sl_theta_exchange(1, p->K[i]);
+  sl_theta_terms(n, p->rho_s, p->phi, mu, gd, src, x, sink, p->theta, cap, src, sink);
   /* steady: a pseudo-step far beyond the slowest of the sinks' times */
   sl_cell_scalar_terms t = {.dt = 1e30,
                             .cap = cap,
@@ -67,8 +60,8 @@ int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d) {
   for (int i = 0; i < n; ++i) {
     if (!isfinite(x[i]))
       return sl_diag_set(d, SL_EFAILED, "pipe: the granular temperature is not finite at r = %g", p->g.xc[i]);
-    double th = fmax(x[i], fmax(0.2 * p->theta[i], THETA_FLOOR));
-    p->theta[i] = fmax(p->theta[i] + w * (th - p->theta[i]), THETA_FLOOR);
+    double th = sl_theta_bounded(x[i], p->theta[i]);
+    p->theta[i] = fmax(p->theta[i] + w * (th - p->theta[i]), SL_THETA_FLOOR);
   }
   return 0;
 }

@@ -10,9 +10,12 @@
 #include <time.h>
 
 #include "core/config/expr.h"
+#include "core/fv/cell_scalar.h"
+#include "core/fv/grid.h"
+#include "core/mesh/tensor_grid.h"
 #include "core/scene/mesh.h"
 #include "core/models/two_fluid/two_fluid.h"
-#include "core/models/two_fluid/granular.h"
+#include "core/models/two_fluid/quantities.h"
 #include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/point_eval.h"
@@ -28,6 +31,7 @@ static const char *const field_names[] = {"phi", "velocity_fluid", "velocity_sol
 typedef struct sh_wall {
   const char *name;
   int node, inner;     /* the wall's vertex and the next one inwards */
+  int cell;            /* the wall's cell */
   int solids;          /* SOLIDS_* */
   int wall_function;   /* the wall closure reads wall_distance: slip at `inner` */
   const sl_expr *speed; /* of t (the scene's) */
@@ -44,17 +48,16 @@ typedef struct sh_layer {
   const sl_mesh *mesh;
   int *vertex, *cell_of; /* [n+1], [n] */
   int n, annular;
-  /* geometry: x [n+1]; per cell: h, W (volume), gm (momentum conductance), gt (conduction); per node: V, a, s */
-  double *x, *h, *W, *gm, *gt, *V, *a, *s;
+  /* geometry: x [n+1]; per cell: h, W (volume), gm (momentum conductance); per node: V, a, s */
+  double *x, *h, *W, *gm, *V, *a, *s;
   double rho_f, mu_f, rho_s, d_p, sphericity, phi_max, gravity, mu_s_const;
   double *phi, *phin;              /* cells, nodes (held) */
-  double *uf, *us, *th;            /* state at the nodes */
+  double *uf, *us, *th;            /* state: velocities at the nodes, theta in the cells (th[n] unused) */
   double *uf1, *us1, *th1;         /* the step's iterate */
   double *uf_old, *us_old, dt_last; /* the state before the last accepted step, and that step */
-  double *K, *dK, *slip, *muc, *muk, *dmuc, *kapc, *thc, *prod, *gam, *dgam, *work; /* work arrays */
+  double *K, *dK, *slip, *muc, *muk, *kapc, *thc, *gam, *dgam, *work; /* work arrays */
   double *gdc, *rhoc, *mumc; /* cells: solids shear rate, mixture density, mixture viscosity */
-  double *blk;                     /* per node: lower, diagonal, upper 3x3 blocks and the rhs (STRIDE) */
-  int b;                           /* block size: 2 (u_f, u_s) or 3 (and theta, transported) */
+  double *blk;                     /* per node: lower, diagonal, upper 2x2 blocks and the rhs (STRIDE) */
   double *qv[TF_Q_N];                 /* per-point values of constant quantities */
   sl_closure *drag_c, *gran_c, *wall_c, *visc_c;
   sl_point_closure drag, gran, wall, visc;
@@ -66,6 +69,11 @@ typedef struct sh_layer {
   int fields;
   double *node_out, *cell_out;
   double *psc; /* cells: the kinetic theory's solids pressure, when written */
+  /* the transported theta: a cell scalar (core/fv/cell_scalar.h) on the layer's cells */
+  sl_tensor_grid tg;
+  sl_fv_grid fv;
+  sl_cell_scalar cs;
+  double *thit, *thcap, *thsrc, *thsink, *thx; /* cells */
   char steady_text[96];
 } sh_layer;
 
@@ -105,7 +113,7 @@ static int eval_solids_viscosity(sh_layer *L, sl_diag *d) {
   for (int i = 0; i < L->n; ++i) {
     double du = L->a[i + 1] * L->us1[i + 1] - L->a[i] * L->us1[i];
     L->gdc[i] = sqrt(L->gm[i] * du * du / L->W[i]); /* the cell's root-mean-square shear rate */
-    L->muc[i] = L->mu_s_const, L->muk[i] = L->dmuc[i] = 0.0;
+    L->muc[i] = L->mu_s_const, L->muk[i] = 0.0;
   }
   if (L->visc_c) {
     const double *v[TF_Q_N];
@@ -117,33 +125,31 @@ static int eval_solids_viscosity(sh_layer *L, sl_diag *d) {
       L->muc[i] += fmax(L->mumc[i] - (1.0 - L->phi[i]) * L->mu_f, 0.0);
   }
   if (!L->granular) return 0;
-  for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th1[i] + L->th1[i + 1]), TF_THETA_FLOOR);
+  for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(L->th1[i], SL_THETA_FLOOR);
   const double *v[TF_Q_N];
   point_values(L, v, L->phi, NULL, L->thc);
   v[TF_Q_SHEAR_RATE] = L->gdc, v[TF_Q_DENSITY] = L->rhoc;
-  sl_point_request rq[2] = {{"mu_s", L->muk, L->dmuc, "theta"}, {"kappa", L->kapc, NULL, NULL}};
-  rc = sl_point_eval(&L->gran, L->n, v, rq, L->algebraic ? 1 : 2, d);
+  sl_point_request rq = {"mu_s", L->muk, NULL, NULL};
+  rc = sl_point_eval(&L->gran, L->n, v, &rq, 1, d);
   for (int i = 0; i < L->n && !rc; ++i) L->muc[i] += L->muk[i];
   return rc;
 }
 
 /* The wall closure at wall w for the iterate: tau (magnitude) with its
- * derivatives in the slip and theta, and the energy flux q into the layer
- * with dq/dtheta (0 without). */
-static int eval_wall(sh_layer *L, sh_wall *w, double *tau, double *dtau, double *dtau_th, double *q, double *dq,
-                     double *bn, sl_diag *d) {
+ * slip derivative (theta, of the wall's cell, lagged), and the energy flux
+ * q into the layer with dq/dtheta (0 without). */
+static int eval_wall(sh_layer *L, sh_wall *w, double *tau, double *dtau, double *q, double *dq, double *bn,
+                     sl_diag *d) {
   int ref = w->wall_function ? w->inner : w->node;
   double sl = fabs(L->us1[ref] - w->u), dist = fabs(L->x[w->inner] - L->x[w->node]);
-  double phi = L->phin[ref], th = fmax(L->th1[w->node], TF_THETA_FLOOR);
+  double phi = L->phin[ref], th = fmax(L->th1[w->cell], SL_THETA_FLOOR);
   double one[TF_Q_N];
   const double *v[TF_Q_N];
   for (int k = 0; k < TF_Q_N; ++k) one[k] = L->qv[k][0], v[k] = &one[k];
   one[TF_Q_PHI] = phi, one[TF_Q_THETA] = th, one[TF_Q_SLIP_WALL] = sl, one[TF_Q_WALL_DISTANCE] = dist, one[TF_Q_SLIP] = sl;
-  /* one closure call: tau_w with its slip and theta derivatives (0 when it
-   * has no theta input), and the optional outputs the closure gives */
-  double tau_again;
-  sl_point_request rq[4] = {{"tau_w", tau, dtau, "slip_wall"}, {"tau_w", &tau_again, dtau_th, "theta"}};
-  int n_rq = 2;
+  /* one closure call: tau_w with its slip derivative, and the optional outputs the closure gives */
+  sl_point_request rq[3] = {{"tau_w", tau, dtau, "slip_wall"}};
+  int n_rq = 1;
   *q = *dq = 0.0, *bn = NAN;
   if (sl_point_has_output(&L->wall, "theta_flux")) rq[n_rq++] = (sl_point_request){"theta_flux", q, dq, "theta"};
   if (sl_point_has_output(&L->wall, "bagnold_number"))
@@ -153,72 +159,72 @@ static int eval_wall(sh_layer *L, sh_wall *w, double *tau, double *dtau, double 
   return 0;
 }
 
-/* ---- the coupled system: block-tridiagonal, 2x2 (u_f, u_s) or 3x3 (and theta) ------ */
+/* ---- the coupled system: block-tridiagonal, 2x2 (u_f, u_s) ------------------------- */
 
-/* Block k: lower (the couplings to node k-1), diagonal, upper, each 3x3
- * row-major with entry (row, column) at [3 row + column] whatever the block
- * size b in use, and the right-hand side. Rows and columns: F, S, T. */
-enum { F = 0, S = 1, T = 2, STRIDE = 30 };
+/* Block k: lower (the couplings to node k-1), diagonal, upper, each 2x2
+ * row-major with entry (row, column) at [2 row + column], and the
+ * right-hand side. Rows and columns: F, S. */
+enum { F = 0, S = 1, STRIDE = 14 };
 #define LOWER(L, k) ((L)->blk + STRIDE * (k))
-#define DIAG(L, k) ((L)->blk + STRIDE * (k) + 9)
-#define UPPER(L, k) ((L)->blk + STRIDE * (k) + 18)
-#define RHS(L, k) ((L)->blk + STRIDE * (k) + 27)
+#define DIAG(L, k) ((L)->blk + STRIDE * (k) + 4)
+#define UPPER(L, k) ((L)->blk + STRIDE * (k) + 8)
+#define RHS(L, k) ((L)->blk + STRIDE * (k) + 12)
 
-/* X = A^-1 X for a b x b block A and m columns of X (3 x 3 layout), by
+/* X = A^-1 X for a 2x2 block A and m columns of X (2 x 2 layout), by
  * Gaussian elimination with partial pivoting on a copy of A. */
-static int block_solve(int b, const double *A, double *X, int m) {
-  double a[9];
+static int block_solve(const double *A, double *X, int m) {
+  double a[4];
   memcpy(a, A, sizeof a);
-  for (int c = 0; c < b; ++c) {
+  for (int c = 0; c < 2; ++c) {
     int p = c;
-    for (int r = c + 1; r < b; ++r)
-      if (fabs(a[3 * r + c]) > fabs(a[3 * p + c])) p = r;
-    if (!(fabs(a[3 * p + c]) > 0.0) || !isfinite(a[3 * p + c])) return -1;
+    for (int r = c + 1; r < 2; ++r)
+      if (fabs(a[2 * r + c]) > fabs(a[2 * p + c])) p = r;
+    if (!(fabs(a[2 * p + c]) > 0.0) || !isfinite(a[2 * p + c])) return -1;
     if (p != c)
-      for (int j = 0; j < 3; ++j) {
-        double t = a[3 * c + j];
-        a[3 * c + j] = a[3 * p + j], a[3 * p + j] = t;
-        if (j < m) t = X[3 * c + j], X[3 * c + j] = X[3 * p + j], X[3 * p + j] = t;
+      for (int j = 0; j < 2; ++j) {
+        double t = a[2 * c + j];
+        a[2 * c + j] = a[2 * p + j], a[2 * p + j] = t;
+        if (j < m) t = X[2 * c + j], X[2 * c + j] = X[2 * p + j], X[2 * p + j] = t;
       }
-    for (int r = c + 1; r < b; ++r) {
-      double f = a[3 * r + c] / a[3 * c + c];
-      for (int j = c; j < b; ++j) a[3 * r + j] -= f * a[3 * c + j];
-      for (int j = 0; j < m; ++j) X[3 * r + j] -= f * X[3 * c + j];
+    for (int r = c + 1; r < 2; ++r) {
+      double f = a[2 * r + c] / a[2 * c + c];
+      for (int j = c; j < 2; ++j) a[2 * r + j] -= f * a[2 * c + j];
+      for (int j = 0; j < m; ++j) X[2 * r + j] -= f * X[2 * c + j];
     }
   }
-  for (int c = b - 1; c >= 0; --c)
+  for (int c = 1; c >= 0; --c)
     for (int j = 0; j < m; ++j) {
-      double s = X[3 * c + j];
-      for (int k = c + 1; k < b; ++k) s -= a[3 * c + k] * X[3 * k + j];
-      X[3 * c + j] = s / a[3 * c + c];
+      double s = X[2 * c + j];
+      for (int k = c + 1; k < 2; ++k) s -= a[2 * c + k] * X[2 * k + j];
+      X[2 * c + j] = s / a[2 * c + c];
     }
   return 0;
 }
 
 /* Block Thomas elimination; the solution replaces the right-hand sides. */
 static int block_thomas(sh_layer *L) {
-  const int N = L->n + 1, b = L->b;
+  const int N = L->n + 1;
   for (int k = 1; k < N; ++k) {
-    double G[9], g[9] = {0};
+    double G[4], g[4] = {0};
     memcpy(G, UPPER(L, k - 1), sizeof G);
-    for (int r = 0; r < b; ++r) g[3 * r] = RHS(L, k - 1)[r];
-    if (block_solve(b, DIAG(L, k - 1), G, b) || block_solve(b, DIAG(L, k - 1), g, 1)) return -1;
+    for (int r = 0; r < 2; ++r) g[2 * r] = RHS(L, k - 1)[r];
+    if (block_solve(DIAG(L, k - 1), G, 2) || block_solve(DIAG(L, k - 1), g, 1)) return -1;
     double *Lk = LOWER(L, k), *D = DIAG(L, k), *rk = RHS(L, k);
-    for (int r = 0; r < b; ++r) {
-      for (int c = 0; c < b; ++c)
-        for (int j = 0; j < b; ++j) D[3 * r + c] -= Lk[3 * r + j] * G[3 * j + c];
-      for (int j = 0; j < b; ++j) rk[r] -= Lk[3 * r + j] * g[3 * j];
+    for (int r = 0; r < 2; ++r) {
+      for (int c = 0; c < 2; ++c)
+        for (int j = 0; j < 2; ++j) D[2 * r + c] -= Lk[2 * r + j] * G[2 * j + c];
+      for (int j = 0; j < 2; ++j) rk[r] -= Lk[2 * r + j] * g[2 * j];
     }
   }
   for (int k = N - 1; k >= 0; --k) {
-    double x[9] = {0};
-    for (int r = 0; r < b; ++r) {
-      x[3 * r] = RHS(L, k)[r];
+    double x[4] = {0};
+    for (int r = 0; r < 2; ++r) {
+      x[2 * r] = RHS(L, k)[r];
       if (k < N - 1)
-        for (int j = 0; j < b; ++j) x[3 * r] -= UPPER(L, k)[3 * r + j] * RHS(L, k + 1)[j];
+        for (int j = 0; j < 2; ++j) x[2 * r] -= UPPER(L, k)[2 * r + j] * RHS(L, k + 1)[j];
     }
-    if (block_solve(b, DIAG(L, k), x, 1)) return -1;
-    for (int r = 0; r < b; ++r) RHS(L, k)[r] = x[3 * r];
+    if (block_solve(DIAG(L, k), x, 1)) return -1;
+    for (int r = 0; r < 2; ++r) RHS(L, k)[r] = x[2 * r];
   }
   return 0;
 }
@@ -235,71 +241,30 @@ static double cell_flux(const sh_layer *L, int i, double mu, const double *u) {
 }
 
 /* Residual row of phase p (F or S) at node k without walls, with its
- * Jacobian entries: storage, the viscous fluxes of the two cells (and, for
- * the solids, their derivative in theta through mu_s), the drag. */
-static double phase_row(sh_layer *L, int p, int k, const double *mu, const double *dmu, const double *u,
-                        const double *old, double rho, double frac, double dt, double drag) {
+ * Jacobian entries: storage, the viscous fluxes of the two cells (their
+ * viscosity of the iterate), the drag. */
+static double phase_row(sh_layer *L, int p, int k, const double *mu, const double *u, const double *old, double rho,
+                        double frac, double dt, double drag) {
   double *D = DIAG(L, k), mass = rho * frac * L->V[k] / dt;
   double r = mass * (u[k] - old[k]) + (p == F ? 1.0 : -1.0) * L->V[k] * drag;
-  D[3 * p + p] += mass;
+  D[2 * p + p] += mass;
   for (int side = 0; side < 2; ++side) {
     int i = side == 0 ? k : k - 1; /* the cell to the right, to the left */
     if (i < 0 || i >= L->n) continue;
     double sgn = side == 0 ? -1.0 : 1.0; /* -G_k + G_k-1 */
     double c = mu[i] * L->gm[i] / L->s[k], G = cell_flux(L, i, mu[i], u);
     r += sgn * G / L->s[k];
-    double *Bi = block_of(L, k, i), *Bi1 = block_of(L, k, i + 1);
-    Bi[3 * p + p] -= sgn * c * L->a[i];
-    Bi1[3 * p + p] += sgn * c * L->a[i + 1];
-    if (dmu && L->b == 3) { /* G_i depends on theta_i and theta_i+1 through mu_s(theta_c) */
-      double dG = 0.5 * dmu[i] * L->gm[i] * (L->a[i + 1] * u[i + 1] - L->a[i] * u[i]) / L->s[k];
-      Bi[3 * p + T] += sgn * dG, Bi1[3 * p + T] += sgn * dG;
-    }
+    block_of(L, k, i)[2 * p + p] -= sgn * c * L->a[i];
+    block_of(L, k, i + 1)[2 * p + p] += sgn * c * L->a[i + 1];
   }
   return r;
 }
 
-/* The granular-energy row of node k (transport form) and its Jacobian:
- * storage, conduction (kappa of the iterate), production by the kinetic
- * viscosity, dissipation, the drag's sink (K of the iterate). The
- * production enters the Jacobian through u_s only: its theta derivative,
- * mu_s'(theta) gdot^2 ~ theta^-1/2, is negative on the diagonal and unbounded
- * as theta -> 0, and Newton with it falls to theta = 0; without it the
- * diagonal stays positive (storage, conduction, dissipation, sink) and the
- * theta part converges linearly, by a factor of about 3 per iteration at
- * equilibrium (production/dissipation derivatives 1/2 : 3/2). */
-static double theta_row(sh_layer *L, int k, double dt) {
-  double *D = DIAG(L, k);
-  double cap = tf_theta_capacity(L->rho_s, L->phin[k]) * L->V[k] / dt, X = tf_theta_exchange(L->exchange, L->K[k]);
-  double r = cap * (L->th1[k] - L->th[k]) + L->V[k] * (L->gam[k] + X * L->th1[k]);
-  D[3 * T + T] += cap + L->V[k] * (L->dgam[k] + X);
-  for (int side = 0; side < 2; ++side) {
-    int i = side == 0 ? k : k - 1, nb = side == 0 ? k + 1 : k - 1;
-    if (i < 0 || i >= L->n) continue;
-    double c = L->kapc[i] * L->gt[i];
-    r += c * (L->th1[k] - L->th1[nb]);
-    D[3 * T + T] += c, block_of(L, k, nb)[3 * T + T] -= c;
-    /* half of cell i's production mu_k gm du^2 */
-    double du = L->a[i + 1] * L->us1[i + 1] - L->a[i] * L->us1[i];
-    r -= 0.5 * L->muk[i] * L->gm[i] * du * du;
-    double dp = L->muk[i] * L->gm[i] * du; /* d(half production)/d(du) */
-    block_of(L, k, i + 1)[3 * T + S] -= dp * L->a[i + 1];
-    block_of(L, k, i)[3 * T + S] += dp * L->a[i];
-  }
-  return r;
-}
-
-/* One Newton update of (u_f, u_s[, theta]). du, dth: the largest changes. */
-static int newton_update(sh_layer *L, double dt, double *du, double *dth, sl_diag *d) {
-  const int N = L->n + 1, b = L->b;
+/* One Newton update of (u_f, u_s), theta and the viscosities of the
+ * iterate held. du: the largest change. */
+static int newton_update(sh_layer *L, double dt, double *du, sl_diag *d) {
+  const int N = L->n + 1;
   int rc = eval_drag(L, d);
-  if (!rc && b == 3) {
-    const double *v[TF_Q_N];
-    for (int k = 0; k < N; ++k) L->th1[k] = fmax(L->th1[k], TF_THETA_FLOOR);
-    point_values(L, v, L->phin, NULL, L->th1);
-    sl_point_request rq = {"gamma", L->gam, L->dgam, "theta"};
-    rc = sl_point_eval(&L->gran, N, v, &rq, 1, d);
-  }
   if (rc) return rc;
   memset(L->blk, 0, (size_t)N * STRIDE * sizeof(double));
   double *muf = L->work; /* [n] fluid viscosity (1 - phi) mu_f */
@@ -307,99 +272,138 @@ static int newton_update(sh_layer *L, double dt, double *du, double *dth, sl_dia
   for (int k = 0; k < N; ++k) {
     double w = L->uf1[k] - L->us1[k], drag = L->K[k] * w;
     double kn = L->K[k] + L->dK[k] * fabs(w); /* d(K(|w|) w)/dw */
-    double rf = phase_row(L, F, k, muf, NULL, L->uf1, L->uf, L->rho_f, 1.0 - L->phin[k], dt, drag);
-    double rs = phase_row(L, S, k, L->muc, L->dmuc, L->us1, L->us, L->rho_s, L->phin[k], dt, drag);
+    double rf = phase_row(L, F, k, muf, L->uf1, L->uf, L->rho_f, 1.0 - L->phin[k], dt, drag);
+    double rs = phase_row(L, S, k, L->muc, L->us1, L->us, L->rho_s, L->phin[k], dt, drag);
     double *D = DIAG(L, k);
-    D[3 * F + F] += L->V[k] * kn, D[3 * F + S] -= L->V[k] * kn;
-    D[3 * S + F] -= L->V[k] * kn, D[3 * S + S] += L->V[k] * kn;
+    D[2 * F + F] += L->V[k] * kn, D[2 * F + S] -= L->V[k] * kn;
+    D[2 * S + F] -= L->V[k] * kn, D[2 * S + S] += L->V[k] * kn;
     RHS(L, k)[F] = -rf, RHS(L, k)[S] = -rs;
-    if (b == 3) RHS(L, k)[T] = -theta_row(L, k, dt);
   }
   for (int side = 0; side < 2; ++side) {
     sh_wall *w = &L->wall_at[side];
     int k = w->node, j = w->inner;
     double *D = DIAG(L, k), *Lo = LOWER(L, k), *Up = UPPER(L, k);
     /* the fluid sticks to the wall */
-    for (int c = 0; c < 3; ++c) D[3 * F + c] = Lo[3 * F + c] = Up[3 * F + c] = 0.0;
-    D[3 * F + F] = 1.0, RHS(L, k)[F] = w->u - L->uf1[k];
+    for (int c = 0; c < 2; ++c) D[2 * F + c] = Lo[2 * F + c] = Up[2 * F + c] = 0.0;
+    D[2 * F + F] = 1.0, RHS(L, k)[F] = w->u - L->uf1[k];
     if (w->solids == SOLIDS_NO_SLIP) {
-      for (int c = 0; c < 3; ++c) D[3 * S + c] = Lo[3 * S + c] = Up[3 * S + c] = 0.0;
-      D[3 * S + S] = 1.0, RHS(L, k)[S] = w->u - L->us1[k];
+      for (int c = 0; c < 2; ++c) D[2 * S + c] = Lo[2 * S + c] = Up[2 * S + c] = 0.0;
+      D[2 * S + S] = 1.0, RHS(L, k)[S] = w->u - L->us1[k];
     } else if (w->solids == SOLIDS_WALL_STRESS) {
-      double tau, dtau, dtau_th, q, dq, bn;
-      if ((rc = eval_wall(L, w, &tau, &dtau, &dtau_th, &q, &dq, &bn, d))) return rc;
+      double tau, dtau, q, dq, bn;
+      if ((rc = eval_wall(L, w, &tau, &dtau, &q, &dq, &bn, d))) return rc;
       int ref = w->wall_function ? j : k;
       double slip = L->us1[ref] - w->u, sg = slip > 0 ? 1.0 : slip < 0 ? -1.0 : 0.0;
       if (w->wall_function) {
         /* the inner node's control volume reaches the wall: add the wall
          * node's solids row to it, then tie the wall node's solids to it */
         double scale = L->s[k] / L->s[j], *to_k = block_of(L, j, k), *to_j = DIAG(L, j), *off = block_of(L, k, j);
-        for (int c = 0; c < 3; ++c) to_k[3 * S + c] += scale * D[3 * S + c], to_j[3 * S + c] += scale * off[3 * S + c];
+        for (int c = 0; c < 2; ++c) to_k[2 * S + c] += scale * D[2 * S + c], to_j[2 * S + c] += scale * off[2 * S + c];
         RHS(L, j)[S] += scale * RHS(L, k)[S];
         double fj = w->area / L->s[j];
         RHS(L, j)[S] -= fj * tau * sg;
-        to_j[3 * S + S] += fj * dtau;
-        to_k[3 * S + T] += fj * dtau_th * sg;
-        for (int c = 0; c < 3; ++c) D[3 * S + c] = Lo[3 * S + c] = Up[3 * S + c] = 0.0;
-        D[3 * S + S] = 1.0, off[3 * S + S] = -1.0, RHS(L, k)[S] = L->us1[j] - L->us1[k];
+        to_j[2 * S + S] += fj * dtau;
+        for (int c = 0; c < 2; ++c) D[2 * S + c] = Lo[2 * S + c] = Up[2 * S + c] = 0.0;
+        D[2 * S + S] = 1.0, off[2 * S + S] = -1.0, RHS(L, k)[S] = L->us1[j] - L->us1[k];
       } else {
         double f = w->area / L->s[k]; /* the wall's stress in this row's units */
         RHS(L, k)[S] -= f * tau * sg;
-        D[3 * S + S] += f * dtau, D[3 * S + T] += f * dtau_th * sg;
-      }
-      if (b == 3 && sl_point_has_output(&L->wall, "theta_flux")) {
-        /* energy into the layer through the wall; its theta derivative only
-         * where it is a sink (for Johnson & Jackson the slip's heating goes
-         * as theta^1/2, whose derivative is unbounded at theta = 0) */
-        RHS(L, k)[T] += w->theta_area * q;
-        if (dq < 0.0) D[3 * T + T] -= w->theta_area * dq;
+        D[2 * S + S] += f * dtau;
       }
     }
   }
   if (block_thomas(L))
     return sl_diag_set(d, SL_EFAILED, "the shear layer's system is singular (no drag, no viscosity?)");
-  double mu = 0.0, mt = 0.0;
+  double mu = 0.0;
   for (int k = 0; k < N; ++k) {
     double *x = RHS(L, k);
-    for (int r = 0; r < b; ++r)
-      if (!isfinite(x[r])) return sl_diag_set(d, SL_EFAILED, "non-finite update at x = %g", L->x[k]);
+    if (!isfinite(x[F]) || !isfinite(x[S])) return sl_diag_set(d, SL_EFAILED, "non-finite update at x = %g", L->x[k]);
     L->uf1[k] += x[F], L->us1[k] += x[S];
     mu = fmax(mu, fmax(fabs(x[F]), fabs(x[S])));
-    if (b == 3) { /* theta stays positive: at most a fivefold fall per iteration */
-      double th = tf_theta_bounded(L->th1[k] + x[T], L->th1[k]);
-      mt = fmax(mt, fabs(th - L->th1[k]));
-      L->th1[k] = th;
-    }
   }
-  *du = mu, *dth = mt;
+  *du = mu;
   return 0;
 }
 
-/* ---- the granular temperature, algebraic ------------------------------------------- */
+/* ---- the granular temperature ------------------------------------------------------ */
 
-/* Algebraic theta: mu_s0 gdot^2 sqrt(theta) = gamma0 theta^1.5 + 3 K theta
- * at each node, mu_s = mu_s0 sqrt(theta), gamma = gamma0 theta^1.5 (the
- * kinetic closures; checked at set-up): a quadratic in sqrt(theta). */
-static int theta_algebraic(sh_layer *L, double *dmax, sl_diag *d) {
-  int N = L->n + 1;
-  double *one = L->work, *mu0 = L->gam, *g0 = L->dgam;
-  for (int k = 0; k < N; ++k) one[k] = 1.0;
-  const double *v[TF_Q_N];
-  point_values(L, v, L->phin, NULL, one);
-  sl_point_request rq[2] = {{"mu_s", mu0, NULL, NULL}, {"gamma", g0, NULL, NULL}};
-  int rc = sl_point_eval(&L->gran, N, v, rq, 2, d);
-  if (rc) return rc;
-  /* shear rate squared at the nodes: the cells' production per unit viscosity over the node volume */
-  for (int k = 0; k < N; ++k) L->prod[k] = 0.0;
-  for (int i = 0; i < L->n; ++i) {
-    double du = L->a[i + 1] * L->us1[i + 1] - L->a[i] * L->us1[i], p = L->gm[i] * du * du;
-    L->prod[i] += 0.5 * p, L->prod[i + 1] += 0.5 * p;
+/* The walls' granular-energy flux into their cells (sl_cell_scalar_terms boundary): the wall closure's
+   theta_flux at the wall, linearised as every model does (core/models/granular.h). */
+static int wall_energy(void *user, int c, double *rhs, double *diag, sl_diag *d) {
+  sh_layer *L = user;
+  for (int side = 0; side < 2; ++side) {
+    sh_wall *w = &L->wall_at[side];
+    if (w->cell != c || w->solids != SOLIDS_WALL_STRESS) continue;
+    double tau, dtau, q, dq, bn;
+    int rc = eval_wall(L, w, &tau, &dtau, &q, &dq, &bn, d);
+    if (rc) return rc;
+    sl_theta_wall_row(w->theta_area, q, sl_theta_wall_implicit(dq), L->thit[c], rhs, diag);
   }
+  return 0;
+}
+
+/* The cells' shear rate of the iterate's solids velocities, and K there (the mean of the nodes'). */
+static void cell_shear(sh_layer *L) {
+  for (int i = 0; i < L->n; ++i) {
+    double du = L->a[i + 1] * L->us1[i + 1] - L->a[i] * L->us1[i];
+    L->gdc[i] = sqrt(L->gm[i] * du * du / L->W[i]); /* the cell's root-mean-square shear rate */
+    L->thsink[i] = sl_theta_exchange(L->exchange, 0.5 * (L->K[i] + L->K[i + 1]));
+  }
+}
+
+/* Transported theta in the cells, after the velocities of the iterate: the
+ * shared cell scalar (core/fv/cell_scalar.h) with every model's pointwise
+ * terms (sl_theta_terms), as the 2-D model's (two_fluid_plane_solids.c);
+ * the walls with solids = wall_stress pass the wall closure's theta_flux,
+ * the others are adiabatic. dmax: the largest change. */
+static int theta_transport(sh_layer *L, double dt, double *dmax, sl_diag *d) {
+  const int n = L->n;
+  int rc;
+  if (!L->cs.ls && (rc = sl_cell_scalar_init(&L->cs, &L->fv, d)))
+    return sl_diag_prefix(d, rc, "the granular temperature's system");
+  cell_shear(L);
+  for (int i = 0; i < n; ++i) L->thit[i] = fmax(L->th1[i], SL_THETA_FLOOR);
+  const double *v[TF_Q_N];
+  point_values(L, v, L->phi, NULL, L->thit);
+  v[TF_Q_SHEAR_RATE] = L->gdc, v[TF_Q_DENSITY] = L->rhoc;
+  sl_point_request rq[3] = {{"mu_s", L->muk, NULL, NULL}, {"kappa", L->kapc, NULL, NULL},
+                            {"gamma", L->gam, L->dgam, "theta"}};
+  if ((rc = sl_point_eval(&L->gran, n, v, rq, 3, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
+  sl_theta_terms(n, L->rho_s, L->phi, L->muk, L->gdc, L->gam, L->dgam, L->thsink, L->thit, L->thcap, L->thsrc,
+                 L->thsink);
+  sl_cell_scalar_terms t = {.dt = dt, .cap = L->thcap, .s_old = L->th, .k = L->kapc, .source = L->thsrc,
+                            .sink = L->thsink, .boundary = L->wall_c ? wall_energy : NULL, .boundary_user = L};
+  if ((rc = sl_cell_scalar_solve(&L->cs, &t, L->thx, d))) return sl_diag_prefix(d, rc, "the granular temperature's solve");
   double m = 0.0;
-  for (int k = 0; k < N; ++k) {
-    double th = tf_theta_algebraic(mu0[k] * L->prod[k] / L->V[k], g0[k], tf_theta_exchange(L->exchange, L->K[k]), NULL);
-    m = fmax(m, fabs(th - L->th1[k]));
-    L->th1[k] = th;
+  for (int i = 0; i < n; ++i) {
+    if (!isfinite(L->thx[i]))
+      return sl_diag_set(d, SL_EFAILED, "the granular temperature is not finite at x = %g",
+                         0.5 * (L->x[i] + L->x[i + 1]));
+    double th = sl_theta_bounded(L->thx[i], L->thit[i]); /* at most a fivefold fall per iteration */
+    m = fmax(m, fabs(th - L->th1[i]));
+    L->th1[i] = th;
+  }
+  *dmax = m;
+  return 0;
+}
+
+/* Algebraic theta in the cells (sl_theta_algebraic: the kinetic closures'
+ * quadratic, checked at set-up), at the cells' shear rate. */
+static int theta_algebraic(sh_layer *L, double *dmax, sl_diag *d) {
+  int n = L->n;
+  double *one = L->work, *mu0 = L->gam, *g0 = L->dgam;
+  for (int i = 0; i < n; ++i) one[i] = 1.0;
+  const double *v[TF_Q_N];
+  point_values(L, v, L->phi, NULL, one);
+  sl_point_request rq[2] = {{"mu_s", mu0, NULL, NULL}, {"gamma", g0, NULL, NULL}};
+  int rc = sl_point_eval(&L->gran, n, v, rq, 2, d);
+  if (rc) return rc;
+  cell_shear(L);
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) {
+    double th = sl_theta_algebraic(mu0[i] * L->gdc[i] * L->gdc[i], g0[i], L->thsink[i], NULL);
+    m = fmax(m, fabs(th - L->th1[i]));
+    L->th1[i] = th;
   }
   *dmax = m;
   return 0;
@@ -423,10 +427,10 @@ static int layer_step(sh_layer *L, double t, double dt, int *iterations, sl_diag
   for (int it = 1; it <= L->max_iterations; ++it) {
     double du = 0.0, dth = 0.0;
     int rc = eval_solids_viscosity(L, d);
-    if (!rc) rc = newton_update(L, dt, &du, &dth, d);
-    if (!rc && L->granular && L->algebraic) rc = theta_algebraic(L, &dth, d);
+    if (!rc) rc = newton_update(L, dt, &du, d);
+    if (!rc && L->granular) rc = L->algebraic ? theta_algebraic(L, &dth, d) : theta_transport(L, dt, &dth, d);
     if (rc) return rc;
-    double th_scale = TF_THETA_FLOOR;
+    double th_scale = SL_THETA_FLOOR;
     for (int k = 0; k < N; ++k) th_scale = fmax(th_scale, L->th1[k]);
     *iterations = it;
     if (du <= L->tolerance * v_scale && dth <= L->tolerance * th_scale) return 0;
@@ -457,8 +461,7 @@ static int wall_report(sh_layer *L, sh_wall *w, const double *uf_old, const doub
     w->tau_s = -on_solids / w->area;
   } else if (w->solids == SOLIDS_WALL_STRESS) {
     double tau, dtau, q, dq, bn;
-    double dtau_th;
-    int rc = eval_wall(L, w, &tau, &dtau, &dtau_th, &q, &dq, &bn, d);
+    int rc = eval_wall(L, w, &tau, &dtau, &q, &dq, &bn, d);
     if (rc) return rc;
     int ref = w->wall_function ? w->inner : k;
     w->slip = L->us1[ref] - w->u;
@@ -482,9 +485,10 @@ static int geometry(sh_layer *L, sl_diag *d) {
   size_t N = (size_t)n + 1;
   double **nodes[] = {&L->uf_old, &L->us_old, &L->x,    &L->V,  &L->a,   &L->s,    &L->phin,
                       &L->uf,     &L->us,     &L->th,   &L->uf1, &L->us1, &L->th1,  &L->K,
-                      &L->dK,     &L->slip,   &L->prod, &L->gam, &L->dgam, &L->work, &L->node_out};
-  double **cells[] = {&L->h,    &L->W,   &L->gm,  &L->gt,       &L->phi, &L->muc,  &L->muk,
-                      &L->dmuc, &L->kapc, &L->thc, &L->cell_out, &L->gdc, &L->rhoc, &L->mumc};
+                      &L->dK,     &L->slip,   &L->gam, &L->dgam, &L->work, &L->node_out};
+  double **cells[] = {&L->h,    &L->W,   &L->gm,  &L->phi, &L->muc,  &L->muk,
+                      &L->kapc, &L->thc, &L->cell_out, &L->gdc, &L->rhoc, &L->mumc,
+                      &L->thit, &L->thcap, &L->thsrc, &L->thsink, &L->thx};
   for (size_t k = 0; k < sizeof nodes / sizeof nodes[0]; ++k)
     if (!(*nodes[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   for (size_t k = 0; k < sizeof cells / sizeof cells[0]; ++k)
@@ -492,7 +496,7 @@ static int geometry(sh_layer *L, sl_diag *d) {
       return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   for (int k = 0; k < TF_Q_N; ++k)
     if (!(L->qv[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
-  if (!(L->blk = calloc(N * 30, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
+  if (!(L->blk = calloc(N * STRIDE, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   for (size_t k = 0; k < N; ++k) L->x[k] = m->xy[2 * L->vertex[k]];
   if (L->annular && !(L->x[0] > 0.0)) {
     char at[400];
@@ -505,15 +509,28 @@ static int geometry(sh_layer *L, sl_diag *d) {
     if (L->annular) {
       L->W[i] = 0.5 * (x1 * x1 - x0 * x0);
       L->gm[i] = 2.0 / (1.0 / (x0 * x0) - 1.0 / (x1 * x1)); /* r^2 tau = 2 mu d(u/r) / d(r^-2) */
-      L->gt[i] = 1.0 / log(x1 / x0);                         /* r kappa dtheta/dr = kappa dtheta / d(ln r) */
       L->V[i] += 0.5 * (xm * xm - x0 * x0), L->V[i + 1] += 0.5 * (x1 * x1 - xm * xm);
     } else {
-      L->W[i] = L->h[i], L->gm[i] = L->gt[i] = 1.0 / L->h[i];
+      L->W[i] = L->h[i], L->gm[i] = 1.0 / L->h[i];
       L->V[i] += 0.5 * L->h[i], L->V[i + 1] += 0.5 * L->h[i];
     }
   }
   for (size_t k = 0; k < N; ++k) L->a[k] = L->annular ? 1.0 / L->x[k] : 1.0, L->s[k] = L->annular ? L->x[k] : 1.0;
-  return 0;
+  /* the cells as an n x 1 staggered grid (planar, or axisymmetric with x the radius) for the cell scalar */
+  sl_tensor_grid *tg = &L->tg;
+  tg->nx = n, tg->ny = 1;
+  tg->xf = malloc(N * sizeof *tg->xf), tg->yf = malloc(2 * sizeof *tg->yf);
+  tg->mesh_cell = malloc((size_t)n * sizeof *tg->mesh_cell);
+  for (int s = 0; s < 4; ++s) tg->side_tag[s] = malloc((size_t)(s < 2 ? 1 : n) * sizeof(int));
+  if (!tg->xf || !tg->yf || !tg->mesh_cell || !tg->side_tag[0] || !tg->side_tag[1] || !tg->side_tag[2] ||
+      !tg->side_tag[3])
+    return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
+  memcpy(tg->xf, L->x, N * sizeof *tg->xf);
+  tg->yf[0] = 0.0, tg->yf[1] = 1.0;
+  for (int i = 0; i < n; ++i) tg->mesh_cell[i] = L->cell_of[i], tg->side_tag[2][i] = tg->side_tag[3][i] = -1;
+  tg->side_tag[0][0] = tg->side_tag[1][0] = -1;
+  const int periodic[2] = {0, 0};
+  return sl_fv_grid_build(&L->fv, tg, L->annular, periodic, d);
 }
 
 static int physics(sh_layer *L, sl_diag *d) {
@@ -544,11 +561,7 @@ static int physics(sh_layer *L, sl_diag *d) {
                                         "kinetic theory, e.g. model = lun)", gt->file, gt->line);
   if (L->granular) {
     if ((rc = sl_point_bind(&L->gran, L->gran_c, tf_quantity_names, TF_Q_N, "closure.granular", model, d))) return rc;
-    static const char *const need[] = {"mu_s", "kappa", "gamma"};
-    for (int k = 0; k < 3; ++k)
-      if (!sl_point_has_output(&L->gran, need[k]))
-        return sl_diag_set(d, SL_EBADINPUT, "[closure.granular]: the shear layer needs mu_s, kappa and gamma of "
-                                            "(phi, theta); this closure gives no %s", need[k]);
+    if ((rc = sl_granular_require(&L->gran, 1, "the shear layer", d))) return rc;
   }
   if ((L->visc_c = sl_scene_closure(sc, "viscosity"))) {
     if ((rc = sl_point_bind(&L->visc, L->visc_c, tf_quantity_names, TF_Q_N, "closure.viscosity", model, d))) return rc;
@@ -583,6 +596,7 @@ static int walls(sh_layer *L, sl_diag *d) {
     w->name = names[side];
     w->node = side == 0 ? 0 : L->n;
     w->inner = side == 0 ? 1 : L->n - 1;
+    w->cell = side == 0 ? 0 : L->n - 1;
     w->area = L->annular ? L->x[w->node] * L->x[w->node] : 1.0;
     w->theta_area = L->annular ? L->x[w->node] : 1.0;
     w->solids = b->solids;
@@ -629,13 +643,21 @@ static int initial_state(sh_layer *L, sl_diag *d) {
                            pe->file, pe->line, v, xc, L->phi_max);
         L->phi[i] = v;
       }
+    } else if (f == 1) { /* theta in the cells */
+      for (int i = 0; i < L->n && !rc; ++i) {
+        double xc = 0.5 * (L->x[i] + L->x[i + 1]), v = sl_expr_eval(ex[f]->e, &xc);
+        if (!(v > 0.0))
+          rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] theta = %g at x = %g: allowed theta > 0", file, line, v,
+                           xc);
+        L->th[i] = v;
+      }
     } else {
-      double *dst = f == 1 ? L->th : f == 2 ? L->uf : L->us;
+      double *dst = f == 2 ? L->uf : L->us;
       for (int k = 0; k <= L->n && !rc; ++k) {
         double v = sl_expr_eval(ex[f]->e, &L->x[k]);
-        if (!isfinite(v) || (f == 1 && !(v > 0.0)))
-          rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s = %g at x = %g: allowed %s", file, line, names[f], v,
-                           L->x[k], f == 1 ? "theta > 0" : "a finite value");
+        if (!isfinite(v))
+          rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s = %g at x = %g: allowed a finite value", file, line,
+                           names[f], v, L->x[k]);
         dst[k] = v;
       }
     }
@@ -691,15 +713,19 @@ static int write_state(sh_layer *L, sl_output *out, sl_diag *d) {
     for (int i = 0; i < L->n; ++i) L->cell_out[L->cell_of[i]] = L->phi[i];
     rc = sl_output_write_field(out, "phi", SL_CENTRE_CELL, 1, L->cell_out, d);
   }
-  const double *nf[3] = {L->uf, L->us, L->th};
-  const int flag[3] = {F_UF, F_US, F_THETA};
-  for (int f = 0; f < 3 && !rc; ++f) {
+  const double *nf[2] = {L->uf, L->us};
+  const int flag[2] = {F_UF, F_US};
+  for (int f = 0; f < 2 && !rc; ++f) {
     if (!(L->fields & flag[f])) continue;
     for (int k = 0; k <= L->n; ++k) L->node_out[L->vertex[k]] = nf[f][k];
     rc = sl_output_write_field(out, field_names[f + 1], SL_CENTRE_NODE, 1, L->node_out, d);
   }
-  if (!rc && (L->fields & F_PS)) { /* p_s(phi, theta) of [closure.granular], theta the mean of the cell's nodes */
-    for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(0.5 * (L->th[i] + L->th[i + 1]), TF_THETA_FLOOR);
+  if (!rc && (L->fields & F_THETA)) {
+    for (int i = 0; i < L->n; ++i) L->cell_out[L->cell_of[i]] = L->th[i];
+    rc = sl_output_write_field(out, "theta", SL_CENTRE_CELL, 1, L->cell_out, d);
+  }
+  if (!rc && (L->fields & F_PS)) { /* p_s(phi, theta) of [closure.granular] */
+    for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(L->th[i], SL_THETA_FLOOR);
     const double *v[TF_Q_N];
     point_values(L, v, L->phi, NULL, L->thc);
     v[TF_Q_SHEAR_RATE] = L->gdc, v[TF_Q_DENSITY] = L->rhoc;
@@ -736,7 +762,7 @@ static int layer_checkpoint(void *self, sl_checkpoint_array *a, int max) {
   const double *data[3] = {L->uf, L->us, L->th};
   for (int k = 0; k < 3; ++k) {
     snprintf(a[k].name, sizeof a[k].name, "%s", names[k]);
-    a[k].n = L->n + 1, a[k].data = data[k];
+    a[k].n = k == 2 ? L->n : L->n + 1, a[k].data = data[k]; /* theta in the cells */
   }
   return 3;
 }
@@ -747,9 +773,9 @@ static int layer_restore(void *self, const sl_checkpoint *ck, sl_diag *d) {
   double *dst[3] = {L->uf, L->us, L->th};
   for (int k = 0; k < 3; ++k) {
     const sl_checkpoint_array *a = sl_checkpoint_find(ck, names[k]);
-    if (!a || a->n != L->n + 1)
-      return sl_diag_set(d, SL_EBADINPUT, "restart: the checkpoint holds no shear-layer '%s' of %d values", names[k],
-                         L->n + 1);
+    int n = k == 2 ? L->n : L->n + 1;
+    if (!a || a->n != n)
+      return sl_diag_set(d, SL_EBADINPUT, "restart: the checkpoint holds no shear-layer '%s' of %d values", names[k], n);
     memcpy(dst[k], a->data, (size_t)a->n * sizeof(double));
   }
   return 0;
@@ -779,7 +805,7 @@ static int layer_trial(void *self, sl_step *s, int *iterations, sl_diag *d) {
 static void layer_accept(void *self, const sl_step *s, int *steady) {
   sh_layer *L = self;
   const int N = L->n + 1;
-  double dt = s->dt, rate_u = 0.0, rate_t = 0.0, th_max = TF_THETA_FLOOR, v_scale = L->v_ref;
+  double dt = s->dt, rate_u = 0.0, rate_t = 0.0, th_max = SL_THETA_FLOOR, v_scale = L->v_ref;
   for (int k = 0; k < N; ++k) {
     rate_u = fmax(rate_u, fmax(fabs(L->uf1[k] - L->uf[k]), fabs(L->us1[k] - L->us[k])));
     rate_t = fmax(rate_t, fabs(L->th1[k] - L->th[k]));
@@ -805,14 +831,15 @@ static int layer_write(void *self, sl_output *out, double t, const double *u, sl
 }
 
 static void release(sh_layer *L) {
-  double *all[] = {L->uf_old, L->us_old, L->x,    L->h,    L->W,    L->gm,   L->gt,   L->V,     L->a,
+  double *all[] = {L->uf_old, L->us_old, L->x,    L->h,    L->W,    L->gm,   L->V,     L->a,
                    L->s,      L->phi,    L->phin, L->uf,   L->us,   L->th,   L->uf1,  L->us1,   L->th1,
-                   L->K,      L->dK,     L->slip, L->muc,  L->muk,  L->dmuc, L->kapc, L->thc,   L->gdc,
-                   L->rhoc,   L->mumc,   L->prod, L->gam,  L->dgam, L->work, L->blk,  L->node_out, L->cell_out,
-                   L->psc};
+                   L->K,      L->dK,     L->slip, L->muc,  L->muk,  L->kapc, L->thc,   L->gdc,
+                   L->rhoc,   L->mumc,   L->gam,  L->dgam, L->work, L->blk,  L->node_out, L->cell_out,
+                   L->psc,    L->thit,   L->thcap, L->thsrc, L->thsink, L->thx};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   for (int k = 0; k < TF_Q_N; ++k) free(L->qv[k]);
   sl_point_release(&L->drag), sl_point_release(&L->gran), sl_point_release(&L->wall), sl_point_release(&L->visc);
+  sl_cell_scalar_free(&L->cs), sl_fv_grid_free(&L->fv), sl_tensor_grid_free(&L->tg);
   free(L->vertex), free(L->cell_of);
   free(L);
 }
@@ -831,10 +858,9 @@ static int layer_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   if (!rc) rc = physics(L, d);
   if (!rc && L->granular && L->algebraic) {
     char at[400];
-    rc = tf_granular_check_kinetic(&L->gran, L->qv, L->phi_max, 0,
+    rc = sl_granular_check_kinetic(&L->gran, TF_Q_N, L->qv, TF_Q_PHI, TF_Q_THETA, L->phi_max, 0,
                                    sl_scene_where(L->sc, &L->cfg->granular_temperature, at, sizeof at), d);
   }
-  L->b = L->granular && !L->algebraic ? 3 : 2;
   if (!rc) rc = walls(L, d);
   if (!rc) rc = initial_state(L, d);
   unsigned mask = 0;
@@ -879,7 +905,8 @@ static void layer_stats(void *self, const sl_run_result *res, sl_model_stats *st
              L->wall_at[0].name ? L->wall_at[0].name : "-", L->wall_at[1].tau_s,
              L->wall_at[1].name ? L->wall_at[1].name : "-", thm);
   }
-  snprintf(st->linear_summary, sizeof st->linear_summary, "2x2 block-tridiagonal, %d nodes", L->n + 1);
+  snprintf(st->linear_summary, sizeof st->linear_summary, "2x2 block-tridiagonal, %d nodes%s", L->n + 1,
+           L->granular && !L->algebraic ? "; theta: cell scalar" : "");
 }
 
 static void layer_destroy(void *self) { release(self); }

@@ -45,19 +45,24 @@
  * theta_flux sets the granular-energy flux through the wall; without it the
  * wall is adiabatic.
  *
- * Discretisation: vertex-centred finite volumes (the P1 lumped-mass
- * analogue), u_f, u_s and theta at the vertices, phi in the cells. The
- * annular cell stress uses the exact conductance of the Couette profile,
- * r^2 tau = 2 mu (u/r|_i+1 - u/r|_i) / (r_i^-2 - r_i+1^-2), and the cell's
- * viscous production G^2/(mu g), exact for Couette flow in both geometries.
- * Backward Euler; within a step u_f, u_s and theta are solved together by
- * Newton (a 3x3 block-tridiagonal system; 2x2 without a transported theta)
- * in the drag, the wall stress, the solids viscosity's theta dependence,
- * the production's shear and the dissipation; kappa, the drag's sink and
- * the production's own theta dependence are taken from the last iterate,
- * which keeps the theta rows diagonally dominant and theta positive.
+ * Discretisation: u_f and u_s by vertex-centred finite volumes (the P1
+ * lumped-mass analogue) at the vertices, phi and theta in the cells: the
+ * cells and vertices are the n x 1 staggered grid of core/fv/grid.h
+ * (velocities on the faces, scalars in the cells). The annular cell stress
+ * uses the exact conductance of the Couette profile, r^2 tau = 2 mu (u/r|_i+1
+ * - u/r|_i) / (r_i^-2 - r_i+1^-2), and the cell's viscous production G^2/(mu
+ * g), exact for Couette flow in both geometries. Backward Euler; within a
+ * step each iteration solves u_f and u_s by Newton (a 2x2
+ * block-tridiagonal system) in the drag and the wall stress, the solids
+ * viscosity of the iterate's theta, then theta in the cells: transported,
+ * by the shared cell scalar (core/fv/cell_scalar.h) with the pointwise
+ * terms and the walls' energy flux of every model (core/models/granular.h:
+ * Newton in the dissipation; kappa, the drag's sink and the production
+ * lagged), the 2-D model's scheme; or algebraic, the local balance at the
+ * cell's shear rate. The wall stress sees the theta of its wall's cell.
  *
- * Output: cell field phi, node fields velocity_fluid, velocity_solid, theta;
+ * Output: cell fields phi, theta (and solids_pressure), node fields
+ * velocity_fluid, velocity_solid;
  * with each output time, per wall NAME, the scalars
  * wall_shear_stress_fluid_NAME and wall_shear_stress_solid_NAME (the
  * stress each phase exerts on the wall, along the motion), wall_slip_NAME

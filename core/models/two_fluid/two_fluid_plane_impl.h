@@ -20,7 +20,7 @@
 #include "core/fv/cell_scalar.h"
 #include "core/fv/grid.h"
 #include "core/mesh/tensor_grid.h"
-#include "core/models/two_fluid/granular.h"
+#include "core/models/two_fluid/quantities.h"
 #include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/point_eval.h"
 #include "core/solve/anderson.h"

@@ -98,12 +98,7 @@ int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_d
     s->algebraic = cfg->granular_temperature;
     s->exchange = cfg->interphase_dissipation;
     if ((rc = sl_point_bind(&s->gran, s->gran_c, tf_quantity_names, TF_Q_N, "closure.granular", model, d))) return rc;
-    static const char *const need[] = {"mu_s", "gamma", "kappa"};
-    for (int k = 0; k < (s->algebraic ? 2 : 3); ++k)
-      if (!sl_point_has_output(&s->gran, need[k]))
-        return sl_diag_set(d, SL_EBADINPUT, "[closure.granular]: the 2-D model needs mu_s, gamma%s of (phi, "
-                                            "theta); this closure gives no %s", s->algebraic ? "" : " and kappa",
-                           need[k]);
+    if ((rc = sl_granular_require(&s->gran, !s->algebraic, "the 2-D model", d))) return rc;
     /* the kinetic pressure by default with a transported theta only: the algebraic theta follows the shear rate
        at once, as (gdot d)^2, and from an impulsive start (kinetic_shear, bagnold_shear) its pressure in the
        walls' cells kept the iteration from converging at any time step */
@@ -114,7 +109,8 @@ int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_d
                          sl_scene_where(sc, &cfg->kinetic_pressure, at, sizeof at));
     if (s->algebraic) {
       char gt_at[400];
-      if ((rc = tf_granular_check_kinetic(&s->gran, s->qv, m->c.phi_max, s->kinetic_pressure,
+      if ((rc = sl_granular_check_kinetic(&s->gran, TF_Q_N, s->qv, TF_Q_PHI, TF_Q_THETA, m->c.phi_max,
+                                          s->kinetic_pressure,
                                           sl_scene_where(sc, &cfg->granular_temperature, gt_at, sizeof gt_at), d)))
         return rc;
     }
@@ -146,8 +142,8 @@ int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_d
                                         "johnson_jackson)");
   }
   s->any = s->mu_const > 0.0 || s->visc_c || s->granular || any_stress;
-  for (size_t c = 0; c < nc; ++c) s->theta[c] = s->theta_new[c] = TF_THETA_FLOOR;
-  for (size_t k = 0; k < nk; ++k) s->theta_k[k] = TF_THETA_FLOOR;
+  for (size_t c = 0; c < nc; ++c) s->theta[c] = s->theta_new[c] = SL_THETA_FLOOR;
+  for (size_t k = 0; k < nk; ++k) s->theta_k[k] = SL_THETA_FLOOR;
   return 0;
 }
 
@@ -289,7 +285,7 @@ static int solids_mu_points(tfp_model *m, int N, const double *phi, const double
     v[TF_Q_THETA] = theta;
     for (int q = 0; q < N; ++q) {
       /* kap: d ln sqrt(theta) / d ln gdot */
-      theta[q] = tf_theta_algebraic(s->mu_k[q] * gdot[q] * gdot[q], s->gam[q], tf_theta_exchange(s->exchange, K[q]),
+      theta[q] = sl_theta_algebraic(s->mu_k[q] * gdot[q] * gdot[q], s->gam[q], sl_theta_exchange(s->exchange, K[q]),
                                     &s->kap[q]);
       s->mu_k[q] *= sqrt(theta[q]);
     }
@@ -351,10 +347,9 @@ int tfp_solids_viscosity(tfp_model *m, const double *us, const double *phi, sl_d
 /* The granular energy entering cell c through the walls with solids =
  * wall_stress on its sides (cf its four faces), per the wall closure's
  * theta_flux q(phi, theta, slip) (Johnson & Jackson 1987: the slip's
- * heating less the inelastic wall collisions' loss), added to the cell's
- * equation as rhs += A (q - q' theta_old), diag -= A q' with q' = dq/dtheta
- * only where it is a sink (the heating's theta^1/2 has an unbounded
- * derivative at theta = 0), as the shear layer does. The slip is that at
+ * heating less the inelastic wall collisions' loss), linearised as every
+ * model does (sl_theta_wall_row, core/models/granular.h: its sink part
+ * implicit). The slip is that at
  * the wall of the two faces along it (their mean flux), phi and theta the
  * cell's. */
 static int wall_energy(tfp_model *m, int c, const int cf[4], double *rhs, double *diag, sl_diag *d) {
@@ -362,7 +357,7 @@ static int wall_energy(tfp_model *m, int c, const int cf[4], double *rhs, double
   for (int dir = 0; dir < 2; ++dir)
     for (int side = 0; side < 2; ++side) {
       if (tfp_neighbour(m, c, dir, side) >= 0) continue;
-      double q_sum = 0.0, dq_sum = 0.0;
+      double q_sum = 0.0, c_sum = 0.0;
       int n = 0;
       for (int t = 0; t < 2; ++t) { /* the faces along the wall: x-faces along a bottom or top, y-faces along a side */
         int ft = tfp_primary(m, cf[2 * (1 - dir) + t]), e = 2 * ft + side, b = m->end_wall[e];
@@ -377,24 +372,21 @@ static int wall_energy(tfp_model *m, int c, const int cf[4], double *rhs, double
         sl_point_request rq = {"theta_flux", &q, &dq, "theta"};
         int rc = sl_point_eval(&s->wall, 1, v, &rq, 1, d);
         if (rc) return sl_diag_prefix(d, rc, "[closure.wall_stress] theta_flux in cell (%d, %d)", c % m->fv.nx, c / m->fv.nx);
-        q_sum += q, dq_sum += fmin(dq, 0.0), ++n;
+        q_sum += q, c_sum += sl_theta_wall_implicit(dq), ++n;
       }
       if (!n) continue;
-      double A = m->fv.area[cf[2 * dir + side]] / n;
-      *rhs += A * (q_sum - dq_sum * s->th_old[c]);
-      *diag -= A * dq_sum;
+      sl_theta_wall_row(m->fv.area[cf[2 * dir + side]] / n, q_sum, c_sum, s->th_old[c], rhs, diag);
     }
   return 0;
 }
 
 /* The transported granular temperature (`granular_temperature = transport`)
- * of the iterate, cell by cell, as the shear layer's (shear_layer.h; Krampa
- * 2009 eq 5.10 in the standard form, with its printed signs corrected):
+ * of the iterate, cell by cell, with the pointwise terms shared by every
+ * model (sl_theta_terms, core/models/granular.h; Krampa 2009 eq 5.10):
  *   (3/2) rho_s phi dtheta/dt = div(kappa grad theta) + mu_k gdot^2 - gamma - 3 K theta,
- * mu_k the kinetic viscosity, backward Euler. Newton in the dissipation
- * gamma(theta); kappa, mu_k (whose theta derivative, negative on the
- * diagonal and unbounded at theta = 0, would take Newton to theta = 0) and K
- * from the last iterate; the shear rate of the velocities just solved. The
+ * mu_k the kinetic viscosity, backward Euler on core/fv/cell_scalar.h.
+ * Newton in the dissipation gamma(theta); kappa, mu_k and K from the last
+ * iterate; the shear rate of the velocities just solved. The
  * walls with solids = wall_stress pass the wall closure's theta_flux
  * (wall_energy), the others are adiabatic; there is no convection of theta
  * (the model's momentum has none either). *change: the largest change of
@@ -414,21 +406,16 @@ int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
   if (!s->th.ls && (rc = sl_cell_scalar_init(&s->th, &m->fv, d)))
     return sl_diag_prefix(d, rc, "the granular temperature's system");
   shear_rate(m, m->us_new);
-  for (int c = 0; c < nc; ++c) s->th_old[c] = fmax(s->theta_new[c], TF_THETA_FLOOR);
+  for (int c = 0; c < nc; ++c) s->th_old[c] = fmax(s->theta_new[c], SL_THETA_FLOOR);
   const double *v[TF_Q_N];
   for (int k = 0; k < TF_Q_N; ++k) v[k] = s->qv[k];
   v[TF_Q_PHI] = m->phi_new, v[TF_Q_THETA] = s->th_old, v[TF_Q_SHEAR_RATE] = s->gdot, v[TF_Q_DENSITY] = s->rho;
   sl_point_request rq[3] = {{"mu_s", s->mu_k, NULL, NULL}, {"kappa", s->kap, NULL, NULL},
                             {"gamma", s->gam, s->dgam, "theta"}};
   if ((rc = sl_point_eval(&s->gran, nc, v, rq, 3, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
-  /* (3/2) rho_s phi, the production less the dissipation (Newton in gamma), the sinks: the dissipation's
-     derivative and the drag's 3 K */
-  for (int c = 0; c < nc; ++c) {
-    double ph = fmax(m->phi_new[c], 1e-6), X = tf_theta_exchange(s->exchange, s->Kc[c]), dg = fmax(s->dgam[c], 0.0);
-    s->th_cap[c] = tf_theta_capacity(m->c.rho_s, ph);
-    s->th_sink[c] = dg + X;
-    s->th_src[c] = s->mu_k[c] * s->gdot[c] * s->gdot[c] - s->gam[c] + dg * s->th_old[c];
-  }
+  for (int c = 0; c < nc; ++c) s->th_sink[c] = sl_theta_exchange(s->exchange, s->Kc[c]);
+  sl_theta_terms(nc, m->c.rho_s, m->phi_new, s->mu_k, s->gdot, s->gam, s->dgam, s->th_sink, s->th_old, s->th_cap,
+                 s->th_src, s->th_sink);
   sl_cell_scalar_terms terms = {.dt = dt, .cap = s->th_cap, .s_old = s->theta, .k = s->kap, .source = s->th_src,
                                 .sink = s->th_sink, .boundary = s->wall_energy ? wall_energy_of : NULL,
                                 .boundary_user = m};
@@ -440,7 +427,7 @@ int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
       return sl_diag_set(d, SL_EFAILED, "the granular temperature is not finite in cell (%d, %d)", c % m->fv.nx,
                          c / m->fv.nx);
     /* theta stays positive: at most a fivefold fall per iteration */
-    double th = tf_theta_bounded(s->th_x[c], s->th_old[c]);
+    double th = sl_theta_bounded(s->th_x[c], s->th_old[c]);
     ch = fmax(ch, fabs(th - s->th_old[c]));
     s->theta_new[c] = th;
   }
@@ -453,7 +440,7 @@ int tfp_solids_pressure(tfp_model *m, const double *phi, double *ps, double *dps
   if (!s->granular || !s->kinetic_pressure) return 0;
   const double *v[TF_Q_N];
   for (int k = 0; k < TF_Q_N; ++k) v[k] = s->qv[k];
-  for (int c = 0; c < m->fv.nc; ++c) s->th_old[c] = fmax(s->theta_new[c], TF_THETA_FLOOR);
+  for (int c = 0; c < m->fv.nc; ++c) s->th_old[c] = fmax(s->theta_new[c], SL_THETA_FLOOR);
   /* the algebraic theta of an iterate may leave the closure's range (a wall started impulsively shears its
      cell at U / (h/2)): p_s ~ theta is evaluated at theta = 1 and scaled (checked at set-up) */
   v[TF_Q_PHI] = phi, v[TF_Q_THETA] = s->algebraic ? s->one : s->th_old;
@@ -483,7 +470,7 @@ static int wall_tau(tfp_model *m, int f, double phi, double slip, double dist, d
   }
   const double *v[TF_Q_N];
   for (int k = 0; k < TF_Q_N; ++k) one[k] = s->qv[k][0], v[k] = &one[k];
-  one[TF_Q_PHI] = phi, one[TF_Q_THETA] = fmax(th / n, TF_THETA_FLOOR), one[TF_Q_SLIP_WALL] = slip;
+  one[TF_Q_PHI] = phi, one[TF_Q_THETA] = fmax(th / n, SL_THETA_FLOOR), one[TF_Q_SLIP_WALL] = slip;
   one[TF_Q_SLIP] = slip, one[TF_Q_WALL_DISTANCE] = dist, one[TF_Q_SHEAR_RATE] = gd / n;
   one[TF_Q_DENSITY] = rho / n;
   sl_point_request rq[2] = {{"tau_w", tau, dtau, "slip_wall"}, {"bagnold_number", &s->last_bagnold, NULL, NULL}};

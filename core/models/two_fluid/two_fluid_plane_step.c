@@ -888,8 +888,8 @@ static void acceleration_apply(tfp_model *m, double v_scale, double th_scale) {
   sl_anderson_apply(&m->acc, m->acc_x, m->acc_g, m->acc_scale);
   for (int f = 0; f < nf; ++f)
     if (m->us_row[f] >= 0) m->us_new[f] = m->acc_g[f], m->uf_new[f] = m->acc_g[nf + f];
-  /* theta stays positive: at most a fivefold fall from the map's value */
-  for (int c = 0; c < nc; ++c) m->s.theta_new[c] = fmax(m->acc_g[2 * nf + c], 0.2 * m->s.theta_new[c]);
+  /* theta stays positive: at most a fivefold fall from the map's value (core/models/granular.h) */
+  for (int c = 0; c < nc; ++c) m->s.theta_new[c] = sl_theta_bounded(m->acc_g[2 * nf + c], m->s.theta_new[c]);
   memcpy(m->end_us, m->acc_g + 2 * nf + nc, 2 * (size_t)nf * sizeof *m->end_us);
   /* phi, an affine combination of transported fields (its inventory kept), is what the next iteration's
      closures and weight read; that iteration's transport then replaces it */
