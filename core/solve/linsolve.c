@@ -275,7 +275,7 @@ static int rebuild_pending(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
   double *h = ls->pending;
   ls->pending = NULL;
   int32_t nnz = (int32_t)h[4];
-  int refactored = h[1] != 0.0, rc = 0;
+  int refactored = h[1] != 0.0;
   /* a restart on another number of ranks or with another solver cannot rebuild the same factorisation: it
      starts from a fresh one, as a run whose checkpoint holds none (equal to the solver tolerance, not bitwise) */
   if (nnz != A->nnz || A->rows || ls->ops->solve_rtol) {
@@ -287,7 +287,7 @@ static int rebuild_pending(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
   ls->have_symbolic = ls->have_numeric = 0;
   ls->fresh_pending = 0;
   double t0 = now();
-  if (!rc) rc = ls->ops->symbolic(ls->backend, &T, d);
+  int rc = ls->ops->symbolic(ls->backend, &T, d);
   ls->st.t_symbolic += now() - t0;
   if (!rc) ++ls->st.n_symbolic;
   for (int k = 0; k < 1 + refactored && !rc; ++k) {
