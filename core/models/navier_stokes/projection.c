@@ -105,11 +105,13 @@ static int build_divergence(sl_projection *pj, const sl_flow_problem *prob, sl_d
  * so delta = -D grad(phi) / chi with D = (m I + C)^{-1}, on the coupled pair [[m, 2 Omega], [-2 Omega, m]] / (m^2
  * + 4 Omega^2) and 1/m on the other component. Without it (C left to the velocity step alone) the increment's
  * rotated part J grad(phi) / (chi m), divergence-free, is not seen: at Omega / m >> 1 the pressure moves by (m /
- * 2 Omega)^2 of what the geostrophic balance asks and a rotating flow freezes. Keeping C in the correction is the
- * pressure-correction of the rotating shallow-water and Boussinesq equations (Guermond & Shen 2003, Math. Comp.
- * 73:1719, the "Coriolis-in-the-projection" variant; Timmermans, Minev & van de Vosse 1996 for the incremental
- * form). D's in-plane 2 x 2 part times m, T = m P D P^T (P: the components that grad(phi) has): planar the full
- * pair, T = [[m^2, 2 Omega m], [-2 Omega m, m^2]] / (m^2 + 4 Omega^2); axisymmetric (grad phi = (d_r, d_z, 0))
+ * 2 Omega)^2 of what the geostrophic balance asks and a rotating flow freezes. The correction step is GMS 2006's
+ * eq 3.15 with the momentum's other local term linear in u, C, kept beside the mass term (derived here; checks:
+ * Omega = 0 gives eq 3.15 itself, D's inverse is (m I + C) (J^2 = -I), and the inviscid rotating wave turns as the
+ * monolithic step's, docs/transient_cost.md). The weak Poisson operator's antisymmetric part int grad(q).J
+ * grad(phi) is a boundary term only (div J grad(phi) = 0): it gives the oblique condition (D grad(phi)).n = 0,
+ * the correction's no-flux wall. D's in-plane 2 x 2 part times m, T = m P D P^T (P: the components that grad(phi)
+ * has): planar the full pair, T = [[m^2, 2 Omega m], [-2 Omega m, m^2]] / (m^2 + 4 Omega^2); axisymmetric (grad phi = (d_r, d_z, 0))
  * T = diag(m^2 / (m^2 + 4 Omega^2), 1). Omega = 0: the identity. */
 static void correction_tensor(const sl_projection *pj, double m, double T[4]) {
   double w = 2.0 * pj->omega, q = m * m / (m * m + w * w);
@@ -337,12 +339,15 @@ static void predictor_weights(const sl_projection *pj, double m, double h, doubl
 }
 
 /* In a rotating frame the kept velocity takes the rotated part of the correction: with the Coriolis force in
- * the correction step the projected velocity is u = u~ + delta, delta = -D grad(phi) / chi (correction_tensor).
- * Its isotropic part -grad(phi) / (chi m), a gradient, is what the scheme leaves in u~ and the predictor's
- * pressure carries (projection.h); the rest, -(D - I/m) grad(phi) / chi, is the geostrophic adjustment of the
- * velocity to the new pressure (at Omega >> m nearly all of delta, and not a gradient): left out, the kept
- * velocity trails the pressure by a step (a wave loses c dt of its phase at every restart of the increments).
- * It is added to u~ at the velocity nodes, grad(phi) there the lumped L2 projection (B^T phi)_a / int N_a
+ * the correction step the projected velocity is u = u~ + delta, delta = -D grad(phi) / chi (correction_tensor),
+ * D = [[m, 2 Omega], [-2 Omega, m]] / (m^2 + 4 Omega^2) on the coupled pair. Its symmetric part -(m / (m^2 + 4
+ * Omega^2)) grad(phi) / chi, a gradient, is what the scheme leaves in u~ and the predictor's pressure carries
+ * (predictor_weights with sym_mass, as GMS 2006 eq 3.14 does with 1/m); the antisymmetric part -(2 Omega / (m^2 +
+ * 4 Omega^2)) J^T grad(phi) / chi, divergence-free, is the geostrophic adjustment of the velocity to the new
+ * pressure, which no pressure predictor can carry: left out, the kept velocity trails the pressure by a step (the
+ * inviscid wave lost c dt of its phase at the first split step, 0.0033 rad). Carrying the full -(D - I/m) part in
+ * the kept velocity instead (a gradient as large as the increment itself) diverged within three steps at Omega
+ * dt = 10. It is added to u~ at the velocity nodes, grad(phi) there the lumped L2 projection (B^T phi)_a / int N_a
  * (B^T phi = int v . grad(phi), the weak gradient the pressure acts through), the constraints imposed after. */
 static void rotation_correction(sl_projection *pj, sl_flow_problem *prob, double m, double *u) {
   const int32_t nv = pj->nv, nvel = pj->th->vel->n_dofs;
