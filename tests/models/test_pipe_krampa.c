@@ -59,7 +59,7 @@ typedef struct row {
 
 static row rows[MAX_ROWS];
 static int n_rows;
-static char scene_b[8192], scene_a[8192], scene_bt[8192], scene_btb[8192], scene_c[8192];
+static char scene_b[8192], scene_a[8192], scene_bt[8192], scene_btb[8192], scene_c[8192], scene_ct[8192];
 static const char *scene = scene_b;
 static long runs, failures;
 
@@ -100,6 +100,16 @@ static int load(void) {
      no kinetic theory (its viscosity replaced) */
   snprintf(scene_c, sizeof scene_c, "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nmodulation = "
            "simonin\ndispersion = simonin%.*s\n",
+           (int)(kp - scene_b), scene_b, (int)(gran - kp - strlen("kinetic_pressure = false")),
+           kp + strlen("kinetic_pressure = false"));
+  /* model C with k_s and k_fs transported (Krampa eqs 5.20, 5.23) */
+  snprintf(scene_ct, sizeof scene_ct, "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nmodulation = "
+           "simonin\ndispersion = simonin\nsolids_turbulence = transported%.*s\n",
+           (int)(kp - scene_b), scene_b, (int)(gran - kp - strlen("kinetic_pressure = false")),
+           kp + strlen("kinetic_pressure = false"));
+  /* model C with k_s and k_fs transported (Krampa eqs 5.20, 5.23) */
+  snprintf(scene_ct, sizeof scene_ct, "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nmodulation = "
+           "simonin\ndispersion = simonin\nsolids_turbulence = transported%.*s\n",
            (int)(kp - scene_b), scene_b, (int)(gran - kp - strlen("kinetic_pressure = false")),
            kp + strlen("kinetic_pressure = false"));
   return n_rows == 76 ? 0 : 1;
