@@ -154,11 +154,7 @@ int main(void) {
 
   /* 4. the pipe: vertical_pipe.ini as model C, transported */
   static char text[8192], model_c[8192];
-  if (sl_test_read_source("configs/vertical_pipe.ini", text, sizeof text)) return sl_test_summary();
-  char *gran = strstr(text, "\n[closure.granular]");
-  CHECK_MSG(gran != NULL, "vertical_pipe.ini has no [closure.granular]");
-  if (!gran) return sl_test_summary();
-  snprintf(model_c, sizeof model_c, "%.*s\n", (int)(gran - text), text);
+  if (pipe_vertical_without_granular(text, sizeof text, model_c, sizeof model_c)) return sl_test_summary();
   sluice_error err = {0, ""};
   const double rho_f = 997.56, rho_m = 0.25 * 2500.0 + 0.75 * rho_f;
   double G[4] = {0}, Geq = NAN;
