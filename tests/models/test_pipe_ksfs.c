@@ -16,8 +16,9 @@
  *  - the developing pipe (k_s and k_fs convected by the solids): its outlet after 32 m (600 D) is the fully
  *    developed pipe at the outlet's in-situ fraction, -dP/dz to 2e-4, tau_fw to 2e-3, u_s at r/R = 0.4, 0.8 to
  *    1e-3 (measured 6e-5, 9e-4, 3e-4, 2e-4); after the thesis's 4 m the outlet is still developing (printed);
+ *  - Johnson & Jackson's solids wall (its energy flux into k_s): converges, the mixture's momentum to 1e-8;
  *  - bad input: solids_turbulence = transported without solids_viscosity = peirano_leckner, or a misspelt choice,
- *    is refused with exit status 2 and a suggestion. */
+ *    is refused with exit status 2 and a suggestion, before any output is written. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -219,7 +220,28 @@ int main(void) {
     printf("\n");
   }
 
-  /* 6. bad input */
+  /* 6. Johnson & Jackson's solids wall (Krampa's model C wall): its energy flux into k_s at theta = (2/3) k_s;
+     the mixture's momentum with the solids' wall stress */
+  {
+    static char jj[8192];
+    snprintf(jj, sizeof jj, "%s[closure.wall_stress.solids]\nmodel = johnson_jackson\n", model_c);
+    const char *sets[] = {base[0], base[1], base[2], base[3], "pipe.solids_wall=wall_stress", NULL};
+    int rc = pipe_run_text(jj, "vertical_pipe.ini", sets, "pipe_ksfs_jj.h5", &err);
+    CHECK_MSG(rc == 0, "model C transported, Johnson-Jackson walls: %s", err.msg);
+    if (!rc) {
+      double P = pipe_scalar("pipe_ksfs_jj.h5", "pressure_gradient");
+      double tf = pipe_scalar("pipe_ksfs_jj.h5", "wall_shear_stress_fluid");
+      double ts = pipe_scalar("pipe_ksfs_jj.h5", "wall_shear_stress_solid"), bal = 4.0 * (tf + ts) / 0.0532 + rho_m * 9.81;
+      printf("Johnson-Jackson walls: manometric %.2f Pa/m (measured 5524), tau_fw %.3f, tau_sw %.3f Pa; -dP/dz against "
+             "the mixture's momentum %.1e\n",
+             pipe_scalar("pipe_ksfs_jj.h5", "manometric_gradient"), tf, ts, P / bal - 1.0);
+      CHECK_MSG(fabs(P / bal - 1.0) < 1e-8, "-dP/dz %.9g against %.9g", P, bal);
+      CHECK_MSG(ts > 0.0, "tau_sw %.6g: the wall holds no solids", ts);
+    }
+  }
+
+  /* 7. bad input, refused before any output */
+  remove("pipe_ksfs_bad.h5");
   const char *bad1[] = {"pipe.solids_turbulence=transported", NULL};
   int rc = pipe_run_text(model_c, "vertical_pipe.ini", bad1, "pipe_ksfs_bad.h5", &err);
   printf("transported without peirano_leckner: %d, %s\n", rc, err.msg);
@@ -229,5 +251,8 @@ int main(void) {
   rc = pipe_run_text(model_c, "vertical_pipe.ini", bad2, "pipe_ksfs_bad.h5", &err);
   printf("solids_turbulence = transport: %d, %s\n", rc, err.msg);
   CHECK_MSG(rc == 2 && strstr(err.msg, "transported"), "rc %d: %s", rc, err.msg);
+  FILE *f = fopen("pipe_ksfs_bad.h5", "rb");
+  CHECK_MSG(f == NULL, "a refused scene wrote its output");
+  if (f) fclose(f);
   return sl_test_summary();
 }
