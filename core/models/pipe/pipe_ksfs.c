@@ -97,6 +97,18 @@ static int ks_wall(void *user, int c, double *rhs, double *diag, sl_diag *d) {
   return 0;
 }
 
+/* One steady solve of k_s or k_fs (s_iter the iterate), with the developing pipe's convection (pipe_march.c:
+   s_up the last station's). */
+static int solve(pipe *p, sl_cell_scalar_terms *t, const double *s_iter, const double *s_up, double *out,
+                 sl_diag *d) {
+  t->dt = 1e30, t->s_old = s_iter;
+  if (p->march.on) {
+    pipe_march_ksfs(p, s_iter, s_up);
+    t->dt = 1.0, t->cap = p->march.cap, t->s_old = p->march.s_old, t->flux = p->march.rs;
+  }
+  return sl_cell_scalar_solve(&p->cs, t, out, d);
+}
+
 int pipe_ksfs_update(pipe *p, sl_diag *d) {
   const int n = p->n;
   const double e = p->cfg->restitution, sigma = p->cfg->covariance_schmidt;
@@ -125,31 +137,20 @@ int pipe_ksfs_update(pipe *p, sl_diag *d) {
   /* the face gradients are spent once afs and P are formed: their arrays take the sweeps' */
   double *s_new = x, *f_new = gfw, *srcf = gfe, *snkf = gsw, *srcs = gse;
   memcpy(s_new, p->ks, (size_t)n * sizeof(double)), memcpy(f_new, p->kfs, (size_t)n * sizeof(double));
-  sl_cell_scalar_terms t = {.dt = 1e30, .cap = cap, .k = dks, .sink = snk, .boundary_user = p};
   int rc = 0;
   /* the drag couples the pair (K k_fs in k_s's, 2 K S k_s in k_fs's): Gauss-Seidel sweeps, each k_s then k_fs */
   for (int sweep = 0; sweep < 3 && !rc; ++sweep) {
     for (int i = 0; i < n; ++i) srcs[i] = src[i] + p->K[i] * fmax(f_new[i], 0.0);
-    t.source = srcs, t.k = dks, t.sink = snk, t.s_old = p->ks, t.cap = cap;
-    t.boundary = p->ks_wall_energy ? ks_wall : NULL, t.flux = NULL;
-    if (p->march.on) { /* the developing pipe's convection (pipe_march.c) */
-      pipe_march_ksfs(p, p->ks, p->march.ks_up);
-      t.dt = 1.0, t.cap = p->march.cap, t.s_old = p->march.s_old, t.flux = p->march.rs;
-    }
-    if ((rc = sl_cell_scalar_solve(&p->cs, &t, s_new, d))) return sl_diag_prefix(d, rc, "pipe: the k_s equation");
+    sl_cell_scalar_terms t = {.cap = cap, .k = dks, .source = srcs, .sink = snk,
+                              .boundary = p->ks_wall_energy ? ks_wall : NULL, .boundary_user = p};
+    if ((rc = solve(p, &t, p->ks, p->march.ks_up, s_new, d))) return sl_diag_prefix(d, rc, "pipe: the k_s equation");
     for (int i = 0; i < n; ++i) {
       const double K = p->K[i], S = ms[i] / ((1.0 - p->phi[i]) * p->rho_f), tfs = pipe_tfs(p, i);
       srcf[i] = K * (2.0 * p->k[i] + 2.0 * S * fmax(s_new[i], 0.0)) + fmax(afs[i], 0.0) * fmax(p->kfs[i], 0.0);
       snkf[i] = K * (1.0 + S) + ms[i] / tfs + fmax(-afs[i], 0.0);
     }
-    t.source = srcf, t.k = dfs, t.sink = snkf, t.s_old = p->kfs, t.cap = cap, t.boundary = NULL, t.dt = 1e30;
-    t.flux = NULL;
-    if (p->march.on) {
-      pipe_march_ksfs(p, p->kfs, p->march.kfs_up);
-      t.dt = 1.0, t.cap = p->march.cap, t.s_old = p->march.s_old, t.flux = p->march.rs;
-    }
-    if ((rc = sl_cell_scalar_solve(&p->cs, &t, f_new, d))) return sl_diag_prefix(d, rc, "pipe: the k_fs equation");
-    t.dt = 1e30;
+    t = (sl_cell_scalar_terms){.cap = cap, .k = dfs, .source = srcf, .sink = snkf};
+    if ((rc = solve(p, &t, p->kfs, p->march.kfs_up, f_new, d))) return sl_diag_prefix(d, rc, "pipe: the k_fs equation");
   }
   const double w = p->iterations > 0 ? p->relax : 1.0; /* under-relaxed as the velocities */
   for (int i = 0; i < n; ++i) {
