@@ -727,6 +727,13 @@ static int solve_opts(sl_flow *f, double *u, int *iterations, int steady, sl_dia
     const sl_scene *sc = f->sc;
     o.predicted = 1;
     o.load_scale = f->load_scale;
+    /* a linear step from a velocity at the round-off of the speed the data set (a vessel at rest, whose
+       velocity the round-off test keeps at the predictor's) assembles its residual alone first (newton.h) */
+    if (o.linear && f->u_data > 0.0) {
+      double umax = 0.0;
+      for (int32_t i = 0; i < f->th->p_offset; ++i) umax = fmax(umax, fabs(u[i]));
+      o.residual_first = umax <= SL_NEWTON_ROUNDOFF * f->u_data;
+    }
     if (sc->time.adaptive && !sl_scene_given(sc, &sc->solver.nonlinear_tolerance))
       o.rtol = fmax(o.rtol, SL_FLOW_STEP_NEWTON_FRACTION * sc->time.tolerance);
   }
