@@ -103,12 +103,22 @@ static int linear_residual(sl_flow_problem *p, const double *u, double *b, sl_di
   return 0;
 }
 
+/* A problem linear in u (Stokes flow of a Newtonian fluid: the density, a cell's drag and the frame's terms are
+ * linear in u) at u = 0 exactly: -R(0) is the load alone, whatever A holds (A 0 = 0), so its residual needs the
+ * load's assembly only (a vessel at rest, whose every step starts there). */
+static int linear_at_zero(const sl_flow_problem *p, const double *u) {
+  if (p->opts.convection || p->opts.viscosity) return 0;
+  for (int32_t i = 0; i < p->th->n_dofs; ++i)
+    if (u[i] != 0.0) return 0;
+  return 1;
+}
+
 int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_csr *A, double *b, sl_diag *d) {
   sl_flow_problem *p = user;
   static const sl_flow_linearisation lin[] = {SL_FLOW_RESIDUAL, SL_FLOW_NEWTON, SL_FLOW_PICARD};
   if (A != &p->sys.A || b != p->sys.b)
     return sl_diag_set(d, SL_EBADINPUT, "flow: assemble into the problem's own system");
-  if (mode == SL_NL_RESIDUAL && matrix_current(p)) return linear_residual(p, u, b, d);
+  if (mode == SL_NL_RESIDUAL && (matrix_current(p) || linear_at_zero(p, u))) return linear_residual(p, u, b, d);
   if (mode != SL_NL_RESIDUAL) p->matrix.valid = 0;
   int rc = sl_assemble_flow(&p->sys, p->th, u, &p->opts, lin[mode], d);
   if (!rc) rc = add_tractions(p, &p->sys, d);
