@@ -158,12 +158,12 @@ static void settling_box(void) {
 }
 
 /* A linear step whose residual at the predictor is at the round-off of its load's terms is not solved
- * (core/solve/newton.h load_scale): the box at rest with every step's flow solved assembles the load alone, never
+ * (core/solve/newton.h load_scale; the monolithic step's): the box at rest with every step's flow solved assembles the load alone, never
  * a matrix, factorises nothing and stays at j = 0 exactly; a box whose phi varies across it (0.12 left of the
  * middle, 0.08 right) moves, and every one of its steps assembles its matrix and solves. */
 static void roundoff_steps(void) {
   box_scene s = {.n = quick ? 8 : 20, .rho_s = 1006.0, .settling = 1, .end = 100.0, .dt = 10.0, .every = 100.0,
-                 .solve_every_step = 1};
+                 .solve_every_step = 1, .monolithic = 1};
   sl_diag d = {{0}};
   sluice_summary res;
   int rc = box_run(&s, "balance_roundoff.h5", &res, &d);
