@@ -17,6 +17,7 @@
  * the body's Omega. Not with periodic sides, column_form or a transported
  * granular temperature (not verified there). */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -79,6 +80,7 @@ int tfp_body_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, const 
   memcpy(b, mesh_b, (size_t)n_mesh_b * sizeof *b);
   b[n_mesh_b] = (tfp_boundary){.type = TFP_WALL, .solids = TFP_SOLIDS_NO_SLIP, .angular_velocity = cfg->body_omega};
   m->body_cells = cells, m->n_bodies = 1;
+  snprintf(m->body_names[0], sizeof m->body_names[0], "body");
   m->b = b, m->n_b = n_mesh_b + 1;
   *all = b;
   return 0;
