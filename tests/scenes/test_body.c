@@ -10,6 +10,8 @@
  *   axial profile against the exact annular Poiseuille profile and the swirl
  *   against Couette's (Bird, Stewart & Lightfoot 2002, Examples 2.4-1 and
  *   3.6-3) on 16, 32, 64 cells across the gap, second order.
+ * - torque: the same annulus one cell high between slip walls: the torque on the rotor against Couette's exact
+ *   torque between coaxial cylinders, second order, and balanced by the vessel's to round-off.
  * - centrifugal: configs/couette_two_phase.ini with centrifugal = true and
  *   neutrally buoyant solids: the radial pressure of the Couette swirl,
  *   dp/dr = rho u_theta^2 / r, integrated exactly,
@@ -125,6 +127,40 @@ static void annulus_order(void) {
   CHECK_MSG(ez[1] < 0.01 && et[1] < 0.01, "annulus: errors %.3g, %.3g on 32 cells", ez[1], et[1]);
   CHECK_MSG(pz1 > 1.8 && pz2 > 1.8, "annulus: u_z order %.2f, %.2f", pz1, pz2);
   CHECK_MSG(pt1 > 1.8 && pt2 > 1.8, "annulus: u_theta order %.2f, %.2f", pt1, pt2);
+}
+
+/* The torque on the blocked rotor (two_fluid_plane_swirl.c) against Couette's between coaxial cylinders, the inner
+ * one turning at omega, the outer at rest: T = 2 pi r_i^2 L tau(r_i) = -4 pi mu L omega r_i^2 r_o^2 / (r_o^2 -
+ * r_i^2) on the rotor (Bird, Stewart & Lightfoot 2002, Example 3.6-3; mu = 1 Pa s, L = 0.2 m), its opposite on the
+ * vessel. The scene's bottom and top become slip walls (no torque, no flow through them) on one row of cells, so
+ * that the swirl is Couette's at every height; 16, 32, 64 cells across the gap. Asserted: the torque within 0.5 %
+ * on 32 cells and second order, the mean azimuthal stress on the rotor's side at order 2 towards tau(r_i), and the
+ * torques on rotor and vessel opposite to round-off (the discrete angular momentum is conserved). */
+static void annulus_torque(void) {
+  const double L = 0.2, MU = 1.0;
+  const double T = -4.0 * M_PI * MU * L * OMEGA * RI * RI * RO * RO / (RO * RO - RI * RI), tau = T / (2 * M_PI * RI * RI * L);
+  double e[3], es[3];
+  for (int l = 0; l < 3; ++l) {
+    int n = 16 << l;
+    char cells[64];
+    snprintf(cells, sizeof cells, "mesh.cells=%d,1", n + n / 2);
+    const char *sets[] = {cells, "boundary.top.type=slip", NULL};
+    const char *out = "body_torque.h5";
+    if (run_ok("annulus_blocked", "boundary.bottom", "[boundary.bottom]\ntype = slip\n", sets, out)) return;
+    double tb = scalar(out, "torque_body", INFINITY), tv = scalar(out, "torque_right", INFINITY);
+    double tf = scalar(out, "torque_fluid_body", INFINITY), ts = scalar(out, "torque_solid_body", INFINITY);
+    double sb = scalar(out, "wall_shear_stress_theta_fluid_body", INFINITY);
+    e[l] = fabs(tb - T) / fabs(T), es[l] = fabs(sb - tau) / fabs(tau);
+    printf("  torque on the blocked rotor, %d cells across the gap: %.6e N m (Couette %.6e, error %.2e), on the "
+           "vessel %.6e, mean stress on the rotor %.5f Pa (%.5f)\n", n, tb, T, e[l], tv, sb, tau);
+    CHECK_MSG(fabs(tb + tv) <= 1e-12 * fabs(T), "torque: rotor %.17g and vessel %.17g do not balance", tb, tv);
+    CHECK_MSG(tf == tb && ts == 0.0, "torque: clear fluid, fluid %.17g solids %.17g of %.17g", tf, ts, tb);
+  }
+  double p1 = log2(e[0] / e[1]), p2 = log2(e[1] / e[2]), q1 = log2(es[0] / es[1]), q2 = log2(es[1] / es[2]);
+  printf("  torque order %.2f, %.2f; the rotor's mean azimuthal stress order %.2f, %.2f\n", p1, p2, q1, q2);
+  CHECK_MSG(e[1] < 5e-3, "torque: error %.3g on 32 cells", e[1]);
+  CHECK_MSG(p1 > 1.8 && p2 > 1.8, "torque: order %.2f, %.2f", p1, p2);
+  CHECK_MSG(q1 > 1.8 && q2 > 1.8, "torque: the stress's order %.2f, %.2f", q1, q2);
 }
 
 /* Couette's pressure: p(r) up to a constant, rho = 1000 */
@@ -250,10 +286,10 @@ int main(int argc, char **argv) {
   snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
   const char *part = argc > 1 ? argv[1] : "";
   if (strcmp(part, "viscometer_tip") == 0) viscometer_tip();
-  else if (strcmp(part, "annulus") == 0) annulus_equivalence(), annulus_order();
+  else if (strcmp(part, "annulus") == 0) annulus_equivalence(), annulus_order(), annulus_torque();
   else if (strcmp(part, "centrifugal") == 0) centrifugal_order();
   else if (strcmp(part, "bad_input") == 0) bad_input();
   else if (*part) return fprintf(stderr, "unknown part '%s'\n", part), 2;
-  else annulus_equivalence(), annulus_order(), centrifugal_order(), bad_input();
+  else annulus_equivalence(), annulus_order(), annulus_torque(), centrifugal_order(), bad_input();
   return sl_test_summary();
 }
