@@ -12,13 +12,15 @@
  *   3.6-3) on 16, 32, 64 cells across the gap, second order.
  * - torque: the same annulus one cell high between slip walls: the torque on the rotor against Couette's exact
  *   torque between coaxial cylinders, second order, and balanced by the vessel's to round-off.
+ * - named bodies: the rotor as two [body.NAME] halves equals the single [body] to round-off, torques adding up.
  * - centrifugal: configs/couette_two_phase.ini with centrifugal = true and
  *   neutrally buoyant solids: the radial pressure of the Couette swirl,
  *   dp/dr = rho u_theta^2 / r, integrated exactly,
  *     p(r) = rho (A^2 r^2 / 2 + 2 A B ln r - B^2 / (2 r^2)) + const,
  *   u_theta = A r + B / r, on 16, 32, 64 cells, second order; denser solids
  *   move outwards (and stay uniform without the key).
- * - bad input: [body] and centrifugal keys refused with file:line.
+ * - bad input: [body], [body.NAME] (overlapping, outside the domain, named like a boundary, without a box, an
+ *   unknown key) and centrifugal keys refused with file:line.
  * - viscometer_tip (long): configs/viscometer_rotor_tip.ini, the rotor's tip
  *   in the fluidised bed (Pringle 2001 5.6): the porosity below the tip,
  *   with the swirl one-way and two-way. */
@@ -219,6 +221,38 @@ static void centrifugal_order(void) {
   }
 }
 
+/* Named bodies ([body.NAME]): the rotor as two bodies, its lower and upper half, touching at z = 0.1 m: the fields
+ * equal the single [body]'s to round-off (the faces between them are dead, as inside one body), and the two
+ * halves' torques add up to the whole rotor's. */
+static void named_bodies(void) {
+  const char *two = "[body.lower]\nbox = 0, 0.015, 0, 0.1\nangular_velocity = 10\n\n"
+                    "[body.upper]\nbox = 0, 0.015, 0.1, 0.2\nangular_velocity = 10\n";
+  const char *sets[] = {NULL};
+  sl_diag d = {{0}};
+  int rc = run_replaced("annulus_blocked", NULL, NULL, sets, "body_one.h5", &d);
+  CHECK_MSG(rc == 0, "one body: %s", d.msg);
+  if (!rc) rc = run_replaced("annulus_blocked", "body", two, sets, "body_two.h5", &d);
+  CHECK_MSG(rc == 0, "two bodies: %s", d.msg);
+  if (rc) return;
+  static const char *const names[3] = {"velocity_fluid", "swirl_fluid", "pressure"};
+  for (int k = 0; k < 3; ++k) {
+    int n1 = 0, n2 = 0;
+    double *a = field_at("body_one.h5", names[k], INFINITY, &n1, NULL), *b = field_at("body_two.h5", names[k], INFINITY, &n2, NULL);
+    CHECK_MSG(a && b && n1 == n2 && n1 > 0, "%s: %d, %d cells", names[k], n1, n2);
+    double diff = 0.0, big = 0.0;
+    int nv = k == 0 ? 3 * n1 : n1;
+    for (int i = 0; a && b && n1 == n2 && i < nv; ++i) diff = fmax(diff, fabs(a[i] - b[i])), big = fmax(big, fabs(a[i]));
+    printf("  named bodies: %s of two bodies against one: largest difference %.2e of %.3e\n", names[k], diff, big);
+    CHECK_MSG(big > 0.0 && diff <= 1e-12 * big, "%s: difference %.3g of %.3g", names[k], diff, big);
+    free(a), free(b);
+  }
+  double t1 = scalar("body_one.h5", "torque_body", INFINITY);
+  double tl = scalar("body_two.h5", "torque_lower", INFINITY), tu = scalar("body_two.h5", "torque_upper", INFINITY);
+  printf("  named bodies: torque %.6e + %.6e = %.6e N m against the single body's %.6e\n", tl, tu, tl + tu, t1);
+  CHECK_MSG(fabs(tl + tu - t1) <= 1e-12 * fabs(t1) && tl < 0.0 && tu < 0.0, "torques %.17g + %.17g against %.17g", tl,
+            tu, t1);
+}
+
 static void bad_input(void) {
   /* the [body] section replaced in the scene file (its errors name the file's line) */
   struct {
@@ -229,6 +263,13 @@ static void bad_input(void) {
                                                                   "not on a grid line"},
       {"[body]\nbox = 0, 0.045, 0, 0.2\n", "annulus_blocked.ini:63: [body] box: it holds all of the mesh's"},
       {"[body]\nangular_velocity = 10\n", "annulus_blocked.ini:63: [body] angular_velocity: the body needs its box"},
+      {"[body.a]\nbox = 0, 0.015, 0, 0.1\n[body.b]\nbox = 0.0075, 0.015, 0.05, 0.2\n",
+       "annulus_blocked.ini:65: [body.b] box = 0.0075, 0.015, 0.05, 0.2: overlaps"},
+      {"[body.a]\nbox = 0, 0.015, 0, 0.3\n", "annulus_blocked.ini:63: [body.a] box = 0, 0.015, 0, 0.3: outside the "
+                                             "domain"},
+      {"[body.right]\nbox = 0, 0.015, 0, 0.1\n", "annulus_blocked.ini:62: [body.right]: the name of a boundary"},
+      {"[body.a]\nangular_velocity = 10\n", "annulus_blocked.ini:62: [body.a]: the body needs its box"},
+      {"[body.a]\nbox = 0, 0.015, 0, 0.1\nradius = 3\n", "annulus_blocked.ini:64:1: error: [body.a] radius"},
   };
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
     sl_diag d = {{0}};
@@ -304,10 +345,10 @@ int main(int argc, char **argv) {
   snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
   const char *part = argc > 1 ? argv[1] : "";
   if (strcmp(part, "viscometer_tip") == 0) viscometer_tip();
-  else if (strcmp(part, "annulus") == 0) annulus_equivalence(), annulus_order(), annulus_torque();
+  else if (strcmp(part, "annulus") == 0) annulus_equivalence(), annulus_order(), annulus_torque(), named_bodies();
   else if (strcmp(part, "centrifugal") == 0) centrifugal_order();
   else if (strcmp(part, "bad_input") == 0) bad_input();
   else if (*part) return fprintf(stderr, "unknown part '%s'\n", part), 2;
-  else annulus_equivalence(), annulus_order(), annulus_torque(), centrifugal_order(), bad_input();
+  else annulus_equivalence(), annulus_order(), annulus_torque(), named_bodies(), centrifugal_order(), bad_input();
   return sl_test_summary();
 }

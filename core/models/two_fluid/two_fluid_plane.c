@@ -377,8 +377,8 @@ static int swirl_setup(tfp_run *r, sl_diag *d) {
         double rw = side == SL_SIDE_LEFT ? g->xf[0] : side == SL_SIDE_RIGHT ? g->xf[g->nx] : g->xf[k + 1];
         if (b->type == TFP_WALL) r->m.c.v_ref = fmax(r->m.c.v_ref, fabs(b->angular_velocity) * rw);
       }
-    if (r->m.n_bodies) /* the body's outer radius */
-      r->m.c.v_ref = fmax(r->m.c.v_ref, fabs(r->cfg->body_omega) * fmin(r->cfg->body_box.v[1], g->xf[g->nx]));
+    for (int k = 0; k < r->m.n_bodies; ++k) /* each body's outer radius */
+      r->m.c.v_ref = fmax(r->m.c.v_ref, fabs(r->m.b[r->m.n_b - r->m.n_bodies + k].angular_velocity) * r->m.body_r1[k]);
   }
   if (!r->m.axi)
     return sl_diag_set(d, SL_EBADINPUT, "%s: [two_fluid] swirl: only an axisymmetric scene has a swirl "
@@ -416,11 +416,8 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   if (!rc) rc = tfp_body_bind(&r->m, sc, r->cfg, r->b, r->mesh->n_boundaries, &r->ball, d);
   if (!rc) rc = tfp_setup(&r->m, d);
   if (!rc) rc = tfp_solids_bind(&r->m, sc, r->cfg, d);
-  if (!rc && r->m.n_bodies && r->m.s.granular && !r->m.s.algebraic) {
-    char at[400];
-    rc = sl_diag_set(d, SL_EBADINPUT, "%s: [body]: not with a transported granular temperature",
-                     sl_scene_where(sc, &r->cfg->body_box, at, sizeof at));
-  }
+  if (!rc && r->m.n_bodies && r->m.s.granular && !r->m.s.algebraic)
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: not with a transported granular temperature", r->m.body_where[0]);
   if (!rc) rc = tfp_dispersion_bind(&r->m, sc, r->cfg, d);
   /* the phases' convective acceleration, off by default as in the 1-D column (which has none) */
   r->m.convection = sc->flow.convection;

@@ -126,6 +126,8 @@ typedef struct tfp_model {
   int n_bodies;
   int *body_cells;
   char body_names[TFP_BODIES_MAX][64]; /* [n_bodies]: "body" for [body], NAME for [body.NAME] (output scalars) */
+  char body_where[TFP_BODIES_MAX][320]; /* [n_bodies]: "FILE:LINE: [body.NAME]", for messages */
+  double body_r1[TFP_BODIES_MAX];       /* [n_bodies]: the body's outer radius inside the domain (x1) */
   int centrifugal; /* [two_fluid] centrifugal: rho alpha u_theta^2 / r of the swirl in the radial momentum */
   /* per boundary b, of the last converged step (walls): [5 b] the fluid's and [5 b + 1] the solids' mean shear
      stress on it, [5 b + 2] the mean solids slip, [5 b + 3] the mean Bagnold number of the wall closure (NAN:
