@@ -176,6 +176,10 @@ int sl_scene_require(const sl_scene *sc, const void *field, sl_diag *d);
 int sl_scene_locate(const sl_scene *sc, int rc, sl_diag *d);
 /* 1 when the scene file has the section (e.g. "time"). */
 int sl_scene_has_section(const sl_scene *sc, const char *section);
+/* The i-th [family.NAME] section of the scene (a named family: its keys flagged SL_KEY_NAMED), in the file's
+ * order; NULL past the last. Its keys were checked against the family's; the model reads their values with the
+ * core/config getters (sl_ini_get_real and the like, on sc->ini and the section's name). */
+const sl_ini_section *sl_scene_named_section(const sl_scene *sc, const char *family, int i);
 
 /* Boundary i's struct, and its name. */
 static inline void *sl_scene_boundary(const sl_scene *sc, int i) {
