@@ -85,11 +85,13 @@ int tfp_body_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, const 
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [body] angular_velocity: the body needs its box (box = x0, x1, y0, "
                                         "y1)", om->file, om->line);
   int n = box ? 1 : 0;
-  while (sl_scene_named_section(sc, "body", n - (box ? 1 : 0))) ++n;
+  const char *name;
+  sl_src sec;
+  while (sl_scene_named(sc, "body", n - (box ? 1 : 0), &name, &sec)) ++n;
   if (!n) return 0;
   if (n > TFP_BODIES_MAX) {
-    const sl_ini_section *sec = sl_scene_named_section(sc, "body", TFP_BODIES_MAX - (box ? 1 : 0));
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: at most %d bodies in a scene", sec->file, sec->line, sec->name,
+    sl_scene_named(sc, "body", TFP_BODIES_MAX - (box ? 1 : 0), &name, &sec);
+    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: at most %d bodies in a scene", sec.file, sec.line, sec.section,
                        TFP_BODIES_MAX);
   }
   const int nc = m->grid.nx * m->grid.ny;
@@ -112,10 +114,10 @@ int tfp_body_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, const 
       memcpy(v, cfg->body_box.v, sizeof v), nv = cfg->body_box.n, omega = cfg->body_omega, has_omega = om != NULL;
       snprintf(what, sizeof what, "%s", box->value);
     } else { /* [body.NAME]: its keys were checked against [body]'s (the scene's named family) */
-      const sl_ini_section *sec = sl_scene_named_section(sc, "body", k - (box ? 1 : 0));
-      const char *name = sec->name + 5;
+      int j = k - (box ? 1 : 0);
+      sl_scene_named(sc, "body", j, &name, &sec);
       snprintf(m->body_names[k], sizeof m->body_names[k], "%s", name);
-      snprintf(m->body_where[k], sizeof m->body_where[k], "%s:%d: [%s]", sec->file, sec->line, sec->name);
+      snprintf(m->body_where[k], sizeof m->body_where[k], "%s:%d: [%s]", sec.file, sec.line, sec.section);
       for (int q = 0; q < n_mesh_b && !rc; ++q)
         if (strcmp(sc->mesh->boundary_names[q], name) == 0)
           rc = sl_diag_set(d, SL_EBADINPUT, "%s: the name of a boundary of the mesh (the output's scalars name "
@@ -123,21 +125,21 @@ int tfp_body_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, const 
       for (int q = box ? 1 : 0; q < k && !rc; ++q)
         if (strcmp(m->body_names[q], name) == 0)
           rc = sl_diag_set(d, SL_EBADINPUT, "%s: a second body named %s", m->body_where[k], name);
-      const sl_ini_entry *eb = sl_ini_find(sc->ini, sec->name, "box"), *eo = sl_ini_find(sc->ini, sec->name,
-                                                                                          "angular_velocity");
-      if (!rc && !eb)
+      sl_src eb, eo;
+      int no = 0;
+      if (!rc) rc = sl_scene_named_reals(sc, "body", j, "box", v, 4, &nv, &eb, d);
+      if (!rc && !eb.file)
         rc = sl_diag_set(d, SL_EBADINPUT, "%s: the body needs its box (box = x0, x1, y0, y1)", m->body_where[k]);
       if (!rc) {
-        snprintf(m->body_where[k], sizeof m->body_where[k], "%s:%d: [%s]", eb->file, eb->line, sec->name);
-        snprintf(what, sizeof what, "%s", eb->value);
-        rc = sl_ini_get_real_list(sc->ini, sec->name, "box", 1, v, 4, &nv, d);
+        snprintf(m->body_where[k], sizeof m->body_where[k], "%s:%d: [%s]", eb.file, eb.line, sec.section);
+        snprintf(what, sizeof what, "%s", eb.value);
+        rc = sl_scene_named_reals(sc, "body", j, "angular_velocity", &omega, 1, &no, &eo, d);
       }
-      if (!rc && eo) {
+      if (!rc && eo.file) {
         has_omega = 1;
-        rc = sl_ini_get_real(sc->ini, sec->name, "angular_velocity", 1, 0.0, -1e6, 1e6, &omega, d);
-        if (!rc && !cfg->swirl)
+        if (!cfg->swirl)
           rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] angular_velocity: only with [two_fluid] swirl = true",
-                           eo->file, eo->line, sec->name);
+                           eo.file, eo.line, sec.section);
       }
     }
     if (!rc && has_omega && !cfg->swirl && k == 0 && box)
