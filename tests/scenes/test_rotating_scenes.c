@@ -33,7 +33,15 @@
  *  - waves_inviscid_free_slip (long): the same with the wall a free-slip wall
  *    ([boundary.wall] type = slip on the circle, core/assembly/slip.h: no
  *    flux, no tangential stress; the slip is the flow's own): within 5 % of
- *    c t at every output t = 2-20 and the fitted rate within 3 % of c. */
+ *    c t at every output t = 2-20 and the fitted rate within 3 % of c;
+ *  - waves_viscous_free_slip (long): the scene's E = 1e-5 to t = 150 with the
+ *    free-slip wall on the coarse disc: the amplitude's decay rate under a
+ *    tenth of the no-slip reference 0.0316, the angle within 10 % of c t at
+ *    t = 2-10, the vortex centre's rate within 5 % of the m = 1 mode's;
+ *  - centre: the vortex centre of sl_stream_centre (the extremum of psi from
+ *    a local quadratic fit) on analytic fields: a quadratic's to round-off,
+ *    a smooth vortex's at third order (quadrilaterals and triangles); and on
+ *    the wave's initial state (part waves) within h/20 of the exact maximum. */
 #include <complex.h>
 #include <math.h>
 #include <stdio.h>

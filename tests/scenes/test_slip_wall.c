@@ -19,7 +19,12 @@
  *    term: a wall with du/dr = 0 instead would give another profile). The
  *    largest nodal velocity error on 32 x 4, 64 x 8, 128 x 16 cells, and its
  *    observed order: at least 1.9 on straight cells (the polygon's O(h^2)
- *    geometry), at least 3.5 on curved cells (measured 2.00, 2.00 and 3.74, 3.86). */
+ *    geometry), at least 3.5 on curved cells (measured 2.00, 2.00 and 3.74, 3.86);
+ *  - shell: axisymmetric, both spheres of a spherical shell free-slip walls
+ *    (curved, meeting the axis at corners), in a frame turning at Omega: the
+ *    rigid counter-rotation u_theta = -2 Omega r stays exact to round-off
+ *    (velocity, no flux through the spheres, p = rho Omega^2 r^2/2 + const at
+ *    the vertices), straight and curved cells, monolithic and projection. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
