@@ -40,41 +40,68 @@ SCENE_RUNNERS()
 
 static const double R1 = 0.5, R2 = 1.0;
 
-/* The annulus in nt x nr quadrilaterals, Gmsh MSH 2.2 ASCII; order 2: 9-node cells with their nodes on the
- * circles (second-order geometry). Physical groups: the curves "inner" and "outer", the surface "ring". */
-static int write_annulus_at(const char *path, int nt, int nr, int order, double cx) {
+/* The annulus R1 < r < R2 about (cx, 0) in nt x nr quadrilaterals, Gmsh MSH 2.2 ASCII; order 2: 9-node cells
+ * with their nodes on the circles (second-order geometry). Physical groups: the curves "inner" and "outer", the
+ * surface "ring". shell: only its half x >= 0 (cx = 0), the meridian of the spherical shell R1 < rho < R2 of an
+ * axisymmetric scene (x = r, y = z), the polar angle phi in [-pi/2, pi/2] from the equator, and the curve
+ * "axis" (the two segments of r = 0) besides; the surface is "shell". */
+static int write_polar(const char *path, int nt, int nr, int order, double cx, int shell) {
   FILE *f = fopen(path, "w");
   if (!f) return 1;
-  int NI = order * nt, NJ = order * nr + 1; /* the lattice of nodes, periodic in I */
-  fprintf(f, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 1 \"inner\"\n1 2 \"outer\"\n2 3 "
-             "\"ring\"\n$EndPhysicalNames\n$Nodes\n%d\n", NI * NJ);
+  int o = order, NI = o * nt + (shell ? 1 : 0), NJ = o * nr + 1; /* the lattice of nodes, periodic in I if a ring */
+  int surface = shell ? 4 : 3;
+  if (shell)
+    fprintf(f, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n4\n1 1 \"inner\"\n1 2 \"outer\"\n1 3 "
+               "\"axis\"\n2 4 \"shell\"\n$EndPhysicalNames\n$Nodes\n%d\n", NI * NJ);
+  else
+    fprintf(f, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 1 \"inner\"\n1 2 \"outer\"\n2 3 "
+               "\"ring\"\n$EndPhysicalNames\n$Nodes\n%d\n", NI * NJ);
   for (int J = 0; J < NJ; ++J)
     for (int I = 0; I < NI; ++I) {
-      double th = 2 * M_PI * I / NI, r = R1 + (R2 - R1) * J / (NJ - 1);
-      fprintf(f, "%d %.17g %.17g 0\n", 1 + J * NI + I, cx + r * cos(th), r * sin(th));
+      double r = R1 + (R2 - R1) * J / (NJ - 1), x, y;
+      if (shell) { /* the axis's nodes exactly on x = 0 */
+        double ph = -M_PI / 2 + M_PI * I / (NI - 1);
+        x = I == 0 || I == NI - 1 ? 0.0 : r * cos(ph), y = I == 0 ? -r : I == NI - 1 ? r : r * sin(ph);
+      } else {
+        double th = 2 * M_PI * I / NI;
+        x = cx + r * cos(th), y = r * sin(th);
+      }
+      fprintf(f, "%d %.17g %.17g 0\n", 1 + J * NI + I, x, y);
     }
 #define ND(I, J) (1 + (J) * NI + ((I) % NI))
-  fprintf(f, "$EndNodes\n$Elements\n%d\n", 2 * nt + nt * nr);
-  int e = 0, o = order;
+  fprintf(f, "$EndNodes\n$Elements\n%d\n", 2 * nt + (shell ? 2 * nr : 0) + nt * nr);
+  int e = 0;
   for (int side = 0; side < 2; ++side)
     for (int i = 0; i < nt; ++i) {
       int J = side ? NJ - 1 : 0;
       if (order == 1) fprintf(f, "%d 1 2 %d %d %d %d\n", ++e, side + 1, side + 1, ND(i, J), ND(i + 1, J));
       else fprintf(f, "%d 8 2 %d %d %d %d %d\n", ++e, side + 1, side + 1, ND(o * i, J), ND(o * i + o, J), ND(o * i + 1, J));
     }
+  for (int end = 0; shell && end < 2; ++end)
+    for (int j = 0; j < nr; ++j) {
+      int I = end ? NI - 1 : 0;
+      if (order == 1) fprintf(f, "%d 1 2 3 3 %d %d\n", ++e, ND(I, j), ND(I, j + 1));
+      else fprintf(f, "%d 8 2 3 3 %d %d %d\n", ++e, ND(I, o * j), ND(I, o * j + o), ND(I, o * j + 1));
+    }
   for (int j = 0; j < nr; ++j)
     for (int i = 0; i < nt; ++i) { /* counter-clockwise: outward in r, then on in theta */
       int I = o * i, J = o * j;
       if (order == 1) {
-        fprintf(f, "%d 3 2 3 3 %d %d %d %d\n", ++e, ND(I, J), ND(I, J + 1), ND(I + 1, J + 1), ND(I + 1, J));
+        fprintf(f, "%d 3 2 %d %d %d %d %d %d\n", ++e, surface, surface, ND(I, J), ND(I, J + 1), ND(I + 1, J + 1),
+                ND(I + 1, J));
       } else {
-        fprintf(f, "%d 10 2 3 3 %d %d %d %d %d %d %d %d %d\n", ++e, ND(I, J), ND(I, J + 2), ND(I + 2, J + 2),
-                ND(I + 2, J), ND(I, J + 1), ND(I + 1, J + 2), ND(I + 2, J + 1), ND(I + 1, J), ND(I + 1, J + 1));
+        fprintf(f, "%d 10 2 %d %d %d %d %d %d %d %d %d %d %d\n", ++e, surface, surface, ND(I, J), ND(I, J + 2),
+                ND(I + 2, J + 2), ND(I + 2, J), ND(I, J + 1), ND(I + 1, J + 2), ND(I + 2, J + 1), ND(I + 1, J),
+                ND(I + 1, J + 1));
       }
     }
 #undef ND
   fprintf(f, "$EndElements\n");
   return fclose(f) != 0;
+}
+
+static int write_annulus_at(const char *path, int nt, int nr, int order, double cx) {
+  return write_polar(path, nt, nr, order, cx, 0);
 }
 
 static int write_annulus(const char *path, int nt, int nr, int order) { return write_annulus_at(path, nt, nr, order, 0.0); }
@@ -263,52 +290,6 @@ static void normals(void) {
 
 /* ---- an axisymmetric vessel with curved free-slip walls --------------------------------------------------------- */
 
-/* The spherical shell R1 < rho < R2 of an axisymmetric scene, its meridian half-annulus in the (r, z) plane
- * (x = r, y = z) in nt x nr quadrilaterals, the polar angle phi in [-pi/2, pi/2] from the equator; order 2:
- * 9-node cells with their nodes on the circles. Physical groups: the curves "inner" and "outer" (the spheres)
- * and "axis" (the two segments of r = 0), the surface "shell". */
-static int write_shell(const char *path, int nt, int nr, int order) {
-  FILE *f = fopen(path, "w");
-  if (!f) return 1;
-  int NI = order * nt + 1, NJ = order * nr + 1, o = order;
-  fprintf(f, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n4\n1 1 \"inner\"\n1 2 \"outer\"\n1 3 "
-             "\"axis\"\n2 4 \"shell\"\n$EndPhysicalNames\n$Nodes\n%d\n", NI * NJ);
-  for (int J = 0; J < NJ; ++J)
-    for (int I = 0; I < NI; ++I) {
-      double ph = -M_PI / 2 + M_PI * I / (NI - 1), rho = R1 + (R2 - R1) * J / (NJ - 1);
-      double x = I == 0 || I == NI - 1 ? 0.0 : rho * cos(ph), y = I == 0 ? -rho : I == NI - 1 ? rho : rho * sin(ph);
-      fprintf(f, "%d %.17g %.17g 0\n", 1 + J * NI + I, x, y);
-    }
-#define ND(I, J) (1 + (J) * NI + (I))
-  fprintf(f, "$EndNodes\n$Elements\n%d\n", 2 * nt + 2 * nr + nt * nr);
-  int e = 0;
-  for (int side = 0; side < 2; ++side)
-    for (int i = 0; i < nt; ++i) {
-      int J = side ? NJ - 1 : 0;
-      if (order == 1) fprintf(f, "%d 1 2 %d %d %d %d\n", ++e, side + 1, side + 1, ND(i, J), ND(i + 1, J));
-      else fprintf(f, "%d 8 2 %d %d %d %d %d\n", ++e, side + 1, side + 1, ND(o * i, J), ND(o * i + o, J), ND(o * i + 1, J));
-    }
-  for (int end = 0; end < 2; ++end)
-    for (int j = 0; j < nr; ++j) {
-      int I = end ? NI - 1 : 0;
-      if (order == 1) fprintf(f, "%d 1 2 3 3 %d %d\n", ++e, ND(I, j), ND(I, j + 1));
-      else fprintf(f, "%d 8 2 3 3 %d %d %d\n", ++e, ND(I, o * j), ND(I, o * j + o), ND(I, o * j + 1));
-    }
-  for (int j = 0; j < nr; ++j)
-    for (int i = 0; i < nt; ++i) { /* counter-clockwise: outward in rho, then on in phi */
-      int I = o * i, J = o * j;
-      if (order == 1) {
-        fprintf(f, "%d 3 2 4 4 %d %d %d %d\n", ++e, ND(I, J), ND(I, J + 1), ND(I + 1, J + 1), ND(I + 1, J));
-      } else {
-        fprintf(f, "%d 10 2 4 4 %d %d %d %d %d %d %d %d %d\n", ++e, ND(I, J), ND(I, J + 2), ND(I + 2, J + 2),
-                ND(I + 2, J), ND(I, J + 1), ND(I + 1, J + 2), ND(I + 2, J + 1), ND(I + 1, J), ND(I + 1, J + 1));
-      }
-    }
-#undef ND
-  fprintf(f, "$EndElements\n");
-  return fclose(f) != 0;
-}
-
 /* The frame turns at OMEGA about the axis; the fluid turns rigidly at -OMEGA in the inertial frame, u_theta =
  * -2 OMEGA r in the frame's terms (u = (Omega_fluid - Omega) k x r). Then the frame's Coriolis force on the swirl,
  * -2 Omega u_theta e_r = 4 Omega^2 r e_r, and the swirl's own centripetal term, u_theta^2/r = 4 Omega^2 r, cancel
@@ -381,7 +362,7 @@ static void shell(void) {
   }
   for (int order = 1; order <= 2; ++order)
     for (int scheme = 0; scheme < 2; ++scheme) {
-      if (write_shell("slip_shell.msh", SHELL_NT, SHELL_NR, order)) {
+      if (write_polar("slip_shell.msh", SHELL_NT, SHELL_NR, order, 0.0, 1)) {
         CHECK_MSG(0, "cannot write the mesh");
         return;
       }
