@@ -7,7 +7,8 @@
  *
  * The variants run `sluice run` as a child process (its CPU time from
  * wait4, user + system) and read its summary lines:
- *   after          this build's sluice as it is (the defaults);
+ *   after          this build's sluice as it is (the defaults: [flow] scheme = auto);
+ *   monolithic     ... with [flow] scheme = monolithic (the coupled step, the default before auto);
  *   umfpack        ... with [solver] linear = umfpack;
  *   klu            ... with [solver] linear = klu;
  *   no reuse       ... with [solver] reuse = never (a factorisation per changed matrix);
@@ -19,9 +20,11 @@
  * The cases: boycott to t = 0.1 and 0.8 (its 24 x 32 mesh), spinup to t = 25
  * on the mesh of its test (48 x 24, nonlinear tolerance 1e-6), the Bingham
  * cavity's continuation (steady), wave_bed as shipped (two wave periods),
- * the Re = 100 cavity (steady Newton) and the Stokes cavity on 128 x 128
- * cells (one solve, 149 k unknowns); --quick leaves out boycott to 0.8,
- * spinup and wave_bed.
+ * the Re = 100 cavity (steady Newton), the Stokes cavity on 128 x 128
+ * cells (one solve, 149 k unknowns), the migration scenes as shipped, the
+ * spectrometer to t = 0.5 and the rotating waves to t = 10; --quick leaves
+ * out boycott to 0.8, spinup, wave_bed, the migration scenes, the
+ * spectrometer and the rotating waves.
  *
  *   bench_transient_cost [SOURCE_DIR] [--before BIN [--before-label TEXT]] [--reference-blas DIR]
  *                        [--repeat R] [--quick] [--case NAME]... [--variant NAME]...
@@ -45,7 +48,7 @@
 #include "bench_machine.h"
 #include "core/study/child.h"
 
-enum { MAX_SETS = 8, MAX_VARIANTS = 8, MAX_CASES = 8 };
+enum { MAX_SETS = 8, MAX_VARIANTS = 8, MAX_CASES = 16 };
 
 typedef struct bench_case {
   const char *name, *scene, *what;
@@ -62,6 +65,14 @@ static const bench_case cases[] = {
      {"time.end=25", "mesh.cells=48,24", "solver.nonlinear_tolerance=1e-6", NULL}, 0, 0, 0},
     {"bingham_cavity", "bingham_cavity", "bingham_cavity, steady continuation in eps, 32 x 32 cells", {NULL}, 1, 0, 0},
     {"wave_bed", "wave_bed", "wave_bed as shipped, two wave periods, 32 x 24 cells", {NULL}, 0, 0, 0},
+    /* the other shipped 2-D transient scenes of the flow solver (their rejected steps; docs/transient_cost.md) */
+    {"migration_couette", "migration_couette", "migration_couette as shipped (annulus 48 x 1, t = 2700)", {NULL}, 0,
+     0, 0},
+    {"migration_poiseuille", "migration_poiseuille", "migration_poiseuille as shipped (annulus 40 x 1, t = 600)",
+     {NULL}, 0, 0, 0},
+    {"spectrometer_0.5", "spectrometer", "spectrometer to t = 0.5 (of 3)", {"time.end=0.5", NULL}, 0, 0, 0},
+    {"rotating_waves_10", "rotating_waves", "rotating_waves to t = 10 (of 150), 3072 cells", {"time.end=10", NULL},
+     0, 0, 0},
     {"cavity_re100", "cavity_re100", "cavity_re100, steady Newton, 32 x 32 cells", {NULL}, 1, 0, 0},
     {"cavity_stokes_128", "cavity_stokes", "cavity_stokes, one direct solve, 128 x 128 cells",
      {"mesh.cells=128,128", NULL}, 1, 0, 0},
@@ -96,6 +107,7 @@ static const variant variants[] = {
     {"umfpack", "solver.linear=umfpack", NULL, NULL, 0, 0},
     {"klu", "solver.linear=klu", NULL, NULL, 0, 0},
     {"after", NULL, NULL, NULL, 0, 0},
+    {"monolithic", "flow.scheme=monolithic", NULL, NULL, 0, 0}, /* the coupled step (the default before auto) */
     /* the split step (core/models/navier_stokes/projection.h), at the scene's tolerance and at a quarter of it */
     {"projection", "flow.scheme=projection", NULL, NULL, 0, 0},
     {"projection, tolerance 2.5e-4", "flow.scheme=projection", "time.tolerance=2.5e-4", NULL, 0, 0},

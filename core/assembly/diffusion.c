@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
-/* Scalar diffusion: A += int k grad u . grad v, b += int f v. */
+/* Scalar diffusion: A += int k grad v . T grad u (T the identity unless given), b += int f v. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -51,7 +51,8 @@ static void gather_points(diffusion_work *w, int first, int n) {
 }
 
 /* Element matrix and vector of the current cell; k and f at its points. */
-static void element(diffusion_work *w, int nb, const double *k, const double *f, int with_k, int with_f) {
+static void element(diffusion_work *w, int nb, const double *k, const double *f, int with_k, int with_f,
+                    const double *T) {
   const sl_fe_values *fv = w->fv;
   memset(w->Ke, 0, sizeof w->Ke);
   memset(w->be, 0, sizeof w->be);
@@ -60,7 +61,12 @@ static void element(diffusion_work *w, int nb, const double *k, const double *f,
     double wk = fv->JxW[q] * (with_k ? k[q] : 0.0), wf = fv->JxW[q] * (with_f ? f[q] : 0.0);
     for (int i = 0; i < nb; ++i) {
       w->be[i] += wf * fv->phi[0][q][i];
-      for (int j = 0; j < nb; ++j) w->Ke[i * nb + j] += wk * (g[i][0] * g[j][0] + g[i][1] * g[j][1]);
+      if (!T)
+        for (int j = 0; j < nb; ++j) w->Ke[i * nb + j] += wk * (g[i][0] * g[j][0] + g[i][1] * g[j][1]);
+      else
+        for (int j = 0; j < nb; ++j)
+          w->Ke[i * nb + j] += wk * (g[i][0] * (T[0] * g[j][0] + T[1] * g[j][1]) +
+                                     g[i][1] * (T[2] * g[j][0] + T[3] * g[j][1]));
     }
   }
 }
@@ -87,7 +93,7 @@ int sl_assemble_diffusion(sl_system *s, const sl_dofmap *dm, const sl_diffusion_
     if (!rc && with_f) rc = sl_asm_coef_eval(&o->source, "source", &view, 1, w->f, d);
     for (int i = 0; i < n && !rc; ++i) {
       if ((rc = sl_fe_values_reinit(w->fv, first + i, d))) break;
-      element(w, nb, w->k + (size_t)i * nq, w->f + (size_t)i * nq, with_k, with_f);
+      element(w, nb, w->k + (size_t)i * nq, w->f + (size_t)i * nq, with_k, with_f, o->tensor);
       rc = sl_system_add_element(s, first + i, with_k ? w->Ke : NULL, with_f ? w->be : NULL, d);
     }
   }

@@ -50,6 +50,10 @@ typedef struct sl_diffusion_opts {
   sl_coef source;      /* f */
   int axisymmetric;    /* weight by r: -(1/r) d/dr(r k du/dr) - d/dz(k du/dz) = f */
   int quad_degree;     /* 0: 2 * order (+1 axisymmetric) */
+  /* A constant 2 x 2 matrix T (row-major, not necessarily symmetric): A += int k grad(v).T grad(u), the
+   * anisotropic operator -div(k T grad u) with the conormal T grad u . n as its natural boundary flux.
+   * NULL: the identity. */
+  const double *tensor;
 } sl_diffusion_opts;
 
 /* A += int k grad(u).grad(v), b += int f v over the cells of dm; the system

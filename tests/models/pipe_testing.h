@@ -5,6 +5,7 @@
 #define SLUICE_TESTS_PIPE_TESTING_H
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "core/io/output.h"
@@ -31,6 +32,17 @@ static inline double pipe_scalar(const char *out, const char *name) {
   int rc = sl_output_read_scalar(out, name, INFINITY, &v, &t, &d);
   CHECK_MSG(rc == 0, "%s: %s", out, d.msg);
   return v;
+}
+
+/* configs/vertical_pipe.ini into text, and the same without its [closure.granular] (Krampa's model C replaces the
+   kinetic theory) into cut; 0, or 1 after a failed check. */
+static inline int pipe_vertical_without_granular(char *text, size_t tcap, char *cut, size_t ccap) {
+  if (sl_test_read_source("configs/vertical_pipe.ini", text, tcap)) return 1;
+  char *gran = strstr(text, "\n[closure.granular]");
+  CHECK_MSG(gran != NULL, "vertical_pipe.ini has no [closure.granular]");
+  if (!gran) return 1;
+  snprintf(cut, ccap, "%.*s\n", (int)(gran - text), text);
+  return 0;
 }
 
 /* Churchill (1977), Fanning, smooth (Krampa 2009 eqs 2.12-2.13 with k = 0). */

@@ -59,11 +59,7 @@ int main(void) {
 
   /* in the pipe: model C's solids viscosity on vertical_pipe.ini without the kinetic theory */
   static char text[8192], model_c[8192];
-  if (sl_test_read_source("configs/vertical_pipe.ini", text, sizeof text)) return sl_test_summary();
-  char *gran = strstr(text, "\n[closure.granular]");
-  CHECK_MSG(gran != NULL, "vertical_pipe.ini has no [closure.granular]");
-  if (!gran) return sl_test_summary();
-  snprintf(model_c, sizeof model_c, "%.*s\n", (int)(gran - text), text);
+  if (pipe_vertical_without_granular(text, sizeof text, model_c, sizeof model_c)) return sl_test_summary();
   const char *sets[] = {"pipe.solids_viscosity=peirano_leckner", NULL};
   sluice_error err = {0, ""};
   int rc = pipe_run_text(model_c, "vertical_pipe.ini", sets, "pipe_pl.h5", &err);

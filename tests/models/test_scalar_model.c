@@ -7,7 +7,9 @@
  *  - steady convection-diffusion across a channel: the exponential boundary
  *    layer, first order (upwind);
  *  - a closed box stirred by a velocity field: the inventory conserved;
- *  - a run stopped and restarted ends bit for bit where the whole one does. */
+ *  - a run stopped and restarted ends bit for bit where the whole one does;
+ *  - the time loop's services the model did not write: progress once per
+ *    accepted step, the profile's counts, the output times. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -167,6 +169,47 @@ static void restart_bit_for_bit(void) {
   free(a), free(b);
 }
 
+/* What the model gets from the shared time loop without a line of its own: progress after every accepted
+ * step, the linear solver's counts that `--profile` prints, and an output every `every` seconds. */
+typedef struct progress_log {
+  long calls, last_step;
+  double last_t;
+  int monotone;
+} progress_log;
+
+static void log_progress(void *user, double t, double dt, long step, int nonlinear_iterations) {
+  progress_log *p = user;
+  (void)nonlinear_iterations;
+  if (!(t > p->last_t) || step != p->last_step + 1 || !(dt > 0)) p->monotone = 0;
+  ++p->calls, p->last_step = step, p->last_t = t;
+}
+
+static void loop_services(void) {
+  char text[2048];
+  box(text, sizeof text, "x = 0, 1\ny = 0, 1\ncells = 6, 6", "end = 1\ndt = 0.1",
+      "[scalar]\ndiffusivity = 0.01\nvelocity = 1, 0\nsource = 0\n[initial]\nvalue = x\n[output]\nevery = 0.2\n");
+  sluice *s = NULL;
+  sluice_error e = {0, ""};
+  sluice_open_opts oo = {.timing = 1};
+  progress_log log = {0, 0, -1.0, 1};
+  sluice_run_opts ro = {.output = "scalar_services.h5", .version = "test", .progress = log_progress,
+                        .progress_user = &log};
+  sluice_summary sum;
+  int rc = sluice_open_text(text, strlen(text), "scalar.ini", &oo, &s, &e);
+  if (!rc) rc = sluice_run(s, &ro, &sum, &e);
+  CHECK_MSG(rc == 0, "%s", e.msg);
+  sluice_close(s);
+  if (rc) return;
+  printf("time loop services: %ld progress calls for %ld steps (last t %.3g), %ld linear solves, %ld "
+         "factorisations, %ld output times\n",
+         log.calls, sum.steps, log.last_t, sum.linear.n_solves, sum.linear.n_numeric, sum.output_times);
+  CHECK_MSG(log.calls == 10 && sum.steps == 10 && log.monotone && fabs(log.last_t - 1.0) < 1e-12,
+            "progress once per accepted step: %ld calls, %ld steps, last t %.17g", log.calls, sum.steps, log.last_t);
+  CHECK_MSG(sum.linear.n_solves >= sum.steps && sum.linear.n_numeric >= 1 && sum.linear.n_numeric <= sum.linear.n_solves,
+            "profile counts: %ld solves, %ld factorisations", sum.linear.n_solves, sum.linear.n_numeric);
+  CHECK_MSG(sum.output_times == 6, "outputs at t = 0, 0.2, ..., 1: %ld", sum.output_times);
+}
+
 static void bad_input(void) {
   char text[2048];
   box(text, sizeof text, "x = 0, 1\ny = 0, 1\ncells = 4, 4", "end = 1\ndt = 0.1",
@@ -186,6 +229,7 @@ int main(void) {
   boundary_layer();
   closed_box();
   restart_bit_for_bit();
+  loop_services();
   bad_input();
   return sl_test_summary();
 }

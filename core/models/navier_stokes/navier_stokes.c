@@ -23,11 +23,13 @@ static const sl_key flow_keys[] = {
      .help = "solve the out-of-plane velocity (planar, line: a fully developed flow) or the swirl (axisymmetric)"},
     {.section = "flow", .name = "convection", .type = SL_KEY_BOOL, SL_AT_SCENE(flow.convection), .def = 1,
      .help = "include rho (u.grad)u (false: Stokes flow)"},
-    {.section = "flow", .name = "scheme", .type = SL_KEY_CHOICE, SL_AT_SCENE(flow.scheme), .def = 0,
-     .choices = "monolithic|projection",
+    {.section = "flow", .name = "scheme", .type = SL_KEY_CHOICE, SL_AT_SCENE(flow.scheme), .def = 2,
+     .choices = "monolithic|projection|auto",
      .help = "a transient step: velocity and pressure in one coupled solve, or split (an incremental rotational "
              "pressure-correction step, Guermond, Minev & Shen 2006, with a constant pressure Poisson operator "
-             "factorised once, Guermond & Salgado 2009)"},
+             "factorised once, Guermond & Salgado 2009); auto: projection for a transient suspension (solids "
+             "riding on the flow) on one rank in a frame at rest without a yield stress, monolithic otherwise "
+             "(docs/transient_cost.md)"},
     {.section = "flow", .name = "gravity", .type = SL_KEY_REALS, SL_AT_SCENE(flow.gravity), .max_n = 3,
      .units = "m s^-2", .help = "gravitational acceleration per velocity component (default none)"},
     {.section = "flow", .name = "body_force", .type = SL_KEY_EXPRS, SL_AT_SCENE(flow.body_force), .vars = "x,y,t",

@@ -46,6 +46,13 @@ struct sl_projection {
   long poisson_solves;
   double volume; /* sum of the lumped pressure mass: the domain's area (volume per radian) */
   double split_rms;
+  /* The frame's rotation (flow.h omega): the correction step keeps the Coriolis force, so that its Poisson
+   * operator depends on the step's mass coefficient (assembled for m_poisson) and the kept velocity takes the
+   * correction's rotated part (rotation_correction). */
+  double omega;
+  int axi;
+  double m_poisson;
+  double *grad, *vmass; /* [nv]: B^T phi; [velocity nodes]: the lumped velocity mass int N_a */
   /* the increments of the last two accepted steps and their mass coefficients; the trial's */
   int n_hist;
   double m_hist[2];
@@ -93,18 +100,49 @@ static int build_divergence(sl_projection *pj, const sl_flow_problem *prob, sl_d
   return rc;
 }
 
-/* The Poisson operator int grad(phi).grad(q) (r-weighted axisymmetric) with its Dirichlet nodes, and the
- * lumped mass int q (the same weight). */
+/* The correction step with the frame's Coriolis force C (core/assembly/flow.c: C u = 2 Omega x u, planar
+ * C_01 = -2 Omega, C_10 = 2 Omega; axisymmetric the same between r and theta): chi (m I + C) delta = -grad phi,
+ * so delta = -D grad(phi) / chi with D = (m I + C)^{-1}, on the coupled pair [[m, 2 Omega], [-2 Omega, m]] / (m^2
+ * + 4 Omega^2) and 1/m on the other component. Without it (C left to the velocity step alone) the increment's
+ * rotated part J grad(phi) / (chi m), divergence-free, is not seen: at Omega / m >> 1 the pressure moves by (m /
+ * 2 Omega)^2 of what the geostrophic balance asks and a rotating flow freezes. The correction step is GMS 2006's
+ * eq 3.15 with the momentum's other local term linear in u, C, kept beside the mass term (derived here; checks:
+ * Omega = 0 gives eq 3.15 itself, D's inverse is (m I + C) (J^2 = -I), and the inviscid rotating wave turns as the
+ * monolithic step's, docs/transient_cost.md). The weak Poisson operator's antisymmetric part int grad(q).J
+ * grad(phi) is a boundary term only (div J grad(phi) = 0): it gives the oblique condition (D grad(phi)).n = 0,
+ * the correction's no-flux wall. D's in-plane 2 x 2 part times m, T = m P D P^T (P: the components that grad(phi)
+ * has): planar the full pair, T = [[m^2, 2 Omega m], [-2 Omega m, m^2]] / (m^2 + 4 Omega^2); axisymmetric (grad phi = (d_r, d_z, 0))
+ * T = diag(m^2 / (m^2 + 4 Omega^2), 1). Omega = 0: the identity. */
+static void correction_tensor(const sl_projection *pj, double m, double T[4]) {
+  double w = 2.0 * pj->omega, q = m * m / (m * m + w * w);
+  if (pj->axi) T[0] = q, T[1] = T[2] = 0.0, T[3] = 1.0;
+  else T[0] = T[3] = q, T[1] = w * m / (m * m + w * w), T[2] = -T[1];
+}
+
+/* The Poisson matrix int grad(q).T grad(phi) (r-weighted axisymmetric; T of correction_tensor at the mass
+ * coefficient m, the identity without rotation) with its Dirichlet nodes; b the lumped mass int q. */
+static int poisson_matrix(sl_projection *pj, int axisymmetric, double m, sl_diag *d) {
+  sl_system_zero(&pj->psys);
+  double T[4];
+  correction_tensor(pj, m, T);
+  sl_diffusion_opts o = {.diffusivity = {NULL, NULL, 1.0}, .source = {NULL, NULL, 1.0},
+                         .axisymmetric = axisymmetric, .tensor = pj->omega != 0.0 ? T : NULL};
+  int rc = sl_assemble_diffusion(&pj->psys, pj->th->pres, &o, d);
+  if (!rc) rc = sl_system_complete(&pj->psys, 1, d);
+  if (!rc && pj->pfixed) rc = sl_csr_set_dirichlet(&pj->psys.A, pj->n_pfixed, pj->pfixed, NULL, NULL, 1, d);
+  if (!rc) sl_csr_touch(&pj->psys.A);
+  pj->m_poisson = m;
+  return rc;
+}
+
+/* The Poisson operator (poisson_matrix; without rotation assembled and factorised once) and the lumped mass
+ * int q (the same weight). */
 static int build_poisson(sl_projection *pj, const sl_flow_problem *prob, sl_diag *d) {
   const sl_dofmap *pm = pj->th->pres;
   const sl_mesh *m = pj->th->mesh;
   int rc = sl_system_init(&pj->psys, pm->n_dofs, m->n_cells, pm->dofs_per_cell, pm->cell_dofs, d);
   if (rc) return rc;
-  sl_system_zero(&pj->psys);
-  sl_diffusion_opts o = {.diffusivity = {NULL, NULL, 1.0}, .source = {NULL, NULL, 1.0},
-                         .axisymmetric = prob->opts.axisymmetric};
-  if ((rc = sl_assemble_diffusion(&pj->psys, pm, &o, d))) return rc;
-  if ((rc = sl_system_complete(&pj->psys, 1, d))) return rc;
+  if ((rc = poisson_matrix(pj, prob->opts.axisymmetric, 1.0, d))) return rc;
   memcpy(pj->mass, pj->psys.b, (size_t)pj->np * sizeof *pj->mass);
   for (int32_t i = 0; i < pj->np; ++i) pj->volume += pj->mass[i];
   if ((rc = sl_constraints_init(&pj->pbc, pm->n_dofs, d))) return rc;
@@ -121,6 +159,27 @@ static int build_poisson(sl_projection *pj, const sl_flow_problem *prob, sl_diag
   for (int32_t i = 0; i < pm->n_dofs; ++i)
     if (pj->pbc.fixed[i]) pj->pfixed[pj->n_pfixed++] = i;
   return sl_csr_set_dirichlet(&pj->psys.A, pj->n_pfixed, pj->pfixed, NULL, NULL, 1, d);
+}
+
+/* The lumped mass int N_a of the velocity nodes (r-weighted axisymmetric), all positive on Q2 cells that are not
+ * too distorted (row sums of the tensor-product Lagrange mass: 1/36, 4/36, 16/36 of an affine cell). */
+static int velocity_mass(sl_projection *pj, int axisymmetric, sl_diag *d) {
+  const sl_dofmap *vm = pj->th->vel;
+  sl_system s;
+  int rc = sl_system_init(&s, vm->n_dofs, vm->mesh->n_cells, vm->dofs_per_cell, vm->cell_dofs, d);
+  if (rc) return rc;
+  sl_system_zero(&s);
+  sl_diffusion_opts o = {.diffusivity = {NULL, NULL, 0.0}, .source = {NULL, NULL, 1.0}, .axisymmetric = axisymmetric};
+  if (!(rc = sl_assemble_diffusion(&s, vm, &o, d))) rc = sl_system_complete(&s, 1, d);
+  for (int32_t i = 0; i < vm->n_dofs && !rc; ++i) {
+    pj->vmass[i] = s.b[i];
+    if (!(s.b[i] > 0.0) && !(axisymmetric && s.b[i] == 0.0))
+      rc = sl_diag_set(d, SL_EFAILED, "projection: the lumped velocity mass of node %d is %g (a distorted cell)",
+                       (int)i, s.b[i]);
+    if (pj->vmass[i] == 0.0) pj->vmass[i] = 1.0; /* on the axis: its (r-weighted) gradient is 0 too */
+  }
+  sl_system_free(&s);
+  return rc;
 }
 
 int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *o, sl_projection **out,
@@ -141,6 +200,7 @@ int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *
   pj->refresh = 1;
   const sl_th_space *th = prob->th;
   pj->th = th, pj->o = *o, pj->nv = th->p_offset, pj->np = th->pres->n_dofs, pj->trial = -1;
+  pj->omega = prob->opts.omega, pj->axi = prob->opts.axisymmetric;
   int nc = th->mesh->n_cells, nbv = th->n_comp * th->vel->dofs_per_cell;
   pj->vel_cell_dofs = malloc((size_t)nc * nbv * sizeof *pj->vel_cell_dofs);
   pj->mass = malloc((size_t)pj->np * sizeof *pj->mass);
@@ -150,9 +210,11 @@ int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *
   pj->rhs = malloc((size_t)(pj->nv > pj->np ? pj->nv : pj->np) * sizeof *pj->rhs);
   pj->x = malloc((size_t)(pj->nv > pj->np ? pj->nv : pj->np) * sizeof *pj->x);
   pj->div = malloc((size_t)pj->np * sizeof *pj->div);
+  pj->grad = malloc((size_t)pj->nv * sizeof *pj->grad);
+  pj->vmass = malloc((size_t)th->vel->n_dofs * sizeof *pj->vmass);
   int rc = 0;
   if (!pj->vel_cell_dofs || !pj->mass || !pj->phi_hist[0] || !pj->phi_hist[1] || !pj->phi_trial || !pj->rhs ||
-      !pj->x || !pj->div)
+      !pj->x || !pj->div || !pj->grad || !pj->vmass)
     rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
   /* each cell's velocity dofs lead its combined list (core/fe/dofmap.h) */
   for (int c = 0; c < nc && !rc; ++c)
@@ -162,9 +224,13 @@ int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *
   int ncomp = th->n_comp, nb = th->vel->dofs_per_cell;
   if (!rc && !(pj->comp_dofs = malloc((size_t)nc * nbv * sizeof *pj->comp_dofs)))
     rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
-  if (!rc) { /* element (cell, component): that component's dofs of the cell */
+  /* In a rotating frame the Coriolis force couples the components as strongly as the mass term holds each (2
+   * Omega against m = 1.5 / dt: 13 times at Omega dt = 10), and the diagonal blocks are no preconditioner
+   * there (FGMRES fails and F is solved directly at every step): P is then F itself, kept as long as it works. */
+  if (!rc) { /* element (cell, component): that component's dofs of the cell; rotating, the cell's */
     memcpy(pj->comp_dofs, pj->vel_cell_dofs, (size_t)nc * nbv * sizeof *pj->comp_dofs);
-    rc = sl_csr_build_uniform(&pj->P, pj->nv, nc * ncomp, nb, pj->comp_dofs, d);
+    rc = pj->omega != 0.0 ? sl_csr_build_uniform(&pj->P, pj->nv, nc, nbv, pj->comp_dofs, d)
+                          : sl_csr_build_uniform(&pj->P, pj->nv, nc * ncomp, nb, pj->comp_dofs, d);
   }
   if (!rc && !(pj->pmap = malloc(((size_t)pj->P.nnz + 1) * sizeof *pj->pmap)))
     rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
@@ -185,6 +251,7 @@ int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *
   if (!rc) rc = sl_krylov_init(&pj->kry, pj->nv, SL_PROJECTION_KRYLOV_BUDGET, d);
   if (!rc) rc = build_divergence(pj, prob, d);
   if (!rc) rc = build_poisson(pj, prob, d);
+  if (!rc && pj->omega != 0.0) rc = velocity_mass(pj, prob->opts.axisymmetric, d);
   if (rc) {
     sl_projection_destroy(pj);
     return rc;
@@ -204,7 +271,7 @@ void sl_projection_destroy(sl_projection *pj) {
   sl_csr_free(&pj->B);
   free(pj->vel_cell_dofs), free(pj->mass), free(pj->pfixed);
   free(pj->phi_hist[0]), free(pj->phi_hist[1]), free(pj->phi_trial);
-  free(pj->rhs), free(pj->x), free(pj->div);
+  free(pj->rhs), free(pj->x), free(pj->div), free(pj->grad), free(pj->vmass);
   free(pj);
 }
 
@@ -250,6 +317,10 @@ static int velocity_solve(sl_projection *pj, sl_csr *F, const double *b, double 
   return sl_linsolve_solve(pj->ls_v, F, b, x, d);
 }
 
+/* Rotating: the symmetric part of D (correction_tensor) on the gradient, m / (m^2 + 4 Omega^2), written as 1 / m'
+ * with m' = m + 4 Omega^2 / m, the mass coefficient the predictor divides by (m without rotation). */
+static double sym_mass(const sl_projection *pj, double m) { return m + 4.0 * pj->omega * pj->omega / m; }
+
 /* The pressure predictor's increments: p# = p^k + sum_j w_j phi^{k-j} (projection.h). The BDF2 coefficients
  * follow from m h = a0 = (1 + 2 w)/(1 + w) (core/time/bdf.h): w = (a0 - 1)/(2 - a0); BDF1 has a0 = 1. */
 static void predictor_weights(const sl_projection *pj, double m, double h, double w[2]) {
@@ -258,11 +329,43 @@ static void predictor_weights(const sl_projection *pj, double m, double h, doubl
   if (pj->n_hist == 0) return;
   if (fabs(a0 - 1.0) < 1e-12 || pj->n_hist < 2) { /* BDF1 (or a first history): c_0 = -1/h */
     w[0] = 1.0 / (h * pj->m_hist[0]);
+    if (pj->omega != 0.0) w[0] = 1.0 / (h * sym_mass(pj, pj->m_hist[0]));
     return;
   }
   double om = (a0 - 1.0) / (2.0 - a0);
   double c0 = -(1.0 + om) / h, c1 = om * om / ((1.0 + om) * h);
   w[0] = -c0 / pj->m_hist[0], w[1] = -c1 / pj->m_hist[1];
+  if (pj->omega != 0.0) w[0] = -c0 / sym_mass(pj, pj->m_hist[0]), w[1] = -c1 / sym_mass(pj, pj->m_hist[1]);
+}
+
+/* In a rotating frame the kept velocity takes the rotated part of the correction: with the Coriolis force in
+ * the correction step the projected velocity is u = u~ + delta, delta = -D grad(phi) / chi (correction_tensor),
+ * D = [[m, 2 Omega], [-2 Omega, m]] / (m^2 + 4 Omega^2) on the coupled pair. Its symmetric part -(m / (m^2 + 4
+ * Omega^2)) grad(phi) / chi, a gradient, is what the scheme leaves in u~ and the predictor's pressure carries
+ * (predictor_weights with sym_mass, as GMS 2006 eq 3.14 does with 1/m); the antisymmetric part -(2 Omega / (m^2 +
+ * 4 Omega^2)) J^T grad(phi) / chi, divergence-free, is the geostrophic adjustment of the velocity to the new
+ * pressure, which no pressure predictor can carry: left out, the kept velocity trails the pressure by a step (the
+ * inviscid wave lost c dt of its phase at the first split step, 0.0033 rad). Carrying the full -(D - I/m) part in
+ * the kept velocity instead (a gradient as large as the increment itself) diverged within three steps at Omega
+ * dt = 10. It is added to u~ at the velocity nodes, grad(phi) there the lumped L2 projection (B^T phi)_a / int N_a
+ * (B^T phi = int v . grad(phi), the weak gradient the pressure acts through), the constraints imposed after. */
+static void rotation_correction(sl_projection *pj, sl_flow_problem *prob, double m, double *u) {
+  const int32_t nv = pj->nv, nvel = pj->th->vel->n_dofs;
+  memset(pj->grad, 0, (size_t)nv * sizeof *pj->grad);
+  const sl_csr *B = &pj->B;
+  for (int32_t i = 0; i < B->n_rows; ++i)
+    for (int32_t k = B->row_ptr[i]; k < B->row_ptr[i + 1]; ++k)
+      pj->grad[B->col_idx[k]] += B->values[k] * pj->phi_trial[i];
+  const int a = 0, b = pj->axi ? 2 : 1; /* the coupled pair (axisymmetric: r and theta, grad(phi)_theta = 0) */
+  const double w = 2.0 * pj->omega, off = w / (m * m + w * w) / pj->o.chi;
+  const double *ga = pj->grad + (size_t)a * nvel, *gb = pj->grad + (size_t)b * nvel;
+  for (int32_t i = 0; i < nvel; ++i) { /* delta_J = -off J^T grad(phi): (-off g_b, off g_a) */
+    double gai = ga[i] / pj->vmass[i], gbi = pj->axi ? 0.0 : gb[i] / pj->vmass[i];
+    u[(size_t)a * nvel + i] -= off * gbi;
+    u[(size_t)b * nvel + i] += off * gai;
+  }
+  sl_constraints_impose(&prob->bc, u);
+  if (prob->slip) sl_slip_impose(prob->slip, u);
 }
 
 int sl_projection_step(sl_projection *pj, sl_flow_problem *prob, const sl_step *s, double *u, double linear_rtol,
@@ -287,8 +390,13 @@ int sl_projection_step(sl_projection *pj, sl_flow_problem *prob, const sl_step *
   double f = pj->o.chi * m;
   for (int32_t i = 0; i < np; ++i) pj->rhs[i] = f * pj->div[i];
   for (int32_t k = 0; k < pj->n_pfixed; ++k) pj->rhs[pj->pfixed[k]] = 0.0;
+  if (pj->omega != 0.0 && m != pj->m_poisson) { /* the rotating correction's operator at this m, factorised afresh */
+    if ((rc = poisson_matrix(pj, pj->axi, m, d))) return rc;
+    sl_linsolve_drop_numeric(pj->ls_p);
+  }
   if ((rc = sl_linsolve_solve(pj->ls_p, &pj->psys.A, pj->rhs, pj->phi_trial, d)))
     return sl_diag_prefix(d, rc, "projection: the pressure Poisson solve");
+  if (pj->omega != 0.0) rotation_correction(pj, prob, m, u);
   pj->poisson_solves++;
   /* The splitting's part of the step: the end-of-step solenoidal velocity is u~ - grad(phi) / (chi m) (GMS 2006,
      eq 3.15, Guermond & Salgado 2009's chi), the intermediate u~ is kept, so the step's velocity carries
@@ -297,6 +405,11 @@ int sl_projection_step(sl_projection *pj, sl_flow_problem *prob, const sl_step *
   double g = 0.0;
   for (int32_t i = 0; i < np; ++i) g += pj->phi_trial[i] * pj->div[i];
   pj->split_rms = pj->volume > 0.0 && g > 0.0 ? sqrt(g / (f * pj->volume)) : 0.0;
+  /* Rotating (correction_tensor, rotation_correction): the kept velocity leaves out delta's symmetric part
+     -(m / (m^2 + 4 Omega^2)) grad(phi) / chi, and phi . K phi = chi m phi . (B u~) with K's symmetric part m^2 /
+     (m^2 + 4 Omega^2) of the Laplacian, planar: |delta_sym|^2 = m^2 / (m^2 + 4 Omega^2) of the above; axisymmetric
+     (the z part 1/m) the above bounds it. */
+  if (pj->omega != 0.0 && !pj->axi) pj->split_rms /= sqrt(1.0 + 4.0 * pj->omega * pj->omega / (m * m));
   /* p^{k+1} = p^k + phi - mu div u~, div u~ ~ -(B u~) / mass (lumped) */
   double mu = pj->o.mu_rotational;
   for (int32_t i = 0; i < np; ++i) p[i] = pk[i] + pj->phi_trial[i] + (mu > 0.0 ? mu * pj->div[i] / pj->mass[i] : 0.0);

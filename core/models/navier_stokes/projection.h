@@ -27,7 +27,14 @@
  * preconditioned with the LU factors of its diagonal blocks (one per component; the couplings between components, the
  * viscous cross terms, convection's Jacobian, the swirl's and the buoyancy's, are left to the Krylov
  * iteration) from an earlier step, refactorised when a solve becomes slow; the Poisson matrix is factorised
- * at the first step and kept. */
+ * at the first step and kept.
+ *
+ * In a rotating frame (sl_flow_opts.omega) the correction step keeps the Coriolis force: chi (m I + C) delta =
+ * -grad(phi), an anisotropic Poisson operator int grad(q).(m D) grad(phi), D = (m I + C)^{-1}, refactorised when
+ * m changes; the predictor divides by the symmetric part of D, and the kept velocity takes delta's rotated
+ * (divergence-free) part, the geostrophic adjustment to the new pressure (projection.c, correction_tensor and
+ * rotation_correction). The preconditioner is then F itself (the Coriolis couplings are as strong as the
+ * diagonal). */
 #ifndef SLUICE_MODELS_NAVIER_STOKES_PROJECTION_H
 #define SLUICE_MODELS_NAVIER_STOKES_PROJECTION_H
 

@@ -28,9 +28,10 @@ static double wall_grading(double R, double w, int n) {
 static void release(pipe *p) {
   double **a[] = {&p->uf,   &p->us,    &p->phi,   &p->k,         &p->eps,      &p->theta,
                   &p->mu_t, &p->mu_tk, &p->mu_te, &p->eps_prod,  &p->eps_sink, &p->K,
-                  &p->mu_s, &p->rhs,   &p->x,     &p->face_flux, &p->Kd,       &p->slip0};
+                  &p->mu_s, &p->rhs,   &p->x,     &p->face_flux, &p->Kd,       &p->slip0,
+                  &p->ks,   &p->kfs};
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i) free(*a[i]);
-  for (int i = 0; i < 12; ++i) free(p->buf[i]);
+  for (int i = 0; i < PIPE_NBUF; ++i) free(p->buf[i]);
   sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls};
   for (size_t i = 0; i < sizeof pc / sizeof pc[0]; ++i) sl_point_release(pc[i]);
   pipe_march_release(p);
@@ -103,14 +104,24 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
                      "%s = peirano_leckner is Krampa's model C, whose collisional viscosity replaces the kinetic "
                      "theory's: remove [closure.granular]",
                      sl_scene_where(sc, &c->solids_viscosity, at, sizeof at));
+  if (!rc && c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED &&
+      c->solids_viscosity != PIPE_SOLIDS_VISCOSITY_PEIRANO_LECKNER)
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s = transported carries the k_s and k_fs of Krampa's model C, whose solids viscosity they set: "
+                     "did you mean to add [pipe] solids_viscosity = peirano_leckner?",
+                     sl_scene_where(sc, &c->solids_turbulence, at, sizeof at));
+  if (!rc && c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED && !p->two_phase)
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s = transported needs solids: [pipe] solids_fraction > 0",
+                     sl_scene_where(sc, &c->solids_turbulence, at, sizeof at));
   if (!rc) rc = build_grid(p, d);
   const int n = p->n;
   if (!rc) {
     double **a[] = {&p->uf,    &p->us,       &p->phi,      &p->k, &p->eps,  &p->theta, &p->mu_t, &p->mu_tk,
-                    &p->mu_te, &p->eps_prod, &p->eps_sink, &p->K, &p->mu_s, &p->Kd,    &p->slip0};
+                    &p->mu_te, &p->eps_prod, &p->eps_sink, &p->K, &p->mu_s, &p->Kd,    &p->slip0, &p->ks,
+                    &p->kfs};
     for (size_t i = 0; i < sizeof a / sizeof a[0] && !rc; ++i)
       if (!(*a[i] = calloc((size_t)n, sizeof(double)))) rc = sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
-    for (int i = 0; i < 12 && !rc; ++i)
+    for (int i = 0; i < PIPE_NBUF && !rc; ++i)
       if (!(p->buf[i] = calloc((size_t)n, sizeof(double)))) rc = sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
   }
   if (!rc && !(p->face_flux = calloc((size_t)p->g.nf, sizeof(double))))
@@ -153,7 +164,8 @@ static double rel_change(const double *a, const double *b, int n, int *at) {
 int pipe_converge(pipe *p, sl_diag *d) {
   const pipe_config *c = p->cfg;
   const int n = p->n;
-  double *old[4] = {p->buf[8], p->buf[9], p->buf[10], p->buf[11]};
+  double *old[6] = {p->buf[8], p->buf[9], p->buf[10], p->buf[11], p->buf[12], p->buf[13]};
+  const int ksfs = p->two_phase && c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED;
   int rc = 0;
   p->converged = 0;
   /* A stalled iteration (a limit cycle between the solids fraction, theta and the turbulence: 2.4 mm sand at
@@ -165,6 +177,7 @@ int pipe_converge(pipe *p, sl_diag *d) {
   for (long it = 1; it <= c->iterations && !rc; ++it) {
     memcpy(old[0], p->uf, (size_t)n * sizeof(double)), memcpy(old[1], p->k, (size_t)n * sizeof(double));
     memcpy(old[2], p->eps, (size_t)n * sizeof(double)), memcpy(old[3], p->phi, (size_t)n * sizeof(double));
+    memcpy(old[4], p->ks, (size_t)n * sizeof(double)), memcpy(old[5], p->kfs, (size_t)n * sizeof(double));
     double G_old = p->G;
     if (p->march.on) pipe_march_fluxes(p);
     if (!rc) rc = pipe_turbulence_coefficients(p, d);
@@ -172,19 +185,20 @@ int pipe_converge(pipe *p, sl_diag *d) {
     if (!rc && p->two_phase) rc = pipe_solids_coefficients(p, d);
     if (!rc) rc = pipe_momentum_solve(p, d);
     if (!rc) rc = pipe_turbulence_update(p, d);
+    if (!rc && ksfs) rc = pipe_ksfs_update(p, d);
     if (!rc && p->two_phase) rc = pipe_solids_update(p, d);
     p->iterations = it;
     if (rc) break;
-    static const char *const names[5] = {"u_f", "k", "epsilon", "phi", "dP/dz"};
-    const double *now[4] = {p->uf, p->k, p->eps, p->phi};
+    static const char *const names[7] = {"u_f", "k", "epsilon", "phi", "k_s", "k_fs", "dP/dz"};
+    const double *now[6] = {p->uf, p->k, p->eps, p->phi, p->ks, p->kfs};
     double ch = 0.0;
-    for (int k = 0; k < (p->two_phase ? 4 : 3); ++k) {
+    for (int k = 0; k < (ksfs ? 6 : p->two_phase ? 4 : 3); ++k) {
       int at = 0;
       double chk = rel_change(now[k], old[k], n, &at);
       if (chk > ch) ch = chk, p->change_field = names[k], p->change_cell = at;
     }
     double cG = fabs(p->G - G_old) / fmax(fabs(p->G), 1e-300);
-    if (cG > ch) ch = cG, p->change_field = names[4], p->change_cell = -1;
+    if (cG > ch) ch = cG, p->change_field = names[6], p->change_cell = -1;
     p->change = ch;
     for (int i = 0; i < n; ++i)
       if (!isfinite(p->uf[i]) || !isfinite(p->us[i]) || !isfinite(p->k[i]) || !isfinite(p->eps[i]) ||
@@ -292,10 +306,14 @@ static int pipe_write(void *self, sl_output *out, double t, const double *u, sl_
   const pipe_config *c = p->cfg;
   const int n = p->n;
   unsigned mask;
-  int rc = sl_scene_output_fields(p->sc, 0x7fu, &mask, d);
-  const double *fields[7] = {p->uf, p->us, p->phi, p->k, p->eps, p->mu_t, p->theta};
+  /* k_s and k_fs by default when transported; asked for with Tchen's, they are its equilibrium (pipe_ksfs.c) */
+  const int tr = c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED;
+  int rc = sl_scene_output_fields(p->sc, tr ? 0x1ffu : 0x7fu, &mask, d);
+  if (!rc && !tr && p->two_phase && !p->march.on)
+    for (int i = 0; i < n; ++i) pipe_ksfs_equilibrium(p, i, &p->ks[i], &p->kfs[i]);
+  const double *fields[PIPE_NFIELDS] = {p->uf, p->us, p->phi, p->k, p->eps, p->mu_t, p->theta, p->ks, p->kfs};
   if (!rc && p->march.on) rc = pipe_march_write(p, out, mask, d), mask = 0; /* its 2-D fields */
-  for (int k = 0; k < 7 && !rc; ++k) {
+  for (int k = 0; k < PIPE_NFIELDS && !rc; ++k) {
     if (!(mask >> k & 1u)) continue;
     double *v = p->buf[0];
     for (int i = 0; i < n; ++i) v[p->tg.mesh_cell[i]] = fields[k][i];

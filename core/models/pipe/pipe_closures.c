@@ -67,5 +67,7 @@ int pipe_closures_bind(pipe *p, sl_diag *d) {
   if (!rc && p->have_walls) p->walls_at_node = sl_point_has_input(&p->walls, "wall_distance");
   if (!rc && p->have_walls && p->have_gran && p->cfg->granular_temperature == PIPE_THETA_TRANSPORT)
     p->wall_energy = sl_point_has_output(&p->walls, "theta_flux");
+  if (!rc && p->have_walls && p->cfg->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED)
+    p->ks_wall_energy = sl_point_has_output(&p->walls, "theta_flux"); /* at theta = (2/3) k_s (pipe_ksfs.c) */
   return rc;
 }

@@ -17,6 +17,9 @@ enum { PIPE_NO_SLIP = 0, PIPE_FREE_SLIP, PIPE_WALL_STRESS };
 enum { PIPE_DISPERSION_GRADIENT = 0, PIPE_DISPERSION_SIMONIN };
 enum { PIPE_THETA_ALGEBRAIC = 0, PIPE_THETA_TRANSPORT };
 enum { PIPE_SOLIDS_VISCOSITY_EDDY = 0, PIPE_SOLIDS_VISCOSITY_PEIRANO_LECKNER };
+enum { PIPE_SOLIDS_TURBULENCE_EQUILIBRIUM = 0, PIPE_SOLIDS_TURBULENCE_TRANSPORTED };
+/* the pipe's scratch and saved-state arrays of n cells (pipe.buf) */
+#define PIPE_NBUF 18
 
 typedef struct pipe_config {
   double diameter, bulk_velocity, solids_fraction, wall_cell, wall_y_plus;
@@ -30,6 +33,8 @@ typedef struct pipe_config {
   double c_eps3;
   int solids_viscosity; /* PIPE_SOLIDS_VISCOSITY_* */
   double restitution;   /* e of solids_viscosity = peirano_leckner */
+  int solids_turbulence;     /* PIPE_SOLIDS_TURBULENCE_*: model C's k_s and k_fs from Tchen's equilibrium or transported */
+  double covariance_schmidt; /* sigma_kfs of the k_fs diffusion (eq 5.23) */
   /* the developing pipe (pipe_march.c): length 0 for the fully developed one */
   double length, inlet_intensity, inlet_length_scale;
   long axial_cells;
@@ -58,13 +63,17 @@ extern const char *const pipe_quantity_names[PQ_N];
 
 /* The developing pipe (`[pipe] length`, pipe_march.c): the stations along z, the last station's state, the
    radial volume fluxes of the phases through the row's faces, and every station's fields. */
+/* the output fields (the schema's: pipe_schema.c) */
+#define PIPE_NFIELDS 9
+
 typedef struct pipe_march {
   int on, nz, j;
   double h;                                        /* from the last station (the inlet for the first) to this */
   double *uf_up, *us_up, *phi_up, *k_up, *eps_up, *theta_up; /* [n] the last station's state */
-  double *ff, *fs, *rff, *rfs; /* [nf] the fluid's and the solids' radial volume fluxes, rho_f ff, 1.5 rho_s fs */
+  double *ks_up, *kfs_up;                                    /* [n] model C's transported k_s, k_fs there */
+  double *ff, *fs, *rff, *rfs, *rs; /* [nf] the phases' radial volume fluxes, rho_f ff, 1.5 rho_s fs, rho_s fs */
   double *cap, *s_old;                             /* [n] a march step's storage and start for k or epsilon */
-  double *field[7];                                /* [n nz] every station's fields (the schema's order) */
+  double *field[PIPE_NFIELDS];                     /* [n nz] every station's fields (the schema's order) */
   double *G, *tau_fw, *tau_sw, *y_plus;            /* [nz] */
   double pressure_drop;                            /* p(0) - p(L) */
   long iterations, worst_station_iterations;
@@ -85,6 +94,8 @@ typedef struct pipe {
   int two_phase;
   /* state (cells) */
   double *uf, *us, *phi, *k, *eps, *theta;
+  double *ks, *kfs; /* model C's solids turbulent energy and fluid-particle covariance (pipe_ksfs.c) */
+  int ksfs_started;
   double G; /* dP/dz */
   /* coefficients (cells) */
   double *mu_t, *mu_tk, *mu_te, *eps_prod, *eps_sink, *K, *mu_s;
@@ -96,13 +107,13 @@ typedef struct pipe {
   double inv_slip; /* 1/lambda_slip of the solids' wall closure at the wall cell (0: none or free slip) */
   /* closures */
   sl_point_closure turb, wallf, drag, gran, psol, walls;
-  int have_gran, have_psol, have_walls, walls_at_node, wall_energy;
+  int have_gran, have_psol, have_walls, walls_at_node, wall_energy, ks_wall_energy;
   /* solvers */
   sl_cell_scalar cs;
   sl_csr A;
   sl_linsolve *ls;
   double *face_flux;         /* [nf] */
-  double *rhs, *x, *buf[12]; /* buf[0..7] scratch, buf[8..11] the steady solve's last state */
+  double *rhs, *x, *buf[PIPE_NBUF]; /* buf[0..7], [14..17] scratch, [8..13] the steady solve's last state */
   double dirichlet;          /* the value the wall cell's k or epsilon is held at (the cell-scalar hook's) */
   long iterations;
   double change;
@@ -119,8 +130,12 @@ typedef struct pipe_pl_point {
   double phi, k, eps, slip2, K;               /* the solids fraction, the fluid's k and epsilon, slip^2, the drag */
   double rho_s, d_p, phi_max, restitution;    /* the particles */
   double c_mu, c_beta;                        /* C_mu, the crossing-trajectory C_beta of t_fs */
+  int given;                                  /* 1: ks and kfs below (transported); 0: Tchen's equilibrium */
+  double ks, kfs;
 } pipe_pl_point;
 double pipe_peirano_leckner(const pipe_pl_point *q, double *nu_st);
+double pipe_peirano_leckner_diffusivity(const pipe_pl_point *q, double *K_st);
+double pipe_peirano_leckner_collision_rate(const pipe_pl_point *q);
 
 int pipe_closures_bind(pipe *p, sl_diag *d);
 int pipe_turbulence_coefficients(pipe *p, sl_diag *d);
@@ -131,6 +146,15 @@ int pipe_momentum_solve(pipe *p, sl_diag *d);
 int pipe_solids_coefficients(pipe *p, sl_diag *d);
 int pipe_solids_update(pipe *p, sl_diag *d);
 int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d);
+int pipe_theta_wall_flux(pipe *p, double theta, double *q, double *c_implicit, sl_diag *d);
+void pipe_face_gradients(const pipe *p, const double *u, double wall, double *gw, double *ge);
+/* model C's k_s and k_fs (pipe_ksfs.c) */
+double pipe_tfs(const pipe *p, int i);
+void pipe_ksfs_equilibrium(const pipe *p, int i, double *ks, double *kfs);
+double pipe_kfs(const pipe *p, int i);
+pipe_pl_point pipe_pl_point_at(const pipe *p, int i);
+void pipe_ksfs_start(pipe *p);
+int pipe_ksfs_update(pipe *p, sl_diag *d);
 int pipe_converge(pipe *p, sl_diag *d);
 /* the developing pipe (pipe_march.c) */
 int pipe_march_setup(pipe *p, sl_diag *d);
@@ -140,6 +164,7 @@ void pipe_march_momentum(const pipe *p, sl_csr *A, double *b);
 void pipe_march_scalar(pipe *p, const double *cap_pseudo, const double *s_iter, const double *s_up);
 void pipe_march_solids(pipe *p, double *cap, double *flux);
 void pipe_march_theta(pipe *p, const double *cap_pseudo);
+void pipe_march_ksfs(pipe *p, const double *s_iter, const double *s_up);
 const double *pipe_march_drag_fraction(const pipe *p, double *phi_arg);
 void pipe_march_drag(pipe *p, const double *phi_arg, double *dK);
 int pipe_march_solve(pipe *p, sl_diag *d);

@@ -34,6 +34,8 @@
  * outlet's section-mean (in-situ) fraction is an output. A transported theta (`granular_temperature =
  * transport`) gains the solids' axial and radial convection of (3/2) rho_s phi theta; it enters at
  * theta = (2/3) k of the inlet (isotropic; Krampa's command file prints T_s = 1.5 k_s, digest erratum 12).
+ * Model C's transported k_s and k_fs (`solids_turbulence = transported`, pipe_ksfs.c) gain the solids' axial and
+ * radial convection of c_s rho_s k_s and c_s rho_s k_fs; they enter with the fluid's: k_s = k, k_fs = 2k.
  * Measured (tests/models/test_pipe_developing.c): the
  * outlet against the fully developed pipe within 1e-4 (water at Re 4e4-2e5) and 7e-4 (0.5 mm beads at 25 %
  * with the kinetic pressure, 75 D) and 1e-10 (P1 with no-slip solids and the kinetic viscosity).
@@ -54,9 +56,9 @@ void pipe_march_release(pipe *p) {
   pipe_march *m = &p->march;
   double **a[] = {&m->uf_up, &m->us_up, &m->phi_up, &m->k_up,   &m->eps_up, &m->theta_up,
                   &m->ff,    &m->fs,    &m->rff,    &m->rfs,    &m->cap,    &m->s_old,
-                  &m->G,     &m->tau_fw, &m->tau_sw, &m->y_plus};
+                  &m->G,     &m->tau_fw, &m->tau_sw, &m->y_plus, &m->ks_up,  &m->kfs_up, &m->rs};
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i) free(*a[i]), *a[i] = NULL;
-  for (int k = 0; k < 7; ++k) free(m->field[k]), m->field[k] = NULL;
+  for (int k = 0; k < PIPE_NFIELDS; ++k) free(m->field[k]), m->field[k] = NULL;
   sl_fv_grid_free(&m->g);
   sl_tensor_grid_free(&m->tg);
   sl_mesh_destroy(m->mesh);
@@ -82,16 +84,17 @@ int pipe_march_setup(pipe *p, sl_diag *d) {
   for (int i = 0; i < n; ++i)
     if (fabs(m->g.xc[i] - g1->xc[i]) > 1e-12 * p->R)
       return sl_diag_set(d, SL_EFAILED, "pipe: the developing pipe's radial cells differ from the row's at %d", i);
-  double **a[] = {&m->uf_up, &m->us_up, &m->phi_up, &m->k_up, &m->eps_up, &m->theta_up, &m->cap, &m->s_old};
+  double **a[] = {&m->uf_up, &m->us_up,  &m->phi_up, &m->k_up, &m->eps_up,
+                  &m->theta_up, &m->ks_up, &m->kfs_up, &m->cap,  &m->s_old};
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i)
     if (!(*a[i] = calloc((size_t)n, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
-  double **b[] = {&m->ff, &m->fs, &m->rff, &m->rfs};
+  double **b[] = {&m->ff, &m->fs, &m->rff, &m->rfs, &m->rs};
   for (size_t i = 0; i < sizeof b / sizeof b[0]; ++i)
     if (!(*b[i] = calloc((size_t)g1->nf, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
   double **e[] = {&m->G, &m->tau_fw, &m->tau_sw, &m->y_plus};
   for (size_t i = 0; i < sizeof e / sizeof e[0]; ++i)
     if (!(*e[i] = calloc((size_t)nz, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
-  for (int k = 0; k < 7; ++k)
+  for (int k = 0; k < PIPE_NFIELDS; ++k)
     if (!(m->field[k] = calloc((size_t)n * (size_t)nz, sizeof(double))))
       return sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
   /* the inlet (Krampa 2009 section 3.1) */
@@ -101,6 +104,7 @@ int pipe_march_setup(pipe *p, sl_diag *d) {
     m->uf_up[i] = m->us_up[i] = V, m->phi_up[i] = c->solids_fraction;
     m->k_up[i] = k0, m->eps_up[i] = pow(0.09, 0.75) * pow(k0, 1.5) / l0;
     m->theta_up[i] = 2.0 * k0 / 3.0; /* isotropic, the solids' fluctuations the fluid's (digest erratum 12) */
+    m->ks_up[i] = k0, m->kfs_up[i] = 2.0 * k0; /* model C's likewise: u_s' = u_f' at the inlet */
   }
   return 0;
 }
@@ -118,7 +122,8 @@ void pipe_march_fluxes(pipe *p) {
     m->ff[i + 1] = m->ff[i] - ((1.0 - cs) * p->uf[i] - (1.0 - cs0) * m->uf_up[i]) * q;
     m->fs[i + 1] = m->fs[i] - (cs * p->us[i] - cs0 * m->us_up[i]) * q;
   }
-  for (int f = 0; f <= n; ++f) m->rff[f] = p->rho_f * m->ff[f], m->rfs[f] = sl_theta_capacity(p->rho_s, m->fs[f]);
+  for (int f = 0; f <= n; ++f)
+    m->rff[f] = p->rho_f * m->ff[f], m->rfs[f] = sl_theta_capacity(p->rho_s, m->fs[f]), m->rs[f] = p->rho_s * m->fs[f];
 }
 
 static void add(sl_csr *A, int i, int j, double v) { A->values[sl_csr_find(A, i, j)] += v; }
@@ -214,11 +219,23 @@ void pipe_march_theta(pipe *p, const double *cap_pseudo) {
   }
 }
 
+/* The march's storage of model C's k_s or k_fs (pipe_ksfs.c: c_s rho_s k convected by the solids, Krampa eqs
+   5.20 and 5.23's left sides): m->cap and m->s_old beside the steady solve's, the radial convection m->rs. */
+void pipe_march_ksfs(pipe *p, const double *s_iter, const double *s_up) {
+  pipe_march *m = &p->march;
+  for (int i = 0; i < p->n; ++i) {
+    double c = p->rho_s * fmax(p->phi[i], 1e-6), ms = c * fmax(p->us[i], 0.0) / m->h;
+    double ms0 = p->rho_s * fmax(m->phi_up[i], 1e-6) * m->us_up[i] / m->h;
+    m->cap[i] = c * 1e-30 + ms; /* the steady solve's pseudo-step is 1e30 */
+    m->s_old[i] = (c * 1e-30 * s_iter[i] + ms0 * s_up[i]) / m->cap[i];
+  }
+}
+
 /* The station's fields into the 2-D arrays (row j). */
 static void store(pipe *p, int j) {
   pipe_march *m = &p->march;
-  const double *f[7] = {p->uf, p->us, p->phi, p->k, p->eps, p->mu_t, p->theta};
-  for (int k = 0; k < 7; ++k) memcpy(m->field[k] + (size_t)j * (size_t)p->n, f[k], (size_t)p->n * sizeof(double));
+  const double *f[PIPE_NFIELDS] = {p->uf, p->us, p->phi, p->k, p->eps, p->mu_t, p->theta, p->ks, p->kfs};
+  for (int k = 0; k < PIPE_NFIELDS; ++k) memcpy(m->field[k] + (size_t)j * (size_t)p->n, f[k], (size_t)p->n * sizeof(double));
   m->G[j] = p->G, m->tau_fw[j] = p->tau_fw, m->tau_sw[j] = p->tau_sw, m->y_plus[j] = p->y_plus;
 }
 
@@ -232,6 +249,10 @@ int pipe_march_solve(pipe *p, sl_diag *d) {
   memcpy(p->phi, m->phi_up, (size_t)n * sizeof(double));
   if (p->cfg->granular_temperature == PIPE_THETA_TRANSPORT)
     memcpy(p->theta, m->theta_up, (size_t)n * sizeof(double));
+  if (p->cfg->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED) {
+    memcpy(p->ks, m->ks_up, (size_t)n * sizeof(double)), memcpy(p->kfs, m->kfs_up, (size_t)n * sizeof(double));
+    p->ksfs_started = 1;
+  }
   m->iterations = 0, m->worst_station_iterations = 0, m->pressure_drop = 0.0;
   p->G = 0.0;
   double z_last = 0.0;
@@ -263,6 +284,7 @@ int pipe_march_solve(pipe *p, sl_diag *d) {
     memcpy(m->k_up, p->k, (size_t)n * sizeof(double)), memcpy(m->eps_up, p->eps, (size_t)n * sizeof(double));
     memcpy(m->phi_up, p->phi, (size_t)n * sizeof(double));
     memcpy(m->theta_up, p->theta, (size_t)n * sizeof(double));
+    memcpy(m->ks_up, p->ks, (size_t)n * sizeof(double)), memcpy(m->kfs_up, p->kfs, (size_t)n * sizeof(double));
     z_last = z;
   }
   m->pressure_drop -= p->G * (p->cfg->length - z_last); /* the outlet's half cell at the last gradient */
@@ -278,7 +300,7 @@ int pipe_march_write(pipe *p, sl_output *out, unsigned mask, sl_diag *d) {
   double *v = malloc((size_t)nc * sizeof *v);
   if (!v) return sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
   int rc = 0;
-  for (int k = 0; k < 7 && !rc; ++k) {
+  for (int k = 0; k < PIPE_NFIELDS && !rc; ++k) {
     if (!(mask >> k & 1u)) continue;
     for (int c = 0; c < nc; ++c) v[m->tg.mesh_cell[c]] = m->field[k][c];
     rc = sl_output_write_field(out, sl_pipe_schema.fields[k], SL_CENTRE_CELL, 1, v, d);

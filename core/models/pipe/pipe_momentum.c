@@ -8,7 +8,8 @@
  * a = the face's mean of the cells' effective viscosities times area over
  * distance, a_w the wall's tau_w/u of the wall cell (the wall function or the
  * solids' wall condition), per radian and unit length. One sparse direct
- * solve (KLU) of 2n + 1 unknowns. */
+ * solve (KLU) of 2n + 1 unknowns. And the velocities' radial gradients on each cell's faces, which the
+ * turbulence's and the solids' production terms take. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -92,4 +93,15 @@ int pipe_momentum_solve(pipe *p, sl_diag *d) {
   p->G += w * (p->x[iG] - p->G);
   if (p->two_phase) p->tau_sw = p->a_sw * p->us[n - 1];
   return 0;
+}
+
+/* du/dr on each cell's inner (gw) and outer (ge) face: zero at the axis, `wall` on the wall face (NaN: the
+   wall cell's inner face's). */
+void pipe_face_gradients(const pipe *p, const double *u, double wall, double *gw, double *ge) {
+  const sl_fv_grid *g = &p->g;
+  const int n = p->n;
+  for (int i = 0; i < n; ++i) {
+    gw[i] = i > 0 ? (u[i] - u[i - 1]) / (g->xc[i] - g->xc[i - 1]) : 0.0;
+    ge[i] = i + 1 < n ? (u[i + 1] - u[i]) / (g->xc[i + 1] - g->xc[i]) : isnan(wall) ? gw[i] : wall;
+  }
 }

@@ -54,6 +54,15 @@ static const sl_key pipe_keys[] = {
      .help = "the solids' turbulent viscosity: the dispersed phase's eddy viscosity c_s rho_s nu_t/sigma (eddy), or "
              "Peirano & Leckner's kinetic and collisional viscosity with Tchen's equilibrium k_s and k_fs "
              "(Krampa 2009 model C, eqs 5.15-5.19; replaces [closure.granular])"},
+    {.section = "pipe", .name = "solids_turbulence", .type = SL_KEY_CHOICE, C(solids_turbulence),
+     .choices = "equilibrium|transported", .def = PIPE_SOLIDS_TURBULENCE_EQUILIBRIUM,
+     .help = "solids_viscosity = peirano_leckner: model C's k_s and k_fs from Tchen's equilibrium, or from their "
+             "transport equations (Krampa 2009 eqs 5.20, 5.23; Simonin 1996), which then also feed modulation and "
+             "dispersion = simonin"},
+    {.section = "pipe", .name = "covariance_schmidt", .type = SL_KEY_REAL, C(covariance_schmidt), .def = 1.0,
+     .min = 1e-3, .max = 1e3,
+     .help = "solids_turbulence = transported: sigma_kfs of the k_fs diffusion c_s rho_s nu_fs/sigma, nu_fs = k_fs "
+             "t_fs/3 (Krampa 2009 eq 5.23 gives none)"},
     {.section = "pipe", .name = "restitution", .type = SL_KEY_REAL, C(restitution), .def = 0.9, .min = 0.0,
      .max = 1.0, .help = "solids_viscosity = peirano_leckner: the particles' restitution coefficient e"},
     {.section = "pipe", .name = "solids_schmidt", .type = SL_KEY_REAL, C(solids_schmidt), .def = 1.0, .min = 1e-3,
@@ -96,7 +105,8 @@ static const sl_key pipe_keys[] = {
 };
 TABLE(pipe_key_table, pipe_keys);
 
-static const char *const pipe_fields[] = {"velocity_fluid", "velocity_solid", "phi", "k", "epsilon", "mu_t", "theta"};
+static const char *const pipe_fields[PIPE_NFIELDS] = {"velocity_fluid", "velocity_solid", "phi", "k",  "epsilon",
+                                                        "mu_t",           "theta",          "k_s", "k_fs"};
 
 const sl_schema sl_pipe_schema = {
     .model = "pipe",
@@ -119,5 +129,5 @@ const sl_schema sl_pipe_schema = {
     .config_size = sizeof(pipe_config),
     .boundary_size = 0,
     .fields = pipe_fields,
-    .n_fields = 7,
+    .n_fields = PIPE_NFIELDS,
 };

@@ -28,7 +28,8 @@
  * and the fluid-particle covariance of Tchen's equilibrium for heavy
  * particles, k_fs = 2 k eta/(1 + eta), eta = t_fs/t_p, t_p = c_s rho_s/K
  * (Krampa eq 4.58): fine particles (eta large) disperse as the fluid, D_fs ->
- * C_mu k^2/eps = nu_t. The kinetic theory's pressure joins with [pipe] kinetic_pressure:
+ * C_mu k^2/eps = nu_t; with `[pipe] solids_turbulence = transported` k_fs is model C's transported one
+ * (pipe_ksfs.c). The kinetic theory's pressure joins with [pipe] kinetic_pressure:
  * where phi is small its theta grows as 1/phi^2 (the dissipation falls with
  * phi^2, the dilute viscosity does not) and rho_s phi theta with it, so that
  * it drives solids from where they are fewest; in dilute flow (5 %) this runs
@@ -46,14 +47,10 @@
 /* |du_s/dr| in the cells, from the face gradients (zero at the axis; the wall face's from the last wall stress
    over the last solids viscosity: called before mu_s is renewed). */
 static void solids_shear(const pipe *p, double *gd) {
-  const sl_fv_grid *g = &p->g;
   const int n = p->n;
-  for (int i = 0; i < n; ++i) {
-    double gw = i > 0 ? (p->us[i] - p->us[i - 1]) / (g->xc[i] - g->xc[i - 1]) : 0.0;
-    double ge = i + 1 < n ? (p->us[i + 1] - p->us[i]) / (g->xc[i + 1] - g->xc[i])
-                          : -p->a_sw * p->us[i] / fmax(p->mu_s[i], 1e-300);
-    gd[i] = sqrt(0.5 * (gw * gw + ge * ge));
-  }
+  double *gw = p->buf[14], *ge = p->buf[15];
+  pipe_face_gradients(p, p->us, -p->a_sw * p->us[n - 1] / fmax(p->mu_s[n - 1], 1e-300), gw, ge);
+  for (int i = 0; i < n; ++i) gd[i] = sqrt(0.5 * (gw[i] * gw[i] + ge[i] * ge[i]));
 }
 
 /* mu_s and gamma of [closure.granular] at theta in every cell (sl_theta_balance's closure). */
@@ -95,12 +92,11 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
   for (int i = 0; i < n; ++i) p->Kd[i] = fmax(p->K[i] + slip[i] * dK[i], p->K[i] * 1e-3);
   /* mu_s: the dispersed phase's eddy viscosity, the constant, the kinetic theory's */
   if (p->have_gran) solids_shear(p, gd);
+  /* model C's transported k_s and k_fs start from Tchen's equilibrium at the first drag (pipe_ksfs.c) */
+  if (p->cfg->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED && !p->ksfs_started) pipe_ksfs_start(p);
   if (p->cfg->solids_viscosity == PIPE_SOLIDS_VISCOSITY_PEIRANO_LECKNER) /* Krampa's model C (pipe_peirano.c) */
     for (int i = 0; i < n; ++i) {
-      double s = p->uf[i] - p->us[i];
-      pipe_pl_point q = {.phi = p->phi[i], .k = p->k[i], .eps = p->eps[i], .slip2 = s * s, .K = p->K[i],
-                         .rho_s = p->rho_s, .d_p = p->d_p, .phi_max = p->phi_max,
-                         .restitution = p->cfg->restitution, .c_mu = p->c_mu, .c_beta = p->cfg->crossing_trajectory};
+      pipe_pl_point q = pipe_pl_point_at(p, i);
       p->mu_s[i] = p->phi[i] * p->rho_s * pipe_peirano_leckner(&q, NULL) + p->sc->solid.viscosity;
     }
   else
@@ -182,12 +178,7 @@ int pipe_solids_update(pipe *p, sl_diag *d) {
   double Dmax = 0.0;
   for (int i = 0; i < n; ++i) {
     double cs = p->phi[i], cf = 1.0 - cs, Dt = p->mu_t[i] / p->rho_f / p->cfg->dispersion_schmidt;
-    if (p->cfg->dispersion == PIPE_DISPERSION_SIMONIN) {
-      double k = p->k[i], s2 = (p->uf[i] - p->us[i]) * (p->uf[i] - p->us[i]);
-      double tfs = p->c_mu * 1.5 * k / p->eps[i] / sqrt(1.0 + p->cfg->crossing_trajectory * 1.5 * s2 / k);
-      double tp = cs * p->rho_s / p->K[i], eta = tfs / tp, kfs = 2.0 * k * eta / (1.0 + eta);
-      Dt = tfs * kfs / 3.0;
-    }
+    if (p->cfg->dispersion == PIPE_DISPERSION_SIMONIN) Dt = pipe_tfs(p, i) * pipe_kfs(p, i) / 3.0;
     D[i] = Dt + cs * cf * cf * B[i] / p->K[i];
     Dmax = fmax(Dmax, D[i]);
     cap[i] = 1.0;

@@ -18,16 +18,28 @@
 #include "core/models/granular.h"
 #include "core/models/pipe/pipe_impl.h"
 
+/* The solids' wall closure's energy flux q into the solids at the wall cell's granular temperature theta, and
+   the implicit part c = max(-dq/dtheta, 0) of its linearisation (core/models/granular.h); model C's k_s
+   (pipe_ksfs.c) takes it at theta = (2/3) k_s. */
+int pipe_theta_wall_flux(pipe *p, double theta, double *q, double *c_implicit, sl_diag *d) {
+  const int c = p->n - 1;
+  double uw = p->u_wall, ph = p->phi[c], th = fmax(theta, SL_THETA_FLOOR), dq;
+  const double *v[PQ_N] = {0};
+  v[PQ_SLIP_WALL] = &uw, v[PQ_PHI] = &ph, v[PQ_THETA] = &th;
+  sl_point_request rq = {"theta_flux", q, &dq, "theta"};
+  int rc = sl_point_eval(&p->walls, 1, v, &rq, 1, d);
+  if (rc) return sl_diag_prefix(d, rc, "[closure.wall_stress.solids] theta_flux");
+  *c_implicit = sl_theta_wall_implicit(dq);
+  return 0;
+}
+
 static int wall_energy(void *user, int c, double *rhs, double *diag, sl_diag *d) {
   pipe *p = user;
   if (c != p->n - 1 || !p->wall_energy) return 0;
-  double uw = p->u_wall, ph = p->phi[c], th = fmax(p->theta[c], SL_THETA_FLOOR), q, dq;
-  const double *v[PQ_N] = {0};
-  v[PQ_SLIP_WALL] = &uw, v[PQ_PHI] = &ph, v[PQ_THETA] = &th;
-  sl_point_request rq = {"theta_flux", &q, &dq, "theta"};
-  int rc = sl_point_eval(&p->walls, 1, v, &rq, 1, d);
-  if (rc) return sl_diag_prefix(d, rc, "[closure.wall_stress.solids] theta_flux");
-  sl_theta_wall_row(p->g.area[p->n], q, sl_theta_wall_implicit(dq), th, rhs, diag);
+  double th = fmax(p->theta[c], SL_THETA_FLOOR), q, ci;
+  int rc = pipe_theta_wall_flux(p, th, &q, &ci, d);
+  if (rc) return rc;
+  sl_theta_wall_row(p->g.area[p->n], q, ci, th, rhs, diag);
   return 0;
 }
 

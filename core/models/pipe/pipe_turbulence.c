@@ -18,7 +18,9 @@
  * gradients). k_fs is Tchen's equilibrium 2 k eta/(1 + eta), eta = t_fs/t_p, with the crossing-trajectory
  * t_fs of eq 4.61 (as `dispersion = simonin`, pipe_solids.c), where model C transports it (eq 5.23), so that
  * K (k_fs - 2k) = -2 K k/(1 + eta) <= 0: an attenuation, vanishing for fine particles (eta -> infinity). Both
- * terms enter as implicit sinks. Printed as is, eq 4.80 carries a c_f on the 2 k and eq 4.83 a minus sign
+ * terms enter as implicit sinks. With `[pipe] solids_turbulence = transported` k_fs is model C's transported one
+ * (pipe_ksfs.c, eq 5.23): K k_fs enters as a source (and C_eps3 (eps/k) K k_fs in epsilon), 2 K k (2 C_eps3 K eps)
+ * as the sinks, so that k_fs above 2 k feeds the fluid's turbulence. Printed as is, eq 4.80 carries a c_f on the 2 k and eq 4.83 a minus sign
  * before C_eps3; the dimensionally consistent form of Simonin's model (Elghobashi & Abou-Arab 1983's sign in
  * the epsilon equation: the same as in k) is used here. */
 #include <math.h>
@@ -69,33 +71,34 @@ static int hold_wall(void *user, int c, double *rhs, double *diag, sl_diag *d) {
 
 int pipe_turbulence_update(pipe *p, sl_diag *d) {
   const int n = p->n;
-  const sl_fv_grid *g = &p->g;
   double *P = p->buf[0], *cap = p->buf[1], *kd = p->buf[2], *src = p->buf[3], *snk = p->buf[4], *s = p->buf[5];
   /* P_k from the face gradients of u_f (zero at the axis; the wall cell is held) */
-  for (int i = 0; i < n; ++i) {
-    double gw = i > 0 ? (p->uf[i] - p->uf[i - 1]) / (g->xc[i] - g->xc[i - 1]) : 0.0;
-    double ge = i + 1 < n ? (p->uf[i + 1] - p->uf[i]) / (g->xc[i + 1] - g->xc[i]) : gw;
-    P[i] = p->mu_t[i] * 0.5 * (gw * gw + ge * ge);
-  }
+  double *gw = p->buf[14], *ge = p->buf[15];
+  pipe_face_gradients(p, p->uf, NAN, gw, ge);
+  for (int i = 0; i < n; ++i) P[i] = p->mu_t[i] * 0.5 * (gw[i] * gw[i] + ge[i] * ge[i]);
   const double a = p->cfg->pseudo_step;
   sl_cell_scalar_terms t = {
       .dt = 1.0, .cap = cap, .k = kd, .source = src, .sink = snk, .boundary = hold_wall, .boundary_user = p};
-  /* the modulation's coefficient 2 K/(1 + eta) of -k (0 without) */
-  double *mod = p->buf[6];
+  /* the modulation K (k_fs - 2k): with Tchen's k_fs the sink 2 K/(1 + eta) of k (0 without); with the transported
+     k_fs (pipe_ksfs.c) the sink 2 K and the source K k_fs (modk) */
+  double *mod = p->buf[6], *modk = p->buf[16];
+  const int transported = p->cfg->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED;
   for (int i = 0; i < n; ++i) {
-    mod[i] = 0.0;
+    mod[i] = 0.0, modk[i] = 0.0;
     if (!p->two_phase || p->cfg->modulation != 1 || !(p->K[i] > 0.0)) continue;
-    double k = p->k[i], s2 = (p->uf[i] - p->us[i]) * (p->uf[i] - p->us[i]);
-    double tfs = p->c_mu * 1.5 * k / p->eps[i] / sqrt(1.0 + p->cfg->crossing_trajectory * 1.5 * s2 / k);
+    if (transported) {
+      mod[i] = 2.0 * p->K[i], modk[i] = p->K[i] * p->kfs[i];
+      continue;
+    }
     double tp = fmax(p->phi[i], 1e-12) * p->rho_s / p->K[i];
-    mod[i] = 2.0 * p->K[i] / (1.0 + tfs / tp);
+    mod[i] = 2.0 * p->K[i] / (1.0 + pipe_tfs(p, i) / tp);
   }
   /* k */
   for (int i = 0; i < n; ++i) {
     double cf = 1.0 - p->phi[i];
     cap[i] = cf * p->rho_f * p->eps[i] / (a * p->k[i]);
     kd[i] = cf * (p->mu_f + p->mu_tk[i]);
-    src[i] = cf * P[i];
+    src[i] = cf * P[i] + modk[i];
     snk[i] = cf * p->rho_f * p->eps[i] / p->k[i] + mod[i];
   }
   t.s_old = p->k, p->dirichlet = p->k_wall;
@@ -109,7 +112,7 @@ int pipe_turbulence_update(pipe *p, sl_diag *d) {
   for (int i = 0; i < n; ++i) {
     double cf = 1.0 - p->phi[i];
     kd[i] = cf * (p->mu_f + p->mu_te[i]);
-    src[i] = cf * p->eps_prod[i] * P[i];
+    src[i] = cf * p->eps_prod[i] * P[i] + p->cfg->c_eps3 * modk[i] * p->eps[i] / p->k[i];
     snk[i] = cf * p->eps_sink[i] + p->cfg->c_eps3 * mod[i];
   }
   t.s_old = p->eps, p->dirichlet = p->eps_wall;
