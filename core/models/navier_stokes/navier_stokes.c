@@ -28,8 +28,8 @@ static const sl_key flow_keys[] = {
      .help = "a transient step: velocity and pressure in one coupled solve, or split (an incremental rotational "
              "pressure-correction step, Guermond, Minev & Shen 2006, with a constant pressure Poisson operator "
              "factorised once, Guermond & Salgado 2009); auto: projection for a transient suspension (solids "
-             "riding on the flow) on one rank in a frame at rest without a yield stress, monolithic otherwise "
-             "(docs/transient_cost.md)"},
+             "riding on the flow) with convection on one rank in a frame at rest without a yield stress, monolithic "
+             "otherwise (docs/transient_cost.md)"},
     {.section = "flow", .name = "gravity", .type = SL_KEY_REALS, SL_AT_SCENE(flow.gravity), .max_n = 3,
      .units = "m s^-2", .help = "gravitational acceleration per velocity component (default none)"},
     {.section = "flow", .name = "body_force", .type = SL_KEY_EXPRS, SL_AT_SCENE(flow.body_force), .vars = "x,y,t",
@@ -134,7 +134,9 @@ static const sl_key initial_keys[] = {
     {.section = "output", .name = "stream_function_stats", .type = SL_KEY_BOOL, SL_AT_MODEL(sl_flow_config, stream_stats),
      .help = "planar: write the stream function's largest and smallest values (stream_function_max, _min) and the "
              "phase of its first azimuthal mode about rotation_centre, arg int psi e^(i theta) dA "
-             "(stream_function_phase, rad), with each output"},
+             "(stream_function_phase, rad), and the centre of the vortex of largest |psi| (its extremum from a "
+             "local quadratic fit: stream_function_centre_x, _y, and its angle about rotation_centre, "
+             "stream_function_centre_phase), with each output"},
 };
 TABLE(sl_flow_keys_initial, initial_keys);
 
