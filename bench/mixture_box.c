@@ -19,7 +19,7 @@
  * a = 4, phi_max = 1,
  * t = 720 s (0.8 of the fronts' meeting time 905 s). sluice: dt = 10 s,
  * Stokes flow, as a run goes (the flow known at rest is not solved:
- * `sluice`), with every step solved (`sluice_every_solve`), and so with
+ * `sluice`), with every step solved by the monolithic step (`sluice_every_solve`), and so with
  * the split step ([flow] scheme = projection: `sluice_every_solve_projection`).
  * driftFluxFoam: the largest of 10, 5, 2, 1, 0.5, 0.25, 0.1 s with which its
  * run ends bounded, and 1/2, 1/4, 1/8 of it (its error falls with the
@@ -88,7 +88,7 @@ static void run_child(void *arg, void *result) {
 static int box_timed_run(int n, int line, int step, int every, run_result *r) {
   run_arg a = {.s = {.n = n, .line = line, .rho_s = 1006.0, .settling = step ? 2 : 1, .dt = 10.0,
                      .a = step ? foam_a : 0.0, .phi_max = step ? foam_phi_max : 0.0, .solve_every_step = every > 0,
-                     .projection = every > 1},
+                     .projection = every > 1, .monolithic = every == 1},
                .t_end = step ? t_step : t_smooth, .step = step};
   a.s.end = a.s.every = a.t_end;
   snprintf(a.out, sizeof a.out, "bench_box_%s_%d.h5", line ? "1d" : "2d", n);

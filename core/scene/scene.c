@@ -202,6 +202,20 @@ static int section_keys(const sl_schema *s, const char *section, const char **na
   return n;
 }
 
+/* 1 when [section] is [FAMILY.NAME] of a named family of the schema (keys flagged SL_KEY_NAMED) */
+static int named_member(const sl_schema *s, const char *section) {
+  const char *dot = strchr(section, '.');
+  if (!dot || !dot[1]) return 0;
+  for (int t = 0; t < s->n_tables; ++t)
+    for (int i = 0; i < s->tables[t]->n; ++i) {
+      const sl_key *k = &s->tables[t]->keys[i];
+      if ((k->flags & SL_KEY_NAMED) && strlen(k->section) == (size_t)(dot - section) &&
+          strncmp(k->section, section, (size_t)(dot - section)) == 0)
+        return 1;
+    }
+  return 0;
+}
+
 static int check_keys(builder *b, const sl_ini_section *sec, const char *schema_section, sl_diag *d) {
   const sl_schema *s = b->sc->schema;
   for (int i = 0; i < sec->n_entries; ++i) {
@@ -570,6 +584,7 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
   for (int i = 0; i < ini->n_sections && !rc && o->build_mesh; ++i) {
     const sl_ini_section *sec = &ini->sections[i];
     if (strncmp(sec->name, "closure.", 8) == 0 || strcmp(sec->name, "plugins") == 0) continue;
+    if (named_member(schema, sec->name)) continue; /* the model reads it (sl_scene_named_section), keys checked */
     for (int k = 0; k < sec->n_entries && !rc; ++k)
       if (!sec->entries[k].used)
         rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] %s: not read by the model (a key of no part of it)",
@@ -657,6 +672,48 @@ int sl_scene_require(const sl_scene *sc, const void *field, sl_diag *d) {
 }
 
 int sl_scene_has_section(const sl_scene *sc, const char *section) { return sl_ini_find_section(sc->ini, section) != NULL; }
+
+static const sl_ini_section *named_section(const sl_scene *sc, const char *family, int i) {
+  size_t n = strlen(family);
+  for (int k = 0; k < sc->ini->n_sections; ++k) {
+    const sl_ini_section *sec = &sc->ini->sections[k];
+    if (strncmp(sec->name, family, n) == 0 && sec->name[n] == '.' && sec->name[n + 1] && i-- == 0) return sec;
+  }
+  return NULL;
+}
+
+int sl_scene_named(const sl_scene *sc, const char *family, int i, const char **name, sl_src *where) {
+  const sl_ini_section *sec = named_section(sc, family, i);
+  if (!sec) return 0;
+  *name = sec->name + strlen(family) + 1;
+  *where = (sl_src){.file = sec->file, .line = sec->line, .section = sec->name};
+  return 1;
+}
+
+int sl_scene_named_reals(const sl_scene *sc, const char *family, int i, const char *key, double *v, int max, int *n,
+                         sl_src *where, sl_diag *d) {
+  const sl_ini_section *sec = named_section(sc, family, i);
+  const sl_key *k = sl_schema_key(sc->schema, family, key);
+  *n = 0, *where = (sl_src){0};
+  if (!sec || !k || !(k->flags & SL_KEY_NAMED))
+    return sl_diag_set(d, SL_EFAILED, "[%s.*] %s: not a key of a named family", family, key);
+  sl_ini_entry *e = sl_ini_find(sc->ini, sec->name, key);
+  if (!e) return 0;
+  *where = (sl_src){.file = e->file, .line = e->line, .section = sec->name, .key = key, .value = e->value};
+  if (k->type == SL_KEY_REAL) {
+    int rc = sl_ini_get_real(sc->ini, sec->name, key, 1, 0.0, k->min, k->max, v, d);
+    if (!rc) *n = 1;
+    return rc;
+  }
+  if (k->type != SL_KEY_REALS) return sl_diag_set(d, SL_EFAILED, "[%s] %s: not a number key", sec->name, key);
+  int cap = k->max_n > 0 && k->max_n < max ? k->max_n : max;
+  int rc = sl_ini_get_real_list(sc->ini, sec->name, key, 1, v, cap, n, d);
+  for (int q = 0; q < *n && !rc; ++q)
+    if (!(v[q] >= k->min && v[q] <= k->max))
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] %s: %g is outside [%g, %g]", e->file, e->line, sec->name, key,
+                       v[q], k->min, k->max);
+  return rc;
+}
 
 const sl_src *sl_scene_boundary_section(const sl_scene *sc, int i) {
   return sc->boundary_src && sc->boundary_src[i].file ? &sc->boundary_src[i] : NULL;

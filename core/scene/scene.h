@@ -176,6 +176,14 @@ int sl_scene_require(const sl_scene *sc, const void *field, sl_diag *d);
 int sl_scene_locate(const sl_scene *sc, int rc, sl_diag *d);
 /* 1 when the scene file has the section (e.g. "time"). */
 int sl_scene_has_section(const sl_scene *sc, const char *section);
+/* The i-th [family.NAME] section of the scene (a named family: its keys flagged SL_KEY_NAMED), in the file's
+ * order: 1 with *name its NAME and *where the section's location, 0 past the last. Its keys were checked against
+ * the family's. */
+int sl_scene_named(const sl_scene *sc, const char *family, int i, const char **name, sl_src *where);
+/* Key `key` of the i-th [family.NAME], read by the family's schema key (its type, count and range): up to max
+ * numbers into v, *n of them (0 when the key is absent, where->file NULL then); where is the key's location. */
+int sl_scene_named_reals(const sl_scene *sc, const char *family, int i, const char *key, double *v, int max, int *n,
+                         sl_src *where, sl_diag *d);
 
 /* Boundary i's struct, and its name. */
 static inline void *sl_scene_boundary(const sl_scene *sc, int i) {

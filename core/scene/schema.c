@@ -6,7 +6,12 @@
 #include <stdio.h>
 #include <string.h>
 
-static int section_matches(const sl_key *k, const char *section) { return strcmp(k->section, section) == 0; }
+/* [section], or [section.NAME] for a key of a named family (SL_KEY_NAMED) */
+static int section_matches(const sl_key *k, const char *section) {
+  if (strcmp(k->section, section) == 0) return 1;
+  size_t n = strlen(k->section);
+  return (k->flags & SL_KEY_NAMED) && strncmp(section, k->section, n) == 0 && section[n] == '.' && section[n + 1];
+}
 
 const sl_key *sl_schema_key(const sl_schema *s, const char *section, const char *name) {
   for (int t = 0; t < s->n_tables; ++t)

@@ -49,6 +49,8 @@ typedef struct sl_scene_exprs {
 
 enum {
   SL_KEY_REQUIRED = 1u, /* an error when absent */
+  SL_KEY_NAMED = 2u,    /* the section may also be given as [section.NAME], once per NAME, with the same keys: the
+                           model reads those itself (sl_scene_named_section) */
 };
 
 typedef struct sl_key {

@@ -32,9 +32,12 @@
  * the linear solver answer with FGMRES preconditioned by an older
  * factorisation (see linsolve.h) instead of factorising every iteration.
  *
- * A linear problem (opts.linear) takes one solve, which is exact; the
- * residual it reports is b - A du, computed with the matrix (no second
- * assembly), so A must be the exact operator. When A already holds that
+ * A linear problem (opts.linear) takes one solve, exact unless linear_rtol
+ * is given; the residual it reports is b - A du, computed with the matrix
+ * (no second assembly), so A must be the exact operator. A linear time step
+ * (predicted) with a load_scale is not solved at all when the residual at u
+ * is at the round-off of the terms it is the sum of: u is then as good as
+ * a direct solve would give (load_scale below). When A already holds that
  * operator (opts.matrix_current: a constant-coefficient problem re-solved
  * with new data), only b is assembled and A is left untouched, so the
  * solver also keeps its factorisation.
@@ -78,7 +81,17 @@ typedef struct sl_newton_opts {
   double linear_rtol;   /* each correction's relative residual |b - A du|_2 <= linear_rtol |b|_2, so that
                            the solver may reuse an older factorisation (sl_linsolve_solve_rtol); default
                            SL_NEWTON_LINEAR_RTOL (predicted: at least 1e-2 rtol); negative: direct solves. A
-                           linear problem solves directly. */
+                           linear problem solves directly unless it is given (> 0). */
+  /* A linear time step (linear and predicted): the 2-norm of the load's own terms before they cancel (a body
+     force F over the domain: about F |Omega| / sqrt(n)). When |b|_2 <= SL_NEWTON_ROUNDOFF (T + load_scale), T the
+     operator's terms at u (above), u's normwise backward error |b| / (|A| |u| + |f|) is at round-off (Rigal &
+     Gaches 1967, J. ACM 14:543; Higham 2002, Accuracy and Stability of Numerical Algorithms, Thm 7.1), what a
+     backward-stable direct solve leaves: u is the solution without a solve (a suspension at rest whose pressure
+     carries its weight). The same level bounds a solve's tolerance from below. 0: no such test. */
+  double load_scale;
+  /* With load_scale: the residual at u is assembled alone first (T then left out of the test, the stricter), the
+     matrix only when the test fails and a solve follows: for a step expected at rest (a velocity at round-off). */
+  int residual_first;
   /* Called once per iteration before its correction is taken (--monitor): the iteration (from 1), whether
      it is a Picard one, its relative correction, the residual at u and the terms' scale. May be NULL. */
   void (*monitor)(void *user, int iteration, int picard, double correction, double residual, double terms);
@@ -104,7 +117,7 @@ typedef struct sl_newton_opts {
 enum { SL_NEWTON_HISTORY = 32 };
 
 typedef struct sl_newton_stats {
-  int iterations;        /* linear solves */
+  int iterations;        /* linear solves (0: a linear step whose residual was at round-off, solved by u) */
   int picard_iterations; /* of those, Picard */
   int assemblies;        /* full (matrix) assemblies */
   int residuals;         /* residual-only assemblies (line search, a reused matrix) */

@@ -36,6 +36,7 @@ typedef struct box_scene {
   int convection;         /* [flow] convection = true, with adaptive BDF2 steps (else Stokes flow, fixed BDF1) */
   int solve_every_step;   /* solve the flow even where its result is known ([solver] skip_known = false) */
   int projection;         /* [flow] scheme = projection (the split step) */
+  int monolithic;         /* [flow] scheme = monolithic (else the default, auto: the split step for this box) */
   const char *extra;      /* more sections at the end, or NULL */
 } box_scene;
 
@@ -75,6 +76,7 @@ static inline int box_run(const box_scene *s, const char *out, sluice_summary *r
   int n_sets = 0;
   if (s->solve_every_step) sets[n_sets++] = "solver.skip_known=false";
   if (s->projection) sets[n_sets++] = "flow.scheme=projection";
+  else if (s->monolithic) sets[n_sets++] = "flow.scheme=monolithic";
   sluice_open_opts oo = {.sets = n_sets ? sets : NULL};
   sluice *sc = NULL;
   sluice_error e = {0, ""};

@@ -10,13 +10,17 @@
  *   axial profile against the exact annular Poiseuille profile and the swirl
  *   against Couette's (Bird, Stewart & Lightfoot 2002, Examples 2.4-1 and
  *   3.6-3) on 16, 32, 64 cells across the gap, second order.
+ * - torque: the same annulus one cell high between slip walls: the torque on the rotor against Couette's exact
+ *   torque between coaxial cylinders, second order, and balanced by the vessel's to round-off.
+ * - named bodies: the rotor as two [body.NAME] halves equals the single [body] to round-off, torques adding up.
  * - centrifugal: configs/couette_two_phase.ini with centrifugal = true and
  *   neutrally buoyant solids: the radial pressure of the Couette swirl,
  *   dp/dr = rho u_theta^2 / r, integrated exactly,
  *     p(r) = rho (A^2 r^2 / 2 + 2 A B ln r - B^2 / (2 r^2)) + const,
  *   u_theta = A r + B / r, on 16, 32, 64 cells, second order; denser solids
  *   move outwards (and stay uniform without the key).
- * - bad input: [body] and centrifugal keys refused with file:line.
+ * - bad input: [body], [body.NAME] (overlapping, outside the domain, named like a boundary, without a box, an
+ *   unknown key) and centrifugal keys refused with file:line.
  * - viscometer_tip (long): configs/viscometer_rotor_tip.ini, the rotor's tip
  *   in the fluidised bed (Pringle 2001 5.6): the porosity below the tip,
  *   with the swirl one-way and two-way. */
@@ -127,6 +131,40 @@ static void annulus_order(void) {
   CHECK_MSG(pt1 > 1.8 && pt2 > 1.8, "annulus: u_theta order %.2f, %.2f", pt1, pt2);
 }
 
+/* The torque on the blocked rotor (two_fluid_plane_swirl.c) against Couette's between coaxial cylinders, the inner
+ * one turning at omega, the outer at rest: T = 2 pi r_i^2 L tau(r_i) = -4 pi mu L omega r_i^2 r_o^2 / (r_o^2 -
+ * r_i^2) on the rotor (Bird, Stewart & Lightfoot 2002, Example 3.6-3; mu = 1 Pa s, L = 0.2 m), its opposite on the
+ * vessel. The scene's bottom and top become slip walls (no torque, no flow through them) on one row of cells, so
+ * that the swirl is Couette's at every height; 16, 32, 64 cells across the gap. Asserted: the torque within 0.5 %
+ * on 32 cells and second order, the mean azimuthal stress on the rotor's side at order 2 towards tau(r_i), and the
+ * torques on rotor and vessel opposite to round-off (the discrete angular momentum is conserved). */
+static void annulus_torque(void) {
+  const double L = 0.2, MU = 1.0;
+  const double T = -4.0 * M_PI * MU * L * OMEGA * RI * RI * RO * RO / (RO * RO - RI * RI), tau = T / (2 * M_PI * RI * RI * L);
+  double e[3], es[3];
+  for (int l = 0; l < 3; ++l) {
+    int n = 16 << l;
+    char cells[64];
+    snprintf(cells, sizeof cells, "mesh.cells=%d,1", n + n / 2);
+    const char *sets[] = {cells, "boundary.top.type=slip", NULL};
+    const char *out = "body_torque.h5";
+    if (run_ok("annulus_blocked", "boundary.bottom", "[boundary.bottom]\ntype = slip\n", sets, out)) return;
+    double tb = scalar(out, "torque_body", INFINITY), tv = scalar(out, "torque_right", INFINITY);
+    double tf = scalar(out, "torque_fluid_body", INFINITY), ts = scalar(out, "torque_solid_body", INFINITY);
+    double sb = scalar(out, "wall_shear_stress_theta_fluid_body", INFINITY);
+    e[l] = fabs(tb - T) / fabs(T), es[l] = fabs(sb - tau) / fabs(tau);
+    printf("  torque on the blocked rotor, %d cells across the gap: %.6e N m (Couette %.6e, error %.2e), on the "
+           "vessel %.6e, mean stress on the rotor %.5f Pa (%.5f)\n", n, tb, T, e[l], tv, sb, tau);
+    CHECK_MSG(fabs(tb + tv) <= 1e-12 * fabs(T), "torque: rotor %.17g and vessel %.17g do not balance", tb, tv);
+    CHECK_MSG(tf == tb && ts == 0.0, "torque: clear fluid, fluid %.17g solids %.17g of %.17g", tf, ts, tb);
+  }
+  double p1 = log2(e[0] / e[1]), p2 = log2(e[1] / e[2]), q1 = log2(es[0] / es[1]), q2 = log2(es[1] / es[2]);
+  printf("  torque order %.2f, %.2f; the rotor's mean azimuthal stress order %.2f, %.2f\n", p1, p2, q1, q2);
+  CHECK_MSG(e[1] < 5e-3, "torque: error %.3g on 32 cells", e[1]);
+  CHECK_MSG(p1 > 1.8 && p2 > 1.8, "torque: order %.2f, %.2f", p1, p2);
+  CHECK_MSG(q1 > 1.8 && q2 > 1.8, "torque: the stress's order %.2f, %.2f", q1, q2);
+}
+
 /* Couette's pressure: p(r) up to a constant, rho = 1000 */
 static double couette_pressure(double r) {
   double A = OMEGA * RI * RI / (RI * RI - RO * RO), B = -OMEGA * RI * RI * RO * RO / (RI * RI - RO * RO);
@@ -183,6 +221,38 @@ static void centrifugal_order(void) {
   }
 }
 
+/* Named bodies ([body.NAME]): the rotor as two bodies, its lower and upper half, touching at z = 0.1 m: the fields
+ * equal the single [body]'s to round-off (the faces between them are dead, as inside one body), and the two
+ * halves' torques add up to the whole rotor's. */
+static void named_bodies(void) {
+  const char *two = "[body.lower]\nbox = 0, 0.015, 0, 0.1\nangular_velocity = 10\n\n"
+                    "[body.upper]\nbox = 0, 0.015, 0.1, 0.2\nangular_velocity = 10\n";
+  const char *sets[] = {NULL};
+  sl_diag d = {{0}};
+  int rc = run_replaced("annulus_blocked", NULL, NULL, sets, "body_one.h5", &d);
+  CHECK_MSG(rc == 0, "one body: %s", d.msg);
+  if (!rc) rc = run_replaced("annulus_blocked", "body", two, sets, "body_two.h5", &d);
+  CHECK_MSG(rc == 0, "two bodies: %s", d.msg);
+  if (rc) return;
+  static const char *const names[3] = {"velocity_fluid", "swirl_fluid", "pressure"};
+  for (int k = 0; k < 3; ++k) {
+    int n1 = 0, n2 = 0;
+    double *a = field_at("body_one.h5", names[k], INFINITY, &n1, NULL), *b = field_at("body_two.h5", names[k], INFINITY, &n2, NULL);
+    CHECK_MSG(a && b && n1 == n2 && n1 > 0, "%s: %d, %d cells", names[k], n1, n2);
+    double diff = 0.0, big = 0.0;
+    int nv = k == 0 ? 3 * n1 : n1;
+    for (int i = 0; a && b && n1 == n2 && i < nv; ++i) diff = fmax(diff, fabs(a[i] - b[i])), big = fmax(big, fabs(a[i]));
+    printf("  named bodies: %s of two bodies against one: largest difference %.2e of %.3e\n", names[k], diff, big);
+    CHECK_MSG(big > 0.0 && diff <= 1e-12 * big, "%s: difference %.3g of %.3g", names[k], diff, big);
+    free(a), free(b);
+  }
+  double t1 = scalar("body_one.h5", "torque_body", INFINITY);
+  double tl = scalar("body_two.h5", "torque_lower", INFINITY), tu = scalar("body_two.h5", "torque_upper", INFINITY);
+  printf("  named bodies: torque %.6e + %.6e = %.6e N m against the single body's %.6e\n", tl, tu, tl + tu, t1);
+  CHECK_MSG(fabs(tl + tu - t1) <= 1e-12 * fabs(t1) && tl < 0.0 && tu < 0.0, "torques %.17g + %.17g against %.17g", tl,
+            tu, t1);
+}
+
 static void bad_input(void) {
   /* the [body] section replaced in the scene file (its errors name the file's line) */
   struct {
@@ -193,6 +263,13 @@ static void bad_input(void) {
                                                                   "not on a grid line"},
       {"[body]\nbox = 0, 0.045, 0, 0.2\n", "annulus_blocked.ini:63: [body] box: it holds all of the mesh's"},
       {"[body]\nangular_velocity = 10\n", "annulus_blocked.ini:63: [body] angular_velocity: the body needs its box"},
+      {"[body.a]\nbox = 0, 0.015, 0, 0.1\n[body.b]\nbox = 0.0075, 0.015, 0.05, 0.2\n",
+       "annulus_blocked.ini:65: [body.b] box = 0.0075, 0.015, 0.05, 0.2: overlaps"},
+      {"[body.a]\nbox = 0, 0.015, 0, 0.3\n", "annulus_blocked.ini:63: [body.a] box = 0, 0.015, 0, 0.3: outside the "
+                                             "domain"},
+      {"[body.right]\nbox = 0, 0.015, 0, 0.1\n", "annulus_blocked.ini:62: [body.right]: the name of a boundary"},
+      {"[body.a]\nangular_velocity = 10\n", "annulus_blocked.ini:62: [body.a]: the body needs its box"},
+      {"[body.a]\nbox = 0, 0.015, 0, 0.1\nradius = 3\n", "annulus_blocked.ini:64:1: error: [body.a] radius"},
   };
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
     sl_diag d = {{0}};
@@ -212,17 +289,35 @@ static void bad_input(void) {
   }
 }
 
-/* configs/viscometer_rotor_tip.ini on 9 x 20 cells (5 mm) to t = 50 s, the swirl one-way and two-way: the
- * porosity directly below the tip (the row under z = 30 mm: the axis cell, the mean of the three under the rotor)
- * against Pringle's (2001 5.6, digest 4.8) n ~ 1 there, the sand dropping out where the fluid is slow. The one-way
- * run shows it (the axis cell's porosity above 0.95); the two-way run's is printed (its centrifugal pumping under
- * the tip keeps the sand up there); solids conserved in both. */
+/* configs/viscometer_rotor_tip.ini on 9 x 20 cells (5 mm), the swirl one-way (to its steady state) and two-way
+ * (to t = 50 s): the porosity directly below the tip (the row under z = 30 mm: the axis cell, the mean of the
+ * three under the rotor) against Pringle's (2001 5.6, digest 4.8) n ~ 1 there, the sand dropping out where the
+ * fluid is slow. The one-way run shows it (the axis cell's porosity above 0.95), reaches the scene's steady
+ * criterion (largest dphi/dt below 1e-5 per s) before its end with under 10 % of its steps rejected, and the
+ * mixture holds the rotor back (a negative torque on it); the two-way run's porosity is printed (its centrifugal
+ * pumping under the tip keeps the sand up there); solids conserved in both. */
 static void viscometer_tip(void) {
   enum { NX = 9, NZ = 20, TIP = 6 }; /* the tip at row 6 (z = 30 mm); the rotor r < 15 mm: columns 0-2 */
   for (int two_way = 0; two_way < 2; ++two_way) {
     const char *out = "viscometer_rotor_tip.h5";
-    const char *sets[] = {"mesh.cells=9,20", "time.end=50", two_way ? "two_fluid.centrifugal=true" : NULL, NULL};
-    if (run_ok("viscometer_rotor_tip", NULL, NULL, sets, out)) return;
+    const char *sets[] = {"mesh.cells=9,20", two_way ? "two_fluid.centrifugal=true" : NULL,
+                          two_way ? "time.end=50" : NULL, NULL};
+    scene_request q = {.configs = configs, .scene = "viscometer_rotor_tip", .sets = sets, .out = out};
+    sluice_summary res;
+    sl_diag d = {{0}};
+    int rc = scene_run(&q, &res, &d);
+    CHECK_MSG(rc == 0, "viscometer_rotor_tip: %s", d.msg);
+    if (rc) return;
+    double rejected = res.steps + res.rejected_steps > 0 ? (double)res.rejected_steps / (double)(res.steps + res.rejected_steps) : 1.0;
+    double T = scalar(out, "torque_body", INFINITY), Tf = scalar(out, "torque_fluid_body", INFINITY);
+    printf("  viscometer with the rotor's tip (9 x 20, swirl %s): %s; %ld steps, %ld rejected (%.1f %%); torque on "
+           "the rotor %.4e N m (fluid %.4e)\n", two_way ? "two-way" : "one-way", res.stop_reason, res.steps,
+           res.rejected_steps, 100.0 * rejected, T, Tf);
+    if (!two_way) {
+      CHECK_MSG(strstr(res.stop_reason, "steady") != NULL, "viscometer_tip (one-way): not steady (%s)", res.stop_reason);
+      CHECK_MSG(rejected < 0.1, "viscometer_tip (one-way): %.3g of the steps rejected", rejected);
+      CHECK_MSG(T < 0.0 && Tf < 0.0, "viscometer_tip (one-way): torque %.3g, fluid's %.3g", T, Tf);
+    }
     int n = 0;
     double tf = 0.0, *phi = field_at(out, "phi", INFINITY, &n, &tf);
     CHECK_MSG(phi && n == NX * NZ, "%d cells", n);
@@ -250,10 +345,10 @@ int main(int argc, char **argv) {
   snprintf(configs, sizeof configs, "%s/configs", src ? src : ".");
   const char *part = argc > 1 ? argv[1] : "";
   if (strcmp(part, "viscometer_tip") == 0) viscometer_tip();
-  else if (strcmp(part, "annulus") == 0) annulus_equivalence(), annulus_order();
+  else if (strcmp(part, "annulus") == 0) annulus_equivalence(), annulus_order(), annulus_torque(), named_bodies();
   else if (strcmp(part, "centrifugal") == 0) centrifugal_order();
   else if (strcmp(part, "bad_input") == 0) bad_input();
   else if (*part) return fprintf(stderr, "unknown part '%s'\n", part), 2;
-  else annulus_equivalence(), annulus_order(), centrifugal_order(), bad_input();
+  else annulus_equivalence(), annulus_order(), annulus_torque(), named_bodies(), centrifugal_order(), bad_input();
   return sl_test_summary();
 }

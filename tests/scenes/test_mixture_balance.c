@@ -23,7 +23,10 @@
  *    step solved; the run that skips the known solves ends at the same L1
  *    (within 1e-9). The density contrasts 0.01 (1006 in 996 kg m^-3) and 1
  *    (2000) both run to the end so, the latter also with convection and
- *    adaptive BDF2 steps. */
+ *    adaptive BDF2 steps.
+ *  - Every step's flow solved, the box at rest assembles no matrix and
+ *    factorises nothing (its residual is at round-off); a box whose phi
+ *    varies across it moves and solves every step. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -154,6 +157,35 @@ static void settling_box(void) {
   }
 }
 
+/* A linear step whose residual at the predictor is at the round-off of its load's terms is not solved
+ * (core/solve/newton.h load_scale; the monolithic step's): the box at rest with every step's flow solved assembles the load alone, never
+ * a matrix, factorises nothing and stays at j = 0 exactly; a box whose phi varies across it (0.12 left of the
+ * middle, 0.08 right) moves, and every one of its steps assembles its matrix and solves. */
+static void roundoff_steps(void) {
+  box_scene s = {.n = quick ? 8 : 20, .rho_s = 1006.0, .settling = 1, .end = 100.0, .dt = 10.0, .every = 100.0,
+                 .solve_every_step = 1, .monolithic = 1};
+  sl_diag d = {{0}};
+  sluice_summary res;
+  int rc = box_run(&s, "balance_roundoff.h5", &res, &d);
+  CHECK_MSG(rc == 0, "box at rest: %s", d.msg);
+  double v = rc ? NAN : worst_speed("balance_roundoff.h5");
+  if (!rc)
+    printf("  settling box, every step's flow: %ld steps, %ld matrix and %ld load assemblies, max |j| %.2e m/s; %s\n",
+           res.steps, res.matrix_assemblies, res.residual_assemblies, v, res.linear_summary);
+  CHECK_MSG(!rc && res.steps == 10 && res.matrix_assemblies == 0 && res.residual_assemblies == 10 && v == 0.0,
+            "box at rest: %ld matrix assemblies, |j| %.3g", res.matrix_assemblies, v);
+  if (!rc) CHECK_CONTAINS(res.linear_summary, " 0 numeric");
+  s.phi = "x < 0.05 ? 0.12 : 0.08";
+  rc = box_run(&s, "balance_moving.h5", &res, &d);
+  CHECK_MSG(rc == 0, "moving box: %s", d.msg);
+  v = rc ? NAN : worst_speed("balance_moving.h5");
+  if (!rc)
+    printf("  box with phi varying across it: %ld steps, %ld matrix assemblies, max |j| %.2e m/s; %s\n", res.steps,
+           res.matrix_assemblies, v, res.linear_summary);
+  CHECK_MSG(!rc && res.matrix_assemblies == res.steps && v > 1e-3 * box_ut, "moving box: %ld matrix assemblies in %ld "
+            "steps, |j| %.3g", res.matrix_assemblies, res.steps, v);
+}
+
 int main(void) {
   const char *src = getenv("SLUICE_SOURCE_DIR");
   quick = getenv("SLUICE_SKIP_LONG") != NULL;
@@ -161,5 +193,6 @@ int main(void) {
   hydrostatic_box();
   hydrostatic_boycott();
   settling_box();
+  roundoff_steps();
   return sl_test_summary();
 }

@@ -88,7 +88,7 @@ static int add_tractions(sl_flow_problem *p, sl_system *s, sl_diag *d) {
  * element operators. Used after every assembly of such a problem, so that
  * a step's right-hand side is the same sum whether its matrix was kept or
  * assembled afresh (a restarted run reproduces the uninterrupted one). */
-static int linear_residual(sl_flow_problem *p, const double *u, double *b, sl_diag *d) {
+static int linear_residual(sl_flow_problem *p, const double *u, int u_zero, double *b, sl_diag *d) {
   memset(b, 0, (size_t)p->th->n_dofs * sizeof *b);
   int rc = sl_assemble_flow(&p->sys, p->th, u, &p->opts, SL_FLOW_LOAD, d);
   if (!rc) rc = add_tractions(p, &p->sys, d);
@@ -97,10 +97,20 @@ static int linear_residual(sl_flow_problem *p, const double *u, double *b, sl_di
   if (rc) return rc;
   /* A's slip rows are rotated (sl_flow_problem_assemble): so is the load, before A u comes off */
   if (p->slip && (rc = sl_slip_rows(p->slip, NULL, b, d))) return rc;
-  sl_csr_matvec_add(&p->sys.A, -1.0, u, 1.0, b);
+  if (!u_zero) sl_csr_matvec_add(&p->sys.A, -1.0, u, 1.0, b); /* (A 0 = 0) */
   for (int32_t k = 0; k < p->n_fixed; ++k) b[p->fixed[k]] = 0.0;
   if (p->slip) sl_slip_zero_normal(p->slip, b);
   return 0;
+}
+
+/* A problem linear in u (Stokes flow of a Newtonian fluid: the density, a cell's drag and the frame's terms are
+ * linear in u) at u = 0 exactly: -R(0) is the load alone, whatever A holds (A 0 = 0), so its residual needs the
+ * load's assembly only (a vessel at rest, whose every step starts there). */
+static int linear_at_zero(const sl_flow_problem *p, const double *u) {
+  if (p->opts.convection || p->opts.viscosity) return 0;
+  for (int32_t i = 0; i < p->th->n_dofs; ++i)
+    if (u[i] != 0.0) return 0;
+  return 1;
 }
 
 int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_csr *A, double *b, sl_diag *d) {
@@ -108,7 +118,10 @@ int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_cs
   static const sl_flow_linearisation lin[] = {SL_FLOW_RESIDUAL, SL_FLOW_NEWTON, SL_FLOW_PICARD};
   if (A != &p->sys.A || b != p->sys.b)
     return sl_diag_set(d, SL_EBADINPUT, "flow: assemble into the problem's own system");
-  if (mode == SL_NL_RESIDUAL && matrix_current(p)) return linear_residual(p, u, b, d);
+  if (mode == SL_NL_RESIDUAL) {
+    int zero = linear_at_zero(p, u);
+    if (zero || matrix_current(p)) return linear_residual(p, u, zero, b, d);
+  }
   if (mode != SL_NL_RESIDUAL) p->matrix.valid = 0;
   int rc = sl_assemble_flow(&p->sys, p->th, u, &p->opts, lin[mode], d);
   if (!rc) rc = add_tractions(p, &p->sys, d);
@@ -125,7 +138,7 @@ int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_cs
   if (!constant_matrix_key(&p->opts, &k)) return 0;
   k.valid = 1, k.pattern_id = A->pattern_id, k.values_gen = A->values_gen;
   p->matrix = k;
-  return linear_residual(p, u, b, d);
+  return linear_residual(p, u, 0, b, d);
 }
 
 int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const sl_newton_opts *o,

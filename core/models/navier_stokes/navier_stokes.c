@@ -28,8 +28,8 @@ static const sl_key flow_keys[] = {
      .help = "a transient step: velocity and pressure in one coupled solve, or split (an incremental rotational "
              "pressure-correction step, Guermond, Minev & Shen 2006, with a constant pressure Poisson operator "
              "factorised once, Guermond & Salgado 2009); auto: projection for a transient suspension (solids "
-             "riding on the flow) on one rank in a frame at rest without a yield stress, monolithic otherwise "
-             "(docs/transient_cost.md)"},
+             "riding on the flow) with convection on one rank in a frame at rest without a yield stress, monolithic "
+             "otherwise (docs/transient_cost.md)"},
     {.section = "flow", .name = "gravity", .type = SL_KEY_REALS, SL_AT_SCENE(flow.gravity), .max_n = 3,
      .units = "m s^-2", .help = "gravitational acceleration per velocity component (default none)"},
     {.section = "flow", .name = "body_force", .type = SL_KEY_EXPRS, SL_AT_SCENE(flow.body_force), .vars = "x,y,t",

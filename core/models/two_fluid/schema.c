@@ -219,11 +219,11 @@ static const sl_key plane_keys[] = {
      .help = "with swirl: the centrifugal force rho alpha u_theta^2 / r of each phase in its radial momentum (a "
              "two-way swirl)"},
     {.section = "body", .name = "box", .type = SL_KEY_REALS, C(body_box), .max_n = 4, .min = -1e6, .max = 1e6,
-     .units = "m", .def_doc = "none (no body)",
+     .flags = SL_KEY_NAMED, .units = "m", .def_doc = "none (no body)",
      .help = "a solid body: x0, x1, y0, y1 (r and z when axisymmetric) of the box it fills; the cells whose centres "
              "lie inside are removed, its edges inside the domain on grid lines; its faces are no-slip walls"},
     {.section = "body", .name = "angular_velocity", .type = SL_KEY_REAL, C(body_omega), .min = -1e6, .max = 1e6,
-     .units = "rad s^-1", .help = "with [two_fluid] swirl: the body's rotation about the axis (a rotor)"},
+     .flags = SL_KEY_NAMED, .units = "rad s^-1", .help = "with [two_fluid] swirl: the body's rotation about the axis (a rotor)"},
     {.section = "two_fluid", .name = "dispersion", .type = SL_KEY_CHOICE, C(dispersion),
      .choices = "gradient|turbophoretic", .help = "with [closure.turbulence]: the solids flux -nu_t/sigma_d grad phi "
                                                   "(gradient), or with the drift -phi tau_p grad(2k/3) down the "

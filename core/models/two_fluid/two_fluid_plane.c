@@ -262,16 +262,27 @@ static int plane_write(void *self, sl_output *out, double t, const double *u_sta
     rc = sl_output_write_field(out, phase ? "swirl_solid" : "swirl_fluid", SL_CENTRE_CELL, 1,
                                to_mesh_order(r, vx, NULL), d);
   }
-  for (int b = 0; b < r->mesh->n_boundaries && !rc; ++b) { /* the mesh's walls (a body's: none) */
-    if (r->b[b].type != TFP_WALL) continue;
+  const int n_mesh_b = m->n_b - m->n_bodies;
+  for (int b = 0; b < m->n_b && !rc; ++b) { /* the mesh's walls, then the bodies' */
+    if (m->b[b].type != TFP_WALL) continue;
+    const char *wall = b < n_mesh_b ? r->mesh->boundary_names[b] : m->body_names[b - n_mesh_b];
     static const char *const what[4] = {"wall_shear_stress_fluid", "wall_shear_stress_solid", "wall_slip",
                                         "bagnold_number"};
+    char name[300];
     for (int k = 0; k < 4 && !rc; ++k) {
-      if (k == 3 && !(r->b[b].solids == TFP_SOLIDS_WALL_STRESS && sl_point_has_output(&m->s.wall, "bagnold_number")))
+      if (k == 3 && !(m->b[b].solids == TFP_SOLIDS_WALL_STRESS && sl_point_has_output(&m->s.wall, "bagnold_number")))
         continue;
-      char name[300];
-      snprintf(name, sizeof name, "%s_%s", what[k], r->mesh->boundary_names[b]);
+      snprintf(name, sizeof name, "%s_%s", what[k], wall);
       rc = sl_output_write_scalar(out, name, m->wall_stats[5 * b + k], d);
+    }
+    /* with the swirl: the torque about the axis each phase exerts on the wall, their sum, and the mean azimuthal
+       shear stresses (two_fluid_plane_swirl.c) */
+    static const char *const tq[5] = {"torque_fluid", "torque_solid", "wall_shear_stress_theta_fluid",
+                                      "wall_shear_stress_theta_solid", "torque"};
+    for (int k = 0; k < 5 && !rc && m->sw.on; ++k) {
+      const double *T = m->sw.torque + 5 * b;
+      snprintf(name, sizeof name, "%s_%s", tq[k], wall);
+      rc = sl_output_write_scalar_unit(out, name, k == 2 || k == 3 ? "Pa" : "N m", k == 4 ? T[0] + T[1] : T[k], d);
     }
   }
   double inv = tfp_inventory(m, m->phi);
@@ -366,8 +377,8 @@ static int swirl_setup(tfp_run *r, sl_diag *d) {
         double rw = side == SL_SIDE_LEFT ? g->xf[0] : side == SL_SIDE_RIGHT ? g->xf[g->nx] : g->xf[k + 1];
         if (b->type == TFP_WALL) r->m.c.v_ref = fmax(r->m.c.v_ref, fabs(b->angular_velocity) * rw);
       }
-    if (r->m.n_bodies) /* the body's outer radius */
-      r->m.c.v_ref = fmax(r->m.c.v_ref, fabs(r->cfg->body_omega) * fmin(r->cfg->body_box.v[1], g->xf[g->nx]));
+    for (int k = 0; k < r->m.n_bodies; ++k) /* each body's outer radius */
+      r->m.c.v_ref = fmax(r->m.c.v_ref, fabs(r->m.b[r->m.n_b - r->m.n_bodies + k].angular_velocity) * r->m.body_r1[k]);
   }
   if (!r->m.axi)
     return sl_diag_set(d, SL_EBADINPUT, "%s: [two_fluid] swirl: only an axisymmetric scene has a swirl "
@@ -405,11 +416,8 @@ static int plane_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   if (!rc) rc = tfp_body_bind(&r->m, sc, r->cfg, r->b, r->mesh->n_boundaries, &r->ball, d);
   if (!rc) rc = tfp_setup(&r->m, d);
   if (!rc) rc = tfp_solids_bind(&r->m, sc, r->cfg, d);
-  if (!rc && r->m.n_bodies && r->m.s.granular && !r->m.s.algebraic) {
-    char at[400];
-    rc = sl_diag_set(d, SL_EBADINPUT, "%s: [body]: not with a transported granular temperature",
-                     sl_scene_where(sc, &r->cfg->body_box, at, sizeof at));
-  }
+  if (!rc && r->m.n_bodies && r->m.s.granular && !r->m.s.algebraic)
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: not with a transported granular temperature", r->m.body_where[0]);
   if (!rc) rc = tfp_dispersion_bind(&r->m, sc, r->cfg, d);
   /* the phases' convective acceleration, off by default as in the 1-D column (which has none) */
   r->m.convection = sc->flow.convection;

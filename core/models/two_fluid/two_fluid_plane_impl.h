@@ -36,6 +36,9 @@ enum { TFP_FACE_INTERIOR = 0, TFP_FACE_CLOSED, TFP_FACE_INLET, TFP_FACE_OUTLET, 
  * face's unknowns, cells (lo, hi) and values, and carries no equation or
  * flux of its own. */
 
+/* The most [body.NAME] sections a scene may hold. */
+enum { TFP_BODIES_MAX = 16 };
+
 enum { TFP_SOLIDS_NO_SLIP = 0, TFP_SOLIDS_FREE_SLIP, TFP_SOLIDS_WALL_STRESS };
 
 typedef struct tfp_boundary {
@@ -96,6 +99,10 @@ typedef struct tfp_swirl {
   double *buf;        /* the allocation (om and om_new swap within it) */
   double *om, *om_new;
   double *rhs, *K, *slip; /* [2 nc], [nc], [nc] scratch */
+  /* per boundary b (the mesh's, then the bodies'), of the last swirl solved: [5 b + k] the torque about the axis
+     that phase k (fluid 0, solids 1) exerts on the wall (N m, the whole circle), [5 b + 2 + k] its mean azimuthal
+     shear stress on the wall (Pa), [5 b + 4] the wall's area (m^2); zero on boundaries that are not walls */
+  double *torque;
   sl_triplets trip;
   sl_csr A;
   sl_linsolve *ls;
@@ -118,6 +125,9 @@ typedef struct tfp_model {
      tfp_setup (which hands it to the grid, then frees it) */
   int n_bodies;
   int *body_cells;
+  char body_names[TFP_BODIES_MAX][64]; /* [n_bodies]: "body" for [body], NAME for [body.NAME] (output scalars) */
+  char body_where[TFP_BODIES_MAX][320]; /* [n_bodies]: "FILE:LINE: [body.NAME]", for messages */
+  double body_r1[TFP_BODIES_MAX];       /* [n_bodies]: the body's outer radius inside the domain (x1) */
   int centrifugal; /* [two_fluid] centrifugal: rho alpha u_theta^2 / r of the swirl in the radial momentum */
   /* per boundary b, of the last converged step (walls): [5 b] the fluid's and [5 b + 1] the solids' mean shear
      stress on it, [5 b + 2] the mean solids slip, [5 b + 3] the mean Bagnold number of the wall closure (NAN:

@@ -32,7 +32,22 @@
  * swirl is carried along the meridional flow; with [two_fluid] centrifugal
  * it acts back on it through rho alpha u_theta^2 / r in the radial momentum
  * (two_fluid_plane_step.c, at the accepted step's swirl); without, the
- * coupling is one-way. */
+ * coupling is one-way.
+ *
+ * The torque on a wall (a body's, the vessel's): the azimuthal shear stress
+ * each phase exerts on it, tau = alpha mu r dOmega/dn (Bird, Stewart &
+ * Lightfoot 2002, Table B.1: tau_r_theta = -mu r d(u_theta/r)/dr, the
+ * stress on the wall the opposite of the fluid's), taken as the swirl's
+ * equation takes it at the wall (the half cell's one-sided difference), and
+ * its moment T = integral of r tau dA over the wall (dA = 2 pi r dz on a
+ * side, 2 pi r dr on an end). These are the equation's own boundary
+ * fluxes: at steady state the torques on all walls add up to zero (the
+ * angular momentum the discrete equation conserves). Between coaxial
+ * cylinders, the inner one turning at Omega_i, the outer at rest, the
+ * exact torque on the inner one is
+ *   T = -4 pi mu L Omega_i R_i^2 R_o^2 / (R_o^2 - R_i^2)
+ * (2 pi R_i^2 L tau at R_i of Couette's profile; Bird, Stewart & Lightfoot
+ * 2002, Example 3.6-3), which tests/scenes/test_body.c checks. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,7 +55,7 @@
 #include "core/models/two_fluid/two_fluid_plane_impl.h"
 
 void tfp_swirl_free(tfp_swirl *w) {
-  free(w->buf);
+  free(w->buf), free(w->torque);
   sl_triplets_free(&w->trip), sl_csr_free(&w->A);
   if (w->ls) sl_linsolve_destroy(w->ls);
   memset(w, 0, sizeof *w);
@@ -52,6 +67,8 @@ int tfp_swirl_setup(tfp_model *m, const char *linear, sl_diag *d) {
   w->on = 1;
   if (!(w->buf = w->om = calloc(8 * nc, sizeof *w->om))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   w->om_new = w->om + 2 * nc, w->rhs = w->om + 4 * nc, w->K = w->om + 6 * nc, w->slip = w->om + 7 * nc;
+  if (!(w->torque = calloc(5 * (size_t)m->n_b, sizeof *w->torque)))
+    return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   return sl_linsolve_create(&w->ls, linear, d);
 }
 
@@ -72,6 +89,28 @@ static int held(const tfp_model *m, int f, int phase, double *om) {
   if (phase == 1 && bd->solids == TFP_SOLIDS_FREE_SLIP) return 0;
   *om = bd->angular_velocity;
   return 1;
+}
+
+/* The torques and mean azimuthal stresses of the swirl om_new on the walls (tfp_swirl.torque). */
+static void torques(tfp_model *m) {
+  tfp_swirl *w = &m->sw;
+  const int nc = m->fv.nc, nx = m->fv.nx;
+  double *T = w->torque;
+  memset(T, 0, 5 * (size_t)m->n_b * sizeof *T);
+  for (int f = 0; f < m->fv.nf; ++f) {
+    int b = m->fv.bound[f], lo = m->fv.lo[f], hi = m->fv.hi[f], c = lo >= 0 ? lo : hi;
+    if (b < 0 || c < 0 || (lo >= 0 && hi >= 0) || m->ftype[f] == TFP_FACE_IMAGE || m->b[b].type != TFP_WALL) continue;
+    int dir = f >= m->fv.nfx, i = dir ? (f - m->fv.nfx) % nx : f % (nx + 1);
+    double rf = dir ? m->fv.xc[i] : m->grid.xf[i], A = 2.0 * M_PI * m->fv.area[f], om;
+    for (int phase = 0; phase < 2; ++phase) {
+      if (!held(m, f, phase, &om) || (phase == 1 && !(m->phi_new[c] > 1e-12))) continue;
+      double tau = visc(m, phase, c) * rf * (w->om_new[phase * nc + c] - om) / m->fv.dist[f];
+      T[5 * b + phase] += A * rf * tau, T[5 * b + 2 + phase] += A * tau;
+    }
+    T[5 * b + 4] += A;
+  }
+  for (int b = 0; b < m->n_b; ++b)
+    if (T[5 * b + 4] > 0.0) T[5 * b + 2] /= T[5 * b + 4], T[5 * b + 3] /= T[5 * b + 4];
 }
 
 int tfp_swirl_step(tfp_model *m, double dt, sl_diag *d) {
@@ -156,5 +195,6 @@ int tfp_swirl_step(tfp_model *m, double dt, sl_diag *d) {
   if ((rc = sl_linsolve_solve(w->ls, &w->A, w->rhs, w->om_new, d))) return sl_diag_prefix(d, rc, "the swirl's solve");
   for (int k = 0; k < 2 * nc; ++k)
     if (!isfinite(w->om_new[k])) return sl_diag_set(d, SL_EFAILED, "the swirl is not finite in cell %d", k % nc);
+  torques(m);
   return 0;
 }
