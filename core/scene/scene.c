@@ -198,7 +198,8 @@ static int section_keys(const sl_schema *s, const char *section, const char **na
   int n = 0;
   for (int t = 0; t < s->n_tables; ++t)
     for (int i = 0; i < s->tables[t]->n && n < max; ++i)
-      if (strcmp(s->tables[t]->keys[i].section, section) == 0) names[n++] = s->tables[t]->keys[i].name;
+      if (sl_schema_key(s, section, s->tables[t]->keys[i].name) == &s->tables[t]->keys[i])
+        names[n++] = s->tables[t]->keys[i].name; /* [section]'s, or its family's for [family.NAME] */
   return n;
 }
 

@@ -2,6 +2,8 @@
 /* Anderson acceleration (see anderson.h). */
 #include "core/solve/anderson.h"
 
+#include "core/solve/dense.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -43,40 +45,6 @@ static void drop_oldest(sl_anderson *a) {
   --a->count;
 }
 
-/* Solves the m x m system gram gamma = rhs in place by elimination with
- * partial pivoting; 0 when no pivot falls below ANDERSON_PIVOT of the
- * largest diagonal. */
-static int solve_normal(int m, double *A, double *b, double *x) {
-  double big = 0.0;
-  for (int i = 0; i < m; ++i) big = fmax(big, A[i * m + i]);
-  if (!(big > 0.0)) return -1;
-  for (int c = 0; c < m; ++c) {
-    int p = c;
-    for (int r = c + 1; r < m; ++r)
-      if (fabs(A[r * m + c]) > fabs(A[p * m + c])) p = r;
-    if (!(fabs(A[p * m + c]) > ANDERSON_PIVOT * big)) return -1;
-    if (p != c) {
-      for (int k = 0; k < m; ++k) {
-        double t = A[c * m + k];
-        A[c * m + k] = A[p * m + k], A[p * m + k] = t;
-      }
-      double t = b[c];
-      b[c] = b[p], b[p] = t;
-    }
-    for (int r = c + 1; r < m; ++r) {
-      double l = A[r * m + c] / A[c * m + c];
-      for (int k = c; k < m; ++k) A[r * m + k] -= l * A[c * m + k];
-      b[r] -= l * b[c];
-    }
-  }
-  for (int r = m - 1; r >= 0; --r) {
-    double s = b[r];
-    for (int k = r + 1; k < m; ++k) s -= A[r * m + k] * x[k];
-    x[r] = s / A[r * m + r];
-  }
-  return 0;
-}
-
 void sl_anderson_apply(sl_anderson *a, const double *x, double *g, const double *scale) {
   const int n = a->n;
   const size_t nn = (size_t)n;
@@ -104,7 +72,7 @@ void sl_anderson_apply(sl_anderson *a, const double *x, double *g, const double 
         a->gram[p * m + q] = a->gram[q * m + p] = s;
       }
     }
-    if (solve_normal(m, a->gram, a->rhs, a->gamma) == 0) break;
+    if (sl_dense_solve(m, a->gram, a->rhs, a->gamma, ANDERSON_PIVOT) == 0) break;
     drop_oldest(a), ++a->dropped;
   }
   for (int p = 0; p < a->count; ++p) {

@@ -269,7 +269,8 @@ static void bad_input(void) {
                                              "domain"},
       {"[body.right]\nbox = 0, 0.015, 0, 0.1\n", "annulus_blocked.ini:62: [body.right]: the name of a boundary"},
       {"[body.a]\nangular_velocity = 10\n", "annulus_blocked.ini:62: [body.a]: the body needs its box"},
-      {"[body.a]\nbox = 0, 0.015, 0, 0.1\nradius = 3\n", "annulus_blocked.ini:64:1: error: [body.a] radius"},
+      {"[body.a]\nbox = 0, 0.015, 0, 0.1\nradius = 3\n", "annulus_blocked.ini:64:1: error: [body.a] radius: not a key of the 2-D model (motion = column, "
+       "geometry = planar | axisymmetric) (its keys: box, angular_velocity)"},
   };
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
     sl_diag d = {{0}};

@@ -602,9 +602,18 @@ static int write_stream_stats(sl_flow *f, sl_output *out, sl_diag *d) {
     double r = hypot(cx, cy);
     if (r > 0.0) re += pm * area * cx / r, im += pm * area * cy / r;
   }
+  /* the vortex's centre: the extremum of largest |psi|, placed below the cell size (sl_stream_centre), and its
+     angle about the rotation centre, the phase of the pattern's strongest vortex */
+  double xc[2], pc;
+  if (sl_stream_centre(m, psi, xc, &pc) < 0) xc[0] = c0[0], xc[1] = c0[1];
   int rc = sl_output_write_scalar_unit(out, "stream_function_max", "m^2/s", mx, d);
   if (!rc) rc = sl_output_write_scalar_unit(out, "stream_function_min", "m^2/s", mn, d);
   if (!rc) rc = sl_output_write_scalar_unit(out, "stream_function_phase", "rad", atan2(im, re), d);
+  if (!rc) rc = sl_output_write_scalar_unit(out, "stream_function_centre_x", "m", xc[0], d);
+  if (!rc) rc = sl_output_write_scalar_unit(out, "stream_function_centre_y", "m", xc[1], d);
+  if (!rc)
+    rc = sl_output_write_scalar_unit(out, "stream_function_centre_phase", "rad",
+                                     atan2(xc[1] - c0[1], xc[0] - c0[0]), d);
   return rc;
 }
 

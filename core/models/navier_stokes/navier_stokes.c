@@ -134,7 +134,9 @@ static const sl_key initial_keys[] = {
     {.section = "output", .name = "stream_function_stats", .type = SL_KEY_BOOL, SL_AT_MODEL(sl_flow_config, stream_stats),
      .help = "planar: write the stream function's largest and smallest values (stream_function_max, _min) and the "
              "phase of its first azimuthal mode about rotation_centre, arg int psi e^(i theta) dA "
-             "(stream_function_phase, rad), with each output"},
+             "(stream_function_phase, rad), and the centre of the vortex of largest |psi| (its extremum from a "
+             "local quadratic fit: stream_function_centre_x, _y, and its angle about rotation_centre, "
+             "stream_function_centre_phase), with each output"},
 };
 TABLE(sl_flow_keys_initial, initial_keys);
 
