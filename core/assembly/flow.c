@@ -194,6 +194,77 @@ static void planar_matrix(double *Ke, int n, int nb, double wq, const double *ph
   }
 }
 
+/* y_j += a0 x0_j + a1 x1_j + a2 x2_j + a3 x3_j + a4 x4_j (j < n): a row segment of the element matrix. */
+static inline void axpy5(double *restrict y, int n, const double *restrict x0, double a0, const double *restrict x1,
+                         double a1, const double *restrict x2, double a2, const double *restrict x3, double a3,
+                         const double *restrict x4, double a4) {
+  for (int j = 0; j < n; ++j) y[j] += a0 * x0[j] + a1 * x1[j] + a2 * x2[j] + a3 * x3[j] + a4 * x4[j];
+}
+
+static inline void axpy2(double *restrict y, int n, const double *restrict x0, double a0, const double *restrict x1,
+                         double a1) {
+  for (int j = 0; j < n; ++j) y[j] += a0 * x0[j] + a1 * x1[j];
+}
+
+static inline void axpy1(double *restrict y, int n, const double *restrict x0, double a0) {
+  for (int j = 0; j < n; ++j) y[j] += a0 * x0[j];
+}
+
+/* The same matrix axisymmetric (frame axes r = 0, z = 1, theta = 2, the swirl if nc = 3), without a shear-rate
+ * dependent viscosity, per pair of scalar basis functions (i, j) for all component pairs at once. With
+ * g = grad(phi) in (r, z), h = phi / r and the hoop entries of flow.h (grad(phi e_r) has (theta, theta) = h,
+ * grad(phi e_theta) has (r, theta) = -h), the viscous term 2 mu D(phi_i e_A) : D(phi_j e_B) is
+ *   (r, r): mu (g_i.g_j + d_r phi_i d_r phi_j + 2 h_i h_j),    (r, z): mu d_z phi_i d_r phi_j,
+ *   (z, z): mu (g_i.g_j + d_z phi_i d_z phi_j),                (z, r): mu d_r phi_i d_z phi_j,
+ *   (theta, theta): mu (g_i.g_j + h_i h_j - d_r phi_i h_j - h_i d_r phi_j),  zero between theta and (r, z)
+ * (Batchelor 1967, Appendix 2, the rate of strain in cylindrical coordinates: e_rr = d_r u_r, e_thth = u_r / r,
+ * e_rth = r d_r(u_th / r) / 2, axisymmetric); Picard's convection G(phi_j e_B) u tested with phi_i e_A is
+ * delta_AB u.grad(phi_j) plus, from the hoop entries, (theta, r) u_theta h_j and (r, theta) -u_theta h_j
+ * (Batchelor's (u.grad u)_r = ... - u_th^2 / r, (u.grad u)_th = ... + u_r u_th / r, linearised); mass, Coriolis
+ * rho C, the cell's sink K (in-plane) and Newton's rho G(u) are phi_i c_AB phi_j. div(phi e_r) = d_r phi + h,
+ * div(phi e_z) = d_z phi, div(phi e_theta) = 0. The same terms as the general loop of element(); a fifth of its
+ * operations on the swirl's 27 x 27 block. */
+static void axi_matrix(double *Ke, int n, int nc, int nb, double wq, double r, const double *phi,
+                       const double (*grad)[2], const double *psi, int np, double rq, double mq, double mass_coef,
+                       const double *K, const double C[3][3], const qp_state *s, int convection, int newton) {
+  double c[3][3], a[SL_ELEMENT_MAX_BASIS], h[SL_ELEMENT_MAX_BASIS], g0[SL_ELEMENT_MAX_BASIS],
+      g1[SL_ELEMENT_MAX_BASIS];
+  double rinv = 1.0 / r;
+  for (int A = 0; A < 3; ++A)
+    for (int B = 0; B < 3; ++B)
+      c[A][B] = (A == B ? rq * mass_coef : 0.0) + (K && A < 2 && B < 2 ? K[2 * A + B] : 0.0) + rq * C[A][B] +
+                (convection && newton ? rq * s->G[A][B] : 0.0);
+  if (convection) c[2][0] += rq * s->u[2] * rinv, c[0][2] -= rq * s->u[2] * rinv;
+  for (int j = 0; j < nb; ++j) {
+    a[j] = convection ? wq * rq * (s->u[0] * grad[j][0] + s->u[1] * grad[j][1]) : 0.0;
+    h[j] = phi[j] * rinv, g0[j] = grad[j][0], g1[j] = grad[j][1];
+  }
+  double wm = wq * mq;
+  int nv = nc * nb;
+  for (int i = 0; i < nb; ++i) {
+    double *restrict r0 = Ke + (size_t)i * n, *restrict r1 = Ke + (size_t)(nb + i) * n;
+    double wpi = wq * phi[i], gi0 = wm * grad[i][0], gi1 = wm * grad[i][1], hi = wm * h[i], pi = phi[i];
+    /* each row segment (A, i) x (B, .) is a combination of the vectors d_r phi, d_z phi, h, phi and a over j */
+    axpy5(r0, nb, g0, 2.0 * gi0, g1, gi1, h, 2.0 * hi, a, pi, phi, wpi * c[0][0]);
+    axpy2(r0 + nb, nb, g0, gi1, phi, wpi * c[0][1]);
+    axpy2(r1, nb, g1, gi0, phi, wpi * c[1][0]);
+    axpy5(r1 + nb, nb, g0, gi0, g1, 2.0 * gi1, h, 0.0, a, pi, phi, wpi * c[1][1]);
+    if (nc == 3) {
+      double *restrict r2 = Ke + (size_t)(2 * nb + i) * n;
+      axpy1(r0 + 2 * nb, nb, phi, wpi * c[0][2]);
+      axpy1(r1 + 2 * nb, nb, phi, wpi * c[1][2]);
+      axpy1(r2, nb, phi, wpi * c[2][0]);
+      axpy1(r2 + nb, nb, phi, wpi * c[2][1]);
+      axpy5(r2 + 2 * nb, nb, g0, gi0 - hi, g1, gi1, h, hi - gi0, a, pi, phi, wpi * c[2][2]);
+    }
+    for (int k = 0; k < np; ++k) { /* -psi_k div(phi_i e_A), and its transpose; div(phi e_theta) = 0 */
+      double b0 = -wq * psi[k] * (grad[i][0] + h[i]), b1 = -wq * psi[k] * grad[i][1];
+      r0[nv + k] += b0, r1[nv + k] += b1;
+      Ke[(size_t)(nv + k) * n + i] += b0, Ke[(size_t)(nv + k) * n + nb + i] += b1;
+    }
+  }
+}
+
 static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, sl_flow_linearisation lin,
                     const qp_state *st, const double *shear, const double *rho, const double *mu,
                     const double *force) {
@@ -263,6 +334,11 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
     if (K) /* the cell's momentum sink K u (in-plane axes) */
       for (int A = 0; A < dim; ++A)
         for (int B = 0; B < dim; ++B) m[A] += K[2 * A + B] * s->u[B];
+    /* The fast paths below (planar_matrix, axi_matrix) take the matrix of this point from the scalar basis
+       functions; the general loop needs the basis vectors' advected parts Tu. */
+    int gen_newtonian = newton && dmq != 0.0 && gam > 0.0;
+    int fast = matrix && !gen_newtonian && w->frame[0] == 0 && w->frame[1] == 1 &&
+               ((planar2 && o->omega == 0.0) || (axi && (nc == 2 || w->frame[2] == 2)));
     /* The basis vectors of this point. */
     for (int a = 0; a < nc; ++a)
       for (int i = 0; i < nb; ++i) {
@@ -275,7 +351,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
         if (axi && A == 2) T[0][2] = -ph / r;
         v->D = sym_part(T);
         v->div = T[0][0] + T[1][1] + T[2][2];
-        if (o->convection)
+        if (o->convection && matrix && !fast)
           for (int B = 0; B < 3; ++B) v->Tu[B] = T[B][0] * s->u[0] + T[B][1] * s->u[1] + T[B][2] * s->u[2];
         v->phi = ph;
         v->A = A;
@@ -291,13 +367,18 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
     /* The generalized-Newtonian part of the Jacobian: 4 mu' gamma (Dhat:D(v)) (Dhat:D(dv)), Dhat = D(u)/gamma. */
     double s_ia[MAX_VEL];
     double visc2 = 0.0;
-    if (newton && dmq != 0.0 && gam > 0.0) {
+    if (gen_newtonian) {
       visc2 = 4.0 * dmq * gam;
       for (int k = 0; k < nv; ++k) s_ia[k] = sym_dot(&Du, &bv[k].D) / gam;
     }
-    if (planar2 && o->omega == 0.0 && visc2 == 0.0 && w->frame[0] == 0 && w->frame[1] == 1) {
+    if (fast && planar2) {
       planar_matrix(w->Ke, n, nb, wq, fv->phi[0][q], (const double(*)[2])fv->grad[0][q], psi, npc, rq, mq,
                     o->mass_coef, K, s, o->convection, newton);
+      continue;
+    }
+    if (fast) {
+      axi_matrix(w->Ke, n, nc, nb, wq, r, fv->phi[0][q], (const double(*)[2])fv->grad[0][q], psi, npc, rq, mq,
+                 o->mass_coef, K, (const double(*)[3])C, s, o->convection, newton);
       continue;
     }
     double rm = rq * o->mass_coef, w2mu = 2.0 * wq * mq;

@@ -3,7 +3,8 @@
  * iterates, for every geometry: planar (2 and 3 components), triangles,
  * axisymmetric with swirl (off and on the axis), 1-D with an out-of-plane
  * component; with convection, a rotating frame, a time-derivative term,
- * variable density and a shear-thinning viscosity:
+ * variable density and a shear-thinning viscosity or a Newtonian one (the
+ * element's fast paths):
  *  - Newton: J v equals the central difference of R along v to 1e-7;
  *  - Picard: R(u) - R(0) = J_P(u) u exactly (to round-off), since every
  *    term is the frozen-coefficient operator applied to u;
@@ -142,6 +143,12 @@ int main(void) {
   check_case("axisymmetric Q2/Q1 no swirl", ring, 2, 1, 0, 1, 0.0);
   check_case("axisymmetric P2/P1 on the axis", axis, 3, 1, 0, 1, 0.0);
   check_case("axisymmetric Newtonian Stokes", axis, 3, 1, 1, 0, 0.0);
+  /* Newtonian with convection: the axisymmetric fast path of the element matrix (core/assembly/flow.c, axi_matrix),
+     against the residual's general loop */
+  check_case("axisymmetric Newtonian swirl", ring, 3, 1, 1, 1, 0.0);
+  check_case("axisymmetric Newtonian swirl, rotating", ring, 3, 1, 1, 1, 2.0);
+  check_case("axisymmetric Newtonian no swirl", ring, 2, 1, 1, 1, 0.0);
+  check_case("axisymmetric Newtonian P2/P1 on the axis", axis, 3, 1, 1, 1, 0.0);
   check_case("1-D P2/P1 with out-of-plane w", line, 2, 0, 0, 1, 0.0);
   check_case("1-D P2/P1", line, 1, 0, 0, 1, 0.0);
   sl_mesh_destroy(quad), sl_mesh_destroy(tri), sl_mesh_destroy(ring), sl_mesh_destroy(axis), sl_mesh_destroy(line);
