@@ -36,9 +36,9 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "sluice/sluice.h"
 #include "core/io/sample.h"
 #include "core/study/child.h"
+#include "sluice/sluice.h"
 
 enum { MAX_N = 8, N_SAMPLES = 2001 };
 
@@ -114,8 +114,8 @@ static void sluice_child(void *arg, void *result) {
 
 static int run_sluice(const char *src, int bn, int n, run_out *r) {
   sluice_arg a = {src, bn, n};
-  sl_child_opts co = {.fn = sluice_child, .arg = &a, .result = r, .result_size = sizeof *r, .result_fd = -1,
-                      .out = "/dev/null"};
+  sl_child_opts co = {
+      .fn = sluice_child, .arg = &a, .result = r, .result_size = sizeof *r, .result_fd = -1, .out = "/dev/null"};
   sl_child_result cr;
   if (sl_child_run(&co, &cr) || !cr.got_result) {
     memset(r, 0, sizeof *r);
@@ -150,9 +150,10 @@ static int run_freefem(const char *src, int bn, int n, run_out *r) {
 }
 
 static int usage(void) {
-  fputs("usage: bench_bingham_vs_freefem SOURCE_DIR [--bn 20|2] [--tol E] [--reference U*] [--repeat R] "
-        "[--no-freefem] [n ...]\n",
-        stderr);
+  fputs(
+      "usage: bench_bingham_vs_freefem SOURCE_DIR [--bn 20|2] [--tol E] [--reference U*] [--repeat R] "
+      "[--no-freefem] [n ...]\n",
+      stderr);
   return 2;
 }
 
@@ -212,16 +213,19 @@ int main(int argc, char **argv) {
     double u4 = best[0][nn - 3].umin, u2 = best[0][nn - 2].umin, u1 = best[0][nn - 1].umin;
     double q = (u2 - u4) / (u1 - u2);
     if (!isfinite(q) || fabs(q) <= 1.0)
-      return fprintf(stderr, "the differences of the three finest meshes do not shrink (ratio %.3g): no Richardson "
-                             "reference; give --reference\n", q), 1;
+      return fprintf(stderr,
+                     "the differences of the three finest meshes do not shrink (ratio %.3g): no Richardson "
+                     "reference; give --reference\n",
+                     q),
+             1;
     ref = u1 + (u1 - u2) / (q - 1.0);
     snprintf(method, sizeof method,
              "Richardson extrapolation of sluice n = %d, %d, %d: difference ratio %.3f%s, observed order %.2f",
              ns[nn - 3], ns[nn - 2], ns[nn - 1], q, q < 0 ? " (alternating)" : "", log2(fabs(q)));
   } else return fprintf(stderr, "a Richardson reference needs three successive halvings; give --reference\n"), 2;
 
-  printf("Bingham cavity, Re = 0, Bn = %d, Papanastasiou m = 1000: u* = %.8f (%s); tolerance %.0e\n\n", bn, ref,
-         method, tol);
+  printf("Bingham cavity, Re = 0, Bn = %d, Papanastasiou m = 1000: u* = %.8f (%s); tolerance %.0e\n\n", bn, ref, method,
+         tol);
   printf("| code | n | unknowns | u_min | abs(u_min - u*) | CPU s |\n|---|---|---|---|---|---|\n");
   for (int k = 0; k < nn; ++k)
     for (int c = 0; c < 1 + freefem; ++c)
@@ -232,9 +236,11 @@ int main(int argc, char **argv) {
     int k = 0;
     while (k < nn && !(fabs(best[c][k].umin - ref) <= tol)) ++k;
     if (k == nn) printf("\n%s: no mesh within %.0e", c ? "FreeFEM" : "sluice", tol);
-    else printf("\n%s: n = %d within %.0e in %.3g s CPU", c ? "FreeFEM" : "sluice", ns[k], tol, t_at[c] = best[c][k].cpu);
+    else
+      printf("\n%s: n = %d within %.0e in %.3g s CPU", c ? "FreeFEM" : "sluice", ns[k], tol, t_at[c] = best[c][k].cpu);
   }
-  if (isfinite(t_at[0]) && isfinite(t_at[1])) printf("\nsluice / FreeFEM CPU at the tolerance: %.2f", t_at[0] / t_at[1]);
+  if (isfinite(t_at[0]) && isfinite(t_at[1]))
+    printf("\nsluice / FreeFEM CPU at the tolerance: %.2f", t_at[0] / t_at[1]);
   printf("\n");
   return fflush(stdout) ? 1 : 0;
 }

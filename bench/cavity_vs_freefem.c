@@ -53,8 +53,8 @@
 
 #include "bench_csv.h"
 #include "centreline_profile.h"
-#include "core/study/child.h"
 #include "core/study/chart.h"
+#include "core/study/child.h"
 
 enum { MAX_RUNS = 64, MAX_N = 16, MAX_SOLVERS = 3 };
 
@@ -85,7 +85,8 @@ static void freefem_line(void *user, const char *line) {
 
 /* Runs FreeFem++ on the script for n cells per side (fastest of repeat),
  * sampling u at the points of `points` (the reference's y). */
-static int run_freefem(const char *script, const char *points, const centreline_profile *ref, int n, int repeat, point *p) {
+static int run_freefem(const char *script, const char *points, const centreline_profile *ref, int n, int repeat,
+                       point *p) {
   static double u[CENTRELINE_MAX_POINTS];
   memset(p, 0, sizeof *p);
   snprintf(p->code, sizeof p->code, "freefem"), snprintf(p->solver, sizeof p->solver, "umfpack");
@@ -118,8 +119,10 @@ static int run_freefem(const char *script, const char *points, const centreline_
 static int read_sluice(const char *path, point *pts, int max, char *machine, size_t cap, int *n_prof, char *pre,
                        size_t pre_cap) {
   FILE *f = fopen(path, "r");
-  if (!f) return fprintf(stderr, "%s: %s (run bench_cavity_work_precision --profile-ref FILE --csv first)\n", path,
-                         strerror(errno)), -1;
+  if (!f)
+    return fprintf(stderr, "%s: %s (run bench_cavity_work_precision --profile-ref FILE --csv first)\n", path,
+                   strerror(errno)),
+           -1;
   enum { NC = 8 };
   char line[4096], header[4096] = "";
   int n = 0, c[NC];
@@ -177,8 +180,8 @@ static int run_sluice_bench(const char *exe, const char *src, const char *prof, 
   char nbuf[32], rbuf[64];
   snprintf(nbuf, sizeof nbuf, "%d", n), snprintf(rbuf, sizeof rbuf, "%.17g", ref);
   /* its CSV goes to the file; stderr shows progress */
-  char *argv[] = {(char *)exe, (char *)src, "--solvers", "umfpack,klu", "--repeat", "1", "--steps", "0",
-                  "--reference", rbuf, "--profile-ref", (char *)prof, "--csv", (char *)csv, nbuf, NULL};
+  char *argv[] = {(char *)exe,   (char *)src, "--solvers",     "umfpack,klu", "--repeat", "1",         "--steps", "0",
+                  "--reference", rbuf,        "--profile-ref", (char *)prof,  "--csv",    (char *)csv, nbuf,      NULL};
   sl_child_opts co = {.argv = argv, .result_fd = -1, .out = "/dev/null"};
   sl_child_result cr;
   if (sl_child_run(&co, &cr)) return fprintf(stderr, "%s: %s\n", exe, cr.message), -1;
@@ -252,40 +255,80 @@ static int write_figure(const char *path, const point *pts, int np, const char *
   for (int q = 0; q < 4; ++q)
     for (int s = 0; s < ns_; ++s) {
       int is_ff = strncmp(names[s], "FreeFEM", 7) == 0, is_umf = strstr(names[s], "umfpack") && !is_ff;
-      ser[q][s] = (sl_chart_series){.name = names[s], .n = n_in[s], .x = q == 3 ? u[s] : x[s], .y = y[q][s],
-                                    .labels = q < 3 && !is_umf ? labels[s] : NULL, .colour = colour[s],
-                                    .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s), .dashed = is_umf};
+      ser[q][s] = (sl_chart_series){.name = names[s],
+                                    .n = n_in[s],
+                                    .x = q == 3 ? u[s] : x[s],
+                                    .y = y[q][s],
+                                    .labels = q < 3 && !is_umf ? labels[s] : NULL,
+                                    .colour = colour[s],
+                                    .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s),
+                                    .dashed = is_umf};
     }
   for (int s = 0; s < ns_; ++s) { /* against the mesh: a code's first solver */
     int first = 1;
     for (int j = 0; j < s; ++j) first &= strcmp(codes[j], codes[s]) != 0;
     if (!first) continue;
     for (int q = 0; q < 2; ++q)
-      by_n[q][n_codes] = (sl_chart_series){.name = codes[s], .n = n_in[s], .x = xn[s], .y = y[q][s],
-                                           .colour = colour[s], .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s),
-                                           .slope_points = SLOPE_POINTS, .slope_format = "order %.2f", .slope_negate = 1};
+      by_n[q][n_codes] = (sl_chart_series){.name = codes[s],
+                                           .n = n_in[s],
+                                           .x = xn[s],
+                                           .y = y[q][s],
+                                           .colour = colour[s],
+                                           .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s),
+                                           .slope_points = SLOPE_POINTS,
+                                           .slope_format = "order %.2f",
+                                           .slope_negate = 1};
     ++n_codes;
   }
   static const char *const ylab[3] = {"max_{k} |u(1/2, y_{k}) \xE2\x88\x92 u_{ref}(y_{k})| (m/s)",
                                       "L_{2} error of u(1/2, y) over y (m/s)",
                                       "|min u \xE2\x88\x92 u*| on x = 1/2 (m/s)"};
   sl_chart panels[NP] = {
-      {.title = "max-norm error of u(1/2, y) against the mesh", .xlabel = "cells per side n", .ylabel = ylab[0],
-       .n_series = n_codes, .series = by_n[0], .legend = SL_LEGEND_TOP_RIGHT},
-      {.title = "max-norm error against CPU time", .xlabel = "CPU time of the solve (s)", .ylabel = ylab[0],
-       .n_series = ns_, .series = ser[0], .legend = SL_LEGEND_TOP_RIGHT},
-      {.title = "old measure: centreline minimum (not monotone)", .xlabel = "CPU time of the solve (s)",
-       .ylabel = ylab[2], .n_series = ns_, .series = ser[2], .legend = SL_LEGEND_BOTTOM_LEFT},
-      {.title = "L_{2} error of u(1/2, y) against the mesh", .xlabel = "cells per side n", .ylabel = ylab[1],
-       .n_series = n_codes, .series = by_n[1], .legend = SL_LEGEND_TOP_RIGHT},
-      {.title = "L_{2} error against CPU time", .xlabel = "CPU time of the solve (s)", .ylabel = ylab[1],
-       .n_series = ns_, .series = ser[1], .legend = SL_LEGEND_TOP_RIGHT},
-      {.title = "peak memory", .xlabel = "unknowns (velocity and pressure)", .ylabel = "peak resident set (MB)",
-       .n_series = ns_, .series = ser[3], .legend = SL_LEGEND_TOP_LEFT},
+      {.title = "max-norm error of u(1/2, y) against the mesh",
+       .xlabel = "cells per side n",
+       .ylabel = ylab[0],
+       .n_series = n_codes,
+       .series = by_n[0],
+       .legend = SL_LEGEND_TOP_RIGHT},
+      {.title = "max-norm error against CPU time",
+       .xlabel = "CPU time of the solve (s)",
+       .ylabel = ylab[0],
+       .n_series = ns_,
+       .series = ser[0],
+       .legend = SL_LEGEND_TOP_RIGHT},
+      {.title = "old measure: centreline minimum (not monotone)",
+       .xlabel = "CPU time of the solve (s)",
+       .ylabel = ylab[2],
+       .n_series = ns_,
+       .series = ser[2],
+       .legend = SL_LEGEND_BOTTOM_LEFT},
+      {.title = "L_{2} error of u(1/2, y) against the mesh",
+       .xlabel = "cells per side n",
+       .ylabel = ylab[1],
+       .n_series = n_codes,
+       .series = by_n[1],
+       .legend = SL_LEGEND_TOP_RIGHT},
+      {.title = "L_{2} error against CPU time",
+       .xlabel = "CPU time of the solve (s)",
+       .ylabel = ylab[1],
+       .n_series = ns_,
+       .series = ser[1],
+       .legend = SL_LEGEND_TOP_RIGHT},
+      {.title = "peak memory",
+       .xlabel = "unknowns (velocity and pressure)",
+       .ylabel = "peak resident set (MB)",
+       .n_series = ns_,
+       .series = ser[3],
+       .legend = SL_LEGEND_TOP_LEFT},
   };
   for (int q = 0; q < NP; ++q) panels[q].xscale = panels[q].yscale = SL_AXIS_LOG;
-  sl_figure fig = {.title = "Stokes cavity: sluice Q2/Q1 and FreeFEM P2/P1", .note = note, .n_panels = NP,
-                   .panels = panels, .columns = 3, .panel_width = 480, .panel_height = 360};
+  sl_figure fig = {.title = "Stokes cavity: sluice Q2/Q1 and FreeFEM P2/P1",
+                   .note = note,
+                   .n_panels = NP,
+                   .panels = panels,
+                   .columns = 3,
+                   .panel_width = 480,
+                   .panel_height = 360};
   sl_diag d = {{0}};
   if (sl_figure_write(path, &fig, &d)) return fprintf(stderr, "%s\n", d.msg), -1;
   return 0;
@@ -299,8 +342,8 @@ static int replot(const char *csv, const char *path) {
   FILE *f = fopen(csv, "r");
   if (!f) return fprintf(stderr, "%s: %s\n", csv, strerror(errno)), -1;
   enum { CODE, SOLVER, N, UNKNOWNS, EMAX, EL2, MINU, MINERR, CPU, RSS, NC };
-  static const char *const names[NC] = {"code",  "solver", "n",       "unknowns", "err_max",
-                                        "err_l2", "min_u", "min_err", "cpu_s",    "peak_rss_mb"};
+  static const char *const names[NC] = {"code",   "solver", "n",       "unknowns", "err_max",
+                                        "err_l2", "min_u",  "min_err", "cpu_s",    "peak_rss_mb"};
   static point pts[MAX_RUNS];
   char line[4096], header[4096] = "", ref[1024] = "", machine[1024] = "", cpu[1024] = "";
   int c[NC], np = 0, lineno = 0, bad = 0;
@@ -360,10 +403,11 @@ static int replot(const char *csv, const char *path) {
 }
 
 static void usage(void) {
-  fputs("usage: bench_cavity_vs_freefem SOURCE_DIR [--sluice-csv PATH] [--sluice-bench EXE] [--profile-ref FILE]\n"
-        "                              [--reference U*] [--repeat R] [--csv PATH] [--svg PATH] [n ...]\n"
-        "       bench_cavity_vs_freefem --replot CSV --svg PATH   (the figure of recorded runs)\n",
-        stderr);
+  fputs(
+      "usage: bench_cavity_vs_freefem SOURCE_DIR [--sluice-csv PATH] [--sluice-bench EXE] [--profile-ref FILE]\n"
+      "                              [--reference U*] [--repeat R] [--csv PATH] [--svg PATH] [n ...]\n"
+      "       bench_cavity_vs_freefem --replot CSV --svg PATH   (the figure of recorded runs)\n",
+      stderr);
 }
 
 int main(int argc, char **argv) {
@@ -478,12 +522,14 @@ int main(int argc, char **argv) {
   load_lo = fmin(load_lo, load[1][0]), load_hi = fmax(load_hi, load[1][0]);
   remove(points);
   if (failed) return 1;
-  if (sluice_bench && strstr(machine, ", load")) *strstr(machine, ", load") = '\0'; /* the last round's: the range is given */
-  if (sluice_bench) { /* the merged sluice runs, as the work-precision CSV */
+  if (sluice_bench && strstr(machine, ", load"))
+    *strstr(machine, ", load") = '\0'; /* the last round's: the range is given */
+  if (sluice_bench) {                  /* the merged sluice runs, as the work-precision CSV */
     FILE *sf = fopen(sluice_csv, "w");
     if (!sf) return fprintf(stderr, "%s: %s\n", sluice_csv, strerror(errno)), 1;
-    fprintf(sf, "# fastest of %d rounds interleaved with FreeFEM's runs (bench_cavity_vs_freefem --sluice-bench), "
-                "one bench_cavity_work_precision run per mesh and round; the lines below are from its first run\n",
+    fprintf(sf,
+            "# fastest of %d rounds interleaved with FreeFEM's runs (bench_cavity_vs_freefem --sluice-bench), "
+            "one bench_cavity_work_precision run per mesh and round; the lines below are from its first run\n",
             repeat);
     fputs(pre, sf);
     for (int i = 0; i < np; ++i) fputs(pts[i].raw, sf);
@@ -518,8 +564,9 @@ int main(int argc, char **argv) {
     if (!f) continue;
     fprintf(f, "# Stokes cavity, u(1/2, y) against the reference profile %s (%d points); sluice Q2/Q1, FreeFEM P2/P1\n",
             prof_path, pr.n);
-    fprintf(f, "# err_max = max_k |u(1/2, y_k) - u_ref(y_k)|, err_l2 = its L2 norm over 0 <= y <= 1 (trapezoid "
-               "rule over the points); min_err = |min u - u*|, u* = %.9f (secondary: not monotone in n below 1e-6)\n",
+    fprintf(f,
+            "# err_max = max_k |u(1/2, y_k) - u_ref(y_k)|, err_l2 = its L2 norm over 0 <= y <= 1 (trapezoid "
+            "rule over the points); min_err = |min u - u*|, u* = %.9f (secondary: not monotone in n below 1e-6)\n",
             ref);
     if (sluice_bench)
       fprintf(f, "# machine: %s; 1-min load average %.2f-%.2f over the runs (sampled before each mesh)\n", machine,
@@ -527,13 +574,14 @@ int main(int argc, char **argv) {
     else
       fprintf(f, "# machine (sluice runs, %s): %s; FreeFEM runs: load %.2f at start, %.2f at end\n", sluice_csv,
               machine, load[0][0], load[1][0]);
-    fprintf(f, "# cpu_s: fastest of %d %s; sluice: process CPU time of sl_model_run; FreeFEM: clock() from the mesh "
-               "to the solution\n",
+    fprintf(f,
+            "# cpu_s: fastest of %d %s; sluice: process CPU time of sl_model_run; FreeFEM: clock() from the mesh "
+            "to the solution\n",
             repeat, sluice_bench ? "interleaved rounds (sluice, then FreeFEM, mesh by mesh)" : "repeats");
     fprintf(f, "code,solver,n,unknowns,err_max,err_l2,min_u,min_err,cpu_s,peak_rss_mb\n");
     for (int i = 0; i < np; ++i)
-      fprintf(f, "%s,%s,%d,%ld,%.4e,%.4e,%.12f,%.3e,%.4g,%.1f\n", pts[i].code, pts[i].solver, pts[i].n,
-              pts[i].unknowns, pts[i].err_max, pts[i].err_l2, pts[i].umin, pts[i].min_err, pts[i].cpu, pts[i].mb);
+      fprintf(f, "%s,%s,%d,%ld,%.4e,%.4e,%.12f,%.3e,%.4g,%.1f\n", pts[i].code, pts[i].solver, pts[i].n, pts[i].unknowns,
+              pts[i].err_max, pts[i].err_l2, pts[i].umin, pts[i].min_err, pts[i].cpu, pts[i].mb);
     /* At equal accuracy: sluice's CPU time for FreeFEM's error, interpolated log-log between its meshes. */
     for (int measure = 0; measure < 2; ++measure)
       for (int i = first_ff; i < np; ++i) {
@@ -563,8 +611,8 @@ int main(int argc, char **argv) {
              "solve), FreeFEM's from mesh to solution.\n%s; %s %.2f-%.2f.",
              pr.n, strrchr(prof_path, '/') ? strrchr(prof_path, '/') + 1 : prof_path, repeat,
              sluice_bench ? "interleaved rounds" : "repeats", machine,
-             sluice_bench ? "load over the runs" : "FreeFEM runs at load",
-             sluice_bench ? load_lo : load[0][0], sluice_bench ? load_hi : load[1][0]);
+             sluice_bench ? "load over the runs" : "FreeFEM runs at load", sluice_bench ? load_lo : load[0][0],
+             sluice_bench ? load_hi : load[1][0]);
     if (write_figure(svg, pts, np, note)) failed = 1;
   }
   return failed;

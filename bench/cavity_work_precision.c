@@ -64,13 +64,13 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "sluice/sluice.h"
-#include "core/io/sample.h"
 #include "bench_child.h"
 #include "bench_csv.h"
 #include "bench_machine.h"
 #include "centreline_profile.h"
+#include "core/io/sample.h"
 #include "core/study/chart.h"
+#include "sluice/sluice.h"
 
 enum { MAX_N = 16, MAX_SET = 8, MAX_SOLVERS = 4 };
 
@@ -78,15 +78,15 @@ typedef struct run_result {
   int ok;
   char err[2048 + 64];
   int dofs;
-  double umin;         /* steady only */
-  double cpu, wall;    /* process CPU and wall seconds in sluice_run */
-  double assembly;     /* wall seconds (sluice_summary) */
+  double umin;      /* steady only */
+  double cpu, wall; /* process CPU and wall seconds in sluice_run */
+  double assembly;  /* wall seconds (sluice_summary) */
   double t_symbolic, t_numeric, t_solve;
   long n_symbolic, n_numeric, n_skipped, n_solves;
-  long matrix_asm, rhs_asm; /* full and right-hand-side-only assemblies (sluice_summary) */
-  long rss_kb;         /* peak resident set after the run */
-  long steps;          /* transient: accepted steps */
-  long step_count;     /* transient: steps 2..K-1 measured */
+  long matrix_asm, rhs_asm;        /* full and right-hand-side-only assemblies (sluice_summary) */
+  long rss_kb;                     /* peak resident set after the run */
+  long steps;                      /* transient: accepted steps */
+  long step_count;                 /* transient: steps 2..K-1 measured */
   double step_wall, step_assembly; /* transient: their mean wall and assembly seconds */
   double step_wall_max;            /* transient: the longest of them */
   double prof_max, prof_l2;        /* steady, with a reference profile: its max-norm and L2 errors */
@@ -223,8 +223,12 @@ static int run(const bench_opts *bo, const char *solver, int n, int transient, r
   int rc = sluice_open(path, &oo, &sc, &e);
   sluice_summary res, live;
   monitor mon = {.res = &live, .r = r, .last = bo->steps};
-  sluice_run_opts o = {.scene_path = path, .output = file, .version = "bench", .progress = on_step,
-                       .progress_user = &mon, .live = &live};
+  sluice_run_opts o = {.scene_path = path,
+                       .output = file,
+                       .version = "bench",
+                       .progress = on_step,
+                       .progress_user = &mon,
+                       .live = &live};
   if (!rc) {
     double c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID), w0 = clock_s(CLOCK_MONOTONIC);
     mon.wall_prev = w0;
@@ -300,8 +304,8 @@ typedef struct table {
   const char *solvers[MAX_SOLVERS]; /* NULL: the scene's */
   run_result st[MAX_SOLVERS][MAX_N], tr[MAX_SOLVERS][MAX_N];
   int have_tr[MAX_SOLVERS][MAX_N];
-  double umin[MAX_N];  /* per mesh, from the first solver that ran it */
-  double spread;       /* largest difference in min u between solvers on one mesh */
+  double umin[MAX_N]; /* per mesh, from the first solver that ran it */
+  double spread;      /* largest difference in min u between solvers on one mesh */
   double ref, err[MAX_N], ratio;
   double fit_order; /* least-squares slope of log e against log n, all meshes but the coarsest */
   int fit_from, fit_to;
@@ -322,28 +326,31 @@ static void write_csv(FILE *f, const table *t) {
     fprintf(f, "#   u* = u_h + (u_h - u_2h) / (r - 1), r = (u_2h - u_4h) / (u_h - u_2h), h the finest\n");
   fprintf(f, "# min u of one mesh differs between solvers by at most %.2g\n", t->spread);
   if (t->prof_path)
-    fprintf(f, "# profile reference: %s, %d points on x = 1/2; prof_max_err = max_k |u(1/2, y_k) - u_ref(y_k)|, "
-               "prof_l2_err = its L2 norm over 0 <= y <= 1 (trapezoid rule over the points)\n",
+    fprintf(f,
+            "# profile reference: %s, %d points on x = 1/2; prof_max_err = max_k |u(1/2, y_k) - u_ref(y_k)|, "
+            "prof_l2_err = its L2 norm over 0 <= y <= 1 (trapezoid rule over the points)\n",
             t->prof_path, t->n_prof);
   fprintf(f, "# observed order log2(e_n / e_2n) of the error against u*:");
   for (int k = 0; k + 1 < t->nn; ++k)
     if (t->err[k] > 0 && t->err[k + 1] > 0 && t->ns[k + 1] == 2 * t->ns[k])
       fprintf(f, " %d-%d: %.2f", t->ns[k], t->ns[k + 1], log2(t->err[k] / t->err[k + 1]));
   fprintf(f, "\n# least-squares order over n = %d..%d: %.2f\n", t->fit_from, t->fit_to, t->fit_order);
-  fprintf(f, "# cpu_s: process CPU time of the run; the split (assembly, symbolic, numeric, solve) and wall_s are "
-             "wall time; assembly_share = assembly / wall; tr_*: the constant-coefficient BDF1 run, tr_step_s the "
-             "mean (tr_step_max_s the longest) of its steps 2..K-1, which reuse the matrix and its factorisation; "
-             "tr_n_matrix_asm and tr_n_rhs_asm count its full and right-hand-side-only assemblies\n");
+  fprintf(f,
+          "# cpu_s: process CPU time of the run; the split (assembly, symbolic, numeric, solve) and wall_s are "
+          "wall time; assembly_share = assembly / wall; tr_*: the constant-coefficient BDF1 run, tr_step_s the "
+          "mean (tr_step_max_s the longest) of its steps 2..K-1, which reuse the matrix and its factorisation; "
+          "tr_n_matrix_asm and tr_n_rhs_asm count its full and right-hand-side-only assemblies\n");
   for (int s = 0; s < t->nsolv; ++s)
     for (int k = 0; k < t->nn; ++k) {
       if (!t->st[s][k].ok) fprintf(f, "# failed: %s, n = %d: %s\n", solver_name(t, s), t->ns[k], t->st[s][k].err);
       else if (t->have_tr[s][k] && !t->tr[s][k].ok)
         fprintf(f, "# failed: %s, n = %d, BDF1 run: %s\n", solver_name(t, s), t->ns[k], t->tr[s][k].err);
     }
-  fprintf(f, "solver,n,unknowns,umin,error,cpu_s,wall_s,assembly_s,assembly_share,n_symbolic,symbolic_s,n_numeric,"
-             "numeric_s,n_solves,solve_s,peak_rss_mb,tr_steps,tr_n_numeric,tr_n_skipped,tr_cpu_s,tr_step_s,"
-             "tr_step_max_s,tr_step_assembly_s,tr_assembly_share,tr_peak_rss_mb,tr_n_matrix_asm,tr_n_rhs_asm,"
-             "prof_max_err,prof_l2_err\n");
+  fprintf(f,
+          "solver,n,unknowns,umin,error,cpu_s,wall_s,assembly_s,assembly_share,n_symbolic,symbolic_s,n_numeric,"
+          "numeric_s,n_solves,solve_s,peak_rss_mb,tr_steps,tr_n_numeric,tr_n_skipped,tr_cpu_s,tr_step_s,"
+          "tr_step_max_s,tr_step_assembly_s,tr_assembly_share,tr_peak_rss_mb,tr_n_matrix_asm,tr_n_rhs_asm,"
+          "prof_max_err,prof_l2_err\n");
   for (int s = 0; s < t->nsolv; ++s)
     for (int k = 0; k < t->nn; ++k) {
       const run_result *a = &t->st[s][k], *r = &t->tr[s][k];
@@ -377,12 +384,13 @@ static int write_svg(const char *path, const table *t) {
   sl_chart panels[3 + MAX_SOLVERS];
   double cells[MAX_N], err_n[MAX_N];
   char titles[MAX_SOLVERS][96];
-  static const char *const split_name[SPLIT] = {"steady solve, total",       "its factorisation",
-                                                "its assembly",              "its back-substitution",
-                                                "BDF1 step, factors reused", "assembly in that step"};
+  static const char *const split_name[SPLIT] = {
+      "steady solve, total",   "its factorisation",         "its assembly",
+      "its back-substitution", "BDF1 step, factors reused", "assembly in that step"};
   static const char *const split_colour[SPLIT] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#2ca02c"};
-  static const sl_chart_marker split_marker[SPLIT] = {SL_CHART_MARK_CIRCLE, SL_CHART_MARK_SQUARE, SL_CHART_MARK_TRIANGLE, SL_CHART_MARK_DIAMOND, SL_CHART_MARK_CIRCLE,
-                                                  SL_CHART_MARK_TRIANGLE};
+  static const sl_chart_marker split_marker[SPLIT] = {SL_CHART_MARK_CIRCLE,   SL_CHART_MARK_SQUARE,
+                                                      SL_CHART_MARK_TRIANGLE, SL_CHART_MARK_DIAMOND,
+                                                      SL_CHART_MARK_CIRCLE,   SL_CHART_MARK_TRIANGLE};
   for (int k = 0; k < t->nn; ++k) {
     dofs[k] = t->st[0][k].dofs;
     snprintf(buf[k], sizeof buf[k], "n=%d", t->ns[k]);
@@ -390,8 +398,14 @@ static int write_svg(const char *path, const table *t) {
   }
   for (int k = 0; k < t->nn; ++k) cells[k] = t->ns[k], err_n[k] = isfinite(t->umin[k]) ? t->err[k] : NAN;
   /* the minimum of one mesh is the same with every solver (to the spread the CSV gives): one series */
-  s_order = (sl_chart_series){.name = "all solvers", .n = t->nn, .x = cells, .y = err_n, .colour = "#000000",
-                              .marker = SL_CHART_MARK_CIRCLE, .slope_points = 3, .slope_format = "order %.2f",
+  s_order = (sl_chart_series){.name = "all solvers",
+                              .n = t->nn,
+                              .x = cells,
+                              .y = err_n,
+                              .colour = "#000000",
+                              .marker = SL_CHART_MARK_CIRCLE,
+                              .slope_points = 3,
+                              .slope_format = "order %.2f",
                               .slope_negate = 1};
   int np = 3; /* a split panel for each solver with a successful run */
   for (int s = 0; s < t->nsolv; ++s) {
@@ -407,17 +421,38 @@ static int write_svg(const char *path, const table *t) {
       split[s][4][k] = tr ? r->step_wall : NAN, split[s][5][k] = tr ? r->step_assembly : NAN;
     }
     const char *c = solver_colours[s % MAX_SOLVERS];
-    s_err[s] = (sl_chart_series){.name = solver_name(t, s), .n = t->nn, .x = cpu[s], .y = err[s],
-                             .labels = s == t->nsolv - 1 ? labels : NULL, .colour = c, .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s)};
-    s_mem[s] = (sl_chart_series){.name = solver_name(t, s), .n = t->nn, .x = dofs, .y = rss[s],
-                             .labels = s == t->nsolv - 1 ? labels : NULL, .colour = c, .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s)};
+    s_err[s] = (sl_chart_series){.name = solver_name(t, s),
+                                 .n = t->nn,
+                                 .x = cpu[s],
+                                 .y = err[s],
+                                 .labels = s == t->nsolv - 1 ? labels : NULL,
+                                 .colour = c,
+                                 .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s)};
+    s_mem[s] = (sl_chart_series){.name = solver_name(t, s),
+                                 .n = t->nn,
+                                 .x = dofs,
+                                 .y = rss[s],
+                                 .labels = s == t->nsolv - 1 ? labels : NULL,
+                                 .colour = c,
+                                 .marker = (sl_chart_marker)(SL_CHART_MARK_CIRCLE + s)};
     for (int q = 0; q < SPLIT; ++q)
-      s_split[s][q] = (sl_chart_series){.name = split_name[q], .n = t->nn, .x = dofs, .y = split[s][q],
-                                    .colour = split_colour[q], .marker = split_marker[q], .dashed = q >= 4};
+      s_split[s][q] = (sl_chart_series){.name = split_name[q],
+                                        .n = t->nn,
+                                        .x = dofs,
+                                        .y = split[s][q],
+                                        .colour = split_colour[q],
+                                        .marker = split_marker[q],
+                                        .dashed = q >= 4};
     if (!any) continue;
     snprintf(titles[s], sizeof titles[s], "Where the time goes: %s", solver_name(t, s));
-    panels[np++] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = titles[s], .xlabel = "unknowns (velocity and pressure)", .ylabel = "wall time (s)",
-                                .n_series = any_tr ? SPLIT : 4, .series = s_split[s], .legend = SL_LEGEND_TOP_LEFT};
+    panels[np++] = (sl_chart){.xscale = SL_AXIS_LOG,
+                              .yscale = SL_AXIS_LOG,
+                              .title = titles[s],
+                              .xlabel = "unknowns (velocity and pressure)",
+                              .ylabel = "wall time (s)",
+                              .n_series = any_tr ? SPLIT : 4,
+                              .series = s_split[s],
+                              .legend = SL_LEGEND_TOP_LEFT};
   }
   /* the split panels share their axes */
   double lo = INFINITY, hi = -INFINITY;
@@ -431,15 +466,30 @@ static int write_svg(const char *path, const table *t) {
   }
   char err_label[128];
   snprintf(err_label, sizeof err_label, "|min u \xE2\x88\x92 u*| on x = 1/2 (m/s)");
-  panels[0] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = "Error against the mesh",
-                         .xlabel = "cells per side n (n \xC3\x97 n cells)", .ylabel = err_label, .n_series = 1,
-                         .series = &s_order, .legend = SL_LEGEND_NONE};
-  panels[1] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = "Error against CPU time",
-                         .xlabel = "CPU time of the steady solve (s)", .ylabel = err_label, .n_series = t->nsolv,
-                         .series = s_err, .legend = SL_LEGEND_AUTO};
-  panels[2] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = "Peak memory",
-                         .xlabel = "unknowns (velocity and pressure)", .ylabel = "peak resident set (MB)",
-                         .n_series = t->nsolv, .series = s_mem, .legend = SL_LEGEND_TOP_LEFT};
+  panels[0] = (sl_chart){.xscale = SL_AXIS_LOG,
+                         .yscale = SL_AXIS_LOG,
+                         .title = "Error against the mesh",
+                         .xlabel = "cells per side n (n \xC3\x97 n cells)",
+                         .ylabel = err_label,
+                         .n_series = 1,
+                         .series = &s_order,
+                         .legend = SL_LEGEND_NONE};
+  panels[1] = (sl_chart){.xscale = SL_AXIS_LOG,
+                         .yscale = SL_AXIS_LOG,
+                         .title = "Error against CPU time",
+                         .xlabel = "CPU time of the steady solve (s)",
+                         .ylabel = err_label,
+                         .n_series = t->nsolv,
+                         .series = s_err,
+                         .legend = SL_LEGEND_AUTO};
+  panels[2] = (sl_chart){.xscale = SL_AXIS_LOG,
+                         .yscale = SL_AXIS_LOG,
+                         .title = "Peak memory",
+                         .xlabel = "unknowns (velocity and pressure)",
+                         .ylabel = "peak resident set (MB)",
+                         .n_series = t->nsolv,
+                         .series = s_mem,
+                         .legend = SL_LEGEND_TOP_LEFT};
   double elo = INFINITY, ehi = -INFINITY; /* the two error panels share their error axis */
   for (int s = 0; s < t->nsolv; ++s)
     for (int k = 0; k < t->nn; ++k)
@@ -453,11 +503,15 @@ static int write_svg(const char *path, const table *t) {
   for (int s = 0; s < t->nsolv; ++s) /* the failed steady runs, one line each */
     for (int k = 0; k < t->nn && at > 0 && (size_t)at < sizeof note; ++k)
       if (!t->st[s][k].ok)
-        at += snprintf(note + at, sizeof note - (size_t)at, "\nNot plotted: %s, n = %d failed: %.110s", solver_name(t, s),
-                       t->ns[k], t->st[s][k].err);
+        at += snprintf(note + at, sizeof note - (size_t)at, "\nNot plotted: %s, n = %d failed: %.110s",
+                       solver_name(t, s), t->ns[k], t->st[s][k].err);
   sl_figure fig = {.title = "Stokes lid-driven cavity (configs/cavity_stokes.ini), Q2/Q1 on n \xC3\x97 n cells",
-                     .note = note, .n_panels = np, .panels = panels, .columns = 3, .panel_width = 480,
-                     .panel_height = 360};
+                   .note = note,
+                   .n_panels = np,
+                   .panels = panels,
+                   .columns = 3,
+                   .panel_width = 480,
+                   .panel_height = 360};
   sl_diag d = {{0}};
   if (sl_figure_write(path, &fig, &d)) return fprintf(stderr, "%s\n", d.msg), -1;
   return 0;
@@ -474,9 +528,9 @@ static int read_csv(const char *path, table *t) {
   FILE *f = fopen(path, "r");
   if (!f) return fprintf(stderr, "%s: %s\n", path, strerror(errno)), -1;
   enum { SOLVER, N, UNKNOWNS, UMIN, CPU, WALL, ASM, SYM, NUM, SOLVE, RSS, TR_STEP, TR_ASM, NC };
-  static const char *const names[NC] = {"solver",   "n",          "unknowns",      "umin",    "cpu_s",
-                                        "wall_s",   "assembly_s", "symbolic_s",    "numeric_s", "solve_s",
-                                        "peak_rss_mb", "tr_step_s", "tr_step_assembly_s"};
+  static const char *const names[NC] = {"solver",      "n",          "unknowns",          "umin",      "cpu_s",
+                                        "wall_s",      "assembly_s", "symbolic_s",        "numeric_s", "solve_s",
+                                        "peak_rss_mb", "tr_step_s",  "tr_step_assembly_s"};
   static char failed[2 * MAX_SOLVERS * MAX_N][sizeof t->st[0][0].err];
   char line[4096], header[4096] = "";
   int c[NC], lineno = 0, n_failed = 0, rows = 0, bad = 0;
@@ -546,7 +600,8 @@ static int read_csv(const char *path, table *t) {
       snprintf(prefix, sizeof prefix, "%s, n = %d: ", solver, (int)n);
       snprintf(a->err, sizeof a->err, "no reason recorded");
       for (int j = 0; j < n_failed; ++j)
-        if (!strncmp(failed[j], prefix, strlen(prefix))) snprintf(a->err, sizeof a->err, "%s", failed[j] + strlen(prefix));
+        if (!strncmp(failed[j], prefix, strlen(prefix)))
+          snprintf(a->err, sizeof a->err, "%s", failed[j] + strlen(prefix));
     }
     ++rows;
   }
@@ -566,10 +621,11 @@ static int read_csv(const char *path, table *t) {
 /* ---- main -------------------------------------------------------------- */
 
 static int usage(void) {
-  fprintf(stderr, "usage: bench_cavity_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH] [--solvers A,B|scene] "
-                  "[--steps K] [--dt DT] [--transient-max N] [--repeat R] [--reference VALUE] [--profile-ref FILE] "
-                  "[--set section.key=value ...] [n ...]\n"
-                  "       bench_cavity_work_precision --replot CSV --svg PATH   (the figure of recorded runs)\n");
+  fprintf(stderr,
+          "usage: bench_cavity_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH] [--solvers A,B|scene] "
+          "[--steps K] [--dt DT] [--transient-max N] [--repeat R] [--reference VALUE] [--profile-ref FILE] "
+          "[--set section.key=value ...] [n ...]\n"
+          "       bench_cavity_work_precision --replot CSV --svg PATH   (the figure of recorded runs)\n");
   return 2;
 }
 

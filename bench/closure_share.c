@@ -98,7 +98,8 @@ int main(int argc, char **argv) {
       scene_spec *s = &scenes[n_scenes - 1];
       s->sets[s->n_sets++] = argv[++i];
     } else if (argv[i][0] == '-') {
-      fprintf(stderr, "usage: bench_closure_share [--source DIR] [--repeat R] [SCENE [--set section.key=value]...]...\n");
+      fprintf(stderr,
+              "usage: bench_closure_share [--source DIR] [--repeat R] [SCENE [--set section.key=value]...]...\n");
       return 2;
     } else if (n_scenes == MAX_SCENES) {
       fprintf(stderr, "bench_closure_share: at most %d scenes\n", MAX_SCENES);
@@ -115,8 +116,9 @@ int main(int argc, char **argv) {
   }
   char configs[4096];
   snprintf(configs, sizeof configs, "%s/configs", source ? source : ".");
-  printf("| scene | closures | calls | points per call | run wall s (CPU s), timed | inside the calls, wall s | "
-         "share of the run's wall time | run wall s, timing off |\n");
+  printf(
+      "| scene | closures | calls | points per call | run wall s (CPU s), timed | inside the calls, wall s | "
+      "share of the run's wall time | run wall s, timing off |\n");
   printf("|---|---|---|---|---|---|---|---|\n");
   int failed = 0;
   for (int k = 0; k < n_scenes; ++k) {

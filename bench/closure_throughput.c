@@ -32,8 +32,8 @@
  * inline: the same validity checks and the same derivative work. */
 static int ergun_inline(int32_t Q, const double *const *in, double *restrict K, double *restrict dK_dphi,
                         double *restrict dK_dslip) {
-  const double *restrict phi_in = in[0], *restrict slip_in = in[1], *restrict rho_in = in[2],
-               *restrict mu_in = in[3], *restrict dp_in = in[4], *restrict psi_in = in[5];
+  const double *restrict phi_in = in[0], *restrict slip_in = in[1], *restrict rho_in = in[2], *restrict mu_in = in[3],
+                         *restrict dp_in = in[4], *restrict psi_in = in[5];
   for (int32_t q = 0; q < Q; ++q) {
     const double phi = phi_in[q], slip = slip_in[q], rho = rho_in[q], mu = mu_in[q], dp = dp_in[q], psi = psi_in[q];
     if (!sl_ergun_inputs_ok(phi, slip, rho, mu, dp, psi)) return 1;
@@ -141,9 +141,10 @@ int main(int argc, char **argv) {
   b.dout[0] = array(); /* dK/dphi */
   b.dout[1] = array(); /* dK/dslip */
 
-  printf("| batch Q | inline (points/s) | through the ABI (points/s) | ABI cost (best of %d) | ABI cost, pairs: "
-         "median [IQR] |\n|---|---|---|---|---|\n",
-         reps);
+  printf(
+      "| batch Q | inline (points/s) | through the ABI (points/s) | ABI cost (best of %d) | ABI cost, pairs: "
+      "median [IQR] |\n|---|---|---|---|---|\n",
+      reps);
   const int sizes[] = {1, 8, 64, 512, 4096};
   for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s) {
     int Q = sizes[s];
@@ -151,10 +152,8 @@ int main(int argc, char **argv) {
     long calls = total / Q > 0 ? total / Q : 1;
     if (!strcmp(only_path, "inline") || !strcmp(only_path, "abi")) { /* one path only, for perf */
       for (int rep = 0; rep < reps; ++rep) {
-        if (only_path[0] == 'i')
-          run_inline(&b, Q, calls);
-        else
-          run_abi(&b, Q, calls);
+        if (only_path[0] == 'i') run_inline(&b, Q, calls);
+        else run_abi(&b, Q, calls);
       }
       continue;
     }

@@ -43,10 +43,10 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "sluice/sluice.h"
 #include "bench_child.h"
 #include "bench_machine.h"
 #include "core/study/chart.h"
+#include "sluice/sluice.h"
 
 enum { MAX_SIZES = 8, MAX_SETS = 6, N_PHASES = 4, N_SCENES = 3 };
 enum { PHASE_ASSEMBLY, PHASE_FACTORISATION, PHASE_SOLVE, PHASE_TRANSPORT };
@@ -55,17 +55,23 @@ static const char *const phase_names[N_PHASES] = {"assembly", "factorisation", "
 
 typedef struct scene_spec {
   const char *name;
-  const char *what;             /* for the CSV */
-  const char *title;            /* of its panel */
-  const char *sets[MAX_SETS];   /* overrides of every run, NULL-terminated */
+  const char *what;           /* for the CSV */
+  const char *title;          /* of its panel */
+  const char *sets[MAX_SETS]; /* overrides of every run, NULL-terminated */
   int n_sizes;
   int nx[MAX_SIZES], ny[MAX_SIZES]; /* ny 0: a 1-D mesh */
   int has_transport;
 } scene_spec;
 
 static const scene_spec scenes[N_SCENES] = {
-    {"cavity_stokes", "steady Stokes cavity, Q2/Q1", "cavity_stokes: 2-D Stokes, steady", {NULL}, 4,
-     {16, 32, 64, 128}, {16, 32, 64, 128}, 0},
+    {"cavity_stokes",
+     "steady Stokes cavity, Q2/Q1",
+     "cavity_stokes: 2-D Stokes, steady",
+     {NULL},
+     4,
+     {16, 32, 64, 128},
+     {16, 32, 64, 128},
+     0},
     {"kynch_settling",
      "1-D batch settling, mixture model, MUSCL, 100 steps",
      "kynch_settling: 1-D mixture, 100 steps",
@@ -87,7 +93,7 @@ static const scene_spec scenes[N_SCENES] = {
 typedef struct run_result {
   int ok;
   char err[2100];
-  double cpu, wall;                                   /* of the run, s */
+  double cpu, wall;                                     /* of the run, s */
   double assembly, symbolic, numeric, solve, transport; /* totals, s */
   long assemblies, symbolics, numerics, solves, substeps, steps;
 } run_result;
@@ -176,9 +182,9 @@ static int run_child(const char *src, const scene_spec *s, int k, run_result *r)
 typedef struct point {
   int ok;
   long cells, steps, assemblies, numerics, solves, substeps;
-  double cpu;                /* the fastest run's CPU time */
-  double per_op[N_PHASES];   /* each phase's fastest time per operation (NaN: not in this scene) */
-  double symbolic;           /* the fastest symbolic analysis, s */
+  double cpu;              /* the fastest run's CPU time */
+  double per_op[N_PHASES]; /* each phase's fastest time per operation (NaN: not in this scene) */
+  double symbolic;         /* the fastest symbolic analysis, s */
 } point;
 
 /* Time per operation of each phase of one run. */
@@ -248,8 +254,10 @@ static void fit_scene(scene_table *t) {
 static void write_csv(FILE *f, const scene_table *tables, int n_tables, const char *machine, int repeat) {
   fprintf(f, "# bench_cost_scaling: time per operation of each phase against the number of cells\n");
   fprintf(f, "# machine: %s\n", machine);
-  fprintf(f, "# each phase's fastest of %d runs; assembly, factorisation (numeric) and solve are wall time per "
-             "operation, transport CPU time per transport sub-step\n", repeat);
+  fprintf(f,
+          "# each phase's fastest of %d runs; assembly, factorisation (numeric) and solve are wall time per "
+          "operation, transport CPU time per transport sub-step\n",
+          repeat);
   for (int i = 0; i < n_tables; ++i) {
     const scene_table *t = &tables[i];
     fprintf(f, "# %s (%s): fitted p in time ~ cells^p:", t->spec->name, t->spec->what);
@@ -273,8 +281,9 @@ static void write_csv(FILE *f, const scene_table *tables, int n_tables, const ch
     }
     fputc('\n', f);
   }
-  fprintf(f, "scene,mesh,cells,steps,assemblies,factorisations,solves,transport_substeps,cpu_s,assembly_s,"
-             "factorisation_s,solve_s,transport_s,symbolic_s,status\n");
+  fprintf(f,
+          "scene,mesh,cells,steps,assemblies,factorisations,solves,transport_substeps,cpu_s,assembly_s,"
+          "factorisation_s,solve_s,transport_s,symbolic_s,status\n");
   for (int i = 0; i < n_tables; ++i) {
     const scene_table *t = &tables[i];
     for (int k = 0; k < t->n; ++k) {
@@ -300,7 +309,8 @@ static void write_csv(FILE *f, const scene_table *tables, int n_tables, const ch
 
 static int write_svg(const char *path, const scene_table *tables, int n_tables, const char *machine, int repeat) {
   static const char *const colours[N_PHASES] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e"};
-  static const sl_chart_marker markers[N_PHASES] = {SL_CHART_MARK_CIRCLE, SL_CHART_MARK_SQUARE, SL_CHART_MARK_TRIANGLE, SL_CHART_MARK_DIAMOND};
+  static const sl_chart_marker markers[N_PHASES] = {SL_CHART_MARK_CIRCLE, SL_CHART_MARK_SQUARE, SL_CHART_MARK_TRIANGLE,
+                                                    SL_CHART_MARK_DIAMOND};
   sl_chart_series series[N_SCENES][N_PHASES + 1];
   sl_chart panels[N_SCENES];
   double x[N_SCENES][MAX_SIZES], y[N_SCENES][N_PHASES][MAX_SIZES], guide_x[N_SCENES][2], guide_y[N_SCENES][2];
@@ -319,19 +329,30 @@ static int write_svg(const char *path, const scene_table *tables, int n_tables, 
       if (!any) continue;
       if (isfinite(t->p[q])) snprintf(names[np][q], sizeof names[np][q], "%s, p = %.2f", phase_names[q], t->p[q]);
       else snprintf(names[np][q], sizeof names[np][q], "%s", phase_names[q]);
-      series[np][ns++] = (sl_chart_series){.name = names[np][q], .n = t->n, .x = x[np], .y = y[np][q],
-                                       .colour = colours[q], .marker = markers[q]};
+      series[np][ns++] = (sl_chart_series){
+          .name = names[np][q], .n = t->n, .x = x[np], .y = y[np][q], .colour = colours[q], .marker = markers[q]};
     }
     /* a slope-1 guide from the first assembly point across the sizes */
     if (t->n >= 2 && isfinite(y[np][PHASE_ASSEMBLY][0]) && isfinite(t->p[PHASE_ASSEMBLY])) {
       guide_x[np][0] = x[np][0], guide_x[np][1] = x[np][t->n - 1];
       guide_y[np][0] = y[np][PHASE_ASSEMBLY][0], guide_y[np][1] = guide_y[np][0] * guide_x[np][1] / guide_x[np][0];
-      series[np][ns++] = (sl_chart_series){.name = "\xE2\x88\x9D cells^{1}", .n = 2, .x = guide_x[np], .y = guide_y[np],
-                                       .colour = "#7f7f7f", .marker = SL_CHART_MARK_NONE, .dashed = 1};
+      series[np][ns++] = (sl_chart_series){.name = "\xE2\x88\x9D cells^{1}",
+                                           .n = 2,
+                                           .x = guide_x[np],
+                                           .y = guide_y[np],
+                                           .colour = "#7f7f7f",
+                                           .marker = SL_CHART_MARK_NONE,
+                                           .dashed = 1};
     }
     if (ns == 0) continue; /* no run of this scene succeeded */
-    panels[np] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = t->spec->title, .xlabel = "cells", .ylabel = "time per operation (s)",
-                              .n_series = ns, .series = series[np], .legend = SL_LEGEND_AUTO};
+    panels[np] = (sl_chart){.xscale = SL_AXIS_LOG,
+                            .yscale = SL_AXIS_LOG,
+                            .title = t->spec->title,
+                            .xlabel = "cells",
+                            .ylabel = "time per operation (s)",
+                            .n_series = ns,
+                            .series = series[np],
+                            .legend = SL_LEGEND_AUTO};
     ++np;
   }
   char note[1024];
@@ -340,8 +361,13 @@ static int write_svg(const char *path, const scene_table *tables, int n_tables, 
            "operation, transport CPU time per sub-step.\np: least-squares slope of log time against log cells. "
            "Machine: %s.",
            repeat, machine);
-  sl_figure fig = {.title = "Cost per operation against cells (bench_cost_scaling)", .note = note,
-                     .n_panels = np, .panels = panels, .columns = np, .panel_width = 440, .panel_height = 380};
+  sl_figure fig = {.title = "Cost per operation against cells (bench_cost_scaling)",
+                   .note = note,
+                   .n_panels = np,
+                   .panels = panels,
+                   .columns = np,
+                   .panel_width = 440,
+                   .panel_height = 380};
   sl_diag d = {{0}};
   if (sl_figure_write(path, &fig, &d)) return fprintf(stderr, "%s\n", d.msg), -1;
   return 0;
@@ -408,9 +434,10 @@ static int read_csv(const char *path, scene_table *tables, int *n_tables, char *
 /* ---- main ----------------------------------------------------------------------------- */
 
 static int usage(void) {
-  fprintf(stderr, "usage: bench_cost_scaling [SOURCE_DIR] [--repeat R] [--csv PATH] [--svg PATH] [--max-cells N] "
-                  "[--scene NAME]...\n"
-                  "       bench_cost_scaling --replot CSV --svg PATH   (the figure of recorded runs)\n");
+  fprintf(stderr,
+          "usage: bench_cost_scaling [SOURCE_DIR] [--repeat R] [--csv PATH] [--svg PATH] [--max-cells N] "
+          "[--scene NAME]...\n"
+          "       bench_cost_scaling --replot CSV --svg PATH   (the figure of recorded runs)\n");
   return 2;
 }
 
@@ -460,8 +487,8 @@ int main(int argc, char **argv) {
       }
       fprintf(stderr, "CPU %.3g s; per operation: assembly %.3g s, factorisation %.3g s, solve %.3g s", pt->cpu,
               pt->per_op[PHASE_ASSEMBLY], pt->per_op[PHASE_FACTORISATION], pt->per_op[PHASE_SOLVE]);
-      if (scenes[i].has_transport) fprintf(stderr, ", transport %.3g s (%ld sub-steps)", pt->per_op[PHASE_TRANSPORT],
-                                           pt->substeps);
+      if (scenes[i].has_transport)
+        fprintf(stderr, ", transport %.3g s (%ld sub-steps)", pt->per_op[PHASE_TRANSPORT], pt->substeps);
       fputc('\n', stderr);
     }
     fit_scene(t);

@@ -35,9 +35,9 @@
 #include <unistd.h>
 
 #include "../tests/scenes/mixture_box.h"
-#include "core/study/child.h"
 #include "bench_child.h"
 #include "bench_machine.h"
+#include "core/study/child.h"
 
 static double cpu_seconds(void) {
   struct timespec ts;
@@ -86,10 +86,18 @@ static void run_child(void *arg, void *result) {
 /* One sluice run in a child process (every: 1 solve the flow at every step, also where it is known; 2 the same with
  * the split step, [flow] scheme = projection); 0 or -1 (why in r->msg). */
 static int box_timed_run(int n, int line, int step, int every, run_result *r) {
-  run_arg a = {.s = {.n = n, .line = line, .rho_s = 1006.0, .settling = step ? 2 : 1, .dt = 10.0,
-                     .a = step ? foam_a : 0.0, .phi_max = step ? foam_phi_max : 0.0, .solve_every_step = every > 0,
-                     .projection = every > 1, .monolithic = every == 1},
-               .t_end = step ? t_step : t_smooth, .step = step};
+  run_arg a = {.s = {.n = n,
+                     .line = line,
+                     .rho_s = 1006.0,
+                     .settling = step ? 2 : 1,
+                     .dt = 10.0,
+                     .a = step ? foam_a : 0.0,
+                     .phi_max = step ? foam_phi_max : 0.0,
+                     .solve_every_step = every > 0,
+                     .projection = every > 1,
+                     .monolithic = every == 1},
+               .t_end = step ? t_step : t_smooth,
+               .step = step};
   a.s.end = a.s.every = a.t_end;
   snprintf(a.out, sizeof a.out, "bench_box_%s_%d.h5", line ? "1d" : "2d", n);
   char why[256];
@@ -150,8 +158,8 @@ static int foam_run(const char *src, const char *dir, int n, double dt, foam_res
   }
   char *const argv[] = {"driftFluxFoam", NULL};
   const char *const env[] = {"WM_PROJECT_DIR=/usr/share/openfoam", NULL};
-  sl_child_opts co = {.argv = argv, .result_fd = -1, .dir = dir, .env = env, .out = "driftFluxFoam.log",
-                      .err = "driftFluxFoam.log"};
+  sl_child_opts co = {
+      .argv = argv, .result_fd = -1, .dir = dir, .env = env, .out = "driftFluxFoam.log", .err = "driftFluxFoam.log"};
   sl_child_result cr;
   if (sl_child_run(&co, &cr) || cr.exit_code != 0 || cr.signal_number) {
     snprintf(r->msg, sizeof r->msg, "driftFluxFoam failed (exit %d, signal %d%s%.60s; %.100s/driftFluxFoam.log)",
@@ -245,19 +253,20 @@ static int foam_study(const char *src, int n_max, int rounds) {
       }
       fprintf(stderr, "\n");
     }
-  printf("# %s\n# upright box %g x %g m, 4 x N cells, phi0 = %g, u_t 10^(-%g phi) held at phi_max = %g, u_t = %g m/s, "
-         "t = %g s; fastest of %d interleaved rounds\n",
-         machine, box_W, box_H, box_phi0, foam_a, foam_phi_max, box_ut, t_step, rounds);
+  printf(
+      "# %s\n# upright box %g x %g m, 4 x N cells, phi0 = %g, u_t 10^(-%g phi) held at phi_max = %g, u_t = %g m/s, "
+      "t = %g s; fastest of %d interleaved rounds\n",
+      machine, box_W, box_H, box_phi0, foam_a, foam_phi_max, box_ut, t_step, rounds);
   printf("code,cells_vertical,cells,dt_s,cpu_s,l1,max_speed,max_phi\n");
   for (int i = 0; i < nn; ++i) {
     for (int e = 0; e < 3; ++e)
       if (ok_s[i][e])
-        printf("%s,%d,%d,10,%.4g,%.4e,%.3e,\n", names[e], ns[i], BOX_NX * ns[i],
-               best_s[i][e].cpu, best_s[i][e].l1, best_s[i][e].worst);
+        printf("%s,%d,%d,10,%.4g,%.4e,%.3e,\n", names[e], ns[i], BOX_NX * ns[i], best_s[i][e].cpu, best_s[i][e].l1,
+               best_s[i][e].worst);
     for (int j = 0; j < N_DT; ++j)
       if (ok_f[i][j])
-        printf("driftFluxFoam,%d,%d,%g,%.4g,%.4e,%.3e,%.6f\n", ns[i], BOX_NX * ns[i], best_f[i][j].dt,
-               best_f[i][j].cpu, best_f[i][j].l1, best_f[i][j].speed, best_f[i][j].alpha_max);
+        printf("driftFluxFoam,%d,%d,%g,%.4g,%.4e,%.3e,%.6f\n", ns[i], BOX_NX * ns[i], best_f[i][j].dt, best_f[i][j].cpu,
+               best_f[i][j].l1, best_f[i][j].speed, best_f[i][j].alpha_max);
   }
   return 0;
 }
@@ -267,7 +276,12 @@ int main(int argc, char **argv) {
   if (box_exact(&k, 0)) return 1;
   if (argc >= 3 && strcmp(argv[1], "ini") == 0) {
     static char text[8192];
-    box_scene s = {.n = atoi(argv[2]), .line = argc > 3, .rho_s = 1006.0, .settling = 1, .end = t_smooth, .dt = 10.0,
+    box_scene s = {.n = atoi(argv[2]),
+                   .line = argc > 3,
+                   .rho_s = 1006.0,
+                   .settling = 1,
+                   .end = t_smooth,
+                   .dt = 10.0,
                    .every = 10.0};
     box_text(&s, text, sizeof text);
     fputs(text, stdout);
@@ -282,16 +296,18 @@ int main(int argc, char **argv) {
   if (argc >= 3 && strcmp(argv[1], "foam") == 0)
     return foam_study(argv[2], argc > 3 ? atoi(argv[3]) : 400, argc > 4 ? atoi(argv[4]) : 2);
   if (argc >= 2 && strcmp(argv[1], "study") != 0) {
-    fprintf(stderr, "usage: bench_mixture_box ini N [line] | measure FILE T | study [N_MAX] | foam SOURCE_DIR [N_MAX] "
-                    "[ROUNDS]\n");
+    fprintf(stderr,
+            "usage: bench_mixture_box ini N [line] | measure FILE T | study [N_MAX] | foam SOURCE_DIR [N_MAX] "
+            "[ROUNDS]\n");
     return 2;
   }
   int n_max = argc > 2 ? atoi(argv[2]) : 400;
   char machine[256];
   bench_machine_describe(machine, sizeof machine);
-  printf("# %s\n# upright box %g x %g m, phi0 = %g, Vesilind u_t = %g m/s, a = %g, phi_max = %g, t = %g s "
-         "(fronts meet at %.1f s), dt = 10 s\n",
-         machine, box_W, box_H, box_phi0, box_ut, box_a, box_phi_max, t_smooth, k.t1);
+  printf(
+      "# %s\n# upright box %g x %g m, phi0 = %g, Vesilind u_t = %g m/s, a = %g, phi_max = %g, t = %g s "
+      "(fronts meet at %.1f s), dt = 10 s\n",
+      machine, box_W, box_H, box_phi0, box_ut, box_a, box_phi_max, t_smooth, k.t1);
   printf("model,cells_vertical,cells,cpu_s,steps,solves_skipped,l1,max_speed_run\n");
   for (int n = 50; n <= n_max; n *= 2)
     for (int line = 0; line < 2; ++line) {

@@ -61,32 +61,82 @@ typedef struct bench_case {
 static const bench_case cases[] = {
     {"boycott_0.1", "boycott", "boycott to t = 0.1, 24 x 32 cells", {"time.end=0.1", NULL}, 1, 0, 0},
     {"boycott_0.8", "boycott", "boycott to t = 0.8, 24 x 32 cells", {"time.end=0.8", NULL}, 0, 0, 0},
-    {"spinup_25", "spinup", "spinup to t = 25, 48 x 24 cells (its test's)",
-     {"time.end=25", "mesh.cells=48,24", "solver.nonlinear_tolerance=1e-6", NULL}, 0, 0, 0},
+    {"spinup_25",
+     "spinup",
+     "spinup to t = 25, 48 x 24 cells (its test's)",
+     {"time.end=25", "mesh.cells=48,24", "solver.nonlinear_tolerance=1e-6", NULL},
+     0,
+     0,
+     0},
     {"bingham_cavity", "bingham_cavity", "bingham_cavity, steady continuation in eps, 32 x 32 cells", {NULL}, 1, 0, 0},
     {"wave_bed", "wave_bed", "wave_bed as shipped, two wave periods, 32 x 24 cells", {NULL}, 0, 0, 0},
     /* the other shipped 2-D transient scenes of the flow solver (their rejected steps; docs/transient_cost.md) */
-    {"migration_couette", "migration_couette", "migration_couette as shipped (annulus 48 x 1, t = 2700)", {NULL}, 0,
-     0, 0},
-    {"migration_poiseuille", "migration_poiseuille", "migration_poiseuille as shipped (annulus 40 x 1, t = 600)",
-     {NULL}, 0, 0, 0},
+    {"migration_couette",
+     "migration_couette",
+     "migration_couette as shipped (annulus 48 x 1, t = 2700)",
+     {NULL},
+     0,
+     0,
+     0},
+    {"migration_poiseuille",
+     "migration_poiseuille",
+     "migration_poiseuille as shipped (annulus 40 x 1, t = 600)",
+     {NULL},
+     0,
+     0,
+     0},
     {"spectrometer_0.5", "spectrometer", "spectrometer to t = 0.5 (of 3)", {"time.end=0.5", NULL}, 0, 0, 0},
-    {"rotating_waves_10", "rotating_waves", "rotating_waves to t = 10 (of 150), 3072 cells", {"time.end=10", NULL},
-     0, 0, 0},
+    {"rotating_waves_10",
+     "rotating_waves",
+     "rotating_waves to t = 10 (of 150), 3072 cells",
+     {"time.end=10", NULL},
+     0,
+     0,
+     0},
     {"cavity_re100", "cavity_re100", "cavity_re100, steady Newton, 32 x 32 cells", {NULL}, 1, 0, 0},
-    {"cavity_stokes_128", "cavity_stokes", "cavity_stokes, one direct solve, 128 x 128 cells",
-     {"mesh.cells=128,128", NULL}, 1, 0, 0},
+    {"cavity_stokes_128",
+     "cavity_stokes",
+     "cavity_stokes, one direct solve, 128 x 128 cells",
+     {"mesh.cells=128,128", NULL},
+     1,
+     0,
+     0},
     /* the linear solvers at growing meshes (--case), PETSc's against the direct ones */
-    {"cavity_stokes_64", "cavity_stokes", "cavity_stokes, 64 x 64 cells (37 k unknowns)", {"mesh.cells=64,64", NULL},
-     0, 0, 1},
-    {"cavity_stokes_256", "cavity_stokes", "cavity_stokes, 256 x 256 cells (592 k unknowns)",
-     {"mesh.cells=256,256", NULL}, 0, 0, 1},
-    {"cavity_stokes_512", "cavity_stokes", "cavity_stokes, 512 x 512 cells (2.4 M unknowns)",
-     {"mesh.cells=512,512", NULL}, 0, 1, 1},
-    {"boycott_48x64", "boycott", "boycott, 50 fixed steps to t = 0.05, 48 x 64 cells",
-     {"mesh.cells=48,64", "time.end=0.05", "time.adaptive=false", "output.every=0.05", NULL}, 0, 0, 1},
-    {"boycott_96x128", "boycott", "boycott, 50 fixed steps to t = 0.05, 96 x 128 cells",
-     {"mesh.cells=96,128", "time.end=0.05", "time.adaptive=false", "output.every=0.05", NULL}, 0, 0, 1},
+    {"cavity_stokes_64",
+     "cavity_stokes",
+     "cavity_stokes, 64 x 64 cells (37 k unknowns)",
+     {"mesh.cells=64,64", NULL},
+     0,
+     0,
+     1},
+    {"cavity_stokes_256",
+     "cavity_stokes",
+     "cavity_stokes, 256 x 256 cells (592 k unknowns)",
+     {"mesh.cells=256,256", NULL},
+     0,
+     0,
+     1},
+    {"cavity_stokes_512",
+     "cavity_stokes",
+     "cavity_stokes, 512 x 512 cells (2.4 M unknowns)",
+     {"mesh.cells=512,512", NULL},
+     0,
+     1,
+     1},
+    {"boycott_48x64",
+     "boycott",
+     "boycott, 50 fixed steps to t = 0.05, 48 x 64 cells",
+     {"mesh.cells=48,64", "time.end=0.05", "time.adaptive=false", "output.every=0.05", NULL},
+     0,
+     0,
+     1},
+    {"boycott_96x128",
+     "boycott",
+     "boycott, 50 fixed steps to t = 0.05, 96 x 128 cells",
+     {"mesh.cells=96,128", "time.end=0.05", "time.adaptive=false", "output.every=0.05", NULL},
+     0,
+     0,
+     1},
 };
 enum { N_CASES = (int)(sizeof cases / sizeof cases[0]) };
 
@@ -95,8 +145,8 @@ typedef struct variant {
   const char *set;   /* an override, or NULL */
   const char *set2;  /* a second one, or NULL */
   const char *petsc; /* --petsc options, or NULL */
-  int before;      /* runs --before BIN */
-  int ref_blas;    /* with --reference-blas first on LD_LIBRARY_PATH */
+  int before;        /* runs --before BIN */
+  int ref_blas;      /* with --reference-blas first on LD_LIBRARY_PATH */
 } variant;
 
 static const variant variants[] = {
@@ -113,7 +163,8 @@ static const variant variants[] = {
     {"projection, tolerance 2.5e-4", "flow.scheme=projection", "time.tolerance=2.5e-4", NULL, 0, 0},
     /* a build with -DSLUICE_WITH_PETSC=ON: its defaults, and MUMPS (parallel direct) through it */
     {"petsc", "solver.linear=petsc", NULL, NULL, 0, 0},
-    {"petsc, mumps", "solver.linear=petsc", NULL, "-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps", 0, 0},
+    {"petsc, mumps", "solver.linear=petsc", NULL, "-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps", 0,
+     0},
 };
 enum { N_VARIANTS = (int)(sizeof variants / sizeof variants[0]) };
 
@@ -196,8 +247,8 @@ static int run(char *const *args, const char *ld_path, result *r) {
   if (text) parse(text, r);
   if (!r->ok) {
     const char *e = text ? strstr(text, "error") : NULL;
-    snprintf(r->why, sizeof r->why, "exit status %d%s%.200s", cr.signal_number ? -1 : cr.exit_code,
-             e ? ": " : "", e ? e : "");
+    snprintf(r->why, sizeof r->why, "exit status %d%s%.200s", cr.signal_number ? -1 : cr.exit_code, e ? ": " : "",
+             e ? e : "");
   } else if (!r->steps_known) {
     r->ok = 0;
     snprintf(r->why, sizeof r->why, "no summary line");
@@ -220,15 +271,15 @@ int main(int argc, char **argv) {
     else if (!strcmp(argv[i], "--title") && i + 1 < argc) title = argv[++i];
     else if (!strcmp(argv[i], "--quick")) quick = 1;
     else if (!strcmp(argv[i], "--append")) append = 1;
-    else if (!strcmp(argv[i], "--case") && i + 1 < argc && n_case_sel < MAX_CASES)
-      case_sel[n_case_sel++] = argv[++i];
+    else if (!strcmp(argv[i], "--case") && i + 1 < argc && n_case_sel < MAX_CASES) case_sel[n_case_sel++] = argv[++i];
     else if (!strcmp(argv[i], "--variant") && i + 1 < argc && n_var_sel < MAX_VARIANTS)
       var_sel[n_var_sel++] = argv[++i];
     else if (argv[i][0] != '-') src = argv[i];
     else {
-      fprintf(stderr, "usage: bench_transient_cost [SOURCE_DIR] [--before BIN [--before-label TEXT]] "
-                      "[--reference-blas DIR] [--repeat R] [--quick] [--case NAME]... [--variant NAME]... "
-                      "[--markdown PATH [--append]] [--title TEXT]\n");
+      fprintf(stderr,
+              "usage: bench_transient_cost [SOURCE_DIR] [--before BIN [--before-label TEXT]] "
+              "[--reference-blas DIR] [--repeat R] [--quick] [--case NAME]... [--variant NAME]... "
+              "[--markdown PATH [--append]] [--title TEXT]\n");
       return 2;
     }
   }
@@ -279,8 +330,8 @@ int main(int argc, char **argv) {
           ++failed;
           continue;
         }
-        fprintf(stderr, "%.2f s CPU, %.0f MB, %ld steps (%ld rejected), %ld Newton, %ld numeric, %ld reused\n", r.cpu, r.peak_mb,
-                r.steps, r.rejected, r.newton, r.numeric, r.reused);
+        fprintf(stderr, "%.2f s CPU, %.0f MB, %ld steps (%ld rejected), %ld Newton, %ld numeric, %ld reused\n", r.cpu,
+                r.peak_mb, r.steps, r.rejected, r.newton, r.numeric, r.reused);
         result *b = &best[c][v];
         if (!b->ok || r.cpu < b->cpu) *b = r;
       }
@@ -295,13 +346,18 @@ int main(int argc, char **argv) {
     if (!f) continue;
     if (f == md && append) fprintf(f, "\n## A further run\n\n");
     else fprintf(f, "# %s\n\n", title);
-    fprintf(f, "Written by `bench_transient_cost` (bench/transient_cost.c). %s; each time the fastest of %d "
-               "interleaved round%s, CPU seconds of the whole `sluice run` (user + system). \"before\" is `%s`%s.\n\n",
-            machine, repeat, repeat == 1 ? "" : "s", before_label ? before_label : before ? before : "(not run)",
+    fprintf(f,
+            "Written by `bench_transient_cost` (bench/transient_cost.c). %s; each time the fastest of %d "
+            "interleaved round%s, CPU seconds of the whole `sluice run` (user + system). \"before\" is `%s`%s.\n\n",
+            machine, repeat, repeat == 1 ? "" : "s",
+            before_label ? before_label
+            : before     ? before
+                         : "(not run)",
             ref_blas ? ", \"ref. BLAS\" the same with the reference BLAS first on LD_LIBRARY_PATH" : "");
-    fprintf(f, "| case | variant | solver | CPU s | ratio | peak MB | steps | rejected | rejected %% | Newton | numeric "
-               "factorisations | reused solves | Krylov iterations |\n"
-               "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    fprintf(f,
+            "| case | variant | solver | CPU s | ratio | peak MB | steps | rejected | rejected %% | Newton | numeric "
+            "factorisations | reused solves | Krylov iterations |\n"
+            "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int c = 0; c < N_CASES; ++c) {
       if (!use_case[c]) continue;
       double ref = NAN;
@@ -315,16 +371,16 @@ int main(int argc, char **argv) {
           continue;
         }
         long att = r->steps + r->rejected;
-        fprintf(f, "| %s | %s | %s | %.2f | %.2f | %.0f | %ld | %ld | %.1f | %ld | %ld | %ld | %ld |\n",
-                cases[c].what, variants[v].name, r->linear, r->cpu, ref / r->cpu, r->peak_mb, r->steps, r->rejected,
-                att > 0 ? 100.0 * (double)r->rejected / (double)att : 0.0, r->newton, r->numeric, r->reused,
-                r->krylov);
+        fprintf(f, "| %s | %s | %s | %.2f | %.2f | %.0f | %ld | %ld | %.1f | %ld | %ld | %ld | %ld |\n", cases[c].what,
+                variants[v].name, r->linear, r->cpu, ref / r->cpu, r->peak_mb, r->steps, r->rejected,
+                att > 0 ? 100.0 * (double)r->rejected / (double)att : 0.0, r->newton, r->numeric, r->reused, r->krylov);
       }
     }
-    fprintf(f, "\n\"ratio\" is the first variant's CPU time over the row's (how many times faster); \"peak MB\" the "
-               "run's largest resident set (wait4's ru_maxrss). \"rejected %%\" "
-               "is of all attempted steps. \"Newton\" counts the linear solves of the nonlinear iterations; "
-               "\"reused solves\" those answered by FGMRES with an older factorisation (core/solve/linsolve.h).\n");
+    fprintf(f,
+            "\n\"ratio\" is the first variant's CPU time over the row's (how many times faster); \"peak MB\" the "
+            "run's largest resident set (wait4's ru_maxrss). \"rejected %%\" "
+            "is of all attempted steps. \"Newton\" counts the linear solves of the nonlinear iterations; "
+            "\"reused solves\" those answered by FGMRES with an older factorisation (core/solve/linsolve.h).\n");
   }
   if (md) fclose(md);
   return failed ? 1 : 0;

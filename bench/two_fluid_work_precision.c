@@ -31,10 +31,10 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "sluice/sluice.h"
-#include "core/io/output.h"
 #include "bench_machine.h"
+#include "core/io/output.h"
 #include "core/study/chart.h"
+#include "sluice/sluice.h"
 
 enum { N_SCENES = 2, N_SWEEP = 6, MAX_CELLS = 400 };
 
@@ -42,11 +42,11 @@ static const double T_PROBE = 10.0;
 
 typedef struct scene_spec {
   const char *name;
-  double n_eq;              /* equilibrium porosity of the final state */
+  double n_eq; /* equilibrium porosity of the final state */
   const char *n_eq_source;
-  int cells[N_SWEEP];       /* mesh sweep at the scene's dt */
-  double dts[N_SWEEP];      /* time-step sweep at 100 cells */
-  const char *extra;        /* an override for every run, or NULL */
+  int cells[N_SWEEP];  /* mesh sweep at the scene's dt */
+  double dts[N_SWEEP]; /* time-step sweep at 100 cells */
+  const char *extra;   /* an override for every run, or NULL */
 } scene_spec;
 
 typedef struct run_result {
@@ -142,7 +142,6 @@ static double l1_against(const run_result *a, const run_result *ref) {
   return s;
 }
 
-
 typedef struct table {
   scene_spec spec[N_SCENES];
   run_result mesh[N_SCENES][N_SWEEP], dt[N_SCENES][N_SWEEP];
@@ -152,8 +151,9 @@ typedef struct table {
 static void write_csv(FILE *f, const table *t) {
   fprintf(f, "# machine: %s\n", t->machine);
   for (int s = 0; s < N_SCENES; ++s)
-    fprintf(f, "# %s: final porosity against %.6f (%s); transient: L1 of phi at t = %g s against the sweep's finest "
-               "run\n",
+    fprintf(f,
+            "# %s: final porosity against %.6f (%s); transient: L1 of phi at t = %g s against the sweep's finest "
+            "run\n",
             t->spec[s].name, t->spec[s].n_eq, t->spec[s].n_eq_source, T_PROBE);
   fprintf(f, "scene,sweep,cells,dt,steps,cpu_s,final_error,transient_l1\n");
   for (int s = 0; s < N_SCENES; ++s)
@@ -188,24 +188,40 @@ static int write_svg(const char *path, const table *t) {
         labp[s][q][m] = q % 2 ? lab[s][q][m] : NULL;
         ++m;
       }
-      ser[s][q] = (sl_chart_series){.name = names[q], .n = m, .x = x[s][q], .y = y[s][q], .labels = labp[s][q],
-                                .colour = colours[q], .marker = q < 2 ? SL_CHART_MARK_CIRCLE : SL_CHART_MARK_SQUARE,
-                                .dashed = q % 2 == 0};
+      ser[s][q] = (sl_chart_series){.name = names[q],
+                                    .n = m,
+                                    .x = x[s][q],
+                                    .y = y[s][q],
+                                    .labels = labp[s][q],
+                                    .colour = colours[q],
+                                    .marker = q < 2 ? SL_CHART_MARK_CIRCLE : SL_CHART_MARK_SQUARE,
+                                    .dashed = q % 2 == 0};
     }
     snprintf(titles[s], sizeof titles[s], "%s", t->spec[s].name);
-    panels[s] = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .title = titles[s], .xlabel = "CPU time of the run (s)",
-                             .ylabel = "final porosity error; L_{1} error in \xCF\x86 at 10 s (m)", .n_series = 4,
-                             .series = ser[s], .legend = SL_LEGEND_AUTO,
-                             .yspan = {s == 0 ? 0.0 : 1e-10, s == 0 ? 0.0 : 1e-1}}; /* room for the legend */
+    panels[s] = (sl_chart){.xscale = SL_AXIS_LOG,
+                           .yscale = SL_AXIS_LOG,
+                           .title = titles[s],
+                           .xlabel = "CPU time of the run (s)",
+                           .ylabel = "final porosity error; L_{1} error in \xCF\x86 at 10 s (m)",
+                           .n_series = 4,
+                           .series = ser[s],
+                           .legend = SL_LEGEND_AUTO,
+                           .yspan = {s == 0 ? 0.0 : 1e-10, s == 0 ? 0.0 : 1e-1}}; /* room for the legend */
   }
   char note[1024];
-  snprintf(note, sizeof note,
-           "Mesh sweeps at the scene's dt, dt sweeps at 100 cells; profile errors against the sweep's finest run.\n"
-           "Final: max |porosity \xE2\x88\x92 equilibrium| over the bed at the end (the discrete steady state is the drag's "
-           "equilibrium: this is the stopping tolerance).\n%s.",
-           t->machine);
-  sl_figure fig = {.title = "1-D two-fluid model: error against CPU time", .note = note, .n_panels = N_SCENES,
-                     .panels = panels, .columns = N_SCENES, .panel_width = 520, .panel_height = 440};
+  snprintf(
+      note, sizeof note,
+      "Mesh sweeps at the scene's dt, dt sweeps at 100 cells; profile errors against the sweep's finest run.\n"
+      "Final: max |porosity \xE2\x88\x92 equilibrium| over the bed at the end (the discrete steady state is the drag's "
+      "equilibrium: this is the stopping tolerance).\n%s.",
+      t->machine);
+  sl_figure fig = {.title = "1-D two-fluid model: error against CPU time",
+                   .note = note,
+                   .n_panels = N_SCENES,
+                   .panels = panels,
+                   .columns = N_SCENES,
+                   .panel_width = 520,
+                   .panel_height = 440};
   sl_diag d = {{0}};
   if (sl_figure_write(path, &fig, &d)) return fprintf(stderr, "%s\n", d.msg), -1;
   return 0;
@@ -257,8 +273,9 @@ static int read_csv(const char *path, table *t) {
 }
 
 static int usage(void) {
-  fprintf(stderr, "usage: bench_two_fluid_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH] [--repeat R]\n"
-                  "       bench_two_fluid_work_precision --replot CSV --svg PATH   (the figure of recorded runs)\n");
+  fprintf(stderr,
+          "usage: bench_two_fluid_work_precision [SOURCE_DIR] [--csv PATH] [--svg PATH] [--repeat R]\n"
+          "       bench_two_fluid_work_precision --replot CSV --svg PATH   (the figure of recorded runs)\n");
   return 2;
 }
 
@@ -278,10 +295,18 @@ int main(int argc, char **argv) {
   static table t;
   /* Richardson & Zaki (1954) with Stokes' u_t for fluidized_bed's 0.3 mm sand in water at 10 mm/s */
   const double ut = (2600.0 - 998.2) * 9.81 * 3e-4 * 3e-4 / (18.0 * 1.002e-3);
-  t.spec[0] = (scene_spec){"fluidized_bed", pow(0.010 / ut, 1.0 / 4.65), "Richardson-Zaki, the drag's own law",
-                           {25, 50, 100, 200, 400, 0}, {0.8, 0.4, 0.2, 0.1, 0.05, 0.025}, NULL};
-  t.spec[1] = (scene_spec){"fluidization_step", 0.716, "Pringle 2001, section 4.6.1", {25, 50, 100, 200, 400, 0},
-                           {0.16, 0.08, 0.04, 0.02, 0.01, 0.005}, NULL};
+  t.spec[0] = (scene_spec){"fluidized_bed",
+                           pow(0.010 / ut, 1.0 / 4.65),
+                           "Richardson-Zaki, the drag's own law",
+                           {25, 50, 100, 200, 400, 0},
+                           {0.8, 0.4, 0.2, 0.1, 0.05, 0.025},
+                           NULL};
+  t.spec[1] = (scene_spec){"fluidization_step",
+                           0.716,
+                           "Pringle 2001, section 4.6.1",
+                           {25, 50, 100, 200, 400, 0},
+                           {0.16, 0.08, 0.04, 0.02, 0.01, 0.005},
+                           NULL};
   if (replot) {
     if (!svg) return usage();
     if (read_csv(replot, &t)) return 2;

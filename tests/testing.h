@@ -11,35 +11,35 @@
 
 static int sl_test_passed, sl_test_failed;
 
-#define CHECK(cond)                                                         \
-  do {                                                                      \
-    if (cond) {                                                             \
-      ++sl_test_passed;                                                     \
-    } else {                                                                \
-      ++sl_test_failed;                                                     \
+#define CHECK(cond)                                                            \
+  do {                                                                         \
+    if (cond) {                                                                \
+      ++sl_test_passed;                                                        \
+    } else {                                                                   \
+      ++sl_test_failed;                                                        \
       fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
-    }                                                                       \
+    }                                                                          \
   } while (0)
 
-#define CHECK_MSG(cond, ...)                                       \
-  do {                                                             \
-    if (cond) {                                                    \
-      ++sl_test_passed;                                            \
-    } else {                                                       \
-      ++sl_test_failed;                                            \
+#define CHECK_MSG(cond, ...)                                        \
+  do {                                                              \
+    if (cond) {                                                     \
+      ++sl_test_passed;                                             \
+    } else {                                                        \
+      ++sl_test_failed;                                             \
       fprintf(stderr, "%s:%d: check failed: ", __FILE__, __LINE__); \
-      fprintf(stderr, __VA_ARGS__);                                \
-      fputc('\n', stderr);                                         \
-    }                                                              \
+      fprintf(stderr, __VA_ARGS__);                                 \
+      fputc('\n', stderr);                                          \
+    }                                                               \
   } while (0)
 
 /* |a - b| <= rtol * max(|a|, |b|) (+ a tiny absolute floor for zeros). */
-#define CHECK_CLOSE(a, b, rtol)                                                              \
-  do {                                                                                       \
-    double sl_a_ = (a), sl_b_ = (b);                                                         \
-    double sl_s_ = fabs(sl_a_) > fabs(sl_b_) ? fabs(sl_a_) : fabs(sl_b_);                    \
-    CHECK_MSG(fabs(sl_a_ - sl_b_) <= (rtol) * sl_s_ + 1e-300, "%s = %.17g, %s = %.17g (rtol %g)", \
-              #a, sl_a_, #b, sl_b_, (double)(rtol));                                         \
+#define CHECK_CLOSE(a, b, rtol)                                                                                       \
+  do {                                                                                                                \
+    double sl_a_ = (a), sl_b_ = (b);                                                                                  \
+    double sl_s_ = fabs(sl_a_) > fabs(sl_b_) ? fabs(sl_a_) : fabs(sl_b_);                                             \
+    CHECK_MSG(fabs(sl_a_ - sl_b_) <= (rtol)*sl_s_ + 1e-300, "%s = %.17g, %s = %.17g (rtol %g)", #a, sl_a_, #b, sl_b_, \
+              (double)(rtol));                                                                                        \
   } while (0)
 
 #define CHECK_CONTAINS(haystack, needle) \

@@ -5,12 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/solve/linsolve.h"
 #include "core/config/ini.h"
 #include "core/models/run.h"
 #include "core/plugin/closure_ini.h"
 #include "core/plugin/guard.h"
 #include "core/plugin/kinds.h"
+#include "core/solve/linsolve.h"
 #include "core/time/loop.h"
 #include "core/util/version.h"
 
@@ -231,8 +231,13 @@ static void relay(void *user, double t, double dt, long step, int its) {
 
 static void relay_nonlinear(void *user, const sl_nl_report *r) {
   const sluice_run_opts *o = user;
-  sluice_nonlinear n = {.t = r->t, .stage = r->stage, .n_stages = r->n_stages, .iteration = r->iteration,
-                        .picard = r->picard, .correction = r->correction, .residual = r->residual,
+  sluice_nonlinear n = {.t = r->t,
+                        .stage = r->stage,
+                        .n_stages = r->n_stages,
+                        .iteration = r->iteration,
+                        .picard = r->picard,
+                        .correction = r->correction,
+                        .residual = r->residual,
                         .terms = r->terms};
   o->nonlinear(o->nonlinear_user, &n);
 }

@@ -28,14 +28,11 @@ void sl_asm_batch_free(sl_asm_batch *b) {
 }
 
 sl_qp_batch sl_asm_batch_view(const sl_asm_batch *b) {
-  return (sl_qp_batch){.n = b->n_cells * b->nq,
-                       .x = (const double(*)[2])b->x,
-                       .cell = b->cell,
-                       .shear_rate = b->shear_rate};
+  return (sl_qp_batch){
+      .n = b->n_cells * b->nq, .x = (const double(*)[2])b->x, .cell = b->cell, .shear_rate = b->shear_rate};
 }
 
-int sl_asm_coef_eval(const sl_coef *cf, const char *what, const sl_qp_batch *qb, int width, double *out,
-                     sl_diag *d) {
+int sl_asm_coef_eval(const sl_coef *cf, const char *what, const sl_qp_batch *qb, int width, double *out, sl_diag *d) {
   size_t n = (size_t)qb->n * width;
   if (!cf->fn) {
     for (size_t i = 0; i < n; ++i) out[i] = cf->value;

@@ -7,11 +7,11 @@
 #include "core/assembly/operators.h"
 
 typedef struct sl_asm_batch {
-  int nq;              /* quadrature points per cell */
-  int first, n_cells;  /* the cells of the current batch */
-  double (*x)[2];      /* [SL_ASSEMBLY_BATCH_CELLS * nq] */
+  int nq;             /* quadrature points per cell */
+  int first, n_cells; /* the cells of the current batch */
+  double (*x)[2];     /* [SL_ASSEMBLY_BATCH_CELLS * nq] */
   int32_t *cell;
-  double *shear_rate;  /* NULL unless asked for */
+  double *shear_rate; /* NULL unless asked for */
 } sl_asm_batch;
 
 int sl_asm_batch_init(sl_asm_batch *b, int nq, int with_shear_rate, sl_diag *d);
@@ -21,8 +21,7 @@ sl_qp_batch sl_asm_batch_view(const sl_asm_batch *b);
 /* out[width * i + c] for the batch: the constant, or the callback with its
  * output checked for non-finite values. `what` names the coefficient in
  * messages. */
-int sl_asm_coef_eval(const sl_coef *cf, const char *what, const sl_qp_batch *qb, int width, double *out,
-                     sl_diag *d);
+int sl_asm_coef_eval(const sl_coef *cf, const char *what, const sl_qp_batch *qb, int width, double *out, sl_diag *d);
 /* True when the coefficient is the constant zero: the term is skipped. */
 static inline int sl_asm_coef_is_zero(const sl_coef *cf) { return !cf->fn && cf->value == 0.0; }
 

@@ -65,8 +65,8 @@ static void element(diffusion_work *w, int nb, const double *k, const double *f,
         for (int j = 0; j < nb; ++j) w->Ke[i * nb + j] += wk * (g[i][0] * g[j][0] + g[i][1] * g[j][1]);
       else
         for (int j = 0; j < nb; ++j)
-          w->Ke[i * nb + j] += wk * (g[i][0] * (T[0] * g[j][0] + T[1] * g[j][1]) +
-                                     g[i][1] * (T[2] * g[j][0] + T[3] * g[j][1]));
+          w->Ke[i * nb + j] +=
+              wk * (g[i][0] * (T[0] * g[j][0] + T[1] * g[j][1]) + g[i][1] * (T[2] * g[j][0] + T[3] * g[j][1]));
     }
   }
 }

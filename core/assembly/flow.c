@@ -37,16 +37,16 @@ static inline double sym_dot(const sym3 *a, const sym3 *b) {
 }
 
 static inline sym3 sym_part(const double G[3][3]) {
-  return (sym3){{G[0][0], G[1][1], G[2][2], 0.5 * (G[0][1] + G[1][0]), 0.5 * (G[0][2] + G[2][0]),
-                 0.5 * (G[1][2] + G[2][1])}};
+  return (sym3){
+      {G[0][0], G[1][1], G[2][2], 0.5 * (G[0][1] + G[1][0]), 0.5 * (G[0][2] + G[2][0]), 0.5 * (G[1][2] + G[2][1])}};
 }
 
 typedef struct flow_work {
   sl_fe_values *fv; /* space 0: velocity, space 1: pressure */
   sl_asm_batch batch;
-  qp_state *state;       /* per batch point */
+  qp_state *state; /* per batch point */
   double *rho, *mu, *force;
-  int frame[MAX_COMP];   /* frame axis of each velocity component */
+  int frame[MAX_COMP]; /* frame axis of each velocity component */
   double Ke[MAX_ELEM_DOFS * MAX_ELEM_DOFS], be[MAX_ELEM_DOFS];
   int load_only; /* SL_FLOW_LOAD: the iterate and the viscosity are not needed */
 } flow_work;
@@ -91,12 +91,11 @@ static int work_create(flow_work **out, const sl_th_space *th, const sl_flow_opt
 static int check_input(const sl_system *s, const sl_th_space *th, const sl_flow_opts *o, sl_diag *d) {
   int dim = th->mesh->dim;
   if (th->n_comp < dim || th->n_comp > dim + 1 || th->n_comp > MAX_COMP)
-    return sl_diag_set(d, SL_EBADINPUT, "flow: %d velocity components on a %d-D mesh (%d or %d expected)",
-                       th->n_comp, dim, dim, dim + 1);
+    return sl_diag_set(d, SL_EBADINPUT, "flow: %d velocity components on a %d-D mesh (%d or %d expected)", th->n_comp,
+                       dim, dim, dim + 1);
   if (o->axisymmetric && dim != 2)
     return sl_diag_set(d, SL_EBADINPUT, "flow: an axisymmetric scene needs a 2-D (r, z) mesh");
-  if (o->omega != 0.0 && dim != 2)
-    return sl_diag_set(d, SL_EBADINPUT, "flow: a rotating frame needs a 2-D mesh");
+  if (o->omega != 0.0 && dim != 2) return sl_diag_set(d, SL_EBADINPUT, "flow: a rotating frame needs a 2-D mesh");
   if (o->omega != 0.0 && o->axisymmetric && th->n_comp != 3)
     return sl_diag_set(d, SL_EBADINPUT, "flow: a rotating axisymmetric frame needs the swirl component");
   int32_t n_dofs = o->velocity_block ? th->p_offset : th->n_dofs;
@@ -151,11 +150,11 @@ static double stress_contraction(const sym3 *T, int A, double phi, const double 
 
 /* One trial/test function phi_i e_a at a quadrature point. */
 typedef struct basis_vec {
-  sym3 D;      /* D(phi e_a) */
-  double div;  /* div(phi e_a) */
+  sym3 D;       /* D(phi e_a) */
+  double div;   /* div(phi e_a) */
   double Tu[3]; /* G(phi e_a) u: the advected part of the linearised convection */
   double phi;
-  int A;       /* frame axis */
+  int A; /* frame axis */
 } basis_vec;
 
 /* The matrix of one quadrature point, planar with two components and no Coriolis term nor shear-rate dependent
@@ -171,7 +170,8 @@ static void planar_matrix(double *Ke, int n, int nb, double wq, const double *ph
   double c[2][2], a[SL_ELEMENT_MAX_BASIS];
   for (int A = 0; A < 2; ++A)
     for (int B = 0; B < 2; ++B)
-      c[A][B] = (A == B ? rq * mass_coef : 0.0) + (K ? K[2 * A + B] : 0.0) + (convection && newton ? rq * s->G[A][B] : 0.0);
+      c[A][B] =
+          (A == B ? rq * mass_coef : 0.0) + (K ? K[2 * A + B] : 0.0) + (convection && newton ? rq * s->G[A][B] : 0.0);
   for (int j = 0; j < nb; ++j) a[j] = convection ? wq * rq * (s->u[0] * grad[j][0] + s->u[1] * grad[j][1]) : 0.0;
   double wm = wq * mq;
   int nv = 2 * nb;
@@ -182,8 +182,8 @@ static void planar_matrix(double *Ke, int n, int nb, double wq, const double *ph
       double g0 = grad[j][0], g1 = grad[j][1], pp = wpi * phi[j];
       double diag = gi0 * g0 + gi1 * g1 + phi[i] * a[j];
       r0[j] += diag + gi0 * g0 + pp * c[0][0];      /* (0, i), (0, j): d_0 phi_i d_0 phi_j */
-      r0[nb + j] += gi1 * g0 + pp * c[0][1];       /* (0, i), (1, j): d_1 phi_i d_0 phi_j */
-      r1[j] += gi0 * g1 + pp * c[1][0];            /* (1, i), (0, j): d_0 phi_i d_1 phi_j */
+      r0[nb + j] += gi1 * g0 + pp * c[0][1];        /* (0, i), (1, j): d_1 phi_i d_0 phi_j */
+      r1[j] += gi0 * g1 + pp * c[1][0];             /* (1, i), (0, j): d_0 phi_i d_1 phi_j */
       r1[nb + j] += diag + gi1 * g1 + pp * c[1][1]; /* (1, i), (1, j) */
     }
     for (int k = 0; k < np; ++k) { /* -psi_k div(phi_i e_A), and its transpose */
@@ -227,8 +227,7 @@ static inline void axpy1(double *restrict y, int n, const double *restrict x0, d
 static void axi_matrix(double *Ke, int n, int nc, int nb, double wq, double r, const double *phi,
                        const double (*grad)[2], const double *psi, int np, double rq, double mq, double mass_coef,
                        const double *K, const double C[3][3], const qp_state *s, int convection, int newton) {
-  double c[3][3], a[SL_ELEMENT_MAX_BASIS], h[SL_ELEMENT_MAX_BASIS], g0[SL_ELEMENT_MAX_BASIS],
-      g1[SL_ELEMENT_MAX_BASIS];
+  double c[3][3], a[SL_ELEMENT_MAX_BASIS], h[SL_ELEMENT_MAX_BASIS], g0[SL_ELEMENT_MAX_BASIS], g1[SL_ELEMENT_MAX_BASIS];
   double rinv = 1.0 / r;
   for (int A = 0; A < 3; ++A)
     for (int B = 0; B < 3; ++B)
@@ -266,8 +265,7 @@ static void axi_matrix(double *Ke, int n, int nc, int nb, double wq, double r, c
 }
 
 static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, sl_flow_linearisation lin,
-                    const qp_state *st, const double *shear, const double *rho, const double *mu,
-                    const double *force) {
+                    const qp_state *st, const double *shear, const double *rho, const double *mu, const double *force) {
   const sl_fe_values *fv = w->fv;
   int c = fv->cell, nc = th->n_comp, nb = th->vel->dofs_per_cell, np = th->pres->dofs_per_cell;
   /* npc: the pressure dofs the element's rows and columns hold (none for the velocity block alone) */
@@ -372,8 +370,8 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       for (int k = 0; k < nv; ++k) s_ia[k] = sym_dot(&Du, &bv[k].D) / gam;
     }
     if (fast && planar2) {
-      planar_matrix(w->Ke, n, nb, wq, fv->phi[0][q], (const double(*)[2])fv->grad[0][q], psi, npc, rq, mq,
-                    o->mass_coef, K, s, o->convection, newton);
+      planar_matrix(w->Ke, n, nb, wq, fv->phi[0][q], (const double(*)[2])fv->grad[0][q], psi, npc, rq, mq, o->mass_coef,
+                    K, s, o->convection, newton);
       continue;
     }
     if (fast) {
@@ -531,8 +529,8 @@ typedef struct diag_ctx {
   double *shear_rate, *viscosity, *yielded;
 } diag_ctx;
 
-static int diagnostics_batch(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, int first, int n,
-                             void *user, sl_diag *d) {
+static int diagnostics_batch(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, int first, int n, void *user,
+                             sl_diag *d) {
   const diag_ctx *c = user;
   int nq = w->fv->quad.n;
   (void)th, (void)o, (void)d;

@@ -46,13 +46,13 @@ typedef enum sl_flow_linearisation {
 } sl_flow_linearisation;
 
 typedef struct sl_flow_opts {
-  int axisymmetric;      /* x is r; needs r >= 0 */
-  sl_coef density;       /* rho > 0, kg m^-3 */
-  sl_qp_fn viscosity;    /* out[2 i] = mu, out[2 i + 1] = d mu / d gamma; NULL: viscosity_value */
+  int axisymmetric;   /* x is r; needs r >= 0 */
+  sl_coef density;    /* rho > 0, kg m^-3 */
+  sl_qp_fn viscosity; /* out[2 i] = mu, out[2 i + 1] = d mu / d gamma; NULL: viscosity_value */
   void *viscosity_user;
   double viscosity_value;
-  int convection;        /* assemble rho (u.grad) u */
-  double omega;          /* frame rotation (rad/s) about e_2 (planar: the axis through rotation_centre;
+  int convection; /* assemble rho (u.grad) u */
+  double omega;   /* frame rotation (rad/s) about e_2 (planar: the axis through rotation_centre;
                             axisymmetric: the symmetry axis); adds Coriolis and centrifugal forces */
   double rotation_centre[2];
   /* The density rho_0 whose centrifugal force the pressure takes: the body force is (rho - rho_0) Omega^2 r and
@@ -61,7 +61,7 @@ typedef struct sl_flow_opts {
    * pressure space: taking it out keeps its discretisation error, O(h^2) rho_0 Omega^2, out of a rapidly
    * rotating flow driven by rho - rho_0 alone. 0: the full rho Omega^2 r. */
   double centrifugal_density;
-  sl_qp_fn body_force;   /* f (N m^-3), n_comp per point in the velocity's components; NULL: none */
+  sl_qp_fn body_force; /* f (N m^-3), n_comp per point in the velocity's components; NULL: none */
   void *body_force_user;
   /* A given symmetric stress T (Pa) in the momentum as -div T, weakly b += int T : grad(v) (natural form: a
    * traction boundary prescribes (sigma - T) n); right-hand side only. Given in the pressure space (continuous,
@@ -102,8 +102,8 @@ int sl_flow_check_geometry(const sl_th_space *th, const sl_flow_opts *o, sl_diag
  * sees the outward normals in batch->normal (an open outlet: t = 0, i.e.
  * nothing to assemble; a prescribed pressure p0: t = -p0 n). Faces are
  * integrated with 3 Gauss points (exact for quadratic t on straight edges). */
-int sl_assemble_flow_traction(sl_system *s, const sl_th_space *th, const char *boundary, sl_qp_fn traction,
-                              void *user, int axisymmetric, sl_diag *d);
+int sl_assemble_flow_traction(sl_system *s, const sl_th_space *th, const char *boundary, sl_qp_fn traction, void *user,
+                              int axisymmetric, sl_diag *d);
 
 /* Per-cell averages over the quadrature points of the shear rate and the
  * viscosity, and the fraction of points where the stress mu gamma exceeds

@@ -11,8 +11,8 @@
 
 #define FACE_POINTS 3
 
-int sl_assemble_flow_traction(sl_system *s, const sl_th_space *th, const char *boundary, sl_qp_fn traction,
-                              void *user, int axisymmetric, sl_diag *d) {
+int sl_assemble_flow_traction(sl_system *s, const sl_th_space *th, const char *boundary, sl_qp_fn traction, void *user,
+                              int axisymmetric, sl_diag *d) {
   const sl_mesh *m = th->mesh;
   int b_id, rc = sl_mesh_boundary_id(m, boundary, &b_id, d);
   if (rc) return rc;

@@ -8,13 +8,13 @@
 
 struct sl_hydrostatic {
   int n_cells, n_layers;
-  double up[2], g;  /* unit vector along -g, |g| */
-  double *level;    /* [n_layers + 1] heights of the level lines, increasing */
-  int *layer;       /* [n_cells] */
-  double *w, *h;    /* [n_cells] weights, heights of the cell points */
-  double *fit;      /* [3 n_layers] a, b, hbar of the last split */
-  double *pbase;    /* [n_layers + 1] P at the levels */
-  double *work;     /* [2 n_layers] */
+  double up[2], g; /* unit vector along -g, |g| */
+  double *level;   /* [n_layers + 1] heights of the level lines, increasing */
+  int *layer;      /* [n_cells] */
+  double *w, *h;   /* [n_cells] weights, heights of the cell points */
+  double *fit;     /* [3 n_layers] a, b, hbar of the last split */
+  double *pbase;   /* [n_layers + 1] P at the levels */
+  double *work;    /* [2 n_layers] */
 };
 
 void sl_hydrostatic_destroy(sl_hydrostatic *h) {

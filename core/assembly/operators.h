@@ -24,9 +24,9 @@
 /* What a coefficient sees: n quadrature points of several cells. */
 typedef struct sl_qp_batch {
   int n;
-  const double (*x)[2];     /* [n] physical coordinates (r, z when axisymmetric) */
-  const int32_t *cell;      /* [n] the cell of each point */
-  const double *shear_rate; /* [n] sqrt(2 D(u):D(u)) of the velocity the
+  const double (*x)[2];      /* [n] physical coordinates (r, z when axisymmetric) */
+  const int32_t *cell;       /* [n] the cell of each point */
+  const double *shear_rate;  /* [n] sqrt(2 D(u):D(u)) of the velocity the
                                caller passed (Stokes), else NULL */
   const double (*normal)[2]; /* [n] outward unit normal on boundary batches, else NULL */
 } sl_qp_batch;
@@ -63,12 +63,12 @@ int sl_assemble_diffusion(sl_system *s, const sl_dofmap *dm, const sl_diffusion_
 /* ---- Stokes: -div(2 mu D(u)) + grad p = f, div u = 0 --------------------- */
 
 typedef struct sl_stokes_opts {
-  sl_coef viscosity;         /* mu > 0 (Pa s) */
-  sl_qp_fn body_force;       /* f, out[n_comp * i + c]; NULL: none */
+  sl_coef viscosity;   /* mu > 0 (Pa s) */
+  sl_qp_fn body_force; /* f, out[n_comp * i + c]; NULL: none */
   void *body_force_user;
-  const double *velocity;    /* optional: the velocity (combined numbering)
+  const double *velocity; /* optional: the velocity (combined numbering)
                                 whose shear rate the viscosity sees */
-  int quad_degree;           /* 0: 4 */
+  int quad_degree;        /* 0: 4 */
 } sl_stokes_opts;
 
 /* The symmetric saddle-point system

@@ -74,7 +74,8 @@ int sl_slip_create(sl_slip *s, const sl_th_space *th, const int *slip_ids, int n
           face_basis(sq, phi);
           double w = 0.5 * g.w[q] * ds, wr = axisymmetric ? w * x[0] : w;
           for (int j = 0; j < 3; ++j)
-            for (int a = 0; a < 2; ++a) acc[4 * node[j] + a] += wr * phi[j] * n[a], acc[4 * node[j] + 2 + a] += w * phi[j] * n[a];
+            for (int a = 0; a < 2; ++a)
+              acc[4 * node[j] + a] += wr * phi[j] * n[a], acc[4 * node[j] + 2 + a] += w * phi[j] * n[a];
         }
       }
   }

@@ -49,13 +49,13 @@
 #define SL_SLIP_CORNER_DEGREES 45.0
 
 typedef struct sl_slip {
-  int32_t n;       /* rotated nodes */
-  int32_t *row_n;  /* [n]: the dof whose row becomes n . du = 0 (the component along which n is largest) */
-  int32_t *row_t;  /* [n]: the dof whose row becomes the tangential momentum */
-  int32_t *dof_x;  /* [n]: the node's component-0 and component-1 dofs */
+  int32_t n;      /* rotated nodes */
+  int32_t *row_n; /* [n]: the dof whose row becomes n . du = 0 (the component along which n is largest) */
+  int32_t *row_t; /* [n]: the dof whose row becomes the tangential momentum */
+  int32_t *dof_x; /* [n]: the node's component-0 and component-1 dofs */
   int32_t *dof_y;
-  double *normal;  /* [2 n]: unit normals */
-  double *tangent; /* [2 n]: unit tangents, signed so that the row_t component is positive */
+  double *normal;    /* [2 n]: unit normals */
+  double *tangent;   /* [2 n]: unit tangents, signed so that the row_t component is positive */
   int32_t n_corners; /* nodes whose in-plane velocity was fixed to 0 (corners) */
 } sl_slip;
 

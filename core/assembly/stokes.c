@@ -26,8 +26,7 @@ static void work_free(stokes_work *w) {
   free(w);
 }
 
-static int work_create(stokes_work **out, const sl_th_space *th, const sl_stokes_opts *o, int with_shear,
-                       sl_diag *d) {
+static int work_create(stokes_work **out, const sl_th_space *th, const sl_stokes_opts *o, int with_shear, sl_diag *d) {
   stokes_work *w = calloc(1, sizeof *w);
   if (!w) return sl_diag_set(d, SL_ENOMEM, "stokes: out of memory");
   const sl_element *spaces[2] = {th->vel->element, th->pres->element};

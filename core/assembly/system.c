@@ -159,7 +159,8 @@ int sl_system_init_ranks(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_
   }
   rc = sl_csr_build(&s->A, n_dofs, n_dofs, m, ptr, row_dofs, ptr, col_dofs, d);
   free(row_dofs), free(col_dofs);
-  if (!rc) rc = sl_csr_elem_map_build(&s->map, &s->A, n_own, ptr, elem_dofs + (size_t)s->elem_begin * dpe, NULL, NULL, d);
+  if (!rc)
+    rc = sl_csr_elem_map_build(&s->map, &s->A, n_own, ptr, elem_dofs + (size_t)s->elem_begin * dpe, NULL, NULL, d);
   free(ptr);
   if (rc) {
     sl_system_free(s);

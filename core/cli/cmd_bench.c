@@ -11,17 +11,17 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/cli/cli.h"
+#include "core/cli/progress.h"
+#include "core/io/output.h"
+#include "core/models/run.h"
+#include "core/plugin/closure_ini.h"
 #include "core/study/exact.h"
 #include "core/study/measure.h"
 #include "core/study/report.h"
 #include "core/study/runner.h"
 #include "core/study/study.h"
-#include "core/cli/cli.h"
-#include "core/io/output.h"
 #include "core/util/version.h"
-#include "core/cli/progress.h"
-#include "core/models/run.h"
-#include "core/plugin/closure_ini.h"
 
 static const char bench_usage[] =
     "usage: sluice bench STUDY.ini [-o DIR] [--keep] [--check] [--allow-plugin-path]\n"
@@ -56,11 +56,17 @@ static void on_sigint(int sig) {
 
 /* The run's summary line in its log, as `sluice run` prints it. */
 static void log_summary(FILE *log, const sl_run_result *res, double wall, double cpu) {
-  sl_run_summary s = {.steps = res->steps, .rejected_steps = res->rejected_steps,
+  sl_run_summary s = {.steps = res->steps,
+                      .rejected_steps = res->rejected_steps,
                       .nonlinear_iterations = res->nonlinear_iterations,
-                      .nonlinear_name = res->model.used_picard ? "Newton/Picard" : "Newton", .wall_seconds = wall,
-                      .cpu_seconds = cpu, .assembly = res->model.assembly, .factorisation = res->factorisation,
-                      .solve = res->solve, .output = res->output, .step_limit = res->step_limit};
+                      .nonlinear_name = res->model.used_picard ? "Newton/Picard" : "Newton",
+                      .wall_seconds = wall,
+                      .cpu_seconds = cpu,
+                      .assembly = res->model.assembly,
+                      .factorisation = res->factorisation,
+                      .solve = res->solve,
+                      .output = res->output,
+                      .step_limit = res->step_limit};
   char line[512];
   sl_run_summary_format(&s, line, sizeof line);
   fprintf(log, "%s\n", line);
@@ -72,8 +78,8 @@ typedef struct bench {
   sl_registry *reg;
   char **dirs;
   int n_dirs;
-  sl_ini **inis;             /* per run, variant by variant */
-  sl_bench_exact **exact;    /* per run, or NULL */
+  sl_ini **inis;          /* per run, variant by variant */
+  sl_bench_exact **exact; /* per run, or NULL */
   sl_bench_table table;
   int allow_plugin_path; /* --allow-plugin-path: the scene's [plugins] path may name folders */
 } bench;
@@ -203,8 +209,11 @@ static int run_one(const char *path, const char *v_text, const char *p_text, con
     code = rc == SL_EBADINPUT ? 2 : 1;
   } else {
     void (*old)(int) = signal(SIGINT, on_sigint);
-    sl_bench_run_opts o = {.scene_path = s->scene, .output = out, .sluice_version = sl_version(),
-                           .interrupt = &interrupted, .summary = log_summary};
+    sl_bench_run_opts o = {.scene_path = s->scene,
+                           .output = out,
+                           .sluice_version = sl_version(),
+                           .interrupt = &interrupted,
+                           .summary = log_summary};
     code = sl_bench_run_here(ini, reg, &o, SL_BENCH_RESULT_FD);
     signal(SIGINT, old);
   }
@@ -287,8 +296,15 @@ int sl_cmd_bench(int argc, char **argv) {
       /* the child execs this command for the one run: its memory and clocks are its own */
       char v_text[16], p_text[16];
       snprintf(v_text, sizeof v_text, "%d", v), snprintf(p_text, sizeof p_text, "%d", p);
-      char *child_argv[] = {"/proc/self/exe", "bench", (char *)path, "--run-one", v_text, p_text, file,
-                            allow_plugin_path ? "--allow-plugin-path" : NULL, NULL};
+      char *child_argv[] = {"/proc/self/exe",
+                            "bench",
+                            (char *)path,
+                            "--run-one",
+                            v_text,
+                            p_text,
+                            file,
+                            allow_plugin_path ? "--allow-plugin-path" : NULL,
+                            NULL};
       sl_bench_run_opts o = {.argv = child_argv, .log = log, .timeout = s->timeout, .interrupt = &interrupted};
       if (sl_bench_run(&o, &row->run)) {
         fprintf(stderr, "cannot start: %s\n", row->run.message);

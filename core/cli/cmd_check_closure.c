@@ -76,16 +76,17 @@ static void on_line(void *user, const char *line) {
 
 int sl_cmd_check_closure(int argc, char **argv) {
   if (sl_cli_wants_help(argc, argv)) {
-    puts("usage: sluice check-closure LIB.so [--quiet] [--time-limit SECONDS]\n"
-         "Loads a closure library and runs the conformance battery on every closure in\n"
-         "it: ABI and schema checks, create/destroy, bounds enforced by the host, every\n"
-         "output written, batch invariance, derivatives against central differences,\n"
-         "inputs outside the declared validity refused with the point named, reference\n"
-         "values from the literature, concurrent evaluation.\n"
-         "The battery runs in a child process: a closure that crashes (the signal is\n"
-         "named), calls exit() or runs one check longer than the time limit (default\n"
-         "30 s) fails with its name and the check it was in.\n"
-         "Exit status: 0 all passed, 1 a check failed, 2 the library cannot be loaded.");
+    puts(
+        "usage: sluice check-closure LIB.so [--quiet] [--time-limit SECONDS]\n"
+        "Loads a closure library and runs the conformance battery on every closure in\n"
+        "it: ABI and schema checks, create/destroy, bounds enforced by the host, every\n"
+        "output written, batch invariance, derivatives against central differences,\n"
+        "inputs outside the declared validity refused with the point named, reference\n"
+        "values from the literature, concurrent evaluation.\n"
+        "The battery runs in a child process: a closure that crashes (the signal is\n"
+        "named), calls exit() or runs one check longer than the time limit (default\n"
+        "30 s) fails with its name and the check it was in.\n"
+        "Exit status: 0 all passed, 1 a check failed, 2 the library cannot be loaded.");
     return 0;
   }
   const char *path = NULL;

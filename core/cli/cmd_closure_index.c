@@ -11,7 +11,8 @@
 
 const char sl_closure_index_usage[] =
     "usage: sluice closure index DIR\n"
-    "Writes DIR/" SL_PLUGIN_INDEX_FILE ": which library in DIR holds which closure (kind,\n"
+    "Writes DIR/" SL_PLUGIN_INDEX_FILE
+    ": which library in DIR holds which closure (kind,\n"
     "name), read from the libraries in a child process. With the index, a look-up\n"
     "opens the one library that holds the closure named and no other; without it\n"
     "sluice reads what the folder's libraries hold (in a child process) at the\n"

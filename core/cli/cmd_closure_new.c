@@ -75,7 +75,8 @@ static const ttemplate templates[] = {
      {"settling_velocity"},
      {{"terminal_velocity", 1e-3, 0.0, 100.0, "m s^-1", "settling velocity u_t of one particle"},
       {"n", 4.65, 1.0, 20.0, "1", "Richardson-Zaki exponent (4.65 in the Stokes regime)"},
-      {"phi_max", 0.64, 0.3, 1.0, "1", "packing fraction: settling stops there (the mixture compares [solid] phi_max)"}},
+      {"phi_max", 0.64, 0.3, 1.0, "1",
+       "packing fraction: settling stops there (the mixture compares [solid] phi_max)"}},
      "  double *u = a->out[OUT_SETTLING_VELOCITY], *du_dphi = sl_dout(a, N_IN, OUT_SETTLING_VELOCITY, IN_PHI);\n",
      "    const double phi = a->in[IN_PHI][q];\n"
      "    if (phi >= p->phi_max) { /* a packed bed does not settle: the flux vanishes at phi_max */\n"
@@ -85,7 +86,8 @@ static const ttemplate templates[] = {
      "    }\n"
      "    const double f = pow(1.0 - phi, p->n), c = 1.0 - phi / p->phi_max;\n"
      "    u[q] = p->terminal_velocity * f * c;\n"
-     "    if (du_dphi) du_dphi[q] = p->terminal_velocity * (-p->n * pow(1.0 - phi, p->n - 1.0) * c - f / p->phi_max);\n",
+     "    if (du_dphi) du_dphi[q] = p->terminal_velocity * (-p->n * pow(1.0 - phi, p->n - 1.0) * c - f / "
+     "p->phi_max);\n",
      "settling_velocity = terminal_velocity (1 - phi)^n (1 - phi/phi_max), 0 for phi >= phi_max",
      "Richardson & Zaki (1954), eq. 17, with a multiplicative packing cut-off",
      "uniform spheres, 0 <= phi <= phi_max",
@@ -217,7 +219,8 @@ static const ttemplate templates[] = {
      "    const double nbar = a->in[IN_NBAR][q], amp = a->in[IN_STRAIN_AMPLITUDE][q];\n"
      "    const double d = p->compaction * amp; /* 0 between reversals: nbar unchanged */\n"
      "    const double n1 = 1.0 - (1.0 - nbar) / (1.0 - d); /* the solids keep their volume */\n"
-     "    if (!(n1 > 0.0)) return sl_fail(a->err, SL_RECOVERABLE, q, \"a half-cycle of amplitude %g compacts nbar = %g to %g\", amp, nbar, n1);\n"
+     "    if (!(n1 > 0.0)) return sl_fail(a->err, SL_RECOVERABLE, q, \"a half-cycle of amplitude %g compacts nbar = %g "
+     "to %g\", amp, nbar, n1);\n"
      "    nbar_new[q] = n1;\n",
      "d = compaction strain_amplitude,  1 - nbar_new = (1 - nbar) / (1 - d)",
      "a placeholder, not a published law (the shipped byrne closure is Byrne 1991): replace it",
@@ -288,26 +291,34 @@ static void write_source(FILE *f, const ttemplate *t, const char *name) {
   while (n_par < T_MAX_PARAMS && t->params[n_par].name) ++n_par;
   fprintf(f, "/* %s: a %s closure for sluice.\n *\n", name, kind);
   char buf[1024];
-  snprintf(buf, sizeof buf, "A %s closure gives the %s (`sluice closure kinds %s` prints the contract; "
-                            "docs/closure-kinds.md).", kind, info->summary, kind);
+  snprintf(buf, sizeof buf,
+           "A %s closure gives the %s (`sluice closure kinds %s` prints the contract; "
+           "docs/closure-kinds.md).",
+           kind, info->summary, kind);
   write_comment_wrapped(f, buf);
   fprintf(f, " *\n");
-  snprintf(buf, sizeof buf, "Written by `sluice closure new %s %s`. The law between the PLACEHOLDER LAW lines of "
-                            "evaluate() is a stand-in (%s; %s): replace it, and with it the formula, reference and "
-                            "validity of the descriptor, the parameters, the inputs' validity ranges and the check "
-                            "point. Then build and run the conformance battery:", kind, name, t->formula, t->reference);
+  snprintf(buf, sizeof buf,
+           "Written by `sluice closure new %s %s`. The law between the PLACEHOLDER LAW lines of "
+           "evaluate() is a stand-in (%s; %s): replace it, and with it the formula, reference and "
+           "validity of the descriptor, the parameters, the inputs' validity ranges and the check "
+           "point. Then build and run the conformance battery:",
+           kind, name, t->formula, t->reference);
   for (char *c = buf; *c; ++c)
     if (*c == '\n') *c = ' ';
   write_comment_wrapped(f, buf);
-  fprintf(f, " *   cmake -S . -B build -DCMAKE_PREFIX_PATH=<sluice install prefix>\n"
-             " *   cmake --build build && ctest --test-dir build   (runs sluice check-closure build/%s.so)\n"
-             " * and use it in a scene with SLUICE_PLUGIN_PATH=$PWD/build:\n"
-             " *   [closure.%s]\n *   model = %s\n */\n", name, kind, name);
+  fprintf(f,
+          " *   cmake -S . -B build -DCMAKE_PREFIX_PATH=<sluice install prefix>\n"
+          " *   cmake --build build && ctest --test-dir build   (runs sluice check-closure build/%s.so)\n"
+          " * and use it in a scene with SLUICE_PLUGIN_PATH=$PWD/build:\n"
+          " *   [closure.%s]\n *   model = %s\n */\n",
+          name, kind, name);
   fprintf(f, "#include <math.h>\n#include <sluice/closure.h>\n\n");
   /* parameters */
-  fprintf(f, "/* The parameters: the host validates them against the schema below before\n"
-             " * evaluate() sees them (the battery checks that values outside [min, max] are\n"
-             " * refused). */\ntypedef struct %s_params {\n", name);
+  fprintf(f,
+          "/* The parameters: the host validates them against the schema below before\n"
+          " * evaluate() sees them (the battery checks that values outside [min, max] are\n"
+          " * refused). */\ntypedef struct %s_params {\n",
+          name);
   for (int i = 0; i < n_par; ++i) fprintf(f, "  double %s; /* %s */\n", t->params[i].name, t->params[i].units);
   fprintf(f, "} %s_params;\n\nstatic const sl_param_desc params[] = {\n", name);
   for (int i = 0; i < n_par; ++i) {
@@ -333,10 +344,11 @@ static void write_source(FILE *f, const ttemplate *t, const char *name) {
     fprintf(f, " %s,", e);
   }
   fprintf(f, " N_OUT };\n\n");
-  fprintf(f, "/* Inputs: name, units, flags (SL_FIELD_DIFF: evaluate() returns the outputs'\n"
-             " * derivatives in it), a typical value, the closed validity range [min, max]\n"
-             " * and a meaning. The host supplies the inputs by name (`sluice closure kinds`\n"
-             " * lists them); narrow each range to where the law holds. */\n");
+  fprintf(f,
+          "/* Inputs: name, units, flags (SL_FIELD_DIFF: evaluate() returns the outputs'\n"
+          " * derivatives in it), a typical value, the closed validity range [min, max]\n"
+          " * and a meaning. The host supplies the inputs by name (`sluice closure kinds`\n"
+          " * lists them); narrow each range to where the law holds. */\n");
   fprintf(f, "static const sl_field_desc inputs[N_IN] = {\n");
   for (int i = 0; i < n_in; ++i) {
     const sl_input_info *in = sl_input_find(t->in[i]);
@@ -356,8 +368,9 @@ static void write_source(FILE *f, const ttemplate *t, const char *name) {
   fprintf(f, "};\n\n");
   /* check point */
   enum_name("OUT_", t->out[0], e, sizeof e);
-  fprintf(f, "/* A value of the law at one state, parameters at their defaults: the battery\n"
-             " * compares it. Give a published value (a table, a figure) for the real law. */\n");
+  fprintf(f,
+          "/* A value of the law at one state, parameters at their defaults: the battery\n"
+          " * compares it. Give a published value (a table, a figure) for the real law. */\n");
   fprintf(f, "static const double check_in[N_IN] = {");
   for (int i = 0; i < n_in; ++i) {
     fputs(i ? ", " : "", f);
@@ -367,8 +380,10 @@ static void write_source(FILE *f, const ttemplate *t, const char *name) {
   real(f, t->expected);
   fprintf(f, ", 1e-12, \"%s\"}};\n\n", t->source);
   /* evaluate */
-  fprintf(f, "static int evaluate(const void *state, const sl_eval_args *a) {\n"
-             "  const %s_params *p = state;\n%s", name, t->setup);
+  fprintf(f,
+          "static int evaluate(const void *state, const sl_eval_args *a) {\n"
+          "  const %s_params *p = state;\n%s",
+          name, t->setup);
   fprintf(f, "  for (int32_t q = 0; q < a->Q; ++q) {\n");
   snprintf(buf, sizeof buf, "Range checks. A %s closure refuses %s.", kind, info->range_checks);
   fprintf(f, "    /*\n");
@@ -387,21 +402,23 @@ static void write_source(FILE *f, const ttemplate *t, const char *name) {
       while (*s == ' ') ++s;
     }
   }
-  fprintf(f, "     * Here: every input outside its declared range, or NaN, returns\n"
-             "     * SL_RECOVERABLE with the point (the host may cut the step); narrow the\n"
-             "     * ranges above rather than removing this loop. */\n"
-             "    for (int32_t i = 0; i < N_IN; ++i) {\n"
-             "      const double v = a->in[i][q];\n"
-             "      if (!(v >= inputs[i].valid_min && v <= inputs[i].valid_max))\n"
-             "        return sl_fail(a->err, SL_RECOVERABLE, q, \"%%s = %%g outside [%%g, %%g]\", inputs[i].name, v,\n"
-             "                       inputs[i].valid_min, inputs[i].valid_max);\n"
-             "    }\n");
+  fprintf(f,
+          "     * Here: every input outside its declared range, or NaN, returns\n"
+          "     * SL_RECOVERABLE with the point (the host may cut the step); narrow the\n"
+          "     * ranges above rather than removing this loop. */\n"
+          "    for (int32_t i = 0; i < N_IN; ++i) {\n"
+          "      const double v = a->in[i][q];\n"
+          "      if (!(v >= inputs[i].valid_min && v <= inputs[i].valid_max))\n"
+          "        return sl_fail(a->err, SL_RECOVERABLE, q, \"%%s = %%g outside [%%g, %%g]\", inputs[i].name, v,\n"
+          "                       inputs[i].valid_min, inputs[i].valid_max);\n"
+          "    }\n");
   fprintf(f, "    /* ==== PLACEHOLDER LAW: replace from here ... ==== */\n%s", t->law);
   fprintf(f, "    /* ==== ... to here (end of the placeholder law) ==== */\n  }\n  return SL_OK;\n}\n\n");
   /* descriptor */
-  fprintf(f, "static const sl_closure_desc closure = {\n"
-             "    SL_CLOSURE_DESC_HEADER,\n"
-             "    .kind = SL_KIND_");
+  fprintf(f,
+          "static const sl_closure_desc closure = {\n"
+          "    SL_CLOSURE_DESC_HEADER,\n"
+          "    .kind = SL_KIND_");
   enum_name("", kind, e, sizeof e);
   fprintf(f, "%s,\n    .name = \"%s\",\n    .version = \"0.1.0\",\n    .summary = ", e, name);
   snprintf(buf, sizeof buf, "%s closure %s (template: placeholder law)", kind, name);
@@ -412,38 +429,40 @@ static void write_source(FILE *f, const ttemplate *t, const char *name) {
   c_string(f, t->reference);
   fprintf(f, ",\n    .validity = ");
   c_string(f, t->validity);
-  fprintf(f, ",\n"
-             "    .n_params = SL_COUNT_OF(params),\n"
-             "    .params = params,\n"
-             "    .params_size = sizeof(%s_params),\n"
-             "    .n_in = N_IN,\n"
-             "    .in = inputs,\n"
-             "    .n_out = N_OUT,\n"
-             "    .out = outputs,\n"
-             "    .n_checks = SL_COUNT_OF(checks),\n"
-             "    .checks = checks,\n"
-             "    .evaluate = evaluate,\n"
-             "};\n\n"
-             "static const sl_closure_desc *const all[] = {&closure};\n\n"
-             "SL_EXPORT const sl_closure_desc *const *sl_closure_entry_v1(int32_t *count) {\n"
-             "  *count = SL_COUNT_OF(all);\n"
-             "  return all;\n"
-             "}\n",
+  fprintf(f,
+          ",\n"
+          "    .n_params = SL_COUNT_OF(params),\n"
+          "    .params = params,\n"
+          "    .params_size = sizeof(%s_params),\n"
+          "    .n_in = N_IN,\n"
+          "    .in = inputs,\n"
+          "    .n_out = N_OUT,\n"
+          "    .out = outputs,\n"
+          "    .n_checks = SL_COUNT_OF(checks),\n"
+          "    .checks = checks,\n"
+          "    .evaluate = evaluate,\n"
+          "};\n\n"
+          "static const sl_closure_desc *const all[] = {&closure};\n\n"
+          "SL_EXPORT const sl_closure_desc *const *sl_closure_entry_v1(int32_t *count) {\n"
+          "  *count = SL_COUNT_OF(all);\n"
+          "  return all;\n"
+          "}\n",
           name);
 }
 
 static void write_cmake(FILE *f, const char *name) {
-  fprintf(f, "# Builds %s.so, a sluice closure, against an installed sluice, and registers\n"
-             "# the conformance battery (sluice check-closure) on it as a test:\n"
-             "#   cmake -S . -B build -DCMAKE_PREFIX_PATH=<sluice install prefix>\n"
-             "#   cmake --build build && ctest --test-dir build\n"
-             "# Use it with SLUICE_PLUGIN_PATH=$PWD/build.\n"
-             "cmake_minimum_required(VERSION 3.25)\n"
-             "project(%s LANGUAGES C)\n"
-             "find_package(sluice 0.1 REQUIRED)\n"
-             "sluice_add_closure(%s %s.c)\n"
-             "enable_testing()\n"
-             "sluice_add_closure_test(%s)\n",
+  fprintf(f,
+          "# Builds %s.so, a sluice closure, against an installed sluice, and registers\n"
+          "# the conformance battery (sluice check-closure) on it as a test:\n"
+          "#   cmake -S . -B build -DCMAKE_PREFIX_PATH=<sluice install prefix>\n"
+          "#   cmake --build build && ctest --test-dir build\n"
+          "# Use it with SLUICE_PLUGIN_PATH=$PWD/build.\n"
+          "cmake_minimum_required(VERSION 3.25)\n"
+          "project(%s LANGUAGES C)\n"
+          "find_package(sluice 0.1 REQUIRED)\n"
+          "sluice_add_closure(%s %s.c)\n"
+          "enable_testing()\n"
+          "sluice_add_closure_test(%s)\n",
           name, name, name, name, name);
 }
 
@@ -468,20 +487,26 @@ int sl_cmd_closure_new(int argc, char **argv) {
   const char *kind_name = NULL, *name = NULL, *dir = NULL;
   for (int i = 0; i < argc; ++i) {
     if (strcmp(argv[i], "-o") == 0 && i + 1 < argc) dir = argv[++i];
-    else if (argv[i][0] == '-') return sl_cli_error(SL_EBADINPUT, "closure new: unknown option or missing value '%s'", argv[i]);
+    else if (argv[i][0] == '-')
+      return sl_cli_error(SL_EBADINPUT, "closure new: unknown option or missing value '%s'", argv[i]);
     else if (!kind_name) kind_name = argv[i];
     else if (!name) name = argv[i];
-    else return sl_cli_error(SL_EBADINPUT, "closure new: unexpected argument '%s' (sluice closure new KIND NAME [-o DIR])", argv[i]);
+    else
+      return sl_cli_error(SL_EBADINPUT, "closure new: unexpected argument '%s' (sluice closure new KIND NAME [-o DIR])",
+                          argv[i]);
   }
   if (!kind_name || !name)
-    return sl_cli_error(SL_EBADINPUT, "closure new: give a kind and a name (sluice closure new KIND NAME [-o DIR]; "
-                                      "`sluice closure kinds` lists the kinds)");
+    return sl_cli_error(SL_EBADINPUT,
+                        "closure new: give a kind and a name (sluice closure new KIND NAME [-o DIR]; "
+                        "`sluice closure kinds` lists the kinds)");
   sl_kind kind;
   sl_diag d;
   if (sl_kind_from_name(kind_name, &kind, &d)) return sl_cli_error(SL_EBADINPUT, "closure new: %s", d.msg);
   if (!valid_name(name))
-    return sl_cli_error(SL_EBADINPUT, "closure new: name '%s': lower_snake_case expected (a-z first, then a-z, 0-9, _; "
-                                      "at most 48 characters)", name);
+    return sl_cli_error(SL_EBADINPUT,
+                        "closure new: name '%s': lower_snake_case expected (a-z first, then a-z, 0-9, _; "
+                        "at most 48 characters)",
+                        name);
   const ttemplate *t = template_of(kind);
   if (!t) return sl_cli_error(SL_EFAILED, "closure new: no template for kind %s", kind_name);
   if (!dir) dir = name;
@@ -503,10 +528,11 @@ int sl_cmd_closure_new(int argc, char **argv) {
   write_cmake(f, name);
   bad = ferror(f);
   if (fclose(f) != 0 || bad) return sl_cli_error(SL_EFAILED, "closure new: writing %s failed", cm);
-  printf("wrote %s and %s: a %s closure '%s' with a placeholder law (%s)\n"
-         "next: replace the law between the PLACEHOLDER LAW lines of %s, then\n"
-         "  cmake -S %s -B %s/build -DCMAKE_PREFIX_PATH=<sluice install prefix>\n"
-         "  cmake --build %s/build && ctest --test-dir %s/build\n",
-         src, cm, kind_name, name, t->reference, src, dir, dir, dir, dir);
+  printf(
+      "wrote %s and %s: a %s closure '%s' with a placeholder law (%s)\n"
+      "next: replace the law between the PLACEHOLDER LAW lines of %s, then\n"
+      "  cmake -S %s -B %s/build -DCMAKE_PREFIX_PATH=<sluice install prefix>\n"
+      "  cmake --build %s/build && ctest --test-dir %s/build\n",
+      src, cm, kind_name, name, t->reference, src, dir, dir, dir, dir);
   return 0;
 }

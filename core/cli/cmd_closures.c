@@ -8,13 +8,15 @@
 
 int sl_cmd_closures(int argc, char **argv) {
   if (sl_cli_wants_help(argc, argv)) {
-    puts("usage: sluice closures\n"
-         "Lists every closure found on the plugin search path: kind, name, version,\n"
-         "library and a one-line summary. Libraries that cannot be used are named on\n"
-         "stderr with the reason.");
+    puts(
+        "usage: sluice closures\n"
+        "Lists every closure found on the plugin search path: kind, name, version,\n"
+        "library and a one-line summary. Libraries that cannot be used are named on\n"
+        "stderr with the reason.");
     return 0;
   }
-  if (argc > 0) return sl_cli_error(2, "closures takes no arguments (did you mean `sluice closure describe %s`?)", argv[0]);
+  if (argc > 0)
+    return sl_cli_error(2, "closures takes no arguments (did you mean `sluice closure describe %s`?)", argv[0]);
   sl_registry *r;
   int rc = sl_cli_registry(&r, 1);
   if (rc) return rc;

@@ -10,10 +10,10 @@
 
 #include "core/cli/cli.h"
 #include "core/cli/progress.h"
+#include "core/cli/summary_json.h"
 #include "core/plugin/guard.h"
 #include "core/plugin/isolate.h"
 #include "core/solve/linsolve.h"
-#include "core/cli/summary_json.h"
 #include "sluice/sluice.h"
 
 static const char run_usage[] =
@@ -94,11 +94,10 @@ static void nonlinear(void *user, const sluice_nonlinear *r) {
     sl_progress_end(v->prog); /* a line in place would be overwritten */
     char at[96] = "";
     if (!v->steady) snprintf(at, sizeof at, "t = %.9g, ", r->t);
-    if (r->n_stages > 0)
-      snprintf(at + strlen(at), sizeof at - strlen(at), "stage %ld of %ld, ", r->stage, r->n_stages);
+    if (r->n_stages > 0) snprintf(at + strlen(at), sizeof at - strlen(at), "stage %ld of %ld, ", r->stage, r->n_stages);
     fprintf(stderr,
-            "sluice: monitor: %s%s %d: relative correction %.3e, residual %.3e (%.3g of its terms' scale %.3e)\n",
-            at, r->picard ? "picard" : "newton", r->iteration, r->correction, r->residual,
+            "sluice: monitor: %s%s %d: relative correction %.3e, residual %.3e (%.3g of its terms' scale %.3e)\n", at,
+            r->picard ? "picard" : "newton", r->iteration, r->correction, r->residual,
             r->terms > 0 ? r->residual / r->terms : 0.0, r->terms);
   } else if (v->steady) {
     sl_progress_iteration(v->prog, r->stage, r->n_stages, r->iteration, r->picard, r->correction, r->residual,
@@ -117,8 +116,9 @@ static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, do
             m->residual_assemblies, m->assembly);
   const sluice_linear *ls = &m->linear;
   if (ls->n_symbolic + ls->n_numeric + ls->n_solves > 0)
-    fprintf(f, "%s factorisations: %ld symbolic (%.3g s), %ld numeric (%.3g s; %ld of them refactorisations), %ld "
-               "skipped (matrix unchanged); %ld solves (%.3g s)\n",
+    fprintf(f,
+            "%s factorisations: %ld symbolic (%.3g s), %ld numeric (%.3g s; %ld of them refactorisations), %ld "
+            "skipped (matrix unchanged); %ld solves (%.3g s)\n",
             p, ls->n_symbolic, ls->t_symbolic, ls->n_numeric, ls->t_numeric, ls->n_refactor, ls->n_numeric_skipped,
             ls->n_solves, ls->t_solve);
   if (ls->n_numeric > 0) {
@@ -133,8 +133,8 @@ static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, do
             "%s factorisation reuse: %ld of %ld solves by FGMRES with an older factorisation, %.1f iterations a solve "
             "(at most %d), %ld attempts refactorised; %.3g s in FGMRES\n",
             p, ls->n_reused, ls->n_solves,
-            (double)ls->n_krylov_iterations / (double)(ls->n_reused + ls->n_krylov_failed),
-            ls->krylov_max, ls->n_krylov_failed, ls->t_krylov);
+            (double)ls->n_krylov_iterations / (double)(ls->n_reused + ls->n_krylov_failed), ls->krylov_max,
+            ls->n_krylov_failed, ls->t_krylov);
   if (m->solves_skipped > 0)
     fprintf(f, "%s %ld flow solve%s skipped (the flow known: at rest, or at a fixed point)\n", p, m->solves_skipped,
             m->solves_skipped == 1 ? "" : "s");
@@ -161,8 +161,8 @@ static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, do
             percent(m->cpu_setup, cpu_total), m->cpu_flow, percent(m->cpu_flow, cpu_total));
     if (m->cpu_coupled > 0)
       fprintf(f, ", solids transport %.3g s (%.0f %%)", m->cpu_coupled, percent(m->cpu_coupled, cpu_total));
-    fprintf(f, ", output %.3g s (%.0f %%), other %.3g s (%.0f %%)\n", m->cpu_output,
-            percent(m->cpu_output, cpu_total), other, percent(other, cpu_total));
+    fprintf(f, ", output %.3g s (%.0f %%), other %.3g s (%.0f %%)\n", m->cpu_output, percent(m->cpu_output, cpu_total),
+            other, percent(other, cpu_total));
   }
 }
 
@@ -178,9 +178,14 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
   sl_progress prog;
   sl_progress_begin(&prog, stderr, t0, t1);
   run_view view = {.prog = &prog, .steady = !(t1 > t0), .monitor = show_iterations};
-  sluice_run_opts o = {.scene_path = scene, .output = out_file, .restart = restart,
-                       .progress = monitor, .progress_user = &view, .interrupt = &interrupted,
-                       .nonlinear = view.monitor || view.steady ? nonlinear : NULL, .nonlinear_user = &view,
+  sluice_run_opts o = {.scene_path = scene,
+                       .output = out_file,
+                       .restart = restart,
+                       .progress = monitor,
+                       .progress_user = &view,
+                       .interrupt = &interrupted,
+                       .nonlinear = view.monitor || view.steady ? nonlinear : NULL,
+                       .nonlinear_user = &view,
                        .overwrite = overwrite};
   sluice_summary m;
   double w0 = sl_wall_seconds(), c0 = sl_cpu_seconds();
@@ -195,12 +200,17 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
   sigaction(SIGINT, &old_int, NULL);
   sigaction(SIGTERM, &old_term, NULL);
   sl_progress_end(&prog);
-  sl_run_summary s = {.steps = m.steps, .rejected_steps = m.rejected_steps,
+  sl_run_summary s = {.steps = m.steps,
+                      .rejected_steps = m.rejected_steps,
                       .nonlinear_iterations = m.nonlinear_iterations,
                       .nonlinear_name = m.used_picard ? "Newton/Picard" : "Newton",
-                      .wall_seconds = sl_wall_seconds() - w0, .cpu_seconds = sl_cpu_seconds() - c0,
-                      .assembly = m.assembly, .factorisation = m.factorisation, .solve = m.solve,
-                      .output = m.output, .step_limit = m.step_limit};
+                      .wall_seconds = sl_wall_seconds() - w0,
+                      .cpu_seconds = sl_cpu_seconds() - c0,
+                      .assembly = m.assembly,
+                      .factorisation = m.factorisation,
+                      .solve = m.solve,
+                      .output = m.output,
+                      .step_limit = m.step_limit};
   if (rc != SLUICE_BAD_INPUT) {
     char line[512];
     sl_run_summary_format(&s, line, sizeof line);
@@ -223,8 +233,7 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
     if (m.output_path[0] && m.saved_time_valid)
       snprintf(msg, sizeof msg, "sluice: %s: stopped at t = %.9g; the state at t = %.9g is saved in %.900s (%.600s)",
                name, m.t_reached, m.saved_time, m.output_path, e->msg);
-    else
-      snprintf(msg, sizeof msg, "sluice: %s: stopped (%.1000s)", name, e->msg);
+    else snprintf(msg, sizeof msg, "sluice: %s: stopped (%.1000s)", name, e->msg);
     if (signals_seen > 1)
       snprintf(msg + strlen(msg), sizeof msg - strlen(msg), " (%d more signal%s ignored until the file was closed)",
                (int)signals_seen - 1, signals_seen > 2 ? "s" : "");
@@ -236,8 +245,9 @@ static int simulate(sluice *sc, const char *scene, const char *out_file, const c
     if (m.saved_time_valid && !(t1 > t0)) /* steady: the model's message says which state */
       snprintf(msg, sizeof msg, "run failed; its state is saved in %.900s: %.1000s", m.output_path, e->msg);
     else if (m.saved_time_valid)
-      snprintf(msg, sizeof msg, "run failed at t = %.9g; the last accepted state, t = %.9g, is saved in %.900s: %.1000s",
-               m.t_reached, m.saved_time, m.output_path, e->msg);
+      snprintf(msg, sizeof msg,
+               "run failed at t = %.9g; the last accepted state, t = %.9g, is saved in %.900s: %.1000s", m.t_reached,
+               m.saved_time, m.output_path, e->msg);
     else
       snprintf(msg, sizeof msg, "run failed at t = %.9g; nothing could be saved in %.900s: %.1000s", m.t_reached,
                m.output_path, e->msg);
@@ -357,14 +367,17 @@ int sl_cmd_run(int argc, char **argv) {
   const char *set_list[MAX_SETS + 1];
   for (int i = 0; i < n_sets; ++i) set_list[i] = sets[i];
   set_list[n_sets] = NULL;
-  sluice_open_opts oo = {.sets = set_list, .timing = profile, .petsc_options = petsc,
-                         .allow_plugin_path = allow_plugin_path, .closure_time_limit = closure_time_limit};
+  sluice_open_opts oo = {.sets = set_list,
+                         .timing = profile,
+                         .petsc_options = petsc,
+                         .allow_plugin_path = allow_plugin_path,
+                         .closure_time_limit = closure_time_limit};
   int rc = sluice_open(scene, &oo, &sc, &e);
   if (!rc && (print_config || check_only)) {
     rc = check_isolated(sc, print_config, restart, scene, &e);
   } else if (!rc) {
-    rc = simulate(sc, scene, out_file, restart, profile, show_iterations, overwrite,
-                  rank > 0 ? NULL : summary_json, &e);
+    rc =
+        simulate(sc, scene, out_file, restart, profile, show_iterations, overwrite, rank > 0 ? NULL : summary_json, &e);
     summary_json = NULL; /* written */
   }
   if (summary_json && !print_config && !check_only && rc &&

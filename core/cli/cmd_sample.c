@@ -10,7 +10,6 @@
 #include "core/config/ini.h"
 #include "core/io/sample.h"
 
-
 static const char sample_usage[] =
     "usage: sluice sample OUT.h5 --field F [--time T] --line x0,y0:x1,y1 [--n N]\n"
     "       sluice sample OUT.h5 --field F [--time T] --point x,y\n"
@@ -75,10 +74,8 @@ static int parse_line(const char *s, double a[2], double b[2], int *n_coords) {
 }
 
 static void print_number(double v) {
-  if (isnan(v))
-    fputs("nan", stdout);
-  else
-    printf("%.12g", v);
+  if (isnan(v)) fputs("nan", stdout);
+  else printf("%.12g", v);
 }
 
 /* Times as a comma list wrapped to about 78 columns. */
@@ -120,17 +117,12 @@ static int list_file(const char *path) {
   for (int i = 0; i < c.n_fields; ++i) {
     const sl_output_field_info *f = &c.fields[i];
     char kind[32];
-    if (f->components == 1)
-      snprintf(kind, sizeof kind, "scalar");
-    else if (f->components == 3)
-      snprintf(kind, sizeof kind, "vector");
-    else
-      snprintf(kind, sizeof kind, "%d components", f->components);
+    if (f->components == 1) snprintf(kind, sizeof kind, "scalar");
+    else if (f->components == 3) snprintf(kind, sizeof kind, "vector");
+    else snprintf(kind, sizeof kind, "%d components", f->components);
     printf("  %-*s  %s  %-6s  ", w, f->name, f->centring == SL_CENTRE_NODE ? "node" : "cell", kind);
-    if (f->n_steps == 1)
-      printf("1 step, t = %.10g\n", f->t_first);
-    else
-      printf("%d steps, t = %.10g .. %.10g\n", f->n_steps, f->t_first, f->t_last);
+    if (f->n_steps == 1) printf("1 step, t = %.10g\n", f->t_first);
+    else printf("%d steps, t = %.10g .. %.10g\n", f->n_steps, f->t_first, f->t_last);
   }
   print_times(c.times, c.n_steps);
   sl_output_scalars sc;
@@ -170,10 +162,8 @@ static int print_scalars(const char *path) {
     for (int c = 0; c < s.n_names; ++c) {
       putchar(',');
       double v = s.values[(size_t)i * s.n_names + c];
-      if (isnan(v))
-        fputs("nan", stdout);
-      else
-        printf("%.17g", v);
+      if (isnan(v)) fputs("nan", stdout);
+      else printf("%.17g", v);
     }
     putchar('\n');
   }
@@ -253,31 +243,26 @@ int sl_cmd_sample(int argc, char **argv) {
   if (rc) {
     rc = sl_cli_error(rc, "sample: %s", d.msg);
   } else if (smp.dim != n_coords) {
-    const char *want = smp.dim == 1 ? (line_arg ? "--line x0:x1" : "--point x")
-                                    : (line_arg ? "--line x0,y0:x1,y1" : "--point x,y");
+    const char *want =
+        smp.dim == 1 ? (line_arg ? "--line x0:x1" : "--point x") : (line_arg ? "--line x0,y0:x1,y1" : "--point x,y");
     rc = sl_cli_error(SL_EBADINPUT, "sample: %s has a %d-D mesh: give %s", path, smp.dim, want);
   } else {
     if (time_arg && fabs(smp.time - t) > 1e-9 * fmax(1.0, fabs(t)))
-      fprintf(stderr, "sluice: sample: no output at t = %.10g; sampled the nearest, t = %.10g (step %d)\n", t,
-              smp.time, smp.step);
+      fprintf(stderr, "sluice: sample: no output at t = %.10g; sampled the nearest, t = %.10g (step %d)\n", t, smp.time,
+              smp.step);
     if (smp.n_outside > 0) {
       long first = 0;
       while (!isnan(smp.values[first * smp.components])) ++first;
       char where[80];
-      if (smp.dim == 2)
-        snprintf(where, sizeof where, "(%.10g, %.10g)", xy[2 * first], xy[2 * first + 1]);
-      else
-        snprintf(where, sizeof where, "x = %.10g", xy[2 * first]);
-      fprintf(stderr, "sluice: warning: %d of %ld point%s outside the mesh (the first at %s); %s nan\n",
-              smp.n_outside, n, n == 1 ? " lies" : "s lie", where,
-              smp.n_outside == 1 ? "its value is" : "their values are");
+      if (smp.dim == 2) snprintf(where, sizeof where, "(%.10g, %.10g)", xy[2 * first], xy[2 * first + 1]);
+      else snprintf(where, sizeof where, "x = %.10g", xy[2 * first]);
+      fprintf(stderr, "sluice: warning: %d of %ld point%s outside the mesh (the first at %s); %s nan\n", smp.n_outside,
+              n, n == 1 ? " lies" : "s lie", where, smp.n_outside == 1 ? "its value is" : "their values are");
     }
     fputs(smp.dim == 2 ? "x,y,s" : "x,s", stdout);
     for (int k = 0; k < smp.components; ++k) {
-      if (smp.components == 1)
-        printf(",%s", field);
-      else
-        printf(",%s_%d", field, k);
+      if (smp.components == 1) printf(",%s", field);
+      else printf(",%s_%d", field, k);
     }
     putchar('\n');
     for (long i = 0; i < n; ++i) {

@@ -63,16 +63,16 @@ int sl_cli_registry(sl_registry **r, int warn) {
   return 0;
 }
 
-
 typedef struct command {
   const char *name;
   int (*run)(int argc, char **argv);
 } command;
 
 static const command commands[] = {
-    {"run", sl_cmd_run},           {"closures", sl_cmd_closures}, {"closure", sl_cmd_closure},
-    {"check-closure", sl_cmd_check_closure}, {"version", sl_cmd_version},
-    {"sample", sl_cmd_sample},     {"bench", sl_cmd_bench},       {"model", sl_cmd_model},
+    {"run", sl_cmd_run},         {"closures", sl_cmd_closures},
+    {"closure", sl_cmd_closure}, {"check-closure", sl_cmd_check_closure},
+    {"version", sl_cmd_version}, {"sample", sl_cmd_sample},
+    {"bench", sl_cmd_bench},     {"model", sl_cmd_model},
 };
 
 int main(int argc, char **argv) {

@@ -44,16 +44,11 @@ void sl_progress_begin(sl_progress *p, FILE *f, double t_start, double t_end) {
     double v = strtod(every, &end);
     if (end != every && *end == '\0' && v > 0 && isfinite(v)) p->interval = v;
   }
-  if (!f)
-    p->enabled = 0;
-  else if (env && strcmp(env, "1") == 0)
-    p->enabled = 1;
-  else if (env && strcmp(env, "0") == 0)
-    p->enabled = 0;
-  else if (env && strcmp(env, "lines") == 0)
-    p->enabled = p->lines = 1;
-  else
-    p->enabled = 1, p->lines = isatty(fileno(f)) != 1;
+  if (!f) p->enabled = 0;
+  else if (env && strcmp(env, "1") == 0) p->enabled = 1;
+  else if (env && strcmp(env, "0") == 0) p->enabled = 0;
+  else if (env && strcmp(env, "lines") == 0) p->enabled = p->lines = 1;
+  else p->enabled = 1, p->lines = isatty(fileno(f)) != 1;
   if (p->lines) p->last_draw = NAN; /* the first line after one interval */
 }
 
@@ -64,14 +59,10 @@ static void format_left(double s, char *buf, size_t len) {
     return;
   }
   long v = lround(s);
-  if (v < 60)
-    snprintf(buf, len, "%ld s", v);
-  else if (v < 3600)
-    snprintf(buf, len, "%ld min %02ld s", v / 60, v % 60);
-  else if (v < 86400)
-    snprintf(buf, len, "%ld h %02ld min", v / 3600, v % 3600 / 60);
-  else
-    snprintf(buf, len, "%ld d %02ld h", v / 86400, v % 86400 / 3600);
+  if (v < 60) snprintf(buf, len, "%ld s", v);
+  else if (v < 3600) snprintf(buf, len, "%ld min %02ld s", v / 60, v % 60);
+  else if (v < 86400) snprintf(buf, len, "%ld h %02ld min", v / 3600, v % 3600 / 60);
+  else snprintf(buf, len, "%ld d %02ld h", v / 86400, v % 86400 / 3600);
 }
 
 /* The rate is measured over intervals of at least RATE_SAMPLE and smoothed
@@ -146,9 +137,9 @@ void sl_progress_iteration(sl_progress *p, long stage, long n_stages, int iterat
   char line[LINE_MAX_CHARS], st[64] = "", spent[32];
   if (n_stages > 0) snprintf(st, sizeof st, "stage %ld of %ld, ", stage, n_stages);
   format_left(now - p->started, spent, sizeof spent);
-  int n = snprintf(line, sizeof line, "steady: %s%s iteration %d: correction %.3g, residual %.3g (%.3g of its terms)",
-                   st, picard ? "Picard" : "Newton", iteration, correction, residual,
-                   terms > 0 ? residual / terms : 0.0);
+  int n =
+      snprintf(line, sizeof line, "steady: %s%s iteration %d: correction %.3g, residual %.3g (%.3g of its terms)", st,
+               picard ? "Picard" : "Newton", iteration, correction, residual, terms > 0 ? residual / terms : 0.0);
   if (n < 0) return;
   int ok;
   if (p->lines) {
@@ -181,7 +172,8 @@ typedef struct out {
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif
-static void put(out *o, const char *fmt, ...) {
+static void
+put(out *o, const char *fmt, ...) {
   if (o->used + 1 >= o->len) return;
   va_list ap;
   va_start(ap, fmt);

@@ -15,15 +15,15 @@ double sl_cpu_seconds(void);  /* CPU time of the process, all its threads */
 typedef struct sl_progress {
   FILE *f;
   int enabled;
-  double t_start, t_end; /* simulated time span of the run */
-  double (*now)(void);   /* the wall clock: sl_wall_seconds; tests may replace it */
-  double last_draw;      /* wall time of the last redraw */
-  double rate;           /* simulated seconds per wall second, smoothed; 0 until known */
+  double t_start, t_end;    /* simulated time span of the run */
+  double (*now)(void);      /* the wall clock: sl_wall_seconds; tests may replace it */
+  double last_draw;         /* wall time of the last redraw */
+  double rate;              /* simulated seconds per wall second, smoothed; 0 until known */
   double mark_t, mark_wall; /* simulated and wall time where the current rate sample began */
-  int width;             /* characters of the line on screen, to blank them */
-  int lines;             /* one line per interval (a log, not a terminal) instead of a line redrawn in place */
-  double interval;       /* seconds between lines of the log */
-  double started;        /* wall time of the first update */
+  int width;                /* characters of the line on screen, to blank them */
+  int lines;                /* one line per interval (a log, not a terminal) instead of a line redrawn in place */
+  double interval;          /* seconds between lines of the log */
+  double started;           /* wall time of the first update */
 } sl_progress;
 
 /* On a terminal, a line redrawn in place; otherwise (a log file, a pipe) one
@@ -44,10 +44,10 @@ void sl_progress_iteration(sl_progress *p, long stage, long n_stages, int iterat
 void sl_progress_end(sl_progress *p);
 
 typedef struct sl_run_summary {
-  long steps;                 /* accepted steps */
+  long steps; /* accepted steps */
   long rejected_steps;
-  long nonlinear_iterations;  /* all steps, rejected ones included */
-  const char *nonlinear_name; /* e.g. "Newton", "Picard"; NULL: "nonlinear" */
+  long nonlinear_iterations;        /* all steps, rejected ones included */
+  const char *nonlinear_name;       /* e.g. "Newton", "Picard"; NULL: "nonlinear" */
   double wall_seconds, cpu_seconds; /* the whole run */
   /* wall seconds per phase; the rest of wall_seconds is reported as "other" */
   double assembly, factorisation, solve, output;

@@ -10,26 +10,19 @@
 static void str(FILE *f, const char *s) {
   fputc('"', f);
   for (const unsigned char *c = (const unsigned char *)(s ? s : ""); *c; ++c) {
-    if (*c == '"' || *c == '\\')
-      fprintf(f, "\\%c", *c);
-    else if (*c == '\n')
-      fputs("\\n", f);
-    else if (*c == '\t')
-      fputs("\\t", f);
-    else if (*c < 0x20)
-      fprintf(f, "\\u%04x", *c);
-    else
-      fputc(*c, f);
+    if (*c == '"' || *c == '\\') fprintf(f, "\\%c", *c);
+    else if (*c == '\n') fputs("\\n", f);
+    else if (*c == '\t') fputs("\\t", f);
+    else if (*c < 0x20) fprintf(f, "\\u%04x", *c);
+    else fputc(*c, f);
   }
   fputc('"', f);
 }
 
 /* JSON has no NaN or infinity: null. */
 static void num(FILE *f, double v) {
-  if (isfinite(v))
-    fprintf(f, "%.17g", v);
-  else
-    fputs("null", f);
+  if (isfinite(v)) fprintf(f, "%.17g", v);
+  else fputs("null", f);
 }
 
 static void key(FILE *f, const char *k) {

@@ -23,8 +23,8 @@
 #include "core/config/special.h"
 
 #include <math.h>
-#include <stddef.h>
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,7 +39,7 @@ static double sl_max2(double a, double b) { return isnan(a) || isnan(b) ? a + b 
 #define SL_UNOPS(X)              \
   X(NEG, -a)                     \
   X(NOT, (double)(a == 0))       \
-  X(SQUARE, a * a)               \
+  X(SQUARE, a *a)                \
   X(SIN, sin(a))                 \
   X(COS, cos(a))                 \
   X(TAN, tan(a))                 \
@@ -67,24 +67,24 @@ static double sl_max2(double a, double b) { return isnan(a) || isnan(b) ? a + b 
   X(INT_Y0, sl_bessel_int_y0(a))
 
 /* X(name, value of a and b) */
-#define SL_BINOPS(X)                      \
-  X(ADD, a + b)                           \
-  X(SUB, a - b)                           \
-  X(MUL, a * b)                           \
-  X(DIV, a / b)                           \
-  X(POW, pow(a, b))                       \
-  X(LT, (double)(a < b))                  \
-  X(LE, (double)(a <= b))                 \
-  X(GT, (double)(a > b))                  \
-  X(GE, (double)(a >= b))                 \
-  X(EQ, (double)(a == b))                 \
-  X(NE, (double)(a != b))                 \
-  X(AND, (double)(a != 0 && b != 0))      \
-  X(OR, (double)(a != 0 || b != 0))       \
-  X(ATAN2, atan2(a, b))                   \
-  X(MIN, sl_min2(a, b))                   \
-  X(MAX, sl_max2(a, b))                   \
-  X(JN, sl_bessel_jn(a, b))               \
+#define SL_BINOPS(X)                 \
+  X(ADD, a + b)                      \
+  X(SUB, a - b)                      \
+  X(MUL, a *b)                       \
+  X(DIV, a / b)                      \
+  X(POW, pow(a, b))                  \
+  X(LT, (double)(a < b))             \
+  X(LE, (double)(a <= b))            \
+  X(GT, (double)(a > b))             \
+  X(GE, (double)(a >= b))            \
+  X(EQ, (double)(a == b))            \
+  X(NE, (double)(a != b))            \
+  X(AND, (double)(a != 0 && b != 0)) \
+  X(OR, (double)(a != 0 || b != 0))  \
+  X(ATAN2, atan2(a, b))              \
+  X(MIN, sl_min2(a, b))              \
+  X(MAX, sl_max2(a, b))              \
+  X(JN, sl_bessel_jn(a, b))          \
   X(YN, sl_bessel_yn(a, b))
 
 /* Every binary operator comes in five forms, in this order:
@@ -104,12 +104,12 @@ enum {
 #define X(name, val) OP_##name,
   SL_UNOPS(X)
 #undef X
-  OP_BIN_START,
+      OP_BIN_START,
   OP_BIN_START_ = OP_BIN_START - 1,
 #define X(name, val) OP_##name, OP_##name##_K, OP_##name##_V, OP_K_##name, OP_V_##name,
   SL_BINOPS(X)
 #undef X
-  OP_COUNT
+      OP_COUNT
 };
 
 typedef struct {
@@ -164,13 +164,13 @@ typedef struct {
 } sl_func;
 
 static const sl_func funcs[] = {
-    {"sin", OP_SIN, 1},     {"cos", OP_COS, 1},     {"tan", OP_TAN, 1},     {"asin", OP_ASIN, 1},
-    {"acos", OP_ACOS, 1},   {"atan", OP_ATAN, 1},   {"atan2", OP_ATAN2, 2}, {"sinh", OP_SINH, 1},
-    {"cosh", OP_COSH, 1},   {"tanh", OP_TANH, 1},   {"exp", OP_EXP, 1},     {"log", OP_LOG, 1},
-    {"log10", OP_LOG10, 1}, {"sqrt", OP_SQRT, 1},   {"abs", OP_ABS, 1},     {"min", OP_MIN, -2},
-    {"max", OP_MAX, -2},    {"pow", OP_POW, 2},     {"floor", OP_FLOOR, 1}, {"ceil", OP_CEIL, 1},
-    {"sign", OP_SIGN, 1},   {"step", OP_STEP, 1},   {"j0", OP_J0, 1},       {"j1", OP_J1, 1},
-    {"y0", OP_Y0, 1},       {"y1", OP_Y1, 1},       {"jn", OP_JN, 2},       {"yn", OP_YN, 2},
+    {"sin", OP_SIN, 1},     {"cos", OP_COS, 1},       {"tan", OP_TAN, 1},       {"asin", OP_ASIN, 1},
+    {"acos", OP_ACOS, 1},   {"atan", OP_ATAN, 1},     {"atan2", OP_ATAN2, 2},   {"sinh", OP_SINH, 1},
+    {"cosh", OP_COSH, 1},   {"tanh", OP_TANH, 1},     {"exp", OP_EXP, 1},       {"log", OP_LOG, 1},
+    {"log10", OP_LOG10, 1}, {"sqrt", OP_SQRT, 1},     {"abs", OP_ABS, 1},       {"min", OP_MIN, -2},
+    {"max", OP_MAX, -2},    {"pow", OP_POW, 2},       {"floor", OP_FLOOR, 1},   {"ceil", OP_CEIL, 1},
+    {"sign", OP_SIGN, 1},   {"step", OP_STEP, 1},     {"j0", OP_J0, 1},         {"j1", OP_J1, 1},
+    {"y0", OP_Y0, 1},       {"y1", OP_Y1, 1},         {"jn", OP_JN, 2},         {"yn", OP_YN, 2},
     {"jhalf", OP_JHALF, 1}, {"int_j0", OP_INT_J0, 1}, {"int_y0", OP_INT_Y0, 1},
 };
 enum { N_FUNCS = (int)(sizeof funcs / sizeof funcs[0]) };
@@ -274,10 +274,8 @@ static void skip(parser *P, int n) {
 /* "'text'" of a token (shortened), or "the end of the expression". */
 static const char *describe(const token *t, char *buf, size_t size) {
   if (t->kind == T_END) return "the end of the expression";
-  if (t->len > 40)
-    snprintf(buf, size, "'%.37s...'", t->s);
-  else
-    snprintf(buf, size, "'%.*s'", t->len, t->s);
+  if (t->len > 40) snprintf(buf, size, "'%.37s...'", t->s);
+  else snprintf(buf, size, "'%.*s'", t->len, t->s);
   return buf;
 }
 
@@ -306,8 +304,7 @@ static int lex_number(parser *P) {
       while (is_digit(*r)) ++r;
       q = r;
     } else if (r != q + 1) {
-      return fail(P, P->col, "malformed number '%.*s': expected digits after '%.*s'", (int)(r - s), s,
-                  (int)(r - q), q);
+      return fail(P, P->col, "malformed number '%.*s': expected digits after '%.*s'", (int)(r - s), s, (int)(r - q), q);
     }
   }
   size_t len = (size_t)(q - s);
@@ -345,16 +342,36 @@ static int advance(parser *P) {
     t->kind = T_NAME;
   } else {
     switch (c) {
-      case '+': t->kind = T_PLUS; break;
-      case '-': t->kind = T_MINUS; break;
-      case '*': t->kind = T_STAR; break;
-      case '/': t->kind = T_SLASH; break;
-      case '^': t->kind = T_CARET; break;
-      case '(': t->kind = T_LPAREN; break;
-      case ')': t->kind = T_RPAREN; break;
-      case ',': t->kind = T_COMMA; break;
-      case '?': t->kind = T_QUESTION; break;
-      case ':': t->kind = T_COLON; break;
+      case '+':
+        t->kind = T_PLUS;
+        break;
+      case '-':
+        t->kind = T_MINUS;
+        break;
+      case '*':
+        t->kind = T_STAR;
+        break;
+      case '/':
+        t->kind = T_SLASH;
+        break;
+      case '^':
+        t->kind = T_CARET;
+        break;
+      case '(':
+        t->kind = T_LPAREN;
+        break;
+      case ')':
+        t->kind = T_RPAREN;
+        break;
+      case ',':
+        t->kind = T_COMMA;
+        break;
+      case '?':
+        t->kind = T_QUESTION;
+        break;
+      case ':':
+        t->kind = T_COLON;
+        break;
       case '<':
         t->kind = c2 == '=' ? T_LE : T_LT;
         n = c2 == '=' ? 2 : 1;
@@ -472,8 +489,8 @@ static int expected_operand(parser *P) {
   const char *hint = P->prev.kind == T_STAR && P->tok.kind == T_STAR ? "; use '^' for powers" : "";
   if (P->prev.kind == T_END) /* nothing before: only whitespace was skipped */
     return fail(P, P->tok.col, "expected a number, a name or '(', found %s%s", found, hint);
-  return fail(P, P->tok.col, "expected a number, a name or '(' after %s, found %s%s",
-              describe(&P->prev, b2, sizeof b2), found, hint);
+  return fail(P, P->tok.col, "expected a number, a name or '(' after %s, found %s%s", describe(&P->prev, b2, sizeof b2),
+              found, hint);
 }
 
 static int unknown_name(parser *P, const token *t, int as_function) {
@@ -533,8 +550,7 @@ static int parse_call(parser *P, int fi) {
     }
   }
   --P->nest;
-  if (f->nargs == -2 && nargs < 2)
-    return fail(P, name.col, "%s takes at least 2 arguments, got %d", f->name, nargs);
+  if (f->nargs == -2 && nargs < 2) return fail(P, name.col, "%s takes at least 2 arguments, got %d", f->name, nargs);
   if (f->nargs > 0 && nargs != f->nargs)
     return fail(P, name.col, "%s takes %d argument%s, got %d", f->name, f->nargs, f->nargs == 1 ? "" : "s", nargs);
   if ((rc = advance(P))) return rc;
@@ -638,11 +654,16 @@ static int parse_add(parser *P) {
 static int comparison_op(tok_kind k, int equality) {
   if (equality) return k == T_EQ ? OP_EQ : k == T_NE ? OP_NE : -1;
   switch (k) {
-    case T_LT: return OP_LT;
-    case T_LE: return OP_LE;
-    case T_GT: return OP_GT;
-    case T_GE: return OP_GE;
-    default: return -1;
+    case T_LT:
+      return OP_LT;
+    case T_LE:
+      return OP_LE;
+    case T_GT:
+      return OP_GT;
+    case T_GE:
+      return OP_GE;
+    default:
+      return -1;
   }
 }
 
@@ -657,9 +678,8 @@ static int parse_compare(parser *P, int equality) {
   int r0 = P->n;
   if ((rc = equality ? parse_compare(P, 0) : parse_add(P))) return rc;
   if (comparison_op(P->tok.kind, equality) >= 0)
-    return fail(P, P->tok.col,
-                "comparisons do not chain: write 'a %.*s b && b %.*s c' instead of 'a %.*s b %.*s c'", first.len,
-                first.s, P->tok.len, P->tok.s, first.len, first.s, P->tok.len, P->tok.s);
+    return fail(P, P->tok.col, "comparisons do not chain: write 'a %.*s b && b %.*s c' instead of 'a %.*s b %.*s c'",
+                first.len, first.s, P->tok.len, P->tok.s, first.len, first.s, P->tok.len, P->tok.s);
   return emit_binary(P, op, l0, r0);
 }
 
@@ -723,10 +743,8 @@ static int stack_need(const sl_ins *code, int n) {
   int depth = 0, most = 0;
   for (int i = 0; i < n; ++i) {
     int op = code[i].op;
-    if (op == OP_CONST || op == OP_VAR)
-      ++depth;
-    else if (op == OP_JZ || op == OP_JMP || (is_binop(op) && bin_form(op) == BIN_SS))
-      --depth;
+    if (op == OP_CONST || op == OP_VAR) ++depth;
+    else if (op == OP_JZ || op == OP_JMP || (is_binop(op) && bin_form(op) == BIN_SS)) --depth;
     if (depth > most) most = depth;
   }
   return most;
@@ -745,8 +763,7 @@ static int check_vars(const char *const *vars, int n_vars, sl_diag *d) {
     if (find_func(v, len) >= 0 || find_const(v, len) >= 0)
       return sl_diag_set(d, SL_EBADINPUT, "expression: variable name '%s' is a built-in name", v);
     for (int j = 0; j < i; ++j)
-      if (strcmp(vars[j], v) == 0)
-        return sl_diag_set(d, SL_EBADINPUT, "expression: variable '%s' is listed twice", v);
+      if (strcmp(vars[j], v) == 0) return sl_diag_set(d, SL_EBADINPUT, "expression: variable '%s' is listed twice", v);
   }
   return 0;
 }
@@ -791,13 +808,11 @@ int sl_expr_compile_with(const char *text, const char *const *vars, int n_vars, 
       char b[64];
       const char *found = describe(&P->tok, b, sizeof b);
       tok_kind pk = P->prev.kind, tk = P->tok.kind;
-      if (tk == T_RPAREN)
-        rc = fail(P, P->tok.col, "unmatched ')'");
+      if (tk == T_RPAREN) rc = fail(P, P->tok.col, "unmatched ')'");
       else if ((pk == T_NUM || pk == T_NAME || pk == T_RPAREN) && (tk == T_NUM || tk == T_NAME || tk == T_LPAREN))
         rc = fail(P, P->tok.col, "expected an operator or the end of the expression, found %s; write '*' to multiply",
                   found);
-      else
-        rc = fail(P, P->tok.col, "expected an operator or the end of the expression, found %s", found);
+      else rc = fail(P, P->tok.col, "expected an operator or the end of the expression, found %s", found);
     }
   }
   if (!rc) {
@@ -857,45 +872,45 @@ double sl_expr_eval(const sl_expr *e, const double *values) {
       case OP_JMP:
         pc = i + i->arg;
         break;
-#define X(name, val)          \
-  case OP_##name: {           \
-    double a = sp[-1];        \
-    sp[-1] = val;             \
-    break;                    \
+#define X(name, val)   \
+  case OP_##name: {    \
+    double a = sp[-1]; \
+    sp[-1] = val;      \
+    break;             \
   }
         SL_UNOPS(X)
 #undef X
-#define X(name, val)          \
-  case OP_##name: {           \
-    double a = sp[-2];        \
-    double b = sp[-1];        \
-    --sp;                     \
-    sp[-1] = val;             \
-    break;                    \
-  }                           \
-  case OP_##name##_K: {       \
-    double a = sp[-1];        \
-    double b = i->k;          \
-    sp[-1] = val;             \
-    break;                    \
-  }                           \
-  case OP_##name##_V: {       \
-    double a = sp[-1];        \
-    double b = v[i->arg];     \
-    sp[-1] = val;             \
-    break;                    \
-  }                           \
-  case OP_K_##name: {         \
-    double a = i->k;          \
-    double b = sp[-1];        \
-    sp[-1] = val;             \
-    break;                    \
-  }                           \
-  case OP_V_##name: {         \
-    double a = v[i->arg];     \
-    double b = sp[-1];        \
-    sp[-1] = val;             \
-    break;                    \
+#define X(name, val)      \
+  case OP_##name: {       \
+    double a = sp[-2];    \
+    double b = sp[-1];    \
+    --sp;                 \
+    sp[-1] = val;         \
+    break;                \
+  }                       \
+  case OP_##name##_K: {   \
+    double a = sp[-1];    \
+    double b = i->k;      \
+    sp[-1] = val;         \
+    break;                \
+  }                       \
+  case OP_##name##_V: {   \
+    double a = sp[-1];    \
+    double b = v[i->arg]; \
+    sp[-1] = val;         \
+    break;                \
+  }                       \
+  case OP_K_##name: {     \
+    double a = i->k;      \
+    double b = sp[-1];    \
+    sp[-1] = val;         \
+    break;                \
+  }                       \
+  case OP_V_##name: {     \
+    double a = v[i->arg]; \
+    double b = sp[-1];    \
+    sp[-1] = val;         \
+    break;                \
   }
         SL_BINOPS(X)
 #undef X

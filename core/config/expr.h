@@ -33,9 +33,9 @@
 #include "core/util/diag.h"
 
 enum {
-  SL_EXPR_MAX_LEN = 4096,  /* characters of text */
-  SL_EXPR_MAX_STACK = 64,  /* evaluation stack slots */
-  SL_EXPR_MAX_NEST = 200,  /* nesting of parentheses, unary operators, powers, ternaries */
+  SL_EXPR_MAX_LEN = 4096, /* characters of text */
+  SL_EXPR_MAX_STACK = 64, /* evaluation stack slots */
+  SL_EXPR_MAX_NEST = 200, /* nesting of parentheses, unary operators, powers, ternaries */
   SL_EXPR_MAX_VARS = 64,
   SL_EXPR_MAX_CONSTANTS = 64 /* named constants of sl_expr_compile_with */
 };

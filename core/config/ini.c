@@ -36,11 +36,11 @@
 #include <unistd.h>
 
 enum {
-  INI_MAX_LINE = 65536,              /* bytes per line (64 KiB), without the newline */
-  INI_MAX_DEPTH = 16,                /* nested includes */
-  INI_MAX_PARSES = 256,              /* files read for one configuration (bounds diamond includes) */
-  INI_MAX_FILE = 16 * 1024 * 1024,   /* a scene is small; this also stops /proc-style endless files */
-  INI_MAX_OVERRIDE = 16384           /* keeps a written override line under INI_MAX_LINE */
+  INI_MAX_LINE = 65536,            /* bytes per line (64 KiB), without the newline */
+  INI_MAX_DEPTH = 16,              /* nested includes */
+  INI_MAX_PARSES = 256,            /* files read for one configuration (bounds diamond includes) */
+  INI_MAX_FILE = 16 * 1024 * 1024, /* a scene is small; this also stops /proc-style endless files */
+  INI_MAX_OVERRIDE = 16384         /* keeps a written override line under INI_MAX_LINE */
 };
 
 static const char CMDLINE_FILE[] = "<command line>";
@@ -71,8 +71,7 @@ static int is_blank(char ch) { return ch == ' ' || ch == '\t'; }
 static int is_comment(char ch) { return ch == ';' || ch == '#'; }
 /* ASCII only on purpose: <ctype.h> depends on the locale. */
 static int is_key_char(char ch) {
-  return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' ||
-         ch == '-';
+  return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' || ch == '-';
 }
 static int is_section_char(char ch) { return is_key_char(ch) || ch == '.'; }
 
@@ -167,7 +166,8 @@ static const char *fmt_real(double v, char buf[40]) {
 #if defined(__GNUC__)
 __attribute__((format(printf, 5, 6)))
 #endif
-static int err_at(sl_diag *d, const char *file, int line, int col, const char *fmt, ...) {
+static int
+err_at(sl_diag *d, const char *file, int line, int col, const char *fmt, ...) {
   char msg[sizeof d->msg];
   va_list ap;
   va_start(ap, fmt);
@@ -178,7 +178,9 @@ static int err_at(sl_diag *d, const char *file, int line, int col, const char *f
   return sl_diag_set(d, SL_EBADINPUT, "%s:%d:%d: error: %s", file, line, col, msg);
 }
 
-static int oom(sl_diag *d) { return sl_diag_set(d, SL_ENOMEM, "error: out of memory while handling the configuration"); }
+static int oom(sl_diag *d) {
+  return sl_diag_set(d, SL_ENOMEM, "error: out of memory while handling the configuration");
+}
 
 /* ------------------------------------------------------- configuration data */
 
@@ -428,11 +430,11 @@ typedef struct {
 /* Per-file state: what this file has opened and set, for duplicate checks. */
 typedef struct {
   const char *file;
-  int cur;                      /* current section index, -1 before the first header */
+  int cur; /* current section index, -1 before the first header */
   int n_headers, n_includes;
-  mark *opened;                 /* sections opened in this file */
+  mark *opened; /* sections opened in this file */
   int n_opened, cap_opened;
-  mark *set;                    /* entries set under the current header */
+  mark *set; /* entries set under the current header */
   int n_set, cap_set;
 } file_state;
 
@@ -636,8 +638,8 @@ static int parse_assignment(parse_ctx *c, file_state *fs, int lineno, const char
   size_t klen = (size_t)(ke - ks);
   if (klen == 0) {
     if (*p == '=') return err_at(c->d, fs->file, lineno, col_at(ls, p), "missing key before '='");
-    return err_at(c->d, fs->file, lineno, col_at(ls, p),
-                  "expected a key, a [section] header or a comment, found '%s'", show_char(p, cb));
+    return err_at(c->d, fs->file, lineno, col_at(ls, p), "expected a key, a [section] header or a comment, found '%s'",
+                  show_char(p, cb));
   }
   while (p < e && is_blank(*p)) ++p;
   if (p >= e || is_comment(*p))
@@ -655,8 +657,8 @@ static int parse_assignment(parse_ctx *c, file_state *fs, int lineno, const char
   int is_include = klen == 7 && memcmp(ks, "include", 7) == 0;
 
   if (fs->cur < 0 && !is_include)
-    return err_at(c->d, fs->file, lineno, kcol,
-                  "key '%.*s' comes before any [section] header (only 'include' may)", (int)klen, ks);
+    return err_at(c->d, fs->file, lineno, kcol, "key '%.*s' comes before any [section] header (only 'include' may)",
+                  (int)klen, ks);
   if (fs->cur >= 0 && is_include)
     return err_at(c->d, fs->file, lineno, kcol, "'include' must come before the first [section] header");
 
@@ -721,10 +723,8 @@ static int parse_text(parse_ctx *c, const char *text, size_t len, const char *fi
     const char *e = ls + n, *p = ls;
     while (p < e && is_blank(*p)) ++p;
     if (p == e || is_comment(*p)) continue;
-    if (*p == '[')
-      rc = parse_header(c, &fs, lineno, ls, p, e);
-    else
-      rc = parse_assignment(c, &fs, lineno, ls, p, e);
+    if (*p == '[') rc = parse_header(c, &fs, lineno, ls, p, e);
+    else rc = parse_assignment(c, &fs, lineno, ls, p, e);
   }
   if (rc == 0 && fs.n_headers == 0 && fs.n_includes == 0)
     rc = err_at(c->d, file, 1, 1, "no sections: the file has only comments and blank lines");
@@ -785,7 +785,8 @@ int sl_ini_parse_file(const char *path, sl_ini **out, sl_diag *d) {
 #if defined(__GNUC__)
 __attribute__((format(printf, 3, 4)))
 #endif
-static int override_err(sl_diag *d, const char *assignment, const char *fmt, ...) {
+static int
+override_err(sl_diag *d, const char *assignment, const char *fmt, ...) {
   char msg[1024];
   va_list ap;
   va_start(ap, fmt);
@@ -798,8 +799,7 @@ int sl_ini_apply_override(sl_ini *ini, const char *a, sl_diag *d) {
   if (!a) return sl_diag_set(d, SL_EBADINPUT, "--set: expected section.key=value");
   if (!ini) return override_err(d, a, "no configuration to apply it to");
   size_t alen = strlen(a);
-  if (alen > INI_MAX_OVERRIDE)
-    return override_err(d, a, "longer than %d bytes", INI_MAX_OVERRIDE);
+  if (alen > INI_MAX_OVERRIDE) return override_err(d, a, "longer than %d bytes", INI_MAX_OVERRIDE);
   char why[128];
   if (check_text(a, alen, why, sizeof why) < alen) return override_err(d, a, "%s", why);
 
@@ -963,8 +963,7 @@ static sl_ini_entry *lookup(const sl_ini *ini, const char *section, const char *
     *rc = err_at(d, s->file, s->line, 1, "[%s] is missing the required key '%s'", section, key ? key : "");
   } else {
     const char *root = ini && ini->n_files > 0 ? ini->files[0] : "<configuration>";
-    *rc = err_at(d, root, 0, 0, "missing section [%s] (it needs the key '%s')", section ? section : "",
-                 key ? key : "");
+    *rc = err_at(d, root, 0, 0, "missing section [%s] (it needs the key '%s')", section ? section : "", key ? key : "");
   }
   return NULL;
 }
@@ -973,7 +972,8 @@ static sl_ini_entry *lookup(const sl_ini *ini, const char *section, const char *
 #if defined(__GNUC__)
 __attribute__((format(printf, 5, 6)))
 #endif
-static int value_err(const sl_ini_entry *e, const char *section, int col, sl_diag *d, const char *fmt, ...) {
+static int
+value_err(const sl_ini_entry *e, const char *section, int col, sl_diag *d, const char *fmt, ...) {
   char tail[1024];
   va_list ap;
   va_start(ap, fmt);
@@ -1001,7 +1001,8 @@ int sl_ini_get_real(const sl_ini *ini, const char *section, const char *key, int
   double v;
   char why[200];
   if (sl_parse_real_expr_with(e->value, sl_ini_constants(ini), &v, why, sizeof why))
-    return value_err(e, section, 0, d, ": expected a real number or a constant expression (like 2, 0.5, 1e-3 or 2*pi)%s%s",
+    return value_err(e, section, 0, d,
+                     ": expected a real number or a constant expression (like 2, 0.5, 1e-3 or 2*pi)%s%s",
                      why[0] ? ": " : "", why);
   if (v < min || v > max) {
     char a[40], b[40];
@@ -1011,8 +1012,8 @@ int sl_ini_get_real(const sl_ini *ini, const char *section, const char *key, int
   return 0;
 }
 
-int sl_ini_get_int(const sl_ini *ini, const char *section, const char *key, int required, long def, long min,
-                   long max, long *out, sl_diag *d) {
+int sl_ini_get_int(const sl_ini *ini, const char *section, const char *key, int required, long def, long min, long max,
+                   long *out, sl_diag *d) {
   int rc;
   sl_ini_entry *e = lookup(ini, section, key, required, d, &rc);
   if (!e) {
@@ -1155,8 +1156,8 @@ int sl_ini_get_real_list(const sl_ini *ini, const char *section, const char *key
 
 /* ------------------------------------------------------ unknown names checks */
 
-int sl_ini_check_sections(const sl_ini *ini, const char *const *known, int n_known,
-                          const char *const *known_prefixes, int n_prefixes, sl_diag *d) {
+int sl_ini_check_sections(const sl_ini *ini, const char *const *known, int n_known, const char *const *known_prefixes,
+                          int n_prefixes, sl_diag *d) {
   if (!ini) return 0;
   for (int i = 0; i < ini->n_sections; ++i) {
     const sl_ini_section *s = &ini->sections[i];
@@ -1198,7 +1199,8 @@ int sl_ini_check_keys(const sl_ini *ini, const char *section, const char *const 
     for (int k = 0; k < n_known && !ok; ++k) ok = strcmp(e->key, known[k]) == 0;
     if (ok) continue;
     const char *h = sl_suggest(e->key, known, n_known);
-    if (h) return err_at(d, e->file, e->line, e->col, "unknown key '%s' in [%s]; did you mean '%s'?", e->key, s->name, h);
+    if (h)
+      return err_at(d, e->file, e->line, e->col, "unknown key '%s' in [%s]; did you mean '%s'?", e->key, s->name, h);
     char names[800];
     size_t len = 0;
     names[0] = '\0';

@@ -21,7 +21,7 @@ typedef struct sl_ini_entry {
   const char *file; /* owned by the sl_ini */
   int line, col;    /* position of the key (col of value in value_col) */
   int value_col;
-  int used;         /* set by the typed getters */
+  int used; /* set by the typed getters */
 } sl_ini_entry;
 
 typedef struct sl_ini_section {
@@ -36,7 +36,7 @@ typedef struct sl_ini {
   int n_sections, cap_sections;
   sl_ini_section *sections;
   int n_files, cap_files;
-  char **files; /* every file read, for diagnostics and provenance */
+  char **files;                 /* every file read, for diagnostics and provenance */
   struct sl_ini_params *params; /* [parameters] once resolved (parameters.h), else NULL */
 } sl_ini;
 
@@ -63,10 +63,10 @@ void sl_ini_drop_entries(sl_ini *ini, const char *section, int (*keep)(const sl_
 /* Typed getters. A missing key gives `def` when required == 0, an error when
  * required != 0. Values outside [min, max] are errors naming the range. Each
  * marks the entry used. Return 0 or SL_EBADINPUT. */
-int sl_ini_get_real(const sl_ini *ini, const char *section, const char *key, int required, double def,
-                    double min, double max, double *out, sl_diag *d);
-int sl_ini_get_int(const sl_ini *ini, const char *section, const char *key, int required, long def, long min,
-                   long max, long *out, sl_diag *d);
+int sl_ini_get_real(const sl_ini *ini, const char *section, const char *key, int required, double def, double min,
+                    double max, double *out, sl_diag *d);
+int sl_ini_get_int(const sl_ini *ini, const char *section, const char *key, int required, long def, long min, long max,
+                   long *out, sl_diag *d);
 int sl_ini_get_bool(const sl_ini *ini, const char *section, const char *key, int required, int def, int *out,
                     sl_diag *d);
 /* The returned string is owned by the sl_ini. */
@@ -76,8 +76,8 @@ int sl_ini_get_string(const sl_ini *ini, const char *section, const char *key, i
 int sl_ini_get_choice(const sl_ini *ini, const char *section, const char *key, int required, int def,
                       const char *choices, int *out, sl_diag *d);
 /* Comma list of reals; at most `cap` values. */
-int sl_ini_get_real_list(const sl_ini *ini, const char *section, const char *key, int required, double *vals,
-                         int cap, int *n, sl_diag *d);
+int sl_ini_get_real_list(const sl_ini *ini, const char *section, const char *key, int required, double *vals, int cap,
+                         int *n, sl_diag *d);
 
 /* Number parsing shared with the command line: the whole string must be a
  * finite number. Return 0 on success. */
@@ -95,8 +95,8 @@ int sl_parse_bool(const char *s, int *out);
 
 /* Unknown sections: every section name must be in `known` or start with one
  * of the prefixes in `known_prefixes` (e.g. "closure.", "boundary."). */
-int sl_ini_check_sections(const sl_ini *ini, const char *const *known, int n_known,
-                          const char *const *known_prefixes, int n_prefixes, sl_diag *d);
+int sl_ini_check_sections(const sl_ini *ini, const char *const *known, int n_known, const char *const *known_prefixes,
+                          int n_prefixes, sl_diag *d);
 /* Unknown keys in one section, with a did-you-mean among `known`. */
 int sl_ini_check_keys(const sl_ini *ini, const char *section, const char *const *known, int n_known, sl_diag *d);
 

@@ -43,10 +43,11 @@ int sl_ini_parameters(sl_ini *ini, sl_diag *d) {
     int bad = !is_identifier(name) || sl_expr_is_builtin(name) || strlen(name) >= sizeof p->store[0];
     for (size_t r = 0; r < sizeof reserved / sizeof reserved[0]; ++r) bad = bad || strcmp(name, reserved[r]) == 0;
     if (bad) {
-      rc = sl_diag_set(d, SL_EBADINPUT,
-                       "%s:%d:%d: [parameters] %s: a parameter's name is an identifier (letters, digits, _; at most 63) that is "
-                       "not built in (pi, e, sin, ...) nor a variable (x, y, t, case)",
-                       e->file, e->line, e->col, name);
+      rc = sl_diag_set(
+          d, SL_EBADINPUT,
+          "%s:%d:%d: [parameters] %s: a parameter's name is an identifier (letters, digits, _; at most 63) that is "
+          "not built in (pi, e, sin, ...) nor a variable (x, y, t, case)",
+          e->file, e->line, e->col, name);
       break;
     }
     for (int j = 0; j < p->k.n && !rc; ++j)

@@ -189,7 +189,8 @@ static int match_pairs(const sl_mesh *mesh, const sl_periodic_pair *pairs, int n
     return sl_diag_set(d, SL_ENOMEM, "periodic pairs: out of memory");
   }
   int rc = 0;
-  for (int k = 0; k < n_pairs && !rc; ++k) rc = sl_mesh_periodic_match(mesh, pairs[k].boundary, pairs[k].partner, &match[k], d);
+  for (int k = 0; k < n_pairs && !rc; ++k)
+    rc = sl_mesh_periodic_match(mesh, pairs[k].boundary, pairs[k].partner, &match[k], d);
   for (int b = 0; b < mesh->n_boundaries; ++b) master[b] = -1;
   for (int k = 0; k < n_pairs && !rc; ++k) {
     int b = match[k].partner;
@@ -199,8 +200,7 @@ static int match_pairs(const sl_mesh *mesh, const sl_periodic_pair *pairs, int n
                        "boundary can be identified with one other only",
                        mesh->boundary_names[b], mesh->boundary_names[master[b]], mesh->boundary_names[b],
                        mesh->boundary_names[match[k].boundary], mesh->boundary_names[b]);
-    else
-      master[b] = match[k].boundary;
+    else master[b] = match[k].boundary;
   }
   /* Each boundary has at most one master: follow the links for a cycle. */
   for (int b = 0; b < mesh->n_boundaries && !rc; ++b) {
@@ -295,8 +295,8 @@ int sl_th_create_periodic(const sl_mesh *mesh, int n_comp, const sl_periodic_pai
                           sl_th_space **out, sl_diag *d) {
   *out = NULL;
   if (n_comp < mesh->dim || n_comp > 3)
-    return sl_diag_set(d, SL_EBADINPUT, "Taylor-Hood: %d velocity components on a %d-D mesh (%d..3)", n_comp,
-                       mesh->dim, mesh->dim);
+    return sl_diag_set(d, SL_EBADINPUT, "Taylor-Hood: %d velocity components on a %d-D mesh (%d..3)", n_comp, mesh->dim,
+                       mesh->dim);
   sl_mesh_periodic *match;
   int rc = match_pairs(mesh, pairs, n_pairs, &match, d);
   if (rc) return rc;

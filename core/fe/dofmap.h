@@ -118,9 +118,7 @@ int sl_th_create_periodic(const sl_mesh *mesh, int n_comp, const sl_periodic_pai
                           sl_th_space **out, sl_diag *d);
 void sl_th_destroy(sl_th_space *th);
 
-static inline int32_t sl_th_vel_dof(const sl_th_space *th, int comp, int32_t node) {
-  return comp * th->n_vel + node;
-}
+static inline int32_t sl_th_vel_dof(const sl_th_space *th, int comp, int32_t node) { return comp * th->n_vel + node; }
 static inline int32_t sl_th_pres_dof(const sl_th_space *th, int32_t node) { return th->p_offset + node; }
 
 #endif

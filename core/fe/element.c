@@ -57,8 +57,8 @@ static void tri_p2(const double xi[2], double *phi, double (*dphi)[2]) {
 
 /* Tensor products of the 1-D bases; ix/iy pick the 1-D factor of each node
  * (0: at -1, 1: at +1, 2: the midpoint for Q2). */
-static void tensor(int n, const int (*ij)[2], const double *fx, const double *dfx, const double *fy,
-                   const double *dfy, double *phi, double (*dphi)[2]) {
+static void tensor(int n, const int (*ij)[2], const double *fx, const double *dfx, const double *fy, const double *dfy,
+                   double *phi, double (*dphi)[2]) {
   for (int k = 0; k < n; ++k) {
     int i = ij[k][0], j = ij[k][1];
     if (phi) phi[k] = fx[i] * fy[j];
@@ -92,16 +92,13 @@ static const double line_p2_nodes[3][2] = {{-1, 0}, {1, 0}, {0, 0}};
 static const double tri_p1_nodes[3][2] = {{0, 0}, {1, 0}, {0, 1}};
 static const double tri_p2_nodes[6][2] = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}};
 static const double quad_q1_nodes[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-static const double quad_q2_nodes[9][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {0, -1},
+static const double quad_q2_nodes[9][2] = {{-1, -1}, {1, -1}, {1, 1},  {-1, 1}, {0, -1},
                                            {1, 0},   {0, 1},  {-1, 0}, {0, 0}};
 
 static const sl_element elements[] = {
-    {"P1", SL_CELL_LINE2, 1, 1, 2, line_p1_nodes, line_p1},
-    {"P2", SL_CELL_LINE2, 2, 1, 3, line_p2_nodes, line_p2},
-    {"P1", SL_CELL_TRI3, 1, 2, 3, tri_p1_nodes, tri_p1},
-    {"P2", SL_CELL_TRI3, 2, 2, 6, tri_p2_nodes, tri_p2},
-    {"Q1", SL_CELL_QUAD4, 1, 2, 4, quad_q1_nodes, quad_q1},
-    {"Q2", SL_CELL_QUAD4, 2, 2, 9, quad_q2_nodes, quad_q2},
+    {"P1", SL_CELL_LINE2, 1, 1, 2, line_p1_nodes, line_p1}, {"P2", SL_CELL_LINE2, 2, 1, 3, line_p2_nodes, line_p2},
+    {"P1", SL_CELL_TRI3, 1, 2, 3, tri_p1_nodes, tri_p1},    {"P2", SL_CELL_TRI3, 2, 2, 6, tri_p2_nodes, tri_p2},
+    {"Q1", SL_CELL_QUAD4, 1, 2, 4, quad_q1_nodes, quad_q1}, {"Q2", SL_CELL_QUAD4, 2, 2, 9, quad_q2_nodes, quad_q2},
 };
 
 const sl_element *sl_element_lagrange(sl_cell_type cell, int order) {

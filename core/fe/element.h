@@ -19,9 +19,9 @@
 typedef struct sl_element {
   const char *name; /* "P1", "P2", "Q1", "Q2" */
   sl_cell_type cell;
-  int order;   /* polynomial order: 1 or 2 */
-  int dim;     /* 1 or 2 */
-  int n_basis; /* basis functions (= nodes) per cell */
+  int order;                /* polynomial order: 1 or 2 */
+  int dim;                  /* 1 or 2 */
+  int n_basis;              /* basis functions (= nodes) per cell */
   const double (*nodes)[2]; /* [n_basis] reference node coordinates */
   /* Values phi[n_basis] and reference gradients dphi[n_basis][2] (d/dxi,
    * d/deta; d/deta = 0 on the line) at the reference point xi. Either

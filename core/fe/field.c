@@ -68,9 +68,12 @@ int sl_fe_integrate(const sl_dofmap *dm, const double *u, int axisymmetric, doub
 static int inside_reference(sl_cell_type t, const double xi[2]) {
   const double e = SL_LOCATE_TOL;
   switch (t) {
-  case SL_CELL_LINE2: return xi[0] >= -1.0 - e && xi[0] <= 1.0 + e;
-  case SL_CELL_TRI3: return xi[0] >= -e && xi[1] >= -e && xi[0] + xi[1] <= 1.0 + e;
-  case SL_CELL_QUAD4: return fabs(xi[0]) <= 1.0 + e && fabs(xi[1]) <= 1.0 + e;
+    case SL_CELL_LINE2:
+      return xi[0] >= -1.0 - e && xi[0] <= 1.0 + e;
+    case SL_CELL_TRI3:
+      return xi[0] >= -e && xi[1] >= -e && xi[0] + xi[1] <= 1.0 + e;
+    case SL_CELL_QUAD4:
+      return fabs(xi[0]) <= 1.0 + e && fabs(xi[1]) <= 1.0 + e;
   }
   return 0;
 }

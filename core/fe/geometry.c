@@ -110,7 +110,8 @@ static int reinit(sl_fe_values *fv, int c, int gradients, sl_diag *d) {
   fv->cell = c;
   for (int q = 0; q < fv->quad.n; ++q) {
     fv->x[q][0] = fv->x[q][1] = 0.0;
-    for (int k = 0; k < n; ++k) fv->x[q][0] += fv->geom_phi[q][k] * p[k][0], fv->x[q][1] += fv->geom_phi[q][k] * p[k][1];
+    for (int k = 0; k < n; ++k)
+      fv->x[q][0] += fv->geom_phi[q][k] * p[k][0], fv->x[q][1] += fv->geom_phi[q][k] * p[k][1];
   }
   for (int q = 0; q < fv->quad.n; ++q) {
     double Jinv[2][2];

@@ -43,7 +43,7 @@ typedef struct sl_fe_values {
   double x[SL_QUAD_MAX_POINTS][2];    /* physical quadrature points */
   double J[SL_QUAD_MAX_POINTS][2][2]; /* J[q][i][j] = d x_i / d xi_j (1-D: J[q][0][0] only) */
   double detJ[SL_QUAD_MAX_POINTS];
-  double JxW[SL_QUAD_MAX_POINTS];     /* detJ * w (* r when axisymmetric) */
+  double JxW[SL_QUAD_MAX_POINTS];                                             /* detJ * w (* r when axisymmetric) */
   double grad[SL_FE_MAX_SPACES][SL_QUAD_MAX_POINTS][SL_ELEMENT_MAX_BASIS][2]; /* J^-T dphi_ref */
 } sl_fe_values;
 
@@ -81,7 +81,6 @@ const sl_element *sl_fe_geometry_element(const sl_mesh *mesh);
  * |dx/ds| (for int_face g ds = int_0^1 g |dx/ds| ds), along the curved
  * face when the mesh has second-order geometry. 2-D only. Any of x, n, ds
  * may be NULL. */
-void sl_fe_face_point(const sl_mesh *mesh, int c, int lf, double s, double xi[2], double x[2], double n[2],
-                      double *ds);
+void sl_fe_face_point(const sl_mesh *mesh, int c, int lf, double s, double xi[2], double x[2], double n[2], double *ds);
 
 #endif

@@ -8,9 +8,12 @@
 
 double sl_reference_measure(sl_cell_type cell) {
   switch (cell) {
-  case SL_CELL_LINE2: return 2.0;
-  case SL_CELL_TRI3: return 0.5;
-  case SL_CELL_QUAD4: return 4.0;
+    case SL_CELL_LINE2:
+      return 2.0;
+    case SL_CELL_TRI3:
+      return 0.5;
+    case SL_CELL_QUAD4:
+      return 4.0;
   }
   return 0.0;
 }
@@ -125,9 +128,12 @@ int sl_quadrature_for(sl_cell_type cell, int degree, sl_quadrature *q, sl_diag *
   if (degree < 0) degree = 0;
   int n = degree / 2 + 1; /* 2n - 1 >= degree */
   switch (cell) {
-  case SL_CELL_LINE2: return sl_quadrature_gauss_line(n, q, d);
-  case SL_CELL_QUAD4: return sl_quadrature_gauss_quad(n, q, d);
-  case SL_CELL_TRI3: return sl_quadrature_triangle(degree, q, d);
+    case SL_CELL_LINE2:
+      return sl_quadrature_gauss_line(n, q, d);
+    case SL_CELL_QUAD4:
+      return sl_quadrature_gauss_quad(n, q, d);
+    case SL_CELL_TRI3:
+      return sl_quadrature_triangle(degree, q, d);
   }
   return sl_diag_set(d, SL_EBADINPUT, "quadrature: unknown cell type %d", (int)cell);
 }

@@ -17,7 +17,8 @@ int sl_cell_scalar_init(sl_cell_scalar *cs, const sl_fv_grid *g, sl_diag *d) {
     return sl_diag_set(d, SL_ENOMEM, "cell scalar: out of memory");
   }
   for (int c = 0; c < nc; ++c)
-    for (int dir = 0; dir < 2; ++dir) pairs[4 * c + 2 * dir] = c, pairs[4 * c + 2 * dir + 1] = sl_fv_neighbour(g, c, dir, 1);
+    for (int dir = 0; dir < 2; ++dir)
+      pairs[4 * c + 2 * dir] = c, pairs[4 * c + 2 * dir + 1] = sl_fv_neighbour(g, c, dir, 1);
   int rc = sl_csr_build_uniform(&cs->A, nc, 2 * nc, 2, pairs, d);
   free(pairs);
   if (!rc) rc = sl_linsolve_create(&cs->ls, "klu", d);

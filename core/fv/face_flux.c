@@ -12,11 +12,11 @@ struct sl_face_flux {
   unsigned char *adjustable; /* [n_faces] */
   unsigned char *closed;     /* [n_faces] or NULL: faces whose flux is zero (sl_face_flux_close) */
   int n_pairs;
-  int *pairs;                /* [2 n_pairs] periodic face pairs (fa, fb): one face between their owners */
-  sl_csr L;                  /* cell graph Laplacian over adjustable faces, one cell pinned if closed */
+  int *pairs; /* [2 n_pairs] periodic face pairs (fa, fb): one face between their owners */
+  sl_csr L;   /* cell graph Laplacian over adjustable faces, one cell pinned if closed */
   sl_linsolve *ls;
-  int pinned;                /* the pinned cell, -1 when L is regular */
-  double *div, *lambda;      /* [n_cells] */
+  int pinned;           /* the pinned cell, -1 when L is regular */
+  double *div, *lambda; /* [n_cells] */
 };
 
 void sl_face_flux_destroy(sl_face_flux *ff) {
@@ -94,7 +94,8 @@ int sl_face_flux_create(const sl_th_space *th, int axisymmetric, const unsigned 
   ptr[0] = 0;
   for (int c = 0; c < nc; ++c) rows[at++] = c, ptr[++ne] = at;
   for (int f = 0; f < nf; ++f)
-    if (m->face_cells[2 * f + 1] >= 0) rows[at++] = m->face_cells[2 * f], rows[at++] = m->face_cells[2 * f + 1], ptr[++ne] = at;
+    if (m->face_cells[2 * f + 1] >= 0)
+      rows[at++] = m->face_cells[2 * f], rows[at++] = m->face_cells[2 * f + 1], ptr[++ne] = at;
   for (int k = 0; k < n_pairs; ++k)
     rows[at++] = m->face_cells[2 * pairs[2 * k]], rows[at++] = m->face_cells[2 * pairs[2 * k + 1]], ptr[++ne] = at;
   if ((rc = sl_csr_build(&ff->L, nc, nc, ne, ptr, rows, NULL, NULL, d))) goto out;

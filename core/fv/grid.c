@@ -54,7 +54,8 @@ int sl_fv_grid_build(sl_fv_grid *m, const sl_tensor_grid *g, int axi, const int 
 }
 
 int sl_fv_grid_block(sl_fv_grid *m, const int *body, int tag_base, sl_diag *d) {
-  if (!(m->blocked = malloc((size_t)m->nc * sizeof *m->blocked))) return sl_diag_set(d, SL_ENOMEM, "grid: out of memory");
+  if (!(m->blocked = malloc((size_t)m->nc * sizeof *m->blocked)))
+    return sl_diag_set(d, SL_ENOMEM, "grid: out of memory");
   memcpy(m->blocked, body, (size_t)m->nc * sizeof *body);
   for (int f = 0; f < m->nf; ++f) {
     int lo = m->lo[f], hi = m->hi[f], blo = lo >= 0 ? body[lo] : -1, bhi = hi >= 0 ? body[hi] : -1;

@@ -21,7 +21,7 @@ typedef struct sl_fv_grid {
   const sl_tensor_grid *tg; /* the grid lines, the sides' boundary tags (not owned) */
   int nx, ny, nc, nfx, nf;
   int axi;
-  int periodic[2];         /* along x, along y */
+  int periodic[2];           /* along x, along y */
   double *xc, *yc, *hx, *hy; /* cell centres and sizes along x [nx], y [ny] */
   double *vol;               /* [nc] */
   double *area, *dist;       /* [nf]: face area, centre-to-centre distance (half a cell at a boundary) */

@@ -8,7 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-
 void sl_stream_graph_free(sl_stream_graph *g) {
   free(g->start), free(g->face), free(g->queue), free(g->seen);
   memset(g, 0, sizeof *g);
@@ -25,7 +24,8 @@ int sl_stream_graph_build(sl_stream_graph *g, const sl_mesh *m) {
   for (int v = 0; v < nv; ++v) g->start[v + 1] += g->start[v];
   int *fill = g->queue; /* scratch */
   memcpy(fill, g->start, (size_t)nv * sizeof *fill);
-  for (int f = 0; f < nf; ++f) g->face[fill[m->face_vertices[2 * f]]++] = f, g->face[fill[m->face_vertices[2 * f + 1]]++] = f;
+  for (int f = 0; f < nf; ++f)
+    g->face[fill[m->face_vertices[2 * f]]++] = f, g->face[fill[m->face_vertices[2 * f + 1]]++] = f;
   return 0;
 }
 
@@ -44,7 +44,6 @@ void sl_stream_function(const sl_mesh *m, sl_stream_graph *g, const double *q, d
     }
   }
 }
-
 
 void sl_stream_function_nodes(const sl_th_space *th, sl_stream_graph *g, const double *q, double *psi,
                               double *node_psi) {

@@ -215,8 +215,7 @@ static int read_slot(const char *path, hid_t slot, const char *sname, sl_checkpo
       rc = sl_diag_set(d, SL_EBADINPUT, "%s: %s is not a 1-D array", path, dname);
     } else if (dim > 0) {
       double *buf = malloc((size_t)dim * sizeof *buf);
-      if (!buf)
-        rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading %s", path, dname);
+      if (!buf) rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading %s", path, dname);
       else if (H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) < 0)
         rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot read dataset", dname);
       a->data = buf;
@@ -242,12 +241,10 @@ int sl_checkpoint_read(const char *path, sl_checkpoint *ck, sl_diag *d) {
   }
   hid_t top = H5Gopen2(f, "checkpoint", H5P_DEFAULT);
   int64_t cur = -1;
-  if (top < 0)
-    rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot open group", "/checkpoint");
+  if (top < 0) rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot open group", "/checkpoint");
   else if (H5Aexists(top, "current") <= 0)
     rc = sl_diag_set(d, SL_EBADINPUT, "%s: no complete checkpoint (/checkpoint@current is missing)", path);
-  else
-    rc = sl_h5_read_attr_int64(top, "current", &cur, path, "/checkpoint", d);
+  else rc = sl_h5_read_attr_int64(top, "current", &cur, path, "/checkpoint", d);
   if (!rc && cur != 0 && cur != 1)
     rc = sl_diag_set(d, SL_EBADINPUT, "%s: /checkpoint@current is %lld, not 0 or 1", path, (long long)cur);
   if (!rc) {

@@ -189,8 +189,7 @@ int sl_h5_read_attr_string(hid_t loc, const char *name, char *buf, size_t len, c
   int rc = 0;
   if (sl_h5_read_string(a, 1, &text) != 0)
     rc = sl_h5_fail(d, SL_EBADINPUT, file, "cannot read the string attribute", where);
-  else
-    snprintf(buf, len, "%s", text);
+  else snprintf(buf, len, "%s", text);
   free(text);
   H5Aclose(a);
   return rc;

@@ -62,8 +62,8 @@ typedef struct sl_out_scalar {
 } sl_out_scalar;
 
 struct sl_output {
-  char *path;          /* the name the user gave: messages, the final name */
-  char *tmp_path;      /* written under this name until the first output time is complete */
+  char *path;     /* the name the user gave: messages, the final name */
+  char *tmp_path; /* written under this name until the first output time is complete */
   char *xmf_path, *csv_path;
   const char *h5_name; /* base name of path, used inside the sidecar */
   int committed;       /* renamed to path: the old result is gone */

@@ -11,16 +11,15 @@
 #include <unistd.h>
 
 #include "core/io/h5util.h"
-#include "core/util/blas.h"
 #include "core/io/output.h"
+#include "core/util/blas.h"
 
 static const struct {
   const char *name;
   int nodes;
 } topologies[] = {
     /* Edge_3 is the 1-D P2 cell: the 2 end vertices, then the midpoint. */
-    {"Polyline", 2},      {"Edge_3", 3},     {"Triangle", 3},
-    {"Quadrilateral", 4}, {"Triangle_6", 6}, {"Quadrilateral_9", 9},
+    {"Polyline", 2}, {"Edge_3", 3}, {"Triangle", 3}, {"Quadrilateral", 4}, {"Triangle_6", 6}, {"Quadrilateral_9", 9},
 };
 enum { N_TOPOLOGIES = (int)(sizeof topologies / sizeof topologies[0]) };
 
@@ -304,8 +303,8 @@ int sl_output_write_field(sl_output *o, const char *name, sl_centring centring, 
   return sl_output_write_field_unit(o, name, sl_io_default_unit(name), centring, components, values, d);
 }
 
-int sl_output_write_field_unit(sl_output *o, const char *name, const char *unit, sl_centring centring,
-                               int components, const double *values, sl_diag *d) {
+int sl_output_write_field_unit(sl_output *o, const char *name, const char *unit, sl_centring centring, int components,
+                               const double *values, sl_diag *d) {
   if (o->discard) return 0;
   if (!unit) unit = "";
   if (!o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: field '%s' written outside a step", o->path, name);
@@ -413,7 +412,8 @@ int sl_output_write_provenance(sl_output *o, const sl_provenance *p, sl_diag *d)
   if (ex > 0 && H5Ldelete(o->file, "provenance", H5P_DEFAULT) < 0)
     return sl_h5_fail(d, SL_EFAILED, path, "cannot replace", "/provenance");
   double text = (double)strlen(p->ini_text ? p->ini_text : "");
-  for (int i = 0; i < p->n_closures; ++i) text += 1024.0 + strlen(p->closures[i].parameters ? p->closures[i].parameters : "");
+  for (int i = 0; i < p->n_closures; ++i)
+    text += 1024.0 + strlen(p->closures[i].parameters ? p->closures[i].parameters : "");
   int src = sl_io_space_check(o, text, "the provenance", d);
   if (src) return src;
   hid_t g = H5Gcreate2(o->file, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), cg = -1;
@@ -456,14 +456,13 @@ int sl_output_write_provenance(sl_output *o, const sl_provenance *p, sl_diag *d)
 static herr_t close_file(hid_t file) {
   herr_t st = 0;
   for (int pass = 0; pass < 1; ++pass) {
-    ssize_t n = H5Fget_obj_count(file, H5F_OBJ_DATASET | H5F_OBJ_GROUP | H5F_OBJ_DATATYPE | H5F_OBJ_ATTR |
-                                           H5F_OBJ_LOCAL);
+    ssize_t n =
+        H5Fget_obj_count(file, H5F_OBJ_DATASET | H5F_OBJ_GROUP | H5F_OBJ_DATATYPE | H5F_OBJ_ATTR | H5F_OBJ_LOCAL);
     if (n > 0) {
       hid_t *ids = malloc((size_t)n * sizeof *ids);
       if (ids) {
-        ssize_t k = H5Fget_obj_ids(file, H5F_OBJ_DATASET | H5F_OBJ_GROUP | H5F_OBJ_DATATYPE | H5F_OBJ_ATTR |
-                                             H5F_OBJ_LOCAL,
-                                   (size_t)n, ids);
+        ssize_t k = H5Fget_obj_ids(
+            file, H5F_OBJ_DATASET | H5F_OBJ_GROUP | H5F_OBJ_DATATYPE | H5F_OBJ_ATTR | H5F_OBJ_LOCAL, (size_t)n, ids);
         for (ssize_t i = 0; i < k; ++i) {
           H5I_type_t t = H5Iget_type(ids[i]);
           if (t == H5I_DATASET) H5Dclose(ids[i]);

@@ -56,7 +56,7 @@ typedef struct sl_output_opts {
   int from_scene;
   const char *scene_dir; /* NULL: the working folder only */
   int overwrite;
-  const char *protect;   /* may be NULL */
+  const char *protect; /* may be NULL */
   /* more files never replaced (the files the scene includes) */
   const char *const *protect_more;
   int n_protect_more;
@@ -97,8 +97,8 @@ int sl_output_write_field(sl_output *out, const char *name, sl_centring centring
                           sl_diag *d);
 /* The same with its unit (SI, e.g. "m/s", "Pa", "1" for a pure number);
  * sl_output_write_field takes the unit known for the name (units.c). */
-int sl_output_write_field_unit(sl_output *out, const char *name, const char *unit, sl_centring centring,
-                               int components, const double *values, sl_diag *d);
+int sl_output_write_field_unit(sl_output *out, const char *name, const char *unit, sl_centring centring, int components,
+                               const double *values, sl_diag *d);
 int sl_output_end_step(sl_output *out, sl_diag *d);
 /* A number belonging to the open output time (an attribute of its group):
  * diagnostics such as the solids inventory. */

@@ -92,16 +92,16 @@ static int may_replace(const char *file, int kind, const char *h5_name, const sl
                          file, p, i < 0 ? " itself" : ", which the scene includes");
   }
   if (lstat(file, &sb) != 0) return 0;
-  if (S_ISDIR(sb.st_mode))
-    return sl_diag_set(d, SL_EBADINPUT, "cannot write output '%s': it is a directory", file);
+  if (S_ISDIR(sb.st_mode)) return sl_diag_set(d, SL_EBADINPUT, "cannot write output '%s': it is a directory", file);
   if (o->overwrite) return 0;
   if (!S_ISREG(sb.st_mode))
     return sl_diag_set(d, SL_EBADINPUT,
                        "output '%s' exists and is not a regular file (%s); refusing to replace it "
                        "(run with --overwrite to replace it)",
                        file, S_ISLNK(sb.st_mode) ? "a symbolic link" : "a device, FIFO or socket");
-  int ours = kind == KIND_H5 ? sl_io_is_sluice_h5(file) : kind == KIND_XMF ? is_sluice_xmf(file, h5_name)
-                                                                           : is_sluice_csv(file);
+  int ours = kind == KIND_H5    ? sl_io_is_sluice_h5(file)
+             : kind == KIND_XMF ? is_sluice_xmf(file, h5_name)
+                                : is_sluice_csv(file);
   if (!ours)
     return sl_diag_set(d, SL_EBADINPUT,
                        "output '%s' exists and was not written by sluice; refusing to replace it (choose another "
@@ -162,8 +162,8 @@ int sl_output_check_path(const char *path, const sl_output_opts *opts, sl_diag *
     /* a scene of unknown origin writes only where the user looks: its own
      * folder or the working folder (or below them) */
     char real_dir[PATH_MAX], real_scene[PATH_MAX], real_cwd[PATH_MAX];
-    int in_scene = o->scene_dir && realpath(o->scene_dir, real_scene) && realpath(dir, real_dir) &&
-                   inside(real_dir, real_scene);
+    int in_scene =
+        o->scene_dir && realpath(o->scene_dir, real_scene) && realpath(dir, real_dir) && inside(real_dir, real_scene);
     int in_cwd = getcwd(real_cwd, sizeof real_cwd) && realpath(dir, real_dir) && inside(real_dir, real_cwd);
     if (!in_scene && !in_cwd)
       rc = sl_diag_set(d, SL_EBADINPUT,

@@ -26,8 +26,7 @@ static int read_array(const char *path, hid_t loc, const char *name, hid_t mtype
     *rank = r;
     size_t count = (size_t)dims[0] * (r == 2 ? (size_t)dims[1] : 1);
     *buf = malloc(count * elem + 1);
-    if (!*buf)
-      rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading %s", path, name);
+    if (!*buf) rc = sl_diag_set(d, SL_ENOMEM, "%s: out of memory reading %s", path, name);
     else if (count > 0 && H5Dread(ds, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, *buf) < 0)
       rc = sl_h5_fail(d, SL_EBADINPUT, path, "cannot read dataset", name);
   }

@@ -19,9 +19,8 @@ static const struct {
   sl_cell_type cell;
   int order;
 } topologies[] = {
-    {"Polyline", SL_CELL_LINE2, 1},      {"Edge_3", SL_CELL_LINE2, 2},
-    {"Triangle", SL_CELL_TRI3, 1},       {"Triangle_6", SL_CELL_TRI3, 2},
-    {"Quadrilateral", SL_CELL_QUAD4, 1}, {"Quadrilateral_9", SL_CELL_QUAD4, 2},
+    {"Polyline", SL_CELL_LINE2, 1},  {"Edge_3", SL_CELL_LINE2, 2},        {"Triangle", SL_CELL_TRI3, 1},
+    {"Triangle_6", SL_CELL_TRI3, 2}, {"Quadrilateral", SL_CELL_QUAD4, 1}, {"Quadrilateral_9", SL_CELL_QUAD4, 2},
 };
 
 /* Same tolerance as sl_fe_locate: a point on a face belongs to both cells. */
@@ -173,10 +172,8 @@ static int locator_build(locator *L, const sl_output_mesh *m, const char *path, 
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) {
           size_t b = (size_t)j * (size_t)L->nb[0] + (size_t)i;
-          if (pass == 0)
-            ++L->start[b + 1];
-          else
-            L->cells[L->start[b]++] = c;
+          if (pass == 0) ++L->start[b + 1];
+          else L->cells[L->start[b]++] = c;
         }
     }
     if (pass == 0) {
@@ -230,9 +227,12 @@ static int try_cell(const locator *L, int c, const double x[2], double xi[2]) {
   if (!converged) return 0; /* far outside a bilinear cell Newton may wander */
   const double e = INSIDE_TOL;
   switch (L->geo->cell) {
-  case SL_CELL_LINE2: return fabs(xi[0]) <= 1.0 + e;
-  case SL_CELL_TRI3: return xi[0] >= -e && xi[1] >= -e && xi[0] + xi[1] <= 1.0 + e;
-  case SL_CELL_QUAD4: return fabs(xi[0]) <= 1.0 + e && fabs(xi[1]) <= 1.0 + e;
+    case SL_CELL_LINE2:
+      return fabs(xi[0]) <= 1.0 + e;
+    case SL_CELL_TRI3:
+      return xi[0] >= -e && xi[1] >= -e && xi[0] + xi[1] <= 1.0 + e;
+    case SL_CELL_QUAD4:
+      return fabs(xi[0]) <= 1.0 + e && fabs(xi[1]) <= 1.0 + e;
   }
   return 0;
 }

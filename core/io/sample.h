@@ -41,8 +41,8 @@ void sl_sample_free(sl_sample *s);
 typedef struct sl_output_field_info {
   char name[256];
   sl_centring centring;
-  int components;        /* as stored: 1 or 3 */
-  int n_steps;           /* steps holding the field */
+  int components;         /* as stored: 1 or 3 */
+  int n_steps;            /* steps holding the field */
   double t_first, t_last; /* times of the first and last of them */
 } sl_output_field_info;
 

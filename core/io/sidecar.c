@@ -61,23 +61,31 @@ sb_printf(sbuf *b, const char *fmt, ...) {
 static void sb_xml(sbuf *b, const char *s) {
   for (; *s; ++s) {
     switch (*s) {
-      case '&': sb_printf(b, "&amp;"); break;
-      case '<': sb_printf(b, "&lt;"); break;
-      case '>': sb_printf(b, "&gt;"); break;
-      case '"': sb_printf(b, "&quot;"); break;
-      case '\'': sb_printf(b, "&apos;"); break;
-      default: sb_printf(b, "%c", *s);
+      case '&':
+        sb_printf(b, "&amp;");
+        break;
+      case '<':
+        sb_printf(b, "&lt;");
+        break;
+      case '>':
+        sb_printf(b, "&gt;");
+        break;
+      case '"':
+        sb_printf(b, "&quot;");
+        break;
+      case '\'':
+        sb_printf(b, "&apos;");
+        break;
+      default:
+        sb_printf(b, "%c", *s);
     }
   }
 }
 
 static void sb_number(sbuf *b, double v) {
-  if (isnan(v))
-    sb_printf(b, "nan");
-  else if (isinf(v))
-    sb_printf(b, "%sinf", v < 0 ? "-" : "");
-  else
-    sb_printf(b, "%.17g", v);
+  if (isnan(v)) sb_printf(b, "nan");
+  else if (isinf(v)) sb_printf(b, "%sinf", v < 0 ? "-" : "");
+  else sb_printf(b, "%.17g", v);
 }
 
 char *sl_sidecar_grid(const sl_output *o, int index) {
@@ -99,10 +107,8 @@ char *sl_sidecar_grid(const sl_output *o, int index) {
     sb_xml(&b, f->name);
     sb_printf(&b, "\" AttributeType=\"%s\" Center=\"%s\">\n", f->components == 1 ? "Scalar" : "Vector",
               f->centring == SL_CENTRE_NODE ? "Node" : "Cell");
-    if (f->components == 1)
-      sb_printf(&b, "     <DataItem Dimensions=\"%d\"", (int)f->n);
-    else
-      sb_printf(&b, "     <DataItem Dimensions=\"%d 3\"", (int)f->n);
+    if (f->components == 1) sb_printf(&b, "     <DataItem Dimensions=\"%d\"", (int)f->n);
+    else sb_printf(&b, "     <DataItem Dimensions=\"%d 3\"", (int)f->n);
     sb_printf(&b, " NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">");
     sb_xml(&b, o->h5_name);
     sb_printf(&b, ":/step_%06d/", index);
@@ -129,7 +135,8 @@ char *sl_sidecar_grid(const sl_output *o, int index) {
   return b.s;
 }
 
-static const char xmf_head[] = "<?xml version=\"1.0\" ?>\n<!-- written by sluice -->\n<Xdmf Version=\"3.0\">\n <Domain>\n";
+static const char xmf_head[] =
+    "<?xml version=\"1.0\" ?>\n<!-- written by sluice -->\n<Xdmf Version=\"3.0\">\n <Domain>\n";
 static const char xmf_tail[] = "  </Grid>\n </Domain>\n</Xdmf>\n";
 
 static void grid_in_collection(sbuf *b, int index, double t, const char *body) {
@@ -202,8 +209,9 @@ static int xmf_step(sl_output *o, char *body, int index, double t, sl_diag *d) {
 /* /scalar_units@NAME = unit, once for each scalar name. */
 static int note_unit(sl_output *o, const char *name, const char *unit, sl_diag *d) {
   htri_t ex = H5Lexists(o->file, "scalar_units", H5P_DEFAULT);
-  hid_t g = ex > 0 ? H5Gopen2(o->file, "scalar_units", H5P_DEFAULT)
-                   : ex == 0 ? H5Gcreate2(o->file, "scalar_units", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : -1;
+  hid_t g = ex > 0    ? H5Gopen2(o->file, "scalar_units", H5P_DEFAULT)
+            : ex == 0 ? H5Gcreate2(o->file, "scalar_units", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)
+                      : -1;
   if (g < 0) return sl_h5_fail(d, SL_EFAILED, o->path, "cannot open group", "/scalar_units");
   int rc = sl_h5_attr_string(g, name, unit, o->path, "/scalar_units", d);
   if (H5Gclose(g) < 0 && !rc) rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot close group", "/scalar_units");

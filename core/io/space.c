@@ -37,10 +37,8 @@ int sl_io_space_check(const sl_output *o, double bytes, const char *what, sl_dia
   char dir[4096];
   snprintf(dir, sizeof dir, "%s", file);
   char *slash = strrchr(dir, '/');
-  if (slash)
-    slash == dir ? (void)(slash[1] = 0) : (void)(*slash = 0);
-  else
-    snprintf(dir, sizeof dir, ".");
+  if (slash) slash == dir ? (void)(slash[1] = 0) : (void)(*slash = 0);
+  else snprintf(dir, sizeof dir, ".");
   struct statvfs vs;
   /* cannot tell (or a file system that reports no size, as some network and
    * FUSE ones do): let the write say */

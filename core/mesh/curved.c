@@ -67,9 +67,9 @@ static double det_at(sl_cell_type t, double (*x)[2], const double xi[2]) {
 static int check_points(sl_cell_type t, double (*xi)[2]) {
   int n = 0;
   if (t == SL_CELL_TRI3) {
-    static const double p[][2] = {{0, 0},     {1, 0},    {0, 1},        {0.5, 0},     {0.5, 0.5},
-                                  {0, 0.5},   {1. / 3, 1. / 3}, {0.1, 0.1}, {0.8, 0.1},  {0.1, 0.8},
-                                  {0.45, 0.1}, {0.45, 0.45}, {0.1, 0.45}};
+    static const double p[][2] = {{0, 0},      {1, 0},           {0, 1},     {0.5, 0},   {0.5, 0.5},
+                                  {0, 0.5},    {1. / 3, 1. / 3}, {0.1, 0.1}, {0.8, 0.1}, {0.1, 0.8},
+                                  {0.45, 0.1}, {0.45, 0.45},     {0.1, 0.45}};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; ++k) xi[n][0] = p[k][0], xi[n][1] = p[k][1], ++n;
     return n;
   }
@@ -99,12 +99,9 @@ int sl_mesh_check_curved(const sl_mesh *m, const char *source, const int *cell_l
         if (w < 0) break;
         used += (size_t)w;
       }
-      if (source && cell_line)
-        snprintf(at, sizeof at, "%s:%d: ", source, cell_line[c]);
-      else if (source)
-        snprintf(at, sizeof at, "%s: ", source);
-      else
-        at[0] = '\0';
+      if (source && cell_line) snprintf(at, sizeof at, "%s:%d: ", source, cell_line[c]);
+      else if (source) snprintf(at, sizeof at, "%s: ", source);
+      else at[0] = '\0';
       return sl_diag_set(d, SL_EBADINPUT,
                          "%scell %d folds under its second-order map: det J = %.3g at the reference point (%g, %g) "
                          "(its face nodes lie too far from the straight edges for its size; refine the mesh near "
@@ -137,8 +134,7 @@ void sl_mesh_face_point(const sl_mesh *m, int f, double s, double x[2], double t
 double sl_mesh_face_arc_length(const sl_mesh *m, int f) {
   if (m->dim == 1 || m->geom_order < 2) return sl_mesh_face_length(m, f);
   /* Gauss-Legendre, 5 points on [0, 1] */
-  static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
-                               0.9061798459386640};
+  static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
   static const double gw[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
                                0.2369268850561891};
   double len = 0;

@@ -208,8 +208,8 @@ done:
 
 static const char *const rect_names[4] = {"bottom", "right", "top", "left"};
 
-int sl_mesh_rectangle(double x0, double x1, double y0, double y1, int nx, int ny, const sl_grid_opts *o,
-                      sl_mesh **out, sl_diag *d) {
+int sl_mesh_rectangle(double x0, double x1, double y0, double y1, int nx, int ny, const sl_grid_opts *o, sl_mesh **out,
+                      sl_diag *d) {
   return grid("rectangle", x0, x1, y0, y1, nx, ny, o, rect_names, 0, 0, out, d);
 }
 

@@ -14,14 +14,14 @@
 #include <ctype.h>
 #include <errno.h>
 #include <fcntl.h>
-#include <stdint.h>
-#include <sys/stat.h>
-#include <unistd.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "core/mesh/mesh.h"
 
@@ -33,9 +33,9 @@ typedef struct g_node {
 
 typedef struct g_elem {
   long tag;
-  int type;     /* Gmsh element type code */
-  long entity;  /* elementary entity tag */
-  long phys;    /* physical group tag, 0 when none */
+  int type;    /* Gmsh element type code */
+  long entity; /* elementary entity tag */
+  long phys;   /* physical group tag, 0 when none */
   int line;
   const struct g_entity *multi; /* 4.1: its entity when that is in several physical groups */
   int nn;
@@ -59,10 +59,10 @@ typedef struct g_entity {
 typedef struct gmsh {
   const char *name, *text;
   size_t len, pos;
-  int line;   /* number of the line last read (binary sections: -1 - the byte offset) */
-  char *buf;  /* that line, NUL-terminated, without the end of line */
+  int line;  /* number of the line last read (binary sections: -1 - the byte offset) */
+  char *buf; /* that line, NUL-terminated, without the end of line */
   size_t cap;
-  int version; /* 22 or 41 */
+  int version;      /* 22 or 41 */
   int binary, swap; /* a binary 4.1 file; swap: written big-endian */
   g_node *nodes;
   int n_nodes, cap_nodes;
@@ -127,10 +127,8 @@ static const char *next_line(gmsh *g) {
   memcpy(g->buf, g->text + start, n);
   g->buf[n] = '\0';
   /* An embedded NUL ends the line: binary data is caught by the number parsers. */
-  if (g->binary)
-    g->line = -1 - (int)start; /* a binary file has no useful line numbers: its byte offsets */
-  else
-    ++g->line;
+  if (g->binary) g->line = -1 - (int)start; /* a binary file has no useful line numbers: its byte offsets */
+  else ++g->line;
   return g->buf;
 }
 
@@ -189,14 +187,22 @@ static int expect_end(gmsh *g, const char *section, const char *end) {
 
 static int nodes_of_type(int type) {
   switch (type) {
-    case 1: return 2;
-    case 2: return 3;
-    case 3: return 4;
-    case 8: return 3;
-    case 9: return 6;
-    case 10: return 9;
-    case 15: return 1;
-    case 16: return 8;
+    case 1:
+      return 2;
+    case 2:
+      return 3;
+    case 3:
+      return 4;
+    case 8:
+      return 3;
+    case 9:
+      return 6;
+    case 10:
+      return 9;
+    case 15:
+      return 1;
+    case 16:
+      return 8;
   }
   return 0;
 }
@@ -208,20 +214,34 @@ static int second_order(int type) { return type == 8 || type == 9 || type == 10 
 
 static const char *type_name(int type) {
   switch (type) {
-    case 1: return "2-node line";
-    case 2: return "3-node triangle";
-    case 3: return "4-node quadrangle";
-    case 4: return "4-node tetrahedron";
-    case 5: return "8-node hexahedron";
-    case 6: return "6-node prism";
-    case 7: return "5-node pyramid";
-    case 8: return "3-node line";
-    case 9: return "6-node triangle";
-    case 10: return "9-node quadrangle";
-    case 11: return "10-node tetrahedron";
-    case 15: return "point";
-    case 16: return "8-node quadrangle";
-    case 21: return "10-node triangle";
+    case 1:
+      return "2-node line";
+    case 2:
+      return "3-node triangle";
+    case 3:
+      return "4-node quadrangle";
+    case 4:
+      return "4-node tetrahedron";
+    case 5:
+      return "8-node hexahedron";
+    case 6:
+      return "6-node prism";
+    case 7:
+      return "5-node pyramid";
+    case 8:
+      return "3-node line";
+    case 9:
+      return "6-node triangle";
+    case 10:
+      return "9-node quadrangle";
+    case 11:
+      return "10-node tetrahedron";
+    case 15:
+      return "point";
+    case 16:
+      return "8-node quadrangle";
+    case 21:
+      return "10-node triangle";
   }
   return "unknown type";
 }
@@ -248,10 +268,8 @@ static int read_format(gmsh *g) {
   int file_type = -1, data_size = 0;
   if (sscanf(l, "%31s %d %d", version, &file_type, &data_size) != 3)
     return err(g, line, "malformed $MeshFormat line \"%.40s\" (expected: version file-type data-size)", l);
-  if (strcmp(version, "2.2") == 0)
-    g->version = 22;
-  else if (strcmp(version, "4.1") == 0)
-    g->version = 41;
+  if (strcmp(version, "2.2") == 0) g->version = 22;
+  else if (strcmp(version, "4.1") == 0) g->version = 41;
   else
     return err(g, line,
                "MSH format version %s is not supported; sluice reads ASCII MSH 2.2 and 4.1 "
@@ -261,8 +279,9 @@ static int read_format(gmsh *g) {
     return err(g, line, "file type %d in $MeshFormat: 0 (ASCII) or 1 (binary) expected", file_type);
   if (file_type == 1) {
     if (g->version != 41)
-      return err(g, line, "binary MSH 2.2 files are not supported; sluice reads binary MSH 4.1 and ASCII 2.2 and 4.1 "
-                          "(write with -format msh41)");
+      return err(g, line,
+                 "binary MSH 2.2 files are not supported; sluice reads binary MSH 4.1 and ASCII 2.2 and 4.1 "
+                 "(write with -format msh41)");
     if (data_size != 8)
       return err(g, line, "data size %d in $MeshFormat: binary files with 8-byte sizes are supported", data_size);
     /* the integer 1 in the writer's byte order, then the end of the line */
@@ -414,8 +433,7 @@ static int read_nodes(gmsh *g) {
     }
     seen += n;
   }
-  if (seen != total)
-    return err(g, g->line, "$Nodes announces %ld nodes but its blocks hold %ld", total, seen);
+  if (seen != total) return err(g, g->line, "$Nodes announces %ld nodes but its blocks hold %ld", total, seen);
   return expect_end(g, "$Nodes", "$EndNodes");
 }
 
@@ -595,7 +613,8 @@ static int read_nodes_bin(gmsh *g) {
   int rc;
   if ((rc = b_size(g, S, "the number of node blocks", b_left(g) / 20, &blocks)) ||
       (rc = b_size(g, S, "the number of nodes", b_left(g) / 32, &total)) ||
-      (rc = b_size(g, S, "the smallest node tag", LONG_MAX, &lo)) || (rc = b_size(g, S, "the largest node tag", LONG_MAX, &hi)))
+      (rc = b_size(g, S, "the smallest node tag", LONG_MAX, &lo)) ||
+      (rc = b_size(g, S, "the largest node tag", LONG_MAX, &hi)))
     return rc;
   for (long b = 0; b < blocks; ++b) {
     long edim, etag, param, n;
@@ -740,10 +759,8 @@ static long find_node(const gmsh *g, long tag) {
   long a = 0, b = g->n_nodes;
   while (a < b) {
     long m = a + (b - a) / 2;
-    if (g->nodes[m].tag < tag)
-      a = m + 1;
-    else
-      b = m;
+    if (g->nodes[m].tag < tag) a = m + 1;
+    else b = m;
   }
   return a < g->n_nodes && g->nodes[a].tag == tag ? a : -1;
 }
@@ -800,7 +817,10 @@ static int build(gmsh *g, const sl_gmsh_opts *opts, sl_mesh **out) {
       rc = err(g, e->line,
                "element %ld is in physical group %ld but the file has no $PhysicalNames section: boundaries and "
                "regions need names (in the .geo: Physical %s(\"name\") = {...})",
-               e->tag, e->phys, e->type == 15 ? "Point" : is_line(e->type) ? "Curve" : "Surface");
+               e->tag, e->phys,
+               e->type == 15      ? "Point"
+               : is_line(e->type) ? "Curve"
+                                  : "Surface");
       goto done;
     }
     if ((is_cell || is_side) && e->multi) {
@@ -818,10 +838,8 @@ static int build(gmsh *g, const sl_gmsh_opts *opts, sl_mesh **out) {
         first_cell_line = e->line;
       } else if (dim == 2 && is_tri(e->type) != is_tri(cell_type) && !opts->split_quads) {
         char where_first[64];
-        if (first_cell_line < 0)
-          snprintf(where_first, sizeof where_first, "byte %d", -first_cell_line - 1);
-        else
-          snprintf(where_first, sizeof where_first, "line %d", first_cell_line);
+        if (first_cell_line < 0) snprintf(where_first, sizeof where_first, "byte %d", -first_cell_line - 1);
+        else snprintf(where_first, sizeof where_first, "line %d", first_cell_line);
         rc = err(g, e->line,
                  "element %ld is a %s but the cells before it are %ss (%s): a mesh of both triangles and "
                  "quadrangles is not supported (sluice's meshes have one cell type, and its Taylor-Hood pairs are "
@@ -876,7 +894,8 @@ static int build(gmsh *g, const sl_gmsh_opts *opts, sl_mesh **out) {
   /* Nodes by tag; then vertex numbers for the corner nodes of the cells. */
   /* split_quads: every quadrangle becomes two triangles (split in the cell loop below) */
   int n_quads = 0, curved = 0;
-  for (int c = 0; c < n_cells && dim == 2; ++c) curved |= second_order(cells[c]->type), n_quads += is_quad(cells[c]->type);
+  for (int c = 0; c < n_cells && dim == 2; ++c)
+    curved |= second_order(cells[c]->type), n_quads += is_quad(cells[c]->type);
   const int split = dim == 2 && opts->split_quads && n_quads > 0;
   const int nvc = dim == 2 ? (split || is_tri(cell_type) ? 3 : 4) : 2, per_side = dim == 2 ? 2 : 1;
   const int n_out = n_cells + (split ? n_quads : 0);
@@ -884,7 +903,8 @@ static int build(gmsh *g, const sl_gmsh_opts *opts, sl_mesh **out) {
   for (int i = 1; i < g->n_nodes; ++i)
     if (g->nodes[i].tag == g->nodes[i - 1].tag) {
       int l1 = g->nodes[i].line, l0 = g->nodes[i - 1].line;
-      rc = err(g, l1 > l0 ? l1 : l0, "node tag %ld is used twice (also on line %d)", g->nodes[i].tag, l1 > l0 ? l0 : l1);
+      rc =
+          err(g, l1 > l0 ? l1 : l0, "node tag %ld is used twice (also on line %d)", g->nodes[i].tag, l1 > l0 ? l0 : l1);
       goto done;
     }
   vmap = malloc(((size_t)g->n_nodes + 1) * sizeof *vmap);
@@ -915,7 +935,8 @@ static int build(gmsh *g, const sl_gmsh_opts *opts, sl_mesh **out) {
   for (int i = 0; i < n_sides; ++i)
     for (int k = 0; k < per_side; ++k)
       if (vmap[sides[i]->nodes[k]] < 0) {
-        rc = err(g, sides[i]->line, "%s element %ld (physical group %ld) is not on any cell: node %ld is a vertex of no cell",
+        rc = err(g, sides[i]->line,
+                 "%s element %ld (physical group %ld) is not on any cell: node %ld is a vertex of no cell",
                  dim == 2 ? "line" : "point", sides[i]->tag, sides[i]->phys, g->nodes[sides[i]->nodes[k]].tag);
         goto done;
       }
@@ -1109,7 +1130,9 @@ static int build(gmsh *g, const sl_gmsh_opts *opts, sl_mesh **out) {
   }
 
   sl_mesh_spec s = {.dim = dim,
-                    .cell_type = dim == 1 ? SL_CELL_LINE2 : nvc == 3 ? SL_CELL_TRI3 : SL_CELL_QUAD4,
+                    .cell_type = dim == 1   ? SL_CELL_LINE2
+                                 : nvc == 3 ? SL_CELL_TRI3
+                                            : SL_CELL_QUAD4,
                     .n_vertices = nv,
                     .xy = xy,
                     .n_cells = n_cells,
@@ -1183,7 +1206,9 @@ int sl_mesh_read_gmsh_string(const char *text, size_t len, const char *name, sl_
   return sl_mesh_read_gmsh_string_opts(text, len, name, NULL, out, d);
 }
 
-int sl_mesh_read_gmsh(const char *path, sl_mesh **out, sl_diag *d) { return sl_mesh_read_gmsh_opts(path, NULL, out, d); }
+int sl_mesh_read_gmsh(const char *path, sl_mesh **out, sl_diag *d) {
+  return sl_mesh_read_gmsh_opts(path, NULL, out, d);
+}
 
 int sl_mesh_read_gmsh_opts(const char *path, const sl_gmsh_opts *opts, sl_mesh **out, sl_diag *d) {
   *out = NULL;
@@ -1198,10 +1223,10 @@ int sl_mesh_read_gmsh_opts(const char *path, const sl_gmsh_opts *opts, sl_mesh *
   }
   if (!S_ISREG(st.st_mode)) {
     close(fd);
-    const char *what = S_ISFIFO(st.st_mode)  ? "a FIFO (named pipe)"
-                       : S_ISCHR(st.st_mode) ? "a character device"
-                       : S_ISBLK(st.st_mode) ? "a block device"
-                       : S_ISDIR(st.st_mode) ? "a directory"
+    const char *what = S_ISFIFO(st.st_mode)   ? "a FIFO (named pipe)"
+                       : S_ISCHR(st.st_mode)  ? "a character device"
+                       : S_ISBLK(st.st_mode)  ? "a block device"
+                       : S_ISDIR(st.st_mode)  ? "a directory"
                        : S_ISSOCK(st.st_mode) ? "a socket"
                                               : "not a regular file";
     return sl_diag_set(d, SL_EBADINPUT, "%s: the mesh file is %s; a Gmsh mesh must be a regular file", path, what);

@@ -26,12 +26,9 @@ static void free_names(char **names, int n) {
 
 /* "source:line: " or "source: " or "" for diagnostics. */
 static void where(char *buf, size_t size, const char *source, const int *lines, int index) {
-  if (source && lines && index >= 0)
-    snprintf(buf, size, "%s:%d: ", source, lines[index]);
-  else if (source)
-    snprintf(buf, size, "%s: ", source);
-  else
-    buf[0] = '\0';
+  if (source && lines && index >= 0) snprintf(buf, size, "%s:%d: ", source, lines[index]);
+  else if (source) snprintf(buf, size, "%s: ", source);
+  else buf[0] = '\0';
 }
 
 static const double *vx(const sl_mesh *m, int v) { return m->xy + 2 * (size_t)v; }
@@ -52,17 +49,18 @@ static void describe_cell(const sl_mesh *m, int c, char *buf, size_t size) {
 
 static void describe_vertex(const sl_mesh *m, int v, char *buf, size_t size) {
   const double *p = vx(m, v);
-  if (m->dim == 1)
-    snprintf(buf, size, "vertex %d (%.10g)", v, p[0]);
-  else
-    snprintf(buf, size, "vertex %d (%.10g, %.10g)", v, p[0], p[1]);
+  if (m->dim == 1) snprintf(buf, size, "vertex %d (%.10g)", v, p[0]);
+  else snprintf(buf, size, "vertex %d (%.10g, %.10g)", v, p[0], p[1]);
 }
 
 const char *sl_cell_type_name(sl_cell_type t) {
   switch (t) {
-    case SL_CELL_LINE2: return "line2";
-    case SL_CELL_TRI3: return "tri3";
-    case SL_CELL_QUAD4: return "quad4";
+    case SL_CELL_LINE2:
+      return "line2";
+    case SL_CELL_TRI3:
+      return "tri3";
+    case SL_CELL_QUAD4:
+      return "quad4";
   }
   return "unknown";
 }
@@ -99,10 +97,8 @@ static int check_cells(const sl_mesh *m, const char *source, const int *cell_lin
     if (m->dim == 1) {
       double a = vx(m, cv[0])[0], b = vx(m, cv[1])[0];
       double scale = fmax(fabs(a), fabs(b));
-      if (fabs(b - a) <= SL_MESH_DEGENERATE_TOL * scale)
-        degenerate = 0;
-      else if (b < a)
-        inverted = 0;
+      if (fabs(b - a) <= SL_MESH_DEGENERATE_TOL * scale) degenerate = 0;
+      else if (b < a) inverted = 0;
     } else {
       /* Jacobian of the corner k: (p[k+1] - p[k]) x (p[k-1] - p[k]) > 0 for
        * a counter-clockwise cell; for a quad this is the bilinear map's
@@ -128,8 +124,8 @@ static int check_cells(const sl_mesh *m, const char *source, const int *cell_lin
                            "%scell %d is inverted (negative Jacobian at its local vertex %d; cells must be "
                            "counter-clockwise): vertices %s",
                            at, c, inverted, verts);
-      return sl_diag_set(d, SL_EBADINPUT, "%scell %d is degenerate (zero area at its local vertex %d): vertices %s",
-                         at, c, degenerate, verts);
+      return sl_diag_set(d, SL_EBADINPUT, "%scell %d is degenerate (zero area at its local vertex %d): vertices %s", at,
+                         c, degenerate, verts);
     }
   }
   return 0;
@@ -143,7 +139,7 @@ int sl_mesh_check(const sl_mesh *m, sl_diag *d) {
 /* ---- faces -------------------------------------------------------------- */
 
 typedef struct half_face {
-  int lo, hi;   /* sorted vertex pair (lo == hi in 1-D) */
+  int lo, hi; /* sorted vertex pair (lo == hi in 1-D) */
   int cell, local;
 } half_face;
 
@@ -169,10 +165,8 @@ static long find_key(const half_face *h, long n, int lo, int hi) {
   long a = 0, b = n;
   while (a < b) {
     long mid = a + (b - a) / 2;
-    if (h[mid].lo < lo || (h[mid].lo == lo && h[mid].hi < hi))
-      a = mid + 1;
-    else
-      b = mid;
+    if (h[mid].lo < lo || (h[mid].lo == lo && h[mid].hi < hi)) a = mid + 1;
+    else b = mid;
   }
   return a < n && h[a].lo == lo && h[a].hi == hi ? a : -1;
 }
@@ -184,8 +178,8 @@ static int build_faces(sl_mesh *m, const char *source, const int *cell_line, hal
   const int nf = m->nf_per_cell;
   const long nh = (long)m->n_cells * nf;
   half_face *h = malloc((size_t)nh * sizeof *h);
-  int *pos = malloc((size_t)nh * sizeof *pos);      /* cell*nf+local -> sorted index */
-  int *first = malloc((size_t)nh * sizeof *first);  /* sorted index -> first of its group */
+  int *pos = malloc((size_t)nh * sizeof *pos);     /* cell*nf+local -> sorted index */
+  int *first = malloc((size_t)nh * sizeof *first); /* sorted index -> first of its group */
   int *face_of = malloc((size_t)nh * sizeof *face_of);
   int rc = 0;
   if (!h || !pos || !first || !face_of) {
@@ -212,12 +206,13 @@ static int build_faces(sl_mesh *m, const char *source, const int *cell_line, hal
       where(at, sizeof at, source, cell_line, h[i].cell);
       describe_vertex(m, h[i].lo, va, sizeof va);
       describe_vertex(m, h[i].hi, vb, sizeof vb);
-      rc = m->dim == 1 ? sl_diag_set(d, SL_EBADINPUT, "%s%s is shared by %ld cells (%d, %d, %d, ...); at most two may meet",
-                                     at, va, j - i, h[i].cell, h[i + 1].cell, h[i + 2].cell)
-                       : sl_diag_set(d, SL_EBADINPUT,
-                                     "%sthe edge between %s and %s is shared by %ld cells (%d, %d, %d, ...); at most "
-                                     "two may share an edge",
-                                     at, va, vb, j - i, h[i].cell, h[i + 1].cell, h[i + 2].cell);
+      rc = m->dim == 1
+               ? sl_diag_set(d, SL_EBADINPUT, "%s%s is shared by %ld cells (%d, %d, %d, ...); at most two may meet", at,
+                             va, j - i, h[i].cell, h[i + 1].cell, h[i + 2].cell)
+               : sl_diag_set(d, SL_EBADINPUT,
+                             "%sthe edge between %s and %s is shared by %ld cells (%d, %d, %d, ...); at most "
+                             "two may share an edge",
+                             at, va, vb, j - i, h[i].cell, h[i + 1].cell, h[i + 2].cell);
       goto fail;
     }
     if (j - i == 2) {
@@ -230,12 +225,12 @@ static int build_faces(sl_mesh *m, const char *source, const int *cell_line, hal
         where(at, sizeof at, source, cell_line, h[i + 1].cell);
         describe_vertex(m, h[i].lo, va, sizeof va);
         describe_vertex(m, h[i].hi, vb, sizeof vb);
-        rc = m->dim == 1 ? sl_diag_set(d, SL_EBADINPUT, "%scells %d and %d overlap at %s", at, h[i].cell,
-                                       h[i + 1].cell, va)
-                         : sl_diag_set(d, SL_EBADINPUT,
-                                       "%scells %d and %d overlap: both lie on the same side of their shared edge "
-                                       "between %s and %s (a folded or tangled mesh)",
-                                       at, h[i].cell, h[i + 1].cell, va, vb);
+        rc = m->dim == 1
+                 ? sl_diag_set(d, SL_EBADINPUT, "%scells %d and %d overlap at %s", at, h[i].cell, h[i + 1].cell, va)
+                 : sl_diag_set(d, SL_EBADINPUT,
+                               "%scells %d and %d overlap: both lie on the same side of their shared edge "
+                               "between %s and %s (a folded or tangled mesh)",
+                               at, h[i].cell, h[i + 1].cell, va, vb);
         goto fail;
       }
     }
@@ -332,8 +327,8 @@ static int tag_boundaries(sl_mesh *m, const sl_mesh_spec *s, const half_face *h,
                          "boundaries must be on the domain's boundary",
                          at, va, vb, m->boundary_names[t], m->face_cells[2 * f], m->face_cells[2 * f + 1]);
     }
-    return sl_diag_set(d, SL_EBADINPUT, "%sthe boundary face at %s%s%s is on two boundaries, \"%s\" and \"%s\"", at,
-                       va, m->dim == 1 ? "" : " - ", m->dim == 1 ? "" : vb, m->boundary_names[m->face_tag[f]],
+    return sl_diag_set(d, SL_EBADINPUT, "%sthe boundary face at %s%s%s is on two boundaries, \"%s\" and \"%s\"", at, va,
+                       m->dim == 1 ? "" : " - ", m->dim == 1 ? "" : vb, m->boundary_names[m->face_tag[f]],
                        m->boundary_names[t]);
   }
   for (int f = 0; f < m->n_faces; ++f)
@@ -341,8 +336,9 @@ static int tag_boundaries(sl_mesh *m, const sl_mesh_spec *s, const half_face *h,
       char va[160], vb[160];
       describe_vertex(m, m->face_vertices[2 * f], va, sizeof va);
       if (m->dim == 1)
-        return sl_diag_set(d, SL_EBADINPUT, "%s%sboundary point %s carries no boundary tag%s", s->source ? s->source : "",
-                           s->source ? ": " : "", va, s->source ? " (in a Gmsh file: it is in no physical point group)" : "");
+        return sl_diag_set(d, SL_EBADINPUT, "%s%sboundary point %s carries no boundary tag%s",
+                           s->source ? s->source : "", s->source ? ": " : "", va,
+                           s->source ? " (in a Gmsh file: it is in no physical point group)" : "");
       describe_vertex(m, m->face_vertices[2 * f + 1], vb, sizeof vb);
       return sl_diag_set(d, SL_EBADINPUT, "%s%sthe boundary face from %s to %s carries no boundary tag%s",
                          s->source ? s->source : "", s->source ? ": " : "", va, vb,
@@ -445,9 +441,9 @@ static int copy_names(char ***dst, const char *const *src, int n, const char *wh
 }
 
 static int validate_spec(const sl_mesh_spec *s, sl_diag *d) {
-  if (s->dim != 1 && s->dim != 2) return sl_diag_set(d, SL_EBADINPUT, "mesh dimension %d: only 1 and 2 are supported", s->dim);
-  if (s->dim == 1 && s->cell_type != SL_CELL_LINE2)
-    return sl_diag_set(d, SL_EBADINPUT, "a 1-D mesh needs line2 cells");
+  if (s->dim != 1 && s->dim != 2)
+    return sl_diag_set(d, SL_EBADINPUT, "mesh dimension %d: only 1 and 2 are supported", s->dim);
+  if (s->dim == 1 && s->cell_type != SL_CELL_LINE2) return sl_diag_set(d, SL_EBADINPUT, "a 1-D mesh needs line2 cells");
   if (s->dim == 2 && s->cell_type != SL_CELL_TRI3 && s->cell_type != SL_CELL_QUAD4)
     return sl_diag_set(d, SL_EBADINPUT, "a 2-D mesh needs tri3 or quad4 cells");
   if (s->n_vertices < 1 || s->n_cells < 1 || !s->xy || !s->cell_vertices)
@@ -474,7 +470,8 @@ static int validate_spec(const sl_mesh_spec *s, sl_diag *d) {
       int v = s->cell_vertices[(size_t)c * s->cell_type + k];
       if (v < 0 || v >= s->n_vertices) {
         where(at, sizeof at, s->source, s->cell_line, c);
-        return sl_diag_set(d, SL_EBADINPUT, "%scell %d refers to vertex %d, outside 0..%d", at, c, v, s->n_vertices - 1);
+        return sl_diag_set(d, SL_EBADINPUT, "%scell %d refers to vertex %d, outside 0..%d", at, c, v,
+                           s->n_vertices - 1);
       }
     }
   const int per_side = s->dim == 1 ? 1 : 2;
@@ -723,8 +720,7 @@ void sl_mesh_print_report(const sl_mesh *m, FILE *out) {
     double len = 0;
     for (int i = m->bface_start[b]; i < m->bface_start[b + 1]; ++i) len += sl_mesh_face_arc_length(m, m->bface[i]);
     int nb = m->bface_start[b + 1] - m->bface_start[b];
-    if (m->dim == 1)
-      fprintf(out, "%s %s (%d point%s)", b ? "," : "", m->boundary_names[b], nb, nb == 1 ? "" : "s");
+    if (m->dim == 1) fprintf(out, "%s %s (%d point%s)", b ? "," : "", m->boundary_names[b], nb, nb == 1 ? "" : "s");
     else
       fprintf(out, "%s %s (%d face%s, length %.6g)", b ? "," : "", m->boundary_names[b], nb, nb == 1 ? "" : "s", len);
   }

@@ -45,40 +45,36 @@
 #include "core/util/diag.h"
 
 /* The value is the number of vertices (and of faces in 2-D) per cell. */
-typedef enum sl_cell_type {
-  SL_CELL_LINE2 = 2,
-  SL_CELL_TRI3 = 3,
-  SL_CELL_QUAD4 = 4
-} sl_cell_type;
+typedef enum sl_cell_type { SL_CELL_LINE2 = 2, SL_CELL_TRI3 = 3, SL_CELL_QUAD4 = 4 } sl_cell_type;
 
 typedef struct sl_mesh {
-  int dim;               /* 1 or 2 */
+  int dim; /* 1 or 2 */
   sl_cell_type cell_type;
-  int nv_per_cell;       /* vertices per cell: 2, 3 or 4 */
-  int nf_per_cell;       /* faces per cell: 2 (1-D), 3 or 4 */
+  int nv_per_cell; /* vertices per cell: 2, 3 or 4 */
+  int nf_per_cell; /* faces per cell: 2 (1-D), 3 or 4 */
 
   int n_vertices;
-  double *xy;            /* [2 * n_vertices]: x, y of vertex v at 2v, 2v + 1 */
+  double *xy; /* [2 * n_vertices]: x, y of vertex v at 2v, 2v + 1 */
 
   int n_cells;
-  int *cell_vertices;    /* [nv_per_cell * n_cells], counter-clockwise */
-  int *cell_faces;       /* [nf_per_cell * n_cells]: face of local face k */
+  int *cell_vertices; /* [nv_per_cell * n_cells], counter-clockwise */
+  int *cell_faces;    /* [nf_per_cell * n_cells]: face of local face k */
 
   int n_faces;
   int n_boundary_faces;
-  int *face_vertices;    /* [2 * n_faces]; in 1-D [2f + 1] == -1 */
-  int *face_cells;       /* [2 * n_faces]: owner, neighbour (-1 on the boundary) */
-  int *face_local;       /* [2 * n_faces]: local face index in each of those cells (-1) */
-  int *face_tag;         /* [n_faces]: boundary index, -1 for interior faces */
+  int *face_vertices; /* [2 * n_faces]; in 1-D [2f + 1] == -1 */
+  int *face_cells;    /* [2 * n_faces]: owner, neighbour (-1 on the boundary) */
+  int *face_local;    /* [2 * n_faces]: local face index in each of those cells (-1) */
+  int *face_tag;      /* [n_faces]: boundary index, -1 for interior faces */
 
   int n_boundaries;
   char **boundary_names; /* [n_boundaries] */
   int *bface_start;      /* [n_boundaries + 1]: faces of boundary b are      */
   int *bface;            /* bface[bface_start[b] .. bface_start[b + 1] - 1], ascending */
 
-  int n_regions;         /* 0 when the mesh has no cell regions */
-  char **region_names;   /* [n_regions] */
-  int *cell_region;      /* [n_cells], region index or -1; NULL when n_regions == 0 */
+  int n_regions;       /* 0 when the mesh has no cell regions */
+  char **region_names; /* [n_regions] */
+  int *cell_region;    /* [n_cells], region index or -1; NULL when n_regions == 0 */
 
   /* Second-order geometry (2-D only). geom_order 1: straight-sided cells,
    * face_mid and cell_mid NULL. geom_order 2: face_mid[2f], [2f + 1] is the
@@ -87,8 +83,8 @@ typedef struct sl_mesh {
    * sit at the midpoints of straight faces (and centres at the bilinear
    * centre) is stored as geom_order 1. */
   int geom_order;
-  double *face_mid;      /* [2 * n_faces] or NULL */
-  double *cell_mid;      /* [2 * n_cells] (quads, geom_order 2) or NULL */
+  double *face_mid; /* [2 * n_faces] or NULL */
+  double *cell_mid; /* [2 * n_cells] (quads, geom_order 2) or NULL */
 } sl_mesh;
 
 /* ---- construction ------------------------------------------------------ */
@@ -100,17 +96,17 @@ typedef struct sl_mesh_spec {
   int dim;
   sl_cell_type cell_type;
   int n_vertices;
-  const double *xy;                 /* [2 * n_vertices] */
+  const double *xy; /* [2 * n_vertices] */
   int n_cells;
-  const int *cell_vertices;         /* [nv * n_cells] */
+  const int *cell_vertices; /* [nv * n_cells] */
   int n_boundaries;
   const char *const *boundary_names;
   int n_sides;
-  const int *side_vertices;         /* [2 * n_sides] in 2-D, [n_sides] in 1-D */
-  const int *side_tag;              /* [n_sides], in [0, n_boundaries) */
-  int n_regions;                    /* 0: no regions (cell_region ignored) */
+  const int *side_vertices; /* [2 * n_sides] in 2-D, [n_sides] in 1-D */
+  const int *side_tag;      /* [n_sides], in [0, n_boundaries) */
+  int n_regions;            /* 0: no regions (cell_region ignored) */
   const char *const *region_names;
-  const int *cell_region;           /* [n_cells], -1 or a region index */
+  const int *cell_region; /* [n_cells], -1 or a region index */
   /* Optional, for diagnostics of meshes read from a file: the file name and
    * the line of each cell / side, so errors read "file:line: ...". */
   const char *source;
@@ -143,11 +139,7 @@ void sl_mesh_destroy(sl_mesh *m);
  *    towards both ends (walls), ratio < 1 towards the middle. Cell i has
  *    size h_end * q^min(i, n-1-i) with q = ratio^(1 / floor((n-1)/2)).
  *    Needs n >= 3 unless ratio == 1. */
-typedef enum sl_grading_kind {
-  SL_GRADE_UNIFORM = 0,
-  SL_GRADE_GEOMETRIC,
-  SL_GRADE_SYMMETRIC
-} sl_grading_kind;
+typedef enum sl_grading_kind { SL_GRADE_UNIFORM = 0, SL_GRADE_GEOMETRIC, SL_GRADE_SYMMETRIC } sl_grading_kind;
 
 typedef struct sl_grading {
   sl_grading_kind kind;
@@ -180,8 +172,8 @@ int sl_mesh_interval(double a, double b, int n, const sl_grading *g, sl_mesh **o
 
 /* [x0, x1] x [y0, y1] with nx by ny quads (or 2 nx ny triangles);
  * boundaries "bottom" (0), "right" (1), "top" (2), "left" (3). */
-int sl_mesh_rectangle(double x0, double x1, double y0, double y1, int nx, int ny, const sl_grid_opts *o,
-                      sl_mesh **out, sl_diag *d);
+int sl_mesh_rectangle(double x0, double x1, double y0, double y1, int nx, int ny, const sl_grid_opts *o, sl_mesh **out,
+                      sl_diag *d);
 
 /* The axisymmetric (r, z) box [r_in, r_out] x [z0, z1]: a rectangle with r
  * as x, boundaries "bottom" (0), "outer" (1), "top" (2) and "inner" (3), or
@@ -266,10 +258,10 @@ typedef struct sl_mesh_periodic {
   int boundary, partner; /* boundary ids */
   double shift[2];       /* partner = boundary + shift */
   int n_vertices;
-  int *vertex_pairs;     /* [2 * n_vertices]: (vertex of boundary, its image on partner),
+  int *vertex_pairs; /* [2 * n_vertices]: (vertex of boundary, its image on partner),
                             ascending in the first */
   int n_faces;
-  int *face_pairs;       /* [2 * n_faces]: (face of boundary, its image on partner),
+  int *face_pairs; /* [2 * n_faces]: (face of boundary, its image on partner),
                             ascending in the first */
 } sl_mesh_periodic;
 
@@ -331,11 +323,11 @@ int sl_mesh_check_curved(const sl_mesh *m, const char *source, const int *cell_l
 /* ---- quality ----------------------------------------------------------- */
 
 typedef struct sl_mesh_quality {
-  double min_area, max_area;  /* cell areas (lengths in 1-D) */
-  double min_angle;           /* smallest interior angle, radians (0 in 1-D) */
-  double max_angle;           /* largest interior angle, radians (0 in 1-D) */
-  double max_aspect;          /* largest longest-edge / shortest-edge ratio (1 in 1-D) */
-  double max_size_jump;       /* largest area ratio of two face neighbours (>= 1) */
+  double min_area, max_area; /* cell areas (lengths in 1-D) */
+  double min_angle;          /* smallest interior angle, radians (0 in 1-D) */
+  double max_angle;          /* largest interior angle, radians (0 in 1-D) */
+  double max_aspect;         /* largest longest-edge / shortest-edge ratio (1 in 1-D) */
+  double max_size_jump;      /* largest area ratio of two face neighbours (>= 1) */
   int min_area_cell, max_area_cell, min_angle_cell, max_aspect_cell;
 } sl_mesh_quality;
 

@@ -123,8 +123,8 @@ int sl_mesh_periodic_match(const sl_mesh *m, const char *boundary, const char *p
   bbox(m, w.va, na, alo, ahi);
   bbox(m, w.vb, nb, blo, bhi);
   double shift[2] = {blo[0] - alo[0], blo[1] - alo[1]};
-  int same_extent = fabs((ahi[0] - alo[0]) - (bhi[0] - blo[0])) <= tol &&
-                    fabs((ahi[1] - alo[1]) - (bhi[1] - blo[1])) <= tol;
+  int same_extent =
+      fabs((ahi[0] - alo[0]) - (bhi[0] - blo[0])) <= tol && fabs((ahi[1] - alo[1]) - (bhi[1] - blo[1])) <= tol;
   if (same_extent && fabs(shift[0]) <= tol && fabs(shift[1]) <= tol) {
     work_free(&w);
     return sl_diag_set(d, SL_EBADINPUT, "periodic pair '%s' / '%s': the two boundaries coincide (no translation)", an,
@@ -153,10 +153,8 @@ int sl_mesh_periodic_match(const sl_mesh *m, const char *boundary, const char *p
     int lo = 0, hi = na; /* first sorted entry with key >= want - tol */
     while (lo < hi) {
       int mid = lo + (hi - lo) / 2;
-      if (w.sorted[mid].key < want[axis] - tol)
-        lo = mid + 1;
-      else
-        hi = mid;
+      if (w.sorted[mid].key < want[axis] - tol) lo = mid + 1;
+      else hi = mid;
     }
     int found = -1;
     for (int k = lo; k < na && w.sorted[k].key <= want[axis] + tol; ++k) {
@@ -173,8 +171,8 @@ int sl_mesh_periodic_match(const sl_mesh *m, const char *boundary, const char *p
                         "periodic pair '%s' / '%s': the boundaries are not translates of each other ('%s' spans "
                         "%.12g x %.12g, '%s' %.12g x %.12g; only a translation is supported, not a rotation or "
                         "reflection): the node (%.12g, %.12g) of '%s' has no partner on '%s'",
-                        an, bn, an, ahi[0] - alo[0], ahi[1] - alo[1], bn, bhi[0] - blo[0], bhi[1] - blo[1], x[0],
-                        x[1], bn, an);
+                        an, bn, an, ahi[0] - alo[0], ahi[1] - alo[1], bn, bhi[0] - blo[0], bhi[1] - blo[1], x[0], x[1],
+                        bn, an);
       else
         r = sl_diag_set(d, SL_EBADINPUT,
                         "periodic pair '%s' / '%s': the node (%.12g, %.12g) of '%s' has no partner on '%s' at "

@@ -53,8 +53,10 @@ int sl_tensor_grid_from_mesh(const sl_mesh *m, sl_tensor_grid *g, sl_diag *d) {
   g->xf = xs, g->yf = ys, g->nx = nxl - 1, g->ny = nyl - 1;
   const int nx = g->nx, ny = g->ny;
   if (nx < 1 || ny < 1 || (long)nx * ny != m->n_cells) {
-    int rc = sl_diag_set(d, SL_EBADINPUT, "the staggered grid needs a mesh whose cells fill a rectangle in rows and "
-                                          "columns: %d cells on %d x %d grid lines", m->n_cells, nxl, nyl);
+    int rc = sl_diag_set(d, SL_EBADINPUT,
+                         "the staggered grid needs a mesh whose cells fill a rectangle in rows and "
+                         "columns: %d cells on %d x %d grid lines",
+                         m->n_cells, nxl, nyl);
     sl_tensor_grid_free(g);
     return rc;
   }
@@ -84,8 +86,10 @@ int sl_tensor_grid_from_mesh(const sl_mesh *m, sl_tensor_grid *g, sl_diag *d) {
     }
     if (!ok || seen != 15 || g->mesh_cell[imin + nx * jmin] >= 0) {
       sl_tensor_grid_free(g);
-      return sl_diag_set(d, SL_EBADINPUT, "the staggered grid needs axis-aligned cells in rows and columns: mesh cell "
-                                          "%d is not one", c);
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "the staggered grid needs axis-aligned cells in rows and columns: mesh cell "
+                         "%d is not one",
+                         c);
     }
     g->mesh_cell[imin + nx * jmin] = c;
   }
@@ -99,12 +103,16 @@ int sl_tensor_grid_from_mesh(const sl_mesh *m, sl_tensor_grid *g, sl_diag *d) {
     int n = side < 2 ? ny : nx, k = 0;
     double along = side < 2 ? fmin(a[1], b[1]) : fmin(a[0], b[0]);
     k = line_index(lines, n + 1, along, tol);
-    double across = side < 2 ? mx : my, edge = side == SL_SIDE_LEFT ? xs[0] : side == SL_SIDE_RIGHT ? xs[nx]
-                                                   : side == SL_SIDE_BOTTOM ? ys[0] : ys[ny];
+    double across = side < 2 ? mx : my, edge = side == SL_SIDE_LEFT     ? xs[0]
+                                               : side == SL_SIDE_RIGHT  ? xs[nx]
+                                               : side == SL_SIDE_BOTTOM ? ys[0]
+                                                                        : ys[ny];
     if (k < 0 || k >= n || fabs(across - edge) > tol) {
       sl_tensor_grid_free(g);
-      return sl_diag_set(d, SL_EBADINPUT, "the staggered grid needs a rectangle without holes: boundary face %d lies "
-                                          "inside it", f);
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "the staggered grid needs a rectangle without holes: boundary face %d lies "
+                         "inside it",
+                         f);
     }
     g->side_tag[side][k] = m->face_tag[f];
   }

@@ -15,9 +15,9 @@ enum { SL_SIDE_LEFT = 0, SL_SIDE_RIGHT = 1, SL_SIDE_BOTTOM = 2, SL_SIDE_TOP = 3 
 
 typedef struct sl_tensor_grid {
   int nx, ny;
-  double *xf, *yf;    /* [nx + 1], [ny + 1]: the grid lines, increasing */
-  int *mesh_cell;     /* [nx ny]: the mesh cell of grid cell i + nx j */
-  int *side_tag[4];   /* [ny] for left/right, [nx] for bottom/top: the boundary index of each side face */
+  double *xf, *yf;  /* [nx + 1], [ny + 1]: the grid lines, increasing */
+  int *mesh_cell;   /* [nx ny]: the mesh cell of grid cell i + nx j */
+  int *side_tag[4]; /* [ny] for left/right, [nx] for bottom/top: the boundary index of each side face */
 } sl_tensor_grid;
 
 /* The grid of m. SL_EBADINPUT naming the first cell that breaks the

@@ -8,15 +8,17 @@ int sl_granular_require(const sl_point_closure *gran, int with_kappa, const char
   static const char *const need[] = {"mu_s", "gamma", "kappa"};
   for (int k = 0; k < (with_kappa ? 3 : 2); ++k)
     if (!sl_point_has_output(gran, need[k]))
-      return sl_diag_set(d, SL_EBADINPUT, "[closure.granular]: %s needs mu_s, gamma%s of (phi, theta); this closure "
-                                          "gives no %s", who, with_kappa ? " and kappa" : "", need[k]);
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "[closure.granular]: %s needs mu_s, gamma%s of (phi, theta); this closure "
+                         "gives no %s",
+                         who, with_kappa ? " and kappa" : "", need[k]);
   return 0;
 }
 
 #define MAX_Q 32
 
-int sl_granular_check_kinetic(sl_point_closure *gran, int nq, double *const *qv, int iphi, int itheta,
-                              double phi_max, int with_ps, const char *where, sl_diag *d) {
+int sl_granular_check_kinetic(sl_point_closure *gran, int nq, double *const *qv, int iphi, int itheta, double phi_max,
+                              int with_ps, const char *where, sl_diag *d) {
   if (nq > MAX_Q) return sl_diag_set(d, SL_EFAILED, "the kinetic-scaling check: %d quantities, at most %d", nq, MAX_Q);
   double th[2] = {1.0, 4.0}, ph[2], mu[2], g[2], ps[2] = {1.0, 4.0}, pair[MAX_Q][2];
   ph[0] = ph[1] = fmin(0.5 * phi_max, 0.3);
@@ -27,8 +29,9 @@ int sl_granular_check_kinetic(sl_point_closure *gran, int nq, double *const *qv,
   int rc = sl_point_eval(gran, 2, v, rq, with_ps ? 3 : 2, d);
   if (rc) return rc;
   if (fabs(mu[1] / mu[0] - 2.0) > 1e-9 || fabs(g[1] / g[0] - 8.0) > 1e-9 || fabs(ps[1] / ps[0] - 4.0) > 1e-9)
-    return sl_diag_set(d, SL_EBADINPUT, "%s = algebraic needs a kinetic closure (mu_s ~ theta^0.5, gamma ~ "
-                                        "theta^1.5%s); [closure.granular] is not one (use transport)",
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s = algebraic needs a kinetic closure (mu_s ~ theta^0.5, gamma ~ "
+                       "theta^1.5%s); [closure.granular] is not one (use transport)",
                        where, with_ps ? ", p_s ~ theta" : "");
   return 0;
 }

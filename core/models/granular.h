@@ -38,8 +38,8 @@ int sl_granular_require(const sl_point_closure *gran, int with_kappa, const char
  * at theta = 1 and 4 with phi = min(phi_max / 2, 0.3) and the other
  * quantities the first point's of qv (nq quantities, phi at iphi, theta at
  * itheta, as bound to the closure). 0, or SL_EBADINPUT naming `where`. */
-int sl_granular_check_kinetic(sl_point_closure *gran, int nq, double *const *qv, int iphi, int itheta,
-                              double phi_max, int with_ps, const char *where, sl_diag *d);
+int sl_granular_check_kinetic(sl_point_closure *gran, int nq, double *const *qv, int iphi, int itheta, double phi_max,
+                              int with_ps, const char *where, sl_diag *d);
 
 /* The algebraic granular temperature of a kinetic closure: production
  * equals dissipation and the drag's sink, mu_s0 gdot^2 sqrt(theta) = gamma0

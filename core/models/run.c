@@ -23,8 +23,8 @@ int sl_model_scene(sl_ini *ini, const sl_registry *reg, int create_closures, int
   if (rc) return rc;
   int n;
   const sl_schema *const *all = sl_model_schemas(&n);
-  sl_scene_opts so = {.registry = reg, .create_closures = create_closures, .build_mesh = build_mesh, .schemas = all,
-                      .n_schemas = n};
+  sl_scene_opts so = {
+      .registry = reg, .create_closures = create_closures, .build_mesh = build_mesh, .schemas = all, .n_schemas = n};
   return sl_scene_build(ini, (*entry)->schema, &so, sc, d);
 }
 
@@ -53,8 +53,8 @@ static int prepare(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, pr
   int rc = sl_model_scene(ini, reg, 1, 1, &p->entry, &p->sc, d);
   const sl_model_ops *ops = p->entry ? p->entry->ops : NULL;
   if (!rc && o)
-    p->sc->hooks = (sl_run_hooks){.nonlinear = o->nonlinear, .user = o->nonlinear_user, .interrupt = o->interrupt,
-                                  .checking = o->checking};
+    p->sc->hooks = (sl_run_hooks){
+        .nonlinear = o->nonlinear, .user = o->nonlinear_user, .interrupt = o->interrupt, .checking = o->checking};
   if (!rc) rc = sl_scene_locate(p->sc, ops->setup(&p->self, p->sc, &p->info, d), d);
   if (!rc && !(rc = sl_time_loop_init(&p->loop, &p->info, &p->sc->time, d))) p->have_loop = 1;
   /* a restart is checked against the scene before anything is written */
@@ -81,12 +81,10 @@ int sl_model_check(sl_ini *ini, const sl_registry *reg, const char *restart, con
 void sl_run_output_opts(const sl_run_opts *o, char *dir, size_t cap, sl_output_opts *oo) {
   /* the scene's folder: where a path from the scene file may write (besides the working folder) */
   const char *slash = o->scene_path ? strrchr(o->scene_path, '/') : NULL;
-  if (slash)
-    snprintf(dir, cap, "%.*s", slash == o->scene_path ? 1 : (int)(slash - o->scene_path), o->scene_path);
-  else
-    snprintf(dir, cap, ".");
-  *oo = (sl_output_opts){.from_scene = o->output == NULL, .scene_dir = dir, .overwrite = o->overwrite,
-                         .protect = o->scene_path};
+  if (slash) snprintf(dir, cap, "%.*s", slash == o->scene_path ? 1 : (int)(slash - o->scene_path), o->scene_path);
+  else snprintf(dir, cap, ".");
+  *oo = (sl_output_opts){
+      .from_scene = o->output == NULL, .scene_dir = dir, .overwrite = o->overwrite, .protect = o->scene_path};
 }
 
 int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_run_result *res, sl_diag *d) {
@@ -119,8 +117,8 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
     }
     if (ranks > 1) { /* rank 0 could not open the output: every rank stops */
       int all = sl_linsolve_agree(rc);
-      if (all && !rc) rc = sl_diag_set(d, all, "rank %d of %d: rank 0 could not open the output %s", rank, ranks,
-                                       res->output_path);
+      if (all && !rc)
+        rc = sl_diag_set(d, all, "rank %d of %d: rank 0 could not open the output %s", rank, ranks, res->output_path);
     }
   }
   if (!rc) rc = ops->write_mesh(self, out, d);
@@ -139,8 +137,7 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
     sl_output_stats(out, &res->output_times, &res->output_datasets, &res->output_bytes);
     if (rc) { /* before the first complete output time, what was there stays */
       if (!sl_output_abort(out)) res->output_path[0] = '\0';
-    } else
-      rc = sl_output_close(out, d);
+    } else rc = sl_output_close(out, d);
   } else {
     res->output_path[0] = '\0';
   }

@@ -25,7 +25,8 @@ typedef struct battery {
 #if defined(__GNUC__)
 __attribute__((format(printf, 4, 5)))
 #endif
-static void report(battery *b, int ok, const char *check, const char *fmt, ...) {
+static void
+report(battery *b, int ok, const char *check, const char *fmt, ...) {
   if (ok) b->res->passed++;
   else b->res->failed++;
   if (!b->log) return;
@@ -78,9 +79,8 @@ static int batch_alloc(batch *bt, const sl_closure_desc *c, int32_t Q) {
   for (int32_t k = 0; k < c->n_out; ++k) bt->out[k] = bt->out_data + (size_t)k * (size_t)Q;
   for (int32_t k = 0; k < c->n_out; ++k)
     for (int32_t i = 0; i < c->n_in; ++i)
-      bt->dout[k * c->n_in + i] = (c->in[i].flags & SL_FIELD_DIFF)
-                                      ? bt->dout_data + ((size_t)k * ni + (size_t)i) * (size_t)Q
-                                      : NULL;
+      bt->dout[k * c->n_in + i] =
+          (c->in[i].flags & SL_FIELD_DIFF) ? bt->dout_data + ((size_t)k * ni + (size_t)i) * (size_t)Q : NULL;
   return 0;
 }
 
@@ -93,13 +93,8 @@ static void fill_nan(batch *bt) {
 }
 
 static int eval_batch(const battery *b, batch *bt, int derivs, sl_error *err) {
-  sl_eval_args a = {.Q = bt->Q,
-                    .t = 0.0,
-                    .dt = 0.0,
-                    .in = bt->in,
-                    .out = bt->out,
-                    .dout = derivs ? bt->dout : NULL,
-                    .err = err};
+  sl_eval_args a = {
+      .Q = bt->Q, .t = 0.0, .dt = 0.0, .in = bt->in, .out = bt->out, .dout = derivs ? bt->dout : NULL, .err = err};
   err->point = -1;
   err->msg[0] = '\0';
   return b->desc->evaluate(b->closure->state, &a);
@@ -130,8 +125,7 @@ static double sample_input(const sl_field_desc *f, unsigned long long *seed) {
 static void fill_states(const sl_closure_desc *c, batch *bt) {
   unsigned long long seed = 0x5eedULL;
   for (int32_t q = 0; q < bt->Q; ++q)
-    for (int32_t i = 0; i < c->n_in; ++i)
-      in_mut(bt, i)[q] = q == 0 ? c->in[i].typical : sample_input(&c->in[i], &seed);
+    for (int32_t i = 0; i < c->n_in; ++i) in_mut(bt, i)[q] = q == 0 ? c->in[i].typical : sample_input(&c->in[i], &seed);
 }
 
 static void describe_point(const sl_closure_desc *c, const batch *bt, int32_t q, char *buf, size_t n) {
@@ -150,8 +144,7 @@ static void check_schema_and_bounds(battery *b) {
   int schema_ok = sl_validate_descriptor(c, &d) == 0;
   if (schema_ok)
     report(b, 1, "schema", "%d parameters, %d inputs, %d outputs", (int)c->n_params, (int)c->n_in, (int)c->n_out);
-  else
-    report(b, 0, "schema", "%s", d.msg);
+  else report(b, 0, "schema", "%s", d.msg);
   void *params = NULL;
   int refused_all = 1, tried = 0;
   char what[160] = "";
@@ -319,8 +312,7 @@ static void check_derivatives(battery *b, batch *bt) {
   if (ok)
     report(b, 1, "derivatives", "%d checks, worst relative error %.1e, %d skipped at switches or edges", checked, worst,
            skipped);
-  else
-    report(b, 0, "derivatives", "%s", msg);
+  else report(b, 0, "derivatives", "%s", msg);
 }
 
 /* 6. Inputs outside the declared validity: the recoverable code naming the
@@ -348,8 +340,8 @@ static void check_out_of_range(battery *b) {
       ++tried;
       if (rc <= 0 || err.point != 1 || !err.msg[0]) {
         ok = 0;
-        snprintf(msg, sizeof msg, "%s = %g at point 1: returned %d, point %d, message '%s'", c->in[i].name, bad[s],
-                 rc, (int)err.point, err.msg);
+        snprintf(msg, sizeof msg, "%s = %g at point 1: returned %d, point %d, message '%s'", c->in[i].name, bad[s], rc,
+                 (int)err.point, err.msg);
       }
     }
   }
@@ -438,8 +430,9 @@ static void check_concurrency(battery *b, batch *ref) {
   }
   for (int t = 0; t < 2; ++t) batch_free(&jobs[t].bt);
   if (ok) report(b, 1, "concurrent evaluation", "2 threads x %d calls agree with the serial result", N_THREAD_REPEATS);
-  else report(b, 0, "concurrent evaluation", "results differ between 2 threads x %d calls and the serial result",
-              N_THREAD_REPEATS);
+  else
+    report(b, 0, "concurrent evaluation", "results differ between 2 threads x %d calls and the serial result",
+           N_THREAD_REPEATS);
 }
 
 void sl_battery_run(const sl_closure_entry *entry, FILE *log, sl_battery_result *res) {

@@ -56,8 +56,7 @@ static int resolve(const sl_registry *r, const sl_ini *ini, const char *section,
   return 0;
 }
 
-int sl_closure_from_ini(const sl_registry *r, const sl_ini *ini, const char *section, sl_closure **out,
-                        sl_diag *d) {
+int sl_closure_from_ini(const sl_registry *r, const sl_ini *ini, const char *section, sl_closure **out, sl_diag *d) {
   *out = NULL;
   const sl_closure_entry *entry;
   void *params;
@@ -65,7 +64,7 @@ int sl_closure_from_ini(const sl_registry *r, const sl_ini *ini, const char *sec
   if (rc) return rc;
   rc = sl_closure_create(entry, params, out, d);
   if (rc) return located(d, rc, sl_ini_find(ini, section, "model"));
-  snprintf((*out)->role, sizeof (*out)->role, "%s", section);
+  snprintf((*out)->role, sizeof(*out)->role, "%s", section);
   return 0;
 }
 

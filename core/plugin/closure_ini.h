@@ -14,8 +14,7 @@
 int sl_closure_section_kind(const char *section, sl_kind *kind, sl_diag *d);
 
 /* Creates the closure a section names. */
-int sl_closure_from_ini(const sl_registry *r, const sl_ini *ini, const char *section, sl_closure **out,
-                        sl_diag *d);
+int sl_closure_from_ini(const sl_registry *r, const sl_ini *ini, const char *section, sl_closure **out, sl_diag *d);
 /* Finds the closure and checks its parameters, without creating it: the
  * errors of sl_closure_from_ini except a refusal by the closure's create. */
 int sl_closure_check_ini(const sl_registry *r, const sl_ini *ini, const char *section, sl_diag *d);

@@ -98,7 +98,8 @@ int sl_params_set_with(const sl_closure_desc *desc, void *params, const char *ke
     for (int32_t k = 0; k < desc->n_params && n < 128; ++k) cands[n++] = desc->params[k].name;
     if (n == 0) return sl_diag_set(d, SL_EBADINPUT, "closure '%s' takes no parameters (got '%s')", desc->name, key);
     const char *s = sl_suggest(key, cands, n);
-    if (s) return sl_diag_set(d, SL_EBADINPUT, "closure '%s' has no parameter '%s'; did you mean '%s'?", desc->name, key, s);
+    if (s)
+      return sl_diag_set(d, SL_EBADINPUT, "closure '%s' has no parameter '%s'; did you mean '%s'?", desc->name, key, s);
     return sl_diag_set(d, SL_EBADINPUT, "closure '%s' has no parameter '%s' (`sluice closure describe %s` lists them)",
                        desc->name, key, desc->name);
   }
@@ -119,10 +120,10 @@ int sl_params_set_with(const sl_closure_desc *desc, void *params, const char *ke
     }
     case SL_PARAM_INT: {
       long v;
-      if (sl_parse_long(value, &v))
-        return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not an integer", key, value);
+      if (sl_parse_long(value, &v)) return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not an integer", key, value);
       if (v < p->min || v > p->max)
-        return sl_diag_set(d, SL_EBADINPUT, "%s = %s is outside the allowed range [%g, %g]", key, value, p->min, p->max);
+        return sl_diag_set(d, SL_EBADINPUT, "%s = %s is outside the allowed range [%g, %g]", key, value, p->min,
+                           p->max);
       int32_t iv = (int32_t)v;
       memcpy(at, &iv, sizeof iv);
       return 0;
@@ -147,7 +148,8 @@ int sl_params_set_with(const sl_closure_desc *desc, void *params, const char *ke
         for (char *save = NULL, *t = strtok_r(copy, "|", &save); t && n < 32; t = strtok_r(NULL, "|", &save))
           cands[n++] = t;
         const char *s = sl_suggest(value, cands, n);
-        if (s) return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not one of: %s; did you mean '%s'?", key, value, list, s);
+        if (s)
+          return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not one of: %s; did you mean '%s'?", key, value, list, s);
         return sl_diag_set(d, SL_EBADINPUT, "%s = '%s' is not one of: %s", key, value, list);
       }
       int32_t iv = idx;
@@ -242,8 +244,8 @@ int sl_closure_create(const sl_closure_entry *entry, void *params, sl_closure **
       sl_closure_label(c->desc, label, sizeof label);
       sl_params_free(params);
       free(c);
-      return sl_diag_set(d, SL_EBADINPUT, "closure %s (%s) refused its parameters: %s", label,
-                         entry->library->path, err.msg[0] ? err.msg : "no reason given");
+      return sl_diag_set(d, SL_EBADINPUT, "closure %s (%s) refused its parameters: %s", label, entry->library->path,
+                         err.msg[0] ? err.msg : "no reason given");
     }
   } else {
     c->state = params;

@@ -17,12 +17,12 @@ typedef struct sl_closure {
   void *state;  /* from create(), or params when the closure has no create */
   sl_host_api api;
   unsigned long long n_calls, n_points; /* evaluation counters (profile) */
-  double seconds;  /* inside evaluate, when timed */
-  int timed;       /* from the library's timing switch at creation */
-  int usage_index; /* this closure's slot in library->usage */
-  char role[64];   /* the scene section it was created from ("closure.drag"), "" when none */
-  char label[96];  /* "kind/name" */
-  int poisoned;    /* it crashed or overran: not called again (guard.h) */
+  double seconds;                       /* inside evaluate, when timed */
+  int timed;                            /* from the library's timing switch at creation */
+  int usage_index;                      /* this closure's slot in library->usage */
+  char role[64];                        /* the scene section it was created from ("closure.drag"), "" when none */
+  char label[96];                       /* "kind/name" */
+  int poisoned;                         /* it crashed or overran: not called again (guard.h) */
 } sl_closure;
 
 /* A parameter struct filled with the schema's defaults (64-byte aligned,

@@ -6,7 +6,7 @@
 #define SLUICE_PLUGIN_ISOLATE_H
 
 typedef struct sl_child_outcome {
-  int exited;    /* the child returned or called exit(): status is its exit status */
+  int exited; /* the child returned or called exit(): status is its exit status */
   int status;
   int signal;    /* the child was killed by this signal (0: none) */
   int timed_out; /* it sent nothing for longer than the limit and was killed */

@@ -4,8 +4,8 @@
 #include <math.h>
 #include <string.h>
 
-static const char *const kind_names[] = {"drag",        "hindered_settling", "viscosity", "solids_pressure",
-                                         "wall_stress", "granular",          "migration", "turbulence",
+static const char *const kind_names[] = {"drag",         "hindered_settling", "viscosity", "solids_pressure",
+                                         "wall_stress",  "granular",          "migration", "turbulence",
                                          "densification"};
 
 /* The host's field dictionary (closure.h, "Canonical input names"): what the
@@ -31,18 +31,37 @@ static const sl_input_info inputs[] = {
     {"k", "m^2 s^-2", "turbulent kinetic energy", 1e-2, 1e-30, 1e6},
     {"epsilon", "m^2 s^-3", "dissipation rate of the turbulent kinetic energy", 1e-1, 1e-30, 1e9},
     {"nbar", "1", "reference porosity of a sand (Pringle 2001 eq 4.30), a state", 0.45, 0.01, 0.99},
-    {"strain_amplitude", "1", "shear strain amplitude of the half-cycle ended at a strain reversal (0 between reversals)",
-     1e-3, 0.0, 1.0},
+    {"strain_amplitude", "1",
+     "shear strain amplitude of the half-cycle ended at a strain reversal (0 between reversals)", 1e-3, 0.0, 1.0},
     {"strain_increment", "1", "|change of shear strain| over the step", 1e-4, 0.0, 1.0},
     {"strain_total", "1", "accumulated |shear strain| path", 1e-2, 0.0, 1e6},
     {"volumetric_strain", "1", "densification strain accumulated so far", 0.0, 0.0, 0.5},
 };
 enum { N_INPUTS = (int)(sizeof inputs / sizeof inputs[0]) };
 /* The same names in the same order, for suggestions (sl_input_names). */
-static const char *const input_names[] = {
-    "phi",      "slip",    "shear_rate", "theta",    "rho_f",         "mu_f",      "rho_s", "d_p",
-    "sphericity", "density", "gravity",  "d_vessel", "wall_distance", "slip_wall", "u_t",   "pressure", "k",     "epsilon",
-    "nbar",     "strain_amplitude", "strain_increment", "strain_total", "volumetric_strain"};
+static const char *const input_names[] = {"phi",
+                                          "slip",
+                                          "shear_rate",
+                                          "theta",
+                                          "rho_f",
+                                          "mu_f",
+                                          "rho_s",
+                                          "d_p",
+                                          "sphericity",
+                                          "density",
+                                          "gravity",
+                                          "d_vessel",
+                                          "wall_distance",
+                                          "slip_wall",
+                                          "u_t",
+                                          "pressure",
+                                          "k",
+                                          "epsilon",
+                                          "nbar",
+                                          "strain_amplitude",
+                                          "strain_increment",
+                                          "strain_total",
+                                          "volumetric_strain"};
 _Static_assert(sizeof input_names / sizeof input_names[0] == sizeof inputs / sizeof inputs[0],
                "one name per input of the dictionary");
 
@@ -135,8 +154,7 @@ static const sl_kind_info contracts[] = {
          {"phi"},
          0u,
          {"shear_rate", "d_p"},
-         {{"D_c", "m^2", "N_c = -D_c grad(shear_rate phi)", 0},
-          {"D_mu", "m^2 s^-1", "N_mu = -D_mu grad(ln mu)", 0}},
+         {{"D_c", "m^2", "N_c = -D_c grad(shear_rate phi)", 0}, {"D_mu", "m^2 s^-1", "N_mu = -D_mu grad(ln mu)", 0}},
          1,
          "phi outside [0, packing]; shear_rate < 0; any NaN",
          "mixture: D_c and D_mu of phi and shear_rate (and d_p), with [closure.viscosity] as the viscosity of phi"},
@@ -233,8 +251,8 @@ int sl_kind_check_contract(const sl_closure_desc *desc, sl_diag *d) {
       return sl_diag_set(d, SL_EBADINPUT, "%s closure '%s' lacks the required input '%s'", kname, desc->name,
                          c->required[i]);
     if ((c->diff_mask >> i & 1u) && !(desc->in[at].flags & SL_FIELD_DIFF))
-      return sl_diag_set(d, SL_EBADINPUT, "%s closure '%s' must mark input '%s' differentiable", kname,
-                         desc->name, c->required[i]);
+      return sl_diag_set(d, SL_EBADINPUT, "%s closure '%s' must mark input '%s' differentiable", kname, desc->name,
+                         c->required[i]);
   }
   for (int k = 0; k < SL_KIND_MAX_OUTPUTS && c->outputs[k].name; ++k) {
     if (c->outputs[k].required && find_field(desc->out, desc->n_out, c->outputs[k].name) < 0)

@@ -43,14 +43,14 @@ enum { SL_KIND_MAX_INPUTS = 6, SL_KIND_MAX_OUTPUTS = 6 };
 
 /* A kind's contract as a closure author reads it. */
 typedef struct sl_kind_info {
-  const char *summary;                          /* what a closure of the kind is */
-  const char *required[SL_KIND_MAX_INPUTS];     /* inputs every closure of the kind declares */
-  unsigned diff_mask;                           /* bit i: required[i] must be differentiable */
-  const char *usual[SL_KIND_MAX_INPUTS];        /* further inputs the models supply for the kind */
-  sl_kind_output outputs[SL_KIND_MAX_OUTPUTS];  /* the outputs the models read */
-  int any_output;                               /* outputs are free (at least one) */
-  const char *range_checks;                     /* what evaluate() must refuse */
-  const char *used_by;                          /* the models that read it, and how */
+  const char *summary;                         /* what a closure of the kind is */
+  const char *required[SL_KIND_MAX_INPUTS];    /* inputs every closure of the kind declares */
+  unsigned diff_mask;                          /* bit i: required[i] must be differentiable */
+  const char *usual[SL_KIND_MAX_INPUTS];       /* further inputs the models supply for the kind */
+  sl_kind_output outputs[SL_KIND_MAX_OUTPUTS]; /* the outputs the models read */
+  int any_output;                              /* outputs are free (at least one) */
+  const char *range_checks;                    /* what evaluate() must refuse */
+  const char *used_by;                         /* the models that read it, and how */
 } sl_kind_info;
 /* NULL for an unknown kind. */
 const sl_kind_info *sl_kind_info_of(sl_kind kind);

@@ -11,7 +11,8 @@ int sl_point_bind(sl_point_closure *pc, sl_closure *c, const char *const *names,
                   const char *model, sl_diag *d) {
   memset(pc, 0, sizeof *pc);
   pc->c = c, pc->names = names, pc->n_names = n_names, pc->failed_point = -1;
-  if (n_names > SL_POINT_MAX_NAMES) return sl_diag_set(d, SL_EBADINPUT, "[%s]: more than %d quantities", section, SL_POINT_MAX_NAMES);
+  if (n_names > SL_POINT_MAX_NAMES)
+    return sl_diag_set(d, SL_EBADINPUT, "[%s]: more than %d quantities", section, SL_POINT_MAX_NAMES);
   const sl_closure_desc *cd = c->desc;
   char label[128];
   sl_closure_label(cd, label, sizeof label);

@@ -29,7 +29,7 @@ typedef struct sl_point_closure {
   const char *const *names;    /* the host's quantity names (the binding's) */
   int n_names;
   double constant[SL_POINT_MAX_NAMES]; /* the value of a quantity passed as NULL */
-  int failed_point;                    /* the point of the last failed evaluation (-1: none), for the caller's context */
+  int failed_point; /* the point of the last failed evaluation (-1: none), for the caller's context */
   double *buf;
   size_t cap;
 } sl_point_closure;

@@ -64,8 +64,7 @@ const char *sl_registry_default_dir(void) {
   if (slash) *slash = '\0';
   /* Run from the build tree: use its plugins; else the install's, relative
    * to the executable so that the installed tree may be moved. */
-  if (strcmp(exe, SLUICE_BUILD_BIN_DIR) == 0)
-    snprintf(dir, sizeof dir, "%s", SLUICE_BUILD_PLUGIN_DIR);
+  if (strcmp(exe, SLUICE_BUILD_BIN_DIR) == 0) snprintf(dir, sizeof dir, "%s", SLUICE_BUILD_PLUGIN_DIR);
   else
     snprintf(dir, sizeof dir, "%.*s/../%s", (int)(sizeof dir - sizeof SLUICE_PLUGIN_SUBDIR - 8), exe,
              SLUICE_PLUGIN_SUBDIR);
@@ -181,7 +180,7 @@ static int open_library(const char *path, sl_library **out, long *n_dlopen, sl_d
       if (descs[j]->kind == descs[i]->kind && strcmp(descs[j]->name, descs[i]->name) == 0) {
         /* The message reads the descriptor: write it before unloading. */
         int dup_rc = sl_diag_set(d, SL_EBADINPUT, "%s: two closures named %s '%s' in one library", path,
-                             sl_kind_name(descs[i]->kind), descs[i]->name);
+                                 sl_kind_name(descs[i]->kind), descs[i]->name);
         dlclose(h);
         return dup_rc;
       }
@@ -241,8 +240,7 @@ int sl_registry_add_library(sl_registry *r, const char *path, sl_library **out, 
     r->cap_entries = cap;
   }
   r->libraries[r->n_libraries++] = lib;
-  for (int32_t i = 0; i < lib->n_closures; ++i)
-    r->entries[r->n_entries++] = (sl_closure_entry){lib->closures[i], lib};
+  for (int32_t i = 0; i < lib->n_closures; ++i) r->entries[r->n_entries++] = (sl_closure_entry){lib->closures[i], lib};
   if (out) *out = lib;
   return 0;
 }
@@ -315,7 +313,8 @@ int sl_registry_scan(sl_registry *r, sl_diag *d) {
     for (int i = 0; i < r->n_files; ++i) {
       if (r->file_tried[i]) continue;
       r->file_tried[i] = 1;
-      if (load_from_path(r, r->files[i])) return sl_diag_set(d, SL_ENOMEM, "out of memory while loading %s", r->files[i]);
+      if (load_from_path(r, r->files[i]))
+        return sl_diag_set(d, SL_ENOMEM, "out of memory while loading %s", r->files[i]);
     }
     return 0;
   }
@@ -382,8 +381,7 @@ static int read_index(sl_registry *r, const char *dir, int *found, sl_diag *d) {
       char lib[PATH_MAX];
       if (snprintf(lib, sizeof lib, "%s/%s", dir, file) >= (int)sizeof lib)
         rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: error: path too long", path, ln);
-      else if (index_add(r, kind, name, lib))
-        rc = sl_diag_set(d, SL_ENOMEM, "out of memory");
+      else if (index_add(r, kind, name, lib)) rc = sl_diag_set(d, SL_ENOMEM, "out of memory");
     }
   }
   fclose(f);
@@ -546,8 +544,7 @@ static int list_files_in_child(sl_registry *r, const char *const *files, int n, 
     else if (o.signal)
       snprintf(msg, sizeof msg, "%s: crashed with %s while loading (read in a child process)", cl.current,
                sl_signal_name(o.signal));
-    else
-      snprintf(msg, sizeof msg, "%s: called exit(%d) while loading (read in a child process)", cl.current, o.status);
+    else snprintf(msg, sizeof msg, "%s: called exit(%d) while loading (read in a child process)", cl.current, o.status);
     if (add_problem(r, msg)) return sl_diag_set(d, SL_ENOMEM, "out of memory");
     /* the files after the one that failed: read them on their own */
     int at = 0;
@@ -662,8 +659,10 @@ int sl_registry_find(const sl_registry *r, sl_kind kind, const char *name, const
       if (!strncmp(r->problems[k], e->path, len) && r->problems[k][len] == ':')
         return sl_diag_set(d, SL_EBADINPUT, "%s closure '%s': its index names %s, which cannot be used: %s",
                            sl_kind_name(kind), name, e->path, r->problems[k] + len + 2);
-    return sl_diag_set(d, SL_EBADINPUT, "%s closure '%s': its index names %s, which does not hold it (write the "
-                       "folder's index again: sluice closure index DIR)", sl_kind_name(kind), name, e->path);
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s closure '%s': its index names %s, which does not hold it (write the "
+                       "folder's index again: sluice closure index DIR)",
+                       sl_kind_name(kind), name, e->path);
   }
   /* Refused with no further library opened: a did-you-mean over the names
    * the indexes list as well as those loaded. */
@@ -678,8 +677,7 @@ int sl_registry_find(const sl_registry *r, sl_kind kind, const char *name, const
   if (library)
     rc = sl_diag_set(d, SL_EBADINPUT, "no %s closure '%s' in library '%s'%s%s%s", sl_kind_name(kind), name, library,
                      s ? "; did you mean '" : "", s ? s : "", s ? "'?" : "");
-  else if (s)
-    rc = sl_diag_set(d, SL_EBADINPUT, "no %s closure '%s'; did you mean '%s'?", sl_kind_name(kind), name, s);
+  else if (s) rc = sl_diag_set(d, SL_EBADINPUT, "no %s closure '%s'; did you mean '%s'?", sl_kind_name(kind), name, s);
   else
     rc = sl_diag_set(d, SL_EBADINPUT, "no %s closure '%s' on the plugin search path (`sluice closures` lists them)",
                      sl_kind_name(kind), name);
@@ -697,8 +695,7 @@ static int find_loaded(const sl_registry *r, sl_kind kind, const char *name, con
   int n_match = 0;
   for (int i = 0; i < r->n_entries; ++i) {
     const sl_closure_entry *e = &r->entries[i];
-    if (e->desc->kind != kind || strcmp(e->desc->name, name) != 0 || !library_matches(e->library, library))
-      continue;
+    if (e->desc->kind != kind || strcmp(e->desc->name, name) != 0 || !library_matches(e->library, library)) continue;
     if (!first) first = e;
     else if (n_match == 1)
       return sl_diag_set(d, SL_EBADINPUT,
@@ -737,6 +734,4 @@ void sl_registry_set_timing(sl_registry *r, int on) {
   for (int i = 0; i < r->n_libraries; ++i) r->libraries[i]->timing = r->timing;
 }
 
-int sl_registry_files_on_path(const sl_registry *r) {
-  return r->lazy ? r->n_files : r->n_libraries + r->n_problems;
-}
+int sl_registry_files_on_path(const sl_registry *r) { return r->lazy ? r->n_files : r->n_libraries + r->n_problems; }

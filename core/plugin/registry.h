@@ -29,10 +29,10 @@
 /* What the closures of one descriptor did during a run (profile): folded in
  * when an instance is destroyed. */
 typedef struct sl_closure_usage {
-  long instances;                /* created */
-  unsigned long long calls;      /* batched evaluations */
-  unsigned long long points;     /* points evaluated */
-  double seconds;                /* wall seconds inside evaluate, when timed (sl_registry_set_timing) */
+  long instances;            /* created */
+  unsigned long long calls;  /* batched evaluations */
+  unsigned long long points; /* points evaluated */
+  double seconds;            /* wall seconds inside evaluate, when timed (sl_registry_set_timing) */
 } sl_closure_usage;
 
 typedef struct sl_library {
@@ -40,7 +40,7 @@ typedef struct sl_library {
   void *handle; /* dlopen handle */
   int32_t n_closures;
   const sl_closure_desc *const *closures;
-  int n_in_use; /* closures created from this library */
+  int n_in_use;            /* closures created from this library */
   sl_closure_usage *usage; /* [n_closures] */
   int timing;              /* instances created from now on time their evaluations */
 } sl_library;
@@ -65,14 +65,14 @@ typedef struct sl_registry {
   int n_files;
   char **files;
   unsigned char *file_tried;
-  int *file_dir;             /* the folder of each file (index into dirs) */
+  int *file_dir;              /* the folder of each file (index into dirs) */
   unsigned char *dir_indexed; /* [n_dirs]: the folder has an index file */
   int children_listed;        /* the unindexed libraries were listed in a child */
   int n_index, cap_index;     /* what the indexes (and the child listings) say */
   struct sl_index_entry {
     sl_kind kind;
     char *name, *path;
-  } *index;
+  } * index;
   long n_dlopen; /* libraries dlopen'ed (kept or refused) */
   int timing;    /* see sl_registry_set_timing */
 } sl_registry;

@@ -13,10 +13,12 @@
 
 size_t sl_param_type_size(sl_param_type type) {
   switch (type) {
-    case SL_PARAM_REAL: return sizeof(double);
+    case SL_PARAM_REAL:
+      return sizeof(double);
     case SL_PARAM_INT:
     case SL_PARAM_BOOL:
-    case SL_PARAM_ENUM: return sizeof(int32_t);
+    case SL_PARAM_ENUM:
+      return sizeof(int32_t);
   }
   return 0;
 }
@@ -40,16 +42,14 @@ static int validate_params(const sl_closure_desc *c, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT, "closure '%s': n_params = %d but no parameter table", c->name,
                        (int)c->n_params);
   if (c->n_params > 0 && c->params_size == 0)
-    return sl_diag_set(d, SL_EBADINPUT, "closure '%s': params_size is 0 with %d parameters", c->name,
-                       (int)c->n_params);
+    return sl_diag_set(d, SL_EBADINPUT, "closure '%s': params_size is 0 with %d parameters", c->name, (int)c->n_params);
   for (int32_t i = 0; i < c->n_params; ++i) {
     const sl_param_desc *p = &c->params[i];
     if (!is_snake_name(p->name))
-      return sl_diag_set(d, SL_EBADINPUT, "closure '%s': parameter %d has no lower_snake_case name", c->name,
-                         (int)i);
+      return sl_diag_set(d, SL_EBADINPUT, "closure '%s': parameter %d has no lower_snake_case name", c->name, (int)i);
     if (strcmp(p->name, "model") == 0 || strcmp(p->name, "library") == 0)
-      return sl_diag_set(d, SL_EBADINPUT, "closure '%s': parameter name '%s' is reserved for the scene file",
-                         c->name, p->name);
+      return sl_diag_set(d, SL_EBADINPUT, "closure '%s': parameter name '%s' is reserved for the scene file", c->name,
+                         p->name);
     for (int32_t j = 0; j < i; ++j)
       if (strcmp(c->params[j].name, p->name) == 0)
         return sl_diag_set(d, SL_EBADINPUT, "closure '%s': parameter '%s' is declared twice", c->name, p->name);
@@ -59,21 +59,20 @@ static int validate_params(const sl_closure_desc *c, sl_diag *d) {
                          (int)p->type);
     if (p->offset + sz > c->params_size || p->offset % sz != 0)
       return sl_diag_set(d, SL_EBADINPUT,
-                         "closure '%s': parameter '%s' at offset %zu does not fit a %zu-byte parameter struct",
-                         c->name, p->name, p->offset, c->params_size);
+                         "closure '%s': parameter '%s' at offset %zu does not fit a %zu-byte parameter struct", c->name,
+                         p->name, p->offset, c->params_size);
     if (p->type == SL_PARAM_ENUM) {
       int nc = count_choices(p->choices);
       if (nc == 0 || p->def < 0 || p->def >= nc || p->def != floor(p->def))
         return sl_diag_set(d, SL_EBADINPUT, "closure '%s': enum parameter '%s' has a bad default or no choices",
                            c->name, p->name);
     } else {
-      if (isnan(p->def) || isnan(p->min) || isnan(p->max) || p->min > p->max || p->def < p->min ||
-          p->def > p->max)
-        return sl_diag_set(d, SL_EBADINPUT, "closure '%s': parameter '%s' default %g is outside [%g, %g]",
-                           c->name, p->name, p->def, p->min, p->max);
+      if (isnan(p->def) || isnan(p->min) || isnan(p->max) || p->min > p->max || p->def < p->min || p->def > p->max)
+        return sl_diag_set(d, SL_EBADINPUT, "closure '%s': parameter '%s' default %g is outside [%g, %g]", c->name,
+                           p->name, p->def, p->min, p->max);
       if (p->type != SL_PARAM_REAL && p->def != floor(p->def))
-        return sl_diag_set(d, SL_EBADINPUT, "closure '%s': integer parameter '%s' has default %g", c->name,
-                           p->name, p->def);
+        return sl_diag_set(d, SL_EBADINPUT, "closure '%s': integer parameter '%s' has default %g", c->name, p->name,
+                           p->def);
     }
     if (!p->units || !p->help)
       return sl_diag_set(d, SL_EBADINPUT, "closure '%s': parameter '%s' lacks units or help", c->name, p->name);
@@ -81,8 +80,7 @@ static int validate_params(const sl_closure_desc *c, sl_diag *d) {
   return 0;
 }
 
-static int validate_fields(const sl_closure_desc *c, const sl_field_desc *f, int32_t n, int inputs,
-                           sl_diag *d) {
+static int validate_fields(const sl_closure_desc *c, const sl_field_desc *f, int32_t n, int inputs, sl_diag *d) {
   const char *what = inputs ? "input" : "output";
   if (n < (inputs ? 0 : 1) || (n > 0 && !f))
     return sl_diag_set(d, SL_EBADINPUT, "closure '%s': bad %s table (n = %d)", c->name, what, (int)n);
@@ -97,12 +95,12 @@ static int validate_fields(const sl_closure_desc *c, const sl_field_desc *f, int
         int nn;
         const char *const *names = sl_input_names(&nn);
         const char *s = sl_suggest(f[i].name, names, nn);
-        return sl_diag_set(d, SL_EBADINPUT, "closure '%s': input '%s' is not a field the host knows%s%s%s",
-                           c->name, f[i].name, s ? " (did you mean '" : "", s ? s : "", s ? "'?)" : "");
+        return sl_diag_set(d, SL_EBADINPUT, "closure '%s': input '%s' is not a field the host knows%s%s%s", c->name,
+                           f[i].name, s ? " (did you mean '" : "", s ? s : "", s ? "'?)" : "");
       }
       if (!(f[i].valid_min <= f[i].typical && f[i].typical <= f[i].valid_max) || !isfinite(f[i].typical))
-        return sl_diag_set(d, SL_EBADINPUT, "closure '%s': input '%s' typical value %g is outside [%g, %g]",
-                           c->name, f[i].name, f[i].typical, f[i].valid_min, f[i].valid_max);
+        return sl_diag_set(d, SL_EBADINPUT, "closure '%s': input '%s' typical value %g is outside [%g, %g]", c->name,
+                           f[i].name, f[i].typical, f[i].valid_min, f[i].valid_max);
     }
   }
   return 0;
@@ -119,16 +117,14 @@ int sl_validate_descriptor(const sl_closure_desc *c, sl_diag *d) {
     return sl_diag_set(d, SL_EBADINPUT,
                        "closure built with %u-byte reals and %u-byte indices; this sluice uses %zu and %zu",
                        (unsigned)c->real_size, (unsigned)c->index_size, sizeof(double), sizeof(int32_t));
-  if (!is_snake_name(c->name))
-    return sl_diag_set(d, SL_EBADINPUT, "a closure has no lower_snake_case name");
+  if (!is_snake_name(c->name)) return sl_diag_set(d, SL_EBADINPUT, "a closure has no lower_snake_case name");
   if (!sl_kind_name(c->kind))
     return sl_diag_set(d, SL_EBADINPUT, "closure '%s' has unknown kind %d", c->name, (int)c->kind);
   if (!c->evaluate) return sl_diag_set(d, SL_EBADINPUT, "closure '%s' has no evaluate function", c->name);
   if ((c->create == NULL) != (c->destroy == NULL))
     return sl_diag_set(d, SL_EBADINPUT, "closure '%s' must give both create and destroy, or neither", c->name);
   if (!c->version || !c->summary || !c->reference || !c->validity || !c->formula)
-    return sl_diag_set(d, SL_EBADINPUT, "closure '%s' lacks version, summary, formula, reference or validity",
-                       c->name);
+    return sl_diag_set(d, SL_EBADINPUT, "closure '%s' lacks version, summary, formula, reference or validity", c->name);
   int rc = validate_params(c, d);
   if (!rc) rc = validate_fields(c, c->in, c->n_in, 1, d);
   if (!rc) rc = validate_fields(c, c->out, c->n_out, 0, d);

@@ -104,8 +104,9 @@ static int check_read_mesh(const char *path, const sl_mesh *m, sl_diag *d) {
     }
   double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]);
   if (!(extent >= MIN_EXTENT && extent <= MAX_EXTENT))
-    return sl_diag_set(d, SL_EBADINPUT, "%s: the mesh's largest extent is %g m, outside [%g, %g] m (lengths are in metres)",
-                       path, extent, MIN_EXTENT, MAX_EXTENT);
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s: the mesh's largest extent is %g m, outside [%g, %g] m (lengths are in metres)", path,
+                       extent, MIN_EXTENT, MAX_EXTENT);
   double scale = fmax(extent, big);
   for (int f = 0; f < m->n_faces && m->dim == 2; ++f) {
     double len = sl_mesh_face_length(m, f);
@@ -119,8 +120,9 @@ static int check_read_mesh(const char *path, const sl_mesh *m, sl_diag *d) {
   for (int c = 0; c < m->n_cells && m->dim == 1; ++c) {
     double len = sl_mesh_cell_area(m, c);
     if (len >= SIZE_RATIO * scale) continue;
-    return sl_diag_set(d, SL_EBADINPUT, "%s: cell %d is %g m long, less than %g times the mesh's size %g m: a degenerate mesh",
-                       path, c, len, SIZE_RATIO, scale);
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s: cell %d is %g m long, less than %g times the mesh's size %g m: a degenerate mesh", path, c,
+                       len, SIZE_RATIO, scale);
   }
   return 0;
 }
@@ -148,8 +150,7 @@ static void warn_unnamed(const sl_scene *sc, const char *path, const sl_mesh *m)
       partner = e && strcmp(e->value, m->boundary_names[b]) == 0;
     }
     if (partner) continue;
-    fprintf(stderr,
-            "sluice: warning: %s: the physical boundary '%s' has no [%s] section in the scene: it gets %s\n",
+    fprintf(stderr, "sluice: warning: %s: the physical boundary '%s' has no [%s] section in the scene: it gets %s\n",
             path, m->boundary_names[b], name, def);
   }
 }
@@ -166,8 +167,8 @@ static int grading(const sl_scene *sc, const char *const *text, const char *key,
     if (strncmp(s, "geometric", (size_t)(colon - s)) == 0 && colon - s == 9) g->kind = SL_GRADE_GEOMETRIC;
     else if (strncmp(s, "symmetric", (size_t)(colon - s)) == 0 && colon - s == 9) g->kind = SL_GRADE_SYMMETRIC;
     else
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [mesh] %s = %s: expected geometric:RATIO or symmetric:RATIO",
-                         e->file, e->line, key, s);
+      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [mesh] %s = %s: expected geometric:RATIO or symmetric:RATIO", e->file,
+                         e->line, key, s);
     num = colon + 1;
   }
   if (sl_parse_real(num, &g->ratio) || !(g->ratio > 0.0))
@@ -237,8 +238,8 @@ int sl_scene_mesh_build(const sl_scene *sc, sl_mesh **out, sl_diag *d) {
   switch (c->generator) {
     case 0: /* interval */
       if ((rc = range(sc, &c->x, "x", x, d)) || (rc = cells(sc, 1, n, d))) return rc;
-      if ((rc = check_memory(sc, n[0], 1, d)) ||
-          (rc = check_spacing(sc, &c->x, "x", "grading_x", &c->grading_x, x[0], x[1], n[0], &o.grade_x, x[1] - x[0], d)))
+      if ((rc = check_memory(sc, n[0], 1, d)) || (rc = check_spacing(sc, &c->x, "x", "grading_x", &c->grading_x, x[0],
+                                                                     x[1], n[0], &o.grade_x, x[1] - x[0], d)))
         return rc;
       return sl_mesh_interval(x[0], x[1], n[0], &o.grade_x, out, d);
     case 1: /* rectangle */
@@ -276,8 +277,8 @@ int sl_scene_mesh_build(const sl_scene *sc, sl_mesh **out, sl_diag *d) {
       sl_gmsh_opts go = {.split_quads = c->split_quads};
       rc = sl_mesh_read_gmsh_opts(path, &go, out, d);
       /* a mesh file's run: estimated once the mesh is read, before the model allocates its systems */
-      if (!rc && ((rc = check_read_mesh(path, *out, d)) ||
-                  (rc = check_memory_at(sc, path, (*out)->n_cells, (*out)->dim, d))))
+      if (!rc &&
+          ((rc = check_read_mesh(path, *out, d)) || (rc = check_memory_at(sc, path, (*out)->n_cells, (*out)->dim, d))))
         sl_mesh_destroy(*out), *out = NULL;
       if (!rc) warn_unnamed(sc, path, *out);
       free(path);
@@ -289,7 +290,8 @@ int sl_scene_mesh_build(const sl_scene *sc, sl_mesh **out, sl_diag *d) {
 }
 
 int sl_scene_line_chain(const sl_mesh *m, int *vertex, int *cell, sl_diag *d) {
-  if (m->dim != 1) return sl_diag_set(d, SL_EBADINPUT, "the mesh is %d-D; a 1-D mesh (geometry = line) is needed", m->dim);
+  if (m->dim != 1)
+    return sl_diag_set(d, SL_EBADINPUT, "the mesh is %d-D; a 1-D mesh (geometry = line) is needed", m->dim);
   int n = m->n_cells;
   /* 1-D cells run towards increasing x: start at the vertex that begins a cell and ends none */
   int *next = malloc((size_t)m->n_vertices * sizeof *next), *cell_at = malloc((size_t)m->n_vertices * sizeof *cell_at);

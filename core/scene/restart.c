@@ -16,10 +16,25 @@
  * physics, the boundaries, the closures and their parameters, the time scheme) is the checkpoint's. The
  * initial state is the checkpoint's, so [initial] is not read. */
 static const char *const may_change[] = {
-    "time.end",         "time.dt",           "time.dt_min",      "time.dt_max",          "time.max_steps",
-    "time.tolerance",   "time.adaptive",     "time.controller",  "output.*",             "solver.linear",
-    "solver.reuse",     "solver.ordering",   "solver.max_iterations", "solver.nonlinear_tolerance",
-    "solver.picard_first", "solver.skip_known", "solver.nonlinear", "plugins.*",           "initial.*",
+    "time.end",
+    "time.dt",
+    "time.dt_min",
+    "time.dt_max",
+    "time.max_steps",
+    "time.tolerance",
+    "time.adaptive",
+    "time.controller",
+    "output.*",
+    "solver.linear",
+    "solver.reuse",
+    "solver.ordering",
+    "solver.max_iterations",
+    "solver.nonlinear_tolerance",
+    "solver.picard_first",
+    "solver.skip_known",
+    "solver.nonlinear",
+    "plugins.*",
+    "initial.*",
     "scene.title",
 };
 
@@ -81,29 +96,29 @@ static int default_text(const sl_schema *schema, const char *section, const char
   const sl_key *k = sl_schema_key(schema, sec, key);
   if (!k || k->def_doc) return 0;
   switch (k->type) {
-  case SL_KEY_REAL:
-  case SL_KEY_INT:
-    snprintf(buf, cap, "%.17g", k->def);
-    return 1;
-  case SL_KEY_BOOL:
-    snprintf(buf, cap, "%s", k->def != 0.0 ? "true" : "false");
-    return 1;
-  case SL_KEY_CHOICE: {
-    const char *c = k->choices;
-    for (int i = 0; i < (int)k->def && c; ++i) c = strchr(c, '|'), c = c ? c + 1 : NULL;
-    if (!c) return 0;
-    size_t n = strcspn(c, "|");
-    snprintf(buf, cap, "%.*s", (int)n, c);
-    return 1;
-  }
-  case SL_KEY_STRING:
-  case SL_KEY_EXPR:
-  case SL_KEY_EXPRS:
-    if (!k->def_text) return 0;
-    snprintf(buf, cap, "%s", k->def_text);
-    return 1;
-  default:
-    return 0;
+    case SL_KEY_REAL:
+    case SL_KEY_INT:
+      snprintf(buf, cap, "%.17g", k->def);
+      return 1;
+    case SL_KEY_BOOL:
+      snprintf(buf, cap, "%s", k->def != 0.0 ? "true" : "false");
+      return 1;
+    case SL_KEY_CHOICE: {
+      const char *c = k->choices;
+      for (int i = 0; i < (int)k->def && c; ++i) c = strchr(c, '|'), c = c ? c + 1 : NULL;
+      if (!c) return 0;
+      size_t n = strcspn(c, "|");
+      snprintf(buf, cap, "%.*s", (int)n, c);
+      return 1;
+    }
+    case SL_KEY_STRING:
+    case SL_KEY_EXPR:
+    case SL_KEY_EXPRS:
+      if (!k->def_text) return 0;
+      snprintf(buf, cap, "%s", k->def_text);
+      return 1;
+    default:
+      return 0;
   }
 }
 
@@ -122,13 +137,12 @@ static int compare_key(const sl_scene *sc, const char *section, const char *key,
   const char *vt = then ? then->value : default_text(sc->schema, section, key, dt, sizeof dt) ? dt : NULL;
   if (vn && vt && (same_value(vn, vt) || same_bool_text(vn, vt))) return 0;
   char where[600];
-  if (now && now->file)
-    snprintf(where, sizeof where, "%s:%d: [%s] %s", now->file, now->line, section, key);
-  else
-    snprintf(where, sizeof where, "[%s] %s", section, key);
-  const char *w = "[time] end, dt, dt_min, dt_max, max_steps, tolerance, adaptive, controller; [output]; [solver] "
-                  "linear, reuse, ordering, max_iterations, nonlinear_tolerance, picard_first, skip_known, nonlinear; "
-                  "[plugins]; [scene] title";
+  if (now && now->file) snprintf(where, sizeof where, "%s:%d: [%s] %s", now->file, now->line, section, key);
+  else snprintf(where, sizeof where, "[%s] %s", section, key);
+  const char *w =
+      "[time] end, dt, dt_min, dt_max, max_steps, tolerance, adaptive, controller; [output]; [solver] "
+      "linear, reuse, ordering, max_iterations, nonlinear_tolerance, picard_first, skip_known, nonlinear; "
+      "[plugins]; [scene] title";
   return sl_diag_set(d, SL_EBADINPUT,
                      "%s = %s: the checkpoint in %s was run with %s; a restart continues the same scene (what may "
                      "change: %s)",
@@ -145,7 +159,7 @@ static int compare_ini(const sl_scene *sc, const sl_ini *now, const sl_ini *then
       if (strcmp(key, "include") == 0) continue;
       const sl_ini_entry *ea = find(a, sec->name, key), *eb = find(b, sec->name, key);
       if (ea != &sec->entries[e]) continue; /* a key given twice: its last value, once */
-      if (!now_first && eb) continue;        /* the keys both have were compared in the first pass */
+      if (!now_first && eb) continue;       /* the keys both have were compared in the first pass */
       int rc = now_first ? compare_key(sc, sec->name, key, ea, eb, ck_path, d)
                          : compare_key(sc, sec->name, key, eb, ea, ck_path, d);
       if (rc) return rc;

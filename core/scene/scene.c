@@ -179,8 +179,7 @@ static void owner_hint(const builder *b, const char *section, const char *key, c
                     : (strncmp(section, "closure.", 8) == 0 ? sl_schema_role(s, section + 8) != NULL
                                                             : sl_schema_has_section(s, section));
       if (!has) continue;
-      if (sibling && s->variant)
-        snprintf(buf, len, "; it is a key of the %s (%s)", s->title, s->variant);
+      if (sibling && s->variant) snprintf(buf, len, "; it is a key of the %s (%s)", s->title, s->variant);
       else
         snprintf(buf, len, "; it is read by model = %s%s%s%s", s->model, s->variant ? " (" : "",
                  s->variant ? s->variant : "", s->variant ? ")" : "");
@@ -230,7 +229,8 @@ static int check_keys(builder *b, const sl_ini_section *sec, const char *schema_
     char list[900];
     size_t at = 0;
     list[0] = '\0';
-    for (int k = 0; k < n && at < sizeof list; ++k) at += (size_t)snprintf(list + at, sizeof list - at, "%s%s", k ? ", " : "", names[k]);
+    for (int k = 0; k < n && at < sizeof list; ++k)
+      at += (size_t)snprintf(list + at, sizeof list - at, "%s%s", k ? ", " : "", names[k]);
     model_label(s, label, sizeof label);
     if (sug && !*hint)
       return sl_diag_set(d, SL_EBADINPUT, "%s:%d:%d: error: unknown key '%s' in [%s]; did you mean '%s'?", e->file,
@@ -426,8 +426,9 @@ static int fill_boundaries(builder *b, sl_diag *d) {
         if (key->when_doc)
           return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] %s: only %s takes it (this one is type = %s)", e->file,
                              e->line, name, key->name, key->when_doc, tname);
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] %s: only a boundary of type = %s takes it (this one is type = %s)",
-                           e->file, e->line, name, key->name, allowed, tname);
+        return sl_diag_set(d, SL_EBADINPUT,
+                           "%s:%d: [%s] %s: only a boundary of type = %s takes it (this one is type = %s)", e->file,
+                           e->line, name, key->name, allowed, tname);
       }
   }
   return 0;
@@ -569,10 +570,13 @@ int sl_scene_build(sl_ini *ini, const sl_schema *schema, const sl_scene_opts *o,
     if (!sl_linsolve_built("petsc"))
       rc = sl_diag_set(d, SL_EBADINPUT,
                        "launched on %d ranks (mpirun), but this sluice was built without PETSc and MPI: it runs on "
-                       "one (configure with -DSLUICE_WITH_PETSC=ON to run on several)", ranks);
+                       "one (configure with -DSLUICE_WITH_PETSC=ON to run on several)",
+                       ranks);
     else if (!sl_schema_key(schema, "solver", "linear"))
-      rc = sl_diag_set(d, SL_EBADINPUT, "launched on %d ranks (mpirun): the %s cannot run on several ranks yet; run "
-                       "it on one", ranks, schema->title);
+      rc = sl_diag_set(d, SL_EBADINPUT,
+                       "launched on %d ranks (mpirun): the %s cannot run on several ranks yet; run "
+                       "it on one",
+                       ranks, schema->title);
     else if (sl_scene_given(sc, &sc->solver.linear) && sc->solver.linear != 4)
       rc = sl_diag_set(d, SL_EBADINPUT,
                        "%s: launched on %d ranks (mpirun), the linear solves must be PETSc's (linear = petsc or "
@@ -672,7 +676,9 @@ int sl_scene_require(const sl_scene *sc, const void *field, sl_diag *d) {
   return sl_diag_set(d, SL_EBADINPUT, "%s: error: missing section [%s] (it needs the key '%s')", root, section, key);
 }
 
-int sl_scene_has_section(const sl_scene *sc, const char *section) { return sl_ini_find_section(sc->ini, section) != NULL; }
+int sl_scene_has_section(const sl_scene *sc, const char *section) {
+  return sl_ini_find_section(sc->ini, section) != NULL;
+}
 
 static const sl_ini_section *named_section(const sl_scene *sc, const char *family, int i) {
   size_t n = strlen(family);
@@ -809,8 +815,8 @@ int sl_scene_provenance_make(const sl_scene *sc, const char *sluice_version, sl_
       sl_params_format_value(c, cl->params, k, v, sizeof v);
       at += (size_t)snprintf(buf + at, len - at, "%s = %s\n", c->params[k].name, v);
     }
-    p->closures[p->pv.n_closures++] = (sl_provenance_closure){sc->closure_sections[r], sl_kind_name(c->kind), c->name,
-                                                              c->version, cl->library->path, buf};
+    p->closures[p->pv.n_closures++] = (sl_provenance_closure){
+        sc->closure_sections[r], sl_kind_name(c->kind), c->name, c->version, cl->library->path, buf};
   }
   return 0;
 }

@@ -36,16 +36,16 @@ typedef struct sl_mesh_config {
 
 /* [solver] */
 typedef struct sl_solver_config {
-  int linear;   /* 0 auto, then umfpack | klu | cholmod | petsc (SL_SCENE_LINEAR_CHOICES) */
-  int ordering; /* auto | amd | colamd | metis */
+  int linear;    /* 0 auto, then umfpack | klu | cholmod | petsc (SL_SCENE_LINEAR_CHOICES) */
+  int ordering;  /* auto | amd | colamd | metis */
   int nonlinear; /* newton | picard */
   double nonlinear_tolerance;
   long max_iterations, picard_first;
   const char *continuation; /* "section.key", "" for none */
   double continuation_from;
   long continuation_steps;
-  int skip_known; /* skip the solves whose result is known (a flow at rest, at a fixed point) */
-  int reuse;      /* factorisation reuse: 0 auto, 1 never */
+  int skip_known;      /* skip the solves whose result is known (a flow at rest, at a fixed point) */
+  int reuse;           /* factorisation reuse: 0 auto, 1 never */
   char *petsc_options; /* [solver.petsc] as PETSc options ("-ksp_type gmres ..."), NULL: none */
 } sl_solver_config;
 
@@ -137,9 +137,9 @@ typedef struct sl_scene {
 
 /* Everything a scene needs to be built. */
 typedef struct sl_scene_opts {
-  const sl_registry *registry; /* for the closures (NULL: they are not looked up) */
-  int create_closures;         /* create them (a run); 0: look them up and check their parameters only */
-  int build_mesh;              /* build the mesh and the boundaries (0: the keys only, as --print-config) */
+  const sl_registry *registry;     /* for the closures (NULL: they are not looked up) */
+  int create_closures;             /* create them (a run); 0: look them up and check their parameters only */
+  int build_mesh;                  /* build the mesh and the boundaries (0: the keys only, as --print-config) */
   const sl_schema *const *schemas; /* every model's, for "it is a key of model = X" in the messages */
   int n_schemas;
 } sl_scene_opts;

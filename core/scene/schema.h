@@ -60,8 +60,8 @@ typedef struct sl_key {
   sl_key_target target;
   size_t offset; /* of the value in its target struct */
   unsigned flags;
-  double def;              /* REAL, INT, BOOL (0/1), CHOICE (index) */
-  const double *def_list;  /* REALS: the default list (n_def values; 0: an empty list) */
+  double def;             /* REAL, INT, BOOL (0/1), CHOICE (index) */
+  const double *def_list; /* REALS: the default list (n_def values; 0: an empty list) */
   int n_def;
   double min, max;      /* REAL, INT, REALS */
   const char *choices;  /* CHOICE: "a|b|c" */
@@ -71,7 +71,7 @@ typedef struct sl_key {
   const char *def_doc;  /* the default in words, where the model works it out ("dt x 1e-6"); NULL: the value */
   const char *units;
   const char *help;
-  unsigned when_type; /* boundary keys: bit k allows the key on a boundary of type choice k (0: any type) */
+  unsigned when_type;   /* boundary keys: bit k allows the key on a boundary of type choice k (0: any type) */
   const char *when_doc; /* those types in words, "an inlet or a wall" (NULL: their names) */
 } sl_key;
 
@@ -108,8 +108,8 @@ typedef struct sl_schema {
   int n_tables;
   sl_role roles[SL_SCHEMA_MAX_ROLES];
   int n_roles;
-  size_t config_size;   /* the model's configuration struct */
-  size_t boundary_size; /* the struct of each boundary (0: the model reads no [boundary.NAME]) */
+  size_t config_size;        /* the model's configuration struct */
+  size_t boundary_size;      /* the struct of each boundary (0: the model reads no [boundary.NAME]) */
   const char *const *fields; /* the output fields [output] fields may name */
   int n_fields;
 } sl_schema;

@@ -12,9 +12,9 @@ static const char *const linear_names[] = {"umfpack", "klu", "cholmod", "petsc"}
 
 static const char *const petsc_families[] = {"ksp_", "pc_", "fieldsplit_", "sub_", "mg_", "mat_"};
 /* Words of options that write, print, draw, time or run something: never from a scene file. */
-static const char *const petsc_refused[] = {"view", "monitor", "log", "file", "debug", "dump", "draw", "history",
-                                            "python", "malloc", "error", "trace", "info", "options", "viewer",
-                                            "save", "output", "test", "memory", "signal", "stack", "fp_trap"};
+static const char *const petsc_refused[] = {
+    "view",  "monitor", "log",     "file",   "debug", "dump",   "draw", "history", "python", "malloc", "error",
+    "trace", "info",    "options", "viewer", "save",  "output", "test", "memory",  "signal", "stack",  "fp_trap"};
 
 static int petsc_value_ok(const char *v) {
   if (!*v) return 0;
@@ -112,7 +112,11 @@ int sl_scene_linsolve(const sl_scene *sc, int32_t n, sl_linsolve **ls, const cha
   /* auto chose UMFPACK: where its crude pivot ratio calls the matrix singular, KLU takes over (once), with the
      ordering the scene gives KLU */
   if (which == 0 && strcmp(*name, "umfpack") == 0 &&
-      (rc = sl_linsolve_set_fallback(*ls, "klu", given ? sc->solver.ordering : k ? (int)k->def : 0, d))) {
+      (rc = sl_linsolve_set_fallback(*ls, "klu",
+                                     given ? sc->solver.ordering
+                                     : k   ? (int)k->def
+                                           : 0,
+                                     d))) {
     sl_linsolve_destroy(*ls);
     *ls = NULL;
     return rc;

@@ -29,9 +29,9 @@ typedef struct sl_anderson {
   int have_prev;   /* f and G of the previous iterate are held */
   double *dF, *dG; /* [depth][n], oldest first */
   double *f_prev, *g_prev;
-  double *f;       /* work: f_k */
+  double *f; /* work: f_k */
   double gram[64], rhs[8], gamma[8];
-  int dropped;     /* differences dropped for conditioning since the last reset (a diagnostic) */
+  int dropped; /* differences dropped for conditioning since the last reset (a diagnostic) */
 } sl_anderson;
 
 enum { SL_ANDERSON_MAX_DEPTH = 8 };

@@ -24,11 +24,11 @@
 
 typedef struct sl_band {
   int32_t n, kl, ku, ld;
-  double *ab;     /* [ld n], column-major band */
-  int32_t *ipiv;  /* [n]: the row interchanged with row j at step j */
-  double *rs;     /* [n]: row i scaled by rs[i] = 1 / max_j |A(i, j)| before the factorisation */
-  int32_t ku_lu;  /* the superdiagonals of the last factorisation's U (ku, up to kl + ku with interchanges) */
-  long n_factor;  /* factorisations done */
+  double *ab;    /* [ld n], column-major band */
+  int32_t *ipiv; /* [n]: the row interchanged with row j at step j */
+  double *rs;    /* [n]: row i scaled by rs[i] = 1 / max_j |A(i, j)| before the factorisation */
+  int32_t ku_lu; /* the superdiagonals of the last factorisation's U (ku, up to kl + ku with interchanges) */
+  long n_factor; /* factorisations done */
 } sl_band;
 
 /* An n x n band with kl sub- and ku superdiagonals, zero. 0 or SL_ENOMEM. */

@@ -50,10 +50,10 @@ typedef struct sl_krylov_result {
 typedef struct sl_krylov {
   int32_t n;
   int m;
-  double *V, *Z;      /* (m + 1) x n and m x n */
-  double *H;          /* (m + 1) x m, column-major */
+  double *V, *Z; /* (m + 1) x n and m x n */
+  double *H;     /* (m + 1) x m, column-major */
   double *cs, *sn, *g, *y;
-  double *r;          /* n: the computed residual */
+  double *r; /* n: the computed residual */
 } sl_krylov;
 
 int sl_krylov_init(sl_krylov *k, int32_t n, int m, sl_diag *d);

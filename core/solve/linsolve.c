@@ -18,7 +18,7 @@ struct sl_linsolve {
   const sl_csr *matrix;
   const double *values;
   int32_t n;
-  double *work; /* copy of b for in-place solves */
+  double *work;     /* copy of b for in-place solves */
   double *factored; /* copy of the values last factorised: a re-assembled but
                        unchanged matrix (a constant operator) is not refactorised */
   int32_t n_factored;
@@ -28,8 +28,8 @@ struct sl_linsolve {
   double *pivoted;
   int32_t n_pivoted;
   int refactored, distributed;
-  double *history;          /* sl_linsolve_history's array */
-  double *pending;          /* sl_linsolve_restore_history's, rebuilt at the next factorisation or solve */
+  double *history; /* sl_linsolve_history's array */
+  double *pending; /* sl_linsolve_restore_history's, rebuilt at the next factorisation or solve */
   int64_t n_pending;
   sl_linsolve_stats st;
   /* factorisation reuse */
@@ -39,7 +39,7 @@ struct sl_linsolve {
   int fresh_pending; /* sl_linsolve_drop_numeric was called (see settle_fresh) */
   int numeric_since_symbolic;
   sl_krylov kry;
-  double *kry_b;     /* copy of b for in-place solves through FGMRES */
+  double *kry_b; /* copy of b for in-place solves through FGMRES */
   /* sl_linsolve_set_fallback: the solver that takes over from a singular factorisation, once */
   const sl_linsolve_ops *fallback;
   int fallback_ordering;
@@ -48,8 +48,8 @@ struct sl_linsolve {
 
 static const sl_linsolve_reuse reuse_defaults = {.enabled = 1, .max_iterations = 20, .slow_iterations = 7};
 
-static const char *const reason_names[SL_REFACTOR_N] = {"first", "pattern",    "direct", "forced",   "iterations",
-                                                        "stagnation", "slow", "breakdown", "fresh"};
+static const char *const reason_names[SL_REFACTOR_N] = {"first",      "pattern", "direct",    "forced", "iterations",
+                                                        "stagnation", "slow",    "breakdown", "fresh"};
 
 const char *sl_refactor_reason_name(int reason) {
   return reason >= 0 && reason < SL_REFACTOR_N ? reason_names[reason] : "unknown";
@@ -62,8 +62,9 @@ static const sl_linsolve_ops *const solver_ops[] = {&sl_linsolve_umfpack_ops, &s
 #ifndef SLUICE_WITH_PETSC
 static int no_petsc(void **backend, sl_diag *d) {
   *backend = NULL;
-  return sl_diag_set(d, SL_EBADINPUT, "linear solver petsc: this sluice was built without PETSc (configure with "
-                                      "-DSLUICE_WITH_PETSC=ON; Debian: libpetsc-real-dev)");
+  return sl_diag_set(d, SL_EBADINPUT,
+                     "linear solver petsc: this sluice was built without PETSc (configure with "
+                     "-DSLUICE_WITH_PETSC=ON; Debian: libpetsc-real-dev)");
 }
 static void no_destroy(void *backend) { (void)backend; }
 const sl_linsolve_ops sl_linsolve_petsc_ops = {.name = "petsc", .create = no_petsc, .destroy = no_destroy};
@@ -148,7 +149,8 @@ int sl_linsolve_create(sl_linsolve **ls, const char *name, sl_diag *d) {
   const char *hint = sl_suggest(name, solver_names, N_SOLVERS);
   if (hint)
     return sl_diag_set(d, SL_EBADINPUT,
-                       "unknown linear solver '%s' (did you mean '%s'?); known: umfpack, klu, cholmod, petsc", name, hint);
+                       "unknown linear solver '%s' (did you mean '%s'?); known: umfpack, klu, cholmod, petsc", name,
+                       hint);
   return sl_diag_set(d, SL_EBADINPUT, "unknown linear solver '%s'; known: umfpack, klu, cholmod, petsc", name);
 }
 
@@ -188,8 +190,10 @@ static int take_over(sl_linsolve *ls, sl_diag *d) {
     if (backend) next->destroy(backend);
     return rc;
   }
-  snprintf(ls->fallback_note, sizeof ls->fallback_note, "%s found the matrix numerically singular (pivot ratio "
-           "%.3g): %s took over", ls->ops->name, pivot_ratio, next->name);
+  snprintf(ls->fallback_note, sizeof ls->fallback_note,
+           "%s found the matrix numerically singular (pivot ratio "
+           "%.3g): %s took over",
+           ls->ops->name, pivot_ratio, next->name);
   ls->ops->destroy(ls->backend);
   ls->ops = next, ls->backend = backend;
   ls->have_symbolic = ls->have_numeric = 0;
@@ -257,8 +261,8 @@ int64_t sl_linsolve_history(sl_linsolve *ls, const double **out) {
 int sl_linsolve_restore_history(sl_linsolve *ls, const double *h, int64_t n, sl_diag *d) {
   int64_t nnz = n >= SL_LINSOLVE_HISTORY_HEAD ? (int64_t)h[4] : -1;
   if (nnz < 1 || h[0] != 1.0 || (h[1] != 0.0 && h[1] != 1.0) || n != SL_LINSOLVE_HISTORY_HEAD + nnz * (h[1] ? 2 : 1))
-    return sl_diag_set(d, SL_EBADINPUT, "checkpoint: the %s factorisation's state (%lld values) is not one", ls->ops->name,
-                       (long long)n);
+    return sl_diag_set(d, SL_EBADINPUT, "checkpoint: the %s factorisation's state (%lld values) is not one",
+                       ls->ops->name, (long long)n);
   double *p = malloc((size_t)n * sizeof *p);
   if (!p) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", ls->ops->name);
   memcpy(p, h, (size_t)n * sizeof *p);
@@ -324,10 +328,10 @@ const sl_linsolve_stats *sl_linsolve_get_stats(const sl_linsolve *ls) { return &
 
 void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len) {
   const sl_linsolve_stats *s = &ls->st;
-  int k = snprintf(buf, len, "%s%s%s%s%s%s: %ld symbolic %.3g s, %ld numeric %.3g s", ls->fallback_note,
-                   ls->fallback_note[0] ? "; " : "", ls->ops->name,
-                   s->ordering ? " (" : "", s->ordering ? s->ordering : "", s->ordering ? " ordering)" : "",
-                   s->n_symbolic, s->t_symbolic, s->n_numeric, s->t_numeric);
+  int k =
+      snprintf(buf, len, "%s%s%s%s%s%s: %ld symbolic %.3g s, %ld numeric %.3g s", ls->fallback_note,
+               ls->fallback_note[0] ? "; " : "", ls->ops->name, s->ordering ? " (" : "", s->ordering ? s->ordering : "",
+               s->ordering ? " ordering)" : "", s->n_symbolic, s->t_symbolic, s->n_numeric, s->t_numeric);
   if (k >= 0 && (size_t)k < len && s->n_numeric_skipped > 0)
     k += snprintf(buf + k, len - (size_t)k, " (%ld skipped: matrix unchanged)", s->n_numeric_skipped);
   if (k >= 0 && (size_t)k < len && s->n_refactor > 0)
@@ -336,7 +340,8 @@ void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len) {
     k += snprintf(buf + k, len - (size_t)k, ", %ld reused (FGMRES %.1f iterations a solve, %ld refactorised) %.3g s",
                   s->n_reused, (double)s->n_krylov_iterations / (double)(s->n_reused + s->n_krylov_failed),
                   s->n_krylov_failed, s->t_krylov);
-  if (k >= 0 && (size_t)k < len) k += snprintf(buf + k, len - (size_t)k, ", %ld solves %.3g s", s->n_solves, s->t_solve);
+  if (k >= 0 && (size_t)k < len)
+    k += snprintf(buf + k, len - (size_t)k, ", %ld solves %.3g s", s->n_solves, s->t_solve);
   if (k >= 0 && (size_t)k < len && ls->ops->describe) {
     char what[160];
     ls->ops->describe(ls->backend, what, sizeof what);
@@ -387,8 +392,8 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
     stale = 0;
   }
   if (stale) {
-    if (reason < 0) reason = !ls->have_numeric ? SL_REFACTOR_FIRST : ls->force_numeric ? SL_REFACTOR_FORCED
-                                                                                      : SL_REFACTOR_DIRECT;
+    if (reason < 0)
+      reason = !ls->have_numeric ? SL_REFACTOR_FIRST : ls->force_numeric ? SL_REFACTOR_FORCED : SL_REFACTOR_DIRECT;
     ls->have_numeric = 0;
     /* A NaN from a closure would otherwise surface as a misleading "singular". */
     int bad = 0;
@@ -583,7 +588,8 @@ int sl_linsolve_solve_rtol(sl_linsolve *ls, const sl_csr *A, const double *b, do
   }
   /* the old factorisation is too far from A (or FGMRES broke down): factorise A and solve directly */
   ++ls->st.n_krylov_failed;
-  ls->reason = rc ? SL_REFACTOR_BREAKDOWN
-               : kr.status == SL_KRYLOV_STAGNATED ? SL_REFACTOR_STAGNATION : SL_REFACTOR_ITERATIONS;
+  ls->reason = rc                                 ? SL_REFACTOR_BREAKDOWN
+               : kr.status == SL_KRYLOV_STAGNATED ? SL_REFACTOR_STAGNATION
+                                                  : SL_REFACTOR_ITERATIONS;
   return sl_linsolve_solve(ls, A, b, x, d);
 }

@@ -48,23 +48,23 @@ typedef enum sl_refactor_reason {
 const char *sl_refactor_reason_name(int reason);
 
 typedef struct sl_linsolve_stats {
-  long n_symbolic;      /* symbolic analyses (orderings) */
-  long n_numeric;       /* numeric factorisations, refactorisations included */
-  long n_refactor;      /* of those, klu_refactor reusing the old pivots */
-  long n_refactor_redo; /* klu_refactor results thrown away for a fresh klu_factor (rcond degraded) */
-  long n_numeric_skipped; /* re-assembled matrices found bitwise unchanged: not refactorised */
-  long n_solves; /* systems solved, reused ones included (t_solve: FGMRES included) */
+  long n_symbolic;                       /* symbolic analyses (orderings) */
+  long n_numeric;                        /* numeric factorisations, refactorisations included */
+  long n_refactor;                       /* of those, klu_refactor reusing the old pivots */
+  long n_refactor_redo;                  /* klu_refactor results thrown away for a fresh klu_factor (rcond degraded) */
+  long n_numeric_skipped;                /* re-assembled matrices found bitwise unchanged: not refactorised */
+  long n_solves;                         /* systems solved, reused ones included (t_solve: FGMRES included) */
   double t_symbolic, t_numeric, t_solve; /* wall-clock seconds */
   double rcond;                          /* last reciprocal condition estimate (backend's own, crude) */
   const char *ordering; /* the last fill-reducing ordering, where the backend says ("amd", "metis"), else NULL */
   /* factorisation reuse (sl_linsolve_solve_rtol) */
-  long n_reused;            /* solves answered by FGMRES with an older factorisation */
-  long n_krylov_failed;     /* FGMRES attempts that ended in a refactorisation */
-  long n_krylov_iterations; /* FGMRES iterations in all, failed attempts included */
-  int krylov_max;           /* most iterations of one accepted reuse */
+  long n_reused;                       /* solves answered by FGMRES with an older factorisation */
+  long n_krylov_failed;                /* FGMRES attempts that ended in a refactorisation */
+  long n_krylov_iterations;            /* FGMRES iterations in all, failed attempts included */
+  int krylov_max;                      /* most iterations of one accepted reuse */
   long refactor_reason[SL_REFACTOR_N]; /* numeric factorisations by reason; they sum to n_numeric */
   double t_krylov; /* of t_solve, the wall-clock seconds in FGMRES (its preconditioner solves, failed attempts) */
-  int singular; /* the last numeric factorisation failed because the backend found the matrix numerically singular */
+  int singular;    /* the last numeric factorisation failed because the backend found the matrix numerically singular */
 } sl_linsolve_stats;
 
 /* A backend. Every function returns 0 or an SL_E* code with d set. The
@@ -138,14 +138,14 @@ int sl_linsolve_rows_complete(sl_rows *rows, sl_csr *A, double *b, int matrix, s
 void sl_linsolve_rows_free(sl_rows *rows);
 /* What sl_linsolve_rows_complete did in this process (the last pattern's sizes): all zero on one rank. */
 typedef struct sl_rows_stats {
-  double seconds;          /* wall seconds in sl_linsolve_rows_complete */
-  double waiting;          /* with sl_linsolve_rows_profile: of those, before them, waiting for the other ranks */
+  double seconds;           /* wall seconds in sl_linsolve_rows_complete */
+  double waiting;           /* with sl_linsolve_rows_profile: of those, before them, waiting for the other ranks */
   long calls, matrix_calls; /* its calls, those with the matrix among them */
   int ranks;
-  long rows, owned_rows;   /* the system's rows, this rank's */
-  long entries_here;       /* this rank's matrix: the entries of the rows its elements touch */
-  long owned_entries;      /* of those, in its own rows */
-  long all_entries;        /* the owned entries of every rank: the whole matrix's entries */
+  long rows, owned_rows; /* the system's rows, this rank's */
+  long entries_here;     /* this rank's matrix: the entries of the rows its elements touch */
+  long owned_entries;    /* of those, in its own rows */
+  long all_entries;      /* the owned entries of every rank: the whole matrix's entries */
 } sl_rows_stats;
 void sl_linsolve_rows_stats(sl_rows_stats *st);
 /* On (`sluice run --profile`): the ranks meet (MPI_Barrier) before each sl_linsolve_rows_complete, so that its

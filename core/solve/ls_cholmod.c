@@ -24,15 +24,24 @@ typedef struct chol_state {
 
 static const char *chol_status_text(int s) {
   switch (s) {
-    case CHOLMOD_OK: return "ok";
-    case CHOLMOD_NOT_INSTALLED: return "method not installed";
-    case CHOLMOD_OUT_OF_MEMORY: return "out of memory";
-    case CHOLMOD_TOO_LARGE: return "problem too large";
-    case CHOLMOD_INVALID: return "invalid input";
-    case CHOLMOD_GPU_PROBLEM: return "GPU problem";
-    case CHOLMOD_NOT_POSDEF: return "matrix is not positive definite";
-    case CHOLMOD_DSMALL: return "tiny diagonal entry in D";
-    default: return "unknown status";
+    case CHOLMOD_OK:
+      return "ok";
+    case CHOLMOD_NOT_INSTALLED:
+      return "method not installed";
+    case CHOLMOD_OUT_OF_MEMORY:
+      return "out of memory";
+    case CHOLMOD_TOO_LARGE:
+      return "problem too large";
+    case CHOLMOD_INVALID:
+      return "invalid input";
+    case CHOLMOD_GPU_PROBLEM:
+      return "GPU problem";
+    case CHOLMOD_NOT_POSDEF:
+      return "matrix is not positive definite";
+    case CHOLMOD_DSMALL:
+      return "tiny diagonal entry in D";
+    default:
+      return "unknown status";
   }
 }
 

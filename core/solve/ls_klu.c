@@ -12,8 +12,8 @@
  * steady solve): equal at 21 k unknowns, -6 % at 37.5 k, -36 % at 84 k and
  * -35 % at 149 k (24.9 s -> 16.2 s); at 2.5 k-9.5 k the METIS call costs more
  * than it saves. Should METIS fail (a CHOLMOD built without it), AMD. */
-#include <float.h>
 #include <cholmod.h>
+#include <float.h>
 #include <klu.h>
 #include <math.h>
 #include <stdlib.h>
@@ -34,12 +34,18 @@ typedef struct klu_state {
 
 static const char *klu_status_text(int s) {
   switch (s) {
-    case KLU_OK: return "ok";
-    case KLU_SINGULAR: return "matrix is singular";
-    case KLU_OUT_OF_MEMORY: return "out of memory";
-    case KLU_INVALID: return "invalid input";
-    case KLU_TOO_LARGE: return "problem too large";
-    default: return "unknown status";
+    case KLU_OK:
+      return "ok";
+    case KLU_SINGULAR:
+      return "matrix is singular";
+    case KLU_OUT_OF_MEMORY:
+      return "out of memory";
+    case KLU_INVALID:
+      return "invalid input";
+    case KLU_TOO_LARGE:
+      return "problem too large";
+    default:
+      return "unknown status";
   }
 }
 
@@ -57,9 +63,17 @@ static int metis_order(int n, int *Ap, int *Ai, int *Perm, klu_common *kc) {
   cholmod_common cc;
   if (!cholmod_start(&cc)) return 0;
   cc.print = 0; /* failures fall back to AMD quietly */
-  cholmod_sparse A = {.nrow = (size_t)n, .ncol = (size_t)n, .nzmax = (size_t)Ap[n], .p = Ap, .i = Ai,
-                      .stype = 0, .itype = CHOLMOD_INT, .xtype = CHOLMOD_PATTERN, .dtype = CHOLMOD_DOUBLE,
-                      .sorted = 0, .packed = 1};
+  cholmod_sparse A = {.nrow = (size_t)n,
+                      .ncol = (size_t)n,
+                      .nzmax = (size_t)Ap[n],
+                      .p = Ap,
+                      .i = Ai,
+                      .stype = 0,
+                      .itype = CHOLMOD_INT,
+                      .xtype = CHOLMOD_PATTERN,
+                      .dtype = CHOLMOD_DOUBLE,
+                      .sorted = 0,
+                      .packed = 1};
   cholmod_sparse *At = cholmod_transpose(&A, 0, &cc);
   cholmod_sparse *S = At ? cholmod_add(&A, At, NULL, NULL, 0, 0, &cc) : NULL;
   int ok = 0;
@@ -98,10 +112,17 @@ static int klu_symbolic_(void *backend, const sl_csr *A, sl_diag *d) {
   klu_drop(s);
   /* KLU's codes: 0 AMD, 1 COLAMD, 3 the user's (METIS) */
   switch (s->ordering) {
-  case SL_ORDERING_AMD: s->c.ordering = 0; break;
-  case SL_ORDERING_COLAMD: s->c.ordering = 1; break;
-  case SL_ORDERING_METIS: s->c.ordering = 3; break;
-  default: s->c.ordering = A->n_rows >= KLU_METIS_MIN_UNKNOWNS ? 3 : 0;
+    case SL_ORDERING_AMD:
+      s->c.ordering = 0;
+      break;
+    case SL_ORDERING_COLAMD:
+      s->c.ordering = 1;
+      break;
+    case SL_ORDERING_METIS:
+      s->c.ordering = 3;
+      break;
+    default:
+      s->c.ordering = A->n_rows >= KLU_METIS_MIN_UNKNOWNS ? 3 : 0;
   }
   s->c.user_order = metis_order;
   s->sym = klu_analyze(A->n_rows, AP(A), AI(A), &s->c);

@@ -42,14 +42,14 @@ typedef struct rows_exchange {
 typedef struct petsc_state {
   Mat A;
   KSP ksp;
-  Vec b, x;          /* this rank's rows */
-  Vec x_all;         /* every rank: the whole solution (several ranks) */
-  VecScatter to_all; /* x -> x_all */
-  int32_t r0, r1;    /* the rows this rank owns: [r0, r1) */
-  int size;          /* ranks in PETSC_COMM_WORLD */
-  int32_t n, split; /* split > 0: unknowns [0, split) and [split, n) are a saddle point's two fields */
-  int transient;    /* the velocity block has a mass term */
-  int configured;   /* the KSP has its type and options */
+  Vec b, x;            /* this rank's rows */
+  Vec x_all;           /* every rank: the whole solution (several ranks) */
+  VecScatter to_all;   /* x -> x_all */
+  int32_t r0, r1;      /* the rows this rank owns: [r0, r1) */
+  int size;            /* ranks in PETSC_COMM_WORLD */
+  int32_t n, split;    /* split > 0: unknowns [0, split) and [split, n) are a saddle point's two fields */
+  int transient;       /* the velocity block has a mass term */
+  int configured;      /* the KSP has its type and options */
   int user_tolerances; /* -ksp_rtol or -ksp_max_it given: they replace the exact solve's */
   long iterations;
   const sl_rows *rows; /* the matrix's rows are divided among the ranks (A->rows): this rank's own rows only */
@@ -98,10 +98,10 @@ static int petsc_fail(PetscErrorCode e, const char *what, sl_diag *d) {
   return sl_diag_set(d, SL_EFAILED, "petsc: %s failed (error %d: %s)", what, (int)e, text ? text : "unknown");
 }
 
-#define TRY(call, what)                           \
-  do {                                            \
-    PetscErrorCode e_ = (call);                   \
-    if (e_) return petsc_fail(e_, (what), d);     \
+#define TRY(call, what)                       \
+  do {                                        \
+    PetscErrorCode e_ = (call);               \
+    if (e_) return petsc_fail(e_, (what), d); \
   } while (0)
 
 int sl_linsolve_sum_ordered(double *x, int n, sl_diag *d) {
@@ -124,7 +124,6 @@ int sl_linsolve_sum_ordered(double *x, int n, sl_diag *d) {
 }
 
 /* ---- a system whose rows are divided among the ranks ------------------------------------------------------ */
-
 
 static sl_rows_stats rows_stats;
 
@@ -565,8 +564,7 @@ static int solve_rows(petsc_state *s, const double *b, double *x, double rtol, s
 static int solve_to(petsc_state *s, const double *b, double *x, double rtol, sl_diag *d) {
   if (!s->user_tolerances)
     TRY(KSPSetTolerances(s->ksp, rtol, 0.0, PETSC_DEFAULT, PETSC_EXACT_MAX_IT), "KSPSetTolerances");
-  else
-    KSPGetTolerances(s->ksp, &rtol, NULL, NULL, NULL);
+  else KSPGetTolerances(s->ksp, &rtol, NULL, NULL, NULL);
   if (s->rows) return solve_rows(s, b, x, rtol, d);
   /* this rank's part of b (every rank has all of it); the solution gathered on every rank, so that every rank
    * goes on with the same state */

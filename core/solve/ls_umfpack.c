@@ -20,21 +20,36 @@ typedef struct umf_state {
 
 static const char *umf_status_text(int s) {
   switch (s) {
-    case UMFPACK_OK: return "ok";
-    case UMFPACK_WARNING_singular_matrix: return "matrix is singular";
-    case UMFPACK_WARNING_determinant_underflow: return "determinant underflow";
-    case UMFPACK_WARNING_determinant_overflow: return "determinant overflow";
-    case UMFPACK_ERROR_out_of_memory: return "out of memory";
-    case UMFPACK_ERROR_invalid_Numeric_object: return "invalid Numeric object";
-    case UMFPACK_ERROR_invalid_Symbolic_object: return "invalid Symbolic object";
-    case UMFPACK_ERROR_argument_missing: return "argument missing";
-    case UMFPACK_ERROR_n_nonpositive: return "matrix size is not positive";
-    case UMFPACK_ERROR_invalid_matrix: return "invalid matrix (unsorted or out-of-range indices)";
-    case UMFPACK_ERROR_different_pattern: return "pattern changed since the symbolic analysis";
-    case UMFPACK_ERROR_invalid_system: return "invalid system";
-    case UMFPACK_ERROR_ordering_failed: return "ordering failed";
-    case UMFPACK_ERROR_internal_error: return "internal error";
-    default: return "unknown status";
+    case UMFPACK_OK:
+      return "ok";
+    case UMFPACK_WARNING_singular_matrix:
+      return "matrix is singular";
+    case UMFPACK_WARNING_determinant_underflow:
+      return "determinant underflow";
+    case UMFPACK_WARNING_determinant_overflow:
+      return "determinant overflow";
+    case UMFPACK_ERROR_out_of_memory:
+      return "out of memory";
+    case UMFPACK_ERROR_invalid_Numeric_object:
+      return "invalid Numeric object";
+    case UMFPACK_ERROR_invalid_Symbolic_object:
+      return "invalid Symbolic object";
+    case UMFPACK_ERROR_argument_missing:
+      return "argument missing";
+    case UMFPACK_ERROR_n_nonpositive:
+      return "matrix size is not positive";
+    case UMFPACK_ERROR_invalid_matrix:
+      return "invalid matrix (unsorted or out-of-range indices)";
+    case UMFPACK_ERROR_different_pattern:
+      return "pattern changed since the symbolic analysis";
+    case UMFPACK_ERROR_invalid_system:
+      return "invalid system";
+    case UMFPACK_ERROR_ordering_failed:
+      return "ordering failed";
+    case UMFPACK_ERROR_internal_error:
+      return "internal error";
+    default:
+      return "unknown status";
   }
 }
 

@@ -94,8 +94,8 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
      implicit buoyancy) leaves the kept factorisation no preconditioner (FGMRES stagnated in 77 of 79 steps of a
      moving Stokes mixture, docs/transient_cost.md), so the default stays direct. */
   double linear_rtol = o.linear_rtol < 0 || (o.linear && !(o.linear_rtol > 0)) ? 0.0
-                       : o.linear_rtol > 0                                   ? o.linear_rtol
-                                                                             : SL_NEWTON_LINEAR_RTOL;
+                       : o.linear_rtol > 0                                     ? o.linear_rtol
+                                                                               : SL_NEWTON_LINEAR_RTOL;
   /* A time step's corrections from its predictor: to 1e-2 of the Newton tolerance (the residual's contraction,
      which the convergence estimate reads, then holds the linear solve's error too: Dembo, Eisenstat & Steihaug
      1982); fewer FGMRES iterations and refactorisations, the same steps */
@@ -174,7 +174,8 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
       if ((rc = assemble(&c, u, mode, d))) break;
       res = norm2(A, b, n);
       res_prev = res;
-      if (floor_test) st->term_scale = term_scale(A, u), round_floor = SL_NEWTON_ROUNDOFF * (st->term_scale + o.load_scale);
+      if (floor_test)
+        st->term_scale = term_scale(A, u), round_floor = SL_NEWTON_ROUNDOFF * (st->term_scale + o.load_scale);
     }
     if (o.interrupt && *o.interrupt) {
       rc = sl_diag_set(d, SL_EFAILED, "nonlinear solve: interrupted after %d iterations (residual %.3g from %.3g)",

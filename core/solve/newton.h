@@ -78,7 +78,7 @@ typedef struct sl_newton_opts {
      only when one more iteration is needed (the test at the top of the next iteration then takes the terms'
      scale T with the matrix of the previous iterate). */
   int predicted;
-  double linear_rtol;   /* each correction's relative residual |b - A du|_2 <= linear_rtol |b|_2, so that
+  double linear_rtol; /* each correction's relative residual |b - A du|_2 <= linear_rtol |b|_2, so that
                            the solver may reuse an older factorisation (sl_linsolve_solve_rtol); default
                            SL_NEWTON_LINEAR_RTOL (predicted: at least 1e-2 rtol); negative: direct solves. A
                            linear problem solves directly unless it is given (> 0). */
@@ -126,16 +126,16 @@ typedef struct sl_newton_stats {
   double correction;          /* the last relative correction */
   double term_scale;          /* T of the last iterate (see above) */
   int roundoff;               /* converged with the residual at the round-off of its terms */
-  int estimated;              /* correction is the estimate c r / (1 - r) of what is left (c the last one, r the residual's
+  int estimated; /* correction is the estimate c r / (1 - r) of what is left (c the last one, r the residual's
                                  contraction), below the tolerance, and no further solve was made */
   double history[SL_NEWTON_HISTORY]; /* relative correction of each iteration */
-  double t_assembly;          /* wall seconds in the callback */
+  double t_assembly;                 /* wall seconds in the callback */
 } sl_newton_stats;
 
 /* Solves R(u) = 0 starting from u (overwritten with the solution). Returns 0,
  * SL_EFAILED when it does not converge (u then holds the last iterate and
  * the message says how far it got) or a code from the callback or solver. */
-int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_fn assemble, void *user,
-                    sl_linsolve *ls, const sl_newton_opts *opts, sl_newton_stats *st, sl_diag *d);
+int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_fn assemble, void *user, sl_linsolve *ls,
+                    const sl_newton_opts *opts, sl_newton_stats *st, sl_diag *d);
 
 #endif

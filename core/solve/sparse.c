@@ -173,10 +173,8 @@ static int32_t find_in_row(const sl_csr *A, int32_t i, int32_t j) {
   while (lo <= hi) {
     int32_t mid = lo + (hi - lo) / 2, c = A->col_idx[mid];
     if (c == j) return mid;
-    if (c < j)
-      lo = mid + 1;
-    else
-      hi = mid - 1;
+    if (c < j) lo = mid + 1;
+    else hi = mid - 1;
   }
   return -1;
 }

@@ -34,7 +34,9 @@ static void quantity_text(const sl_study *s, char *buf, size_t n) {
   const char *m = sm->reduce == SL_REDUCE_MIN ? "minimum" : "maximum";
   if (!sm->has_line) snprintf(buf, n, "%s of %s", m, q);
   else if (sm->line_dim == 1) snprintf(buf, n, "%s of %s on %g < x < %g", m, q, sm->line[0], sm->line[2]);
-  else snprintf(buf, n, "%s of %s on (%g, %g)\xE2\x80\x93(%g, %g)", m, q, sm->line[0], sm->line[1], sm->line[2], sm->line[3]);
+  else
+    snprintf(buf, n, "%s of %s on (%g, %g)\xE2\x80\x93(%g, %g)", m, q, sm->line[0], sm->line[1], sm->line[2],
+             sm->line[3]);
 }
 
 /* The axis title of the first points key: known keys in words with units. */
@@ -73,7 +75,8 @@ int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d) {
   int nv = s->n_variants, np = s->n_points, comparison = s->m.against == SL_AGAINST_NONE;
   int profile = 0, max_n = 2 * np; /* room for the breaks of a sweep that turns back */
   for (int i = 0; i < t->n_rows; ++i)
-    if (t->rows[i].measured && t->rows[i].m.is_profile) profile = 1, max_n = t->rows[i].m.n > max_n ? t->rows[i].m.n : max_n;
+    if (t->rows[i].measured && t->rows[i].m.is_profile)
+      profile = 1, max_n = t->rows[i].m.n > max_n ? t->rows[i].m.n : max_n;
   int all_x = s->n_point_keys > 0 && np > 1;
   for (int p = 0; p < np; ++p) all_x &= isfinite(s->point_x[p]) && s->point_x[p] > 0.0;
   build b = {.max_n = max_n};
@@ -121,8 +124,8 @@ int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d) {
     const char *unit = s->m.label ? "" : sl_plot_unit(s->m.name);
     char err[700];
     if (s->m.against == SL_AGAINST_VALUE)
-      snprintf(err, sizeof err, "|%s %s %.10g|%s%s%s", s->m.label ? quantity : sym, s->m.value < 0 ? "+" : "\xE2\x88\x92",
-               fabs(s->m.value), unit[0] ? " (" : "", unit, unit[0] ? ")" : "");
+      snprintf(err, sizeof err, "|%s %s %.10g|%s%s%s", s->m.label ? quantity : sym,
+               s->m.value < 0 ? "+" : "\xE2\x88\x92", fabs(s->m.value), unit[0] ? " (" : "", unit, unit[0] ? ")" : "");
     else if (s->m.reduce != SL_REDUCE_NONE || (s->m.scalar && s->m.against != SL_AGAINST_REFERENCE))
       snprintf(err, sizeof err, "error in the %s", quantity);
     else snprintf(err, sizeof err, "%s error in %s", norm_text(s->m.norm), quantity);
@@ -135,8 +138,12 @@ int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d) {
     for (int q = first; q < 2; ++q) {
       sl_chart *c = &b.panels[q - first];
       sl_chart_series *sr = b.series + q * nv;
-      *c = (sl_chart){.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .n_series = nv, .series = sr,
-                      .xlabel = q ? "CPU time of the run (s)" : xlabel[0], .ylabel = ylabel[q]};
+      *c = (sl_chart){.xscale = SL_AXIS_LOG,
+                      .yscale = SL_AXIS_LOG,
+                      .n_series = nv,
+                      .series = sr,
+                      .xlabel = q ? "CPU time of the run (s)" : xlabel[0],
+                      .ylabel = ylabel[q]};
       snprintf(ylabel[q], sizeof ylabel[q], "%s", err);
       c->title = q ? "work against precision" : "convergence";
       for (int v = 0; v < nv; ++v) {
@@ -158,17 +165,24 @@ int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d) {
     n_panels = 2 - first;
   } else if (profile) {
     sl_chart *c = &b.panels[0];
-    *c = (sl_chart){.xscale = SL_AXIS_LINEAR, .yscale = SL_AXIS_LINEAR, .n_series = t->n_rows, .series = b.series,
-                    .xlabel = xlabel[0], .ylabel = ylabel[0]};
+    *c = (sl_chart){.xscale = SL_AXIS_LINEAR,
+                    .yscale = SL_AXIS_LINEAR,
+                    .n_series = t->n_rows,
+                    .series = b.series,
+                    .xlabel = xlabel[0],
+                    .ylabel = ylabel[0]};
     const sl_bench_row *first = NULL;
     for (int i = 0; i < t->n_rows && !first; ++i)
       if (t->rows[i].measured) first = &t->rows[i];
     const double *l = first ? first->m.line : NULL;
     if (s->m.scalar) snprintf(xlabel[0], sizeof xlabel[0], "time t (s)");
     else if (!l) snprintf(xlabel[0], sizeof xlabel[0], "distance along the line (m)");
-    else if (l[1] == 0.0 && l[3] == 0.0 && l[2] > l[0]) snprintf(xlabel[0], sizeof xlabel[0], "x \xE2\x88\x92 %g (m)", l[0]);
-    else if (l[0] == l[2] && l[3] > l[1]) snprintf(xlabel[0], sizeof xlabel[0], "y \xE2\x88\x92 %g (m), along x = %g m", l[1], l[0]);
-    else if (l[1] == l[3] && l[2] > l[0]) snprintf(xlabel[0], sizeof xlabel[0], "x \xE2\x88\x92 %g (m), along y = %g m", l[0], l[1]);
+    else if (l[1] == 0.0 && l[3] == 0.0 && l[2] > l[0])
+      snprintf(xlabel[0], sizeof xlabel[0], "x \xE2\x88\x92 %g (m)", l[0]);
+    else if (l[0] == l[2] && l[3] > l[1])
+      snprintf(xlabel[0], sizeof xlabel[0], "y \xE2\x88\x92 %g (m), along x = %g m", l[1], l[0]);
+    else if (l[1] == l[3] && l[2] > l[0])
+      snprintf(xlabel[0], sizeof xlabel[0], "x \xE2\x88\x92 %g (m), along y = %g m", l[0], l[1]);
     else snprintf(xlabel[0], sizeof xlabel[0], "distance from (%g, %g) towards (%g, %g) (m)", l[0], l[1], l[2], l[3]);
     snprintf(ylabel[0], sizeof ylabel[0], "%s", quantity);
     for (int i = 0; i < t->n_rows; ++i) {
@@ -181,13 +195,21 @@ int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d) {
       sl_plot_pretty(raw, b.names[i], sizeof b.names[i]);
       /* about 20 markers a curve, staggered between curves so that they do not hide each other */
       int every = n > 30 ? n / 20 : 1;
-      b.series[i] = (sl_chart_series){.name = b.names[i], .n = n, .x = b.xs + (size_t)i * max_n, .y = b.ys + (size_t)i * max_n,
-                                      .marker_every = every, .marker_offset = every * i / (t->n_rows > 0 ? t->n_rows : 1)};
+      b.series[i] = (sl_chart_series){.name = b.names[i],
+                                      .n = n,
+                                      .x = b.xs + (size_t)i * max_n,
+                                      .y = b.ys + (size_t)i * max_n,
+                                      .marker_every = every,
+                                      .marker_offset = every * i / (t->n_rows > 0 ? t->n_rows : 1)};
     }
   } else {
     sl_chart *c = &b.panels[0];
-    *c = (sl_chart){.xscale = SL_AXIS_LINEAR, .yscale = SL_AXIS_LINEAR, .n_series = nv, .series = b.series,
-                    .xlabel = xlabel[0], .ylabel = ylabel[0]};
+    *c = (sl_chart){.xscale = SL_AXIS_LINEAR,
+                    .yscale = SL_AXIS_LINEAR,
+                    .n_series = nv,
+                    .series = b.series,
+                    .xlabel = xlabel[0],
+                    .ylabel = ylabel[0]};
     int is_cells;
     if (all_x) point_key_text(s, xlabel[0], sizeof xlabel[0], &is_cells);
     else snprintf(xlabel[0], sizeof xlabel[0], "point");
@@ -212,11 +234,17 @@ int sl_bench_write_plot(const sl_bench_table *t, const char *path, sl_diag *d) {
   }
   int failed = failed_runs(t);
   if (failed)
-    snprintf(note, sizeof note, "sluice bench %s: %d of %d runs not plotted (failed or not measured; see %s.csv)", s->path,
-             failed, t->n_rows, s->name);
+    snprintf(note, sizeof note, "sluice bench %s: %d of %d runs not plotted (failed or not measured; see %s.csv)",
+             s->path, failed, t->n_rows, s->name);
   else snprintf(note, sizeof note, "sluice bench %s: %d runs, each in its own process", s->path, t->n_rows);
-  sl_figure f = {.title = title, .subtitle = subtitle, .note = note, .n_panels = n_panels, .panels = b.panels,
-                 .columns = n_panels, .panel_width = n_panels > 1 ? 560 : 960, .panel_height = n_panels > 1 ? 440 : 520};
+  sl_figure f = {.title = title,
+                 .subtitle = subtitle,
+                 .note = note,
+                 .n_panels = n_panels,
+                 .panels = b.panels,
+                 .columns = n_panels,
+                 .panel_width = n_panels > 1 ? 560 : 960,
+                 .panel_height = n_panels > 1 ? 440 : 520};
   if (n_panels == 1) b.panels[0].title = NULL;
   int rc = sl_figure_write(path, &f, d);
   build_free(&b);

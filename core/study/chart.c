@@ -71,7 +71,9 @@ static int runs_of(const char *text, run *r) {
 }
 
 static double run_size(const run *r, double size) { return r->level ? 0.7 * size : size; }
-static double run_shift(const run *r, double size) { return r->level > 0 ? -0.42 * size : r->level < 0 ? 0.22 * size : 0.0; }
+static double run_shift(const run *r, double size) {
+  return r->level > 0 ? -0.42 * size : r->level < 0 ? 0.22 * size : 0.0;
+}
 
 /* The advance of one character in em: the bitmap font's 0.6 for all, or a
  * sans-serif face's (DejaVu Sans, Helvetica) by class of character. */
@@ -116,17 +118,26 @@ static void svg_hex(FILE *f, uint32_t c) { fprintf(f, "#%06X", (unsigned)(c & 0x
 
 static void svg_escaped(FILE *f, const char *s, size_t n, int minus) {
   for (size_t i = 0; i < n; ++i) switch (s[i]) {
-      case '<': fputs("&lt;", f); break;
-      case '>': fputs("&gt;", f); break;
-      case '&': fputs("&amp;", f); break;
-      case '"': fputs("&quot;", f); break;
+      case '<':
+        fputs("&lt;", f);
+        break;
+      case '>':
+        fputs("&gt;", f);
+        break;
+      case '&':
+        fputs("&amp;", f);
+        break;
+      case '"':
+        fputs("&quot;", f);
+        break;
       case '-':
         if (minus) {
           fputs("\xE2\x88\x92", f);
           break;
         }
         /* fall through */
-      default: fputc(s[i], f);
+      default:
+        fputc(s[i], f);
     }
 }
 
@@ -183,7 +194,8 @@ static void cv_rect(canvas *cv, double x0, double y0, double x1, double y1, long
     fprintf(cv->f, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"", x0, y0, x1 - x0, y1 - y0);
     if (fill >= 0) svg_hex(cv->f, (uint32_t)fill);
     else fputs("none", cv->f);
-    if (stroke >= 0) fputs("\" stroke=\"", cv->f), svg_hex(cv->f, (uint32_t)stroke), fputs("\" stroke-width=\"1", cv->f);
+    if (stroke >= 0)
+      fputs("\" stroke=\"", cv->f), svg_hex(cv->f, (uint32_t)stroke), fputs("\" stroke-width=\"1", cv->f);
     fputs("\"/>\n", cv->f);
     return;
   }
@@ -200,23 +212,25 @@ static void cv_marker(canvas *cv, double x, double y, sl_chart_marker m, double 
     FILE *f = cv->f;
     switch (m) {
       case SL_CHART_MARK_SQUARE:
-        fprintf(f, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"", x - 0.85 * r, y - 0.85 * r, 1.7 * r, 1.7 * r);
+        fprintf(f, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"", x - 0.85 * r, y - 0.85 * r, 1.7 * r,
+                1.7 * r);
         break;
       case SL_CHART_MARK_TRIANGLE:
-        fprintf(f, "<path d=\"M%.2f,%.2fL%.2f,%.2fL%.2f,%.2fZ\"", x, y - 1.2 * r, x + 1.05 * r, y + 0.65 * r, x - 1.05 * r,
-                y + 0.65 * r);
+        fprintf(f, "<path d=\"M%.2f,%.2fL%.2f,%.2fL%.2f,%.2fZ\"", x, y - 1.2 * r, x + 1.05 * r, y + 0.65 * r,
+                x - 1.05 * r, y + 0.65 * r);
         break;
       case SL_CHART_MARK_DIAMOND:
-        fprintf(f, "<path d=\"M%.2f,%.2fL%.2f,%.2fL%.2f,%.2fL%.2f,%.2fZ\"", x, y - 1.2 * r, x + 1.2 * r, y, x, y + 1.2 * r,
-                x - 1.2 * r, y);
+        fprintf(f, "<path d=\"M%.2f,%.2fL%.2f,%.2fL%.2f,%.2fL%.2f,%.2fZ\"", x, y - 1.2 * r, x + 1.2 * r, y, x,
+                y + 1.2 * r, x - 1.2 * r, y);
         break;
       case SL_CHART_MARK_CROSS:
-        fprintf(f, "<path d=\"M%.2f,%.2fL%.2f,%.2fM%.2f,%.2fL%.2f,%.2f\" fill=\"none\" stroke-width=\"1.6\" stroke=\"", x - r,
-                y - r, x + r, y + r, x - r, y + r, x + r, y - r);
+        fprintf(f, "<path d=\"M%.2f,%.2fL%.2f,%.2fM%.2f,%.2fL%.2f,%.2f\" fill=\"none\" stroke-width=\"1.6\" stroke=\"",
+                x - r, y - r, x + r, y + r, x - r, y + r, x + r, y - r);
         svg_hex(f, col);
         fputs("\"/>\n", f);
         return;
-      default: fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\"", x, y, r);
+      default:
+        fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\"", x, y, r);
     }
     fputs(" fill=\"", f), svg_hex(f, col), fputs("\"/>\n", f);
     return;
@@ -227,8 +241,8 @@ static void cv_marker(canvas *cv, double x, double y, sl_chart_marker m, double 
 typedef enum anchor { START, MIDDLE, END } anchor;
 
 /* Text with its baseline at y; vertical: turned a quarter turn anticlockwise about (x, y). */
-static void cv_text(canvas *cv, double x, double y, const char *text, double size, anchor a, int vertical,
-                    uint32_t col, int bold, const char *cls) {
+static void cv_text(canvas *cv, double x, double y, const char *text, double size, anchor a, int vertical, uint32_t col,
+                    int bold, const char *cls) {
   if (!text || !*text) return;
   run r[MAX_RUNS];
   int n = runs_of(text, r);
@@ -340,7 +354,11 @@ static void number_label(char *buf, size_t n, double v, int decimals) {
     char mb[32];
     snprintf(mb, sizeof mb, "%.3g", fabs(m));
     if (!strcmp(mb, "1")) snprintf(buf, n, "%s10^{%d}", v < 0 ? "\xE2\x88\x92" : "", e);
-    else snprintf(buf, n, "%s%s\xC3\x97" "10^{%d}", v < 0 ? "\xE2\x88\x92" : "", mb, e);
+    else
+      snprintf(buf, n,
+               "%s%s\xC3\x97"
+               "10^{%d}",
+               v < 0 ? "\xE2\x88\x92" : "", mb, e);
     return;
   }
   char b[40];
@@ -352,7 +370,11 @@ static void number_label(char *buf, size_t n, double v, int decimals) {
 static void decade_label(char *buf, size_t n, int m, int e, int plain) {
   if (plain) snprintf(buf, n, "%.*f", e < 0 ? -e : 0, m * pow(10.0, e));
   else if (m == 1) snprintf(buf, n, "10^{%d}", e);
-  else snprintf(buf, n, "%d\xC3\x97" "10^{%d}", m, e);
+  else
+    snprintf(buf, n,
+             "%d\xC3\x97"
+             "10^{%d}",
+             m, e);
 }
 
 static void linear_ticks(axis *a, double lo, double hi, int log_positions) {
@@ -361,7 +383,8 @@ static void linear_ticks(axis *a, double lo, double hi, int log_positions) {
   else if (raw <= 2.0 * p) step = 2.0 * p;
   else if (raw <= 5.0 * p) step = 5.0 * p;
   int decimals = step >= 1.0 ? 0 : (int)ceil(-log10(step) - 1e-9);
-  for (double k = ceil(lo / step - 1e-9); k * step <= hi * (1 + 1e-12) + 1e-12 * step && a->n_ticks < MAX_TICKS; k += 1.0) {
+  for (double k = ceil(lo / step - 1e-9); k * step <= hi * (1 + 1e-12) + 1e-12 * step && a->n_ticks < MAX_TICKS;
+       k += 1.0) {
     double v = k * step;
     if (fabs(v) < 1e-9 * step) v = 0.0;
     if (log_positions && v <= 0.0) continue;
@@ -394,7 +417,8 @@ static void make_axis(axis *a, sl_axis_scale s, double lo, double hi, double mar
       for (int m = 2; m <= 9; ++m) {
         double v = e + log10(m);
         if (v < a->lo || v > a->hi) continue;
-        int label = majors <= 0 || a->hi - a->lo < 0.7 || (majors == 1 && decades <= 2 && (m == 2 || m == 3 || m == 5)) ||
+        int label = majors <= 0 || a->hi - a->lo < 0.7 ||
+                    (majors == 1 && decades <= 2 && (m == 2 || m == 3 || m == 5)) ||
                     (majors == 2 && a->hi - a->lo <= 2.5 && (m == 2 || m == 5));
         decade_label(buf, sizeof buf, m, e, plain);
         add_tick(a, v, 0, label ? buf : NULL);
@@ -468,7 +492,8 @@ static void make_triangle(const sl_chart_series *s, double yspan_decades, triang
   t->x[1] = xb, t->y[1] = b + slope * xb - drop;
   if (slope < 0) t->x[2] = xa, t->y[2] = t->y[1];
   else t->x[2] = xb, t->y[2] = t->y[0];
-  snprintf(t->label, sizeof t->label, s->slope_format ? s->slope_format : "slope %.2f", s->slope_negate ? -slope : slope);
+  snprintf(t->label, sizeof t->label, s->slope_format ? s->slope_format : "slope %.2f",
+           s->slope_negate ? -slope : slope);
 }
 
 /* ---- panels --------------------------------------------------------------- */
@@ -490,7 +515,9 @@ static double py(const panel *p, double v) {
 static double pxc(const panel *p, double c) { return p->x0 + (c - p->ax.lo) / (p->ax.hi - p->ax.lo) * (p->x1 - p->x0); }
 static double pyc(const panel *p, double c) { return p->y1 - (c - p->ay.lo) / (p->ay.hi - p->ay.lo) * (p->y1 - p->y0); }
 
-static int point_ok(const sl_chart *c, double x, double y) { return plottable(c->xscale, x) && plottable(c->yscale, y); }
+static int point_ok(const sl_chart *c, double x, double y) {
+  return plottable(c->xscale, x) && plottable(c->yscale, y);
+}
 
 /* Axes over the data, the spans asked for and the reference triangles. */
 static int fit_axes(panel *p) {
@@ -511,8 +538,10 @@ static int fit_axes(panel *p) {
   int any = xlo <= xhi;
   if (any) {
     for (int k = 0; k < 2; ++k) {
-      if (c->xspan[0] != c->xspan[1] && plottable(c->xscale, c->xspan[k])) xlo = fmin(xlo, c->xspan[k]), xhi = fmax(xhi, c->xspan[k]);
-      if (c->yspan[0] != c->yspan[1] && plottable(c->yscale, c->yspan[k])) ylo = fmin(ylo, c->yspan[k]), yhi = fmax(yhi, c->yspan[k]);
+      if (c->xspan[0] != c->xspan[1] && plottable(c->xscale, c->xspan[k]))
+        xlo = fmin(xlo, c->xspan[k]), xhi = fmax(xhi, c->xspan[k]);
+      if (c->yspan[0] != c->yspan[1] && plottable(c->yscale, c->yspan[k]))
+        ylo = fmin(ylo, c->yspan[k]), yhi = fmax(yhi, c->yspan[k]);
     }
     if (c->xscale == SL_AXIS_LOG && c->yscale == SL_AXIS_LOG)
       for (int k = 0; k < c->n_series; ++k) {
@@ -545,9 +574,10 @@ static void draw_axes(canvas *cv, const panel *p, double ox, double oy, double h
     double y = pyc(p, t->v);
     cv_line(cv, p->x0, y, p->x1, y, 1, t->major ? GRID : MINOR_GRID, 0);
   }
-  if (cv->f) fprintf(cv->f, "<g class=\"axis\" data-axis=\"x\" data-lo=\"%.10g\" data-hi=\"%.10g\">\n",
-                     p->ax.scale == SL_AXIS_LOG ? pow(10.0, p->ax.lo) : p->ax.lo,
-                     p->ax.scale == SL_AXIS_LOG ? pow(10.0, p->ax.hi) : p->ax.hi);
+  if (cv->f)
+    fprintf(cv->f, "<g class=\"axis\" data-axis=\"x\" data-lo=\"%.10g\" data-hi=\"%.10g\">\n",
+            p->ax.scale == SL_AXIS_LOG ? pow(10.0, p->ax.lo) : p->ax.lo,
+            p->ax.scale == SL_AXIS_LOG ? pow(10.0, p->ax.hi) : p->ax.hi);
   for (int k = 0; k < p->ax.n_ticks; ++k) {
     const tick *t = &p->ax.ticks[k];
     double x = pxc(p, t->v);
@@ -556,9 +586,10 @@ static void draw_axes(canvas *cv, const panel *p, double ox, double oy, double h
   }
   if (cv->f) fputs("</g>\n", cv->f);
   double widest = 0;
-  if (cv->f) fprintf(cv->f, "<g class=\"axis\" data-axis=\"y\" data-lo=\"%.10g\" data-hi=\"%.10g\">\n",
-                     p->ay.scale == SL_AXIS_LOG ? pow(10.0, p->ay.lo) : p->ay.lo,
-                     p->ay.scale == SL_AXIS_LOG ? pow(10.0, p->ay.hi) : p->ay.hi);
+  if (cv->f)
+    fprintf(cv->f, "<g class=\"axis\" data-axis=\"y\" data-lo=\"%.10g\" data-hi=\"%.10g\">\n",
+            p->ay.scale == SL_AXIS_LOG ? pow(10.0, p->ay.lo) : p->ay.lo,
+            p->ay.scale == SL_AXIS_LOG ? pow(10.0, p->ay.hi) : p->ay.hi);
   for (int k = 0; k < p->ay.n_ticks; ++k) {
     const tick *t = &p->ay.ticks[k];
     double y = pyc(p, t->v);
@@ -577,7 +608,8 @@ static void draw_axes(canvas *cv, const panel *p, double ox, double oy, double h
     double size = fmax(9.0, fmin(LABEL, LABEL * (p->y1 - p->y0) / fmax(text_width(c->ylabel, LABEL), 1.0)));
     cv_text(cv, ox + 10 + LABEL, 0.5 * (p->y0 + p->y1), c->ylabel, size, MIDDLE, 1, INK, 0, "ylabel");
   }
-  if (head_y > 0 && c->title) cv_text(cv, 0.5 * (p->x0 + p->x1), head_y, c->title, HEAD, MIDDLE, 0, INK, 1, "panel-title");
+  if (head_y > 0 && c->title)
+    cv_text(cv, 0.5 * (p->x0 + p->x1), head_y, c->title, HEAD, MIDDLE, 0, INK, 1, "panel-title");
 }
 
 static void draw_series(canvas *cv, const panel *p) {
@@ -586,7 +618,8 @@ static void draw_series(canvas *cv, const panel *p) {
   for (int k = 0; k < c->n_series; ++k) {
     const sl_chart_series *s = &c->series[k];
     uint32_t col = series_colour(s, k);
-    double *xs = malloc(sizeof *xs * (size_t)(s->n > 0 ? s->n : 1)), *ys = malloc(sizeof *ys * (size_t)(s->n > 0 ? s->n : 1));
+    double *xs = malloc(sizeof *xs * (size_t)(s->n > 0 ? s->n : 1)),
+           *ys = malloc(sizeof *ys * (size_t)(s->n > 0 ? s->n : 1));
     if (!xs || !ys) {
       free(xs), free(ys);
       continue;
@@ -675,7 +708,10 @@ static void draw_legend(canvas *cv, const panel *p) {
       if (best_count < 0 || count < best_count) corner = q, best_count = count;
     }
   } else {
-    corner = c->legend == SL_LEGEND_TOP_RIGHT ? 0 : c->legend == SL_LEGEND_TOP_LEFT ? 1 : c->legend == SL_LEGEND_BOTTOM_RIGHT ? 2 : 3;
+    corner = c->legend == SL_LEGEND_TOP_RIGHT      ? 0
+             : c->legend == SL_LEGEND_TOP_LEFT     ? 1
+             : c->legend == SL_LEGEND_BOTTOM_RIGHT ? 2
+                                                   : 3;
   }
   double bx = corner % 2 ? p->x0 + 8 : p->x1 - 8 - bw, by = corner < 2 ? p->y0 + 8 : p->y1 - 8 - bh;
   if (cv->f) fputs("<g class=\"legend\">\n", cv->f);
@@ -722,8 +758,9 @@ static double colourbar_width(const sl_chart_heatmap *hm, const axis *bar) {
 static void draw_heatmap(canvas *cv, const panel *p) {
   const sl_chart *c = p->c;
   const sl_chart_heatmap *hm = c->heatmap;
-  if (cv->f) fprintf(cv->f, "<g class=\"heatmap\" shape-rendering=\"crispEdges\" data-lo=\"%.10g\" data-hi=\"%.10g\">\n",
-                     hm->lo, hm->hi);
+  if (cv->f)
+    fprintf(cv->f, "<g class=\"heatmap\" shape-rendering=\"crispEdges\" data-lo=\"%.10g\" data-hi=\"%.10g\">\n", hm->lo,
+            hm->hi);
   cv_clip_begin(cv, p->x0, p->y0, p->x1, p->y1);
   for (int j = 0; j < hm->ny; ++j)
     for (int i = 0; i < hm->nx; ++i) {
@@ -733,7 +770,8 @@ static void draw_heatmap(canvas *cv, const panel *p) {
         continue;
       double x0 = px(p, hm->x_edges[i]), x1 = px(p, hm->x_edges[i + 1]);
       double y0 = py(p, hm->y_edges[j + 1]), y1 = py(p, hm->y_edges[j]);
-      cv_rect(cv, fmin(x0, x1), fmin(y0, y1), fmax(x0, x1), fmax(y0, y1), sl_chart_heat_colour(heat_fraction(hm, v)), -1);
+      cv_rect(cv, fmin(x0, x1), fmin(y0, y1), fmax(x0, x1), fmax(y0, y1), sl_chart_heat_colour(heat_fraction(hm, v)),
+              -1);
     }
   cv_clip_end(cv);
   if (cv->f) fputs("</g>\n", cv->f);
@@ -742,8 +780,9 @@ static void draw_heatmap(canvas *cv, const panel *p) {
 static void draw_colourbar(canvas *cv, const panel *p, const axis *bar) {
   const sl_chart_heatmap *hm = p->c->heatmap;
   double x0 = p->x1 + BAR_GAP, x1 = x0 + BAR_W, y0 = p->y0, y1 = p->y1;
-  if (cv->f) fprintf(cv->f, "<g class=\"colourbar\" shape-rendering=\"crispEdges\" data-lo=\"%.10g\" data-hi=\"%.10g\">\n",
-                     bar->lo, bar->hi);
+  if (cv->f)
+    fprintf(cv->f, "<g class=\"colourbar\" shape-rendering=\"crispEdges\" data-lo=\"%.10g\" data-hi=\"%.10g\">\n",
+            bar->lo, bar->hi);
   for (int k = 0; k < BAR_STRIPS; ++k) { /* from lo at the bottom, each strip the colour of its middle */
     double v = bar->lo + (k + 0.5) / BAR_STRIPS * (bar->hi - bar->lo);
     double ya = y1 - (double)(k + 1) / BAR_STRIPS * (y1 - y0), yb = y1 - (double)k / BAR_STRIPS * (y1 - y0);
@@ -792,7 +831,8 @@ static int draw_panel(canvas *cv, const sl_chart *c, double ox, double oy, doubl
   if (c->heatmap) draw_colourbar(cv, &p, &bar);
   draw_series(cv, &p);
   draw_legend(cv, &p);
-  if (!p.any) cv_text(cv, 0.5 * (p.x0 + p.x1), 0.5 * (p.y0 + p.y1), "no point to plot", LABEL, MIDDLE, 0, 0xA00000, 0, NULL);
+  if (!p.any)
+    cv_text(cv, 0.5 * (p.x0 + p.x1), 0.5 * (p.y0 + p.y1), "no point to plot", LABEL, MIDDLE, 0, 0xA00000, 0, NULL);
   free(p.tri);
   return 0;
 }
@@ -831,7 +871,8 @@ static int draw_lines(canvas *cv, const char *text, double x, double y, double s
 }
 
 static double header_height(const sl_figure *f, double W) {
-  return 6 + (f->title ? TITLE + 8 : 0) + draw_lines(NULL, f->subtitle, 0, 0, SUB, W - 16, MIDDLE, INK, NULL) * (SUB + 4) + 4;
+  return 6 + (f->title ? TITLE + 8 : 0) +
+         draw_lines(NULL, f->subtitle, 0, 0, SUB, W - 16, MIDDLE, INK, NULL) * (SUB + 4) + 4;
 }
 static double footer_height(const sl_figure *f, double W) {
   return f->note ? draw_lines(NULL, f->note, 0, 0, SMALL, W - 16, START, NOTE, NULL) * (SMALL + 4) + 8 : 4;
@@ -875,20 +916,23 @@ static int raster(const sl_figure *f, int w, int h, double pw, double ph, int he
       for (int ch = 0; ch < 3; ++ch) {
         unsigned sum = 0;
         for (int j = 0; j < SS; ++j)
-          for (int i = 0; i < SS; ++i) sum += big.rgb[(((size_t)(y * SS + j) * (size_t)big.w) + (size_t)(x * SS + i)) * 3 + ch];
+          for (int i = 0; i < SS; ++i)
+            sum += big.rgb[(((size_t)(y * SS + j) * (size_t)big.w) + (size_t)(x * SS + i)) * 3 + ch];
         im->rgb[((size_t)y * (size_t)w + (size_t)x) * 3 + ch] = (unsigned char)((sum + SS * SS / 2) / (SS * SS));
       }
   sl_image_free(&big);
   return 0;
 }
 
-static int svg(const char *path, const sl_figure *f, double W, double H, double pw, double ph, int heading, sl_diag *d) {
+static int svg(const char *path, const sl_figure *f, double W, double H, double pw, double ph, int heading,
+               sl_diag *d) {
   FILE *out = fopen(path, "w");
   if (!out) return sl_diag_set(d, SL_EFAILED, "%s: %s", path, strerror(errno));
   fprintf(out,
           "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
           "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
-          "font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"#FFFFFF\"/>\n",
+          "font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n<rect width=\"100%%\" height=\"100%%\" "
+          "fill=\"#FFFFFF\"/>\n",
           W, H, W, H);
   canvas cv = {.f = out};
   int rc = render(&cv, f, W, H, pw, ph, heading, d);

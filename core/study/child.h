@@ -28,9 +28,9 @@ typedef struct sl_child_opts {
   const char *out, *err;
   void (*line)(void *user, const char *text);
   void *line_user;
-  const char *dir;               /* the child's working directory (NULL: the parent's); paths above are opened after it */
-  const char *const *env;        /* "NAME=VALUE" settings for the child, NULL-terminated (NULL: none) */
-  double timeout;                   /* wall seconds (0: none); then the child is killed */
+  const char *dir;        /* the child's working directory (NULL: the parent's); paths above are opened after it */
+  const char *const *env; /* "NAME=VALUE" settings for the child, NULL-terminated (NULL: none) */
+  double timeout;         /* wall seconds (0: none); then the child is killed */
   volatile sig_atomic_t *interrupt; /* when set: SIGINT forwarded to the child, once */
 } sl_child_opts;
 

@@ -178,8 +178,9 @@ static int kynch_create(sl_bench_exact *e, const sl_ini *ini, const sl_registry 
     double n = param(c, "n", text, sizeof text), pm = param(c, "phi_max", text, sizeof text);
     if (strcmp(exponent, "given") || strcmp(cutoff, "true")) {
       sl_closure_destroy(c);
-      return refuse(d, "kynch", "covers richardson_zaki with exponent = given and packing_cutoff = true (the flux "
-                                "must vanish at phi_max)");
+      return refuse(d, "kynch",
+                    "covers richardson_zaki with exponent = given and packing_cutoff = true (the flux "
+                    "must vanish at phi_max)");
     }
     law = kx_richardson_zaki(1.0, n, pm);
     snprintf(law_text, sizeof law_text, "Richardson-Zaki n = %g, cut-off at %g", n, pm);
@@ -203,7 +204,8 @@ static int kynch_create(sl_bench_exact *e, const sl_ini *ini, const sl_registry 
   sl_closure_destroy(c);
   if (rc) return rc;
   law.u_t = u[0];
-  if (!(law.u_t > 0.0)) return refuse(d, "kynch", "needs particles that sink (a positive settling velocity at phi = 0)");
+  if (!(law.u_t > 0.0))
+    return refuse(d, "kynch", "needs particles that sink (a positive settling velocity at phi = 0)");
   for (int i = 1; i < NP; ++i) {
     double mine = kx_F(&law, phi[i]) / phi[i];
     if (!(fabs(mine - u[i]) <= 1e-9 * law.u_t)) {
@@ -252,10 +254,11 @@ static int bingham_create(sl_bench_exact *e, const sl_ini *ini, const sl_registr
   if (!(e->b.mu_p > 0.0) || !(e->b.tau0 >= 0.0)) return refuse(d, "bingham", "needs plastic_viscosity > 0");
   e->b.G = f[1] + rho * g[1];
   e->b.centre = 0.5 * (e->x0 + e->x1), e->b.half_width = 0.5 * (e->x1 - e->x0);
-  snprintf(e->description, sizeof e->description,
-           "exact Bingham channel flow: mu_p = %g Pa s, tau0 = %g Pa, G = %g Pa/m, plug |y - %g| < %g, w_plug = %.6g m/s",
-           e->b.mu_p, e->b.tau0, e->b.G, e->b.centre, e->b.G != 0.0 ? e->b.tau0 / fabs(e->b.G) : INFINITY,
-           bingham_channel_velocity(&e->b, e->b.centre));
+  snprintf(
+      e->description, sizeof e->description,
+      "exact Bingham channel flow: mu_p = %g Pa s, tau0 = %g Pa, G = %g Pa/m, plug |y - %g| < %g, w_plug = %.6g m/s",
+      e->b.mu_p, e->b.tau0, e->b.G, e->b.centre, e->b.G != 0.0 ? e->b.tau0 / fabs(e->b.G) : INFINITY,
+      bingham_channel_velocity(&e->b, e->b.centre));
   return 0;
 }
 
@@ -328,8 +331,9 @@ static int bed_inlet(const sl_ini *ini, double *U, sl_diag *d) {
   if (!right || strcmp(right->value, "outlet"))
     return refuse(d, "fluidized_bed", "needs an outlet at the top: [boundary.right] type = outlet");
   if (sl_ini_find(ini, "boundary.left", "porosity"))
-    return refuse(d, "fluidized_bed", "the inlet gives the bed's porosity itself ([boundary.left] porosity); give its "
-                                      "superficial velocity instead");
+    return refuse(d, "fluidized_bed",
+                  "the inlet gives the bed's porosity itself ([boundary.left] porosity); give its "
+                  "superficial velocity instead");
   const sl_ini_entry *v = sl_ini_find(ini, "boundary.left", "velocity");
   if (!v || sl_parse_real(v->value, U) || !(*U > 0.0))
     return refuse(d, "fluidized_bed", "needs a constant inflow: [boundary.left] velocity = a number above 0 (m/s)");
@@ -429,8 +433,8 @@ int sl_bench_exact_cell_averages(const sl_bench_exact *e) {
 
 void sl_bench_exact_domain(const sl_bench_exact *e, double *x0, double *x1) { *x0 = e->x0, *x1 = e->x1; }
 
-void sl_bench_exact_compared_span(const sl_bench_exact *e, int n, const double *xa, const double *xb,
-                                  const double *v, double *lo, double *hi) {
+void sl_bench_exact_compared_span(const sl_bench_exact *e, int n, const double *xa, const double *xb, const double *v,
+                                  double *lo, double *hi) {
   *lo = e->x0, *hi = e->x1;
   if (e->kind != EXACT_FLUIDIZED_BED) return;
   /* the bed at rest holds the run's solids at bed_phi: its top is the inventory over bed_phi above x0 */

@@ -48,8 +48,8 @@ void sl_bench_exact_domain(const sl_bench_exact *e, double *x0, double *x1);
  * over the cells [xa[c], xb[c]] (n cells, the whole column): the domain
  * itself, or for fluidized_bed the bed at rest that holds the run's solids
  * inventory (sum of v h) at the equilibrium phi. */
-void sl_bench_exact_compared_span(const sl_bench_exact *e, int n, const double *xa, const double *xb,
-                                  const double *v, double *lo, double *hi);
+void sl_bench_exact_compared_span(const sl_bench_exact *e, int n, const double *xa, const double *xb, const double *v,
+                                  double *lo, double *hi);
 
 /* Point values at x[0..n-1] at time t. */
 void sl_bench_exact_values(const sl_bench_exact *e, double t, int n, const double *x, double *v);

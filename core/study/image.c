@@ -86,10 +86,18 @@ void sl_image_marker(sl_image *im, double x, double y, sl_marker m, int r, uint3
     for (int u = -r; u <= r; ++u) {
       int in;
       switch (m) {
-        case SL_MARK_SQUARE: in = 1; break;
-        case SL_MARK_DIAMOND: in = abs(u) + abs(v) <= r; break;
-        case SL_MARK_TRIANGLE: in = 2 * abs(u) <= v + r; break; /* apex up: v = -r at the apex */
-        default: in = u * u + v * v <= r * r + r; break;
+        case SL_MARK_SQUARE:
+          in = 1;
+          break;
+        case SL_MARK_DIAMOND:
+          in = abs(u) + abs(v) <= r;
+          break;
+        case SL_MARK_TRIANGLE:
+          in = 2 * abs(u) <= v + r;
+          break; /* apex up: v = -r at the apex */
+        default:
+          in = u * u + v * v <= r * r + r;
+          break;
       }
       if (in) sl_image_set(im, cx + u, cy + v, colour);
     }

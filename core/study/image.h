@@ -25,7 +25,14 @@ void sl_image_fill(sl_image *im, int x0, int y0, int x1, int y1, uint32_t colour
  * dash > 0: drawn `dash` pixels, skipped `dash`, from the start. */
 void sl_image_line(sl_image *im, double x0, double y0, double x1, double y1, int width, uint32_t colour, int dash);
 
-typedef enum sl_marker { SL_MARK_CIRCLE, SL_MARK_SQUARE, SL_MARK_TRIANGLE, SL_MARK_DIAMOND, SL_MARK_CROSS, SL_MARK_COUNT } sl_marker;
+typedef enum sl_marker {
+  SL_MARK_CIRCLE,
+  SL_MARK_SQUARE,
+  SL_MARK_TRIANGLE,
+  SL_MARK_DIAMOND,
+  SL_MARK_CROSS,
+  SL_MARK_COUNT
+} sl_marker;
 /* A filled marker of radius r pixels centred at (x, y) (a cross is drawn with lines). */
 void sl_image_marker(sl_image *im, double x, double y, sl_marker m, int r, uint32_t colour);
 

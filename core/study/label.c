@@ -70,8 +70,8 @@ void sl_plot_quantity(const char *field, int component, char *buf, size_t n) {
 
 static const struct {
   const char *word, *greek;
-} greek[] = {{"phi", "\xCF\x86"}, {"eps", "\xCE\xB5"}, {"mu", "\xCE\xBC"}, {"rho", "\xCF\x81"}, {"tau", "\xCF\x84"},
-             {"nu", "\xCE\xBD"}};
+} greek[] = {{"phi", "\xCF\x86"}, {"eps", "\xCE\xB5"}, {"mu", "\xCE\xBC"},
+             {"rho", "\xCF\x81"}, {"tau", "\xCF\x84"}, {"nu", "\xCE\xBD"}};
 
 /* A number in e-notation at s (digits, optional point, e, sign, digits), its length or 0. */
 static size_t e_number(const char *s, double *v, int *e, char *mant, size_t mn) {
@@ -97,12 +97,12 @@ void sl_plot_pretty(const char *in, char *out, size_t n) {
   if (!n) return;
   size_t o = 0;
   out[0] = '\0';
-#define PUT(...)                                                           \
-  do {                                                                     \
-    if (o < n) {                                                           \
-      int k_ = snprintf(out + o, n - o, __VA_ARGS__);                      \
-      o = k_ < 0 ? o : (o + (size_t)k_ < n ? o + (size_t)k_ : n - 1);      \
-    }                                                                      \
+#define PUT(...)                                                      \
+  do {                                                                \
+    if (o < n) {                                                      \
+      int k_ = snprintf(out + o, n - o, __VA_ARGS__);                 \
+      o = k_ < 0 ? o : (o + (size_t)k_ < n ? o + (size_t)k_ : n - 1); \
+    }                                                                 \
   } while (0)
   for (size_t i = 0; in && in[i];) {
     int word_start = i == 0 || !(isalnum((unsigned char)in[i - 1]) || in[i - 1] == '_' || in[i - 1] == '.');
@@ -114,7 +114,10 @@ void sl_plot_pretty(const char *in, char *out, size_t n) {
       if (len) {
         double m = strtod(mant, NULL);
         if (m == 1.0) PUT("10^{%d}", e);
-        else PUT("%s\xC3\x97" "10^{%d}", mant, e);
+        else
+          PUT("%s\xC3\x97"
+              "10^{%d}",
+              mant, e);
         i += len;
         continue;
       }

@@ -54,10 +54,11 @@ static void trapezoid(int n, const double *s, double *w) {
 /* The output time asked for must be one the run wrote. */
 static int check_time(const sl_study_measure *sm, double found, const char *what, sl_diag *d) {
   if (!sm->has_time || fabs(found - sm->time) <= 1e-9 * fmax(1.0, fabs(sm->time))) return 0;
-  return sl_diag_set(d, SL_EBADINPUT,
-                     "measure: %s: no output at t = %g (the nearest is t = %g): make it an output time ([set.output] every, "
-                     "time.end)",
-                     what, sm->time, found);
+  return sl_diag_set(
+      d, SL_EBADINPUT,
+      "measure: %s: no output at t = %g (the nearest is t = %g): make it an output time ([set.output] every, "
+      "time.end)",
+      what, sm->time, found);
 }
 
 /* ---- along a line ------------------------------------------------------------- */
@@ -76,8 +77,9 @@ static int sample(const char *h5, const sl_study_measure *sm, double t, int n, c
   sl_sample s;
   int rc = sl_sample_points(h5, sm->name, t, n, xy, &s, d);
   if (rc) return sl_diag_prefix(d, rc, "measure");
-  if (sm->component >= s.components) rc = sl_diag_set(d, SL_EBADINPUT, "measure: '%s' has %d component%s, component = %d asked",
-                                                        sm->name, s.components, s.components == 1 ? "" : "s", sm->component);
+  if (sm->component >= s.components)
+    rc = sl_diag_set(d, SL_EBADINPUT, "measure: '%s' has %d component%s, component = %d asked", sm->name, s.components,
+                     s.components == 1 ? "" : "s", sm->component);
   else if (s.n_outside > 0) {
     int k = 0;
     while (k < n && !isnan(s.values[(size_t)k * (size_t)s.components])) ++k;
@@ -139,7 +141,8 @@ static int measure_line(const sl_study_measure *sm, const char *h5, const sl_ben
       return sl_diag_set(d, SL_EBADINPUT, "measure: a 2-D mesh: give [measure] line = x0,y0:x1,y1");
     }
     l->a[0] = INFINITY, l->b[0] = -INFINITY;
-    for (int v = 0; v < mesh.n_vertices; ++v) l->a[0] = fmin(l->a[0], mesh.coords[3 * v]), l->b[0] = fmax(l->b[0], mesh.coords[3 * v]);
+    for (int v = 0; v < mesh.n_vertices; ++v)
+      l->a[0] = fmin(l->a[0], mesh.coords[3 * v]), l->b[0] = fmax(l->b[0], mesh.coords[3 * v]);
     sl_output_mesh_free(&mesh);
   }
   l->length = hypot(l->b[0] - l->a[0], l->b[1] - l->a[1]);

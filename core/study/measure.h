@@ -35,8 +35,7 @@ typedef struct sl_bench_measured {
  * does not hold what [measure] asks (an unknown field or scalar, a time
  * that is not an output time, a line outside the mesh): a mistake of the
  * study, not of the run; SL_EFAILED when the file cannot be read. */
-int sl_bench_measure(const sl_study *st, const sl_bench_exact *exact, const char *h5, sl_bench_measured *m,
-                     sl_diag *d);
+int sl_bench_measure(const sl_study *st, const sl_bench_exact *exact, const char *h5, sl_bench_measured *m, sl_diag *d);
 void sl_bench_measured_free(sl_bench_measured *m);
 
 /* The norm of a - b with weights w over n points. */

@@ -27,7 +27,8 @@ uint32_t sl_adler32(uint32_t adler, const unsigned char *p, size_t n) {
 }
 
 static void put32(unsigned char *q, uint32_t v) {
-  q[0] = (unsigned char)(v >> 24), q[1] = (unsigned char)(v >> 16), q[2] = (unsigned char)(v >> 8), q[3] = (unsigned char)v;
+  q[0] = (unsigned char)(v >> 24), q[1] = (unsigned char)(v >> 16), q[2] = (unsigned char)(v >> 8),
+  q[3] = (unsigned char)v;
 }
 
 /* A chunk of n data bytes at q: length, type, data (already at q + 8), CRC. */
@@ -56,7 +57,8 @@ int sl_png_encode(const unsigned char *rgb, int w, int h, unsigned char **png, s
   size_t at = 8;
   unsigned char *ihdr = out + at + 8;
   put32(ihdr, (uint32_t)w), put32(ihdr + 4, (uint32_t)h);
-  ihdr[8] = 8, ihdr[9] = 2, ihdr[10] = ihdr[11] = ihdr[12] = 0; /* 8 bits, RGB, deflate, adaptive filters, no interlace */
+  ihdr[8] = 8, ihdr[9] = 2,
+  ihdr[10] = ihdr[11] = ihdr[12] = 0; /* 8 bits, RGB, deflate, adaptive filters, no interlace */
   at += chunk(out + at, "IHDR", 13);
   uLongf zn = bound;
   int zrc = compress2(out + at + 8, &zn, raw, (uLong)raw_n, Z_BEST_COMPRESSION); /* a zlib stream (RFC 1950) */
@@ -71,7 +73,8 @@ int sl_png_encode(const unsigned char *rgb, int w, int h, unsigned char **png, s
 int sl_png_write(const char *path, const unsigned char *rgb, int w, int h, sl_diag *d) {
   unsigned char *png;
   size_t len;
-  if (sl_png_encode(rgb, w, h, &png, &len)) return sl_diag_set(d, SL_EFAILED, "%s: cannot encode a %d x %d image", path, w, h);
+  if (sl_png_encode(rgb, w, h, &png, &len))
+    return sl_diag_set(d, SL_EFAILED, "%s: cannot encode a %d x %d image", path, w, h);
   FILE *f = fopen(path, "wb");
   if (!f) {
     int e = errno;

@@ -8,7 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-
 int sl_bench_table_init(sl_bench_table *t, const sl_study *s) {
   memset(t, 0, sizeof *t);
   t->study = s;
@@ -50,13 +49,16 @@ void sl_bench_errors(sl_bench_table *t) {
         case SL_AGAINST_REFERENCE:
           if (m->is_profile && m->ref) r->error = sl_bench_norm(sm->norm, m->n, m->w, m->v, m->ref);
           break;
-        case SL_AGAINST_VALUE: r->error = fabs(m->scalar - sm->value); break;
+        case SL_AGAINST_VALUE:
+          r->error = fabs(m->scalar - sm->value);
+          break;
         case SL_AGAINST_FINEST:
           if (!fin->measured) break;
           if (!m->is_profile) r->error = fabs(m->scalar - fin->m.scalar);
           else if (fin->m.n == m->n) r->error = sl_bench_norm(sm->norm, m->n, m->w, m->v, fin->m.v);
           break;
-        case SL_AGAINST_NONE: break;
+        case SL_AGAINST_NONE:
+          break;
       }
     }
     for (int p = 1; p < s->n_points; ++p) {
@@ -116,10 +118,18 @@ void sl_bench_describe_measure(const sl_bench_table *t, char *buf, size_t len) {
   if (one_number) snprintf(profile, sizeof profile, "%s%s", q, when);
   else snprintf(profile, sizeof profile, "%s error of %s (%s)%s", norm_name(sm->norm), q, over, when);
   switch (sm->against) {
-    case SL_AGAINST_EXACT: snprintf(buf, len, "%s against the exact solution (%s)", profile, sm->exact); break;
-    case SL_AGAINST_REFERENCE: snprintf(buf, len, "%s against %s", profile, sm->reference); break;
-    case SL_AGAINST_VALUE: snprintf(buf, len, "|%s - (%.10g)|", profile, sm->value); break;
-    case SL_AGAINST_FINEST: snprintf(buf, len, "%s against the finest run of each variant", profile); break;
+    case SL_AGAINST_EXACT:
+      snprintf(buf, len, "%s against the exact solution (%s)", profile, sm->exact);
+      break;
+    case SL_AGAINST_REFERENCE:
+      snprintf(buf, len, "%s against %s", profile, sm->reference);
+      break;
+    case SL_AGAINST_VALUE:
+      snprintf(buf, len, "|%s - (%.10g)|", profile, sm->value);
+      break;
+    case SL_AGAINST_FINEST:
+      snprintf(buf, len, "%s against the finest run of each variant", profile);
+      break;
     case SL_AGAINST_NONE:
       if (one_number) snprintf(buf, len, "%s, compared", profile);
       else snprintf(buf, len, "%s along %s%s, compared", q, where, when);
@@ -174,7 +184,8 @@ int sl_bench_write_csv(const sl_bench_table *t, const char *path, sl_diag *d) {
     for (int k = 0; k < s->n_variant_keys; ++k) fputc(',', f), csv_text(f, s->variants[k].values[r->variant]);
     fputc(',', f), csv_text(f, s->point_names[r->point]);
     for (int k = 0; k < s->n_point_keys; ++k) fputc(',', f), csv_text(f, s->points[k].values[r->point]);
-    const char *status = r->run.status == SL_RUN_OK && !r->measured ? "measure_failed" : sl_bench_status_name(r->run.status);
+    const char *status =
+        r->run.status == SL_RUN_OK && !r->measured ? "measure_failed" : sl_bench_status_name(r->run.status);
     fprintf(f, ",%s,", status);
     if (r->run.status != SL_RUN_NOT_RUN) {
       if (r->run.signal_number) fprintf(f, "signal %d", r->run.signal_number);
@@ -184,7 +195,8 @@ int sl_bench_write_csv(const sl_bench_table *t, const char *path, sl_diag *d) {
     fputc(',', f), csv_number(f, r->run.wall, "%.4g");
     fputc(',', f), csv_number(f, r->run.peak_rss_mb, "%.1f");
     fputc(',', f);
-    if (r->run.status == SL_RUN_OK || r->run.status == SL_RUN_FAILED) fprintf(f, "%ld,%ld", r->run.steps, r->run.rejected_steps);
+    if (r->run.status == SL_RUN_OK || r->run.status == SL_RUN_FAILED)
+      fprintf(f, "%ld,%ld", r->run.steps, r->run.rejected_steps);
     else fputc(',', f);
     fputc(',', f);
     if (r->measured) csv_number(f, r->m.time, "%.10g");
@@ -211,7 +223,8 @@ int sl_bench_write_compare_csv(const sl_bench_table *t, const char *path, sl_dia
     fputs(s->m.scalar ? "t" : "s", f);
     for (int i = 0; i < t->n_rows; ++i) {
       const sl_bench_row *r = &t->rows[i];
-      if (s->n_points > 1) snprintf(name, sizeof name, "%s; %s", s->variant_names[r->variant], s->point_names[r->point]);
+      if (s->n_points > 1)
+        snprintf(name, sizeof name, "%s; %s", s->variant_names[r->variant], s->point_names[r->point]);
       else snprintf(name, sizeof name, "%s", s->variant_names[r->variant]);
       fputc(',', f), csv_text(f, name);
     }

@@ -61,8 +61,8 @@ int sl_bench_run_here(sl_ini *ini, const sl_registry *reg, const sl_bench_run_op
   sl_run_result res;
   memset(&res, 0, sizeof res);
   double w0 = monotonic(), c0 = cpu_now();
-  sl_run_opts ro = {.scene_path = o->scene_path, .output = o->output, .sluice_version = o->sluice_version,
-                    .interrupt = o->interrupt};
+  sl_run_opts ro = {
+      .scene_path = o->scene_path, .output = o->output, .sluice_version = o->sluice_version, .interrupt = o->interrupt};
   int rc = sl_model_run(ini, reg, &ro, &res, &d);
   if (o->summary && rc != SL_EBADINPUT) o->summary(stderr, &res, monotonic() - w0, cpu_now() - c0);
   if (rc) fprintf(stderr, "%s\n", d.msg);
@@ -88,8 +88,14 @@ int sl_bench_run(const sl_bench_run_opts *o, sl_bench_run_result *r) {
   r->status = SL_RUN_NOT_RUN;
   r->cpu = r->wall = r->peak_rss_mb = r->t_reached = NAN;
   record rec;
-  sl_child_opts co = {.argv = o->argv, .result = &rec, .result_size = sizeof rec, .result_fd = SL_BENCH_RESULT_FD,
-                      .out = o->log, .err = o->log, .timeout = o->timeout, .interrupt = o->interrupt};
+  sl_child_opts co = {.argv = o->argv,
+                      .result = &rec,
+                      .result_size = sizeof rec,
+                      .result_fd = SL_BENCH_RESULT_FD,
+                      .out = o->log,
+                      .err = o->log,
+                      .timeout = o->timeout,
+                      .interrupt = o->interrupt};
   sl_child_result cr;
   if (sl_child_run(&co, &cr)) {
     snprintf(r->message, sizeof r->message, "%s", cr.message);
@@ -103,17 +109,18 @@ int sl_bench_run(const sl_bench_run_opts *o, sl_bench_run_result *r) {
   } else if (!cr.got_result) {
     r->status = SL_RUN_CRASHED;
     if (r->signal_number)
-      snprintf(r->message, sizeof r->message, "killed by signal %d (%s)", r->signal_number, strsignal(r->signal_number));
+      snprintf(r->message, sizeof r->message, "killed by signal %d (%s)", r->signal_number,
+               strsignal(r->signal_number));
     else snprintf(r->message, sizeof r->message, "exited with status %d without a result", r->exit_code);
   } else {
     r->steps = rec.steps, r->rejected_steps = rec.rejected, r->nonlinear_iterations = rec.nonlinear;
     r->t_reached = rec.t_reached;
     rec.msg[sizeof rec.msg - 1] = '\0';
     snprintf(r->message, sizeof r->message, "%s", rec.msg);
-    r->status = rec.rc == 0                          ? SL_RUN_OK
-                : rec.rc == SL_EBADINPUT             ? SL_RUN_BAD_INPUT
-                : o->interrupt && *o->interrupt      ? SL_RUN_INTERRUPTED
-                                                     : SL_RUN_FAILED;
+    r->status = rec.rc == 0                     ? SL_RUN_OK
+                : rec.rc == SL_EBADINPUT        ? SL_RUN_BAD_INPUT
+                : o->interrupt && *o->interrupt ? SL_RUN_INTERRUPTED
+                                                : SL_RUN_FAILED;
     int expected = rec.rc == 0 ? 0 : rec.rc == SL_EBADINPUT ? 2 : 1;
     if (r->signal_number || r->exit_code != expected) { /* e.g. a sanitizer's report at exit */
       r->status = SL_RUN_CRASHED;

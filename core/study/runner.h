@@ -12,8 +12,8 @@
 #include <stdio.h>
 
 #include "core/config/ini.h"
-#include "core/time/model.h"
 #include "core/plugin/registry.h"
+#include "core/time/model.h"
 
 typedef enum sl_bench_status {
   SL_RUN_OK,

@@ -245,8 +245,8 @@ static int read_reference(sl_study_measure *m, const sl_ini_entry *e, sl_diag *d
   return rc;
 }
 
-static const char *const measure_keys[] = {"field", "scalar", "component", "time",   "line",   "n",    "reduce",
-                                           "exact", "reference", "value", "finest", "norm", "label"};
+static const char *const measure_keys[] = {"field", "scalar",    "component", "time",   "line", "n",    "reduce",
+                                           "exact", "reference", "value",     "finest", "norm", "label"};
 
 /* An entry that must not be there, with why. */
 static int refuse(const sl_ini *ini, const char *key, const char *why, sl_diag *d) {
@@ -260,8 +260,10 @@ static int read_measure(sl_study *s, sl_diag *d) {
   sl_study_measure *m = &s->m;
   m->where = sl_ini_find_section(ini, "measure");
   if (!m->where)
-    return sl_diag_set(d, SL_EBADINPUT, "%s: no [measure] section: say what is measured (field = NAME or scalar = NAME, "
-                       "and against what: exact, reference, value, finest, or nothing for a comparison)", s->path);
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s: no [measure] section: say what is measured (field = NAME or scalar = NAME, "
+                       "and against what: exact, reference, value, finest, or nothing for a comparison)",
+                       s->path);
   int rc = sl_ini_check_keys(ini, "measure", measure_keys, (int)(sizeof measure_keys / sizeof measure_keys[0]), d);
   if (rc) return rc;
   /* against what: at most one */
@@ -312,7 +314,8 @@ static int read_measure(sl_study *s, sl_diag *d) {
       return sl_diag_set(d, SL_EBADINPUT, "%s:%d:%d: [measure] scalar: give either field (line %d) or scalar, not both",
                          sc->file, sc->line, sc->col, f->line);
     if (!f && !sc)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [measure]: say what is measured: field = NAME (sampled along line = "
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "%s:%d: [measure]: say what is measured: field = NAME (sampled along line = "
                          "x0,y0:x1,y1) or scalar = NAME (an output scalar such as interface_height_0)",
                          m->where->file, m->where->line);
     m->scalar = sc != NULL;
@@ -334,8 +337,10 @@ static int read_measure(sl_study *s, sl_diag *d) {
   if (line) {
     const sl_ini_entry *e = sl_ini_find(ini, "measure", "line");
     if (parse_line(line, m->line, &m->line_dim))
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d:%d: [measure] line = %s: expected x0,y0:x1,y1 (2-D) or x0:x1 (1-D), "
-                         "two different points", e->file, e->line, e->value_col, line);
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "%s:%d:%d: [measure] line = %s: expected x0,y0:x1,y1 (2-D) or x0:x1 (1-D), "
+                         "two different points",
+                         e->file, e->line, e->value_col, line);
     m->has_line = 1;
   }
   long n = 201;
@@ -361,17 +366,20 @@ static int read_measure(sl_study *s, sl_diag *d) {
   if (m->against == SL_AGAINST_REFERENCE) {
     const char *ref = NULL;
     if ((rc = sl_ini_get_string(ini, "measure", "reference", 1, NULL, &ref, d))) return rc;
-    if ((rc = refuse(ini, "reduce", "a reference file holds a profile; compare one number with value = X", d))) return rc;
+    if ((rc = refuse(ini, "reduce", "a reference file holds a profile; compare one number with value = X", d)))
+      return rc;
     if (m->scalar && (rc = refuse(ini, "time", "the reference file's first column gives the times", d))) return rc;
     if (!m->scalar && !m->has_line)
-      return refuse(ini, "reference", "the reference's positions are along a line: give line = x0,y0:x1,y1 (or x0:x1)", d);
+      return refuse(ini, "reference", "the reference's positions are along a line: give line = x0,y0:x1,y1 (or x0:x1)",
+                    d);
     if (!(m->reference = sl_ini_path_relative(s->path, ref))) return oom(d);
     if ((rc = read_reference(m, sl_ini_find(ini, "measure", "reference"), d))) return rc;
   }
   if (m->has_norm && one_number)
     return refuse(ini, "norm", "the measure is one number: there is no profile to take a norm of", d);
   if (m->against == SL_AGAINST_FINEST && s->n_points < 2)
-    return refuse(ini, "finest", "needs a points sweep of two or more values ([points.<section>] key = v1, v2, ...)", d);
+    return refuse(ini, "finest", "needs a points sweep of two or more values ([points.<section>] key = v1, v2, ...)",
+                  d);
   return 0;
 }
 

@@ -109,10 +109,17 @@ void sl_bdf_controller_init(sl_bdf_controller *c, sl_bdf_control kind) {
   memset(c, 0, sizeof *c);
   c->safety = 0.7, c->grow_max = 2.0, c->shrink_min = 0.2;
   switch (kind) {
-  case SL_BDF_CONTROL_ELEMENTARY: c->b1 = 1.0; break;
-  case SL_BDF_CONTROL_PI: c->b1 = 0.7, c->b2 = -0.4; break;       /* Gustafsson 1991 */
-  case SL_BDF_CONTROL_H211B: c->b1 = c->b2 = c->a2 = 0.25; break; /* Soderlind 2003, H211b with b = 4 */
-  default: c->b1 = c->b2 = 1.0 / 6.0;                             /* Soderlind 2003, H211PI */
+    case SL_BDF_CONTROL_ELEMENTARY:
+      c->b1 = 1.0;
+      break;
+    case SL_BDF_CONTROL_PI:
+      c->b1 = 0.7, c->b2 = -0.4;
+      break; /* Gustafsson 1991 */
+    case SL_BDF_CONTROL_H211B:
+      c->b1 = c->b2 = c->a2 = 0.25;
+      break; /* Soderlind 2003, H211b with b = 4 */
+    default:
+      c->b1 = c->b2 = 1.0 / 6.0; /* Soderlind 2003, H211PI */
   }
 }
 

@@ -32,12 +32,12 @@
 #include "core/util/diag.h"
 
 typedef struct sl_bdf {
-  int order_max;   /* 1 or 2 */
-  int32_t n;       /* unknowns */
-  int n_past;      /* past solutions held (1..3) */
-  double t;        /* time of u_n */
+  int order_max;    /* 1 or 2 */
+  int32_t n;        /* unknowns */
+  int n_past;       /* past solutions held (1..3) */
+  double t;         /* time of u_n */
   double h_past[2]; /* the last two accepted steps: h_{n-1}, h_{n-2} */
-  double *past[3]; /* u_n, u_{n-1}, u_{n-2} */
+  double *past[3];  /* u_n, u_{n-1}, u_{n-2} */
 } sl_bdf;
 
 /* The history starts at u0 at time t0. */
@@ -45,10 +45,10 @@ int sl_bdf_init(sl_bdf *b, int order_max, int32_t n, const double *u0, double t0
 void sl_bdf_free(sl_bdf *b);
 
 typedef struct sl_bdf_step {
-  int order;        /* of the scheme used for this step */
-  int estimated;    /* whether an error estimate is available */
+  int order;     /* of the scheme used for this step */
+  int estimated; /* whether an error estimate is available */
   double h;
-  double mass_coef; /* du/dt ~ mass_coef u_{n+1} + history */
+  double mass_coef;  /* du/dt ~ mass_coef u_{n+1} + history */
   double err_factor; /* C_c / (C_c + C_p) */
 } sl_bdf_step;
 
@@ -118,8 +118,8 @@ typedef struct sl_bdf_controller {
   double grow_max, shrink_min;
   /* state: the last accepted step's scaled error and step ratio (0: none) */
   double err_prev, ratio_prev;
-  int after_reject;          /* the step being taken follows a rejection or a failure */
-  double rej_h, rej_err;     /* the last rejected attempt of this step (0: none) */
+  int after_reject;      /* the step being taken follows a rejection or a failure */
+  double rej_h, rej_err; /* the last rejected attempt of this step (0: none) */
   long accepted, rejected, failed;
 } sl_bdf_controller;
 

@@ -133,8 +133,8 @@ static int run_steady(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_o
 
 /* ---- adaptive BDF ------------------------------------------------------------------------------- */
 
-static const char *const limits[] = {"error estimate", "nonlinear convergence", "dt_max",
-                                     "end or output time", "fixed dt",            "solids transport"};
+static const char *const limits[] = {"error estimate", "nonlinear convergence", "dt_max", "end or output time",
+                                     "fixed dt",       "solids transport"};
 enum { N_LIMITS = 6 };
 
 static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_output *out, const sl_run_opts *o,
@@ -182,14 +182,21 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
     memcpy(trial, pred, (size_t)n * sizeof *trial);
     int writes = tc->every > 0 ? b->t + hh >= next_out * tc->every - eps_t : 0;
     writes |= b->t + hh >= tc->end - eps_t || steps_here + 1 >= tc->max_steps;
-    sl_step st = {.t = b->t, .dt = hh, .mass_coef = s.mass_coef, .history = hist, .predictor = pred, .u = trial,
-                  .state = b->past[0], .writes = writes};
+    sl_step st = {.t = b->t,
+                  .dt = hh,
+                  .mass_coef = s.mass_coef,
+                  .history = hist,
+                  .predictor = pred,
+                  .u = trial,
+                  .state = b->past[0],
+                  .writes = writes};
     sl_diag dn;
     sl_guard_set_clock(b->t + hh, hh); /* the closures see the time level being solved */
     int its = 0, nrc = ops->step(self, &st, &its, &dn);
     res->nonlinear_iterations += its;
     double err = 0.0;
-    if (nrc == 0 && tc->adaptive) err = fmax(sl_bdf_error(&s, trial, pred, info->n_err, tc->tolerance, 1e-12), st.error);
+    if (nrc == 0 && tc->adaptive)
+      err = fmax(sl_bdf_error(&s, trial, pred, info->n_err, tc->tolerance, 1e-12), st.error);
     int coupled_failed = 0;
     if (nrc == 0 && err <= 1.0 && ops->complete) {
       for (int32_t i = 0; i < n; ++i) rate[i] = s.mass_coef * trial[i] + hist[i]; /* the BDF du/dt at t + hh */

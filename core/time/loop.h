@@ -23,7 +23,7 @@
 typedef struct sl_time_loop {
   const sl_model_info *info;
   const sl_time_config *tc;
-  sl_bdf bdf; /* BDF: the history (also the steady solve's one state) */
+  sl_bdf bdf;            /* BDF: the history (also the steady solve's one state) */
   sl_bdf_controller ctl; /* BDF: the adaptive step's controller */
   double t, h;
   long step, rejected;

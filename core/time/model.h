@@ -43,14 +43,14 @@ enum { SL_INTEGRATE_FIXED = 0, SL_INTEGRATE_BDF = 1 };
 
 /* What a model's setup tells the loop. */
 typedef struct sl_model_info {
-  int integrator;      /* SL_INTEGRATE_* */
-  int32_t n;           /* BDF: the unknowns the loop integrates */
-  int32_t n_err;       /* BDF: the leading entries the error estimate measures (the rest: algebraic) */
-  double *u;           /* BDF: the model's state vector, holding the initial state (the loop writes into it) */
-  int has_steady;      /* the model has a steady solve ([time] scheme = steady) */
+  int integrator; /* SL_INTEGRATE_* */
+  int32_t n;      /* BDF: the unknowns the loop integrates */
+  int32_t n_err;  /* BDF: the leading entries the error estimate measures (the rest: algebraic) */
+  double *u;      /* BDF: the model's state vector, holding the initial state (the loop writes into it) */
+  int has_steady; /* the model has a steady solve ([time] scheme = steady) */
   int time_dependent_boundaries; /* BDF: the boundary values change with t (the model re-applies them per step) */
-  const char *steady_text; /* FIXED: the text after "steady at t = T " in the stop reason */
-  const char *state_name;  /* BDF: what the measured entries are, for messages ("velocity") */
+  const char *steady_text;       /* FIXED: the text after "steady at t = T " in the stop reason */
+  const char *state_name;        /* BDF: what the measured entries are, for messages ("velocity") */
 } sl_model_info;
 
 /* One step from t over dt. With SL_INTEGRATE_BDF also the BDF step: du/dt
@@ -62,7 +62,7 @@ typedef struct sl_step {
   const double *history;
   const double *predictor;
   double *u;
-  const double *dudt; /* for `complete`: the BDF du/dt at t + dt */
+  const double *dudt;  /* for `complete`: the BDF du/dt at t + dt */
   const double *state; /* BDF: the last accepted state (at t) */
   int writes;          /* the state after this step is written (an output time, the end, the step limit) */
   /* set by the step: an error of its own beside the BDF estimate, scaled as sl_bdf_error (the step is accepted when
@@ -74,20 +74,20 @@ typedef struct sl_step {
 typedef struct sl_model_stats {
   long matrix_assemblies, residual_assemblies; /* full (matrix and right-hand side) and right-hand-side-only */
   int used_picard;
-  double assembly;           /* wall seconds in assembly */
-  sl_linsolve_stats linear;  /* the main linear solver's counts */
+  double assembly;          /* wall seconds in assembly */
+  sl_linsolve_stats linear; /* the main linear solver's counts */
   int has_linear;
   double cpu_flow, cpu_coupled; /* CPU seconds in the main solves and in the coupled part (transport) */
   long roundoff_accepted;
   long solves_skipped; /* steps whose result was known without a solve */
-  int converged;             /* steady: the (last) solve converged */
+  int converged;       /* steady: the (last) solve converged */
   double correction, residual0, residual;
-  double term_scale; /* the last solve's residual scale set by its terms (core/solve/newton.h) */
-  int roundoff;      /* the last solve converged with its residual at the round-off of its terms */
-  int estimated;     /* its correction is the estimate of the next one (core/solve/newton.h) */
+  double term_scale;          /* the last solve's residual scale set by its terms (core/solve/newton.h) */
+  int roundoff;               /* the last solve converged with its residual at the round-off of its terms */
+  int estimated;              /* its correction is the estimate of the next one (core/solve/newton.h) */
   char coupling_summary[256]; /* the model's own one line, or "" */
   char linear_summary[256];
-  char stop_reason[256];      /* a steady solve's: set by the model */
+  char stop_reason[256]; /* a steady solve's: set by the model */
 } sl_model_stats;
 
 typedef struct sl_model_ops {
@@ -135,19 +135,19 @@ typedef struct sl_run_opts {
   /* Called at every nonlinear iteration (core/scene/scene.h's sl_nl_report); may be NULL. */
   void (*nonlinear)(void *user, const struct sl_nl_report *r);
   void *nonlinear_user;
-  int overwrite;                    /* the output may replace files sluice did not write */
-  int checking;                     /* validation only (run --check): no time integration in set-up */
+  int overwrite; /* the output may replace files sluice did not write */
+  int checking;  /* validation only (run --check): no time integration in set-up */
 } sl_run_opts;
 
 /* What a run did. */
 typedef struct sl_run_result {
   long steps, rejected_steps, nonlinear_iterations;
   double t_start, t_end, t_reached;
-  double saved_time;    /* the time of the last state written with its checkpoint (saved_time_valid) */
+  double saved_time; /* the time of the last state written with its checkpoint (saved_time_valid) */
   int saved_time_valid;
   const char *step_limit; /* what limited the step most often (static string) or NULL */
   char output_path[4096];
-  char stop_reason[256];  /* why the run ended, one line ("" when it failed: the error says why) */
+  char stop_reason[256]; /* why the run ended, one line ("" when it failed: the error says why) */
   /* seconds: the solves (BDF: the linear solver's wall clock; FIXED: the
    * steps' CPU), the factorisations (BDF), output (wall); CPU of the set-up
    * and the output */

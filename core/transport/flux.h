@@ -41,8 +41,8 @@
 typedef int (*sl_settling_fn)(void *user, int n, const double *phi, double *u, double *du, sl_diag *d);
 
 typedef struct sl_settling_table {
-  int n;               /* nodes, >= 3 */
-  double phi_max;      /* the table covers [0, phi_max] */
+  int n;          /* nodes, >= 3 */
+  double phi_max; /* the table covers [0, phi_max] */
   double dphi, inv_dphi;
   double *F;           /* [n] F = phi u at phi_k = k dphi */
   double *D;           /* [n] F' = u + phi du */

@@ -13,8 +13,7 @@ double sl_transport_boundary_flow(const sl_transport *t, int b) {
 int sl_transport_set_boundary_values(sl_transport *t, int b, const double *phi_faces, sl_diag *d) {
   const sl_mesh *m = t->m;
   if (b < 0 || b >= m->n_boundaries)
-    return sl_diag_set(d, SL_EBADINPUT, "transport: boundary %d does not exist (the mesh has %d)", b,
-                       m->n_boundaries);
+    return sl_diag_set(d, SL_EBADINPUT, "transport: boundary %d does not exist (the mesh has %d)", b, m->n_boundaries);
   if (t->bc_type[b] != SL_TRANSPORT_OPEN)
     return sl_diag_set(d, SL_EBADINPUT, "transport: boundary '%s' is not open: values along it are not used",
                        m->boundary_names[b]);

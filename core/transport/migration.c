@@ -17,10 +17,10 @@
 struct sl_migration {
   const sl_transport *t;
   sl_migration_opts o;
-  double *g;                           /* [n_cells] shear rate */
-  int *fface;                          /* [n_faces] the flux faces, packed */
-  double *pf, *gf, *dc, *dmu;          /* [n_faces] face states and coefficients, packed */
-  double *lnmu, *dlnmu, *sum;          /* [n_cells] */
+  double *g;                  /* [n_cells] shear rate */
+  int *fface;                 /* [n_faces] the flux faces, packed */
+  double *pf, *gf, *dc, *dmu; /* [n_faces] face states and coefficients, packed */
+  double *lnmu, *dlnmu, *sum; /* [n_cells] */
   int limit_cell;
 };
 
@@ -41,8 +41,9 @@ void sl_migration_destroy(sl_migration *mg) {
 int sl_migration_create(const sl_transport *t, const sl_migration_opts *o, sl_migration **out, sl_diag *d) {
   *out = NULL;
   if (!t || !o || (!o->coef && !(o->diffusivity > 0.0)) || !(o->diffusivity >= 0.0 && isfinite(o->diffusivity)))
-    return sl_diag_set(d, SL_EBADINPUT, "migration: no transport, or neither a coefficient callback nor a finite "
-                                        "diffusivity > 0");
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "migration: no transport, or neither a coefficient callback nor a finite "
+                       "diffusivity > 0");
   sl_migration *mg = calloc(1, sizeof *mg);
   if (!mg) return sl_diag_set(d, SL_ENOMEM, "migration: out of memory");
   size_t nc = (size_t)t->m->n_cells, nf = (size_t)t->m->n_faces + 1;

@@ -74,8 +74,7 @@ double sl_transport_stable_dt(const sl_transport *t, const double *q, const doub
 /* res[c] = -(sum of outward face fluxes) of cell c for the states phi (with
  * the reconstruction in t->grad when `muscl`); returns the flux that entered
  * through open boundaries per unit time. */
-static double residual(sl_transport *t, const double *q, const double *w, const double *phi, int muscl,
-                       double *res) {
+static double residual(sl_transport *t, const double *q, const double *w, const double *phi, int muscl, double *res) {
   const sl_mesh *m = t->m;
   memset(res, 0, (size_t)m->n_cells * sizeof *res);
   memset(t->bres, 0, (size_t)m->n_boundaries * sizeof *t->bres);
@@ -155,8 +154,7 @@ static void add_extra(sl_transport *t, const double *phi, const double *flux, do
  * or phi_max, and values below PHI_TINY, are set to the bound, so that
  * closures asked at phi never see -1e-32; *clamped gets sum |change| V.
  * Returns the first cell further outside (or non-finite), -1 when none. */
-static int euler(const sl_transport *t, const double *phi, const double *res, double h, double *out,
-                 double *clamped) {
+static int euler(const sl_transport *t, const double *phi, const double *res, double h, double *out, double *clamped) {
   const double pm = t->o.phi_max;
   double cl = 0;
   int bad = -1;
@@ -189,8 +187,8 @@ static double max_divergence(const sl_transport *t, const double *q) {
       /* A periodic face (either of the pair) is a boundary face owned by c:
        * its outflow is the pair's mean flux along its own normal. */
       double v = kind == SL_FACE_PERIODIC || kind == SL_FACE_PERIODIC_IMAGE ? 0.5 * (q[f] - q[t->partner[f]])
-                 : m->face_cells[2 * f] == c                                 ? q[f]
-                                                                             : -q[f];
+                 : m->face_cells[2 * f] == c                                ? q[f]
+                                                                            : -q[f];
       s += v;
       a += fabs(v);
     }
@@ -252,8 +250,7 @@ static int eval_extra(sl_transport *t, const double *phi, double *flux, double *
 
 /* One sub-step of length h from t->cur (in place), SSP-RK2 or Euler; with
  * an extra flux its value at t->cur is in t->xflux. */
-static int substep(sl_transport *t, const double *q, const double *w, double h, sl_transport_stats *st,
-                   sl_diag *d) {
+static int substep(sl_transport *t, const double *q, const double *w, double h, sl_transport_stats *st, sl_diag *d) {
   const int nc = t->m->n_cells;
   double *cur = t->cur, *stage = t->stage, *res = t->res;
   if (t->o.order == 2) {
@@ -301,8 +298,8 @@ static int substep(sl_transport *t, const double *q, const double *w, double h, 
   return 0;
 }
 
-int sl_transport_step(sl_transport *t, double dt, const double *q, const double *w, double *phi,
-                      sl_transport_stats *st, sl_diag *d) {
+int sl_transport_step(sl_transport *t, double dt, const double *q, const double *w, double *phi, sl_transport_stats *st,
+                      sl_diag *d) {
   sl_transport_stats local;
   if (!st) st = &local;
   memset(st, 0, sizeof *st);
@@ -314,8 +311,7 @@ int sl_transport_step(sl_transport *t, double dt, const double *q, const double 
   const sl_mesh *m = t->m;
   const int nc = m->n_cells;
   /* A periodic pair added since the limiter's neighbours were listed joins them. */
-  if (t->o.order == 2 && t->vnb_pairs != sl_transport_periodic_count(t) &&
-      (rc = sl_transport_build_vertex_cells(t, d)))
+  if (t->o.order == 2 && t->vnb_pairs != sl_transport_periodic_count(t) && (rc = sl_transport_build_vertex_cells(t, d)))
     return rc;
   st->max_divergence = max_divergence(t, q);
   st->dt_stable = sl_transport_stable_dt(t, q, w, &st->limiting_cell);
@@ -326,8 +322,8 @@ int sl_transport_step(sl_transport *t, double dt, const double *q, const double 
     if (ns < 1) ns = 1;
     if (ns > t->o.max_substeps)
       return sl_diag_set(d, SL_EFAILED,
-                         "transport: the step %g needs %.0f sub-steps of %g (limit %d), set by cell %d at (%g, %g)",
-                         dt, ns, st->dt_stable, t->o.max_substeps, st->limiting_cell, t->xc[2 * st->limiting_cell],
+                         "transport: the step %g needs %.0f sub-steps of %g (limit %d), set by cell %d at (%g, %g)", dt,
+                         ns, st->dt_stable, t->o.max_substeps, st->limiting_cell, t->xc[2 * st->limiting_cell],
                          t->xc[2 * st->limiting_cell + 1]);
     int n = (int)ns;
     double h = dt / n;

@@ -85,8 +85,7 @@ static int build_geometry(sl_transport *t, sl_diag *d) {
     } else {
       axisym_cell(m, c, &t->vol[c], t->xc + 2 * c);
     }
-    if (!(t->vol[c] > 0))
-      return sl_diag_set(d, SL_EBADINPUT, "transport: cell %d has volume %g", c, t->vol[c]);
+    if (!(t->vol[c] > 0)) return sl_diag_set(d, SL_EBADINPUT, "transport: cell %d has volume %g", c, t->vol[c]);
   }
   for (int f = 0; f < m->n_faces; ++f) {
     sl_mesh_face_normal(m, f, t->normal + 2 * f);
@@ -179,8 +178,7 @@ int sl_transport_create(const sl_mesh *m, const sl_transport_opts *o, sl_transpo
   t->sens = malloc(nc * sizeof *t->sens);
   int rc;
   if (!t->vol || !t->area || !t->normal || !t->xf || !t->xc || !t->lsq || !t->bc_type || !t->bc_phi || !t->fkind ||
-      !t->bres || !t->bres1 || !t->bstep ||
-      !t->res || !t->cur || !t->stage || !t->grad || !t->sens) {
+      !t->bres || !t->bres1 || !t->bstep || !t->res || !t->cur || !t->stage || !t->grad || !t->sens) {
     rc = sl_diag_set(d, SL_ENOMEM, "transport: out of memory");
     goto fail;
   }
@@ -200,8 +198,7 @@ fail:
 int sl_transport_set_boundary(sl_transport *t, int b, sl_transport_bc type, double phi_outside, sl_diag *d) {
   const sl_mesh *m = t->m;
   if (b < 0 || b >= m->n_boundaries)
-    return sl_diag_set(d, SL_EBADINPUT, "transport: boundary %d does not exist (the mesh has %d)", b,
-                       m->n_boundaries);
+    return sl_diag_set(d, SL_EBADINPUT, "transport: boundary %d does not exist (the mesh has %d)", b, m->n_boundaries);
   if (t->bc_type[b] == SL_TRANSPORT_PERIODIC_)
     return sl_diag_set(d, SL_EBADINPUT, "transport: boundary '%s' is periodic; it cannot become a %s",
                        m->boundary_names[b], type == SL_TRANSPORT_OPEN ? "open boundary" : "wall");
@@ -227,8 +224,7 @@ const sl_settling_table *sl_transport_table(const sl_transport *t) { return &t->
 const sl_mesh *sl_transport_mesh(const sl_transport *t) { return t->m; }
 
 void sl_transport_settling_uniform(const sl_transport *t, const double b[2], double *w) {
-  for (int f = 0; f < t->m->n_faces; ++f)
-    w[f] = t->area[f] * (b[0] * t->normal[2 * f] + b[1] * t->normal[2 * f + 1]);
+  for (int f = 0; f < t->m->n_faces; ++f) w[f] = t->area[f] * (b[0] * t->normal[2 * f] + b[1] * t->normal[2 * f + 1]);
 }
 
 void sl_transport_settling_field(const sl_transport *t, void (*b)(void *user, const double x[2], double b[2]),

@@ -108,14 +108,14 @@ typedef enum sl_transport_bc {
 typedef int (*sl_transport_extra_fn)(void *user, const double *phi, double *flux, double *dt_stable, sl_diag *d);
 
 typedef struct sl_transport_opts {
-  double phi_max;                 /* maximum packing, (0, 1] */
-  int order;                      /* 1 (Godunov) or 2 (MUSCL); 0 means 2 */
-  sl_transport_limiter limiter;   /* order 2 only */
+  double phi_max;               /* maximum packing, (0, 1] */
+  int order;                    /* 1 (Godunov) or 2 (MUSCL); 0 means 2 */
+  sl_transport_limiter limiter; /* order 2 only */
   sl_transport_geometry geometry;
-  double cfl;                     /* fraction of the stable step, (0, 1]; 0 means 0.9 */
-  int table_points;               /* nodes of the flux table; 0 means 2049 */
-  int max_substeps;               /* 0 means 1000000; needing more is an error */
-  sl_settling_fn settling;        /* the hindered-settling closure (required) */
+  double cfl;              /* fraction of the stable step, (0, 1]; 0 means 0.9 */
+  int table_points;        /* nodes of the flux table; 0 means 2049 */
+  int max_substeps;        /* 0 means 1000000; needing more is an error */
+  sl_settling_fn settling; /* the hindered-settling closure (required) */
   void *settling_user;
 } sl_transport_opts;
 
@@ -130,10 +130,10 @@ typedef struct sl_transport_stats {
   double clamped;         /* sum |change| V of round-off excursions (< 1e-12) set back to 0 or
                              phi_max, and of values below 1e-250 set to 0: bounds the mass they move */
   /* With an extra flux (sl_transport_set_extra_flux): */
-  double dt_extra;        /* the smallest stable step it reported at a sub-step's start, cfl included
+  double dt_extra;      /* the smallest stable step it reported at a sub-step's start, cfl included
                              (+infinity without an extra flux) */
-  int n_extra_limited;    /* extra face fluxes scaled down to keep 0 <= phi <= phi_max (bounds limiter) */
-  double extra_limited;   /* the solids volume those scalings held back (int r dA units) */
+  int n_extra_limited;  /* extra face fluxes scaled down to keep 0 <= phi <= phi_max (bounds limiter) */
+  double extra_limited; /* the solids volume those scalings held back (int r dA units) */
 } sl_transport_stats;
 
 typedef struct sl_transport sl_transport;
@@ -239,8 +239,8 @@ double sl_transport_stable_dt(const sl_transport *t, const double *q, const doub
  * leaves the bounds (face fluxes not divergence-free); the extra flux
  * callback's code (its message prefixed) when it fails or gives a
  * non-finite flux or a dt_stable that is not > 0. st may be NULL. */
-int sl_transport_step(sl_transport *t, double dt, const double *q, const double *w, double *phi,
-                      sl_transport_stats *st, sl_diag *d);
+int sl_transport_step(sl_transport *t, double dt, const double *q, const double *w, double *phi, sl_transport_stats *st,
+                      sl_diag *d);
 
 /* The least-squares gradient of the cell values phi (n_cells) from each
  * cell's face neighbours, across periodic pairs too, unlimited (exact for

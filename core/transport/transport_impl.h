@@ -29,19 +29,19 @@ struct sl_transport {
    * when it was built (pairs are only ever added, so a count tells). */
   int *vnb_start, *vnb;
   int vnb_pairs;
-  int *bc_type;   /* [n_boundaries] sl_transport_bc, or SL_TRANSPORT_PERIODIC_ (below) */
-  double *bc_phi; /* [n_boundaries] */
+  int *bc_type;                 /* [n_boundaries] sl_transport_bc, or SL_TRANSPORT_PERIODIC_ (below) */
+  double *bc_phi;               /* [n_boundaries] */
   double *bres, *bres1, *bstep; /* [n_boundaries + 1]: solids into each boundary's cells: one residual, its first
                                    stage, the last sl_transport_step (sl_transport_boundary_flow) */
   double *face_phi; /* [n_faces] exterior states per open face (inflow.c), NULL: bc_phi of the face's boundary */
-  int *fkind;     /* [n_faces] SL_FACE_* */
+  int *fkind;       /* [n_faces] SL_FACE_* */
   /* Periodic pairs (NULL until the first sl_transport_set_periodic). */
   int *partner;   /* [n_faces] the paired face, -1 for the others */
   double *pshift; /* [2 n_faces] added to the partner's owner's cell point to bring it next to this face */
   /* Extra face flux (sl_transport_set_extra_flux), NULL when none. */
   sl_transport_extra_fn extra;
   void *extra_user;
-  double *xflux, *xflux2; /* [n_faces] the extra flux at the sub-step's start and at its second stage */
+  double *xflux, *xflux2;    /* [n_faces] the extra flux at the sub-step's start and at its second stage */
   double *xin, *xout, *xadv; /* [n_cells] limiter work: inflow, outflow, the state after advection */
   /* work */
   double *res, *cur, *stage, *grad, *sens;

@@ -42,17 +42,11 @@ const char *sl_blas_description(void) {
   const char *p = f.path;
   if (config && config())
     snprintf(text, sizeof text, "%.200s%s%.500s%s", config(), p[0] ? " (" : "", p, p[0] ? ")" : "");
-  else if (!p[0])
-    snprintf(text, sizeof text, "none loaded");
-  else if (strstr(p, "mkl"))
-    snprintf(text, sizeof text, "Intel MKL (%.500s)", p);
-  else if (strstr(p, "blis"))
-    snprintf(text, sizeof text, "BLIS (%.500s)", p);
-  else if (strstr(p, "atlas"))
-    snprintf(text, sizeof text, "ATLAS (%.500s)", p);
-  else if (strstr(p, "/blas/"))
-    snprintf(text, sizeof text, "reference BLAS (%.500s)", p);
-  else
-    snprintf(text, sizeof text, "%.500s", p);
+  else if (!p[0]) snprintf(text, sizeof text, "none loaded");
+  else if (strstr(p, "mkl")) snprintf(text, sizeof text, "Intel MKL (%.500s)", p);
+  else if (strstr(p, "blis")) snprintf(text, sizeof text, "BLIS (%.500s)", p);
+  else if (strstr(p, "atlas")) snprintf(text, sizeof text, "ATLAS (%.500s)", p);
+  else if (strstr(p, "/blas/")) snprintf(text, sizeof text, "reference BLAS (%.500s)", p);
+  else snprintf(text, sizeof text, "%.500s", p);
   return text;
 }

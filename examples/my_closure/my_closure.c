@@ -40,7 +40,8 @@ static int evaluate(const void *state, const sl_eval_args *a) {
   double *mu = a->out[0];
   double *dmu = sl_dout(a, 1, 0, 0);
   for (int32_t q = 0; q < a->Q; ++q) {
-    if (!(g[q] >= 0.0 && g[q] <= 1e8)) return sl_fail(a->err, SL_RECOVERABLE, q, "shear_rate = %g outside [0, 1e8]", g[q]);
+    if (!(g[q] >= 0.0 && g[q] <= 1e8))
+      return sl_fail(a->err, SL_RECOVERABLE, q, "shear_rate = %g outside [0, 1e8]", g[q]);
     double gf = g[q] > p->min_shear_rate ? g[q] : p->min_shear_rate;
     mu[q] = p->consistency * pow(gf, p->n - 1.0);
     if (dmu) dmu[q] = g[q] > p->min_shear_rate ? (p->n - 1.0) * mu[q] / gf : 0.0;

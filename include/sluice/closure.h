@@ -58,10 +58,10 @@ extern "C" {
 /* Return codes of create() and evaluate(). Explicit values: never renumber. */
 enum {
   SL_OK = 0,
-  SL_RECOVERABLE = 1,   /* state outside the law's validity (phi >= phi_max, theta < 0, ...) */
-  SL_ERR_ARG = -1,      /* inconsistent arguments (a bug in the caller) */
-  SL_ERR_MEM = -2,      /* allocation failed */
-  SL_ERR_INTERNAL = -3  /* anything else that cannot be retried */
+  SL_RECOVERABLE = 1,  /* state outside the law's validity (phi >= phi_max, theta < 0, ...) */
+  SL_ERR_ARG = -1,     /* inconsistent arguments (a bug in the caller) */
+  SL_ERR_MEM = -2,     /* allocation failed */
+  SL_ERR_INTERNAL = -3 /* anything else that cannot be retried */
 };
 
 /* Closure kinds. Each kind is a contract: the inputs a closure of the kind
@@ -116,7 +116,7 @@ typedef enum sl_param_type {
 } sl_param_type;
 
 typedef struct sl_param_desc {
-  const char *name;    /* INI key, lower_snake_case */
+  const char *name; /* INI key, lower_snake_case */
   sl_param_type type;
   size_t offset;       /* offsetof() into the closure's parameter struct */
   double def;          /* default (the choice index for ENUM) */
@@ -157,7 +157,7 @@ typedef struct sl_field_desc {
   const char *name;
   const char *units;
   uint32_t flags;
-  double typical;          /* a representative value, inside [valid_min, valid_max] */
+  double typical;              /* a representative value, inside [valid_min, valid_max] */
   double valid_min, valid_max; /* inputs: the declared validity range (closed) */
   const char *help;
 } sl_field_desc;
@@ -217,7 +217,7 @@ typedef struct sl_eval_args {
 typedef struct sl_closure_desc sl_closure_desc;
 
 struct sl_closure_desc {
-  uint32_t struct_size;   /* sizeof(sl_closure_desc) as the closure was built */
+  uint32_t struct_size; /* sizeof(sl_closure_desc) as the closure was built */
   uint16_t abi_major, abi_minor;
   uint16_t real_size, index_size; /* sizeof(double), sizeof(int32_t) */
 
@@ -231,7 +231,7 @@ struct sl_closure_desc {
 
   int32_t n_params;
   const sl_param_desc *params;
-  size_t params_size;    /* sizeof the parameter struct */
+  size_t params_size; /* sizeof the parameter struct */
 
   int32_t n_in;
   const sl_field_desc *in;
@@ -258,26 +258,33 @@ SL_EXPORT const sl_closure_desc *const *sl_closure_entry_v1(int32_t *count);
 /* ---- helpers for closure authors (header-only, no link to the core) ---- */
 
 /* Fills the version fields of a descriptor: SL_CLOSURE_DESC_HEADER, */
-#define SL_CLOSURE_DESC_HEADER                                                          \
+#define SL_CLOSURE_DESC_HEADER                                                         \
   .struct_size = (uint32_t)sizeof(sl_closure_desc), .abi_major = SL_CLOSURE_ABI_MAJOR, \
-  .abi_minor = SL_CLOSURE_ABI_MINOR, .real_size = (uint16_t)sizeof(double),            \
-  .index_size = (uint16_t)sizeof(int32_t)
+  .abi_minor = SL_CLOSURE_ABI_MINOR, .real_size = (uint16_t)sizeof(double), .index_size = (uint16_t)sizeof(int32_t)
 
 #define SL_COUNT_OF(a) ((int32_t)(sizeof(a) / sizeof((a)[0])))
 
 /* A real parameter of struct S, member m. */
-#define SL_PARAM_REAL_OF(S, m, dflt, lo, hi, unit, text)                                     \
-  {.name = #m, .type = SL_PARAM_REAL, .offset = offsetof(S, m), .def = (dflt), .min = (lo), \
-   .max = (hi), .units = (unit), .choices = NULL, .help = (text)}
-#define SL_PARAM_ENUM_OF(S, m, dflt, list, text)                                           \
-  {.name = #m, .type = SL_PARAM_ENUM, .offset = offsetof(S, m), .def = (dflt), .min = 0, \
-   .max = 0, .units = "", .choices = (list), .help = (text)}
-#define SL_PARAM_BOOL_OF(S, m, dflt, text)                                                 \
-  {.name = #m, .type = SL_PARAM_BOOL, .offset = offsetof(S, m), .def = (dflt), .min = 0, \
-   .max = 1, .units = "", .choices = NULL, .help = (text)}
-#define SL_PARAM_INT_OF(S, m, dflt, lo, hi, text)                                             \
-  {.name = #m, .type = SL_PARAM_INT, .offset = offsetof(S, m), .def = (dflt), .min = (lo), \
-   .max = (hi), .units = "1", .choices = NULL, .help = (text)}
+#define SL_PARAM_REAL_OF(S, m, dflt, lo, hi, unit, text)                                                  \
+  {                                                                                                       \
+    .name = #m, .type = SL_PARAM_REAL, .offset = offsetof(S, m), .def = (dflt), .min = (lo), .max = (hi), \
+    .units = (unit), .choices = NULL, .help = (text)                                                      \
+  }
+#define SL_PARAM_ENUM_OF(S, m, dflt, list, text)                                                                 \
+  {                                                                                                              \
+    .name = #m, .type = SL_PARAM_ENUM, .offset = offsetof(S, m), .def = (dflt), .min = 0, .max = 0, .units = "", \
+    .choices = (list), .help = (text)                                                                            \
+  }
+#define SL_PARAM_BOOL_OF(S, m, dflt, text)                                                                       \
+  {                                                                                                              \
+    .name = #m, .type = SL_PARAM_BOOL, .offset = offsetof(S, m), .def = (dflt), .min = 0, .max = 1, .units = "", \
+    .choices = NULL, .help = (text)                                                                              \
+  }
+#define SL_PARAM_INT_OF(S, m, dflt, lo, hi, text)                                                                      \
+  {                                                                                                                    \
+    .name = #m, .type = SL_PARAM_INT, .offset = offsetof(S, m), .def = (dflt), .min = (lo), .max = (hi), .units = "1", \
+    .choices = NULL, .help = (text)                                                                                    \
+  }
 
 /* Records the first bad point and a message; returns `code` for `return`. */
 static inline int sl_fail(sl_error *err, int code, int32_t point, const char *fmt, ...)

@@ -116,7 +116,6 @@ typedef struct sluice_run_opts {
   int overwrite; /* the output may replace files sluice did not write (never the scene file itself) */
 } sluice_run_opts;
 
-
 /* Why a numeric factorisation was computed: sluice_refactor_reason_name(k) for k < SLUICE_REFACTOR_REASONS
  * ("first", "pattern", "direct", "forced", "iterations", "stagnation", "slow", "breakdown", "fresh"). */
 #define SLUICE_REFACTOR_REASONS 9
@@ -137,7 +136,7 @@ typedef struct sluice_linear {
 typedef struct sluice_summary {
   long steps, rejected_steps, nonlinear_iterations;
   double t_start, t_end, t_reached;
-  double saved_time;    /* the time of the last state saved with its checkpoint, when saved_time_valid */
+  double saved_time; /* the time of the last state saved with its checkpoint, when saved_time_valid */
   int saved_time_valid;
   const char *step_limit; /* what limited the step most often, or NULL */
   char output_path[4096];

@@ -92,10 +92,12 @@ static const sl_closure_desc byrne = {
     .name = "byrne",
     .version = "1.0.0",
     .summary = "Byrne (1991) cyclic densification of sand, per half-cycle of shear strain, as a drop of nbar",
-    .formula = "d eps_vd = share gamma C1 exp(-C2 eps_vd/gamma)  (strains in percent, gamma the half-cycle amplitude)\n"
-               "C1 = 7600 Dr^-2.5, C2 = 0.4/C1, share = 1/2;  1 - nbar_new = (1 - nbar)/(1 - d eps_vd)",
-    .reference = "Byrne (1991), 2nd Int. Conf. Recent Adv. Geotech. Earthquake Eng., paper 1.24, eqs 4-6; "
-                 "Martin, Finn & Seed (1975); nbar as the state: Pringle (2001) section 3.3",
+    .formula =
+        "d eps_vd = share gamma C1 exp(-C2 eps_vd/gamma)  (strains in percent, gamma the half-cycle amplitude)\n"
+        "C1 = 7600 Dr^-2.5, C2 = 0.4/C1, share = 1/2;  1 - nbar_new = (1 - nbar)/(1 - d eps_vd)",
+    .reference =
+        "Byrne (1991), 2nd Int. Conf. Recent Adv. Geotech. Earthquake Eng., paper 1.24, eqs 4-6; "
+        "Martin, Finn & Seed (1975); nbar as the state: Pringle (2001) section 3.3",
     .validity = "clean sands, 5 <= Dr <= 100 %; the drained volumetric strain of uniform cyclic shear",
     .n_params = SL_COUNT_OF(params),
     .params = params,

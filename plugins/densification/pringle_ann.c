@@ -33,12 +33,22 @@ enum { OUT_NBAR, N_OUT };
 
 #define W(m, v, text) SL_PARAM_REAL_OF(ann_params, m, v, -1e3, 1e3, "1", text)
 static const sl_param_desc params[] = {
-    W(wh11, -1.159932, "W^h (1,1), Pringle (2001) Appendix 3"), W(wh12, -2.163154, "W^h (1,2)"),
-    W(wh13, 8.074500, "W^h (1,3)"),  W(wh21, -1.153477, "W^h (2,1)"), W(wh22, -2.234670, "W^h (2,2)"),
-    W(wh23, 7.259948, "W^h (2,3)"),  W(wh31, 1.555892, "W^h (3,1)"),  W(wh32, -5.063079, "W^h (3,2)"),
-    W(wh33, 8.430298, "W^h (3,3)"),  W(bh1, -6.2368, "b^h_1"),        W(bh2, -5.4514, "b^h_2"),
-    W(bh3, 0.6681, "b^h_3"),         W(wo1, 3.256640, "W^o_1"),       W(wo2, 2.570816, "W^o_2"),
-    W(wo3, 2.172821, "W^o_3"),       W(bo, 1.8695, "b^o"),
+    W(wh11, -1.159932, "W^h (1,1), Pringle (2001) Appendix 3"),
+    W(wh12, -2.163154, "W^h (1,2)"),
+    W(wh13, 8.074500, "W^h (1,3)"),
+    W(wh21, -1.153477, "W^h (2,1)"),
+    W(wh22, -2.234670, "W^h (2,2)"),
+    W(wh23, 7.259948, "W^h (2,3)"),
+    W(wh31, 1.555892, "W^h (3,1)"),
+    W(wh32, -5.063079, "W^h (3,2)"),
+    W(wh33, 8.430298, "W^h (3,3)"),
+    W(bh1, -6.2368, "b^h_1"),
+    W(bh2, -5.4514, "b^h_2"),
+    W(bh3, 0.6681, "b^h_3"),
+    W(wo1, 3.256640, "W^o_1"),
+    W(wo2, 2.570816, "W^o_2"),
+    W(wo3, 2.172821, "W^o_3"),
+    W(bo, 1.8695, "b^o"),
     SL_PARAM_REAL_OF(ann_params, log_total_min, -6.0, -20.0, 5.0, "1",
                      "log10 of the total shear strain scaled to 0 (not printed in the thesis: supply yours)"),
     SL_PARAM_REAL_OF(ann_params, log_total_max, 0.0, -20.0, 5.0, "1", "log10 of the total shear strain scaled to 1"),
@@ -68,7 +78,8 @@ static const sl_field_desc outputs[] = {
 static const double check_in_0[N_IN] = {0.45, 1e-4, 1e-3};
 static const double check_in_1[N_IN] = {0.45, 0.0, 1e-3};
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_NBAR, 0.49743475470787185, 1e-12, "the 3-3-1 network with the printed weights, placeholder ranges, by hand"},
+    {check_in_0, OUT_NBAR, 0.49743475470787185, 1e-12,
+     "the 3-3-1 network with the printed weights, placeholder ranges, by hand"},
     {check_in_1, OUT_NBAR, 0.45, 1e-15, "no shear in the step: nbar unchanged"},
 };
 
@@ -120,12 +131,15 @@ static const sl_closure_desc pringle_ann = {
     .name = "pringle_ann",
     .version = "1.0.0",
     .summary = "Pringle (2001) 3-3-1 logistic network for nbar under cyclic shear (weights as printed, ranges yours)",
-    .formula = "V_j = s(sum_i xbar_i W^h_ij + b^h_j), Y = s(sum_j V_j W^o_j + b^o), s(v) = 1/(1 + e^-v)\n"
-               "xbar = min-max scaled (log10 total strain, increment, nbar); nbar_new = Y (max - min) + min",
-    .reference = "Pringle (2001) PhD thesis, McMaster University, section 3.3.2 and Appendix 3 (weights); VELACS "
-                 "(1997) training data",
-    .validity = "only with the normalisation ranges the weights were trained with (not printed in the thesis: the "
-                "defaults are placeholders)",
+    .formula =
+        "V_j = s(sum_i xbar_i W^h_ij + b^h_j), Y = s(sum_j V_j W^o_j + b^o), s(v) = 1/(1 + e^-v)\n"
+        "xbar = min-max scaled (log10 total strain, increment, nbar); nbar_new = Y (max - min) + min",
+    .reference =
+        "Pringle (2001) PhD thesis, McMaster University, section 3.3.2 and Appendix 3 (weights); VELACS "
+        "(1997) training data",
+    .validity =
+        "only with the normalisation ranges the weights were trained with (not printed in the thesis: the "
+        "defaults are placeholders)",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(ann_params),

@@ -17,9 +17,9 @@
 #include "drag/dense_drag_laws.h"
 
 typedef struct ergun_params {
-  double viscous;   /* 150 */
-  double inertial;  /* 1.75 */
-  int32_t form;     /* 0 gidaspow, 1 pringle_printed */
+  double viscous;  /* 150 */
+  double inertial; /* 1.75 */
+  int32_t form;    /* 0 gidaspow, 1 pringle_printed */
 } ergun_params;
 
 enum { IN_PHI, IN_SLIP, IN_RHO_F, IN_MU_F, IN_D_P, IN_SPHERICITY, N_IN };
@@ -81,9 +81,9 @@ ERGUN_SPECIALISED int ergun_loop(const ergun_params *p, const sl_eval_args *a, c
                                  const int want_dphi, const int want_dslip) {
   /* The host guarantees the arrays do not alias (closure.h): say so, so the
    * compiler keeps inputs and parameters in registers across the stores. */
-  const double *restrict phi_in = a->in[IN_PHI], *restrict slip_in = a->in[IN_SLIP],
-               *restrict rho_in = a->in[IN_RHO_F], *restrict mu_in = a->in[IN_MU_F],
-               *restrict dp_in = a->in[IN_D_P], *restrict psi_in = a->in[IN_SPHERICITY];
+  const double *restrict phi_in = a->in[IN_PHI], *restrict slip_in = a->in[IN_SLIP], *restrict rho_in = a->in[IN_RHO_F],
+                         *restrict mu_in = a->in[IN_MU_F], *restrict dp_in = a->in[IN_D_P],
+                         *restrict psi_in = a->in[IN_SPHERICITY];
   double *restrict K = a->out[OUT_K];
   double *restrict dK_dphi = sl_dout(a, N_IN, OUT_K, IN_PHI), *restrict dK_dslip = sl_dout(a, N_IN, OUT_K, IN_SLIP);
   const double c_visc = p->viscous, c_iner = p->inertial;
@@ -114,8 +114,9 @@ static const sl_closure_desc ergun = {
     .name = "ergun",
     .version = "1.0.0",
     .summary = "Ergun (1952) packed-bed drag",
-    .formula = "K = viscous phi^2 mu_f / ((1-phi) d^2) + inertial phi rho_f |slip| / d,  d = sphericity d_p\n"
-               "(pringle_printed: inertial term divided by (1-phi))",
+    .formula =
+        "K = viscous phi^2 mu_f / ((1-phi) d^2) + inertial phi rho_f |slip| / d,  d = sphericity d_p\n"
+        "(pringle_printed: inertial term divided by (1-phi))",
     .reference = "Ergun (1952) Chem. Eng. Prog. 48:89; Gidaspow (1994) eq 5.62; Pringle (2001) eq 3.12",
     .validity = "dense beds, fluid fraction below about 0.8 (phi > 0.2); phi <= 0.74",
     .n_params = SL_COUNT_OF(params),

@@ -23,8 +23,8 @@
  * to rounding. Without interphase exchange theta grows like phi^-2 in dilute
  * flow (CFX caps it; no cap here), hence phi >= 1e-6. */
 #include <math.h>
-#include <stddef.h>
 #include <sluice/closure.h>
+#include <stddef.h>
 
 #include "granular/inputs.h"
 #include "granular/kinetic.h"

@@ -36,9 +36,9 @@
 #define SLUICE_PLUGINS_GRANULAR_FRICTIONAL_H
 
 #include <math.h>
+#include <sluice/closure.h>
 #include <stddef.h>
 #include <string.h>
-#include <sluice/closure.h>
 
 #include "granular/inputs.h"
 

@@ -6,8 +6,8 @@
 #define SLUICE_PLUGINS_GRANULAR_KT_CLOSURE_H
 
 #include <math.h>
-#include <stddef.h>
 #include <sluice/closure.h>
+#include <stddef.h>
 
 #include "granular/inputs.h"
 #include "granular/kinetic.h"

@@ -49,7 +49,8 @@ static const sl_field_desc outputs[] = {
  * D_c = 0.41 * 1e-6 * 0.5, D_mu = 0.62 * 1e-6 * 0.25. */
 static const double check_in_0[N_IN] = {0.5, 1.0, 2e-3};
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_D_C, 0.41 * 1e-6 * 0.5, 1e-14, "Phillips et al. (1992) K_c = 0.41: K_c a^2 phi at a = 1 mm, phi = 0.5"},
+    {check_in_0, OUT_D_C, 0.41 * 1e-6 * 0.5, 1e-14,
+     "Phillips et al. (1992) K_c = 0.41: K_c a^2 phi at a = 1 mm, phi = 0.5"},
     {check_in_0, OUT_D_MU, 0.62 * 1e-6 * 0.25, 1e-14,
      "Phillips et al. (1992) K_mu = 0.62: K_mu a^2 g phi^2 at a = 1 mm, phi = 0.5, g = 1 s^-1"},
 };
@@ -85,12 +86,15 @@ static const sl_closure_desc phillips = {
     .name = "phillips",
     .version = "1.0.0",
     .summary = "Phillips et al. (1992) shear-induced migration flux coefficients",
-    .formula = "a = d_p/2;  D_c = K_c a^2 phi,  D_mu = K_mu a^2 shear_rate phi^2,  K_c = 0.41, K_mu = 0.62\n"
-               "flux N = -D_c grad(shear_rate phi) - D_mu grad(ln mu)  (gradients taken by the host)",
-    .reference = "Phillips, Armstrong, Brown, Graham & Abbott (1992) Phys. Fluids A 4:30; Leighton & Acrivos (1987) "
-                 "J. Fluid Mech. 181:415; Nigam (1999) MIT PhD thesis eqs 2.28-2.30",
-    .validity = "non-Brownian, neutrally buoyant spheres in viscous (Stokes) shear flow; 0 <= phi <= 0.74; "
-                "constants fitted to Couette data (Phillips et al. 1992)",
+    .formula =
+        "a = d_p/2;  D_c = K_c a^2 phi,  D_mu = K_mu a^2 shear_rate phi^2,  K_c = 0.41, K_mu = 0.62\n"
+        "flux N = -D_c grad(shear_rate phi) - D_mu grad(ln mu)  (gradients taken by the host)",
+    .reference =
+        "Phillips, Armstrong, Brown, Graham & Abbott (1992) Phys. Fluids A 4:30; Leighton & Acrivos (1987) "
+        "J. Fluid Mech. 181:415; Nigam (1999) MIT PhD thesis eqs 2.28-2.30",
+    .validity =
+        "non-Brownian, neutrally buoyant spheres in viscous (Stokes) shear flow; 0 <= phi <= 0.74; "
+        "constants fitted to Couette data (Phillips et al. 1992)",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(phillips_params),

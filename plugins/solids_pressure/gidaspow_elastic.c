@@ -80,12 +80,15 @@ static const sl_closure_desc gidaspow_elastic = {
     .name = "gidaspow_elastic",
     .version = "1.0.0",
     .summary = "Solids pressure integrated from the Gidaspow elastic modulus G0 exp(C (phi - phi_max))",
-    .formula = "G = dp_s/dphi = G0 exp(C (phi - phi_max)),  G0 = 1 Pa, C = 600, phi_max = 0.624\n"
-               "p_s = (G0/C) [exp(C (phi - phi_max)) - exp(-C phi_max)]  (p_s(0) = 0)",
-    .reference = "Bouillard, Lyczkowski & Gidaspow (1989) AIChE J. 35:908; Gidaspow (1994) Multiphase Flow and "
-                 "Fluidization, Academic Press",
-    .validity = "0 <= phi <= 0.74; an empirical stabilising modulus, not a constitutive law of the packed bed; "
-                "constants fitted for gas-fluidised beds",
+    .formula =
+        "G = dp_s/dphi = G0 exp(C (phi - phi_max)),  G0 = 1 Pa, C = 600, phi_max = 0.624\n"
+        "p_s = (G0/C) [exp(C (phi - phi_max)) - exp(-C phi_max)]  (p_s(0) = 0)",
+    .reference =
+        "Bouillard, Lyczkowski & Gidaspow (1989) AIChE J. 35:908; Gidaspow (1994) Multiphase Flow and "
+        "Fluidization, Academic Press",
+    .validity =
+        "0 <= phi <= 0.74; an empirical stabilising modulus, not a constitutive law of the packed bed; "
+        "constants fitted for gas-fluidised beds",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(gidaspow_elastic_params),

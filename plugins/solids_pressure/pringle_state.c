@@ -82,11 +82,13 @@ static const sl_closure_desc pringle_state = {
     .name = "pringle_state",
     .version = "1.0.0",
     .summary = "Pringle (2001) exponential solid pressure with the reference porosity nbar a state of the sand",
-    .formula = "p_s = p_ref exp[(1/A) (1 - (1 - nbar)/(1 - n))],  n = 1 - phi,  A = flexibility = 0.015\n"
-               "dp_s/dphi = p_s (1 - nbar) / (A phi^2)",
+    .formula =
+        "p_s = p_ref exp[(1/A) (1 - (1 - nbar)/(1 - n))],  n = 1 - phi,  A = flexibility = 0.015\n"
+        "dp_s/dphi = p_s (1 - nbar) / (A phi^2)",
     .reference = "Pringle (2001) PhD thesis, McMaster University, eq 4.30 (eqs 3.51/3.54 print the ratio inverted)",
-    .validity = "0 <= phi <= 0.74, 0.01 <= nbar <= 0.99; p_s -> 0 as phi -> 0; nbar is supplied by the model (a "
-                "state that [closure.densification] evolves)",
+    .validity =
+        "0 <= phi <= 0.74, 0.01 <= nbar <= 0.99; p_s -> 0 as phi -> 0; nbar is supplied by the model (a "
+        "state that [closure.densification] evolves)",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(pringle_state_params),

@@ -34,9 +34,9 @@ static const sl_field_desc outputs[] = {
     {"p_s", "Pa", 0, 0, 0, 0, "solids (effective) pressure"},
 };
 
-static const double check_in_0[N_IN] = {0.55, 0.45};  /* unloaded */
-static const double check_in_1[N_IN] = {0.56, 0.45};  /* 1 - 0.55/0.56 = 1/56 */
-static const double check_in_2[N_IN] = {0.50, 0.45};  /* looser than the reference: no tension */
+static const double check_in_0[N_IN] = {0.55, 0.45}; /* unloaded */
+static const double check_in_1[N_IN] = {0.56, 0.45}; /* 1 - 0.55/0.56 = 1/56 */
+static const double check_in_2[N_IN] = {0.50, 0.45}; /* looser than the reference: no tension */
 static const sl_check_point checks[] = {
     {check_in_0, OUT_P_S, 0.0, 1e-15, "phi = 1 - nbar: p_s = 0"},
     {check_in_1, OUT_P_S, 1e7 / 56.0, 1e-14, "p_s = M (1 - 0.55/0.56) = 1e7/56, by hand"},
@@ -67,8 +67,9 @@ static const sl_closure_desc terzaghi_linear = {
     .version = "1.0.0",
     .summary = "Terzaghi's (1925) linear skeleton: p_s = M x volumetric strain from phibar = 1 - nbar, no tension",
     .formula = "p_s = M max(0, 1 - (1 - nbar)/phi)\ndp_s/dphi = M (1 - nbar)/phi^2 for phi > 1 - nbar, else 0",
-    .reference = "Terzaghi (1925) Erdbaumechanik, Deuticke, Vienna (constant m_v); the small-strain limit of Pringle "
-                 "(2001) eq 4.30, M = P_s/A",
+    .reference =
+        "Terzaghi (1925) Erdbaumechanik, Deuticke, Vienna (constant m_v); the small-strain limit of Pringle "
+        "(2001) eq 4.30, M = P_s/A",
     .validity = "small strains (a linear skeleton); 0 <= phi <= 0.99, 0.01 <= nbar <= 0.99",
     .n_params = SL_COUNT_OF(params),
     .params = params,

@@ -20,8 +20,9 @@ enum { OUT_VISCOSITY, N_OUT };
 static const sl_param_desc params[] = {
     SL_PARAM_REAL_OF(batchelor_params, intrinsic_viscosity, 2.5, 0.0, 100.0, "1",
                      "first-order (Einstein) coefficient [eta], 2.5 for spheres"),
-    SL_PARAM_REAL_OF(batchelor_params, quadratic, 6.2, 0.0, 100.0, "1",
-                     "second-order coefficient: 6.2 (Batchelor 1977, Brownian); 5.2-7.6 quoted for non-Brownian spheres"),
+    SL_PARAM_REAL_OF(
+        batchelor_params, quadratic, 6.2, 0.0, 100.0, "1",
+        "second-order coefficient: 6.2 (Batchelor 1977, Brownian); 5.2-7.6 quoted for non-Brownian spheres"),
 };
 
 static const sl_field_desc inputs[] = {
@@ -36,7 +37,8 @@ static const sl_field_desc outputs[] = {
 /* 1 + 0.25 + 6.2 * 0.01 = 1.312 at phi = 0.1. */
 static const double check_in_0[N_IN] = {0.1, 1e-3};
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_VISCOSITY, 1.312e-3, 1e-14, "Batchelor (1977) abstract: 1 + 2.5 phi + 6.2 phi^2 at phi = 0.1, exact"},
+    {check_in_0, OUT_VISCOSITY, 1.312e-3, 1e-14,
+     "Batchelor (1977) abstract: 1 + 2.5 phi + 6.2 phi^2 at phi = 0.1, exact"},
 };
 
 static int evaluate(const void *state, const sl_eval_args *a) {
@@ -46,8 +48,7 @@ static int evaluate(const void *state, const sl_eval_args *a) {
   double *dvisc_dphi = sl_dout(a, N_IN, OUT_VISCOSITY, IN_PHI);
   for (int32_t q = 0; q < a->Q; ++q) {
     if (!(phi[q] >= inputs[IN_PHI].valid_min && phi[q] <= inputs[IN_PHI].valid_max))
-      return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %g outside the semi-dilute range [0, 0.2] of batchelor",
-                     phi[q]);
+      return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %g outside the semi-dilute range [0, 0.2] of batchelor", phi[q]);
     if (!(mu[q] >= inputs[IN_MU_F].valid_min && mu[q] <= inputs[IN_MU_F].valid_max))
       return sl_fail(a->err, SL_RECOVERABLE, q, "mu_f = %g outside [1e-7, 1e5] Pa s", mu[q]);
     double c1 = p->intrinsic_viscosity, c2 = p->quadratic;
@@ -65,8 +66,9 @@ static const sl_closure_desc batchelor = {
     .summary = "Batchelor (1977) O(phi^2) suspension viscosity",
     .formula = "viscosity = mu_f (1 + [eta] phi + c2 phi^2),  [eta] = 2.5, c2 = quadratic = 6.2",
     .reference = "Batchelor (1977) J. Fluid Mech. 83:97 (abstract); Batchelor & Green (1972) J. Fluid Mech. 56:401",
-    .validity = "semi-dilute suspensions of rigid spheres, pair interactions only: 0 <= phi <= 0.2 "
-                "(accurate below about 0.1)",
+    .validity =
+        "semi-dilute suspensions of rigid spheres, pair interactions only: 0 <= phi <= 0.2 "
+        "(accurate below about 0.1)",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(batchelor_params),

@@ -55,8 +55,10 @@ static const sl_field_desc outputs[] = {
 static const double check_in_0[N_IN] = {0.0};
 static const double check_in_1[N_IN] = {100.0};
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_VISCOSITY, 0.1 + 10.0 / 1e-3, 1e-14, "exact: mu_p + tau0/eps at shear_rate = 0 (Bercovier & Engelman 1980)"},
-    {check_in_1, OUT_VISCOSITY, 0.2, 1e-10, "Bingham (1922) limit mu_p + tau0/shear_rate at 100 s^-1 (regularisation error 2.5e-11)"},
+    {check_in_0, OUT_VISCOSITY, 0.1 + 10.0 / 1e-3, 1e-14,
+     "exact: mu_p + tau0/eps at shear_rate = 0 (Bercovier & Engelman 1980)"},
+    {check_in_1, OUT_VISCOSITY, 0.2, 1e-10,
+     "Bingham (1922) limit mu_p + tau0/shear_rate at 100 s^-1 (regularisation error 2.5e-11)"},
 };
 
 static int evaluate(const void *state, const sl_eval_args *a) {
@@ -81,12 +83,15 @@ static const sl_closure_desc bingham = {
     .name = "bingham",
     .version = "1.0.0",
     .summary = "Regularised Bingham viscoplastic viscosity",
-    .formula = "bercovier_engelman: viscosity = mu_p + tau0 / sqrt(shear_rate^2 + eps^2)\n"
-               "papanastasiou:      viscosity = mu_p + tau0 (1 - exp(-m shear_rate)) / shear_rate  (mu_p + tau0 m at 0)",
-    .reference = "Bingham (1922) Fluidity and Plasticity; Bercovier & Engelman (1980) J. Comput. Phys. 36:313; "
-                 "Papanastasiou (1987) J. Rheol. 31:385",
-    .validity = "shear_rate >= 0; unyielded regions (stress below tau0) are represented as a very viscous fluid, "
-                "exact only as eps -> 0 or m -> infinity",
+    .formula =
+        "bercovier_engelman: viscosity = mu_p + tau0 / sqrt(shear_rate^2 + eps^2)\n"
+        "papanastasiou:      viscosity = mu_p + tau0 (1 - exp(-m shear_rate)) / shear_rate  (mu_p + tau0 m at 0)",
+    .reference =
+        "Bingham (1922) Fluidity and Plasticity; Bercovier & Engelman (1980) J. Comput. Phys. 36:313; "
+        "Papanastasiou (1987) J. Rheol. 31:385",
+    .validity =
+        "shear_rate >= 0; unyielded regions (stress below tau0) are represented as a very viscous fluid, "
+        "exact only as eps -> 0 or m -> infinity",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(bingham_params),

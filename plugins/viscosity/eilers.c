@@ -19,7 +19,8 @@ enum { IN_PHI, IN_MU_F, N_IN };
 enum { OUT_VISCOSITY, N_OUT };
 
 static const sl_param_desc params[] = {
-    SL_PARAM_REAL_OF(eilers_params, phi_max, 0.68, 0.3, 0.8, "1", "maximum packing fraction, where the viscosity diverges"),
+    SL_PARAM_REAL_OF(eilers_params, phi_max, 0.68, 0.3, 0.8, "1",
+                     "maximum packing fraction, where the viscosity diverges"),
     SL_PARAM_REAL_OF(eilers_params, intrinsic_viscosity, 2.5, 0.1, 100.0, "1",
                      "intrinsic viscosity [eta]; the Eilers constant is [eta]/2 = 1.25"),
 };
@@ -49,8 +50,8 @@ static int evaluate(const void *state, const sl_eval_args *a) {
   const double c = 0.5 * p->intrinsic_viscosity;
   for (int32_t q = 0; q < a->Q; ++q) {
     if (!(phi[q] >= 0.0 && phi[q] < p->phi_max))
-      return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %g outside [0, phi_max = %g): eilers diverges at phi_max", phi[q],
-                     p->phi_max);
+      return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %g outside [0, phi_max = %g): eilers diverges at phi_max",
+                     phi[q], p->phi_max);
     if (!(mu[q] >= inputs[IN_MU_F].valid_min && mu[q] <= inputs[IN_MU_F].valid_max))
       return sl_fail(a->err, SL_RECOVERABLE, q, "mu_f = %g outside [1e-7, 1e5] Pa s", mu[q]);
     double x = 1.0 - phi[q] / p->phi_max; /* in (0, 1] */
@@ -59,8 +60,8 @@ static int evaluate(const void *state, const sl_eval_args *a) {
     /* d/dphi [phi / x] = 1/x^2. */
     double dv = 2.0 * mu[q] * u * c / (x * x);
     if (!isfinite(v) || !isfinite(dv))
-      return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %.17g too close to phi_max = %g: the viscosity overflows", phi[q],
-                     p->phi_max);
+      return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %.17g too close to phi_max = %g: the viscosity overflows",
+                     phi[q], p->phi_max);
     visc[q] = v;
     if (dvisc_dphi) dvisc_dphi[q] = dv;
   }
@@ -74,8 +75,9 @@ static const sl_closure_desc eilers = {
     .version = "1.0.0",
     .summary = "Eilers (1941) concentrated-suspension viscosity",
     .formula = "viscosity = mu_f [1 + ([eta]/2) phi / (1 - phi/phi_max)]^2,  [eta]/2 = 1.25, phi_max = 0.68",
-    .reference = "Eilers (1941) Kolloid-Z. 97:313; form with [eta] as in Stickel & Powell (2005) Annu. Rev. Fluid "
-                 "Mech. 37:129",
+    .reference =
+        "Eilers (1941) Kolloid-Z. 97:313; form with [eta] as in Stickel & Powell (2005) Annu. Rev. Fluid "
+        "Mech. 37:129",
     .validity = "0 <= phi < phi_max; diverges at phi_max (recoverable code there); Einstein limit for small phi",
     .n_params = SL_COUNT_OF(params),
     .params = params,

@@ -63,7 +63,8 @@ static const sl_closure_desc einstein = {
     .summary = "Einstein (1906, 1911) dilute-suspension viscosity",
     .formula = "viscosity = mu_f (1 + [eta] phi),  [eta] = intrinsic_viscosity = 2.5 for spheres",
     .reference = "Einstein (1906) Ann. Phys. 19:289; Einstein (1911) Ann. Phys. 34:591 (corrected coefficient 2.5)",
-    .validity = "dilute suspensions of rigid spheres, no interactions: 0 <= phi <= 0.1 (accurate below about 0.02-0.05)",
+    .validity =
+        "dilute suspensions of rigid spheres, no interactions: 0 <= phi <= 0.1 (accurate below about 0.02-0.05)",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(einstein_params),

@@ -92,14 +92,17 @@ static const sl_closure_desc herschel_bulkley = {
     .name = "herschel_bulkley",
     .version = "1.0.0",
     .summary = "Regularised Herschel-Bulkley viscoplastic viscosity",
-    .formula = "r = sqrt(shear_rate^2 + eps^2)\n"
-               "bercovier_engelman: viscosity = tau0 / r + K r^(n-1)\n"
-               "papanastasiou:      viscosity = tau0 (1 - exp(-m shear_rate)) / shear_rate + K r^(n-1)  "
-               "(tau0 m + K eps^(n-1) at 0)",
-    .reference = "Herschel & Bulkley (1926) Kolloid-Z. 39:291; Bercovier & Engelman (1980) J. Comput. Phys. 36:313; "
-                 "Papanastasiou (1987) J. Rheol. 31:385",
-    .validity = "shear_rate >= 0; unyielded regions are represented as a very viscous fluid, exact only as "
-                "eps -> 0 (and m -> infinity)",
+    .formula =
+        "r = sqrt(shear_rate^2 + eps^2)\n"
+        "bercovier_engelman: viscosity = tau0 / r + K r^(n-1)\n"
+        "papanastasiou:      viscosity = tau0 (1 - exp(-m shear_rate)) / shear_rate + K r^(n-1)  "
+        "(tau0 m + K eps^(n-1) at 0)",
+    .reference =
+        "Herschel & Bulkley (1926) Kolloid-Z. 39:291; Bercovier & Engelman (1980) J. Comput. Phys. 36:313; "
+        "Papanastasiou (1987) J. Rheol. 31:385",
+    .validity =
+        "shear_rate >= 0; unyielded regions are represented as a very viscous fluid, exact only as "
+        "eps -> 0 (and m -> infinity)",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(herschel_bulkley_params),

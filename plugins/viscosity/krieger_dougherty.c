@@ -56,8 +56,8 @@ static int evaluate(const void *state, const sl_eval_args *a) {
   const double expo = p->intrinsic_viscosity * p->phi_max;
   for (int32_t q = 0; q < a->Q; ++q) {
     if (!(phi[q] >= 0.0 && phi[q] < p->phi_max))
-      return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %g outside [0, phi_max = %g): krieger_dougherty diverges at phi_max",
-                     phi[q], p->phi_max);
+      return sl_fail(a->err, SL_RECOVERABLE, q,
+                     "phi = %g outside [0, phi_max = %g): krieger_dougherty diverges at phi_max", phi[q], p->phi_max);
     if (!(mu[q] >= inputs[IN_MU_F].valid_min && mu[q] <= inputs[IN_MU_F].valid_max))
       return sl_fail(a->err, SL_RECOVERABLE, q, "mu_f = %g outside [1e-7, 1e5] Pa s", mu[q]);
     double x = 1.0 - phi[q] / p->phi_max; /* in (0, 1] */
@@ -65,8 +65,8 @@ static int evaluate(const void *state, const sl_eval_args *a) {
     /* d/dphi x^(-e) = e x^(-e-1) / phi_max, so dmu/dphi = mu [eta] / x. */
     double dv = v * p->intrinsic_viscosity / x;
     if (!isfinite(v) || !isfinite(dv))
-      return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %.17g too close to phi_max = %g: the viscosity overflows", phi[q],
-                     p->phi_max);
+      return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %.17g too close to phi_max = %g: the viscosity overflows",
+                     phi[q], p->phi_max);
     visc[q] = v;
     if (dvisc_dphi) dvisc_dphi[q] = dv;
   }

@@ -91,7 +91,7 @@ static int evaluate(const void *state, const sl_eval_args *a) {
       return sl_fail(a->err, SL_RECOVERABLE, q, "density = %g outside [rho_0, rho_0 + delta_rho] = [%g, %g]", rho[q],
                      p->rho_0, rho_1);
     double s = (rho[q] - p->rho_0) / p->delta_rho;
-    if (s > 1.0) s = 1.0; /* rounding of rho_0 + delta_rho */
+    if (s > 1.0) s = 1.0;            /* rounding of rho_0 + delta_rho */
     int above = s >= p->yield_onset; /* at the onset: the derivative from above */
     double mu0 = p->mu_0 + p->delta_mu * s;
     double tau0 = above ? ramp * (s - p->yield_onset) : 0.0;
@@ -111,14 +111,17 @@ static const sl_closure_desc lalli = {
     .name = "lalli",
     .version = "1.0.0",
     .summary = "Lalli density-dependent regularised Bingham viscosity",
-    .formula = "viscosity = mu0(rho) + (1/2) tau0(rho) / sqrt(S_II + eta),  S_II = shear_rate^2 / 4\n"
-               "s = (rho - rho_0)/delta_rho,  mu0 = mu_0 + delta_mu s,\n"
-               "tau0 = yield_stress max(0, (s - yield_onset)/(1 - yield_onset))",
-    .reference = "Lalli, Numerical solution of continuous model for fluid-particle flows, INSEAN (1991-93 research plan), "
-                 "eqs 0.8-0.10; "
-                 "Bercovier & Engelman (1980) J. Comput. Phys. 36:313",
-    .validity = "rho_0 <= density <= rho_0 + delta_rho, shear_rate >= 0; mu0(rho) and tau0(rho) are linear "
-                "choices (the paper gives no forms); kink in d/d density at yield_onset",
+    .formula =
+        "viscosity = mu0(rho) + (1/2) tau0(rho) / sqrt(S_II + eta),  S_II = shear_rate^2 / 4\n"
+        "s = (rho - rho_0)/delta_rho,  mu0 = mu_0 + delta_mu s,\n"
+        "tau0 = yield_stress max(0, (s - yield_onset)/(1 - yield_onset))",
+    .reference =
+        "Lalli, Numerical solution of continuous model for fluid-particle flows, INSEAN (1991-93 research plan), "
+        "eqs 0.8-0.10; "
+        "Bercovier & Engelman (1980) J. Comput. Phys. 36:313",
+    .validity =
+        "rho_0 <= density <= rho_0 + delta_rho, shear_rate >= 0; mu0(rho) and tau0(rho) are linear "
+        "choices (the paper gives no forms); kink in d/d density at yield_onset",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(lalli_params),

@@ -54,8 +54,8 @@ static int evaluate(const void *state, const sl_eval_args *a) {
     double v = mu[q] / (x * x);
     double dv = 2.0 * v / (x * p->phi_max);
     if (!isfinite(v) || !isfinite(dv))
-      return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %.17g too close to phi_max = %g: the viscosity overflows", phi[q],
-                     p->phi_max);
+      return sl_fail(a->err, SL_RECOVERABLE, q, "phi = %.17g too close to phi_max = %g: the viscosity overflows",
+                     phi[q], p->phi_max);
     visc[q] = v;
     if (dvisc_dphi) dvisc_dphi[q] = dv;
   }
@@ -70,8 +70,9 @@ static const sl_closure_desc maron_pierce = {
     .summary = "Maron & Pierce (1956) concentrated-suspension viscosity",
     .formula = "viscosity = mu_f (1 - phi/phi_max)^-2,  phi_max = 0.68",
     .reference = "Maron & Pierce (1956) J. Colloid Sci. 11:80",
-    .validity = "0 <= phi < phi_max; diverges at phi_max (recoverable code there); dilute slope 2/phi_max "
-                "(Einstein's 2.5 only when phi_max = 0.8)",
+    .validity =
+        "0 <= phi < phi_max; diverges at phi_max (recoverable code there); dilute slope 2/phi_max "
+        "(Einstein's 2.5 only when phi_max = 0.8)",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(maron_pierce_params),

@@ -86,11 +86,13 @@ static const sl_closure_desc pringle_granular = {
     .name = "pringle_granular",
     .version = "1.0.0",
     .summary = "Pringle (2001) double-exponential viscosity of fluidised sand",
-    .formula = "viscosity = mu_f exp(exp(phi / (k1 + k2 phi))),  k1 = 1.1721, k2 = -1.7172\n"
-               "(tends to e mu_f, not mu_f, as phi -> 0; diverges at phi = k1/|k2| = 0.6826)",
+    .formula =
+        "viscosity = mu_f exp(exp(phi / (k1 + k2 phi))),  k1 = 1.1721, k2 = -1.7172\n"
+        "(tends to e mu_f, not mu_f, as phi -> 0; diverges at phi = k1/|k2| = 0.6826)",
     .reference = "Pringle (2001) PhD thesis, McMaster University, eqs 3.36-3.37 (modified Mooney 1951 form)",
-    .validity = "fluidised Barnes sand in water, Newtonian range 0 <= phi <= 0.5; no Einstein limit "
-                "(mu -> 2.718 mu_f at phi -> 0): do not use below the measured range",
+    .validity =
+        "fluidised Barnes sand in water, Newtonian range 0 <= phi <= 0.5; no Einstein limit "
+        "(mu -> 2.718 mu_f at phi -> 0): do not use below the measured range",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(pringle_granular_params),

@@ -22,8 +22,8 @@ enum { SL_REG_BERCOVIER_ENGELMAN = 0, SL_REG_PAPANASTASIOU = 1 };
  * truncation is below 1e-17 relative, where the closed form
  * (x e^-x + expm1(-x))/x^2 would cancel. f'(0) = -1/2. */
 static inline double sl_papanastasiou_df_series(double x) {
-  static const double c[12] = {-1.0 / 2,      1.0 / 3,       -1.0 / 8,         1.0 / 30,
-                               -1.0 / 144,    1.0 / 840,     -1.0 / 5760,      1.0 / 45360,
+  static const double c[12] = {-1.0 / 2,      1.0 / 3,       -1.0 / 8,        1.0 / 30,
+                               -1.0 / 144,    1.0 / 840,     -1.0 / 5760,     1.0 / 45360,
                                -1.0 / 403200, 1.0 / 3991680, -1.0 / 43545600, 1.0 / 518918400};
   double s = 0.0;
   for (int k = 11; k >= 0; --k) s = s * x + c[k];

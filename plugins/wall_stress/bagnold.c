@@ -30,8 +30,8 @@
  * tau_w is the magnitude of the stress the wall exerts on the solids,
  * opposing the slip. */
 #include <math.h>
-#include <stddef.h>
 #include <sluice/closure.h>
+#include <stddef.h>
 
 #include "granular/inputs.h"
 #include "wall_stress/linear_concentration.h"

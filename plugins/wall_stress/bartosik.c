@@ -22,8 +22,8 @@
  * gradient, assumed equal to the solids', Krampa the solids' own).
  * lambda is continued by its tangent line above phi_max - delta. */
 #include <math.h>
-#include <stddef.h>
 #include <sluice/closure.h>
+#include <stddef.h>
 
 #include "granular/inputs.h"
 #include "wall_stress/linear_concentration.h"

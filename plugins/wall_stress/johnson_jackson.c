@@ -23,8 +23,8 @@
  * Lun & Savage with phi_max = 0.63 (Krampa's model B), continued linearly
  * above phi_max - delta. */
 #include <math.h>
-#include <stddef.h>
 #include <sluice/closure.h>
+#include <stddef.h>
 
 #include "granular/inputs.h"
 #include "granular/kinetic.h"

@@ -25,8 +25,8 @@
  * at 20-40 % (the thesis's routine used a smaller g0 than eqs 4.90-4.91 give).
  * tau_w is the magnitude of the stress on the solids, opposing the slip. */
 #include <math.h>
-#include <stddef.h>
 #include <sluice/closure.h>
+#include <stddef.h>
 
 #include "granular/inputs.h"
 #include "granular/kinetic.h"

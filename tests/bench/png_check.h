@@ -73,7 +73,8 @@ static const char *png_check(const unsigned char *png, size_t len, int *w, int *
   /* zlib's inflate: the deflate blocks of any type, the window, the Adler-32 trailer */
   uLongf got_z = (uLongf)raw_n;
   int zrc = uncompress(raw, &got_z, z, (uLong)zn);
-  if (zrc != Z_OK) return free(z), free(raw), zrc == Z_BUF_ERROR ? "more image data than the image holds" : "bad zlib stream";
+  if (zrc != Z_OK)
+    return free(z), free(raw), zrc == Z_BUF_ERROR ? "more image data than the image holds" : "bad zlib stream";
   got = (size_t)got_z, p = zn - 4;
   if (got != raw_n) return free(z), free(raw), "image data of the wrong size";
   if (p + 4 != zn) return free(z), free(raw), "data after the Adler-32 trailer";

@@ -168,9 +168,9 @@ static void kynch_study(void) {
   csv c;
   if (read_csv("kynch_out/kynch_small.csv", &c)) return;
   CHECK(c.rows == 6);
-  static const char *const columns[] = {"variant", "transport.order", "point", "mesh.cells", "status", "exit_status",
-                                        "cpu_s", "wall_s", "peak_rss_mb", "steps", "rejected_steps", "time",
-                                        "quantity", "error", "order", "message"};
+  static const char *const columns[] = {
+      "variant",     "transport.order", "point",          "mesh.cells", "status",   "exit_status", "cpu_s", "wall_s",
+      "peak_rss_mb", "steps",           "rejected_steps", "time",       "quantity", "error",       "order", "message"};
   CHECK(c.cols == (int)(sizeof columns / sizeof columns[0]));
   for (int k = 0; k < c.cols && k < (int)(sizeof columns / sizeof columns[0]); ++k)
     CHECK_MSG(!strcmp(c.head[k], columns[k]), "column %d is '%s', expected '%s'", k, c.head[k], columns[k]);
@@ -378,8 +378,9 @@ static void kynch_reference(void) {
   CHECK(c.rows == 2);
   for (int r = 0; r < c.rows; ++r) {
     double h = H / num(&c, r, "mesh.cells"), e = num(&c, r, "error");
-    printf("Kynch top interface, %g cells: largest distance from the exact shock over t = 20, 40, 60: %.3g m (h = %g)\n",
-           num(&c, r, "mesh.cells"), e, h);
+    printf(
+        "Kynch top interface, %g cells: largest distance from the exact shock over t = 20, 40, 60: %.3g m (h = %g)\n",
+        num(&c, r, "mesh.cells"), e, h);
     CHECK_MSG(e > 0 && e < h, "%g cells: interface off by %.3g, more than a cell", num(&c, r, "mesh.cells"), e);
   }
 }
@@ -425,7 +426,8 @@ static void bad_studies(void) {
   static const char kynch_study_head[] = "[study]\nscene = %s/kynch_settling.ini\n";
   char body[8192];
   snprintf(body, sizeof body, "%s[measure]\nexact = kynch\nnrom = l1\n", kynch_study_head);
-  bad_study("bad_measure_key", body, "bad_measure_key.ini:5:1: error: unknown key 'nrom' in [measure]", "did you mean 'norm'?");
+  bad_study("bad_measure_key", body, "bad_measure_key.ini:5:1: error: unknown key 'nrom' in [measure]",
+            "did you mean 'norm'?");
   snprintf(body, sizeof body, "%s[points.mesh]\ncels = 10, 20\n[measure]\nexact = kynch\n", kynch_study_head);
   bad_study("bad_scene_key", body, "bad_scene_key.ini:4:", "unknown key 'cels' in [mesh]; did you mean 'cells'?");
   snprintf(body, sizeof body, "%s[set.time]\nend = -5\n[measure]\nexact = kynch\n", kynch_study_head);
@@ -434,21 +436,24 @@ static void bad_studies(void) {
             "bad_scene_file.ini:2:", "no_such_scene.ini");
   snprintf(body, sizeof body, "%s[measur]\nexact = kynch\n", kynch_study_head);
   bad_study("bad_section", body, "bad_section.ini:3:", "did you mean [measure]?");
-  bad_study("bad_exact", "[study]\nscene = %s/cavity_stokes.ini\n[measure]\nexact = kynch\n", "bad_exact.ini:4:",
-            "needs a 1-D scene");
+  bad_study("bad_exact", "[study]\nscene = %s/cavity_stokes.ini\n[measure]\nexact = kynch\n",
+            "bad_exact.ini:4:", "needs a 1-D scene");
   snprintf(body, sizeof body, "%s[measure]\nexact = kinch\n", kynch_study_head);
   bad_study("bad_exact_name", body, "bad_exact_name.ini:4:", "did you mean 'kynch'?");
   bad_study("bad_bed_line", "[study]\nscene = %s/fluidized_bed.ini\n[measure]\nexact = fluidized_bed\nline = 0:0.5\n",
             "bad_bed_line.ini:5:", "the cells of the bed below its top; drop 'line'");
   bad_study("bad_bed_scene", "[study]\nscene = %s/kynch_settling.ini\n[measure]\nexact = fluidized_bed\n",
             "bad_bed_scene.ini:4:", "needs a two-fluid scene");
-  snprintf(body, sizeof body, "%s[variants]\nnames = a, b\n[variants.transport]\norder = 1, 2, 2\n[measure]\nexact = kynch\n",
+  snprintf(body, sizeof body,
+           "%s[variants]\nnames = a, b\n[variants.transport]\norder = 1, 2, 2\n[measure]\nexact = kynch\n",
            kynch_study_head);
   bad_study("bad_names", body, "bad_names.ini:4:", "2 names for 3 values");
   snprintf(body, sizeof body, "%s[measure]\nfield = phi\nvalue = 0.1\n", kynch_study_head);
   bad_study("bad_value", body, "bad_value.ini:5:", "compares one number");
-  snprintf(body, sizeof body, "%s[set.mesh]\ncells = 10\n[set.time]\nend = 4\n[set.output]\nevery = 2\n[measure]\nexact = kynch\ntime = 3\n",
-           kynch_study_head);
+  snprintf(
+      body, sizeof body,
+      "%s[set.mesh]\ncells = 10\n[set.time]\nend = 4\n[set.output]\nevery = 2\n[measure]\nexact = kynch\ntime = 3\n",
+      kynch_study_head);
   bad_study("bad_time", body, "bad_time.ini:9:", "no output at t = 3 (the nearest is t = 2)");
   bad_study("bad_geometry_line", "[study]\nscene = %s/cavity_stokes.ini\n[measure]\nfield = velocity\n",
             "bad_geometry_line.ini:3:", "give line = x0,y0:x1,y1");
@@ -466,8 +471,9 @@ static void help(void) {
 
 /* The studies shipped in configs/bench/ stay valid as the scenes change. */
 static void shipped_studies(void) {
-  static const char *const names[] = {"kynch_settling", "cavity_stokes", "bingham_channel", "fluidized_bed_drag",
-                                      "migration_couette_viscosity", "fluidized_bed"};
+  static const char *const names[] = {
+      "kynch_settling", "cavity_stokes", "bingham_channel", "fluidized_bed_drag", "migration_couette_viscosity",
+      "fluidized_bed"};
   for (size_t k = 0; k < sizeof names / sizeof names[0]; ++k) {
     char path[4200];
     snprintf(path, sizeof path, "%s/bench/%s.ini", configs, names[k]);

@@ -22,8 +22,8 @@
 #include <string.h>
 
 #include "core/study/exact.h"
-#include "core/study/study.h"
 #include "core/study/fluidized_bed_exact.h"
+#include "core/study/study.h"
 #include "testing.h"
 
 static char configs[4096];

@@ -35,8 +35,13 @@ static void tick_labels(const char *file, const char *axis, char *out, size_t n)
 static void svg_log_axes(void) {
   const double x[3] = {1, 2, 4}, y[3] = {1, 0.25, 1.0 / 32};
   sl_chart_series s = {.name = "error", .n = 3, .x = x, .y = y};
-  sl_chart c = {.title = "t", .xlabel = "cells", .ylabel = "error in \xCF\x86", .xscale = SL_AXIS_LOG,
-                .yscale = SL_AXIS_LOG, .n_series = 1, .series = &s};
+  sl_chart c = {.title = "t",
+                .xlabel = "cells",
+                .ylabel = "error in \xCF\x86",
+                .xscale = SL_AXIS_LOG,
+                .yscale = SL_AXIS_LOG,
+                .n_series = 1,
+                .series = &s};
   sl_diag d = {{0}};
   CHECK(sl_chart_write_svg("plot_log.svg", &c, 640, 480, &d) == 0);
   CHECK(system("xmllint --noout plot_log.svg") == 0); /* well-formed XML */
@@ -45,8 +50,10 @@ static void svg_log_axes(void) {
   double ylo = svg_xpath_number("plot_log.svg", "string((//*[@data-axis='y'])[1]/@data-lo)");
   double yhi = svg_xpath_number("plot_log.svg", "string((//*[@data-axis='y'])[1]/@data-hi)");
   double px = 0.04 * log10(4.0), py = 0.04 * log10(32.0);
-  CHECK_MSG(fabs(xlo - pow(10.0, -px)) < 1e-8 && fabs(xhi - 4.0 * pow(10.0, px)) < 1e-8, "x axis %.10g .. %.10g", xlo, xhi);
-  CHECK_MSG(fabs(ylo - pow(10.0, -py) / 32.0) < 1e-9 && fabs(yhi - pow(10.0, py)) < 1e-8, "y axis %.10g .. %.10g", ylo, yhi);
+  CHECK_MSG(fabs(xlo - pow(10.0, -px)) < 1e-8 && fabs(xhi - 4.0 * pow(10.0, px)) < 1e-8, "x axis %.10g .. %.10g", xlo,
+            xhi);
+  CHECK_MSG(fabs(ylo - pow(10.0, -py) / 32.0) < 1e-9 && fabs(yhi - pow(10.0, py)) < 1e-8, "y axis %.10g .. %.10g", ylo,
+            yhi);
   char ticks[512];
   tick_labels("plot_log.svg", "x", ticks, sizeof ticks);
   CHECK_MSG(!strcmp(ticks, "1|2|3|4"), "x ticks %s", ticks); /* under 0.7 decade: every integer labelled */
@@ -67,7 +74,13 @@ static void svg_powers(void) {
   CHECK(sl_chart_write_svg("plot_pow.svg", &c, 640, 480, &d) == 0);
   char ticks[512];
   tick_labels("plot_pow.svg", "x", ticks, sizeof ticks);
-  CHECK_MSG(!strcmp(ticks, "10\xE2\x88\x92" "6|10\xE2\x88\x92" "5|10\xE2\x88\x92" "4|10\xE2\x88\x92" "3"), "x ticks %s", ticks);
+  CHECK_MSG(!strcmp(ticks,
+                    "10\xE2\x88\x92"
+                    "6|10\xE2\x88\x92"
+                    "5|10\xE2\x88\x92"
+                    "4|10\xE2\x88\x92"
+                    "3"),
+            "x ticks %s", ticks);
   char n[64];
   svg_xpath("plot_pow.svg", "count((//*[@data-axis='x'])[1]/*[@class='tick']/*[local-name()='tspan'])", n, sizeof n);
   CHECK_MSG(!strcmp(n, "4"), "%s superscripts", n);
@@ -87,15 +100,18 @@ static void svg_linear(void) {
   tick_labels("plot_lin.svg", "x", ticks, sizeof ticks);
   CHECK_MSG(!strcmp(ticks, "0|2|4|6|8|10"), "x ticks %s", ticks);
   tick_labels("plot_lin.svg", "y", ticks, sizeof ticks);
-  CHECK_MSG(!strcmp(ticks, "\xE2\x88\x92" "1|0|1|2|3"), "y ticks %s", ticks);
+  CHECK_MSG(!strcmp(ticks,
+                    "\xE2\x88\x92"
+                    "1|0|1|2|3"),
+            "y ticks %s", ticks);
 }
 
 /* The slope through (1, 1), (2, 1/4), (4, 1/32): log2 y = 0, -2, -5 at log2 x
  * = 0, 1, 2; least squares: sum (x - 1)(y + 7/3) / sum (x - 1)^2 = -5 / 2. */
 static void svg_slope(void) {
   const double x[3] = {1, 2, 4}, y[3] = {1, 0.25, 1.0 / 32};
-  sl_chart_series s = {.name = "error", .n = 3, .x = x, .y = y, .slope_points = 3, .slope_format = "order %.2f",
-                       .slope_negate = 1};
+  sl_chart_series s = {
+      .name = "error", .n = 3, .x = x, .y = y, .slope_points = 3, .slope_format = "order %.2f", .slope_negate = 1};
   double slope = 0;
   CHECK(sl_chart_slope(&s, 3, &slope) == 0 && fabs(slope + 2.5) < 1e-12);
   CHECK(sl_chart_slope(&s, 2, &slope) == 0 && fabs(slope + 3.0) < 1e-12); /* the last two: log2(1/8) */
@@ -119,10 +135,16 @@ static void svg_text_in_frame(void) {
   const double x[3] = {1, 2, 4}, ya[3] = {1, pow(2, -2.5), pow(4, -2.5)};
   const double yb[3] = {0.95, 0.95 * pow(2, -2.4), 0.95 * pow(4, -2.4)};
   const char *const lab[3] = {"n=1", "n=2", "n=4"};
-  sl_chart_series s[2] = {{.name = "a", .n = 3, .x = x, .y = ya, .labels = lab, .slope_points = 3,
-                           .slope_format = "order %.2f", .slope_negate = 1},
-                          {.name = "b", .n = 3, .x = x, .y = yb, .slope_points = 3, .slope_format = "order %.2f",
-                           .slope_negate = 1}};
+  sl_chart_series s[2] = {
+      {.name = "a",
+       .n = 3,
+       .x = x,
+       .y = ya,
+       .labels = lab,
+       .slope_points = 3,
+       .slope_format = "order %.2f",
+       .slope_negate = 1},
+      {.name = "b", .n = 3, .x = x, .y = yb, .slope_points = 3, .slope_format = "order %.2f", .slope_negate = 1}};
   sl_chart c = {.xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .n_series = 2, .series = s, .legend = SL_LEGEND_NONE};
   sl_diag d = {{0}};
   CHECK(sl_chart_write_svg("plot_frame.svg", &c, 480, 360, &d) == 0);
@@ -137,8 +159,8 @@ static void svg_text_in_frame(void) {
   double y2 = svg_xpath_number("plot_frame.svg", "string((//*[@class='slope'])[2]/@y)");
   double x1 = svg_xpath_number("plot_frame.svg", "string((//*[@class='slope'])[1]/@x)");
   double x2 = svg_xpath_number("plot_frame.svg", "string((//*[@class='slope'])[2]/@x)");
-  CHECK_MSG(fabs(y1 - y2) >= 12.0 || fabs(x1 - x2) >= 60.0, "slope labels at (%g, %g) and (%g, %g) overlap", x1, y1,
-            x2, y2);
+  CHECK_MSG(fabs(y1 - y2) >= 12.0 || fabs(x1 - x2) >= 60.0, "slope labels at (%g, %g) and (%g, %g) overlap", x1, y1, x2,
+            y2);
 }
 
 /* A heat map: the colour scale at its stops and half-way between two (linear
@@ -148,10 +170,11 @@ static void svg_heatmap(void) {
   CHECK(sl_chart_heat_colour(0.0) == 0xFFFFFF && sl_chart_heat_colour(-1.0) == 0xFFFFFF);
   CHECK(sl_chart_heat_colour(0.25) == 0xFFE678 && sl_chart_heat_colour(0.5) == 0xFA9628);
   CHECK(sl_chart_heat_colour(1.0) == 0x6E0014 && sl_chart_heat_colour(2.0) == 0x6E0014);
-  CHECK_MSG(sl_chart_heat_colour(0.125) == 0xFFF3BC, "%06X", (unsigned)sl_chart_heat_colour(0.125)); /* (255, 242.5, 187.5) */
+  CHECK_MSG(sl_chart_heat_colour(0.125) == 0xFFF3BC, "%06X",
+            (unsigned)sl_chart_heat_colour(0.125));                            /* (255, 242.5, 187.5) */
   const double xe[3] = {0, 1, 2}, ye[3] = {0, 0.5, 1}, v[4] = {0, 5, 7.5, 10}; /* row j = 0, then j = 1 */
-  sl_chart_heatmap hm = {.nx = 2, .ny = 2, .x_edges = xe, .y_edges = ye, .values = v, .lo = 0, .hi = 10,
-                         .label = "value"};
+  sl_chart_heatmap hm = {
+      .nx = 2, .ny = 2, .x_edges = xe, .y_edges = ye, .values = v, .lo = 0, .hi = 10, .label = "value"};
   sl_chart c = {.xlabel = "x (m)", .ylabel = "y (m)", .legend = SL_LEGEND_NONE, .heatmap = &hm};
   sl_diag d = {{0}};
   CHECK(sl_chart_write_svg("plot_heat.svg", &c, 400, 300, &d) == 0);
@@ -188,17 +211,27 @@ static void labels(void) {
   sl_plot_quantity("phi", 0, buf, sizeof buf);
   CHECK_MSG(!strcmp(buf, "solids volume fraction \xCF\x86"), "%s", buf);
   sl_plot_pretty("eps = 1e-4, phi0 = 0.1, 2.5e+03 cells, file_1e-4.ini", buf, sizeof buf);
-  CHECK_MSG(!strcmp(buf, "\xCE\xB5 = 10^{-4}, \xCF\x86_{0} = 0.1, 2.5\xC3\x97" "10^{3} cells, file_1e-4.ini"), "%s", buf);
+  CHECK_MSG(!strcmp(buf,
+                    "\xCE\xB5 = 10^{-4}, \xCF\x86_{0} = 0.1, 2.5\xC3\x97"
+                    "10^{3} cells, file_1e-4.ini"),
+            "%s", buf);
 }
 
-static uint32_t be32(const unsigned char *p) { return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3]; }
+static uint32_t be32(const unsigned char *p) {
+  return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3];
+}
 
 /* The PNG of the chart: chunks and CRCs walked here, the image data inflated
  * by zlib, pixels checked against the SVG's marker position. */
 static void png(void) {
   const double x[3] = {1, 2, 4}, y[3] = {1, 0.25, 1.0 / 32};
   sl_chart_series s = {.name = "error", .n = 3, .x = x, .y = y, .marker = SL_CHART_MARK_SQUARE};
-  sl_chart c = {.title = "T", .xlabel = "x", .ylabel = "y", .xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .n_series = 1,
+  sl_chart c = {.title = "T",
+                .xlabel = "x",
+                .ylabel = "y",
+                .xscale = SL_AXIS_LOG,
+                .yscale = SL_AXIS_LOG,
+                .n_series = 1,
                 .series = &s};
   sl_diag d = {{0}};
   CHECK(sl_chart_write_png("plot.png", &c, 400, 300, &d) == 0);
@@ -246,7 +279,8 @@ static void png(void) {
       const unsigned char *q = raw + (size_t)yy * (3 * 400 + 1) + 1 + 3 * (size_t)xx;
       int r = q[0], g = q[1], b = q[2];
       /* strictly between the series colour and white on every channel */
-      blends += r > (int)(c0 >> 16) && r < 255 && g > (int)(c0 >> 8 & 0xFF) && g < 255 && b > (int)(c0 & 0xFF) && b < 255;
+      blends +=
+          r > (int)(c0 >> 16) && r < 255 && g > (int)(c0 >> 8 & 0xFF) && g < 255 && b > (int)(c0 & 0xFF) && b < 255;
     }
   CHECK_MSG(blends > 50, "%d anti-aliased pixels", blends);
   free(raw), free(z);

@@ -40,7 +40,7 @@ static void checksums(void) {
 static size_t round_trip_pattern(int w, int h, int pattern) {
   unsigned char *img = malloc((size_t)w * (size_t)h * 3);
   for (int i = 0; i < w * h * 3; ++i)
-    img[i] = pattern == 0 ? (unsigned char)(i * 37 + i / 11)
+    img[i] = pattern == 0   ? (unsigned char)(i * 37 + i / 11)
              : pattern == 1 ? (unsigned char)200
                             : (unsigned char)(((i / (3 * w)) / 3) % 2 ? 30 + i % 3 : 250);
   unsigned char *png = NULL, *back = NULL;
@@ -68,8 +68,8 @@ static void round_trip(int w, int h) { round_trip_pattern(w, h, 0); }
 static void encoder(void) {
   round_trip(1, 1);
   round_trip(7, 5);
-  round_trip(200, 120);   /* 72,120 raw bytes */
-  round_trip(21845, 1);   /* one row of 65,536 bytes: matches reach across the 32 KiB window */
+  round_trip(200, 120); /* 72,120 raw bytes */
+  round_trip(21845, 1); /* one row of 65,536 bytes: matches reach across the 32 KiB window */
   /* one colour and stripes: the repeats compress (a 300 x 200 image holds 180,200 raw bytes) */
   size_t flat = round_trip_pattern(300, 200, 1), stripes = round_trip_pattern(300, 200, 2);
   printf("png: 300 x 200, one colour %zu bytes, stripes %zu bytes (raw 180200)\n", flat, stripes);
@@ -116,9 +116,16 @@ static int count_colour(const sl_image *im, uint32_t c) {
 
 static void chart(void) {
   const double x[4] = {0.01, 0.1, 1.0, 10.0}, y1[4] = {1e-2, 3e-3, 1e-3, 3e-4}, y2[4] = {5e-3, NAN, -1.0, 1e-4};
-  sl_chart_series s[2] = {{.name = "first", .n = 4, .x = x, .y = y1}, {.name = "second", .n = 4, .x = x, .y = y2, .dashed = 1}};
-  sl_chart c = {.title = "Title", .subtitle = "line one\nline two", .xlabel = "CPU time (s)", .ylabel = "error",
-                .xscale = SL_AXIS_LOG, .yscale = SL_AXIS_LOG, .n_series = 2, .series = s};
+  sl_chart_series s[2] = {{.name = "first", .n = 4, .x = x, .y = y1},
+                          {.name = "second", .n = 4, .x = x, .y = y2, .dashed = 1}};
+  sl_chart c = {.title = "Title",
+                .subtitle = "line one\nline two",
+                .xlabel = "CPU time (s)",
+                .ylabel = "error",
+                .xscale = SL_AXIS_LOG,
+                .yscale = SL_AXIS_LOG,
+                .n_series = 2,
+                .series = s};
   sl_image im;
   sl_diag d = {{0}};
   CHECK(sl_chart_draw(&c, 640, 480, &im, &d) == 0);

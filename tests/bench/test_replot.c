@@ -49,11 +49,11 @@ int main(void) {
   svg_xpath("replot_cwp.svg", "string(//*[@class='slope'])", out, sizeof out);
   CHECK_MSG(!strcmp(out, "order 1.95"), "slope: %s", out);
   CHECK(svg_xpath_number("replot_cwp.svg", "count(//*[@class='slope'])") == 1.0);
-  covers("replot_cwp.svg", 1, "x", 8, 256);         /* error against n */
+  covers("replot_cwp.svg", 1, "x", 8, 256); /* error against n */
   covers("replot_cwp.svg", 1, "y", 3.407e-8, 7.433e-4);
   covers("replot_cwp.svg", 2, "x", 0.01053, 279.4); /* against CPU time */
   covers("replot_cwp.svg", 2, "y", 3.407e-8, 7.433e-4);
-  covers("replot_cwp.svg", 3, "y", 9.2, 3108.5);    /* peak memory */
+  covers("replot_cwp.svg", 3, "y", 9.2, 3108.5); /* peak memory */
   /* umfpack's n = 256 failed: said in the note */
   svg_xpath("replot_cwp.svg", "string(//*[contains(text(), 'Not plotted')])", out, sizeof out);
   CHECK_MSG(strstr(out, "umfpack, n = 256 failed") != NULL, "note: %s", out);
@@ -70,17 +70,19 @@ int main(void) {
   }
   CHECK(svg_xpath_number("replot_cvf.svg", "count(//*[@class='slope'])") == 4.0);
   covers("replot_cvf.svg", 1, "y", 5.4471e-07, 4.3460e-03); /* max-norm against n */
-  covers("replot_cvf.svg", 2, "x", 0.01058, 43.79);          /* against CPU time */
-  covers("replot_cvf.svg", 3, "y", 2.207e-08, 7.433e-04);    /* |min u - u*| */
-  covers("replot_cvf.svg", 4, "y", 1.5417e-07, 1.4704e-03);  /* L2 against n */
-  covers("replot_cvf.svg", 6, "x", 659, 148739);             /* memory against unknowns */
+  covers("replot_cvf.svg", 2, "x", 0.01058, 43.79);         /* against CPU time */
+  covers("replot_cvf.svg", 3, "y", 2.207e-08, 7.433e-04);   /* |min u - u*| */
+  covers("replot_cvf.svg", 4, "y", 1.5417e-07, 1.4704e-03); /* L2 against n */
+  covers("replot_cvf.svg", 6, "x", 659, 148739);            /* memory against unknowns */
 
   /* a row the program did not write: file:line, exit 2 */
   FILE *f = fopen("replot_bad.csv", "w");
   CHECK(f != NULL);
   if (f) {
-    fputs("# reference min u* = -0.2: given\nsolver,n,unknowns,umin,error,cpu_s,wall_s,assembly_s,symbolic_s,numeric_s,"
-          "solve_s,peak_rss_mb,tr_step_s,tr_step_assembly_s\nklu,eight,659,-0.2,0,1,1,1,1,1,1,1,,\n", f);
+    fputs(
+        "# reference min u* = -0.2: given\nsolver,n,unknowns,umin,error,cpu_s,wall_s,assembly_s,symbolic_s,numeric_s,"
+        "solve_s,peak_rss_mb,tr_step_s,tr_step_assembly_s\nklu,eight,659,-0.2,0,1,1,1,1,1,1,1,,\n",
+        f);
     fclose(f);
   }
   snprintf(cmd, sizeof cmd, "%s --replot replot_bad.csv --svg replot_bad.svg 2>replot_bad.err", cwp);

@@ -60,10 +60,8 @@ static void check_derivs(sl_tc *t, int x, st s) {
     double h = 1e-6 * fmax(fabs(v), 1e-3);
     if (v - h < 0.0) continue; /* an edge (phi = 0 or slip = 0): tested on its own */
     st a = s, b = s;
-    if (w == 0)
-      a.phi += h, b.phi -= h;
-    else
-      a.slip += h, b.slip -= h;
+    if (w == 0) a.phi += h, b.phi -= h;
+    else a.slip += h, b.slip -= h;
     double fd = (Kx(t, x, a) - Kx(t, x, b)) / (2.0 * h);
     double an = dKx(t, x, w == 0 ? "phi" : "slip", s);
     CHECK_MSG(fabs(an - fd) <= 1e-6 * fabs(fd) + 1e-9 * fabs(K) / fmax(fabs(v), 1e-3),
@@ -422,15 +420,12 @@ static void test_syamlal_obrien(void) {
  * (3/4) C_D rho_f u^2 / d = drho g (independent of the closures' Newton iteration). */
 static double ut_sn_bisect(double d, double drho, double rho, double mu, double g) {
   double lo = 0.0, hi = 1.0;
-  while (0.75 * cd_sn(rho * hi * d / mu) * rho * hi * hi / d < drho * g)
-    hi *= 2.0;
+  while (0.75 * cd_sn(rho * hi * d / mu) * rho * hi * hi / d < drho * g) hi *= 2.0;
   for (int i = 0; i < 200; ++i) {
     double m = 0.5 * (lo + hi);
     if (m == lo || m == hi) break;
-    if (0.75 * cd_sn(rho * m * d / mu) * rho * m * m / d < drho * g)
-      lo = m;
-    else
-      hi = m;
+    if (0.75 * cd_sn(rho * m * d / mu) * rho * m * m / d < drho * g) lo = m;
+    else hi = m;
   }
   return 0.5 * (lo + hi);
 }
@@ -509,10 +504,8 @@ static double steady_U(sl_tc *t, double n, double d, double rho_s, double rho_f,
   }
   for (int i = 0; i < 100; ++i) {
     s.slip = 0.5 * (lo + hi);
-    if (Kx(t, X_RHO_S, s) * s.slip < target)
-      lo = s.slip;
-    else
-      hi = s.slip;
+    if (Kx(t, X_RHO_S, s) * s.slip < target) lo = s.slip;
+    else hi = s.slip;
   }
   return n * 0.5 * (lo + hi);
 }

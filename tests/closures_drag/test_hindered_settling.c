@@ -336,10 +336,8 @@ static void test_nigam(void) {
     for (int it = 0; it < 200; ++it) { /* bisection on dF/dalpha = h + alpha h' = 0 */
       double m = 0.5 * (lo + hi);
       hs s = H(m, 1e-4, 2600.0, 1000.0, 1e-3);
-      if (vs(c, s) + m * dev(c, "settling_velocity", s) > 0.0)
-        lo = m;
-      else
-        hi = m;
+      if (vs(c, s) + m * dev(c, "settling_velocity", s) > 0.0) lo = m;
+      else hi = m;
     }
     double a = 0.5 * (lo + hi);
     CHECK_CLOSE(a, amax[k], 0.00005 / amax[k]);
@@ -383,7 +381,8 @@ static void test_vesilind(void) {
     CHECK_CLOSE(vs(st, s), 2.198e-3 * pow(10.0, -3.0 * phis2[i]), 1e-12);
     check_derivs(st, s);
   }
-  CHECK(vs(st, H(0.5, 1e-4, 2600.0, 1000.0, 1e-3)) == 0.0 && dev(st, "settling_velocity", H(0.5, 1e-4, 2600.0, 1000.0, 1e-3)) == 0.0);
+  CHECK(vs(st, H(0.5, 1e-4, 2600.0, 1000.0, 1e-3)) == 0.0 &&
+        dev(st, "settling_velocity", H(0.5, 1e-4, 2600.0, 1000.0, 1e-3)) == 0.0);
   check_refused(t, H(0.6400001, 1e-4, 2600.0, 1000.0, 1e-3));
   check_refused(st, H(0.51, 1e-4, 2600.0, 1000.0, 1e-3));
   check_common_refusals(t);
@@ -399,8 +398,7 @@ static void test_optional_outputs(void) {
     const sl_closure_desc *c = t->c->desc;
     double in_v[16], v = NAN, dv = NAN;
     const double *in[16];
-    for (int32_t j = 0; j < c->n_in; ++j)
-      in_v[j] = c->in[j].typical, in[j] = &in_v[j];
+    for (int32_t j = 0; j < c->n_in; ++j) in_v[j] = c->in[j].typical, in[j] = &in_v[j];
     double *out[3] = {&v, NULL, NULL};
     double *dout[3 * 16] = {0};
     dout[0 * c->n_in + sl_closure_input(c, "phi")] = &dv;

@@ -135,10 +135,8 @@ static void test_kinetic_values(void) {
           CHECK_CLOSE(kt_eval(t, "mu_s", phi, th, rho, d), ref.mu_s, 1e-12);
           CHECK_CLOSE(kt_eval(t, "lambda_s", phi, th, rho, d), ref.lambda_s, 1e-12);
           CHECK_CLOSE(kt_eval(t, "kappa", phi, th, rho, d), ref.kappa, 1e-12);
-          if (es[ie] < 1.0)
-            CHECK_CLOSE(kt_eval(t, "gamma", phi, th, rho, d), ref.gamma, 1e-12);
-          else
-            CHECK(kt_eval(t, "gamma", phi, th, rho, d) == 0.0); /* elastic: no dissipation */
+          if (es[ie] < 1.0) CHECK_CLOSE(kt_eval(t, "gamma", phi, th, rho, d), ref.gamma, 1e-12);
+          else CHECK(kt_eval(t, "gamma", phi, th, rho, d) == 0.0); /* elastic: no dissipation */
           CHECK_CLOSE(kt_deriv(t, "g0", "phi", phi, th, rho, d), dg, 1e-11);
         }
         sl_tc_close(t);
@@ -163,10 +161,8 @@ static void test_kinetic_derivatives(void) {
           CHECK_CLOSE(a, fd, 1e-6);
           a = kt_deriv(t, kt_outputs[k], "theta", phi, th, rho, d);
           fd = kt_fd(t, kt_outputs[k], 1, phi, th, rho, d, 1e-7 * th);
-          if (strcmp(kt_outputs[k], "g0") == 0)
-            CHECK(a == 0.0);
-          else
-            CHECK_CLOSE(a, fd, 1e-6);
+          if (strcmp(kt_outputs[k], "g0") == 0) CHECK(a == 0.0);
+          else CHECK_CLOSE(a, fd, 1e-6);
         }
       }
       sl_tc_close(t);

@@ -28,7 +28,8 @@ static void check_refused(sl_tc *t, double phi, double g, double dp) {
 
 static void test_constants(void) {
   sl_tc *t = sl_tc_open("migration", "phillips", NULL);
-  const double st[][3] = {{0.0, 0.0, 1e-3}, {0.1, 3.0, 2e-4}, {0.4, 10.0, 1e-3}, {0.55, 250.0, 5e-5}, {0.74, 1.0, 0.02}};
+  const double st[][3] = {
+      {0.0, 0.0, 1e-3}, {0.1, 3.0, 2e-4}, {0.4, 10.0, 1e-3}, {0.55, 250.0, 5e-5}, {0.74, 1.0, 0.02}};
   for (int i = 0; i < 5; ++i) {
     double phi = st[i][0], g = st[i][1], dp = st[i][2];
     double a2 = dp * dp / 4.0; /* a = d_p / 2: the RADIUS */

@@ -171,9 +171,9 @@ static void test_pringle_granular(void) {
   }
   /* Pringle (2001) eqs 3.36-3.37, 3 significant figures (half a unit in the
    * last printed digit). 0.55 lies outside the Newtonian range: refused. */
-  const double tab[][3] = {{0.01, 2.74, 0.005}, {0.05, 2.85, 0.005}, {0.10, 3.02, 0.005}, {0.20, 3.57, 0.005},
-                           {0.30, 4.85, 0.005}, {0.35, 6.33, 0.005}, {0.40, 9.78, 0.005}, {0.45, 21.9, 0.05},
-                           {0.50, 138.0, 0.5}};
+  const double tab[][3] = {{0.01, 2.74, 0.005}, {0.05, 2.85, 0.005}, {0.10, 3.02, 0.005},
+                           {0.20, 3.57, 0.005}, {0.30, 4.85, 0.005}, {0.35, 6.33, 0.005},
+                           {0.40, 9.78, 0.005}, {0.45, 21.9, 0.05},  {0.50, 138.0, 0.5}};
   for (int i = 0; i < 9; ++i) {
     double v = eval_phi(t, tab[i][0], 1.0);
     CHECK_MSG(fabs(v - tab[i][1]) <= tab[i][2], "pringle_granular(%g) = %g, table %g", tab[i][0], v, tab[i][1]);

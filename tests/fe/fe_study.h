@@ -17,9 +17,7 @@
 static inline double observed_order(double coarse, double fine) { return log(coarse / fine) / log(2.0); }
 
 /* A rule exact well beyond the discretisation, for error norms. */
-static inline int error_quad_degree(sl_cell_type t, int order) {
-  return t == SL_CELL_TRI3 ? 5 : 2 * order + 2;
-}
+static inline int error_quad_degree(sl_cell_type t, int order) { return t == SL_CELL_TRI3 ? 5 : 2 * order + 2; }
 
 /* Assembles -div(k grad u) = f with u = g on the listed boundaries and
  * solves; x has dm->n_dofs entries. Returns 0 or the failing code. */

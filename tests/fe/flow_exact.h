@@ -34,7 +34,7 @@ typedef struct flow_exact {
   double (*rho)(const double x[2]);
   /* mu(gamma) and its derivative */
   void (*mu)(double gamma, double *mu, double *dmu);
-  double t;   /* time of the evaluation */
+  double t;          /* time of the evaluation */
   double dudt_scale; /* rho du/dt is added when non-zero: du/dt by differences in t */
 } flow_exact;
 

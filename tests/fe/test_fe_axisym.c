@@ -43,8 +43,8 @@ static int solve_and_measure(sl_cell_type cell, int order, int n, int axisymmetr
   sl_mesh *m = NULL;
   sl_dofmap *dm = NULL;
   double *x = NULL;
-  sl_diffusion_opts opts = {.diffusivity = {diffusivity, NULL, 0.0}, .source = {source, NULL, 0.0},
-                            .axisymmetric = axisymmetric};
+  sl_diffusion_opts opts = {
+      .diffusivity = {diffusivity, NULL, 0.0}, .source = {source, NULL, 0.0}, .axisymmetric = axisymmetric};
   int rc = sl_mesh_annulus(0.0, 1.0, 0.0, 1.0, n, n, &o, &m, d);
   if (!rc) rc = sl_dofmap_create(m, order, &dm, d);
   if (!rc && !(x = calloc((size_t)dm->n_dofs, sizeof *x))) rc = SL_EFAILED;

@@ -100,8 +100,8 @@ static int study(const char *name, sl_exact_fn lid, int n0, double umin[4]) {
       int cell = -1;
       CHECK_CLOSE(centreline_u(th, x, 1.0, &cell), 1.0, 1e-12);
       CHECK(fabs(centreline_u(th, x, 0.0, &cell)) < 1e-12);
-      printf("%s cavity Q2/Q1 n=%2d (%6d dofs): min u on x = 1/2: %.10f at y = %.6f\n", name, sizes[k],
-             (int)th->n_dofs, umin[k], ymin);
+      printf("%s cavity Q2/Q1 n=%2d (%6d dofs): min u on x = 1/2: %.10f at y = %.6f\n", name, sizes[k], (int)th->n_dofs,
+             umin[k], ymin);
     }
     free(x);
     sl_th_destroy(th);

@@ -11,8 +11,8 @@
  * quadratically at the end (correction c_k <= 30 c_{k-1}^2 for c_k > 1e-9) and in at most
  * 10 iterations from a zero start. */
 #include "core/models/navier_stokes/flow_problem.h"
-#include "flow_exact.h"
 #include "fe_study.h"
+#include "flow_exact.h"
 #include "testing.h"
 
 static void u_planar(const double x[2], double t, double u[3]) {
@@ -125,7 +125,8 @@ static int run(const flow_exact *e, sl_cell_type cell, int n, errors *err, sl_di
       l2 += a * a, h1 += b * b;
     }
     err->u_l2 = sqrt(l2), err->u_h1 = sqrt(h1);
-    if (!rc) rc = sl_fe_error_norms(th->pres, u + th->p_offset, p_fn, (void *)e, e->axisymmetric, deg, &err->p_l2, NULL, d);
+    if (!rc)
+      rc = sl_fe_error_norms(th->pres, u + th->p_offset, p_fn, (void *)e, e->axisymmetric, deg, &err->p_l2, NULL, d);
   }
   sl_linsolve_destroy(ls);
   sl_flow_problem_free(&p);
@@ -144,8 +145,8 @@ static void study(const char *name, const flow_exact *e, sl_cell_type cell) {
     int rc = run(e, cell, ns[k], &er[k], &d);
     CHECK_MSG(rc == 0, "%s n=%d: %s", name, ns[k], d.msg);
     if (rc) return;
-    printf("%-28s n=%2d: |u-uh| %.3e  |u-uh|_H1 %.3e  |p-ph| %.3e  (%d Newton iterations, c_k/c_{k-1}^2 %.2g)\n",
-           name, ns[k], er[k].u_l2, er[k].u_h1, er[k].p_l2, er[k].iterations, er[k].rate);
+    printf("%-28s n=%2d: |u-uh| %.3e  |u-uh|_H1 %.3e  |p-ph| %.3e  (%d Newton iterations, c_k/c_{k-1}^2 %.2g)\n", name,
+           ns[k], er[k].u_l2, er[k].u_h1, er[k].p_l2, er[k].iterations, er[k].rate);
     CHECK_MSG(er[k].iterations <= 10, "%s: %d Newton iterations", name, er[k].iterations);
     CHECK_MSG(er[k].rate < 30.0, "%s: Newton not quadratic (c_k / c_{k-1}^2 = %.3g)", name, er[k].rate);
   }
@@ -160,10 +161,11 @@ static void study(const char *name, const flow_exact *e, sl_cell_type cell) {
 /* argv[1] = planar or axisymmetric runs those studies alone (two ctest
  * entries that run in parallel); none: all. */
 int main(int argc, char **argv) {
-  int planar_part = argc < 2 || strcmp(argv[1], "planar") == 0, axi_part = argc < 2 || strcmp(argv[1], "axisymmetric") == 0;
+  int planar_part = argc < 2 || strcmp(argv[1], "planar") == 0,
+      axi_part = argc < 2 || strcmp(argv[1], "axisymmetric") == 0;
   if (!planar_part && !axi_part) return fprintf(stderr, "unknown part '%s' (planar, axisymmetric)\n", argv[1]), 2;
-  flow_exact planar = {.axisymmetric = 0, .n_comp = 2, .convection = 1, .u = u_planar, .p = p_planar,
-                       .rho = rho_var, .mu = mu_thin};
+  flow_exact planar = {
+      .axisymmetric = 0, .n_comp = 2, .convection = 1, .u = u_planar, .p = p_planar, .rho = rho_var, .mu = mu_thin};
   if (planar_part) {
     study("planar Q2/Q1", &planar, SL_CELL_QUAD4);
     study("planar P2/P1", &planar, SL_CELL_TRI3);
@@ -171,8 +173,8 @@ int main(int argc, char **argv) {
     section.n_comp = 3;
     study("planar Q2/Q1 + out-of-plane", &section, SL_CELL_QUAD4);
   }
-  flow_exact axi = {.axisymmetric = 1, .n_comp = 3, .convection = 1, .u = u_axi, .p = p_axi, .rho = rho_var,
-                    .mu = mu_thin};
+  flow_exact axi = {
+      .axisymmetric = 1, .n_comp = 3, .convection = 1, .u = u_axi, .p = p_axi, .rho = rho_var, .mu = mu_thin};
   if (axi_part) {
     study("axisymmetric Q2/Q1 swirl", &axi, SL_CELL_QUAD4);
     study("axisymmetric P2/P1 swirl", &axi, SL_CELL_TRI3);

@@ -16,7 +16,10 @@ static double integrate(sl_fe_values *fv, double (*g)(const double x[2])) {
   return s;
 }
 
-static double one(const double x[2]) { (void)x; return 1.0; }
+static double one(const double x[2]) {
+  (void)x;
+  return 1.0;
+}
 static double x_times_y2(const double x[2]) { return x[0] * x[1] * x[1]; }
 
 /* The inclined box is made of parallelograms; rotating it changes nothing. */
@@ -48,8 +51,17 @@ static void test_gradients_bilinear(void) {
   const int cv[] = {0, 1, 2, 3};
   const char *names[] = {"wall"};
   const int sides[] = {0, 1, 1, 2, 2, 3, 3, 0}, tags[] = {0, 0, 0, 0};
-  sl_mesh_spec s = {.dim = 2, .cell_type = SL_CELL_QUAD4, .n_vertices = 4, .xy = xy, .n_cells = 1, .cell_vertices = cv,
-                    .n_boundaries = 1, .boundary_names = names, .n_sides = 4, .side_vertices = sides, .side_tag = tags};
+  sl_mesh_spec s = {.dim = 2,
+                    .cell_type = SL_CELL_QUAD4,
+                    .n_vertices = 4,
+                    .xy = xy,
+                    .n_cells = 1,
+                    .cell_vertices = cv,
+                    .n_boundaries = 1,
+                    .boundary_names = names,
+                    .n_sides = 4,
+                    .side_vertices = sides,
+                    .side_tag = tags};
   sl_mesh *m;
   CHECK(sl_mesh_create(&s, &m, NULL) == 0);
   const sl_element *sp[2] = {sl_element_lagrange(SL_CELL_QUAD4, 2), sl_element_lagrange(SL_CELL_QUAD4, 1)};
@@ -93,8 +105,8 @@ static void test_axisymmetric(void) {
     sl_fe_values *planar, *axi;
     CHECK(sl_fe_values_create(&planar, m, 1, &p2, 4, 0, NULL) == 0);
     CHECK(sl_fe_values_create(&axi, m, 1, &p2, 4, 1, NULL) == 0);
-    CHECK_CLOSE(integrate(planar, x_times_y2), 4.0 * 8.0 / 3.0, 1e-13);      /* (9-1)/2 * 8/3 */
-    CHECK_CLOSE(integrate(axi, one), 8.0, 1e-13);                             /* (9-1)/2 * 2 */
+    CHECK_CLOSE(integrate(planar, x_times_y2), 4.0 * 8.0 / 3.0, 1e-13);     /* (9-1)/2 * 8/3 */
+    CHECK_CLOSE(integrate(axi, one), 8.0, 1e-13);                           /* (9-1)/2 * 2 */
     CHECK_CLOSE(integrate(axi, x_times_y2), 26.0 / 3.0 * 8.0 / 3.0, 1e-13); /* (27-1)/3 * 8/3 */
     sl_fe_values_destroy(planar);
     sl_fe_values_destroy(axi);

@@ -94,7 +94,8 @@ static void check_interpolation(const sl_dofmap *per, const sl_dofmap *plain) {
   CHECK(sl_fe_error_norms(per, u, periodic_fn, NULL, 0, deg, &l2p, &h1p, NULL) == 0);
   CHECK(sl_fe_error_norms(plain, v, periodic_fn, NULL, 0, deg, &l2, &h1, NULL) == 0);
   CHECK_MSG(fabs(l2p - l2) <= 1e-12 * l2 && fabs(h1p - h1) <= 1e-12 * h1 && l2 > 0,
-            "%s: interpolation error %.15g / %.15g periodic, %.15g / %.15g plain", per->element->name, l2p, h1p, l2, h1);
+            "%s: interpolation error %.15g / %.15g periodic, %.15g / %.15g plain", per->element->name, l2p, h1p, l2,
+            h1);
   /* spread to the nodes: exactly the plain interpolant */
   sl_dofmap_dofs_to_nodes(per, u, un, 1);
   double worst = 0.0;
@@ -314,15 +315,15 @@ static void test_errors(void) {
   expect_error(m, NULL, 1, (const char *[]){"without a list"}, 1);
   sl_mesh_destroy(m);
   CHECK(sl_mesh_rectangle(0.0, 1.0, 0.0, 1.0, 3, 3, NULL, &m, &d) == 0);
-  expect_error(m, (const sl_periodic_pair[]){{"bottom", "left"}}, 1,
-               (const char *[]){"not translates", "rotation"}, 2);
+  expect_error(m, (const sl_periodic_pair[]){{"bottom", "left"}}, 1, (const char *[]){"not translates", "rotation"}, 2);
   sl_mesh_destroy(m);
   /* a node of the top moved along it: named with its partner's place */
   CHECK(sl_mesh_rectangle(0.0, 1.0, 0.0, 1.0, 4, 2, NULL, &m, &d) == 0);
   for (int v = 0; v < m->n_vertices; ++v)
     if (m->xy[2 * v] == 0.25 && m->xy[2 * v + 1] == 1.0) m->xy[2 * v] = 0.2;
-  expect_error(m, PXY, 2, (const char *[]){"'bottom' / 'top'", "the node (0.2, 1) of 'top' has no partner on 'bottom' at (0.2, 0)"},
-               2);
+  expect_error(
+      m, PXY, 2,
+      (const char *[]){"'bottom' / 'top'", "the node (0.2, 1) of 'top' has no partner on 'bottom' at (0.2, 0)"}, 2);
   sl_mesh_destroy(m);
 }
 

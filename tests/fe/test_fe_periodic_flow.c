@@ -49,7 +49,9 @@ static int pois_force(void *user, const sl_qp_batch *b, double *out, sl_diag *d)
 static double pois_u(int comp, const double x[2]) { return POIS_F[comp] * x[1] * (1.0 - x[1]) / (2.0 * POIS_MU); }
 
 static void poiseuille(const char *name, sl_cell_type cell, int n_comp) {
-  sl_grid_opts go = {.cell_type = cell, .diagonal = SL_DIAGONAL_UNION_JACK, .grade_x = {SL_GRADE_GEOMETRIC, 1.5},
+  sl_grid_opts go = {.cell_type = cell,
+                     .diagonal = SL_DIAGONAL_UNION_JACK,
+                     .grade_x = {SL_GRADE_GEOMETRIC, 1.5},
                      .grade_y = {SL_GRADE_SYMMETRIC, 2.5}};
   sl_mesh *m = NULL;
   sl_th_space *th = NULL;

@@ -83,8 +83,8 @@ static void run(const study *s) {
 
 int main(void) {
   const study studies[] = {
-      {"Q1 quads", 2, SL_CELL_QUAD4, 1}, {"Q2 quads", 2, SL_CELL_QUAD4, 2}, {"P1 triangles", 2, SL_CELL_TRI3, 1},
-      {"P2 triangles", 2, SL_CELL_TRI3, 2}, {"P1 line", 1, SL_CELL_LINE2, 1}, {"P2 line", 1, SL_CELL_LINE2, 2},
+      {"Q1 quads", 2, SL_CELL_QUAD4, 1},    {"Q2 quads", 2, SL_CELL_QUAD4, 2}, {"P1 triangles", 2, SL_CELL_TRI3, 1},
+      {"P2 triangles", 2, SL_CELL_TRI3, 2}, {"P1 line", 1, SL_CELL_LINE2, 1},  {"P2 line", 1, SL_CELL_LINE2, 2},
   };
   for (size_t k = 0; k < sizeof studies / sizeof studies[0]; ++k) run(&studies[k]);
   return sl_test_summary();

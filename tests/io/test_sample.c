@@ -70,8 +70,7 @@ static void q9_distort(mesh *m, int nx, int ny, double dx, double dy) {
   for (int c = 0; c < m->nc; ++c) {
     const int32_t *q = m->cells + 9 * c;
     for (int e = 0; e < 4; ++e)
-      for (int k = 0; k < 2; ++k)
-        m->xy[2 * q[4 + e] + k] = 0.5 * (m->xy[2 * q[e] + k] + m->xy[2 * q[(e + 1) % 4] + k]);
+      for (int k = 0; k < 2; ++k) m->xy[2 * q[4 + e] + k] = 0.5 * (m->xy[2 * q[e] + k] + m->xy[2 * q[(e + 1) % 4] + k]);
     for (int k = 0; k < 2; ++k)
       m->xy[2 * q[8] + k] =
           0.25 * (m->xy[2 * q[0] + k] + m->xy[2 * q[1] + k] + m->xy[2 * q[2] + k] + m->xy[2 * q[3] + k]);
@@ -144,7 +143,8 @@ static void curved_mesh(mesh *m, int nr, int nt, int tri) {
     for (int i = 0; i < NX; ++i) polar_point(i, j, nr, nt, &m->xy[2 * (j * NX + i)], &m->xy[2 * (j * NX + i) + 1]);
   static const int di[9] = {0, 2, 2, 0, 1, 2, 1, 0, 1}, dj[9] = {0, 0, 2, 2, 0, 1, 2, 1, 1};
   /* P2: corners, then the mids of 0-1, 1-2, 2-0 (lattice offsets) */
-  static const int ti[2][6] = {{0, 2, 2, 1, 2, 1}, {0, 2, 0, 1, 1, 0}}, tj[2][6] = {{0, 0, 2, 0, 1, 1}, {0, 2, 2, 1, 2, 1}};
+  static const int ti[2][6] = {{0, 2, 2, 1, 2, 1}, {0, 2, 0, 1, 1, 0}},
+                   tj[2][6] = {{0, 0, 2, 0, 1, 1}, {0, 2, 2, 1, 2, 1}};
   for (int b = 0; b < nt; ++b)
     for (int a = 0; a < nr; ++a) {
       if (!tri) {
@@ -370,7 +370,7 @@ static void test_edge3(void) {
 
   enum { N = 23 };
   double xy[2 * N];
-  line_points(xy, N, -0.1, 0.0, 1.1, 0.0); /* the ends lie outside */
+  line_points(xy, N, -0.1, 0.0, 1.1, 0.0);         /* the ends lie outside */
   for (int i = 0; i < N; ++i) xy[2 * i + 1] = 7.0; /* y is ignored in 1-D */
   int out = check_line("sample_e3.h5", 1.0, 2, xy, N, f_1d, f_1d);
   int expect = 0;

@@ -59,8 +59,7 @@ static int run(const char *configs, const char *mesh, const char *out, dfg *r) {
       CHECK_MSG(strncmp(sum.linear_summary, "umfpack found the matrix numerically singular (pivot ratio ", 59) == 0 &&
                     strstr(sum.linear_summary, "): klu took over; klu"),
                 "quads: %s", sum.linear_summary);
-    else
-      CHECK_MSG(strncmp(sum.linear_summary, "klu", 3) == 0, "quads: %s", sum.linear_summary);
+    else CHECK_MSG(strncmp(sum.linear_summary, "klu", 3) == 0, "quads: %s", sum.linear_summary);
   }
   double fx, fy, t;
   rc = sl_output_read_scalar(out, "force_x_cylinder", INFINITY, &fx, &t, &d);
@@ -101,11 +100,12 @@ static double periodic_force(const char *scene, const char *text, const char *na
 }
 
 static void force_balance(void) {
-  const char *channel = "[scene]\nmodel = navier_stokes\ngeometry = planar\n"
-                        "[mesh]\ngenerator = rectangle\nx = 0, 1\ny = 0, 0.5\ncells = 6, 5\n"
-                        "[fluid]\ndensity = 1\nviscosity = 0.1\n[flow]\nconvection = false\nbody_force = 2, 0\n"
-                        "[boundary.left]\ntype = periodic\npartner = right\n"
-                        "[boundary.bottom]\nforce = true\n[boundary.top]\nforce = true\n";
+  const char *channel =
+      "[scene]\nmodel = navier_stokes\ngeometry = planar\n"
+      "[mesh]\ngenerator = rectangle\nx = 0, 1\ny = 0, 0.5\ncells = 6, 5\n"
+      "[fluid]\ndensity = 1\nviscosity = 0.1\n[flow]\nconvection = false\nbody_force = 2, 0\n"
+      "[boundary.left]\ntype = periodic\npartner = right\n"
+      "[boundary.bottom]\nforce = true\n[boundary.top]\nforce = true\n";
   double fb = periodic_force("force_channel", channel, "force_x_bottom");
   double ft = periodic_force("force_channel", channel, "force_x_top");
   double fy = periodic_force("force_channel", channel, "force_y_bottom");
@@ -113,10 +113,11 @@ static void force_balance(void) {
   CHECK_CLOSE(fb, 0.5, 1e-10);
   CHECK_CLOSE(ft, 0.5, 1e-10);
   CHECK(fabs(fy) < 1e-10);
-  const char *pipe = "[scene]\nmodel = navier_stokes\ngeometry = axisymmetric\n"
-                     "[mesh]\ngenerator = annulus\nr = 0, 0.5\nz = 0, 2\ncells = 5, 4\n"
-                     "[fluid]\ndensity = 1\nviscosity = 0.1\n[flow]\nconvection = false\nbody_force = 0, 3\n"
-                     "[boundary.bottom]\ntype = periodic\npartner = top\n[boundary.outer]\nforce = true\n";
+  const char *pipe =
+      "[scene]\nmodel = navier_stokes\ngeometry = axisymmetric\n"
+      "[mesh]\ngenerator = annulus\nr = 0, 0.5\nz = 0, 2\ncells = 5, 4\n"
+      "[fluid]\ndensity = 1\nviscosity = 0.1\n[flow]\nconvection = false\nbody_force = 0, 3\n"
+      "[boundary.bottom]\ntype = periodic\npartner = top\n[boundary.outer]\nforce = true\n";
   double fz = periodic_force("force_pipe", pipe, "force_z_outer");
   const double exact = 3 * acos(-1.0) * 0.25 * 2;
   printf("pipe: force_z outer %.15g (f pi R^2 L = %.15g)\n", fz, exact);
@@ -139,13 +140,13 @@ int main(void) {
   const char *curved = NULL;
   char cmd[8400];
   if (have_gmsh) {
-    snprintf(cmd, sizeof cmd, "gmsh -2 -order 2 -format msh41 %s/dfg_2d1.geo -o dfg_p2.msh > dfg_p2.log 2>&1",
-             configs);
+    snprintf(cmd, sizeof cmd, "gmsh -2 -order 2 -format msh41 %s/dfg_2d1.geo -o dfg_p2.msh > dfg_p2.log 2>&1", configs);
     CHECK_MSG(system(cmd) == 0, "gmsh failed: see dfg_p2.log");
     curved = "dfg_p2.msh";
   } else {
-    printf("gmsh is not installed (Debian: apt-get install gmsh): the committed configs/dfg_2d1.msh is used and the "
-           "straight-sided comparison is skipped\n");
+    printf(
+        "gmsh is not installed (Debian: apt-get install gmsh): the committed configs/dfg_2d1.msh is used and the "
+        "straight-sided comparison is skipped\n");
   }
   char mesh[4200] = "";
   if (curved) {
@@ -174,15 +175,14 @@ int main(void) {
     }
   }
   if (have_gmsh) {
-    snprintf(cmd, sizeof cmd, "gmsh -2 -order 1 -format msh41 %s/dfg_2d1.geo -o dfg_p1.msh > dfg_p1.log 2>&1",
-             configs);
+    snprintf(cmd, sizeof cmd, "gmsh -2 -order 1 -format msh41 %s/dfg_2d1.geo -o dfg_p1.msh > dfg_p1.log 2>&1", configs);
     CHECK_MSG(system(cmd) == 0, "gmsh failed: see dfg_p1.log");
     dfg b;
     if (!getcwd_path(mesh, sizeof mesh, "dfg_p1.msh")) snprintf(mesh, sizeof mesh, "dfg_p1.msh");
     if (run(configs, mesh, "dfg_p1.h5", &b) == 0)
       CHECK_MSG(fabs(a.cd - CD_REF) * 10 < fabs(b.cd - CD_REF),
-                "c_D error: curved %.2e, straight %.2e (the curved mesh should be 10 times closer)", fabs(a.cd - CD_REF),
-                fabs(b.cd - CD_REF));
+                "c_D error: curved %.2e, straight %.2e (the curved mesh should be 10 times closer)",
+                fabs(a.cd - CD_REF), fabs(b.cd - CD_REF));
   }
   return sl_test_summary();
 }

@@ -14,8 +14,8 @@ static const double sq_xy[] = {0, 0, 1, 0, 1, 1, 0, 1};
 static const int sq_sides[] = {0, 1, 1, 2, 2, 3, 3, 0};
 static const int sq_tags[] = {0, 0, 1, 0};
 
-static int make(const double *xy, int nv, sl_cell_type t, const int *cells, int nc, const int *sides,
-                const int *tags, int ns, sl_mesh **m) {
+static int make(const double *xy, int nv, sl_cell_type t, const int *cells, int nc, const int *sides, const int *tags,
+                int ns, sl_mesh **m) {
   sl_mesh_spec s = {.dim = 2,
                     .cell_type = t,
                     .n_vertices = nv,

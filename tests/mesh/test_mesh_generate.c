@@ -11,7 +11,8 @@ static void test_interval(void) {
   if (!m) return;
   CHECK(m->dim == 1 && m->cell_type == SL_CELL_LINE2 && m->nv_per_cell == 2 && m->nf_per_cell == 2);
   CHECK(m->n_vertices == 11 && m->n_cells == 10 && m->n_faces == 11 && m->n_boundary_faces == 2);
-  CHECK(m->n_boundaries == 2 && strcmp(m->boundary_names[0], "left") == 0 && strcmp(m->boundary_names[1], "right") == 0);
+  CHECK(m->n_boundaries == 2 && strcmp(m->boundary_names[0], "left") == 0 &&
+        strcmp(m->boundary_names[1], "right") == 0);
   CHECK(m->n_regions == 0 && m->cell_region == NULL);
   CHECK_CLOSE(total_area(m), 2.0, 1e-15);
   check_mesh_invariants(m);
@@ -164,9 +165,8 @@ static void test_rectangle(void) {
 }
 
 static void test_graded_rectangle(void) {
-  sl_grid_opts o = {.cell_type = SL_CELL_QUAD4,
-                    .grade_x = {SL_GRADE_GEOMETRIC, 0.2},
-                    .grade_y = {SL_GRADE_SYMMETRIC, 3.0}};
+  sl_grid_opts o = {
+      .cell_type = SL_CELL_QUAD4, .grade_x = {SL_GRADE_GEOMETRIC, 0.2}, .grade_y = {SL_GRADE_SYMMETRIC, 3.0}};
   sl_mesh *m;
   CHECK(sl_mesh_rectangle(0, 1, 0, 2, 10, 9, &o, &m, &d) == 0);
   if (!m) return;

@@ -13,10 +13,8 @@ static sl_diag d;
 static const char *data(const char *file) {
   static char path[1024];
   const char *src = getenv("SLUICE_SOURCE_DIR");
-  if (src)
-    snprintf(path, sizeof path, "%s/tests/mesh/data/%s", src, file);
-  else
-    snprintf(path, sizeof path, "%s/%s", SLUICE_MESH_DATA, file);
+  if (src) snprintf(path, sizeof path, "%s/tests/mesh/data/%s", src, file);
+  else snprintf(path, sizeof path, "%s/%s", SLUICE_MESH_DATA, file);
   return path;
 }
 
@@ -196,12 +194,14 @@ static void test_scene_names(void) {
   CHECK(sl_mesh_scene_name("inlet (1)", out, sizeof out) == 1 && strcmp(out, "inlet__1_") == 0);
   CHECK(sl_mesh_scene_name("wall-2.top", out, sizeof out) == 0 && strcmp(out, "wall-2.top") == 0);
   CHECK(sl_mesh_scene_name(".a..b.", out, sizeof out) == 1 && strcmp(out, "_a__b_") == 0);
-  const char *text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 1 \"left wall\"\n"
-                     "1 2 \"left_wall\"\n2 3 \"fluid\"\n$EndPhysicalNames\n";
+  const char *text =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 1 \"left wall\"\n"
+      "1 2 \"left_wall\"\n2 3 \"fluid\"\n$EndPhysicalNames\n";
   sl_mesh *m = NULL;
   CHECK(sl_mesh_read_gmsh_string(text, strlen(text), "t.msh", &m, &d) == SL_EBADINPUT && m == NULL);
-  CHECK_CONTAINS(d.msg, "t.msh:7: physical name \"left_wall\" is addressed in a scene as left_wall, and so is the "
-                        "name of physical group 1 (line 6)");
+  CHECK_CONTAINS(d.msg,
+                 "t.msh:7: physical name \"left_wall\" is addressed in a scene as left_wall, and so is the "
+                 "name of physical group 1 (line 6)");
 }
 
 /* One 6-node triangle, (0,0), (1,0), (0,1), its hypotenuse's node moved out
@@ -244,7 +244,8 @@ static void test_curved_triangle(void) {
   sl_mesh_destroy(m);
   t = tri6(0.2, 0.2); /* the node pulled in most of the way to the far corner: det J < 0 near the corners */
   CHECK(sl_mesh_read_gmsh_string(t, strlen(t), "t.msh", &m, &d) == SL_EBADINPUT && m == NULL);
-  CHECK_CONTAINS(d.msg, "t.msh:23: cell 0 folds under its second-order map: det J = -0.2 at the reference point (1, 0)");
+  CHECK_CONTAINS(d.msg,
+                 "t.msh:23: cell 0 folds under its second-order map: det J = -0.2 at the reference point (1, 0)");
 }
 
 /* Second-order elements on straight edges (Gmsh -order 2 of a polygon): the
@@ -286,30 +287,30 @@ static void test_bad_files(void) {
 /* ---- in-memory variants of a two-triangle mesh --------------------------- */
 
 static const char *const base22[] = {
-    "$MeshFormat",                /* 1 */
-    "2.2 0 8",                    /* 2 */
-    "$EndMeshFormat",             /* 3 */
-    "$PhysicalNames",             /* 4 */
-    "2",                          /* 5 */
-    "1 1 \"wall\"",               /* 6 */
-    "2 2 \"fluid\"",              /* 7 */
-    "$EndPhysicalNames",          /* 8 */
-    "$Nodes",                     /* 9 */
-    "4",                          /* 10 */
-    "1 0 0 0",                    /* 11 */
-    "2 1 0 0",                    /* 12 */
-    "3 1 1 0",                    /* 13 */
-    "4 0 1 0",                    /* 14 */
-    "$EndNodes",                  /* 15 */
-    "$Elements",                  /* 16 */
-    "6",                          /* 17 */
-    "1 1 2 1 1 1 2",              /* 18 */
-    "2 1 2 1 1 2 3",              /* 19 */
-    "3 1 2 1 1 3 4",              /* 20 */
-    "4 1 2 1 1 4 1",              /* 21 */
-    "5 2 2 2 1 1 2 3",            /* 22 */
-    "6 2 2 2 1 1 3 4",            /* 23 */
-    "$EndElements",               /* 24 */
+    "$MeshFormat",       /* 1 */
+    "2.2 0 8",           /* 2 */
+    "$EndMeshFormat",    /* 3 */
+    "$PhysicalNames",    /* 4 */
+    "2",                 /* 5 */
+    "1 1 \"wall\"",      /* 6 */
+    "2 2 \"fluid\"",     /* 7 */
+    "$EndPhysicalNames", /* 8 */
+    "$Nodes",            /* 9 */
+    "4",                 /* 10 */
+    "1 0 0 0",           /* 11 */
+    "2 1 0 0",           /* 12 */
+    "3 1 1 0",           /* 13 */
+    "4 0 1 0",           /* 14 */
+    "$EndNodes",         /* 15 */
+    "$Elements",         /* 16 */
+    "6",                 /* 17 */
+    "1 1 2 1 1 1 2",     /* 18 */
+    "2 1 2 1 1 2 3",     /* 19 */
+    "3 1 2 1 1 3 4",     /* 20 */
+    "4 1 2 1 1 4 1",     /* 21 */
+    "5 2 2 2 1 1 2 3",   /* 22 */
+    "6 2 2 2 1 1 3 4",   /* 23 */
+    "$EndElements",      /* 24 */
 };
 #define NBASE ((int)(sizeof base22 / sizeof *base22))
 
@@ -371,7 +372,7 @@ static void test_bad_texts(void) {
   bad_text(variant(23, "6 2 2 2 1 1 4 3", 0), 23, "cell 1 is inverted");
   bad_text(variant(12, "2 1 0 0.5", 0), 12, "only planar meshes");
   bad_text(variant(13, "3 1 x 0", 0), 13, "malformed node");
-  bad_text(variant(10, "5", 0), 15, "malformed node");      /* count too large: $EndNodes read as a node */
+  bad_text(variant(10, "5", 0), 15, "malformed node");        /* count too large: $EndNodes read as a node */
   bad_text(variant(17, "5", 0), 23, "expected $EndElements"); /* count too small */
   bad_text(variant(0, NULL, 20), 20, "unexpected end of file in $Elements");
   bad_text(variant(0, NULL, 12), 12, "unexpected end of file in $Nodes");
@@ -401,32 +402,32 @@ static void test_bad_texts(void) {
 
 /* 4.1 specifics: the physical group through $Entities, block headers. */
 static const char *const base41 =
-    "$MeshFormat\n"          /* 1 */
-    "4.1 0 8\n"              /* 2 */
-    "$EndMeshFormat\n"       /* 3 */
-    "$PhysicalNames\n"       /* 4 */
-    "2\n"                    /* 5 */
-    "1 1 \"wall\"\n"         /* 6 */
-    "2 2 \"fluid\"\n"        /* 7 */
-    "$EndPhysicalNames\n"    /* 8 */
-    "$Entities\n"            /* 9 */
-    "0 1 1 0\n"              /* 10 */
-    "1 0 0 0 1 1 0 1 1 0\n"  /* 11: curve 1, physical 1 */
-    "1 0 0 0 1 1 0 1 2 1 1\n" /* 12: surface 1, physical 2 */
-    "$EndEntities\n"         /* 13 */
-    "$Nodes\n"               /* 14 */
-    "1 4 1 4\n"              /* 15 */
-    "2 1 0 4\n"              /* 16 */
-    "1\n2\n3\n4\n"           /* 17-20 */
+    "$MeshFormat\n"                /* 1 */
+    "4.1 0 8\n"                    /* 2 */
+    "$EndMeshFormat\n"             /* 3 */
+    "$PhysicalNames\n"             /* 4 */
+    "2\n"                          /* 5 */
+    "1 1 \"wall\"\n"               /* 6 */
+    "2 2 \"fluid\"\n"              /* 7 */
+    "$EndPhysicalNames\n"          /* 8 */
+    "$Entities\n"                  /* 9 */
+    "0 1 1 0\n"                    /* 10 */
+    "1 0 0 0 1 1 0 1 1 0\n"        /* 11: curve 1, physical 1 */
+    "1 0 0 0 1 1 0 1 2 1 1\n"      /* 12: surface 1, physical 2 */
+    "$EndEntities\n"               /* 13 */
+    "$Nodes\n"                     /* 14 */
+    "1 4 1 4\n"                    /* 15 */
+    "2 1 0 4\n"                    /* 16 */
+    "1\n2\n3\n4\n"                 /* 17-20 */
     "0 0 0\n1 0 0\n1 1 0\n0 1 0\n" /* 21-24 */
-    "$EndNodes\n"            /* 25 */
-    "$Elements\n"            /* 26 */
-    "2 6 1 6\n"              /* 27 */
-    "1 1 1 4\n"              /* 28 */
+    "$EndNodes\n"                  /* 25 */
+    "$Elements\n"                  /* 26 */
+    "2 6 1 6\n"                    /* 27 */
+    "1 1 1 4\n"                    /* 28 */
     "1 1 2\n2 2 3\n3 3 4\n4 4 1\n" /* 29-32 */
-    "2 1 2 2\n"              /* 33 */
-    "5 1 2 3\n6 1 3 4\n"     /* 34-35 */
-    "$EndElements\n";        /* 36 */
+    "2 1 2 2\n"                    /* 33 */
+    "5 1 2 3\n6 1 3 4\n"           /* 34-35 */
+    "$EndElements\n";              /* 36 */
 
 static char *replace41(const char *from, const char *to) {
   static char buf[4096];

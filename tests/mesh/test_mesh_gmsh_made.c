@@ -71,8 +71,7 @@ static double hole_length(const sl_mesh *m, const char *name, int *faces) {
 static double fe_hole_length(const sl_mesh *m, const char *name) {
   int b;
   if (sl_mesh_boundary_id(m, name, &b, &d)) return -1;
-  static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
-                               0.9061798459386640};
+  static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
   static const double gw[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
                                0.2369268850561891};
   double len = 0;
@@ -83,8 +82,8 @@ static double fe_hole_length(const sl_mesh *m, const char *name) {
       sl_fe_face_point(m, m->face_cells[2 * f], m->face_local[2 * f], 0.5 * (1 + gx[q]), xi, x, n, &ds);
       len += 0.5 * gw[q] * ds;
       /* the outward normal of the hole points to its centre (the origin) */
-      CHECK_MSG(fabs(n[0] + x[0] / R) < 1e-2 && fabs(n[1] + x[1] / R) < 1e-2, "normal (%g, %g) at (%g, %g)", n[0],
-                n[1], x[0], x[1]);
+      CHECK_MSG(fabs(n[0] + x[0] / R) < 1e-2 && fabs(n[1] + x[1] / R) < 1e-2, "normal (%g, %g) at (%g, %g)", n[0], n[1],
+                x[0], x[1]);
     }
   }
   return len;
@@ -121,8 +120,8 @@ static void check_curved(const char *name, const char *extra, const char *opts, 
   check_mesh_invariants(m);
   int n = 0, b;
   double len = hole_length(m, "hole", &n), polygon = 2 * n * R * sin(pi / n);
-  printf("%s: %d %s cells, hole of %d faces: perimeter %.9f (2 pi R = %.9f, the polygon's %.9f)\n", name,
-         m->n_cells, sl_cell_type_name(m->cell_type), n, len, perimeter, polygon);
+  printf("%s: %d %s cells, hole of %d faces: perimeter %.9f (2 pi R = %.9f, the polygon's %.9f)\n", name, m->n_cells,
+         sl_cell_type_name(m->cell_type), n, len, perimeter, polygon);
   CHECK_MSG(fabs(len - perimeter) < 1e-5, "%s: hole perimeter %.9f, 2 pi R = %.9f", name, len, perimeter);
   CHECK_MSG(fabs(polygon - perimeter) > 1e-4, "%s: the polygon (%.9f) would pass too", name, polygon);
   CHECK_CLOSE(fe_hole_length(m, "hole"), len, 1e-12);
@@ -172,12 +171,13 @@ static void check_binary(void) {
 /* Triangles and quadrangles in one mesh: refused with the reason. */
 static void check_mixed(void) {
   /* a second surface, apart from the first, recombined into quadrangles */
-  const char *extra = "Point(10) = {0.3, -0.2, 0, h}; Point(11) = {0.7, -0.2, 0, h}; Point(12) = {0.7, 0.2, 0, h};\n"
-                      "Point(13) = {0.3, 0.2, 0, h};\n"
-                      "Line(9) = {10, 11}; Line(10) = {11, 12}; Line(11) = {12, 13}; Line(12) = {13, 10};\n"
-                      "Curve Loop(3) = {9, 10, 11, 12}; Plane Surface(2) = {3};\n"
-                      "Transfinite Surface{2}; Recombine Surface{2};\n"
-                      "Physical Curve(\"right\") = {9, 10, 11, 12}; Physical Surface(\"solid\") = {2};";
+  const char *extra =
+      "Point(10) = {0.3, -0.2, 0, h}; Point(11) = {0.7, -0.2, 0, h}; Point(12) = {0.7, 0.2, 0, h};\n"
+      "Point(13) = {0.3, 0.2, 0, h};\n"
+      "Line(9) = {10, 11}; Line(10) = {11, 12}; Line(11) = {12, 13}; Line(12) = {13, 10};\n"
+      "Curve Loop(3) = {9, 10, 11, 12}; Plane Surface(2) = {3};\n"
+      "Transfinite Surface{2}; Recombine Surface{2};\n"
+      "Physical Curve(\"right\") = {9, 10, 11, 12}; Physical Surface(\"solid\") = {2};";
   if (make("mixed", extra, "-order 1 -format msh41") != 0) {
     CHECK_MSG(0, "gmsh failed (mixed.log)");
     return;

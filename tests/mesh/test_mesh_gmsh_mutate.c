@@ -19,10 +19,8 @@ static unsigned next_rand(void) { /* xorshift64*, fixed seed: reproducible */
 static char *slurp(const char *file, size_t *len) {
   char path[1024];
   const char *src = getenv("SLUICE_SOURCE_DIR");
-  if (src)
-    snprintf(path, sizeof path, "%s/tests/mesh/data/%s", src, file);
-  else
-    snprintf(path, sizeof path, "%s/%s", SLUICE_MESH_DATA, file);
+  if (src) snprintf(path, sizeof path, "%s/tests/mesh/data/%s", src, file);
+  else snprintf(path, sizeof path, "%s/%s", SLUICE_MESH_DATA, file);
   FILE *f = fopen(path, "rb");
   if (!f) return NULL;
   char *buf = malloc(1 << 16);
@@ -71,7 +69,11 @@ static void mutate(const char *t, size_t len, char *out, size_t *olen) {
       break;
     default: { /* swap two lines */
       int b = (int)(next_rand() % (unsigned)nl);
-      if (b < a) { int s = a; a = b; b = s; }
+      if (b < a) {
+        int s = a;
+        a = b;
+        b = s;
+      }
       size_t x0 = st[a], x1 = a + 1 < nl ? st[a + 1] : len, y0 = st[b], y1 = b + 1 < nl ? st[b + 1] : len;
       if (a == b || x1 > y0) {
         memcpy(out, t, len);
@@ -90,9 +92,8 @@ static void mutate(const char *t, size_t len, char *out, size_t *olen) {
 }
 
 int main(void) {
-  const char *files[] = {"box_tri_22.msh", "box_tri_41.msh", "box_quad_22.msh", "box_quad_41.msh",
-                         "line_22.msh",    "line_41.msh",    "box_cw_41.msh",   "ring_p2_41.msh",
-                         "ring_p2_41_bin.msh"};
+  const char *files[] = {"box_tri_22.msh", "box_tri_41.msh", "box_quad_22.msh", "box_quad_41.msh",   "line_22.msh",
+                         "line_41.msh",    "box_cw_41.msh",  "ring_p2_41.msh",  "ring_p2_41_bin.msh"};
   static char out[1 << 17];
   for (size_t f = 0; f < sizeof files / sizeof *files; ++f) {
     size_t len = 0;

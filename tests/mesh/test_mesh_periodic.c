@@ -44,8 +44,7 @@ static void check_pairs(const sl_mesh *m, const sl_mesh_periodic *p, double sx, 
 }
 
 static void test_rectangle(sl_cell_type cell) {
-  sl_grid_opts o = {.cell_type = cell, .diagonal = SL_DIAGONAL_UNION_JACK,
-                    .grade_y = {SL_GRADE_SYMMETRIC, 3.0}};
+  sl_grid_opts o = {.cell_type = cell, .diagonal = SL_DIAGONAL_UNION_JACK, .grade_y = {SL_GRADE_SYMMETRIC, 3.0}};
   sl_mesh *m = NULL;
   sl_diag d = {{0}};
   CHECK(sl_mesh_rectangle(-1.0, 2.0, 0.5, 1.5, 6, 5, &o, &m, &d) == 0);
@@ -124,8 +123,8 @@ static void test_errors(void) {
   if (moved >= 0) {
     m->xy[2 * moved + 1] += 1e-6;
     CHECK(sl_mesh_check(m, &d) == 0);
-    expect_error(m, "left", "right", (const char *[]){"the node (1, 0.500001) of 'right' has no partner on 'left' at (0, 0.500001)"},
-                 1);
+    expect_error(m, "left", "right",
+                 (const char *[]){"the node (1, 0.500001) of 'right' has no partner on 'left' at (0, 0.500001)"}, 1);
     /* within the tolerance (1e-9 of the diagonal): accepted */
     m->xy[2 * moved + 1] = 0.5 + 1e-11;
     sl_mesh_periodic p;

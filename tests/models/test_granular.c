@@ -40,8 +40,8 @@ static void algebraic(void) {
     for (int b = 0; b < 2; ++b) {
       double dlog, A = l.mu0 * gd[a] * gd[a], th = sl_theta_algebraic(A, l.g0, X[b], &dlog);
       double res = A * sqrt(th) - l.g0 * pow(th, 1.5) - X[b] * th;
-      CHECK_MSG(fabs(res) < 1e-13 * A * sqrt(th), "gd %g, X %g: balance residual %.2e of the production", gd[a],
-                X[b], res / (A * sqrt(th)));
+      CHECK_MSG(fabs(res) < 1e-13 * A * sqrt(th), "gd %g, X %g: balance residual %.2e of the production", gd[a], X[b],
+                res / (A * sqrt(th)));
       if (b == 0) {
         CHECK_CLOSE(th, A / l.g0, 1e-15);
         CHECK_CLOSE(dlog, 1.0, 1e-14);
@@ -49,8 +49,10 @@ static void algebraic(void) {
         double h = 1e-4, up = sl_theta_algebraic(A * exp(2.0 * h), l.g0, X[b], NULL);
         double dn = sl_theta_algebraic(A * exp(-2.0 * h), l.g0, X[b], NULL);
         double fd = (0.5 * log(up) - 0.5 * log(dn)) / (2.0 * h);
-        CHECK_MSG(fabs(dlog - fd) < 1e-7 && dlog > 1.0 && dlog < 2.0, "gd %g: d ln sqrt(theta)/d ln gd %.10f, "
-                  "difference %.10f", gd[a], dlog, fd);
+        CHECK_MSG(fabs(dlog - fd) < 1e-7 && dlog > 1.0 && dlog < 2.0,
+                  "gd %g: d ln sqrt(theta)/d ln gd %.10f, "
+                  "difference %.10f",
+                  gd[a], dlog, fd);
       }
       /* the bisection of any closure: the same root */
       double lo, hi, mu, gam, tb;

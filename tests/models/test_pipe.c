@@ -18,8 +18,8 @@
 #include <string.h>
 
 #include "core/io/output.h"
-#include "sluice/sluice.h"
 #include "pipe_testing.h"
+#include "sluice/sluice.h"
 #include "testing.h"
 
 static char scene[4096];
@@ -111,8 +111,10 @@ static void up_and_down(void) {
     CHECK_MSG(0, "%s", e.msg);
     return;
   }
-  double tu = pipe_scalar("pipe_up.h5", "wall_shear_stress_fluid"), td = pipe_scalar("pipe_down.h5", "wall_shear_stress_fluid");
-  double mu_ = pipe_scalar("pipe_up.h5", "manometric_gradient"), md = pipe_scalar("pipe_down.h5", "manometric_gradient");
+  double tu = pipe_scalar("pipe_up.h5", "wall_shear_stress_fluid"),
+         td = pipe_scalar("pipe_down.h5", "wall_shear_stress_fluid");
+  double mu_ = pipe_scalar("pipe_up.h5", "manometric_gradient"),
+         md = pipe_scalar("pipe_down.h5", "manometric_gradient");
   double pu = pipe_scalar("pipe_up.h5", "pressure_gradient"), pd = pipe_scalar("pipe_down.h5", "pressure_gradient");
   printf("up-flow: -dP/dz %.3f, manometric %.4f Pa/m; down-flow: %.3f, %.4f; 4 tau_w/D = %.4f\n", pu, mu_, pd, md,
          4.0 * tu / D);

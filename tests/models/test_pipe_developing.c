@@ -33,8 +33,8 @@
 #include <string.h>
 
 #include "core/io/output.h"
-#include "sluice/sluice.h"
 #include "pipe_testing.h"
+#include "sluice/sluice.h"
 #include "testing.h"
 
 static char scene[4096], slurry_text[8192];
@@ -158,12 +158,13 @@ static void against_fully_developed(void) {
     double du, su, dk, sk, ua, uf, ka, kf;
     outlet_difference("pdev.h5", "pdev_fd.h5", "velocity_fluid", &du, &su, &ua, &uf);
     outlet_difference("pdev.h5", "pdev_fd.h5", "k", &dk, &sk, &ka, &kf);
-    printf("Re %.0e: outlet f %.6f, fully developed %.6f (%+.3f %%), Churchill %.6f (%+.2f %%); "
-           "|du_f|/V %.3f %%, |dk|/max k %.2f %%, centre line %.4f against %.4f m/s (%+.3f %%); excess head %.3f; "
-           "%g station iterations at most\n",
-           Re[k], fdv, ff, 100.0 * (fdv / ff - 1.0), fc, 100.0 * (fdv / fc - 1.0), 100.0 * du / V, 100.0 * dk / sk,
-           ua, uf, 100.0 * (ua / uf - 1.0), pipe_scalar("pdev.h5", "inlet_excess_head"),
-           pipe_scalar("pdev.h5", "station_iterations_max"));
+    printf(
+        "Re %.0e: outlet f %.6f, fully developed %.6f (%+.3f %%), Churchill %.6f (%+.2f %%); "
+        "|du_f|/V %.3f %%, |dk|/max k %.2f %%, centre line %.4f against %.4f m/s (%+.3f %%); excess head %.3f; "
+        "%g station iterations at most\n",
+        Re[k], fdv, ff, 100.0 * (fdv / ff - 1.0), fc, 100.0 * (fdv / fc - 1.0), 100.0 * du / V, 100.0 * dk / sk, ua, uf,
+        100.0 * (ua / uf - 1.0), pipe_scalar("pdev.h5", "inlet_excess_head"),
+        pipe_scalar("pdev.h5", "station_iterations_max"));
     CHECK_MSG(fabs(fdv / ff - 1.0) < 0.005, "Re %g: outlet f %.6f against the fully developed %.6f", Re[k], fdv, ff);
     CHECK_MSG(fabs(fdv / fc - 1.0) < 0.03, "Re %g: outlet f %.6f against Churchill's %.6f", Re[k], fdv, fc);
     CHECK_MSG(du < 0.005 * V, "Re %g: the outlet's u_f off the fully developed by %.3f %% of V", Re[k], 100.0 * du / V);
@@ -205,8 +206,8 @@ static void stations(void) {
 static void axial_cells(void) {
   char s[3][64];
   sets_at(1e5, s);
-  const char *a[] = {s[0], s[1], "pipe.length=4", NULL}, *b[] = {s[0], s[1], "pipe.length=4", "pipe.axial_cells=200",
-                                                                   NULL};
+  const char *a[] = {s[0], s[1], "pipe.length=4", NULL},
+             *b[] = {s[0], s[1], "pipe.length=4", "pipe.axial_cells=200", NULL};
   sluice_error e = {0, ""};
   if (run(a, "pdev50.h5", &e) || run(b, "pdev200.h5", &e)) {
     CHECK_MSG(0, "%s", e.msg);
@@ -214,8 +215,8 @@ static void axial_cells(void) {
   }
   double f50 = pipe_scalar("pdev50.h5", "friction_factor"), f200 = pipe_scalar("pdev200.h5", "friction_factor");
   double p50 = pipe_scalar("pdev50.h5", "pressure_drop"), p200 = pipe_scalar("pdev200.h5", "pressure_drop");
-  printf("50 and 200 axial cells: outlet f %.6f and %.6f (%+.3f %%); pressure drop %.1f and %.1f Pa (%+.3f %%)\n",
-         f50, f200, 100.0 * (f50 / f200 - 1.0), p50, p200, 100.0 * (p50 / p200 - 1.0));
+  printf("50 and 200 axial cells: outlet f %.6f and %.6f (%+.3f %%); pressure drop %.1f and %.1f Pa (%+.3f %%)\n", f50,
+         f200, 100.0 * (f50 / f200 - 1.0), p50, p200, 100.0 * (p50 / p200 - 1.0));
   CHECK_MSG(fabs(f50 / f200 - 1.0) < 0.002, "f %.6f on 50 axial cells, %.6f on 200", f50, f200);
   /* the march's convergence in z: the pressure drop on 25, 50, 100, 200 cells; backward differences in z are
      first order for a smooth solution, the inlet's jump (a boundary layer growing from z = 0) lowers it */
@@ -227,9 +228,10 @@ static void axial_cells(void) {
   }
   double p25 = pipe_scalar("pdev25.h5", "pressure_drop"), p100 = pipe_scalar("pdev100.h5", "pressure_drop");
   double r1 = (p50 - p25) / (p100 - p50), r2 = (p100 - p50) / (p200 - p100);
-  printf("pressure drop on 25/50/100/200 axial cells: %.2f %.2f %.2f %.2f Pa; the differences fall by %.3f and %.3f "
-         "(order %.2f, %.2f)\n",
-         p25, p50, p100, p200, r1, r2, log2(r1), log2(r2));
+  printf(
+      "pressure drop on 25/50/100/200 axial cells: %.2f %.2f %.2f %.2f Pa; the differences fall by %.3f and %.3f "
+      "(order %.2f, %.2f)\n",
+      p25, p50, p100, p200, r1, r2, log2(r1), log2(r2));
   CHECK_MSG(r1 > 1.4 && r1 < 2.2 && r2 > 1.4 && r2 < 2.2, "the march's differences fall by %.3f and %.3f", r1, r2);
 }
 
@@ -257,7 +259,8 @@ static void slurry(const char *name, const char *const *extra, double tol_grad, 
     return;
   }
   double ga = pipe_scalar("pdev_s.h5", "pressure_gradient"), gb = pipe_scalar("pdev_sfd.h5", "pressure_gradient");
-  double ta = pipe_scalar("pdev_s.h5", "wall_shear_stress_fluid"), tb = pipe_scalar("pdev_sfd.h5", "wall_shear_stress_fluid");
+  double ta = pipe_scalar("pdev_s.h5", "wall_shear_stress_fluid"),
+         tb = pipe_scalar("pdev_sfd.h5", "wall_shear_stress_fluid");
   double V = pipe_scalar("pdev_s.h5", "velocity_fluid_area_mean");
   double dphi, sphi, dus, sus, a0, b0;
   outlet_difference("pdev_s.h5", "pdev_sfd.h5", "phi", &dphi, &sphi, &a0, &b0);
@@ -283,13 +286,13 @@ static void slurry(const char *name, const char *const *extra, double tol_grad, 
     }
     cells_free(&ph);
   }
-  printf("%s developing (phi_in %.4g, outlet phi_mean %.5f): -dP/dz %.2f against %.2f Pa/m (%+.4f %%), tau_fw %.4f "
-         "against %.4f Pa (%+.4f %%), max |dphi| %.2e (phi up to %.3f), max |du_s| %.4f %% of %.3f m/s; solids flux "
-         "off the inlet's by %.2e at worst; %g station iterations at most\n",
-         name, strstr(slurry_text, "solids_fraction = ") ? atof(strstr(slurry_text, "solids_fraction = ") + 18) : NAN, pm,
-         ga, gb,
-         100.0 * (ga / gb - 1.0), ta, tb, 100.0 * (ta / tb - 1.0), dphi, sphi, 100.0 * dus / sus, sus,
-         worst, pipe_scalar("pdev_s.h5", "station_iterations_max"));
+  printf(
+      "%s developing (phi_in %.4g, outlet phi_mean %.5f): -dP/dz %.2f against %.2f Pa/m (%+.4f %%), tau_fw %.4f "
+      "against %.4f Pa (%+.4f %%), max |dphi| %.2e (phi up to %.3f), max |du_s| %.4f %% of %.3f m/s; solids flux "
+      "off the inlet's by %.2e at worst; %g station iterations at most\n",
+      name, strstr(slurry_text, "solids_fraction = ") ? atof(strstr(slurry_text, "solids_fraction = ") + 18) : NAN, pm,
+      ga, gb, 100.0 * (ga / gb - 1.0), ta, tb, 100.0 * (ta / tb - 1.0), dphi, sphi, 100.0 * dus / sus, sus, worst,
+      pipe_scalar("pdev_s.h5", "station_iterations_max"));
   (void)V;
   CHECK_MSG(fabs(ga / gb - 1.0) < tol_grad, "%s: -dP/dz %.6g against %.6g", name, ga, gb);
   CHECK_MSG(fabs(ta / tb - 1.0) < tol_tau, "%s: tau_fw %.6g against %.6g", name, ta, tb);
@@ -328,7 +331,8 @@ static void shipped_scene(void) {
   if (!rc) rc = run(none, "pdev_shipped_fd.h5", &e);
   CHECK_MSG(rc == 0, "%s: %s", path, e.msg);
   if (rc) return;
-  double fdv = pipe_scalar("pdev_shipped.h5", "friction_factor"), ff = pipe_scalar("pdev_shipped_fd.h5", "friction_factor");
+  double fdv = pipe_scalar("pdev_shipped.h5", "friction_factor"),
+         ff = pipe_scalar("pdev_shipped_fd.h5", "friction_factor");
   printf("configs/pipe_developing.ini: outlet f %.7f, pipe_water.ini %.7f (%+.4f %%)\n", fdv, ff,
          100.0 * (fdv / ff - 1.0));
   CHECK_MSG(fabs(fdv / ff - 1.0) < 0.005, "shipped developing pipe: outlet f %.7f against %.7f", fdv, ff);

@@ -46,8 +46,8 @@
 #include <string.h>
 
 #include "core/io/output.h"
-#include "sluice/sluice.h"
 #include "pipe_testing.h"
+#include "sluice/sluice.h"
 #include "testing.h"
 
 enum { MAX_ROWS = 128 };
@@ -59,7 +59,8 @@ typedef struct row {
 
 static row rows[MAX_ROWS];
 static int n_rows;
-static char scene_b[8192], scene_a[8192], scene_bt[8192], scene_btb[8192], scene_c[8192], scene_ct[8192], scene_cj[8192];
+static char scene_b[8192], scene_a[8192], scene_bt[8192], scene_btb[8192], scene_c[8192], scene_ct[8192],
+    scene_cj[8192];
 static const char *scene = scene_b;
 static long runs, failures;
 
@@ -98,17 +99,20 @@ static int load(void) {
   snprintf(scene_btb, sizeof scene_btb, "%.*sblend = huilin_gidaspow\n%s", (int)at, scene_bt, scene_bt + at);
   /* model C: Peirano & Leckner's solids viscosity with Tchen's k_s and k_fs, Simonin's modulation and dispersion,
      no kinetic theory (its viscosity replaced) */
-  snprintf(scene_c, sizeof scene_c, "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nmodulation = "
+  snprintf(scene_c, sizeof scene_c,
+           "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nmodulation = "
            "simonin\ndispersion = simonin%.*s\n",
            (int)(kp - scene_b), scene_b, (int)(gran - kp - strlen("kinetic_pressure = false")),
            kp + strlen("kinetic_pressure = false"));
   /* model C with k_s and k_fs transported (Krampa eqs 5.20, 5.23) */
-  snprintf(scene_ct, sizeof scene_ct, "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nmodulation = "
+  snprintf(scene_ct, sizeof scene_ct,
+           "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nmodulation = "
            "simonin\ndispersion = simonin\nsolids_turbulence = transported%.*s\n",
            (int)(kp - scene_b), scene_b, (int)(gran - kp - strlen("kinetic_pressure = false")),
            kp + strlen("kinetic_pressure = false"));
   /* model C with k_s and k_fs transported (Krampa eqs 5.20, 5.23) */
-  snprintf(scene_ct, sizeof scene_ct, "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nmodulation = "
+  snprintf(scene_ct, sizeof scene_ct,
+           "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nmodulation = "
            "simonin\ndispersion = simonin\nsolids_turbulence = transported%.*s\n",
            (int)(kp - scene_b), scene_b, (int)(gran - kp - strlen("kinetic_pressure = false")),
            kp + strlen("kinetic_pressure = false"));
@@ -117,7 +121,8 @@ static int load(void) {
     char *fs = strstr(scene_ct, "solids_wall = free_slip");
     CHECK_MSG(fs != NULL, "vertical_pipe.ini has no solids_wall = free_slip");
     if (!fs) return 1;
-    snprintf(scene_cj, sizeof scene_cj, "%.*ssolids_wall = wall_stress%s\n[closure.wall_stress.solids]\nmodel = "
+    snprintf(scene_cj, sizeof scene_cj,
+             "%.*ssolids_wall = wall_stress%s\n[closure.wall_stress.solids]\nmodel = "
              "johnson_jackson\n",
              (int)(fs - scene_ct), scene_ct, fs + strlen("solids_wall = free_slip"));
   }
@@ -310,15 +315,17 @@ int main(void) {
                "krampa_tables_c_predicted_model_c_transported.csv", 0, 0, &ks_c, sc);
   const double mean_avg[7] = {-4.3, -64.5, -58.6, -48.9, -44.4, -35.8, -25.2};
   for (int k = 0; k < 7; ++k) {
-    CHECK_MSG(fabs(100.0 * sc[k].mean_avg - mean_avg[k]) < 1.0, "model C transported, table %d: mean error %.2f %%, "
-              "recorded %.1f %%", k + 1, 100.0 * sc[k].mean_avg, mean_avg[k]);
-    if (k >= 4) CHECK_MSG(sc[k].n_ud_ok == sc[k].n, "table %d: %d of %d up and down within 10 %%", k + 1,
-                          sc[k].n_ud_ok, sc[k].n);
+    CHECK_MSG(fabs(100.0 * sc[k].mean_avg - mean_avg[k]) < 1.0,
+              "model C transported, table %d: mean error %.2f %%, "
+              "recorded %.1f %%",
+              k + 1, 100.0 * sc[k].mean_avg, mean_avg[k]);
+    if (k >= 4)
+      CHECK_MSG(sc[k].n_ud_ok == sc[k].n, "table %d: %d of %d up and down within 10 %%", k + 1, sc[k].n_ud_ok, sc[k].n);
   }
   /* the same with Johnson & Jackson's solids wall (Krampa's model C wall), the roughness above (the 5 % table
      cannot calibrate one: its gradients are above the data with the smoothest wall); printed only */
   scene = scene_cj;
-  model_scored("model C transported, Johnson & Jackson's solids wall", "krampa_tables_c_predicted_model_c_jj.csv", 0,
-               0, &ks_c, NULL);
+  model_scored("model C transported, Johnson & Jackson's solids wall", "krampa_tables_c_predicted_model_c_jj.csv", 0, 0,
+               &ks_c, NULL);
   return sl_test_summary();
 }

@@ -43,7 +43,9 @@ static int bench_open(bench *b, int n, double e, double K, double slip, double s
   memset(b, 0, sizeof *b);
   pipe *p = &b->p;
   sl_diag d = {{0}};
-  b->cfg = (pipe_config){.restitution = e, .crossing_trajectory = 0.45, .covariance_schmidt = 1.0,
+  b->cfg = (pipe_config){.restitution = e,
+                         .crossing_trajectory = 0.45,
+                         .covariance_schmidt = 1.0,
                          .solids_turbulence = PIPE_SOLIDS_TURBULENCE_TRANSPORTED};
   p->cfg = &b->cfg, p->n = n, p->R = 0.0266, p->rho_f = 997.56, p->rho_s = 2500.0, p->d_p = 5e-4;
   p->phi_max = 0.63, p->c_mu = 0.09, p->relax = 1.0, p->iterations = 1, p->two_phase = 1;
@@ -97,7 +99,7 @@ static void local_balance(const bench *b, double *ks, double *kfs) {
   const double cs = 0.25, m = cs * p->rho_s, K = p->K[0], e = b->cfg.restitution, k = p->k[0];
   const double s2 = (p->uf[0] - p->us[0]) * (p->uf[0] - p->us[0]);
   const double tfs = 0.09 * 1.5 * k / p->eps[0] / sqrt(1.0 + 0.45 * 1.5 * s2 / k); /* eq 4.61 */
-  const double S = m / (0.75 * p->rho_f), g0 = pow(1.0 - cs / 0.63, -2.5 * 0.63);    /* eq 4.91 */
+  const double S = m / (0.75 * p->rho_f), g0 = pow(1.0 - cs / 0.63, -2.5 * 0.63);  /* eq 4.91 */
   double lo = 1e-12, hi = k, f = 0.0;
   for (int it = 0; it < 200; ++it) {
     double s = 0.5 * (lo + hi);
@@ -123,8 +125,8 @@ int main(void) {
     double ch = bench_converge(&b, 400), ks, kfs;
     pipe_ksfs_equilibrium(&b.p, 0, &ks, &kfs);
     double eks = worst_rel(b.p.ks, ks, 20), ekfs = worst_rel(b.p.kfs, kfs, 20);
-    printf("homogeneous, e = 1: k_s %.15g (Tchen %.15g, %.1e), k_fs %.15g (%.15g, %.1e); last change %.1e\n",
-           b.p.ks[0], ks, eks, b.p.kfs[0], kfs, ekfs, ch);
+    printf("homogeneous, e = 1: k_s %.15g (Tchen %.15g, %.1e), k_fs %.15g (%.15g, %.1e); last change %.1e\n", b.p.ks[0],
+           ks, eks, b.p.kfs[0], kfs, ekfs, ch);
     CHECK_MSG(eks < 1e-13 && ekfs < 1e-13, "Tchen's equilibrium: k_s off by %.2e, k_fs by %.2e", eks, ekfs);
     bench_close(&b);
   }
@@ -134,9 +136,10 @@ int main(void) {
     local_balance(&b, &ks, &kfs);
     pipe_ksfs_equilibrium(&b.p, 0, &ks_t, &kfs_t);
     double eks = worst_rel(b.p.ks, ks, 20), ekfs = worst_rel(b.p.kfs, kfs, 20);
-    printf("homogeneous, e = 0.9: k_s %.12g (local balance %.12g, %.1e; Tchen's %.6g), k_fs %.12g (%.12g, %.1e); "
-           "last change %.1e\n",
-           b.p.ks[0], ks, eks, ks_t, b.p.kfs[0], kfs, ekfs, ch);
+    printf(
+        "homogeneous, e = 0.9: k_s %.12g (local balance %.12g, %.1e; Tchen's %.6g), k_fs %.12g (%.12g, %.1e); "
+        "last change %.1e\n",
+        b.p.ks[0], ks, eks, ks_t, b.p.kfs[0], kfs, ekfs, ch);
     CHECK_MSG(eks < 1e-10 && ekfs < 1e-10, "the local balance: k_s off by %.2e, k_fs by %.2e", eks, ekfs);
     CHECK_MSG(ks < 0.5 * kfs, "the collisions leave k_s %.6g >= k_fs/2 = %.6g", ks, 0.5 * kfs);
     bench_close(&b);
@@ -163,21 +166,27 @@ int main(void) {
   for (int c = 0; c < 4; ++c) {
     char nc[64];
     snprintf(nc, sizeof nc, "pipe.cells=%d", cells[c]);
-    const char *sets[] = {"pipe.solids_viscosity=peirano_leckner", "pipe.modulation=simonin", "pipe.dispersion=simonin",
-                          "pipe.solids_turbulence=transported", nc, NULL};
+    const char *sets[] = {"pipe.solids_viscosity=peirano_leckner",
+                          "pipe.modulation=simonin",
+                          "pipe.dispersion=simonin",
+                          "pipe.solids_turbulence=transported",
+                          nc,
+                          NULL};
     int rc = pipe_run_text(model_c, "vertical_pipe.ini", sets, "pipe_ksfs.h5", &err);
     CHECK_MSG(rc == 0, "model C transported on %d cells: %s", cells[c], err.msg);
     if (rc) return sl_test_summary();
     G[c] = pipe_scalar("pipe_ksfs.h5", "manometric_gradient");
-    double P = pipe_scalar("pipe_ksfs.h5", "pressure_gradient"), tf = pipe_scalar("pipe_ksfs.h5", "wall_shear_stress_fluid");
+    double P = pipe_scalar("pipe_ksfs.h5", "pressure_gradient"),
+           tf = pipe_scalar("pipe_ksfs.h5", "wall_shear_stress_fluid");
     double ts = pipe_scalar("pipe_ksfs.h5", "wall_shear_stress_solid"), bal = 4.0 * (tf + ts) / 0.0532 + rho_m * 9.81;
-    printf("%3d cells: manometric gradient %.4f Pa/m, -dP/dz %.4f against the mixture's momentum %.4f (%.1e), "
-           "%.0f iterations\n",
-           cells[c], G[c], P, bal, P / bal - 1.0, pipe_scalar("pipe_ksfs.h5", "iterations"));
+    printf(
+        "%3d cells: manometric gradient %.4f Pa/m, -dP/dz %.4f against the mixture's momentum %.4f (%.1e), "
+        "%.0f iterations\n",
+        cells[c], G[c], P, bal, P / bal - 1.0, pipe_scalar("pipe_ksfs.h5", "iterations"));
     CHECK_MSG(fabs(P / bal - 1.0) < 1e-8, "-dP/dz %.9g against 4 tau_w/D + rho_m g %.9g", P, bal);
     if (c == 1) {
-      const char *eq[] = {"pipe.solids_viscosity=peirano_leckner", "pipe.modulation=simonin",
-                          "pipe.dispersion=simonin", NULL};
+      const char *eq[] = {"pipe.solids_viscosity=peirano_leckner", "pipe.modulation=simonin", "pipe.dispersion=simonin",
+                          NULL};
       rc = pipe_run_text(model_c, "vertical_pipe.ini", eq, "pipe_ksfs_eq.h5", &err);
       CHECK_MSG(rc == 0, "model C with Tchen's k_s, k_fs: %s", err.msg);
       if (!rc) Geq = pipe_scalar("pipe_ksfs_eq.h5", "manometric_gradient");
@@ -243,10 +252,12 @@ int main(void) {
     if (!rc) {
       double P = pipe_scalar("pipe_ksfs_jj.h5", "pressure_gradient");
       double tf = pipe_scalar("pipe_ksfs_jj.h5", "wall_shear_stress_fluid");
-      double ts = pipe_scalar("pipe_ksfs_jj.h5", "wall_shear_stress_solid"), bal = 4.0 * (tf + ts) / 0.0532 + rho_m * 9.81;
-      printf("Johnson-Jackson walls: manometric %.2f Pa/m (measured 5524), tau_fw %.3f, tau_sw %.3f Pa; -dP/dz against "
-             "the mixture's momentum %.1e\n",
-             pipe_scalar("pipe_ksfs_jj.h5", "manometric_gradient"), tf, ts, P / bal - 1.0);
+      double ts = pipe_scalar("pipe_ksfs_jj.h5", "wall_shear_stress_solid"),
+             bal = 4.0 * (tf + ts) / 0.0532 + rho_m * 9.81;
+      printf(
+          "Johnson-Jackson walls: manometric %.2f Pa/m (measured 5524), tau_fw %.3f, tau_sw %.3f Pa; -dP/dz against "
+          "the mixture's momentum %.1e\n",
+          pipe_scalar("pipe_ksfs_jj.h5", "manometric_gradient"), tf, ts, P / bal - 1.0);
       CHECK_MSG(fabs(P / bal - 1.0) < 1e-8, "-dP/dz %.9g against %.9g", P, bal);
       CHECK_MSG(ts > 0.0, "tau_sw %.6g: the wall holds no solids", ts);
     }
@@ -257,8 +268,7 @@ int main(void) {
   const char *bad1[] = {"pipe.solids_turbulence=transported", NULL};
   int rc = pipe_run_text(model_c, "vertical_pipe.ini", bad1, "pipe_ksfs_bad.h5", &err);
   printf("transported without peirano_leckner: %d, %s\n", rc, err.msg);
-  CHECK_MSG(rc == 2 && strstr(err.msg, "did you mean") && strstr(err.msg, "peirano_leckner"), "rc %d: %s", rc,
-            err.msg);
+  CHECK_MSG(rc == 2 && strstr(err.msg, "did you mean") && strstr(err.msg, "peirano_leckner"), "rc %d: %s", rc, err.msg);
   const char *bad2[] = {"pipe.solids_viscosity=peirano_leckner", "pipe.solids_turbulence=transport", NULL};
   rc = pipe_run_text(model_c, "vertical_pipe.ini", bad2, "pipe_ksfs_bad.h5", &err);
   printf("solids_turbulence = transport: %d, %s\n", rc, err.msg);

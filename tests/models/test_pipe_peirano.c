@@ -20,8 +20,17 @@
 static const double PI = 3.14159265358979323846;
 
 int main(void) {
-  pipe_pl_point q = {.phi = 1e-12, .k = 0.02, .eps = 0.5, .slip2 = 0.0, .K = 1e30, .rho_s = 2500.0, .d_p = 5e-4,
-                     .phi_max = 0.63, .restitution = 0.9, .c_mu = 0.09, .c_beta = 0.45};
+  pipe_pl_point q = {.phi = 1e-12,
+                     .k = 0.02,
+                     .eps = 0.5,
+                     .slip2 = 0.0,
+                     .K = 1e30,
+                     .rho_s = 2500.0,
+                     .d_p = 5e-4,
+                     .phi_max = 0.63,
+                     .restitution = 0.9,
+                     .c_mu = 0.09,
+                     .c_beta = 0.45};
   /* fine particles: t_p = c_s rho_s/K -> 0 */
   q.phi = 1e-6, q.K = q.phi * q.rho_s / 1e-12;
   double st, nu = pipe_peirano_leckner(&q, &st), nut = q.c_mu * q.k * q.k / q.eps;
@@ -40,9 +49,9 @@ int main(void) {
   const double e = q.restitution, cs = q.phi, d = q.d_p;
   tfs = q.c_mu * 1.5 * q.k / q.eps / sqrt(1.0 + q.c_beta * 1.5 * q.slip2 / q.k), tp = cs * q.rho_s / q.K;
   er = tfs / tp, kfs = 2.0 * q.k * er / (1.0 + er), ks = q.k * er / (1.0 + er);
-  double g0 = pow(1.0 - cs / q.phi_max, -2.5 * q.phi_max);                     /* 4.91 */
-  double A = 0.4 * (1.0 + e) * (3.0 * e - 1.0), B = 0.2 * (1.0 + e) * (3.0 - e); /* 5.18 */
-  double tc = sqrt(PI) / (24.0 * cs * g0) * d * sqrt(3.0 / (2.0 * ks));          /* 5.19 */
+  double g0 = pow(1.0 - cs / q.phi_max, -2.5 * q.phi_max);                                        /* 4.91 */
+  double A = 0.4 * (1.0 + e) * (3.0 * e - 1.0), B = 0.2 * (1.0 + e) * (3.0 - e);                  /* 5.18 */
+  double tc = sqrt(PI) / (24.0 * cs * g0) * d * sqrt(3.0 / (2.0 * ks));                           /* 5.19 */
   double nst = (2.0 / 3.0) * ((tfs / tp) * kfs + (1.0 + cs * g0 * A) * ks) / (2.0 / tp + B / tc); /* 5.17 / rho_s */
   double nsc = (8.0 / 5.0) * cs * g0 * 0.5 * (1.0 + e) * (nst + d * sqrt(2.0 * ks / (3.0 * PI))); /* 5.16 */
   nu = pipe_peirano_leckner(&q, &st);
@@ -65,12 +74,15 @@ int main(void) {
   int rc = pipe_run_text(model_c, "vertical_pipe.ini", sets, "pipe_pl.h5", &err);
   CHECK_MSG(rc == 0, "model C's solids viscosity: %s", err.msg);
   if (!rc) {
-    double G = pipe_scalar("pipe_pl.h5", "pressure_gradient"), tf = pipe_scalar("pipe_pl.h5", "wall_shear_stress_fluid");
-    double ts = pipe_scalar("pipe_pl.h5", "wall_shear_stress_solid"), rho_f = 997.56, rho_m = 0.25 * 2500.0 + 0.75 * rho_f;
+    double G = pipe_scalar("pipe_pl.h5", "pressure_gradient"),
+           tf = pipe_scalar("pipe_pl.h5", "wall_shear_stress_fluid");
+    double ts = pipe_scalar("pipe_pl.h5", "wall_shear_stress_solid"), rho_f = 997.56,
+           rho_m = 0.25 * 2500.0 + 0.75 * rho_f;
     double bal = 4.0 * (tf + ts) / 0.0532 + rho_m * 9.81;
-    printf("vertical_pipe.ini, solids_viscosity = peirano_leckner: -dP/dz %.3f Pa/m, the mixture's momentum %.3f "
-           "(%.2e)\n",
-           G, bal, G / bal - 1.0);
+    printf(
+        "vertical_pipe.ini, solids_viscosity = peirano_leckner: -dP/dz %.3f Pa/m, the mixture's momentum %.3f "
+        "(%.2e)\n",
+        G, bal, G / bal - 1.0);
     CHECK_MSG(fabs(G / bal - 1.0) < 1e-8, "-dP/dz %.9g against 4 tau_w/D + rho_m g %.9g", G, bal);
   }
   rc = pipe_run_text(text, "vertical_pipe.ini", sets, "pipe_pl_bad.h5", &err);

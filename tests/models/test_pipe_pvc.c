@@ -27,8 +27,8 @@
 #include <string.h>
 
 #include "core/io/output.h"
-#include "sluice/sluice.h"
 #include "pipe_testing.h"
+#include "sluice/sluice.h"
 #include "testing.h"
 
 enum { MAX_ROWS = 64 };
@@ -119,7 +119,8 @@ static int run_row(row *r, int kinetic) {
   r->m_csw = pipe_scalar(o, "phi_wall"), r->m_usw = pipe_scalar(o, "velocity_solid_wall");
   r->m_tfw = pipe_scalar(o, "wall_shear_stress_fluid"), r->m_tsw = pipe_scalar(o, "wall_shear_stress_solid");
   r->m_lam = pipe_scalar(o, "slip_length"), r->m_im = pipe_scalar(o, "i_m");
-  double phi = pipe_scalar(o, "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f, dp = pipe_scalar(o, "pressure_gradient");
+  double phi = pipe_scalar(o, "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f,
+         dp = pipe_scalar(o, "pressure_gradient");
   double tau = r->m_tfw + r->m_tsw, bal = 4.0 * tau / D + rho_m * g;
   CHECK_MSG(fabs(dp / bal - 1.0) < 1e-6, "%s %s U_m %.2f: -dP/dz %.9g against %.9g", r->table, r->bc, r->um, dp, bal);
   CHECK_MSG(fabs(r->m_im / (4.0 * tau / (rho_f * g * D)) - 1.0) < 1e-12, "%s %s: i_m %.9g", r->table, r->bc, r->m_im);

@@ -41,8 +41,8 @@
 #include <string.h>
 
 #include "core/io/output.h"
-#include "sluice/sluice.h"
 #include "pipe_testing.h"
+#include "sluice/sluice.h"
 #include "testing.h"
 
 static char scene[8192];
@@ -130,8 +130,8 @@ static void balances(void) {
       continue;
     }
     double gz = k ? g : -g, phi = pipe_scalar("pipe_slurry.h5", "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f;
-    double tau =
-        pipe_scalar("pipe_slurry.h5", "wall_shear_stress_fluid") + pipe_scalar("pipe_slurry.h5", "wall_shear_stress_solid");
+    double tau = pipe_scalar("pipe_slurry.h5", "wall_shear_stress_fluid") +
+                 pipe_scalar("pipe_slurry.h5", "wall_shear_stress_solid");
     double dp = pipe_scalar("pipe_slurry.h5", "pressure_gradient"), bal = 4.0 * tau / D - rho_m * gz;
     profile pf, ps, pp;
     if (read_profile("pipe_slurry.h5", "velocity_fluid", &pf) ||
@@ -213,7 +213,8 @@ static void no_slip_bridge(void) {
       read_profile("pipe_ns.h5", "phi", &pp))
     return;
   int w = pf.n - 1;
-  double tf = pipe_scalar("pipe_ns.h5", "wall_shear_stress_fluid"), ts = pipe_scalar("pipe_ns.h5", "wall_shear_stress_solid");
+  double tf = pipe_scalar("pipe_ns.h5", "wall_shear_stress_fluid"),
+         ts = pipe_scalar("pipe_ns.h5", "wall_shear_stress_solid");
   double ratio = pp.v[w] * rho_s / rho_f * ps.v[w] / pf.v[w];
   printf("no-slip solids: tau_fw %.4f Pa, tau_sw %.4f Pa, ratio %.6f against (c_s rho_s/rho_f) u_s/u_f %.6f\n", tf, ts,
          ts / tf, ratio);
@@ -292,8 +293,8 @@ static void lprobe_terms(void) {
   }
   double base = pipe_scalar("pipe_lprobe_terms.h5", "velocity_solid_area_mean");
   double uf = pipe_scalar("pipe_lprobe_terms.h5", "velocity_fluid_area_mean");
-  printf("L-probe V = 2: mean u_s %.4f m/s = V - c_f <slip>, c_f <slip> = %.4f m/s; the probe's 1.55 needs %.3f\n", base,
-         2.0 - base, 2.0 - 1.55);
+  printf("L-probe V = 2: mean u_s %.4f m/s = V - c_f <slip>, c_f <slip> = %.4f m/s; the probe's 1.55 needs %.3f\n",
+         base, 2.0 - base, 2.0 - 1.55);
   CHECK_MSG(fabs(0.75 * uf + 0.25 * base - 2.0) < 1e-9, "c_f uf + c_s us = %.12g", 0.75 * uf + 0.25 * base);
   for (size_t k = 0; k < sizeof variants / sizeof variants[0]; ++k) {
     const char *sets[6] = {"pipe.bulk_velocity=2", "flow.gravity=-9.81", variants[k][0], variants[k][1], NULL};
@@ -347,7 +348,8 @@ static void stability(void) {
     }
     double it = pipe_scalar("pipe_stab.h5", "iterations"), dp = pipe_scalar("pipe_stab.h5", "pressure_gradient");
     double phi = pipe_scalar("pipe_stab.h5", "phi_mean"), rho_m = phi * cases[k].rho_s + (1.0 - phi) * rho_f;
-    double tau = pipe_scalar("pipe_stab.h5", "wall_shear_stress_fluid") + pipe_scalar("pipe_stab.h5", "wall_shear_stress_solid");
+    double tau =
+        pipe_scalar("pipe_stab.h5", "wall_shear_stress_fluid") + pipe_scalar("pipe_stab.h5", "wall_shear_stress_solid");
     double bal = 4.0 * tau / D - rho_m * cases[k].gz;
     printf("%s: converged in %.0f iterations, -dP/dz %.2f Pa/m (balance %.1e)\n", cases[k].name, it, dp,
            dp / bal - 1.0);
@@ -437,7 +439,8 @@ static void theta_transport(void) {
       continue;
     }
     double phi = pipe_scalar("pipe_tt.h5", "phi_mean"), rho_m = phi * rho_s + (1.0 - phi) * rho_f;
-    double tau = pipe_scalar("pipe_tt.h5", "wall_shear_stress_fluid") + pipe_scalar("pipe_tt.h5", "wall_shear_stress_solid");
+    double tau =
+        pipe_scalar("pipe_tt.h5", "wall_shear_stress_fluid") + pipe_scalar("pipe_tt.h5", "wall_shear_stress_solid");
     double dp = pipe_scalar("pipe_tt.h5", "pressure_gradient"), bal = 4.0 * tau / D - rho_m * cases[k].gz;
     double pw = pipe_scalar("pipe_tt.h5", "phi_wall");
     printf("transported theta, %s: %.0f iterations, phi_wall %.4f (mean %.2f), manometric %.2f Pa/m (balance %.1e)\n",
@@ -480,7 +483,8 @@ static void modulation(void) {
   }
   int same = 1, lower = 1;
   for (int i = 0; i < k0.n; ++i) same &= k0.v[i] == kd.v[i], lower &= k1.v[i] < k0.v[i];
-  double t0 = pipe_scalar("pipe_mod1.h5", "wall_shear_stress_fluid"), t1 = pipe_scalar("pipe_mod2.h5", "wall_shear_stress_fluid");
+  double t0 = pipe_scalar("pipe_mod1.h5", "wall_shear_stress_fluid"),
+         t1 = pipe_scalar("pipe_mod2.h5", "wall_shear_stress_fluid");
   printf("modulation: k on the axis %.4g -> %.4g m2/s2, tau_fw %.4f -> %.4f Pa, manometric %.1f -> %.1f Pa/m\n",
          k0.v[0], k1.v[0], t0, t1, pipe_scalar("pipe_mod1.h5", "manometric_gradient"),
          pipe_scalar("pipe_mod2.h5", "manometric_gradient"));

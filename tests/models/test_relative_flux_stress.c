@@ -29,11 +29,11 @@
 #include <string.h>
 
 #include "core/assembly/flow.h"
-#include "sluice/sluice.h"
 #include "core/io/output.h"
 #include "core/mesh/mesh.h"
 #include "core/models/mixture/mixture.h"
 #include "core/plugin/closure_ini.h"
+#include "sluice/sluice.h"
 #include "testing.h"
 
 /* ---- the weak form against the divergence ------------------------------------ */
@@ -260,12 +260,15 @@ static void column_case(const column *c) {
     if (y > 1.0 - 1e-12) jump_top = p[1][i] - p[0][i];
   }
   double jump = jump_bottom - jump_top;
-  printf("%-12s column: |u| <= %.1e m/s (settling velocity %.4f m/s); p changes by %.10f Pa across the "
-         "interface (-tau = %.10f), p - p0 + T_h constant within %.1e Pa\n",
-         c->name, umax, us, jump, -tau, worst);
+  printf(
+      "%-12s column: |u| <= %.1e m/s (settling velocity %.4f m/s); p changes by %.10f Pa across the "
+      "interface (-tau = %.10f), p - p0 + T_h constant within %.1e Pa\n",
+      c->name, umax, us, jump, -tau, worst);
   CHECK_MSG(umax <= 1e-12 * us, "%s column: the stress set the mixture moving: |u| = %.3g", c->name, umax);
-  CHECK_MSG(fabs(jump + tau) <= 1e-10 * tau, "%s column: the pressure changes by %.12g across the suspension, "
-                                             "-tau = %.12g", c->name, jump, -tau);
+  CHECK_MSG(fabs(jump + tau) <= 1e-10 * tau,
+            "%s column: the pressure changes by %.12g across the suspension, "
+            "-tau = %.12g",
+            c->name, jump, -tau);
   CHECK_MSG(worst <= 1e-10 * tau, "%s column: p - p0 + T_h varies by %.3g", c->name, worst);
   sl_output_mesh_free(&m);
   free(p[0]), free(p[1]);

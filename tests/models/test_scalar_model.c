@@ -60,8 +60,7 @@ static double *values(const char *out, double *xc, double *yc, int *n) {
 
 /* A scene: the mesh's keys, the [time] keys, the other sections. */
 static const char *box(char *buf, size_t len, const char *mesh, const char *time, const char *body) {
-  snprintf(buf, len, "[scene]\nmodel = scalar\n[mesh]\ngenerator = rectangle\n%s\n[time]\n%s\n%s\n", mesh, time,
-           body);
+  snprintf(buf, len, "[scene]\nmodel = scalar\n[mesh]\ngenerator = rectangle\n%s\n[time]\n%s\n%s\n", mesh, time, body);
   return buf;
 }
 
@@ -135,8 +134,8 @@ static double layer_error(int n) {
 static void boundary_layer(void) {
   double e1 = layer_error(40), e2 = layer_error(80), e3 = layer_error(160);
   double p1 = log2(e1 / e2), p2 = log2(e2 / e3);
-  printf("convection-diffusion layer (Pe = 10), 40/80/160 cells: L1 errors %.3e %.3e %.3e, orders %.2f %.2f\n", e1,
-         e2, e3, p1, p2);
+  printf("convection-diffusion layer (Pe = 10), 40/80/160 cells: L1 errors %.3e %.3e %.3e, orders %.2f %.2f\n", e1, e2,
+         e3, p1, p2);
   CHECK_MSG(p2 > 0.85 && p2 < 1.15 && e3 < 1e-2, "first order (upwind): %.3f %.3f", p1, p2);
 }
 
@@ -192,21 +191,23 @@ static void loop_services(void) {
   sluice_error e = {0, ""};
   sluice_open_opts oo = {.timing = 1};
   progress_log log = {0, 0, -1.0, 1};
-  sluice_run_opts ro = {.output = "scalar_services.h5", .version = "test", .progress = log_progress,
-                        .progress_user = &log};
+  sluice_run_opts ro = {
+      .output = "scalar_services.h5", .version = "test", .progress = log_progress, .progress_user = &log};
   sluice_summary sum;
   int rc = sluice_open_text(text, strlen(text), "scalar.ini", &oo, &s, &e);
   if (!rc) rc = sluice_run(s, &ro, &sum, &e);
   CHECK_MSG(rc == 0, "%s", e.msg);
   sluice_close(s);
   if (rc) return;
-  printf("time loop services: %ld progress calls for %ld steps (last t %.3g), %ld linear solves, %ld "
-         "factorisations, %ld output times\n",
-         log.calls, sum.steps, log.last_t, sum.linear.n_solves, sum.linear.n_numeric, sum.output_times);
+  printf(
+      "time loop services: %ld progress calls for %ld steps (last t %.3g), %ld linear solves, %ld "
+      "factorisations, %ld output times\n",
+      log.calls, sum.steps, log.last_t, sum.linear.n_solves, sum.linear.n_numeric, sum.output_times);
   CHECK_MSG(log.calls == 10 && sum.steps == 10 && log.monotone && fabs(log.last_t - 1.0) < 1e-12,
             "progress once per accepted step: %ld calls, %ld steps, last t %.17g", log.calls, sum.steps, log.last_t);
-  CHECK_MSG(sum.linear.n_solves >= sum.steps && sum.linear.n_numeric >= 1 && sum.linear.n_numeric <= sum.linear.n_solves,
-            "profile counts: %ld solves, %ld factorisations", sum.linear.n_solves, sum.linear.n_numeric);
+  CHECK_MSG(
+      sum.linear.n_solves >= sum.steps && sum.linear.n_numeric >= 1 && sum.linear.n_numeric <= sum.linear.n_solves,
+      "profile counts: %ld solves, %ld factorisations", sum.linear.n_solves, sum.linear.n_numeric);
   CHECK_MSG(sum.output_times == 6, "outputs at t = 0, 0.2, ..., 1: %ld", sum.output_times);
 }
 

@@ -231,11 +231,22 @@ static int bad_evaluate(const void *state, const sl_eval_args *args) {
   }
   return SL_OK;
 }
-static const sl_closure_desc bad_desc = {
-    SL_CLOSURE_DESC_HEADER, .kind = SL_KIND_SOLIDS_PRESSURE, .name = "bad_default", .version = "0", .summary = "s",
-    .formula = "f", .reference = "r", .validity = "v", .n_params = 1, .params = bad_param_table,
-    .params_size = sizeof(bad_params), .n_in = 1, .in = bad_inputs, .n_out = 1, .out = bad_outputs,
-    .evaluate = bad_evaluate};
+static const sl_closure_desc bad_desc = {SL_CLOSURE_DESC_HEADER,
+                                         .kind = SL_KIND_SOLIDS_PRESSURE,
+                                         .name = "bad_default",
+                                         .version = "0",
+                                         .summary = "s",
+                                         .formula = "f",
+                                         .reference = "r",
+                                         .validity = "v",
+                                         .n_params = 1,
+                                         .params = bad_param_table,
+                                         .params_size = sizeof(bad_params),
+                                         .n_in = 1,
+                                         .in = bad_inputs,
+                                         .n_out = 1,
+                                         .out = bad_outputs,
+                                         .evaluate = bad_evaluate};
 
 static void test_battery_rechecks_schema(void) {
   sl_library lib = {.path = "(in the test program)"};

@@ -25,13 +25,22 @@ static int percent_sum(const char *s) {
 
 static void test_summary(void) {
   char buf[512];
-  sl_run_summary s = {.steps = 120, .rejected_steps = 3, .nonlinear_iterations = 410, .nonlinear_name = "Newton",
-                      .wall_seconds = 12.5, .cpu_seconds = 12.3, .assembly = 1.2, .factorisation = 8.1, .solve = 1.9,
-                      .output = 0.6, .step_limit = "error estimate"};
+  sl_run_summary s = {.steps = 120,
+                      .rejected_steps = 3,
+                      .nonlinear_iterations = 410,
+                      .nonlinear_name = "Newton",
+                      .wall_seconds = 12.5,
+                      .cpu_seconds = 12.3,
+                      .assembly = 1.2,
+                      .factorisation = 8.1,
+                      .solve = 1.9,
+                      .output = 0.6,
+                      .step_limit = "error estimate"};
   sl_run_summary_format(&s, buf, sizeof buf);
-  CHECK_MSG(strcmp(buf, "sluice: 120 steps (3 rejected), 410 Newton iterations; CPU 12.3 s, wall 12.5 s (wall: "
-                        "assembly 1.2 s (9 %), factorisation 8.1 s (65 %), solve 1.9 s (15 %), output 0.6 s (5 %), "
-                        "other 0.7 s (6 %)); step limited by error estimate") == 0,
+  CHECK_MSG(strcmp(buf,
+                   "sluice: 120 steps (3 rejected), 410 Newton iterations; CPU 12.3 s, wall 12.5 s (wall: "
+                   "assembly 1.2 s (9 %), factorisation 8.1 s (65 %), solve 1.9 s (15 %), output 0.6 s (5 %), "
+                   "other 0.7 s (6 %)); step limited by error estimate") == 0,
             "got: %s", buf);
   printf("%s\n", buf);
 
@@ -44,8 +53,12 @@ static void test_summary(void) {
       r = r * 1103515245u + 12345u;
       v[i] = ((r >> 8) & 0xffff) / 6553.5 * (i == 1 ? 10.0 : 1.0);
     }
-    sl_run_summary t = {.steps = k, .wall_seconds = v[0], .assembly = v[1], .factorisation = k % 3 ? v[2] : 0.0,
-                        .solve = v[3], .output = k % 5 ? v[4] : 0.0};
+    sl_run_summary t = {.steps = k,
+                        .wall_seconds = v[0],
+                        .assembly = v[1],
+                        .factorisation = k % 3 ? v[2] : 0.0,
+                        .solve = v[3],
+                        .output = k % 5 ? v[4] : 0.0};
     sl_run_summary_format(&t, buf, sizeof buf);
     bad += percent_sum(buf) != 100;
     lines += strchr(buf, '\n') != NULL;

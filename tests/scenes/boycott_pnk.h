@@ -86,10 +86,8 @@ static inline double boycott_front_of_volume(const boycott_vessel *v, double V, 
   double w = boycott_width(v), lo = boycott_sediment(v, t), hi = 1.0;
   for (int it = 0; it < 80; ++it) {
     double m = 0.5 * (lo + hi);
-    if (w * (1 - m) + boycott_layer_volume(v, m, t) > V)
-      lo = m;
-    else
-      hi = m;
+    if (w * (1 - m) + boycott_layer_volume(v, m, t) > V) lo = m;
+    else hi = m;
   }
   return 0.5 * (lo + hi);
 }

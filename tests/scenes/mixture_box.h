@@ -33,19 +33,18 @@ typedef struct box_scene {
   int settling;           /* 0: no [closure.hindered_settling]; 2: the step cut-off at phi_max */
   double a, phi_max;      /* the law's a and phi_max; 0: box_a, box_phi_max */
   double end, dt, every;
-  int convection;         /* [flow] convection = true, with adaptive BDF2 steps (else Stokes flow, fixed BDF1) */
-  int solve_every_step;   /* solve the flow even where its result is known ([solver] skip_known = false) */
-  int projection;         /* [flow] scheme = projection (the split step) */
-  int monolithic;         /* [flow] scheme = monolithic (else the default, auto: the split step for this box) */
-  const char *extra;      /* more sections at the end, or NULL */
+  int convection;       /* [flow] convection = true, with adaptive BDF2 steps (else Stokes flow, fixed BDF1) */
+  int solve_every_step; /* solve the flow even where its result is known ([solver] skip_known = false) */
+  int projection;       /* [flow] scheme = projection (the split step) */
+  int monolithic;       /* [flow] scheme = monolithic (else the default, auto: the split step for this box) */
+  const char *extra;    /* more sections at the end, or NULL */
 } box_scene;
 
 /* The scene's INI text into buf. */
 static inline void box_text(const box_scene *s, char *buf, size_t len) {
   char mesh[512], phi[256], closure[512];
   double a = s->a > 0.0 ? s->a : box_a, phi_max = s->phi_max > 0.0 ? s->phi_max : box_phi_max;
-  if (s->line)
-    snprintf(mesh, sizeof mesh, "generator = interval\nx = 0, %g\ncells = %d\n", box_H, s->n);
+  if (s->line) snprintf(mesh, sizeof mesh, "generator = interval\nx = 0, %g\ncells = %d\n", box_H, s->n);
   else
     snprintf(mesh, sizeof mesh, "generator = rectangle\nx = 0, %g\ny = 0, %g\ncells = %d, %d\n%s\n", box_W, box_H,
              BOX_NX, s->n, s->mesh_extra ? s->mesh_extra : "");

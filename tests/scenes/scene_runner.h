@@ -62,19 +62,23 @@ static inline int scene_run(const scene_request *q, sluice_summary *res, sl_diag
  *   run_scene(scene, replace_section, replacement, sets, out, d): 0 or the error (d set);
  *   run_ok(scene, replace_section, replacement, sets, out): the same, a failure counted as a failed check;
  * (the model is the scene's). */
-#define SCENE_RUNNERS()                                                                                               \
-  static int run_scene(const char *scene, const char *replace_section, const char *replacement,                      \
-                       const char *const *sets, const char *out, sl_diag *d) {                                        \
-    scene_request q = {.configs = configs, .scene = scene, .replace_section = replace_section,                        \
-                       .replacement = replacement, .sets = sets, .out = out};                                         \
-    return scene_run(&q, NULL, d);                                                                                    \
-  }                                                                                                                   \
-  static int run_ok(const char *scene, const char *section, const char *replacement, const char *const *sets,        \
-                    const char *out) {                                                                                \
-    sl_diag d = {{0}};                                                                                                \
-    int rc = run_scene(scene, section, replacement, sets, out, &d);                                                   \
-    CHECK_MSG(rc == 0, "%s: %s", scene, d.msg);                                                                       \
-    return rc;                                                                                                        \
+#define SCENE_RUNNERS()                                                                                       \
+  static int run_scene(const char *scene, const char *replace_section, const char *replacement,               \
+                       const char *const *sets, const char *out, sl_diag *d) {                                \
+    scene_request q = {.configs = configs,                                                                    \
+                       .scene = scene,                                                                        \
+                       .replace_section = replace_section,                                                    \
+                       .replacement = replacement,                                                            \
+                       .sets = sets,                                                                          \
+                       .out = out};                                                                           \
+    return scene_run(&q, NULL, d);                                                                            \
+  }                                                                                                           \
+  static int run_ok(const char *scene, const char *section, const char *replacement, const char *const *sets, \
+                    const char *out) {                                                                        \
+    sl_diag d = {{0}};                                                                                        \
+    int rc = run_scene(scene, section, replacement, sets, out, &d);                                           \
+    CHECK_MSG(rc == 0, "%s: %s", scene, d.msg);                                                               \
+    return rc;                                                                                                \
   }
 
 #endif

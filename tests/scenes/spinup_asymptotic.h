@@ -73,10 +73,8 @@ static inline double spinup_alpha(const spinup_theory *s, double r, double z, do
   for (int it = 0; it < 60 && hi - lo > 1e-12; ++it) {
     double mid = 0.5 * (lo + hi);
     spinup_characteristic(s, tau0, mid, tau, steps, &re, &a);
-    if (re < r)
-      lo = mid;
-    else
-      hi = mid;
+    if (re < r) lo = mid;
+    else hi = mid;
   }
   spinup_characteristic(s, tau0, 0.5 * (lo + hi), tau, steps, &re, &a);
   return a;

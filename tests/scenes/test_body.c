@@ -55,8 +55,8 @@ static double poiseuille_mean(void) {
 /* runs a scene with a section replaced (NULL: none) */
 static int run_replaced(const char *scene, const char *section, const char *text, const char *const *sets,
                         const char *out, sl_diag *d) {
-  scene_request q = {.configs = configs, .scene = scene, .replace_section = section, .replacement = text,
-                     .sets = sets, .out = out};
+  scene_request q = {
+      .configs = configs, .scene = scene, .replace_section = section, .replacement = text, .sets = sets, .out = out};
   return scene_run(&q, NULL, d);
 }
 
@@ -103,7 +103,8 @@ static int annulus_errors(int n, double *ez, double *et) {
   const char *out = "body_annulus.h5";
   if (run_ok("annulus_blocked", NULL, NULL, sets, out)) return 1;
   int nv = 0, ns = 0, nx = n + n / 2;
-  double *u = field_at(out, "velocity_fluid", INFINITY, &nv, NULL), *w = field_at(out, "swirl_fluid", INFINITY, &ns, NULL);
+  double *u = field_at(out, "velocity_fluid", INFINITY, &nv, NULL),
+         *w = field_at(out, "swirl_fluid", INFINITY, &ns, NULL);
   int ok = u && w && nv == nx * NY && ns == nx * NY;
   CHECK_MSG(ok, "annulus: %d, %d cells", nv, ns);
   double C = U / poiseuille_mean();
@@ -123,9 +124,10 @@ static void annulus_order(void) {
   for (int l = 0; l < 3; ++l)
     if (annulus_errors(16 << l, &ez[l], &et[l])) return;
   double pz1 = log2(ez[0] / ez[1]), pz2 = log2(ez[1] / ez[2]), pt1 = log2(et[0] / et[1]), pt2 = log2(et[1] / et[2]);
-  printf("  annulus by blocking: u_z error %.3e, %.3e, %.3e of the mean (order %.2f, %.2f); u_theta %.3e, %.3e, "
-         "%.3e of omega r_i (order %.2f, %.2f) on 16, 32, 64 cells across the gap\n",
-         ez[0], ez[1], ez[2], pz1, pz2, et[0], et[1], et[2], pt1, pt2);
+  printf(
+      "  annulus by blocking: u_z error %.3e, %.3e, %.3e of the mean (order %.2f, %.2f); u_theta %.3e, %.3e, "
+      "%.3e of omega r_i (order %.2f, %.2f) on 16, 32, 64 cells across the gap\n",
+      ez[0], ez[1], ez[2], pz1, pz2, et[0], et[1], et[2], pt1, pt2);
   CHECK_MSG(ez[1] < 0.01 && et[1] < 0.01, "annulus: errors %.3g, %.3g on 32 cells", ez[1], et[1]);
   CHECK_MSG(pz1 > 1.8 && pz2 > 1.8, "annulus: u_z order %.2f, %.2f", pz1, pz2);
   CHECK_MSG(pt1 > 1.8 && pt2 > 1.8, "annulus: u_theta order %.2f, %.2f", pt1, pt2);
@@ -140,7 +142,8 @@ static void annulus_order(void) {
  * torques on rotor and vessel opposite to round-off (the discrete angular momentum is conserved). */
 static void annulus_torque(void) {
   const double L = 0.2, MU = 1.0;
-  const double T = -4.0 * M_PI * MU * L * OMEGA * RI * RI * RO * RO / (RO * RO - RI * RI), tau = T / (2 * M_PI * RI * RI * L);
+  const double T = -4.0 * M_PI * MU * L * OMEGA * RI * RI * RO * RO / (RO * RO - RI * RI),
+               tau = T / (2 * M_PI * RI * RI * L);
   double e[3], es[3];
   for (int l = 0; l < 3; ++l) {
     int n = 16 << l;
@@ -153,8 +156,10 @@ static void annulus_torque(void) {
     double tf = scalar(out, "torque_fluid_body", INFINITY), ts = scalar(out, "torque_solid_body", INFINITY);
     double sb = scalar(out, "wall_shear_stress_theta_fluid_body", INFINITY);
     e[l] = fabs(tb - T) / fabs(T), es[l] = fabs(sb - tau) / fabs(tau);
-    printf("  torque on the blocked rotor, %d cells across the gap: %.6e N m (Couette %.6e, error %.2e), on the "
-           "vessel %.6e, mean stress on the rotor %.5f Pa (%.5f)\n", n, tb, T, e[l], tv, sb, tau);
+    printf(
+        "  torque on the blocked rotor, %d cells across the gap: %.6e N m (Couette %.6e, error %.2e), on the "
+        "vessel %.6e, mean stress on the rotor %.5f Pa (%.5f)\n",
+        n, tb, T, e[l], tv, sb, tau);
     CHECK_MSG(fabs(tb + tv) <= 1e-12 * fabs(T), "torque: rotor %.17g and vessel %.17g do not balance", tb, tv);
     CHECK_MSG(tf == tb && ts == 0.0, "torque: clear fluid, fluid %.17g solids %.17g of %.17g", tf, ts, tb);
   }
@@ -198,8 +203,10 @@ static void centrifugal_order(void) {
   double e[3], span = 0.0;
   for (int l = 0; l < 3; ++l) e[l] = centrifugal_error(16 << l, &span);
   double p1 = log2(e[0] / e[1]), p2 = log2(e[1] / e[2]);
-  printf("  centrifugal: Couette's radial pressure, largest error %.3e, %.3e, %.3e Pa on 16, 32, 64 cells (its rise "
-         "across the gap %.3f Pa); order %.2f, %.2f\n", e[0], e[1], e[2], span, p1, p2);
+  printf(
+      "  centrifugal: Couette's radial pressure, largest error %.3e, %.3e, %.3e Pa on 16, 32, 64 cells (its rise "
+      "across the gap %.3f Pa); order %.2f, %.2f\n",
+      e[0], e[1], e[2], span, p1, p2);
   CHECK_MSG(e[1] < 0.01 * span, "centrifugal: error %.3g Pa on 32 cells", e[1]);
   CHECK_MSG(p1 > 1.8 && p2 > 1.8, "centrifugal: order %.2f, %.2f", p1, p2);
   /* denser solids (2460 kg/m3) are flung outwards; without the key phi stays uniform */
@@ -225,8 +232,9 @@ static void centrifugal_order(void) {
  * equal the single [body]'s to round-off (the faces between them are dead, as inside one body), and the two
  * halves' torques add up to the whole rotor's. */
 static void named_bodies(void) {
-  const char *two = "[body.lower]\nbox = 0, 0.015, 0, 0.1\nangular_velocity = 10\n\n"
-                    "[body.upper]\nbox = 0, 0.015, 0.1, 0.2\nangular_velocity = 10\n";
+  const char *two =
+      "[body.lower]\nbox = 0, 0.015, 0, 0.1\nangular_velocity = 10\n\n"
+      "[body.upper]\nbox = 0, 0.015, 0.1, 0.2\nangular_velocity = 10\n";
   const char *sets[] = {NULL};
   sl_diag d = {{0}};
   int rc = run_replaced("annulus_blocked", NULL, NULL, sets, "body_one.h5", &d);
@@ -237,11 +245,13 @@ static void named_bodies(void) {
   static const char *const names[3] = {"velocity_fluid", "swirl_fluid", "pressure"};
   for (int k = 0; k < 3; ++k) {
     int n1 = 0, n2 = 0;
-    double *a = field_at("body_one.h5", names[k], INFINITY, &n1, NULL), *b = field_at("body_two.h5", names[k], INFINITY, &n2, NULL);
+    double *a = field_at("body_one.h5", names[k], INFINITY, &n1, NULL),
+           *b = field_at("body_two.h5", names[k], INFINITY, &n2, NULL);
     CHECK_MSG(a && b && n1 == n2 && n1 > 0, "%s: %d, %d cells", names[k], n1, n2);
     double diff = 0.0, big = 0.0;
     int nv = k == 0 ? 3 * n1 : n1;
-    for (int i = 0; a && b && n1 == n2 && i < nv; ++i) diff = fmax(diff, fabs(a[i] - b[i])), big = fmax(big, fabs(a[i]));
+    for (int i = 0; a && b && n1 == n2 && i < nv; ++i)
+      diff = fmax(diff, fabs(a[i] - b[i])), big = fmax(big, fabs(a[i]));
     printf("  named bodies: %s of two bodies against one: largest difference %.2e of %.3e\n", names[k], diff, big);
     CHECK_MSG(big > 0.0 && diff <= 1e-12 * big, "%s: difference %.3g of %.3g", names[k], diff, big);
     free(a), free(b);
@@ -259,17 +269,20 @@ static void bad_input(void) {
     const char *body, *expect;
   } cases[] = {
       {"[body]\nbox = 0, 0.015, 0\n", "annulus_blocked.ini:63: [body] box = 0, 0.015, 0: four numbers"},
-      {"[body]\nbox = 0, 0.016, 0, 0.2\nangular_velocity = 10\n", "annulus_blocked.ini:63: [body] box: x1 = 0.016 is "
-                                                                  "not on a grid line"},
+      {"[body]\nbox = 0, 0.016, 0, 0.2\nangular_velocity = 10\n",
+       "annulus_blocked.ini:63: [body] box: x1 = 0.016 is "
+       "not on a grid line"},
       {"[body]\nbox = 0, 0.045, 0, 0.2\n", "annulus_blocked.ini:63: [body] box: it holds all of the mesh's"},
       {"[body]\nangular_velocity = 10\n", "annulus_blocked.ini:63: [body] angular_velocity: the body needs its box"},
       {"[body.a]\nbox = 0, 0.015, 0, 0.1\n[body.b]\nbox = 0.0075, 0.015, 0.05, 0.2\n",
        "annulus_blocked.ini:65: [body.b] box = 0.0075, 0.015, 0.05, 0.2: overlaps"},
-      {"[body.a]\nbox = 0, 0.015, 0, 0.3\n", "annulus_blocked.ini:63: [body.a] box = 0, 0.015, 0, 0.3: outside the "
-                                             "domain"},
+      {"[body.a]\nbox = 0, 0.015, 0, 0.3\n",
+       "annulus_blocked.ini:63: [body.a] box = 0, 0.015, 0, 0.3: outside the "
+       "domain"},
       {"[body.right]\nbox = 0, 0.015, 0, 0.1\n", "annulus_blocked.ini:62: [body.right]: the name of a boundary"},
       {"[body.a]\nangular_velocity = 10\n", "annulus_blocked.ini:62: [body.a]: the body needs its box"},
-      {"[body.a]\nbox = 0, 0.015, 0, 0.1\nradius = 3\n", "annulus_blocked.ini:64:1: error: [body.a] radius: not a key of the 2-D model (motion = column, "
+      {"[body.a]\nbox = 0, 0.015, 0, 0.1\nradius = 3\n",
+       "annulus_blocked.ini:64:1: error: [body.a] radius: not a key of the 2-D model (motion = column, "
        "geometry = planar | axisymmetric) (its keys: box, angular_velocity)"},
   };
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
@@ -280,7 +293,9 @@ static void bad_input(void) {
   struct {
     const char *scene, *sets[3], *expect;
   } sets[] = {
-      {"annulus_blocked", {"two_fluid.swirl=false", NULL}, "[body] angular_velocity: only with [two_fluid] swirl = true"},
+      {"annulus_blocked",
+       {"two_fluid.swirl=false", NULL},
+       "[body] angular_velocity: only with [two_fluid] swirl = true"},
       {"fluidized_bed_2d", {"two_fluid.centrifugal=true", NULL}, "[two_fluid] centrifugal: only with swirl = true"},
   };
   for (size_t k = 0; k < sizeof sets / sizeof sets[0]; ++k) {
@@ -309,13 +324,17 @@ static void viscometer_tip(void) {
     int rc = scene_run(&q, &res, &d);
     CHECK_MSG(rc == 0, "viscometer_rotor_tip: %s", d.msg);
     if (rc) return;
-    double rejected = res.steps + res.rejected_steps > 0 ? (double)res.rejected_steps / (double)(res.steps + res.rejected_steps) : 1.0;
+    double rejected = res.steps + res.rejected_steps > 0
+                          ? (double)res.rejected_steps / (double)(res.steps + res.rejected_steps)
+                          : 1.0;
     double T = scalar(out, "torque_body", INFINITY), Tf = scalar(out, "torque_fluid_body", INFINITY);
-    printf("  viscometer with the rotor's tip (9 x 20, swirl %s): %s; %ld steps, %ld rejected (%.1f %%); torque on "
-           "the rotor %.4e N m (fluid %.4e)\n", two_way ? "two-way" : "one-way", res.stop_reason, res.steps,
-           res.rejected_steps, 100.0 * rejected, T, Tf);
+    printf(
+        "  viscometer with the rotor's tip (9 x 20, swirl %s): %s; %ld steps, %ld rejected (%.1f %%); torque on "
+        "the rotor %.4e N m (fluid %.4e)\n",
+        two_way ? "two-way" : "one-way", res.stop_reason, res.steps, res.rejected_steps, 100.0 * rejected, T, Tf);
     if (!two_way) {
-      CHECK_MSG(strstr(res.stop_reason, "steady") != NULL, "viscometer_tip (one-way): not steady (%s)", res.stop_reason);
+      CHECK_MSG(strstr(res.stop_reason, "steady") != NULL, "viscometer_tip (one-way): not steady (%s)",
+                res.stop_reason);
       CHECK_MSG(rejected < 0.1, "viscometer_tip (one-way): %.3g of the steps rejected", rejected);
       CHECK_MSG(T < 0.0 && Tf < 0.0, "viscometer_tip (one-way): torque %.3g, fluid's %.3g", T, Tf);
     }
@@ -331,9 +350,11 @@ static void viscometer_tip(void) {
     for (int i = 3; i < NX; ++i) beside += (1.0 - row[i]) / (NX - 3);
     for (int i = 0; i < NX; ++i) bed += (1.0 - phi[i]) / NX;
     double err = scalar(out, "solids_conservation_error", tf);
-    printf("  viscometer with the rotor's tip (9 x 20, swirl %s): t = %.1f s; porosity directly below the tip %.4f "
-           "at the axis, %.4f under the rotor; beside it in the gap %.4f; at the distributor %.4f; conservation "
-           "%.1e\n", two_way ? "two-way" : "one-way", tf, axis, under, beside, bed, err);
+    printf(
+        "  viscometer with the rotor's tip (9 x 20, swirl %s): t = %.1f s; porosity directly below the tip %.4f "
+        "at the axis, %.4f under the rotor; beside it in the gap %.4f; at the distributor %.4f; conservation "
+        "%.1e\n",
+        two_way ? "two-way" : "one-way", tf, axis, under, beside, bed, err);
     CHECK_MSG(fabs(err) < 1e-12, "viscometer_tip: solids not conserved (%.3g)", err);
     if (!two_way) CHECK_MSG(axis > 0.95, "viscometer_tip (one-way): porosity below the tip %.4f", axis);
     free(phi);

@@ -59,14 +59,16 @@ static int sample(const char *file, const char *field, int c, int n, const doubl
 /* Ghia, Ghia & Shin (1982), Table I, Re = 100: u on x = 1/2. */
 static const double ghia_y[17] = {1.0000, 0.9766, 0.9688, 0.9609, 0.9531, 0.8516, 0.7344, 0.6172, 0.5000,
                                   0.4531, 0.2813, 0.1719, 0.1016, 0.0703, 0.0625, 0.0547, 0.0000};
-static const double ghia_u[17] = {1.00000, 0.84123, 0.78871, 0.73722, 0.68717, 0.23151, 0.00332, -0.13641, -0.20581,
-                                  -0.21090, -0.15662, -0.10150, -0.06434, -0.04775, -0.04192, -0.03717, 0.00000};
+static const double ghia_u[17] = {1.00000,  0.84123,  0.78871,  0.73722,  0.68717,  0.23151,
+                                  0.00332,  -0.13641, -0.20581, -0.21090, -0.15662, -0.10150,
+                                  -0.06434, -0.04775, -0.04192, -0.03717, 0.00000};
 
 static void cavity_re100(void) {
   double xy[34], u32[17], u24[17];
   for (int k = 0; k < 17; ++k) xy[2 * k] = 0.5, xy[2 * k + 1] = ghia_y[k];
   const char *s24[] = {"mesh.cells=24", NULL};
-  if (run_scene("cavity_re100", NULL, "re100_32.h5", NULL, NULL) || run_scene("cavity_re100", s24, "re100_24.h5", NULL, NULL))
+  if (run_scene("cavity_re100", NULL, "re100_32.h5", NULL, NULL) ||
+      run_scene("cavity_re100", s24, "re100_24.h5", NULL, NULL))
     return;
   if (sample("re100_32.h5", "velocity", 0, 17, xy, u32) || sample("re100_24.h5", "velocity", 0, 17, xy, u24)) return;
   double dmax = 0.0, dmean = 0.0, mesh = 0.0;
@@ -81,8 +83,8 @@ static void cavity_re100(void) {
   /* The profile is mesh-converged to well below its distance from Ghia's
    * table (the mesh change is under a fifth of the largest deviation): what
    * remains is the error of their second-order 129 x 129 solution. */
-  CHECK_MSG(mesh < 0.2 * dmax, "Re 100 profile changes by %.3g between n = 24 and 32, not small against %.3g",
-            mesh, dmax);
+  CHECK_MSG(mesh < 0.2 * dmax, "Re 100 profile changes by %.3g between n = 24 and 32, not small against %.3g", mesh,
+            dmax);
   CHECK_MSG(dmean < 2e-3, "Re 100: mean deviation from Ghia %.3g", dmean);
   CHECK_MSG(dmax < 5.5e-3, "Re 100: max deviation from Ghia %.3g", dmax);
   /* The stream function from the conservative face fluxes: the primary vortex's -0.103423 and the bottom-right
@@ -102,8 +104,8 @@ static void cavity_re100(void) {
     const double *x = m.coords + 3 * (size_t)i;
     if (x[0] == 0.0 || x[0] == 1.0 || x[1] == 0.0 || x[1] == 1.0) wall = fmax(wall, fabs(psi.values[i]));
   }
-  printf("Re 100: stream function min %.6f (Ghia -0.103423), max %.4e (Ghia 1.25374e-5), on the walls %.1e\n", lo,
-         hi, wall);
+  printf("Re 100: stream function min %.6f (Ghia -0.103423), max %.4e (Ghia 1.25374e-5), on the walls %.1e\n", lo, hi,
+         wall);
   CHECK_MSG(fabs(lo + 0.103423) < 2e-4, "Re 100: primary vortex psi %.6f", lo);
   CHECK_MSG(fabs(hi - 1.25374e-5) < 0.05 * 1.25374e-5, "Re 100: secondary vortex psi %.4e", hi);
   CHECK_MSG(wall < 1e-12, "Re 100: psi on the walls %.2e", wall);
@@ -131,7 +133,8 @@ static void cavity_stokes(void) {
     const char *sets[] = {set, NULL};
     sluice_summary res;
     if (run_scene("cavity_stokes", sets, out, NULL, &res)) return;
-    CHECK_MSG(res.nonlinear_iterations == 1, "Stokes cavity: %ld solves for a linear problem", res.nonlinear_iterations);
+    CHECK_MSG(res.nonlinear_iterations == 1, "Stokes cavity: %ld solves for a linear problem",
+              res.nonlinear_iterations);
     CHECK_MSG(res.matrix_assemblies == 1 && res.residual_assemblies == 0,
               "Stokes cavity: %ld matrix and %ld residual assemblies for one linear solve", res.matrix_assemblies,
               res.residual_assemblies);
@@ -139,7 +142,8 @@ static void cavity_stokes(void) {
     printf("Stokes cavity n = %2d: min u on x = 1/2 (401 samples) %.6f\n", ns[k], m[k]);
   }
   double ratio = fabs(m[1] - m[0]) / fabs(m[2] - m[1]);
-  printf("Stokes cavity: successive differences %.2e, %.2e (ratio %.1f)\n", fabs(m[1] - m[0]), fabs(m[2] - m[1]), ratio);
+  printf("Stokes cavity: successive differences %.2e, %.2e (ratio %.1f)\n", fabs(m[1] - m[0]), fabs(m[2] - m[1]),
+         ratio);
   CHECK(fabs(m[2] - m[1]) < fabs(m[1] - m[0]));
   CHECK(m[2] < -0.20 && m[2] > -0.215);
 }
@@ -169,7 +173,8 @@ static void bingham_channel(void) {
     err_c[k] = fabs(w[N / 2] - bingham_exact(0.0));
     printf("Bingham channel eps = %g: centre velocity %.8f (exact 0.28125, error %.3e), max error %.3e\n", eps[k],
            w[N / 2], err_c[k], emax);
-    CHECK_MSG(emax <= 1.05 * err_c[k], "Bingham channel: the largest error %.3g is not the plug's %.3g", emax, err_c[k]);
+    CHECK_MSG(emax <= 1.05 * err_c[k], "Bingham channel: the largest error %.3g is not the plug's %.3g", emax,
+              err_c[k]);
     /* The unyielded cells lie in the exact plug |y| < 0.25, and fill it but for the cells at its edges. */
     sl_output_field f;
     sl_diag d = {{0}};
@@ -295,8 +300,8 @@ static int read_velocity(const char *file, sl_output_field *f) {
  * whole step. Every step's matrix is the same, so it is factorised once
  * (the last step is not shortened by round-off into a new matrix). */
 static void single_factorisation(void) {
-  const char *sets[] = {"time.scheme=bdf1", "time.adaptive=false", "time.dt=0.01", "time.end=0.1",
-                        "output.every=0", NULL};
+  const char *sets[] = {"time.scheme=bdf1", "time.adaptive=false", "time.dt=0.01",
+                        "time.end=0.1",     "output.every=0",      NULL};
   sluice_summary res;
   if (run_scene("diffusion_1d", sets, "one_factor.h5", NULL, &res)) return;
   printf("constant coefficients: %ld steps, %ld matrix assemblies, %ld right-hand sides, %s\n", res.steps,
@@ -313,8 +318,14 @@ static void single_factorisation(void) {
  * the steady solution (stokes_8.h5 from cavity_stokes) to 1e-9; the slowest
  * mode decays by about 1 / (1 + 2 pi^2 dt) per step. */
 static void constant_coefficient_steps(void) {
-  const char *sets[] = {"mesh.cells=8", "time.scheme=bdf1", "time.adaptive=false", "time.dt=0.05", "time.end=3",
-                        "output.every=0", "boundary.top.velocity=min(1, t), 0", NULL};
+  const char *sets[] = {"mesh.cells=8",
+                        "time.scheme=bdf1",
+                        "time.adaptive=false",
+                        "time.dt=0.05",
+                        "time.end=3",
+                        "output.every=0",
+                        "boundary.top.velocity=min(1, t), 0",
+                        NULL};
   sluice_summary res;
   if (run_scene("cavity_stokes", sets, "stokes_8_steps.h5", NULL, &res)) return;
   printf("Stokes cavity, ramped lid: %ld steps, %ld matrix assemblies, %ld right-hand sides, %s\n", res.steps,
@@ -335,10 +346,23 @@ static void constant_coefficient_steps(void) {
   sl_output_field_free(&a);
   /* Restarted after 4 of 10 BDF2 steps, the run assembles its matrix afresh where the uninterrupted one kept it:
      the end states agree bit for bit. */
-  const char *whole[] = {"mesh.cells=8", "time.scheme=bdf2", "time.adaptive=false", "time.dt=0.05", "time.end=0.5",
-                         "output.every=0", "boundary.top.velocity=min(1, 4*t), 0", NULL};
-  const char *part[] = {"mesh.cells=8", "time.scheme=bdf2", "time.adaptive=false", "time.dt=0.05", "time.end=0.5",
-                        "output.every=0", "boundary.top.velocity=min(1, 4*t), 0", "time.max_steps=4", NULL};
+  const char *whole[] = {"mesh.cells=8",
+                         "time.scheme=bdf2",
+                         "time.adaptive=false",
+                         "time.dt=0.05",
+                         "time.end=0.5",
+                         "output.every=0",
+                         "boundary.top.velocity=min(1, 4*t), 0",
+                         NULL};
+  const char *part[] = {"mesh.cells=8",
+                        "time.scheme=bdf2",
+                        "time.adaptive=false",
+                        "time.dt=0.05",
+                        "time.end=0.5",
+                        "output.every=0",
+                        "boundary.top.velocity=min(1, 4*t), 0",
+                        "time.max_steps=4",
+                        NULL};
   sluice_summary r1, r2, r3;
   if (run_scene("cavity_stokes", whole, "kept_whole.h5", NULL, &r1) ||
       run_scene("cavity_stokes", part, "kept_first.h5", NULL, &r2) ||
@@ -350,9 +374,9 @@ static void constant_coefficient_steps(void) {
             r1.matrix_assemblies, r3.steps, r3.matrix_assemblies);
   if (read_velocity("kept_whole.h5", &a)) return;
   if (read_velocity("kept_second.h5", &b) == 0) {
-    CHECK_MSG(a.n == b.n && a.time == b.time &&
-                  memcmp(a.values, b.values, (size_t)a.n * a.components * sizeof(double)) == 0,
-              "the restarted run differs from the uninterrupted one");
+    CHECK_MSG(
+        a.n == b.n && a.time == b.time && memcmp(a.values, b.values, (size_t)a.n * a.components * sizeof(double)) == 0,
+        "the restarted run differs from the uninterrupted one");
     sl_output_field_free(&b);
   }
   sl_output_field_free(&a);
@@ -387,9 +411,9 @@ static void set_configs(const char *sub);
  * steps (the controller's state carries over). */
 static void restart_reuse(void) {
   set_configs("configs");
-  const char *full[] = {"mesh.cells=8,8",     "time.scheme=bdf2", "time.dt=0.01",  "time.end=0.4",
+  const char *full[] = {"mesh.cells=8,8",     "time.scheme=bdf2", "time.dt=0.01",     "time.end=0.4",
                         "time.adaptive=true", "time.dt_max=0.02", "output.every=0.1", NULL};
-  const char *part[] = {"mesh.cells=8,8",     "time.scheme=bdf2", "time.dt=0.01",  "time.end=0.2",
+  const char *part[] = {"mesh.cells=8,8",     "time.scheme=bdf2", "time.dt=0.01",     "time.end=0.2",
                         "time.adaptive=true", "time.dt_max=0.02", "output.every=0.1", NULL};
   sluice_summary a, b, c;
   int rc = run_scene("cavity_re100", full, "reuse_whole.h5", NULL, &a) ||
@@ -397,10 +421,10 @@ static void restart_reuse(void) {
            run_scene("cavity_re100", full, "reuse_second.h5", "reuse_first.h5", &c);
   set_configs("tests/scenes");
   if (rc) return;
-  printf("restart with reuse: uninterrupted %ld steps (%ld rejected), %ld reused solves of %ld; stopped at t = %g "
-         "after %ld steps, restarted: %ld steps (%ld rejected)\n",
-         a.steps, a.rejected_steps, a.linear.n_reused, a.linear.n_solves, b.t_reached, b.steps, c.steps,
-         c.rejected_steps);
+  printf(
+      "restart with reuse: uninterrupted %ld steps (%ld rejected), %ld reused solves of %ld; stopped at t = %g "
+      "after %ld steps, restarted: %ld steps (%ld rejected)\n",
+      a.steps, a.rejected_steps, a.linear.n_reused, a.linear.n_solves, b.t_reached, b.steps, c.steps, c.rejected_steps);
   CHECK(a.linear.n_reused > 0 && b.steps < a.steps && c.steps == a.steps && c.rejected_steps == a.rejected_steps);
   sl_output_field fa, fc;
   if (read_velocity("reuse_whole.h5", &fa)) return;
@@ -455,9 +479,10 @@ static void mms_stokes(void) {
     eu[m] = sqrt(su / NP), ep[m] = sqrt(sp / NP);
   }
   double ou = log2(eu[1] / eu[2]), op = log2(ep[1] / ep[2]);
-  printf("mms_stokes: L2 velocity error %.3e, %.3e, %.3e (orders %.2f, %.2f), pressure %.3e, %.3e, %.3e (orders "
-         "%.2f, %.2f)\n",
-         eu[0], eu[1], eu[2], log2(eu[0] / eu[1]), ou, ep[0], ep[1], ep[2], log2(ep[0] / ep[1]), op);
+  printf(
+      "mms_stokes: L2 velocity error %.3e, %.3e, %.3e (orders %.2f, %.2f), pressure %.3e, %.3e, %.3e (orders "
+      "%.2f, %.2f)\n",
+      eu[0], eu[1], eu[2], log2(eu[0] / eu[1]), ou, ep[0], ep[1], ep[2], log2(ep[0] / ep[1]), op);
   CHECK_MSG(fabs(ou - 3.0) < 0.25, "velocity order %.2f", ou);
   CHECK_MSG(op > 1.8, "pressure order %.2f (at least 2 expected)", op);
 }
@@ -520,8 +545,8 @@ static void projection_orders(void) {
  * values are in the checkpoint). */
 static void projection_restart(void) {
   const char *full[] = {"flow.scheme=projection", "time.adaptive=true", "time.tolerance=1e-4", "time.dt=0.01", NULL};
-  const char *part[] = {"flow.scheme=projection", "time.adaptive=true", "time.tolerance=1e-4", "time.dt=0.01",
-                        "time.max_steps=6", NULL};
+  const char *part[] = {"flow.scheme=projection", "time.adaptive=true", "time.tolerance=1e-4",
+                        "time.dt=0.01",           "time.max_steps=6",   NULL};
   sluice_summary a, b, c;
   if (run_scene("mms_stokes_transient", full, "split_whole.h5", NULL, &a) ||
       run_scene("mms_stokes_transient", part, "split_first.h5", NULL, &b) ||
@@ -578,7 +603,10 @@ int main(int argc, char **argv) {
   static const struct {
     const char *name;
     void (*run)(void);
-  } parts[] = {{"cavity", cavities}, {"bingham", bingham_and_viscometer}, {"time", time_stepping}, {"mms", mms_stokes},
+  } parts[] = {{"cavity", cavities},
+               {"bingham", bingham_and_viscometer},
+               {"time", time_stepping},
+               {"mms", mms_stokes},
                {"projection", projection_orders}};
   int ran = 0;
   for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)

@@ -61,9 +61,10 @@ static void at_rest(void) {
   for (int i = 1; i < top - 1; ++i) worst = fmax(worst, fabs(ps[i - 1] - ps[i] - h * phi[i - 1] * dr) / ps[0]);
   double excess = scalar("test_liquefaction_rest.h5", "base_static_excess_pressure", INFINITY);
   double held = h * phi[top - 1] * dr, hydro_top = p[n - 1];
-  printf("  at rest: effective-stress balance at every face within %.2e of p_s(base) = %.1f Pa; static excess %.2f Pa "
-         "= the surface cell's buoyant weight %.2f Pa (%.2e); top pressure %.3g Pa\n", worst, ps[0], excess, held,
-         fabs(excess - held) / held, hydro_top);
+  printf(
+      "  at rest: effective-stress balance at every face within %.2e of p_s(base) = %.1f Pa; static excess %.2f Pa "
+      "= the surface cell's buoyant weight %.2f Pa (%.2e); top pressure %.3g Pa\n",
+      worst, ps[0], excess, held, fabs(excess - held) / held, hydro_top);
   CHECK_MSG(worst < 1e-6, "effective-stress balance off by %g", worst);
   CHECK_MSG(fabs(excess - held) < 1e-3 * held, "static excess %g, surface cell %g", excess, held);
   free(phi), free(ps), free(p);
@@ -80,7 +81,8 @@ static void at_rest_and_conservation(const char *out) {
   double total = p[0] + ps[0], err = (total - w) / w;
   printf("  at rest: base cell p + p_s = %.1f Pa, weight above %.1f Pa (%.2e); p_s %.1f Pa\n", total, w, err, ps[0]);
   CHECK_MSG(fabs(err) < 5e-3, "total vertical stress off the weight by %.3g", err); /* 68 cells: 4.3e-3 */
-  double es = scalar(out, "solids_conservation_error", INFINITY), ef = scalar(out, "fluid_conservation_error", INFINITY);
+  double es = scalar(out, "solids_conservation_error", INFINITY),
+         ef = scalar(out, "fluid_conservation_error", INFINITY);
   printf("  conservation at 186 s: solids %.2e, fluid %.2e\n", es, ef);
   CHECK_MSG(fabs(es) < 1e-13 && fabs(ef) < 1e-13, "conservation %g %g", es, ef);
   free(phi), free(p), free(ps);
@@ -97,8 +99,10 @@ static void base_case(const char *out) {
   double surf = scalar(out, "surface_cell_ratio_max", INFINITY), base = scalar(out, "base_cell_ratio_max", INFINITY);
   double thick_on = scalar(out, "liquefied_thickness_at_onset", INFINITY);
   double thick_max = scalar(out, "liquefied_thickness_max_shaking", INFINITY);
-  printf("  largest ratio in the surface cell %.3f, in the base cell %.3f; liquefied %.2f m at onset, %.2f m at most "
-         "during shaking\n", surf, base, thick_on, thick_max);
+  printf(
+      "  largest ratio in the surface cell %.3f, in the base cell %.3f; liquefied %.2f m at onset, %.2f m at most "
+      "during shaking\n",
+      surf, base, thick_on, thick_max);
   CHECK_MSG(surf < 0.95 && base < 0.95, "surface %g or base %g liquefied", surf, base);
   CHECK_MSG(thick_max > thick_on, "the liquefied zone did not grow after onset (%g -> %g)", thick_on, thick_max);
   double s6 = scalar(out, "settlement", 6.0), s_end = scalar(out, "settlement", INFINITY);
@@ -118,7 +122,8 @@ static void variants(const char *base) {
   const char *gravel_sets[] = {"solid.diameter=8e-3", NULL};
   if (run_ok("liquefaction", NULL, NULL, fine_sets, "test_liquefaction_fine.h5")) return;
   if (run_ok("liquefaction", NULL, NULL, gravel_sets, "test_liquefaction_gravel.h5")) return;
-  double tb = scalar(base, "liquefied_thickness", 6.0), tf = scalar("test_liquefaction_fine.h5", "liquefied_thickness", 6.0);
+  double tb = scalar(base, "liquefied_thickness", 6.0),
+         tf = scalar("test_liquefaction_fine.h5", "liquefied_thickness", 6.0);
   double rg = scalar("test_liquefaction_gravel.h5", "max_pore_pressure_ratio", INFINITY);
   double tg = scalar("test_liquefaction_gravel.h5", "liquefied_thickness_max_shaking", INFINITY);
   printf("  liquefied at 6 s: 0.8 mm %.2f m, 0.08 mm %.2f m; 8 mm: largest ratio %.3f, liquefied %.2f m\n", tb, tf, rg,
@@ -151,8 +156,10 @@ static void undrained_transfer(const char *base) {
   }
   double worst = 0.0;
   for (int i = 2; i <= 40; ++i) worst = fmax(worst, fabs(ru[i] - (1.0 - exp(-drop / (A * phi[i])))));
-  printf("  undrained transfer after 0.2 s: cell %d ratio %.5f (onset 0.95 at dnbar = A phi ln 20 = %.5f); largest "
-         "deviation from 1 - exp(-dnbar/(A phi)) %.2e\n", c, ru[c], drop, worst);
+  printf(
+      "  undrained transfer after 0.2 s: cell %d ratio %.5f (onset 0.95 at dnbar = A phi ln 20 = %.5f); largest "
+      "deviation from 1 - exp(-dnbar/(A phi)) %.2e\n",
+      c, ru[c], drop, worst);
   CHECK_MSG(fabs(ru[c] - 0.95) < 1e-3, "ratio %g at the predicted onset drop", ru[c]);
   CHECK_MSG(worst < 2e-3, "undrained transfer off by %g", worst);
   free(phi), free(ru);
@@ -238,13 +245,24 @@ static void pictures(const char *out) {
     for (int i = 0; i < cells; ++i) map[(size_t)i * NT + (size_t)k] = ru && i < n ? ru[i] : NAN;
     free(ru);
   }
-  sl_chart_heatmap hm = {.nx = NT, .ny = cells, .x_edges = te, .y_edges = ze, .values = map, .lo = 0.0, .hi = 1.0,
+  sl_chart_heatmap hm = {.nx = NT,
+                         .ny = cells,
+                         .x_edges = te,
+                         .y_edges = ze,
+                         .values = map,
+                         .lo = 0.0,
+                         .hi = 1.0,
                          .label = "pore pressure ratio (p \xE2\x88\x92 p_{0})/p'_{s0}"};
-  sl_chart c = {.xlabel = "time t (s); shaking 0 to 6 s", .ylabel = "height above the base z (m)",
-                .legend = SL_LEGEND_NONE, .heatmap = &hm};
+  sl_chart c = {.xlabel = "time t (s); shaking 0 to 6 s",
+                .ylabel = "height above the base z (m)",
+                .legend = SL_LEGEND_NONE,
+                .heatmap = &hm};
   sl_figure fig = {.title = "liquefaction.ini: 0.8 mm sand, 6 s of shaking",
-                   .subtitle = "pore pressure ratio over the deposit, every output (0.5 s)", .n_panels = 1,
-                   .panels = &c, .panel_width = 640, .panel_height = 360};
+                   .subtitle = "pore pressure ratio over the deposit, every output (0.5 s)",
+                   .n_panels = 1,
+                   .panels = &c,
+                   .panel_width = 640,
+                   .panel_height = 360};
   sl_diag d = {{0}};
   int rc = sl_figure_write_svg("liquefaction_ratio.svg", &fig, &d);
   CHECK_MSG(rc == 0, "liquefaction_ratio.svg: %s", d.msg);
@@ -265,15 +283,28 @@ static void pictures(const char *out) {
     st[k] = 100.0 * scalar(out, "settlement", fmin(t[k], 186.0)); /* cm */
   }
   /* two panels: each quantity on its own axis, in its own unit */
-  sl_chart_series se[2] = {{.n = NH, .x = t, .y = pb, .marker_every = 8},
-                           {.n = NH, .x = t, .y = st, .marker_every = 8, .colour = "#D62728", .marker = SL_CHART_MARK_SQUARE}};
-  sl_chart panels[2] = {{.title = "base excess pore pressure", .xlabel = "time t (s)", .ylabel = "excess pore pressure u_{e} (kPa)",
-                         .n_series = 1, .series = &se[0], .legend = SL_LEGEND_NONE},
-                        {.title = "surface settlement", .xlabel = "time t (s)", .ylabel = "settlement (cm)", .n_series = 1,
-                         .series = &se[1], .legend = SL_LEGEND_NONE}};
+  sl_chart_series se[2] = {
+      {.n = NH, .x = t, .y = pb, .marker_every = 8},
+      {.n = NH, .x = t, .y = st, .marker_every = 8, .colour = "#D62728", .marker = SL_CHART_MARK_SQUARE}};
+  sl_chart panels[2] = {{.title = "base excess pore pressure",
+                         .xlabel = "time t (s)",
+                         .ylabel = "excess pore pressure u_{e} (kPa)",
+                         .n_series = 1,
+                         .series = &se[0],
+                         .legend = SL_LEGEND_NONE},
+                        {.title = "surface settlement",
+                         .xlabel = "time t (s)",
+                         .ylabel = "settlement (cm)",
+                         .n_series = 1,
+                         .series = &se[1],
+                         .legend = SL_LEGEND_NONE}};
   sl_figure ch = {.title = "liquefaction.ini: 0.8 mm sand, 6 s of shaking",
                   .subtitle = "from the solids inventory and the fluid pressure over its pre-shaking value",
-                  .n_panels = 2, .panels = panels, .columns = 2, .panel_width = 400, .panel_height = 320};
+                  .n_panels = 2,
+                  .panels = panels,
+                  .columns = 2,
+                  .panel_width = 400,
+                  .panel_height = 320};
   rc = sl_figure_write_svg("liquefaction_history.svg", &ch, &d);
   CHECK_MSG(rc == 0, "liquefaction_history.svg: %s", d.msg);
   rc = sl_figure_write_png("liquefaction_history.png", &ch, &d);
@@ -294,8 +325,15 @@ static double harmonic_run(int cells, const char *record) {
   char s_cells[64], s_rec[2400];
   snprintf(s_cells, sizeof s_cells, "mesh.cells=%d", cells);
   snprintf(s_rec, sizeof s_rec, "shaking.record=%s", record);
-  const char *sets[] = {s_cells, s_rec, "deposit.nbar_drop=0", "shaking.units=si", "shaking.shear_modulus=1e7",
-                        "time.end=30", "time.dt=0.00125", "output.every=0.01", NULL};
+  const char *sets[] = {s_cells,
+                        s_rec,
+                        "deposit.nbar_drop=0",
+                        "shaking.units=si",
+                        "shaking.shear_modulus=1e7",
+                        "time.end=30",
+                        "time.dt=0.00125",
+                        "output.every=0.01",
+                        NULL};
   if (run_ok("terzaghi_consolidation", NULL, NULL, sets, "test_liquefaction_harmonic.h5")) return NAN;
   const double om = 2.0 * M_PI, G = 1e7, eta = 2.0 * 0.05 * G / (2.0 * M_PI * 2.0), H = 10.0, a0 = 0.01;
   double ss = 0, sc = 0, cc = 0, ws = 0, wc = 0;
@@ -336,8 +374,10 @@ static void harmonic(void) {
   double e[3];
   const int cells[3] = {12, 24, 48};
   for (int k = 0; k < 3; ++k) e[k] = harmonic_run(cells[k], path);
-  printf("  harmonic base, uniform layer: surface amplitude error %.2e / %.2e / %.2e on 10 / 20 / 40 cells, order "
-         "%.2f, %.2f\n", e[0], e[1], e[2], log2(fabs(e[0] / e[1])), log2(fabs(e[1] / e[2])));
+  printf(
+      "  harmonic base, uniform layer: surface amplitude error %.2e / %.2e / %.2e on 10 / 20 / 40 cells, order "
+      "%.2f, %.2f\n",
+      e[0], e[1], e[2], log2(fabs(e[0] / e[1])), log2(fabs(e[1] / e[2])));
   CHECK_MSG(fabs(e[2]) < 1e-4 && fabs(e[1]) < 3e-4, "harmonic response off by %g, %g", e[1], e[2]);
   CHECK_MSG(log2(fabs(e[0] / e[1])) > 1.8, "harmonic response order %g", log2(fabs(e[0] / e[1])));
 }

@@ -58,8 +58,15 @@ static void hydrostatic_box(void) {
   for (int m = 0; m < 4; ++m)
     for (int k = 0; k < 3; ++k) {
       /* every step solved: the discretisation itself; then as a run does it, skipping what is known */
-      box_scene s = {.n = quick ? 8 : 20, .mesh_extra = meshes[m][1], .rho_s = 1006.0, .phi = strata[k][1], .settling = 0,
-                     .end = 1000.0, .dt = 10.0, .every = 100.0, .solve_every_step = 1};
+      box_scene s = {.n = quick ? 8 : 20,
+                     .mesh_extra = meshes[m][1],
+                     .rho_s = 1006.0,
+                     .phi = strata[k][1],
+                     .settling = 0,
+                     .end = 1000.0,
+                     .dt = 10.0,
+                     .every = 100.0,
+                     .solve_every_step = 1};
       sl_diag d = {{0}};
       sluice_summary res, skip;
       int rc = box_run(&s, "balance_box.h5", &res, &d);
@@ -70,9 +77,10 @@ static void hydrostatic_box(void) {
       rc = box_run(&s, "balance_box_skip.h5", &skip, &d);
       CHECK_MSG(rc == 0, "box, %s, %s: %s", meshes[m][0], strata[k][0], d.msg);
       double vs = rc ? NAN : worst_speed("balance_box_skip.h5");
-      printf("  box at rest, %-21s %-7s: max |j| over 100 steps %.2e m/s (%.1e of the settling speed); %ld of 100 "
-             "flow solves skipped where known: %.2e m/s\n",
-             meshes[m][0], strata[k][0], v, v / box_ut, skip.solves_skipped, vs);
+      printf(
+          "  box at rest, %-21s %-7s: max |j| over 100 steps %.2e m/s (%.1e of the settling speed); %ld of 100 "
+          "flow solves skipped where known: %.2e m/s\n",
+          meshes[m][0], strata[k][0], v, v / box_ut, skip.solves_skipped, vs);
       CHECK_MSG(res.steps == 100 && res.solves_skipped == 0 && v <= 1e-12 * box_ut, "box, %s, %s: |j| = %.3g m/s",
                 meshes[m][0], strata[k][0], v);
       CHECK_MSG(skip.solves_skipped == 100 && vs == 0.0, "box, %s, %s: %ld solves skipped, |j| = %.3g m/s",
@@ -87,10 +95,23 @@ static void hydrostatic_boycott(void) {
       char phi[128];
       snprintf(phi, sizeof phi, "initial.phi=%s", strata[k][1]);
       /* quadrilaterals: the list ends at meshes[m][1] == NULL */
-      const char *sets[] = {quick ? "mesh.cells=6,8" : "mesh.cells=12,16", "time.scheme=bdf1", "time.adaptive=false", "time.dt=0.01",
-                            "time.end=1", "output.every=0.1", phi, meshes[m][1], "mesh.diagonal=right", NULL};
-      scene_request q = {.configs = configs, .scene = "boycott", .replace_section = "closure.hindered_settling",
-                         .replacement = "", .sets = sets, .out = "balance_boycott.h5", .solve_every_step = 1};
+      const char *sets[] = {quick ? "mesh.cells=6,8" : "mesh.cells=12,16",
+                            "time.scheme=bdf1",
+                            "time.adaptive=false",
+                            "time.dt=0.01",
+                            "time.end=1",
+                            "output.every=0.1",
+                            phi,
+                            meshes[m][1],
+                            "mesh.diagonal=right",
+                            NULL};
+      scene_request q = {.configs = configs,
+                         .scene = "boycott",
+                         .replace_section = "closure.hindered_settling",
+                         .replacement = "",
+                         .sets = sets,
+                         .out = "balance_boycott.h5",
+                         .solve_every_step = 1};
       sl_diag d = {{0}};
       int rc = scene_run(&q, NULL, &d);
       CHECK_MSG(rc == 0, "Boycott vessel, %s, %s: %s", meshes[m][0], strata[k][0], d.msg);
@@ -121,17 +142,18 @@ static void settling_box(void) {
   int nj = quick ? 2 : 3, n0 = quick ? 25 : 50;
   for (int j = 0; j < nj; ++j) {
     int n = n0 << j;
-    box_scene s = {.n = n, .rho_s = 1006.0, .settling = 1, .end = 570.0, .dt = 10.0, .every = 190.0,
-                   .solve_every_step = 1};
+    box_scene s = {
+        .n = n, .rho_s = 1006.0, .settling = 1, .end = 570.0, .dt = 10.0, .every = 190.0, .solve_every_step = 1};
     e2[j] = settle(s, "balance_settle_2d.h5", &k, &v);
     CHECK_MSG(v <= 1e-12 * box_ut, "4 x %d: |j| = %.3g m/s", n, v);
     s.solve_every_step = 0; /* as a run goes: at rest under no load, no solve */
     double e_skip = settle(s, "balance_settle_2d.h5", &k, &v1);
     s.line = 1;
     e1[j] = settle(s, "balance_settle_1d.h5", &k, &v1);
-    printf("  settling box 4 x %d: L1 %.4e (%.4e without the known solves), the column of %d %.4e (ratio %.4f), "
-           "max |j| over the run %.2e m/s\n",
-           n, e2[j], e_skip, n, e1[j], e2[j] / e1[j], v);
+    printf(
+        "  settling box 4 x %d: L1 %.4e (%.4e without the known solves), the column of %d %.4e (ratio %.4f), "
+        "max |j| over the run %.2e m/s\n",
+        n, e2[j], e_skip, n, e1[j], e2[j] / e1[j], v);
     CHECK_MSG(fabs(e_skip - e2[j]) <= 1e-9 * e2[j], "4 x %d: L1 %.10g with every solve, %.10g without", n, e2[j],
               e_skip);
     CHECK_MSG(fabs(e2[j] / e1[j] - 1.0) <= 0.2, "4 x %d: L1 %.4g, the column's %.4g", n, e2[j], e1[j]);
@@ -141,7 +163,13 @@ static void settling_box(void) {
   CHECK_MSG(fabs(r2 - r1) <= 0.1 && r1 > 0.6, "L1 rates: box %.3g, column %.3g", r2, r1);
   /* density contrast 1: Stokes flow with fixed steps, and convection with adaptive BDF2 */
   for (int c = 0; c < 2; ++c) {
-    box_scene s = {.n = n0, .rho_s = 2000.0, .settling = 1, .end = 570.0, .dt = 10.0, .every = 190.0, .convection = c,
+    box_scene s = {.n = n0,
+                   .rho_s = 2000.0,
+                   .settling = 1,
+                   .end = 570.0,
+                   .dt = 10.0,
+                   .every = 190.0,
+                   .convection = c,
                    .solve_every_step = 1};
     sl_diag d = {{0}};
     sluice_summary res;
@@ -162,8 +190,14 @@ static void settling_box(void) {
  * a matrix, factorises nothing and stays at j = 0 exactly; a box whose phi varies across it (0.12 left of the
  * middle, 0.08 right) moves, and every one of its steps assembles its matrix and solves. */
 static void roundoff_steps(void) {
-  box_scene s = {.n = quick ? 8 : 20, .rho_s = 1006.0, .settling = 1, .end = 100.0, .dt = 10.0, .every = 100.0,
-                 .solve_every_step = 1, .monolithic = 1};
+  box_scene s = {.n = quick ? 8 : 20,
+                 .rho_s = 1006.0,
+                 .settling = 1,
+                 .end = 100.0,
+                 .dt = 10.0,
+                 .every = 100.0,
+                 .solve_every_step = 1,
+                 .monolithic = 1};
   sl_diag d = {{0}};
   sluice_summary res;
   int rc = box_run(&s, "balance_roundoff.h5", &res, &d);
@@ -182,8 +216,10 @@ static void roundoff_steps(void) {
   if (!rc)
     printf("  box with phi varying across it: %ld steps, %ld matrix assemblies, max |j| %.2e m/s; %s\n", res.steps,
            res.matrix_assemblies, v, res.linear_summary);
-  CHECK_MSG(!rc && res.matrix_assemblies == res.steps && v > 1e-3 * box_ut, "moving box: %ld matrix assemblies in %ld "
-            "steps, |j| %.3g", res.matrix_assemblies, res.steps, v);
+  CHECK_MSG(!rc && res.matrix_assemblies == res.steps && v > 1e-3 * box_ut,
+            "moving box: %ld matrix assemblies in %ld "
+            "steps, |j| %.3g",
+            res.matrix_assemblies, res.steps, v);
 }
 
 int main(void) {

@@ -40,13 +40,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "boycott_pnk.h"
 #include "core/io/output.h"
 #include "core/io/sample.h"
-#include "scene_runner.h"
-#include "testing.h"
 #include "core/study/kynch_exact.h"
+#include "scene_runner.h"
 #include "spinup_asymptotic.h"
-#include "boycott_pnk.h"
+#include "testing.h"
 
 static char configs[4096];
 
@@ -379,9 +379,10 @@ static void boycott(void) {
     double pnk = boycott_pnk_front(v, tk);
     /* the clear fluid not above the front, against the layer of (4.117) up to the run's front */
     double layer = clear - boycott_width(v) * (1 - z), layer_theory = boycott_layer_volume(v, z, tk);
-    printf("  boycott: t = %.1f: z_F = %.4f, PNK %.4f (lag %.4f), PNK with the layer's volume %.4f; clear fluid %.4f, "
-           "produced by PNK's law %.4f (ratio %.3f); in the layer %.4f, (4.117) %.4f (ratio %.3f)\n",
-           tk, z, pnk, z - pnk, z_layer, clear, produced, clear / produced, layer, layer_theory, layer / layer_theory);
+    printf(
+        "  boycott: t = %.1f: z_F = %.4f, PNK %.4f (lag %.4f), PNK with the layer's volume %.4f; clear fluid %.4f, "
+        "produced by PNK's law %.4f (ratio %.3f); in the layer %.4f, (4.117) %.4f (ratio %.3f)\n",
+        tk, z, pnk, z - pnk, z_layer, clear, produced, clear / produced, layer, layer_theory, layer / layer_theory);
     CHECK_MSG(z > pnk, "the front %.4f below PNK's %.4f at t = %.1f", z, pnk, tk); /* the layer's volume */
     worst_prod = fmax(worst_prod, fabs(clear / produced - 1));
     if (k >= 2) { /* the layer formed: its transit time along the wall is about 0.17 */
@@ -391,9 +392,10 @@ static void boycott(void) {
     z_prev = z;
   }
   double enhancement = (1 - z) / (A * t);
-  printf("  boycott: descent x%.2f of an upright vessel's (PNK x%.2f); clear fluid within %.3f of PNK's production; "
-         "the layer's volume within %.3f of (4.117); front within %.4f of PNK with the layer\n",
-         enhancement, (1 - boycott_pnk_front(v, t)) / (A * t), worst_prod, worst_volume, worst_layer);
+  printf(
+      "  boycott: descent x%.2f of an upright vessel's (PNK x%.2f); clear fluid within %.3f of PNK's production; "
+      "the layer's volume within %.3f of (4.117); front within %.4f of PNK with the layer\n",
+      enhancement, (1 - boycott_pnk_front(v, t)) / (A * t), worst_prod, worst_volume, worst_layer);
   /* the front falls much faster than in an upright vessel */
   CHECK_MSG(enhancement > 1.6, "Boycott enhancement x%.2f", enhancement);
   /* PNK's production, A times the interface's horizontal projection: 0.970-0.976 of it (0.975-0.982 on 48 x 64) */
@@ -465,7 +467,8 @@ static void migration_poiseuille(void) {
   }
   double aw = 0.5 * (lo + hi);
   CHECK_MSG(fabs(aw - 0.31825) < 5e-5, "pipe phi_w = %.6f", aw);
-  static const double tr[6] = {0.2, 0.4, 0.6, 0.8, 0.9, 1.0}, tphi[6] = {0.5615, 0.4727, 0.4072, 0.3572, 0.3365, 0.3180};
+  static const double tr[6] = {0.2, 0.4, 0.6, 0.8, 0.9, 1.0},
+                      tphi[6] = {0.5615, 0.4727, 0.4072, 0.3572, 0.3365, 0.3180};
   static const double tw[6] = {0.9957, 0.9488, 0.8004, 0.4979, 0.2756, 0.0};
   for (int i = 0; i < 6; ++i)
     CHECK_MSG(fabs(pipe_phi(tr[i], 0.318) - tphi[i]) < 2e-4, "exact pipe phi(%g) = %.5f, table %.4f", tr[i],
@@ -587,9 +590,10 @@ static void spinup(const char *scheme) {
       dev = fmax(dev, fabs(smp.values[i] - spinup_alpha(&th, r, spin_z[k], tau)));
     }
     sl_sample_free(&smp);
-    printf("  spinup: t = %g, z = %.3f (left the lid at t = %.1f): shock at r = %.4f (theory %.4f), largest phi %.3f "
-           "(mixture side %.3f), mixture region within %.3f of the characteristics\n",
-           t, spin_z[k], spinup_departure(&th, spin_z[k], tau) / tau_per_t, rs, spin_rs[k], amax, spin_as[k], dev);
+    printf(
+        "  spinup: t = %g, z = %.3f (left the lid at t = %.1f): shock at r = %.4f (theory %.4f), largest phi %.3f "
+        "(mixture side %.3f), mixture region within %.3f of the characteristics\n",
+        t, spin_z[k], spinup_departure(&th, spin_z[k], tau) / tau_per_t, rs, spin_rs[k], amax, spin_as[k], dev);
     worst = fmax(worst, fabs(rs - spin_rs[k]));
     if (!isnan(rs)) worst_a = fmax(worst_a, fabs(amax - spin_as[k]));
     if (k == 0) near_lid = dev;
@@ -621,7 +625,8 @@ static double bed_yielded(const char *out, double t, double *phi_lo, double *phi
   *phi_lo = INFINITY, *phi_hi = -INFINITY;
   for (int c = 0; c < m.n_cells; ++c) {
     double yc = 0.0;
-    for (int k = 0; k < m.nodes_per_cell; ++k) yc += m.coords[(size_t)3 * m.cells[(size_t)c * m.nodes_per_cell + k] + 1];
+    for (int k = 0; k < m.nodes_per_cell; ++k)
+      yc += m.coords[(size_t)3 * m.cells[(size_t)c * m.nodes_per_cell + k] + 1];
     if (yc / m.nodes_per_cell < 0.15) sum += y.values[c], ++n;
     *phi_lo = fmin(*phi_lo, p.values[c]), *phi_hi = fmax(*phi_hi, p.values[c]);
   }
@@ -715,11 +720,11 @@ static void vessel_wall_term(void) {
   }
   double u_t = (2650.0 - 1000.0) * 9.81 * 1e-8 / (18.0 * 1e-3), re = 1000.0 * u_t * 1e-4 / 1e-3;
   double expected = pow(0.9, 17.5 * 0.01 * pow(re, -0.03)), got = (0.5 - h1) / (0.5 - h0);
-  printf("vessel wall term: fall in 40 s %.6f m (unbounded), %.6f m (D = 0.01 m): ratio %.5f, Richardson-Zaki "
-         "%.5f\n",
-         0.5 - h0, 0.5 - h1, got, expected);
-  CHECK_MSG(t0 == 40.0 && t1 == 40.0 && fabs(got / expected - 1.0) < 0.003, "ratio %.5f, expected %.5f", got,
-            expected);
+  printf(
+      "vessel wall term: fall in 40 s %.6f m (unbounded), %.6f m (D = 0.01 m): ratio %.5f, Richardson-Zaki "
+      "%.5f\n",
+      0.5 - h0, 0.5 - h1, got, expected);
+  CHECK_MSG(t0 == 40.0 && t1 == 40.0 && fabs(got / expected - 1.0) < 0.003, "ratio %.5f, expected %.5f", got, expected);
 }
 
 /* Boycott's vessel stopped by max_steps between output times and restarted from that checkpoint ends bit for bit
@@ -745,10 +750,11 @@ static void restart_bitwise(void) {
     for (int i = 0; i < 3 && !rc; ++i) rc = scene_run(&q[i], &r[i], &d);
     CHECK_MSG(rc == 0, "%s: %s", schemes[k], d.msg);
     if (rc) continue;
-    printf("boycott restart, %s: uninterrupted %ld steps (%ld rejected), %ld of %ld solves reused; stopped at t = "
-           "%.6g after %ld steps, restarted: %ld steps (%ld rejected)\n",
-           schemes[k], r[0].steps, r[0].rejected_steps, r[0].linear.n_reused, r[0].linear.n_solves, r[1].t_reached,
-           r[1].steps, r[2].steps, r[2].rejected_steps);
+    printf(
+        "boycott restart, %s: uninterrupted %ld steps (%ld rejected), %ld of %ld solves reused; stopped at t = "
+        "%.6g after %ld steps, restarted: %ld steps (%ld rejected)\n",
+        schemes[k], r[0].steps, r[0].rejected_steps, r[0].linear.n_reused, r[0].linear.n_solves, r[1].t_reached,
+        r[1].steps, r[2].steps, r[2].rejected_steps);
     CHECK(r[1].steps == 25 && r[1].t_reached < 0.03 && r[2].steps == r[0].steps &&
           r[2].rejected_steps == r[0].rejected_steps);
     if (k == 0) CHECK_MSG(r[0].linear.n_reused > 0, "no reused factorisation: the test would not test the restart");
@@ -761,8 +767,10 @@ static void restart_bitwise(void) {
       if (sl_output_read_field(out[2], fields[f], INFINITY, &b, &d) == 0) {
         long diff = a.n == b.n ? 0 : -1;
         for (long i = 0; a.n == b.n && i < (long)a.n * a.components; ++i) diff += a.values[i] != b.values[i];
-        CHECK_MSG(a.time == b.time && diff == 0, "%s: the restarted run's %s differs from the uninterrupted one's "
-                  "in %ld values (t = %g and %g)", schemes[k], fields[f], diff, a.time, b.time);
+        CHECK_MSG(a.time == b.time && diff == 0,
+                  "%s: the restarted run's %s differs from the uninterrupted one's "
+                  "in %ld values (t = %g and %g)",
+                  schemes[k], fields[f], diff, a.time, b.time);
         sl_output_field_free(&b);
       } else {
         CHECK_MSG(0, "%s", d.msg);
@@ -778,13 +786,17 @@ int main(int argc, char **argv) {
   static const struct {
     const char *name;
     void (*run)(void);
-  } parts[] = {{"kynch", kynch_part}, {"migration", migration}, {"wave_bed", wave_bed}, {"boycott", boycott_part},
-               {"spinup", spinup_part}, {"spinup_split", spinup_split_part}, {"vessel", vessel_wall_term},
-               {"restart", restart_bitwise}};
+  } parts[] = {{"kynch", kynch_part},        {"migration", migration},    {"wave_bed", wave_bed},
+               {"boycott", boycott_part},    {"spinup", spinup_part},     {"spinup_split", spinup_split_part},
+               {"vessel", vessel_wall_term}, {"restart", restart_bitwise}};
   int ran = 0;
   for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
     if (argc < 2 ? strncmp(parts[k].name, "spinup", 6) != 0 : strcmp(argv[1], parts[k].name) == 0)
       parts[k].run(), ++ran;
-  if (!ran) return fprintf(stderr, "unknown part '%s' (kynch, migration, wave_bed, boycott, spinup, spinup_split, vessel, restart)\n", argv[1]), 2;
+  if (!ran)
+    return fprintf(stderr,
+                   "unknown part '%s' (kynch, migration, wave_bed, boycott, spinup, spinup_split, vessel, restart)\n",
+                   argv[1]),
+           2;
   return sl_test_summary();
 }

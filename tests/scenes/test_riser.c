@@ -63,7 +63,7 @@ static void uniform(void) {
   const double phi_eq = phi_uniform();
   printf("  uniform transported suspension: phi %.13f (porosity %.6f), u_s %.5f m/s, u_f %.5f m/s\n", phi_eq,
          1.0 - phi_eq, J_IN / phi_eq, U_IN / (1.0 - phi_eq));
-  const char *planar[] = {"mesh.cells=4,20", "boundary.right.type=slip", "scene.geometry=planar",
+  const char *planar[] = {"mesh.cells=4,20",         "boundary.right.type=slip",         "scene.geometry=planar",
                           "boundary.left.type=slip", "two_fluid.steady_tolerance=1e-12", NULL};
   const char *axi[] = {"mesh.cells=4,20", "boundary.right.type=slip", "two_fluid.steady_tolerance=1e-12", NULL};
   for (int k = 0; k < 2; ++k) {
@@ -112,9 +112,10 @@ static void profile(void) {
     }
   mean /= area, core /= a_core, wall /= a_wall;
   double err = scalar(out, "solids_conservation_error", tf);
-  printf("  profile (10 x 20, no-slip wall): steady at t = %.1f s; z > 0.1 m: mean porosity %.5f (1-D %.5f), core "
-         "%.5f, wall band %.5f, phi in [%.5f, %.5f]; conservation error %.1e\n",
-         tf, 1.0 - mean, 1.0 - phi_eq, 1.0 - core, 1.0 - wall, lo, hi, err);
+  printf(
+      "  profile (10 x 20, no-slip wall): steady at t = %.1f s; z > 0.1 m: mean porosity %.5f (1-D %.5f), core "
+      "%.5f, wall band %.5f, phi in [%.5f, %.5f]; conservation error %.1e\n",
+      tf, 1.0 - mean, 1.0 - phi_eq, 1.0 - core, 1.0 - wall, lo, hi, err);
   CHECK_MSG(tf < 299.0, "profile: not steady by the end");
   CHECK_MSG(fabs(err) < 1e-12, "profile: solids not conserved (%.3g)", err);
   CHECK_MSG(fabs(mean - phi_eq) <= 1e-4, "profile: mean phi %.6f off the 1-D %.6f", mean, phi_eq);
@@ -158,28 +159,40 @@ static void dispersed(void) {
   mean /= area;
   for (int i = 0; i < NX; ++i) prof[i] = 1.0 - phi[(3 * NY / 4) * NX + i]; /* the row at z = 0.15 m */
   double err = scalar(out, "solids_conservation_error", tf);
-  printf("  dispersed (12 x 20 graded, no-slip wall): steady at t = %.1f s; z > 0.1 m: mean porosity %.5f (1-D "
-         "%.5f, %+.2e), axis cell %.5f, wall cell %.5f (wall - axis %+.2e); conservation error %.1e\n",
-         tf, 1.0 - mean, 1.0 - phi_eq, phi_eq - mean, 1.0 - axis, 1.0 - wall, axis - wall, err);
+  printf(
+      "  dispersed (12 x 20 graded, no-slip wall): steady at t = %.1f s; z > 0.1 m: mean porosity %.5f (1-D "
+      "%.5f, %+.2e), axis cell %.5f, wall cell %.5f (wall - axis %+.2e); conservation error %.1e\n",
+      tf, 1.0 - mean, 1.0 - phi_eq, phi_eq - mean, 1.0 - axis, 1.0 - wall, axis - wall, err);
   printf("  dispersed: porosity at z = 0.15 m against r (m):");
   for (int i = 0; i < NX; ++i) printf(" %.4f:%.5f", rc[i], prof[i]);
   printf("\n");
   CHECK_MSG(tf < 299.0, "dispersed: not steady by the end");
   CHECK_MSG(fabs(err) < 1e-12, "dispersed: solids not conserved (%.3g)", err);
-  CHECK_MSG(wall - axis > 1e-3, "dispersed: the wall cell is not denser than the axis cell by 1e-3 (phi %.6f against "
-            "%.6f)", wall, axis);
+  CHECK_MSG(wall - axis > 1e-3,
+            "dispersed: the wall cell is not denser than the axis cell by 1e-3 (phi %.6f against "
+            "%.6f)",
+            wall, axis);
   CHECK_MSG(fabs(mean - phi_eq) <= 2e-4, "dispersed: mean phi %.6f off the 1-D %.6f", mean, phi_eq);
   /* the picture: the developed profile against the uniform suspension of the 1-D balance */
   double rr[NX], eq[2] = {1.0 - phi_eq, 1.0 - phi_eq}, ends[2] = {0.0, 1.0};
   for (int i = 0; i < NX; ++i) rr[i] = rc[i] / R;
   sl_chart_series se[2] = {{.name = "turbophoretic dispersion, 12 x 20 graded", .n = NX, .x = rr, .y = prof},
-                           {.name = "1-D balance (laminar model: flat to 1e-4)", .n = 2, .x = ends, .y = eq,
-                            .dashed = 1, .marker = SL_CHART_MARK_NONE, .colour = "#7F7F7F"}};
+                           {.name = "1-D balance (laminar model: flat to 1e-4)",
+                            .n = 2,
+                            .x = ends,
+                            .y = eq,
+                            .dashed = 1,
+                            .marker = SL_CHART_MARK_NONE,
+                            .colour = "#7F7F7F"}};
   sl_chart c = {.title = "riser porosity across the pipe at z = 0.15 m",
-                .subtitle = "lscfb_riser_dispersed.ini: 403 um glass beads, U = 0.077 m/s, G_{s} = 10 kg/m^{2}/s "
-                            "(assumed); steady",
-                .xlabel = "r/R (axis 0, wall 1)", .ylabel = "porosity 1 \xE2\x88\x92 \xCF\x86", .n_series = 2,
-                .series = se, .legend = SL_LEGEND_BOTTOM_LEFT};
+                .subtitle =
+                    "lscfb_riser_dispersed.ini: 403 um glass beads, U = 0.077 m/s, G_{s} = 10 kg/m^{2}/s "
+                    "(assumed); steady",
+                .xlabel = "r/R (axis 0, wall 1)",
+                .ylabel = "porosity 1 \xE2\x88\x92 \xCF\x86",
+                .n_series = 2,
+                .series = se,
+                .legend = SL_LEGEND_BOTTOM_LEFT};
   sl_diag d = {{0}};
   int rc_svg = sl_chart_write_svg("riser_porosity.svg", &c, 640, 400, &d);
   CHECK_MSG(rc_svg == 0, "riser_porosity.svg: %s", d.msg);
@@ -208,7 +221,9 @@ static void bad_input(void) {
     const char *scene, *sets[3];
     const char *expect;
   } disp[] = {
-      {"lscfb_riser", {"two_fluid.dispersion=turbophoretic", NULL}, "dispersion: the solids' turbulent dispersion needs [closure.turbulence]"},
+      {"lscfb_riser",
+       {"two_fluid.dispersion=turbophoretic", NULL},
+       "dispersion: the solids' turbulent dispersion needs [closure.turbulence]"},
       {"lscfb_riser", {"closure.turbulence.model=k_epsilon", NULL}, "[two_fluid] turbulence_k and turbulence_epsilon"},
       {"lscfb_riser_dispersed", {"two_fluid.turbulence_k=x - 0.05", NULL}, "turbulence_k = -0.0"},
   };

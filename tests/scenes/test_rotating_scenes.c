@@ -195,7 +195,8 @@ static int rest_errors(const char *out, int axi, double rho_omega2, int closed, 
     CHECK_MSG(0, "%s", d.msg);
     return 1;
   }
-  if (sl_output_read_field(out, "velocity", INFINITY, &u, &d) || sl_output_read_field(out, "pressure", INFINITY, &p, &d)) {
+  if (sl_output_read_field(out, "velocity", INFINITY, &u, &d) ||
+      sl_output_read_field(out, "pressure", INFINITY, &p, &d)) {
     sl_output_mesh_free(&m);
     CHECK_MSG(0, "%s", d.msg);
     return 1;
@@ -236,23 +237,28 @@ static void frame(void) {
   if (run_ok("rotating_rest_axi", NULL, NULL, NULL, "rotating_rest_axi.h5") ||
       rest_errors("rotating_rest_axi.h5", 1, 200.0, 0, &eu0, &ep0))
     return;
-  printf("at rest in the rotating frame, axisymmetric, open side: |u| up to %.1e of Omega R, pressure error %.1e of "
-         "rho Omega^2 R^2\n", eu0 / 10.0, ep0 / 200.0);
+  printf(
+      "at rest in the rotating frame, axisymmetric, open side: |u| up to %.1e of Omega R, pressure error %.1e of "
+      "rho Omega^2 R^2\n",
+      eu0 / 10.0, ep0 / 200.0);
   CHECK_MSG(eu0 < 1e-12 * 10.0 && ep0 < 1e-12 * 200.0, "|u| %.2e, pressure error %.2e", eu0, ep0);
   if (run_ok("rotating_rest_disc", NULL, NULL, NULL, "rotating_rest_disc.h5") ||
       rest_errors("rotating_rest_disc.h5", 0, 200.0, 1, &eu0, &ep0))
     return;
-  printf("at rest in the rotating frame, closed disc: |u| up to %.1e of Omega R, pressure error %.1e of "
-         "rho Omega^2 R^2\n", eu0 / 10.0, ep0 / 200.0);
+  printf(
+      "at rest in the rotating frame, closed disc: |u| up to %.1e of Omega R, pressure error %.1e of "
+      "rho Omega^2 R^2\n",
+      eu0 / 10.0, ep0 / 200.0);
   CHECK_MSG(eu0 < 1e-12 * 10.0 && ep0 < 1e-12 * 200.0, "|u| %.2e, pressure error %.2e", eu0, ep0);
   static const int cells[3] = {8, 16, 32};
   double ep[3], eu[3];
   for (int k = 0; k < 3; ++k)
     if (rotating_poiseuille(cells[k], &ep[k], &eu[k])) return;
   double op = log2(ep[1] / ep[2]), ou = log2(eu[1] / eu[2]);
-  printf("rotating Poiseuille: pressure error %.2e %.2e %.2e (of the Coriolis pressure 8/3 across), order %.2f;"
-         " velocity error %.2e %.2e %.2e, order %.2f\n",
-         ep[0], ep[1], ep[2], op, eu[0], eu[1], eu[2], ou);
+  printf(
+      "rotating Poiseuille: pressure error %.2e %.2e %.2e (of the Coriolis pressure 8/3 across), order %.2f;"
+      " velocity error %.2e %.2e %.2e, order %.2f\n",
+      ep[0], ep[1], ep[2], op, eu[0], eu[1], eu[2], ou);
   /* the Coriolis pressure difference across the channel is 8/3, the centrifugal one along it 2 */
   CHECK_MSG(ep[2] < 1e-3 * 8.0 / 3.0, "pressure error %.2e", ep[2]);
   CHECK_MSG(op > 1.8, "pressure order %.2f", op);
@@ -409,17 +415,23 @@ static void waves_initial(void) {
       a_min = fmin(a_min, wave_alpha(x, y)), a_max = fmax(a_max, wave_alpha(x, y));
     }
   double h = 1e-4, om = (wave_psi(0.6 + h, 0) + wave_psi(0.6 - h, 0) + wave_psi(0.6, h) + wave_psi(0.6, -h) -
-                         4 * wave_psi(0.6, 0)) / (h * h);
-  printf("travelling wave (4.191-4.193): B(0) = %.5f, B(1) = %.5f, psi(0) = %.5f, max|psi| = %.5f, alpha in [%.5f, "
-         "%.5f], alpha(1) = %.5f, omega(0.6, 0) = %.4f\n",
-         wave_B(0.0), wave_B(1.0), wave_psi(0, 0), psi_max, a_min, a_max, wave_alpha(1, 0), om);
+                         4 * wave_psi(0.6, 0)) /
+                        (h * h);
+  printf(
+      "travelling wave (4.191-4.193): B(0) = %.5f, B(1) = %.5f, psi(0) = %.5f, max|psi| = %.5f, alpha in [%.5f, "
+      "%.5f], alpha(1) = %.5f, omega(0.6, 0) = %.4f\n",
+      wave_B(0.0), wave_B(1.0), wave_psi(0, 0), psi_max, a_min, a_max, wave_alpha(1, 0), om);
   CHECK(fabs(wave_B(0.0) - 2.4358) < 1e-4 && fabs(wave_B(1.0) + 1.0) < 1e-12);
   CHECK(fabs(wave_psi(0, 0) - 0.03946) < 1e-5 && fabs(psi_max - 0.0459) < 1e-4);
   CHECK(fabs(a_min - 0.1235) < 1e-4 && fabs(a_max - 0.2) < 1e-6 && fabs(wave_alpha(1, 0) - 0.18964) < 1e-5);
   CHECK(fabs(om + 0.480) < 1e-3);
   /* the scene's state at t = 0 */
-  const char *sets[] = {"time.end=1e-6", "time.dt=1e-6", "time.adaptive=false", "output.inventory_regions=disc",
-                        "output.inventory_where=x > 0, x < 0", NULL};
+  const char *sets[] = {"time.end=1e-6",
+                        "time.dt=1e-6",
+                        "time.adaptive=false",
+                        "output.inventory_regions=disc",
+                        "output.inventory_where=x > 0, x < 0",
+                        NULL};
   if (run_ok("rotating_waves", NULL, NULL, sets, "rotating_waves_0.h5")) return;
   const char *out = "rotating_waves_0.h5";
   sl_sample s;
@@ -456,8 +468,8 @@ static void waves_initial(void) {
     /* 4th-order differences of psi: their error, 1e-14, is below the check */
     double ue = -(-wave_psi(x, y + 2 * h) + 8 * wave_psi(x, y + h) - 8 * wave_psi(x, y - h) + wave_psi(x, y - 2 * h)) /
                 (12 * h);
-    double ve = (-wave_psi(x + 2 * h, y) + 8 * wave_psi(x + h, y) - 8 * wave_psi(x - h, y) + wave_psi(x - 2 * h, y)) /
-                (12 * h);
+    double ve =
+        (-wave_psi(x + 2 * h, y) + 8 * wave_psi(x + h, y) - 8 * wave_psi(x - h, y) + wave_psi(x - 2 * h, y)) / (12 * h);
     e_u = fmax(e_u, hypot(f.values[3 * i] - ue, f.values[3 * i + 1] - ve));
     u_max = fmax(u_max, hypot(ue, ve));
   }
@@ -467,13 +479,14 @@ static void waves_initial(void) {
   if (sample(out, "velocity", 4, xy, v)) return;
   /* omega = dv/dx - du/dy */
   double om_field = (v[1] - v[4]) / (2 * hd) - (v[6] - v[9]) / (2 * hd);
-  printf("rotating_waves.ini at t = 0: psi(0) = %.5f, max|psi| = %.5f, phi in [%.5f, %.5f] (cells), velocity at the "
-         "nodes %.1e of its largest %.4f, omega(0.6, 0) = %.4f, phase of the m = 1 pattern %.6f\n",
-         psi0, -smin, fmin_, fmax_, e_u, u_max, om_field, phase);
+  printf(
+      "rotating_waves.ini at t = 0: psi(0) = %.5f, max|psi| = %.5f, phi in [%.5f, %.5f] (cells), velocity at the "
+      "nodes %.1e of its largest %.4f, omega(0.6, 0) = %.4f, phase of the m = 1 pattern %.6f\n",
+      psi0, -smin, fmin_, fmax_, e_u, u_max, om_field, phase);
   CHECK_MSG(fabs(psi0 / 0.03946 - 1) < 1e-3 && fabs(-smin / 0.0459 - 1) < 1e-3, "psi(0) %.5f, max|psi| %.5f", psi0,
             -smin);
-  CHECK_MSG(fabs(fmin_ / 0.1235 - 1) < 1e-3 && fmax_ <= 0.2 && fmax_ > 0.2 * (1 - 1e-3), "phi in [%.5f, %.5f]",
-            fmin_, fmax_);
+  CHECK_MSG(fabs(fmin_ / 0.1235 - 1) < 1e-3 && fmax_ <= 0.2 && fmax_ > 0.2 * (1 - 1e-3), "phi in [%.5f, %.5f]", fmin_,
+            fmax_);
   CHECK_MSG(e_u < 1e-9 * u_max, "velocity error %.2e", e_u);
   CHECK_MSG(fabs(om_field / -0.480 - 1) < 1e-3, "omega(0.6, 0) = %.4f", om_field);
   /* the thesis's a11 J cos(theta) is at phase 0; sluice's psi has the opposite sign: pi */
@@ -493,8 +506,8 @@ static void waves_initial(void) {
   printf("vortex centre at t = 0: (%.6f, %.1e) against the exact (%.6f, 0), psi there %.6f; phase %.1e\n", cx, cy,
          r_star, wave_psi(r_star, 0.0), cph);
   /* within a twentieth of the core's cells (0.9/32; the nearest vertex is 0.0093 off, measured 9.3e-4) */
-  CHECK_MSG(hypot(cx - r_star, cy) < 0.05 * 0.9 / 32 && fabs(cph) < 1e-3, "centre (%.6f, %.2e) against (%.6f, 0)",
-            cx, cy, r_star);
+  CHECK_MSG(hypot(cx - r_star, cy) < 0.05 * 0.9 / 32 && fabs(cph) < 1e-3, "centre (%.6f, %.2e) against (%.6f, 0)", cx,
+            cy, r_star);
   /* inventories: the mesh region "disc" is all of it; the halves x > 0 and x < 0 add up to it and each is int alpha
      dA over its half (midpoint rule in r and theta on the true half disc; the mesh's polygon misses 4e-4 of the
      area near the wall) */
@@ -530,8 +543,8 @@ static void waves_initial(void) {
  * t = 20, docs/rotating.md), short of the thesis's "within 5 % for t <= 20". */
 static void waves_inviscid(void) {
   set_configs("configs");
-  const char *sets[] = {"fluid.viscosity=1e-5", "time.end=20", "time.dt=0.1", "time.adaptive=false",
-                        "output.every=1", NULL};
+  const char *sets[] = {"fluid.viscosity=1e-5", "time.end=20",    "time.dt=0.1",
+                        "time.adaptive=false",  "output.every=1", NULL};
   const char *out = "rotating_waves_inviscid.h5";
   if (run_ok("rotating_waves", NULL, NULL, sets, out)) return;
   sl_diag d = {{0}};
@@ -647,8 +660,8 @@ static int wave_phase(const char *out, const char *what, double *worst, double *
  * given at the wall: no fluid crosses it (the mixture's face fluxes there are zero). */
 static void waves_inviscid_free_slip(void) {
   set_configs("configs");
-  const char *sets[] = {"fluid.viscosity=1e-5", "time.end=20",    "time.dt=0.1", "time.adaptive=false",
-                        "output.every=1",       NULL};
+  const char *sets[] = {"fluid.viscosity=1e-5", "time.end=20",    "time.dt=0.1",
+                        "time.adaptive=false",  "output.every=1", NULL};
   const char *out = "rotating_waves_inviscid_free_slip.h5";
   if (run_ok("rotating_waves", "boundary.wall", "[boundary.wall]\ntype = slip\n", sets, out)) return;
   double worst, rate;
@@ -710,14 +723,16 @@ static void waves_viscous_free_slip(void) {
   for (int k = 1; k <= 5; ++k) worst = fmax(worst, fabs(ph[k] / (WAVE_C * t[k]) - 1));
   double decay = -ls_slope(t, lnA, 0, N - 1), rate = ls_slope(t, ph, 0, N - 1), crate = ls_slope(t, cp, 0, N - 1);
   for (int k = 0; k < N; k += 10)
-    printf("viscous wave, free slip, t = %5.1f: max|psi|/max|psi|_0 = %.4f (exp(-0.0316 t) = %.4f), turned %.4f "
-           "(c t = %.4f), centre at r = %.4f, turned %.4f\n",
-           t[k], exp(lnA[k] - lnA[0]), exp(-0.0316 * t[k]), ph[k], WAVE_C * t[k], r[k], cp[k]);
-  printf("t = 150: amplitude %.4f; decay rate over the run %.5f (the no-slip reference scaling 0.0316); the m = 1 "
-         "mode's rate %.5f (c = %.4f), the centre's %.5f; t = 2-10 within %.1f %% of c t\n",
-         exp(lnA[N - 1] - lnA[0]), decay, rate, WAVE_C, crate, 100 * worst);
-  CHECK_MSG(decay < 0.1 * 0.0316 && exp(lnA[N - 1] - lnA[0]) > 0.5, "decay rate %.5f, amplitude %.4f at t = 150",
-            decay, exp(lnA[N - 1] - lnA[0]));
+    printf(
+        "viscous wave, free slip, t = %5.1f: max|psi|/max|psi|_0 = %.4f (exp(-0.0316 t) = %.4f), turned %.4f "
+        "(c t = %.4f), centre at r = %.4f, turned %.4f\n",
+        t[k], exp(lnA[k] - lnA[0]), exp(-0.0316 * t[k]), ph[k], WAVE_C * t[k], r[k], cp[k]);
+  printf(
+      "t = 150: amplitude %.4f; decay rate over the run %.5f (the no-slip reference scaling 0.0316); the m = 1 "
+      "mode's rate %.5f (c = %.4f), the centre's %.5f; t = 2-10 within %.1f %% of c t\n",
+      exp(lnA[N - 1] - lnA[0]), decay, rate, WAVE_C, crate, 100 * worst);
+  CHECK_MSG(decay < 0.1 * 0.0316 && exp(lnA[N - 1] - lnA[0]) > 0.5, "decay rate %.5f, amplitude %.4f at t = 150", decay,
+            exp(lnA[N - 1] - lnA[0]));
   CHECK_MSG(worst < 0.1, "t = 2-10: the angle is off c t by %.1f %%", 100 * worst);
   CHECK_MSG(fabs(crate / rate - 1) < 0.05, "the centre turns at %.5f, the m = 1 mode at %.5f", crate, rate);
 }
@@ -733,8 +748,8 @@ static void waves_split(void) {
   const char *schemes[2] = {"flow.scheme=monolithic", "flow.scheme=projection"};
   double turned[2][3] = {{0}};
   for (int k = 0; k < 2; ++k) {
-    const char *sets[] = {"fluid.viscosity=1e-5", "time.end=2",     "time.dt=0.1", "time.adaptive=false",
-                          "output.every=1",       schemes[k], NULL};
+    const char *sets[] = {"fluid.viscosity=1e-5", "time.end=2", "time.dt=0.1", "time.adaptive=false",
+                          "output.every=1",       schemes[k],   NULL};
     if (run_ok("rotating_waves", NULL, NULL, sets, outs[k])) return;
     sl_diag d = {{0}};
     double ph0, tf;
@@ -764,17 +779,23 @@ int main(int argc, char **argv) {
   static const struct {
     const char *name;
     void (*run)(void);
-  } parts[] = {
-      {"frame", frame},       {"ekman", ekman_channel},           {"waves", waves_initial},
-      {"settling", settling}, {"waves_inviscid", waves_inviscid}, {"waves_inviscid_slip", waves_inviscid_slip},
-      {"waves_inviscid_free_slip", waves_inviscid_free_slip}, {"centre", centre},
-      {"waves_viscous_free_slip", waves_viscous_free_slip},   {"waves_split", waves_split}};
+  } parts[] = {{"frame", frame},
+               {"ekman", ekman_channel},
+               {"waves", waves_initial},
+               {"settling", settling},
+               {"waves_inviscid", waves_inviscid},
+               {"waves_inviscid_slip", waves_inviscid_slip},
+               {"waves_inviscid_free_slip", waves_inviscid_free_slip},
+               {"centre", centre},
+               {"waves_viscous_free_slip", waves_viscous_free_slip},
+               {"waves_split", waves_split}};
   int ran = 0;
   for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
     if (argc < 2 || strcmp(argv[1], parts[k].name) == 0) parts[k].run(), ++ran;
   if (!ran)
-    return fprintf(stderr, "unknown part '%s' (frame, ekman, waves, settling, waves_inviscid, waves_inviscid_slip, "
-                           "waves_inviscid_free_slip, centre, waves_viscous_free_slip, waves_split)\n",
+    return fprintf(stderr,
+                   "unknown part '%s' (frame, ekman, waves, settling, waves_inviscid, waves_inviscid_slip, "
+                   "waves_inviscid_free_slip, centre, waves_viscous_free_slip, waves_split)\n",
                    argv[1]),
            2;
   return sl_test_summary();

@@ -58,8 +58,8 @@ static double scalar(const char *file, const char *name, double t) {
 }
 
 /* A scene written to the working folder from text, run as `sluice run`. */
-static int run_text(const char *name, const char *text, const char *const *sets, const char *out,
-                    const char *restart, sl_diag *d) {
+static int run_text(const char *name, const char *text, const char *const *sets, const char *out, const char *restart,
+                    sl_diag *d) {
   char path[256];
   snprintf(path, sizeof path, "%s.ini", name);
   FILE *f = fopen(path, "w");
@@ -120,8 +120,7 @@ static void ktgf_shear(void) {
   for (int k = 0; ps && k < n_ps; ++k) worst = fmax(worst, fabs(ps[k] - ps_eq) / ps_eq);
   printf("ktgf_shear: solids pressure %.10g Pa in %d cells (Lun et al. %.10g), largest relative difference %.2e\n",
          ps && n_ps ? ps[0] : NAN, n_ps, ps_eq, worst);
-  CHECK_MSG(ps && n_ps == 20 && worst < 1e-8, "solids pressure: %d cells, worst relative difference %.2e", n_ps,
-            worst);
+  CHECK_MSG(ps && n_ps == 20 && worst < 1e-8, "solids pressure: %d cells, worst relative difference %.2e", n_ps, worst);
   free(ps);
   /* the solids stress mu_s gdot on the walls, the fluid's (1 - phi) mu_f gdot */
   double tau_s = mu0 * sqrt(theta_eq) * gdot, tau_f = 0.7 * 1.002e-3 * gdot;
@@ -215,8 +214,10 @@ static void couette_viscosity_closure(void) {
   double mum = 1e-3 * pow(1.0 - phi / 0.68, -2.5 * 0.68), mus = mum - (1.0 - phi) * 1e-3;
   double ts = scalar("couette_kd.h5", "wall_shear_stress_solid_left", INFINITY);
   double tf = scalar("couette_kd.h5", "wall_shear_stress_fluid_left", INFINITY);
-  printf("annular Couette, Krieger-Dougherty at phi = 0.45: mu_m = %.6g Pa s, solids phase mu_s = %.6g Pa s; wall "
-         "stresses fluid %.6g, solids %.6g Pa\n", mum, mus, tf, ts);
+  printf(
+      "annular Couette, Krieger-Dougherty at phi = 0.45: mu_m = %.6g Pa s, solids phase mu_s = %.6g Pa s; wall "
+      "stresses fluid %.6g, solids %.6g Pa\n",
+      mum, mus, tf, ts);
   CHECK_CLOSE(ts, -2.0 * mus * B / (ri * ri), 1e-10);
   CHECK_CLOSE(tf, -2.0 * (1.0 - phi) * 1e-3 * B / (ri * ri), 1e-10);
   CHECK_CLOSE(tf + ts, -2.0 * mum * B / (ri * ri), 1e-10);
@@ -239,8 +240,8 @@ static int shear_cell_run(const char *speed, const char *dt, const char *end, ce
 }
 
 static void shear_cell(void) {
-  const char *speeds[4] = {"boundary.right.velocity=0.01", "boundary.right.velocity=0.02",
-                           "boundary.right.velocity=2", "boundary.right.velocity=4"};
+  const char *speeds[4] = {"boundary.right.velocity=0.01", "boundary.right.velocity=0.02", "boundary.right.velocity=2",
+                           "boundary.right.velocity=4"};
   const char *dts[4] = {"time.dt=2", "time.dt=1", "time.dt=0.01", "time.dt=0.005"};
   const char *ends[4] = {"time.end=4000", "time.end=2000", "time.end=40", "time.end=20"};
   cell_result r[4];
@@ -306,8 +307,8 @@ static void restart(void) {
   if (run_ok("shear_cell", NULL, NULL, full, "cell_full.h5") || run_ok("shear_cell", NULL, NULL, half, "cell_half.h5"))
     return;
   sl_diag d = {{0}};
-  scene_request q = {.configs = configs, .scene = "shear_cell", .sets = full, .out = "cell_cont.h5",
-                     .restart = "cell_half.h5"};
+  scene_request q = {
+      .configs = configs, .scene = "shear_cell", .sets = full, .out = "cell_cont.h5", .restart = "cell_half.h5"};
   int rc = scene_run(&q, NULL, &d);
   CHECK_MSG(rc == 0, "restart: %s", d.msg);
   const char *fields[3] = {"velocity_fluid", "velocity_solid", "theta"};

@@ -51,11 +51,15 @@ static int write_polar(const char *path, int nt, int nr, int order, double cx, i
   int o = order, NI = o * nt + (shell ? 1 : 0), NJ = o * nr + 1; /* the lattice of nodes, periodic in I if a ring */
   int surface = shell ? 4 : 3;
   if (shell)
-    fprintf(f, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n4\n1 1 \"inner\"\n1 2 \"outer\"\n1 3 "
-               "\"axis\"\n2 4 \"shell\"\n$EndPhysicalNames\n$Nodes\n%d\n", NI * NJ);
+    fprintf(f,
+            "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n4\n1 1 \"inner\"\n1 2 \"outer\"\n1 3 "
+            "\"axis\"\n2 4 \"shell\"\n$EndPhysicalNames\n$Nodes\n%d\n",
+            NI * NJ);
   else
-    fprintf(f, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 1 \"inner\"\n1 2 \"outer\"\n2 3 "
-               "\"ring\"\n$EndPhysicalNames\n$Nodes\n%d\n", NI * NJ);
+    fprintf(f,
+            "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 1 \"inner\"\n1 2 \"outer\"\n2 3 "
+            "\"ring\"\n$EndPhysicalNames\n$Nodes\n%d\n",
+            NI * NJ);
   for (int J = 0; J < NJ; ++J)
     for (int I = 0; I < NI; ++I) {
       double r = R1 + (R2 - R1) * J / (NJ - 1), x, y;
@@ -68,14 +72,16 @@ static int write_polar(const char *path, int nt, int nr, int order, double cx, i
       }
       fprintf(f, "%d %.17g %.17g 0\n", 1 + J * NI + I, x, y);
     }
-#define ND(I, J) (1 + (J) * NI + ((I) % NI))
+#define ND(I, J) (1 + (J)*NI + ((I) % NI))
   fprintf(f, "$EndNodes\n$Elements\n%d\n", 2 * nt + (shell ? 2 * nr : 0) + nt * nr);
   int e = 0;
   for (int side = 0; side < 2; ++side)
     for (int i = 0; i < nt; ++i) {
       int J = side ? NJ - 1 : 0;
       if (order == 1) fprintf(f, "%d 1 2 %d %d %d %d\n", ++e, side + 1, side + 1, ND(i, J), ND(i + 1, J));
-      else fprintf(f, "%d 8 2 %d %d %d %d %d\n", ++e, side + 1, side + 1, ND(o * i, J), ND(o * i + o, J), ND(o * i + 1, J));
+      else
+        fprintf(f, "%d 8 2 %d %d %d %d %d\n", ++e, side + 1, side + 1, ND(o * i, J), ND(o * i + o, J),
+                ND(o * i + 1, J));
     }
   for (int end = 0; shell && end < 2; ++end)
     for (int j = 0; j < nr; ++j) {
@@ -104,7 +110,9 @@ static int write_annulus_at(const char *path, int nt, int nr, int order, double 
   return write_polar(path, nt, nr, order, cx, 0);
 }
 
-static int write_annulus(const char *path, int nt, int nr, int order) { return write_annulus_at(path, nt, nr, order, 0.0); }
+static int write_annulus(const char *path, int nt, int nr, int order) {
+  return write_annulus_at(path, nt, nr, order, 0.0);
+}
 
 static int write_text(const char *path, const char *text) {
   FILE *f = fopen(path, "w");
@@ -166,9 +174,10 @@ static void rotation(void) {
       if (run_ok("slip_rotation", NULL, NULL, sets, "slip_rotation.h5")) return;
       double e, s, un;
       if (node_errors("slip_rotation.h5", 1.0, rigid, &e, &s, &un)) return;
-      printf("rigid rotation, %s cells, %s, t = 1: largest velocity error %.2e of %.3f, largest u.n at the walls "
-             "%.2e\n",
-             order == 1 ? "straight" : "curved", scheme ? "projection" : "monolithic", e, s, un);
+      printf(
+          "rigid rotation, %s cells, %s, t = 1: largest velocity error %.2e of %.3f, largest u.n at the walls "
+          "%.2e\n",
+          order == 1 ? "straight" : "curved", scheme ? "projection" : "monolithic", e, s, un);
       CHECK_MSG(e < 1e-12 * s && un < 1e-12 * s, "error %.3e, u.n %.3e", e, un);
     }
   /* PETSc's field split reads the rows as assembled: refused, before anything is written */
@@ -220,8 +229,7 @@ static void couette_order(void) {
       if (run_ok("slip_couette", NULL, NULL, NULL, "slip_couette.h5")) return;
       if (node_errors("slip_couette.h5", 0.0, couette, &e[k], &s, &un)) return;
       printf("couette, %s cells, %d x %d: largest nodal error %.3e (of %.4f), largest u.n at the walls %.1e%s\n",
-             order == 1 ? "straight" : "curved", nt, nr, e[k], s, un,
-             k ? "" : "");
+             order == 1 ? "straight" : "curved", nt, nr, e[k], s, un, k ? "" : "");
       if (k) printf("  observed order %.3f\n", log2(e[k - 1] / e[k]));
       CHECK_MSG(un < 1e-12 * s, "u.n %.3e at the walls", un);
     }
@@ -267,15 +275,17 @@ static void normals(void) {
         worst = fmax(worst, hypot(sl.normal[2 * k] - sg * x / r, sl.normal[2 * k + 1] - sg * y / r));
       }
       unsigned seed = 12345u;
-      for (int32_t i = 0; i < th->n_dofs; ++i) seed = seed * 1103515245u + 12345u, u[i] = (seed >> 8) / 16777216.0 - 0.5;
+      for (int32_t i = 0; i < th->n_dofs; ++i)
+        seed = seed * 1103515245u + 12345u, u[i] = (seed >> 8) / 16777216.0 - 0.5;
       double f0, s0, f1, s1;
       sl_slip_flux(th, ids, 2, axi, u, &f0, &s0);
       sl_slip_impose(&sl, u);
       sl_slip_flux(th, ids, 2, axi, u, &f1, &s1);
-      printf("normals, %s, %s cells: %d wall nodes rotated, %d corners, largest |n - radial| %.2e; flux of a random "
-             "velocity %.3e (of %.3f), made tangent %.2e (of %.3f)\n",
-             axi ? "axisymmetric" : "planar", order == 1 ? "straight" : "curved", (int)sl.n, (int)sl.n_corners, worst,
-             f0, s0, f1, s1);
+      printf(
+          "normals, %s, %s cells: %d wall nodes rotated, %d corners, largest |n - radial| %.2e; flux of a random "
+          "velocity %.3e (of %.3f), made tangent %.2e (of %.3f)\n",
+          axi ? "axisymmetric" : "planar", order == 1 ? "straight" : "curved", (int)sl.n, (int)sl.n_corners, worst, f0,
+          s0, f1, s1);
       CHECK(sl.n == 2 * 24 * 2 && sl.n_corners == 0);
       if (!axi) CHECK_MSG(worst < 1e-12, "normal off radial by %.3e", worst);
       CHECK_MSG(fabs(f1) < 1e-14 * s1 && fabs(f0) > 1e-3 * s0, "flux %.3e of %.3e (before: %.3e)", f1, s1, f0);
@@ -371,9 +381,10 @@ static void shell(void) {
       if (run_ok("slip_shell", NULL, NULL, sets, "slip_shell.h5")) return;
       double eu, un, ep;
       if (shell_errors("slip_shell.h5", &eu, &un, &ep)) return;
-      printf("rigid rotation in a spherical shell, axisymmetric, %s cells, %s, t = 1: velocity error %.2e of "
-             "2 Omega R, u.n on the spheres %.2e, pressure spread %.2e of rho Omega^2 R^2\n",
-             order == 1 ? "straight" : "curved", scheme ? "projection" : "monolithic", eu, un, ep);
+      printf(
+          "rigid rotation in a spherical shell, axisymmetric, %s cells, %s, t = 1: velocity error %.2e of "
+          "2 Omega R, u.n on the spheres %.2e, pressure spread %.2e of rho Omega^2 R^2\n",
+          order == 1 ? "straight" : "curved", scheme ? "projection" : "monolithic", eu, un, ep);
       CHECK_MSG(eu < 1e-12 && un < 1e-12 && ep < 1e-12, "error %.3e, u.n %.3e, pressure %.3e", eu, un, ep);
     }
   const char *wall[] = {"flow.scheme=monolithic", NULL};

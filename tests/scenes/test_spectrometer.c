@@ -91,8 +91,10 @@ static void inflow(void) {
   double em8, ep8, em16, ep16;
   if (steady_rows(8, &em8, &ep8) || steady_rows(16, &em16, &ep16)) return;
   double order = log2(em8 / em16);
-  printf("steady outflow: against the cell means %.3e (8 rows), %.3e (16 rows), order %.3f; against the row's "
-         "face value %.2e, %.2e\n", em8, em16, order, ep8, ep16);
+  printf(
+      "steady outflow: against the cell means %.3e (8 rows), %.3e (16 rows), order %.3f; against the row's "
+      "face value %.2e, %.2e\n",
+      em8, em16, order, ep8, ep16);
   CHECK_MSG(order > 1.9 && order < 2.1, "order %g", order);
   CHECK_MSG(ep8 < 1e-6 * 0.03 && ep16 < 1e-6 * 0.03, "%g %g", ep8, ep16);
 
@@ -110,8 +112,8 @@ static void inflow(void) {
   if (phi_points(out, 0.5, 8, xy, v)) return;
   double at_outlet = 0;
   for (int j = 0; j < 8; ++j) at_outlet = fmax(at_outlet, v[j]);
-  printf("conservation to t = 0.5: inventory %.15g, entered %.15g, relative %.2e; phi at the outlet %g\n",
-         inv - inv0, entered, (inv - inv0 - entered) / entered, at_outlet);
+  printf("conservation to t = 0.5: inventory %.15g, entered %.15g, relative %.2e; phi at the outlet %g\n", inv - inv0,
+         entered, (inv - inv0 - entered) / entered, at_outlet);
   CHECK_MSG(at_outlet == 0.0, "the front reached the outlet: phi = %g there", at_outlet);
   CHECK_MSG(inv0 == 0.0 && fabs(inv - inv0 - entered) < 1e-12 * entered, "%.17g against %.17g", inv - inv0, entered);
 
@@ -122,7 +124,6 @@ static void inflow(void) {
   CHECK_MSG(rc == 2 && strstr(d.msg, "[boundary.left] phi") && strstr(d.msg, "phi_max"), "rc %d: %s", rc, d.msg);
 }
 
-
 /* Two runs of tests/scenes/rotating_settling.ini: one in the frame's groups
  * through [parameters] (Ro = U / (Omega R) with U = R = 1, an Ekman number,
  * the terminal velocity in U, the density ratio), one with the dimensional
@@ -130,11 +131,21 @@ static void inflow(void) {
 static void parameters(void) {
   set_configs("tests/scenes");
   const double Ro = 0.7, E = 0.013, Ut = 0.011, eps = 0.5, phi0 = 0.2;
-  const char *grouped[] = {"parameters.Ro=0.7", "parameters.E=0.013", "parameters.Ut=0.011", "parameters.eps=0.5",
-                           "parameters.phi0=0.2", "parameters.Omega=1/Ro", "flow.rotation=Omega",
-                           "fluid.viscosity=E*Omega", "solid.density=1 + eps",
-                           "closure.hindered_settling.u_t=Ut", "mixture.reference_acceleration=Omega^2",
-                           "flow.rotation_centre=0*Ro, 0", "initial.phi=phi0 + 0*x", "time.end=1", NULL};
+  const char *grouped[] = {"parameters.Ro=0.7",
+                           "parameters.E=0.013",
+                           "parameters.Ut=0.011",
+                           "parameters.eps=0.5",
+                           "parameters.phi0=0.2",
+                           "parameters.Omega=1/Ro",
+                           "flow.rotation=Omega",
+                           "fluid.viscosity=E*Omega",
+                           "solid.density=1 + eps",
+                           "closure.hindered_settling.u_t=Ut",
+                           "mixture.reference_acceleration=Omega^2",
+                           "flow.rotation_centre=0*Ro, 0",
+                           "initial.phi=phi0 + 0*x",
+                           "time.end=1",
+                           NULL};
   char v[6][80];
   double Omega = 1 / Ro;
   snprintf(v[0], sizeof v[0], "flow.rotation=%.17g", Omega);
@@ -222,7 +233,7 @@ static int spectrometer_run_on(const char *mesh_file, const char *divert, const 
            k_is >= 0 && sc.n_times >= 3;
   CHECK_MSG(ok, "%s: the scalars are missing", out);
   if (!ok) return sl_output_scalars_free(&sc), 1;
-#define V(i, k) sc.values[(size_t)(i) * sc.n_names + (k)]
+#define V(i, k) sc.values[(size_t)(i)*sc.n_names + (k)]
   int a = sc.n_times - 2, b = sc.n_times - 1;
   double dt = sc.times[b] - sc.times[a];
   double din = V(b, k_in) - V(a, k_in), dio = V(b, k_io) - V(a, k_io);
@@ -291,13 +302,18 @@ static void spectrometer(void) {
     r2 += r * r * SP_DELTA * (h + 1) / 2000;
   }
   double expect = 0.01 * SP_Q / (2 * M_PI) + ut * s * alpha_in * f * r2;
-  printf("spectrometer (coarse, t = 1): solids in %.5e per unit time (4.148 with the slip: %.5e, %.2f %%); balance "
-         "of the boundaries %.1e\n", b.in_rate, expect, 100 * (b.in_rate / expect - 1), b.conservation);
-  printf("  efficiency (passing the slot) %.1f %% -> %.1f %% diverted (thesis 75-80 -> 90-95); from the inventories "
-         "downstream of the slot %.1f %% -> %.1f %%\n", 100 * b.eff, 100 * v.eff, 100 * b.eff_inventory,
-         100 * v.eff_inventory);
-  printf("  most retrograde u_theta in the slot %.3f -> %.3f diverted (thesis -1.16 -> -1.06); largest phi on the "
-         "outer channel's outer wall %.3f (inflow %.4f)\n", b.swirl, v.swirl, b.wall_phi, alpha_in);
+  printf(
+      "spectrometer (coarse, t = 1): solids in %.5e per unit time (4.148 with the slip: %.5e, %.2f %%); balance "
+      "of the boundaries %.1e\n",
+      b.in_rate, expect, 100 * (b.in_rate / expect - 1), b.conservation);
+  printf(
+      "  efficiency (passing the slot) %.1f %% -> %.1f %% diverted (thesis 75-80 -> 90-95); from the inventories "
+      "downstream of the slot %.1f %% -> %.1f %%\n",
+      100 * b.eff, 100 * v.eff, 100 * b.eff_inventory, 100 * v.eff_inventory);
+  printf(
+      "  most retrograde u_theta in the slot %.3f -> %.3f diverted (thesis -1.16 -> -1.06); largest phi on the "
+      "outer channel's outer wall %.3f (inflow %.4f)\n",
+      b.swirl, v.swirl, b.wall_phi, alpha_in);
   CHECK_MSG(b.conservation < 1e-12 && v.conservation < 1e-12, "%g %g", b.conservation, v.conservation);
   CHECK_MSG(fabs(b.in_rate / expect - 1) < 0.01, "%g against %g", b.in_rate, expect);
   CHECK_MSG(b.wall_phi > 1.5 * alpha_in, "no sediment: %g", b.wall_phi);
@@ -317,10 +333,11 @@ static void spectrometer_mesh(void) {
   if (spectrometer_run("0", "spectrometer_mesh6.h5", &c6) ||
       spectrometer_run_on("configs/spectrometer.msh", "0", "spectrometer_mesh12.h5", &c12))
     return;
-  printf("spectrometer, t = 0.5-1: lost by the inner outlet %.1f %% (6 across), %.1f %% (12 across); the thesis's "
-         "inventory measure at t = 1 %.1f %%, %.1f %%; balance %.1e, %.1e\n",
-         100 * c6.lost, 100 * c12.lost, 100 * c6.eff_inventory, 100 * c12.eff_inventory, c6.conservation,
-         c12.conservation);
+  printf(
+      "spectrometer, t = 0.5-1: lost by the inner outlet %.1f %% (6 across), %.1f %% (12 across); the thesis's "
+      "inventory measure at t = 1 %.1f %%, %.1f %%; balance %.1e, %.1e\n",
+      100 * c6.lost, 100 * c12.lost, 100 * c6.eff_inventory, 100 * c12.eff_inventory, c6.conservation,
+      c12.conservation);
   CHECK_MSG(c12.lost < 0.5 * c6.lost && c12.lost > 0, "lost %.4f (6 across), %.4f (12 across)", c6.lost, c12.lost);
   CHECK_MSG(c12.eff_inventory > c6.eff_inventory, "%.4f -> %.4f", c6.eff_inventory, c12.eff_inventory);
   CHECK_MSG(c12.conservation < 1e-12, "%g", c12.conservation);
@@ -330,11 +347,14 @@ int main(int argc, char **argv) {
   static const struct {
     const char *name;
     void (*run)(void);
-  } parts[] = {{"inflow", inflow}, {"parameters", parameters}, {"spectrometer", spectrometer},
-                 {"spectrometer_mesh", spectrometer_mesh}};
+  } parts[] = {{"inflow", inflow},
+               {"parameters", parameters},
+               {"spectrometer", spectrometer},
+               {"spectrometer_mesh", spectrometer_mesh}};
   int ran = 0;
   for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
     if (argc < 2 || strcmp(argv[1], parts[k].name) == 0) parts[k].run(), ++ran;
-  if (!ran) return fprintf(stderr, "unknown part '%s' (inflow, parameters, spectrometer, spectrometer_mesh)\n", argv[1]), 2;
+  if (!ran)
+    return fprintf(stderr, "unknown part '%s' (inflow, parameters, spectrometer, spectrometer_mesh)\n", argv[1]), 2;
   return sl_test_summary();
 }

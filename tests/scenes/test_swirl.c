@@ -90,7 +90,8 @@ static void viscometer(void) {
   if (run_ok("viscometer_two_phase", NULL, NULL, NULL, out)) return;
   int n = 0, nv = 0, ns = 0;
   double tf = 0.0, *phi = field_at(out, "phi", INFINITY, &n, &tf);
-  double *uf = field_at(out, "velocity_fluid", INFINITY, &nv, NULL), *sw = field_at(out, "swirl_fluid", INFINITY, &ns, NULL);
+  double *uf = field_at(out, "velocity_fluid", INFINITY, &nv, NULL),
+         *sw = field_at(out, "swirl_fluid", INFINITY, &ns, NULL);
   CHECK_MSG(n == NX * NY && nv == NX * NY && ns == NX * NY, "%d, %d, %d cells", n, nv, ns);
   if (!phi || !uf || !sw || n != NX * NY || nv != NX * NY || ns != NX * NY) {
     free(phi), free(uf), free(sw);
@@ -108,7 +109,8 @@ static void viscometer(void) {
   mean /= area, flux /= area;
   /* the single-phase profile's peak over its mean, on a fine quadrature (r dr) */
   for (int k = 0; k < 20000; ++k) {
-    double r = RI + (k + 0.5) * (RO - RI) / 20000, u = RO * RO - r * r + (RO * RO - RI * RI) * log(r / RO) / log(RO / RI);
+    double r = RI + (k + 0.5) * (RO - RI) / 20000,
+           u = RO * RO - r * r + (RO * RO - RI * RI) * log(r / RO) / log(RO / RI);
     pmean += r * u, parea += r, ppeak = fmax(ppeak, u);
   }
   pmean /= parea;
@@ -117,10 +119,11 @@ static void viscometer(void) {
     for (int i = 0; i < NX; ++i) bed_lo = fmin(bed_lo, phi[j * NX + i]), bed_hi = fmax(bed_hi, phi[j * NX + i]);
   double sw_in = sw[ROW * NX], sw_out = sw[ROW * NX + NX - 1];
   double err = scalar(out, "solids_conservation_error", tf);
-  printf("  viscometer (12 x 40): steady at t = %.2f s; bed phi %.4f-%.4f below z = 50 mm; at z = 31 mm the fluid's "
-         "peak/mean %.4f (single-phase annular Poiseuille %.4f, pipe 2), superficial flux %.7f m/s (inflow %.4f); "
-         "swirl %.4f m/s at the rotor's cell, %.2e at the vessel's; conservation %.1e\n",
-         tf, bed_lo, bed_hi, peak / mean, ppeak / pmean, flux, U, sw_in, sw_out, err);
+  printf(
+      "  viscometer (12 x 40): steady at t = %.2f s; bed phi %.4f-%.4f below z = 50 mm; at z = 31 mm the fluid's "
+      "peak/mean %.4f (single-phase annular Poiseuille %.4f, pipe 2), superficial flux %.7f m/s (inflow %.4f); "
+      "swirl %.4f m/s at the rotor's cell, %.2e at the vessel's; conservation %.1e\n",
+      tf, bed_lo, bed_hi, peak / mean, ppeak / pmean, flux, U, sw_in, sw_out, err);
   CHECK_MSG(tf < 199.0, "viscometer: not steady by the end");
   CHECK_MSG(fabs(ppeak / pmean - 1.5) < 0.02, "annular Poiseuille peak/mean %.4f", ppeak / pmean);
   CHECK_MSG(peak / mean < 1.02, "viscometer: the bed's fluid profile peak/mean %.4f is not flat", peak / mean);

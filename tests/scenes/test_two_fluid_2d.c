@@ -69,9 +69,11 @@ static void one_column(void) {
     worst = fmax(worst, last);
     free(a), free(b);
   }
-  printf("  one column (1 x 100) against the 1-D column, Pringle (2001) step to t = %g s: "
-         "max |dphi| %.2e over the outputs, "
-         "%.2e at the end\n", t_end, worst, last);
+  printf(
+      "  one column (1 x 100) against the 1-D column, Pringle (2001) step to t = %g s: "
+      "max |dphi| %.2e over the outputs, "
+      "%.2e at the end\n",
+      t_end, worst, last);
   CHECK_MSG(worst <= 5e-4, "one column: phi differs from the 1-D column by %.3g", worst);
   if (!quick) CHECK_MSG(last <= 1e-6, "one column: %.3g apart at the end", last);
   CHECK_MSG(fabs(scalar("tf2_col2.h5", "solids_conservation_error", t_end)) < 1e-12, "one column: not conserved");
@@ -102,9 +104,10 @@ static void fluidized_bed(void) {
         worst = fmax(worst, fabs(phi[j * nx + i] - phi_eq));
         lateral = fmax(lateral, fabs(phi[j * nx + i] - phi[j * nx]));
       }
-    printf("  fluidized_bed_2d (%s, 5 x 50): steady at t = %.1f s, porosity %.5f (Richardson-Zaki %.5f), max "
-           "|dphi| %.1e over %d rows, columns within %.1e\n",
-           k ? "axisymmetric" : "planar", tf, 1.0 - phi[0], 1.0 - phi_eq, worst, top, lateral);
+    printf(
+        "  fluidized_bed_2d (%s, 5 x 50): steady at t = %.1f s, porosity %.5f (Richardson-Zaki %.5f), max "
+        "|dphi| %.1e over %d rows, columns within %.1e\n",
+        k ? "axisymmetric" : "planar", tf, 1.0 - phi[0], 1.0 - phi_eq, worst, top, lateral);
     CHECK_MSG(top >= 10, "a bed of %d rows", top);
     CHECK_MSG(worst <= 1e-3, "porosity off Richardson-Zaki by %.3g", worst);
     CHECK_MSG(lateral <= 1e-5, "the columns differ by %.3g", lateral);
@@ -121,7 +124,8 @@ static void fluidized_bed(void) {
  * columns stay alike: the smeared top of the suspension, stably stratified, does not overturn at dt = 2 s. */
 static void settled_bed(void) {
   const char *sets1[] = {"mesh.cells=50", NULL};
-  if (run_ok("settled_bed", NULL, NULL, sets1, "tf2_rest1.h5") || run_ok("settled_bed_2d", NULL, NULL, NULL, "tf2_rest2.h5"))
+  if (run_ok("settled_bed", NULL, NULL, sets1, "tf2_rest1.h5") ||
+      run_ok("settled_bed_2d", NULL, NULL, NULL, "tf2_rest2.h5"))
     return;
   int n1 = 0, n2 = 0;
   double t1 = 0.0, t2 = 0.0, *a = field_at("tf2_rest1.h5", "phi", INFINITY, &n1, &t1);
@@ -132,7 +136,8 @@ static void settled_bed(void) {
       for (int i = 0; i < 4; ++i) worst = fmax(worst, fabs(b[4 * j + i] - a[j]));
     /* the columns during the settling (t = 500 s: the sediment growing, the top still falling) */
     int n = 0, nu = 0;
-    double *p = field_at("tf2_rest2.h5", "phi", 500.0, &n, NULL), *u = field_at("tf2_rest2.h5", "velocity_fluid", 500.0, &nu, NULL);
+    double *p = field_at("tf2_rest2.h5", "phi", 500.0, &n, NULL),
+           *u = field_at("tf2_rest2.h5", "velocity_fluid", 500.0, &nu, NULL);
     for (int j = 0; p && u && j < n1; ++j)
       for (int i = 1; i < 4; ++i) {
         lateral = fmax(lateral, fabs(p[4 * j + i] - p[4 * j + i - 1]));
@@ -142,9 +147,10 @@ static void settled_bed(void) {
   } else {
     CHECK_MSG(0, "settled bed: %d and %d cells", n1, n2);
   }
-  printf("  settled_bed_2d (4 x 50, dt = 2 s): at rest at t = %.0f s (1-D: %.0f s), every column within %.1e of the "
-         "1-D column; at t = 500 s the columns within %.1e, horizontal fluid velocity below %.1e m/s\n",
-         t2, t1, worst, lateral, flow);
+  printf(
+      "  settled_bed_2d (4 x 50, dt = 2 s): at rest at t = %.0f s (1-D: %.0f s), every column within %.1e of the "
+      "1-D column; at t = 500 s the columns within %.1e, horizontal fluid velocity below %.1e m/s\n",
+      t2, t1, worst, lateral, flow);
   CHECK_MSG(worst <= 1e-6, "settled bed: 2-D off the 1-D column by %.3g", worst);
   CHECK_MSG(lateral <= 1e-6 && flow <= 1e-6, "settled bed: the columns differ by %.3g, horizontal flow %.3g m/s",
             lateral, flow);
@@ -192,8 +198,10 @@ static void poiseuille(void) {
       e[r] = fabs(duct_gradient(ducts[k].scene, across, along, ducts[k].axial_y) / ducts[k].exact - 1.0);
     }
     double o1 = log2(e[0] / e[1]), o2 = log2(e[1] / e[2]);
-    printf("  clear fluid, %s = %.3g Pa/m: relative error %.2e, %.2e, %.2e on 8, 16, 32 cells across (order %.2f, "
-           "%.2f)\n", ducts[k].label, ducts[k].exact, e[0], e[1], e[2], o1, o2);
+    printf(
+        "  clear fluid, %s = %.3g Pa/m: relative error %.2e, %.2e, %.2e on 8, 16, 32 cells across (order %.2f, "
+        "%.2f)\n",
+        ducts[k].label, ducts[k].exact, e[0], e[1], e[2], o1, o2);
     CHECK_MSG(e[2] <= 2e-3, "%s: pressure gradient off by %.3g", ducts[k].scene, e[2]);
     CHECK_MSG(o1 > 1.8 && o2 > 1.8, "%s: order %.2f, %.2f (second expected)", ducts[k].scene, o1, o2);
   }
@@ -205,8 +213,12 @@ static void poiseuille(void) {
  * bounded and conserving with the outflow counted, no solids left at the end. */
 static void blow_out(void) {
   if (quick) return; /* 15 s of CPU in the normal build (the 1-D blow-outs run in the sanitizer build) */
-  const char *sets[] = {"boundary.bottom.velocity=t <= 0 ? 0.01 : 0.5", "time.dt=0.1", "time.end=10",
-                        "output.every=1", "two_fluid.steady_tolerance=0", NULL};
+  const char *sets[] = {"boundary.bottom.velocity=t <= 0 ? 0.01 : 0.5",
+                        "time.dt=0.1",
+                        "time.end=10",
+                        "output.every=1",
+                        "two_fluid.steady_tolerance=0",
+                        NULL};
   const char *out = "tf2_blow.h5";
   sluice_summary res;
   sl_diag d = {{0}};
@@ -229,8 +241,10 @@ static void blow_out(void) {
     free(phi), free(us);
   }
   double left = scalar(out, "solids_inventory", times[ns - 1]);
-  printf("  blow-out (2-D, U 0.01 -> 0.5 m/s, dt = 0.1 s): conservation within %.1e, solids left %.1e m^2 of "
-         "%.4f; %s\n", worst, left, 0.05 * 0.3 * 0.4, res.coupling_summary);
+  printf(
+      "  blow-out (2-D, U 0.01 -> 0.5 m/s, dt = 0.1 s): conservation within %.1e, solids left %.1e m^2 of "
+      "%.4f; %s\n",
+      worst, left, 0.05 * 0.3 * 0.4, res.coupling_summary);
   CHECK_MSG(bad == 0, "blow-out: %d values outside [0, phi_max] or not finite", bad);
   CHECK_MSG(worst < 1e-12, "blow-out: conservation error %.3g", worst);
   CHECK_MSG(left < 1e-9 * 0.006, "blow-out: %.3g m^2 of solids left", left);
@@ -244,20 +258,22 @@ static void restart(void) {
       run_ok("fluidized_bed_2d", NULL, NULL, half, "tf2_half.h5"))
     return;
   sl_diag d = {{0}};
-  scene_request q = {.configs = configs, .scene = "fluidized_bed_2d", .sets = full, .out = "tf2_cont.h5",
-                     .restart = "tf2_half.h5"};
+  scene_request q = {
+      .configs = configs, .scene = "fluidized_bed_2d", .sets = full, .out = "tf2_cont.h5", .restart = "tf2_half.h5"};
   int rc = scene_run(&q, NULL, &d);
   CHECK_MSG(rc == 0, "restart: %s", d.msg);
   const char *fields[4] = {"phi", "velocity_solid", "velocity_fluid", "pressure"};
   for (int f = 0; f < 4 && rc == 0; ++f) {
     int n = 0, m = 0;
-    double *a = field_at("tf2_full.h5", fields[f], 2.0, &n, NULL), *b = field_at("tf2_cont.h5", fields[f], 2.0, &m, NULL);
+    double *a = field_at("tf2_full.h5", fields[f], 2.0, &n, NULL),
+           *b = field_at("tf2_cont.h5", fields[f], 2.0, &m, NULL);
     int comp = f == 1 || f == 2 ? 3 : 1;
     double diff = 0.0, size = 0.0;
-    for (int i = 0; a && b && n == m && i < n * comp; ++i) diff = fmax(diff, fabs(a[i] - b[i])), size = fmax(size, fabs(a[i]));
+    for (int i = 0; a && b && n == m && i < n * comp; ++i)
+      diff = fmax(diff, fabs(a[i] - b[i])), size = fmax(size, fabs(a[i]));
     printf("  restart: %s within %.1e of the uninterrupted run (largest %.3g)\n", fields[f], diff, size);
-    CHECK_MSG(a && b && n == m && diff <= 1e-10 * size, "restart: %s differs by %.3g (largest %.3g)", fields[f],
-              diff, size);
+    CHECK_MSG(a && b && n == m && diff <= 1e-10 * size, "restart: %s differs by %.3g (largest %.3g)", fields[f], diff,
+              size);
     free(a), free(b);
   }
 }

@@ -70,9 +70,9 @@ static void couette_solve(couette *c) {
   const double H = c->H, a = c->a, b = c->b, k = c->k, l = c->l, U = c->U, ch = cosh(l * H), sh = sinh(l * H);
   /* unknowns A, B, C, D */
   double M[4][5] = {
-      {1.0, 0.0, b, 0.0, 0.0},                                    /* (a + b) u_f(0) = 0 */
-      {1.0, H, b * ch, b * sh, U * (a + b)},                      /* (a + b) u_f(H) = (a + b) U */
-      {-k, b, k * a, -b * a * l, 0.0},                            /* b u_s'(0) = k u_s(0) */
+      {1.0, 0.0, b, 0.0, 0.0},               /* (a + b) u_f(0) = 0 */
+      {1.0, H, b * ch, b * sh, U * (a + b)}, /* (a + b) u_f(H) = (a + b) U */
+      {-k, b, k * a, -b * a * l, 0.0},       /* b u_s'(0) = k u_s(0) */
       {k, b + k * H, -b * a * l * sh - k * a * ch, -b * a * l * ch - k * a * sh, k * U * (a + b)},
       /* b u_s'(H) = k (U - u_s(H)), times (a + b) */
   };
@@ -159,10 +159,11 @@ static void couette_slip(void) {
     double tf1 = scalar("couette_slip.h5", "wall_shear_stress_fluid_top", INFINITY);
     double exact_ts0 = c.b * couette_dus(&c, 0.0), exact_tf0 = c.a * couette_duf(&c, 0.0);
     err_w[r] = fabs(ts0 - exact_ts0) / exact_ts0;
-    printf("couette_slip %2d cells across: |u_s - exact| %.3e, |u_f - exact| %.3e (of U); bottom wall: solids slip "
-           "%.6e (exact %.6e), solids stress %.6e (exact %.6e), fluid %.6e (exact %.6e); balance %.2e\n",
-           ny[r], err_s[r], err_f[r], slip0, couette_us(&c, 0.0), ts0, exact_ts0, tf0, exact_tf0,
-           (ts0 + tf0 + ts1 + tf1) / (ts0 + tf0));
+    printf(
+        "couette_slip %2d cells across: |u_s - exact| %.3e, |u_f - exact| %.3e (of U); bottom wall: solids slip "
+        "%.6e (exact %.6e), solids stress %.6e (exact %.6e), fluid %.6e (exact %.6e); balance %.2e\n",
+        ny[r], err_s[r], err_f[r], slip0, couette_us(&c, 0.0), ts0, exact_ts0, tf0, exact_tf0,
+        (ts0 + tf0 + ts1 + tf1) / (ts0 + tf0));
     CHECK_MSG(vmax < 1e-12, "couette_slip: no flow across the layer (%.2e m/s)", vmax);
     CHECK_MSG(spread < 1e-12, "couette_slip: the same profile in every column (%.2e m/s)", spread);
     /* the stress at a wall is the wall closure's at the slip the scheme found */
@@ -218,8 +219,12 @@ static void kinetic_shear(void) {
                 cases[k].rtol);
   }
   /* started on the Couette profile ([initial] velocities): at the balance after one step */
-  const char *start[] = {"initial.velocity_fluid=100*y, 0", "initial.velocity_solid=100*y, 0", "time.end=10",
-                         "output.every=10", "two_fluid.interphase_dissipation=false", NULL};
+  const char *start[] = {"initial.velocity_fluid=100*y, 0",
+                         "initial.velocity_solid=100*y, 0",
+                         "time.end=10",
+                         "output.every=10",
+                         "two_fluid.interphase_dissipation=false",
+                         NULL};
   if (run_ok("two_fluid_2d/kinetic_shear", NULL, NULL, start, "kinetic_start.h5")) return;
   double theta_eq = mu0 * G * G / gam0;
   int n = 0;
@@ -237,11 +242,17 @@ static void kinetic_shear(void) {
  * its spread across the cells in *spread. */
 static double transported_theta(const char *dt, const char *end, const char *restart, const char *out, double t,
                                 double *spread) {
-  const char *sets[] = {"two_fluid.granular_temperature=transport", "two_fluid.interphase_dissipation=false",
-                        "initial.velocity_fluid=100*y, 0", "initial.velocity_solid=100*y, 0", "initial.theta=1e-6",
-                        dt, end, "output.every=0.025", NULL};
-  scene_request q = {.configs = configs, .scene = "two_fluid_2d/kinetic_shear", .sets = sets, .out = out,
-                     .restart = restart};
+  const char *sets[] = {"two_fluid.granular_temperature=transport",
+                        "two_fluid.interphase_dissipation=false",
+                        "initial.velocity_fluid=100*y, 0",
+                        "initial.velocity_solid=100*y, 0",
+                        "initial.theta=1e-6",
+                        dt,
+                        end,
+                        "output.every=0.025",
+                        NULL};
+  scene_request q = {
+      .configs = configs, .scene = "two_fluid_2d/kinetic_shear", .sets = sets, .out = out, .restart = restart};
   sl_diag d = {{0}};
   if (scene_run(&q, NULL, &d)) {
     CHECK_MSG(0, "kinetic_shear, transported theta: %s", d.msg);
@@ -268,8 +279,10 @@ static void transported_shear(void) {
   for (int k = 0; k < 3; ++k) {
     double spread, th = transported_theta(dts[k], "time.end=0.05", NULL, "kinetic_t.h5", t1, &spread);
     err[k] = fabs(th - exact) / exact;
-    printf("kinetic_shear, transported theta, %s: theta(0.05) = %.10e, exact %.10e, relative error %.3e, spread "
-           "%.1e\n", dts[k], th, exact, err[k], spread);
+    printf(
+        "kinetic_shear, transported theta, %s: theta(0.05) = %.10e, exact %.10e, relative error %.3e, spread "
+        "%.1e\n",
+        dts[k], th, exact, err[k], spread);
     CHECK_MSG(spread < 1e-10, "theta uniform: spread %.2e", spread);
   }
   for (int k = 1; k < 3; ++k) {
@@ -310,9 +323,11 @@ static void bagnold_shear(void) {
     const char *sets[] = {runs[k].speed, runs[k].dt, runs[k].end, "output.every=1e9", NULL};
     if (run_ok("two_fluid_2d/bagnold_shear", NULL, NULL, sets, "bagnold_shear.h5")) return;
     const char *f = "bagnold_shear.h5";
-    tau[k] = scalar(f, "wall_shear_stress_solid_bottom", INFINITY), bn[k] = scalar(f, "bagnold_number_bottom", INFINITY);
+    tau[k] = scalar(f, "wall_shear_stress_solid_bottom", INFINITY),
+    bn[k] = scalar(f, "bagnold_number_bottom", INFINITY);
     double top = scalar(f, "wall_shear_stress_solid_top", INFINITY);
-    double fb = scalar(f, "wall_shear_stress_fluid_bottom", INFINITY), ft = scalar(f, "wall_shear_stress_fluid_top", INFINITY);
+    double fb = scalar(f, "wall_shear_stress_fluid_bottom", INFINITY),
+           ft = scalar(f, "wall_shear_stress_fluid_top", INFINITY);
     printf("bagnold_shear %s: solids wall stress %.6g Pa, Bagnold number %.4g; balance %.2e\n", runs[k].speed, tau[k],
            bn[k], (tau[k] + top + fb + ft) / (tau[k] + fb));
     /* grain-inertia: Wen & Yu's K in the granular sink 3 K theta, at the phases' round-off slip, is not smooth
@@ -354,9 +369,12 @@ static double kinetic_pressure_spread(const char *file, double *phi_spread, doub
  * Couette flow between them: slips positive below max_slip, slips and solids stresses opposite, the four
  * stresses balanced, all to rtol. */
 static void wall_pair(const char *file, double max_slip, double rtol, double v[6]) {
-  static const char *const names[6] = {"wall_shear_stress_solid_bottom", "wall_shear_stress_solid_top",
-                                       "wall_shear_stress_fluid_bottom", "wall_shear_stress_fluid_top",
-                                       "wall_slip_bottom",               "wall_slip_top"};
+  static const char *const names[6] = {"wall_shear_stress_solid_bottom",
+                                       "wall_shear_stress_solid_top",
+                                       "wall_shear_stress_fluid_bottom",
+                                       "wall_shear_stress_fluid_top",
+                                       "wall_slip_bottom",
+                                       "wall_slip_top"};
   for (int q = 0; q < 6; ++q) v[q] = scalar(file, names[q], INFINITY);
   CHECK(v[4] > 0.0 && v[4] < max_slip);
   CHECK_CLOSE(v[5], -v[4], rtol);
@@ -365,19 +383,20 @@ static void wall_pair(const char *file, double max_slip, double rtol, double v[6
 }
 
 static void johnson_jackson_shear(void) {
-  const char *frames[3][4] = {{"boundary.bottom.velocity=0", "boundary.top.velocity=1", NULL, NULL},
-                              {"boundary.bottom.velocity=-0.5", "boundary.top.velocity=0.5", NULL, NULL},
-                              {"boundary.bottom.velocity=0", "boundary.top.velocity=1",
-                               "two_fluid.kinetic_pressure=false", NULL}};
+  const char *frames[3][4] = {
+      {"boundary.bottom.velocity=0", "boundary.top.velocity=1", NULL, NULL},
+      {"boundary.bottom.velocity=-0.5", "boundary.top.velocity=0.5", NULL, NULL},
+      {"boundary.bottom.velocity=0", "boundary.top.velocity=1", "two_fluid.kinetic_pressure=false", NULL}};
   double v[3][6];
   for (int k = 0; k < 3; ++k) {
     if (run_ok("two_fluid_2d/johnson_jackson_shear", NULL, NULL, frames[k], "jj_shear.h5")) return;
     wall_pair("jj_shear.h5", 1.0, 1e-7, v[k]);
     double phi_spread, phi_mean, ps_spread = kinetic_pressure_spread("jj_shear.h5", &phi_spread, &phi_mean);
-    printf("johnson_jackson_shear, %s, %s%s%s: solids slip %.8g, %.8g m/s; stresses solids %.8g, %.8g, fluid %.8g, "
-           "%.8g Pa; phi spread %.4f, mean %.15f; kinetic p_s spread %.2e\n", frames[k][0], frames[k][1],
-           frames[k][2] ? ", " : "", frames[k][2] ? frames[k][2] : "", v[k][4], v[k][5], v[k][0], v[k][1], v[k][2],
-           v[k][3], phi_spread, phi_mean, ps_spread);
+    printf(
+        "johnson_jackson_shear, %s, %s%s%s: solids slip %.8g, %.8g m/s; stresses solids %.8g, %.8g, fluid %.8g, "
+        "%.8g Pa; phi spread %.4f, mean %.15f; kinetic p_s spread %.2e\n",
+        frames[k][0], frames[k][1], frames[k][2] ? ", " : "", frames[k][2] ? frames[k][2] : "", v[k][4], v[k][5],
+        v[k][0], v[k][1], v[k][2], v[k][3], phi_spread, phi_mean, ps_spread);
     CHECK_MSG(fabs(phi_mean - 0.4) < 1e-12, "solids conserved: mean phi %.15f", phi_mean);
     if (k < 2) {
       /* the kinetic pressure moves the solids until the normal stress is uniform across the gap (no gravity, no
@@ -417,15 +436,19 @@ static void johnson_jackson_layer(void) {
     double tau2 = scalar("jj_layer_2d.h5", "wall_shear_stress_solid_bottom", INFINITY);
     double tau1 = scalar("jj_layer_1d.h5", "wall_shear_stress_solid_left", INFINITY);
     dslip[k] = fabs(slip2 - slip1), dtau[k] = fabs(tau2 - tau1);
-    printf("johnson_jackson_layer, %d cells across: walls' slip 2-D %.7f, 1-D %.7f m/s; solids wall stress 2-D "
-           "%.6f, 1-D %.6f Pa\n", n[k], slip2, slip1, tau2, tau1);
+    printf(
+        "johnson_jackson_layer, %d cells across: walls' slip 2-D %.7f, 1-D %.7f m/s; solids wall stress 2-D "
+        "%.6f, 1-D %.6f Pa\n",
+        n[k], slip2, slip1, tau2, tau1);
     /* antisymmetric to 1e-7 from 128 cells (on 64, 1.6e-7, whatever the iteration's tolerance) */
     if (!quick) CHECK_CLOSE(scalar("jj_layer_2d.h5", "wall_slip_top", INFINITY), -slip2, 1e-7);
   }
   for (int k = 1; k < 3; ++k) {
     double os = log2(dslip[k - 1] / dslip[k]), ot = log2(dtau[k - 1] / dtau[k]);
-    printf("johnson_jackson_layer: 2-D - 1-D, %d -> %d cells: slip %.3e -> %.3e (order %.2f), stress %.3e -> %.3e "
-           "(order %.2f)\n", n[k - 1], n[k], dslip[k - 1], dslip[k], os, dtau[k - 1], dtau[k], ot);
+    printf(
+        "johnson_jackson_layer: 2-D - 1-D, %d -> %d cells: slip %.3e -> %.3e (order %.2f), stress %.3e -> %.3e "
+        "(order %.2f)\n",
+        n[k - 1], n[k], dslip[k - 1], dslip[k], os, dtau[k - 1], dtau[k], ot);
     double floor = quick ? (k == 1 ? 0.6 : 1.3) : 1.6; /* 32 -> 64 cells: 1.0, 64 -> 128: 1.46 */
     CHECK_MSG(os > floor && ot > floor, "the 2-D and 1-D walls converge together: orders %.2f, %.2f", os, ot);
   }
@@ -439,15 +462,17 @@ static void johnson_jackson_layer(void) {
  * iteration (no step from rest) until the Anderson acceleration; now steady, antisymmetric, balanced, and the
  * same state with the walls at (0, 0.1) and (-0.05, 0.05) m/s. */
 static void navier_kinetic_shear(void) {
-  const char *frames[2][4] = {{"closure.granular.model=lun", "boundary.top.velocity=0.1", NULL, NULL},
-                              {"closure.granular.model=lun", "boundary.bottom.velocity=-0.05",
-                               "boundary.top.velocity=0.05", NULL}};
+  const char *frames[2][4] = {
+      {"closure.granular.model=lun", "boundary.top.velocity=0.1", NULL, NULL},
+      {"closure.granular.model=lun", "boundary.bottom.velocity=-0.05", "boundary.top.velocity=0.05", NULL}};
   double v[2][6];
   for (int k = quick ? 1 : 0; k < 2; ++k) {
     if (run_ok("two_fluid_2d/couette_slip", NULL, NULL, frames[k], "navier_kinetic.h5")) return;
     wall_pair("navier_kinetic.h5", 0.1, 1e-9, v[k]);
-    printf("couette_slip with Lun's theory, %s: solids slip %.10g, %.10g m/s; stresses solids %.10g, %.10g, fluid "
-           "%.10g, %.10g Pa\n", frames[k][1], v[k][4], v[k][5], v[k][0], v[k][1], v[k][2], v[k][3]);
+    printf(
+        "couette_slip with Lun's theory, %s: solids slip %.10g, %.10g m/s; stresses solids %.10g, %.10g, fluid "
+        "%.10g, %.10g Pa\n",
+        frames[k][1], v[k][4], v[k][5], v[k][0], v[k][1], v[k][2], v[k][3]);
   }
   if (!quick)
     for (int q = 0; q < 6; ++q) CHECK_CLOSE(v[1][q], v[0][q], 1e-8);

@@ -123,19 +123,22 @@ static void one_column(void) {
         phi_apart(c1, c1_o1, cy, cy_o1, t_end, &dy, &tmp) || phi_apart(c1, c1_o1, cx, cx_o1, t_end, &dx, &tmp) ||
         phi_apart(c1, NULL, c1_o1, NULL, t_end, &change, &tmp))
       return;
-    printf("  one column at order 2, %s, against the 1-D column, Pringle (2001) step to t = %d s: "
-           "max |dphi| over the outputs "
-           "%.2e (1 x 100), %.2e (100 x 1, along x), at the end %.1e, %.1e; the change from order 1 alike within "
-           "%.2e, %.2e (the change itself %.2e)\n",
-           limiters[k], t_end, wy, wx, ly, lx, dy, dx, change);
-    CHECK_MSG(wy <= 2.5e-4 && wx <= 2.5e-4, "one column, %s: phi differs from the 1-D column by %.3g, along x by "
-              "%.3g", limiters[k], wy, wx);
-    CHECK_MSG(dy <= 3e-5 && dx <= 3e-5, "one column, %s: order 2 changes phi differently from the 1-D column, by "
-              "%.3g, along x by %.3g", limiters[k], dy, dx);
-    CHECK_MSG(change >= 100.0 * fmax(dy, dx), "one column, %s: order 2 changes phi by %.3g only", limiters[k],
-              change);
-    if (!quick)
-      CHECK_MSG(ly <= 1e-6 && lx <= 1e-6, "one column, %s: %.3g, %.3g apart at the end", limiters[k], ly, lx);
+    printf(
+        "  one column at order 2, %s, against the 1-D column, Pringle (2001) step to t = %d s: "
+        "max |dphi| over the outputs "
+        "%.2e (1 x 100), %.2e (100 x 1, along x), at the end %.1e, %.1e; the change from order 1 alike within "
+        "%.2e, %.2e (the change itself %.2e)\n",
+        limiters[k], t_end, wy, wx, ly, lx, dy, dx, change);
+    CHECK_MSG(wy <= 2.5e-4 && wx <= 2.5e-4,
+              "one column, %s: phi differs from the 1-D column by %.3g, along x by "
+              "%.3g",
+              limiters[k], wy, wx);
+    CHECK_MSG(dy <= 3e-5 && dx <= 3e-5,
+              "one column, %s: order 2 changes phi differently from the 1-D column, by "
+              "%.3g, along x by %.3g",
+              limiters[k], dy, dx);
+    CHECK_MSG(change >= 100.0 * fmax(dy, dx), "one column, %s: order 2 changes phi by %.3g only", limiters[k], change);
+    if (!quick) CHECK_MSG(ly <= 1e-6 && lx <= 1e-6, "one column, %s: %.3g, %.3g apart at the end", limiters[k], ly, lx);
     CHECK_MSG(fabs(scalar(cy, "solids_conservation_error", t_end)) < 1e-12 &&
                   fabs(scalar(cx, "solids_conservation_error", t_end)) < 1e-12,
               "one column: not conserved");
@@ -165,12 +168,12 @@ static double pulse_error(int n, int order, int limiter, const char *grading, in
   snprintf(grad, sizeof grad, "mesh.grading_x=geometric:%s", grading ? grading : "1");
   snprintf(init, sizeof init, "initial.phi=%g * exp(-((x - %g) / %g) * ((x - %g) / %g))", P_A, 1.0 - P_C, P_W,
            1.0 - P_C, P_W);
-  const char *sets[] = {cells, ord, lim, grad, way == BACKWARD ? init : NULL, "boundary.right.type=inlet",
-                        "boundary.right.velocity=0.1", NULL};
+  const char *sets[] = {
+      cells, ord, lim, grad, way == BACKWARD ? init : NULL, "boundary.right.type=inlet", "boundary.right.velocity=0.1",
+      NULL};
   const char *out = "tf2t_pulse.h5";
   sl_diag d = {{0}};
-  scene_request q = {.configs = local, .scene = way == PERIODIC ? "pulse_periodic" : "pulse", .sets = sets,
-                     .out = out};
+  scene_request q = {.configs = local, .scene = way == PERIODIC ? "pulse_periodic" : "pulse", .sets = sets, .out = out};
   if (way == BACKWARD) q.replace_section = "boundary.left", q.replacement = "[boundary.left]\ntype = outlet\n";
   if (scene_run(&q, NULL, &d)) {
     CHECK_MSG(0, "pulse: %s", d.msg);
@@ -206,10 +209,10 @@ static void pulse_orders(void) {
     int order, limiter;
     const char *grading;
     int way;
-  } runs[NR] = {{1, 0, NULL, FORWARD},   {2, 0, NULL, FORWARD},    {2, 1, NULL, FORWARD},   {1, 0, "3", FORWARD},
-                {2, 0, "3", FORWARD},    {2, 1, "3", FORWARD},     {1, 0, NULL, BACKWARD},  {2, 0, NULL, BACKWARD},
-                {1, 0, "3", BACKWARD},   {2, 1, "3", BACKWARD},    {1, 0, NULL, PERIODIC},  {2, 1, NULL, PERIODIC},
-                {1, 0, "3", PERIODIC},   {2, 1, "3", PERIODIC}};
+  } runs[NR] = {{1, 0, NULL, FORWARD}, {2, 0, NULL, FORWARD}, {2, 1, NULL, FORWARD},  {1, 0, "3", FORWARD},
+                {2, 0, "3", FORWARD},  {2, 1, "3", FORWARD},  {1, 0, NULL, BACKWARD}, {2, 0, NULL, BACKWARD},
+                {1, 0, "3", BACKWARD}, {2, 1, "3", BACKWARD}, {1, 0, NULL, PERIODIC}, {2, 1, NULL, PERIODIC},
+                {1, 0, "3", PERIODIC}, {2, 1, "3", PERIODIC}};
   static const char *const ways[] = {"towards +x", "towards -x", "periodic"};
   double e[NR][NG];
   for (int r = 0; r < NR; ++r) {
@@ -236,12 +239,11 @@ static void pulse_orders(void) {
       CHECK_MSG(o > 0.8 && o < 1.15, "pulse, order 1 (%s): observed order %.2f", ways[runs[r].way], o);
       continue;
     }
-    CHECK_MSG(o > 1.8, "pulse, order 2 (%s, %s): observed order %.2f", limiters[runs[r].limiter], ways[runs[r].way],
-              o);
+    CHECK_MSG(o > 1.8, "pulse, order 2 (%s, %s): observed order %.2f", limiters[runs[r].limiter], ways[runs[r].way], o);
     for (int q = 0; q < NR; ++q) /* against order 1 on the same grid, the same way */
       if (runs[q].order == 1 && runs[q].way == runs[r].way && (runs[q].grading != NULL) == (runs[r].grading != NULL))
-        CHECK_MSG(e[r][f] * 10.0 < e[q][f], "pulse, order 2 (%s): error %.3g, order 1 %.3g", ways[runs[r].way],
-                  e[r][f], e[q][f]);
+        CHECK_MSG(e[r][f] * 10.0 < e[q][f], "pulse, order 2 (%s): error %.3g, order 1 %.3g", ways[runs[r].way], e[r][f],
+                  e[q][f]);
   }
 }
 
@@ -286,16 +288,24 @@ static void packing(void) {
   for (int k = 0; k < 2; ++k) {
     char lim[64];
     snprintf(lim, sizeof lim, "two_fluid.limiter=%s", limiters[k]);
-    const char *sets[] = {"mesh.cells=1,50", "initial.phi=0.5", "time.dt=20", "time.end=4000",
+    const char *sets[] = {"mesh.cells=1,50",
+                          "initial.phi=0.5",
+                          "time.dt=20",
+                          "time.end=4000",
                           "output.every=20",
-                          "two_fluid.steady_tolerance=0", "two_fluid.order=2", lim, NULL};
+                          "two_fluid.steady_tolerance=0",
+                          "two_fluid.order=2",
+                          lim,
+                          NULL};
     const char *out = "tf2t_pack.h5";
     if (run_ok("settled_bed_2d", "closure.solids_pressure", "", sets, out)) continue;
     double worst, pmax, left;
     int full;
     if (bounded(out, "packing", &worst, &pmax, &full, &left)) continue;
-    printf("  packing (settled_bed_2d 1 x 50, phi 0.5, no p_s, order 2, %s): max phi %.15f, %d cells at phi_max, "
-           "conservation within %.1e over the outputs\n", limiters[k], pmax, full, worst);
+    printf(
+        "  packing (settled_bed_2d 1 x 50, phi 0.5, no p_s, order 2, %s): max phi %.15f, %d cells at phi_max, "
+        "conservation within %.1e over the outputs\n",
+        limiters[k], pmax, full, worst);
     CHECK_MSG(full == 39, "packing, %s: %d cells at phi_max, expected 39", limiters[k], full);
   }
 }
@@ -306,9 +316,14 @@ static void packing(void) {
  * minute and a half at order 2). */
 static void blow_out(void) {
   if (quick) return;
-  const char *sets[] = {"boundary.bottom.velocity=t <= 0 ? 0.01 : 0.5", "time.dt=0.02", "time.end=5",
-                        "output.every=0.5", "two_fluid.steady_tolerance=0", "two_fluid.order=2",
-                        "two_fluid.limiter=mc", NULL};
+  const char *sets[] = {"boundary.bottom.velocity=t <= 0 ? 0.01 : 0.5",
+                        "time.dt=0.02",
+                        "time.end=5",
+                        "output.every=0.5",
+                        "two_fluid.steady_tolerance=0",
+                        "two_fluid.order=2",
+                        "two_fluid.limiter=mc",
+                        NULL};
   const char *out = "tf2t_blow.h5";
   sluice_summary res;
   sl_diag d = {{0}};
@@ -319,8 +334,10 @@ static void blow_out(void) {
   double worst, pmax, left;
   int full;
   if (bounded(out, "blow-out", &worst, &pmax, &full, &left)) return;
-  printf("  blow-out (order 2, mc, U 0.01 -> 0.5 m/s, dt = 0.02 s): conservation within %.1e, max phi %.4f, solids "
-         "left %.1e m^2 of %.4f; %s\n", worst, pmax, left, 0.05 * 0.3 * 0.4, res.coupling_summary);
+  printf(
+      "  blow-out (order 2, mc, U 0.01 -> 0.5 m/s, dt = 0.02 s): conservation within %.1e, max phi %.4f, solids "
+      "left %.1e m^2 of %.4f; %s\n",
+      worst, pmax, left, 0.05 * 0.3 * 0.4, res.coupling_summary);
   CHECK_MSG(left < 1e-9 * 0.006, "blow-out: %.3g m^2 of solids left", left);
 }
 

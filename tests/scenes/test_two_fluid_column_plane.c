@@ -127,8 +127,8 @@ static double field_diff(const char *f1, const char *f2, const char *name, doubl
 typedef struct column_case {
   const char *scene;
   int cells;
-  const char *end;                   /* time.end=... (a part of the scene's run) */
-  double every;                      /* its outputs */
+  const char *end;                         /* time.end=... (a part of the scene's run) */
+  double every;                            /* its outputs */
   const char *const *repl1, *const *repl2; /* section replacements for the column and the 2-D runs */
 } column_case;
 
@@ -160,9 +160,10 @@ static void compare(const column_case *k) {
       double s = 0.0, w = field_diff(out1, out2, fields[q], t, k->cells, &s);
       worst[q] = fmax(worst[q], w), scale[q] = fmax(scale[q], s);
     }
-  printf("  %-18s %3d cells to t = %-5g: relative differences phi %.1e, u_s %.1e, u_f %.1e, p %.1e (scales %.3g, "
-         "%.3g m/s, %.3g m/s, %.4g Pa)\n",
-         k->scene, k->cells, t_end, worst[0], worst[1], worst[2], worst[3], scale[0], scale[1], scale[2], scale[3]);
+  printf(
+      "  %-18s %3d cells to t = %-5g: relative differences phi %.1e, u_s %.1e, u_f %.1e, p %.1e (scales %.3g, "
+      "%.3g m/s, %.3g m/s, %.4g Pa)\n",
+      k->scene, k->cells, t_end, worst[0], worst[1], worst[2], worst[3], scale[0], scale[1], scale[2], scale[3]);
   for (int q = 0; q < 4; ++q)
     CHECK_MSG(worst[q] <= 1e-8, "%s: %s of the 1 x %d grid differs from the column by %.3g relative", k->scene,
               fields[q], k->cells, worst[q]);
@@ -177,8 +178,8 @@ static void compare(const column_case *k) {
  * u_f either way, 9.7e-11 of its largest (u_f is 1/140 of u_s there), which that scene's u_f is allowed (2e-10).
  * Measured, banded against KLU: at most 1.1e-12 elsewhere (slis_step's u_s). */
 static void band_against_general(void) {
-  static const char *const scenes[] = {"settled_bed",     "fluidized_bed", "fluidization_step",     "settling_illite",
-                                       "slis_step",       "terzaghi_consolidation", "liquefaction"};
+  static const char *const scenes[] = {"settled_bed", "fluidized_bed",          "fluidization_step", "settling_illite",
+                                       "slis_step",   "terzaghi_consolidation", "liquefaction"};
   for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; ++k) {
     const char *scene = scenes[k];
     char out1[256], out2[256];
@@ -202,8 +203,10 @@ static void band_against_general(void) {
       }
     for (int q = 0; q < 4; ++q) worst[q] = scale[q] > 0.0 ? worst[q] / scale[q] : worst[q];
     free(times), free(times2);
-    printf("  %-24s %4d outputs: banded against the sparse factorisation, relative differences phi %.1e, u_s %.1e, "
-           "u_f %.1e, p %.1e\n", scene, outputs, worst[0], worst[1], worst[2], worst[3]);
+    printf(
+        "  %-24s %4d outputs: banded against the sparse factorisation, relative differences phi %.1e, u_s %.1e, "
+        "u_f %.1e, p %.1e\n",
+        scene, outputs, worst[0], worst[1], worst[2], worst[3]);
     CHECK_MSG(outputs > 1, "%s: %d outputs read", scene, outputs);
     for (int q = 0; q < 4; ++q) {
       double tol = q == 2 && strcmp(scene, "terzaghi_consolidation") == 0 ? 2e-10 : 1e-11;

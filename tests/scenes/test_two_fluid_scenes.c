@@ -141,8 +141,7 @@ static void fluidized_bed(void) {
   /* Richardson-Zaki directly: u_t = drho g d^2 / (18 mu) = 78.4 mm/s (the sand of section 4.6.1) */
   double ut = (b.rho_s - b.rho_f) * g * b.d * b.d / (18.0 * b.mu_f);
   CHECK_MSG(fabs(ut - 0.0784) < 1e-4, "Stokes u_t = %.5f m/s, reference 78.4 mm/s", ut);
-  for (int j = 0; j < 3; ++j)
-    CHECK_CLOSE(equilibrium_porosity(&b, k_rz, Us[j]), pow(Us[j] / ut, 1.0 / 4.65), 1e-9);
+  for (int j = 0; j < 3; ++j) CHECK_CLOSE(equilibrium_porosity(&b, k_rz, Us[j]), pow(Us[j] / ut, 1.0 / 4.65), 1e-9);
   for (size_t k = 0; k < sizeof drags / sizeof drags[0]; ++k) {
     for (int j = 0; j < 3; ++j) {
       double e_eq = equilibrium_porosity(&b, drags[k].k, Us[j]), phi_eq = 1.0 - e_eq;
@@ -158,9 +157,10 @@ static void fluidized_bed(void) {
       double worst = 0.0, inv = 0.0;
       for (int i = 0; i < top; ++i) worst = fmax(worst, fabs(phi[i] - phi_eq));
       for (int i = 0; i < n; ++i) inv += phi[i] / n;
-      printf("  fluidized_bed %-27s U = %4.1f mm/s: porosity %.5f (own law %.5f), max |dphi| %.1e over %d cells, "
-             "steady at t = %.1f s\n",
-             drags[k].label, 1e3 * Us[j], 1.0 - phi[0], e_eq, worst, top, tf);
+      printf(
+          "  fluidized_bed %-27s U = %4.1f mm/s: porosity %.5f (own law %.5f), max |dphi| %.1e over %d cells, "
+          "steady at t = %.1f s\n",
+          drags[k].label, 1e3 * Us[j], 1.0 - phi[0], e_eq, worst, top, tf);
       CHECK_MSG(top >= 20, "%s U = %g: a bed of %d cells only", drags[k].label, Us[j], top);
       CHECK_MSG(worst <= 1e-3, "%s U = %g: porosity off its equilibrium %.5f by %.3g", drags[k].label, Us[j], e_eq,
                 worst);
@@ -201,7 +201,7 @@ typedef struct rest_case {
   const char *scene;
   const char *const *sets; /* with mesh.cells=n added */
   pexp p;
-  double H, S, t_end;      /* column height, solids volume per unit area, the run's end */
+  double H, S, t_end; /* column height, solids volume per unit area, the run's end */
 } rest_case;
 
 static double bed_at_rest_error(const rest_case *rc, int n, double *bottom_phi, double *bottom_exact, double *above_err,
@@ -257,9 +257,10 @@ static void settled_bed(void) {
          1.0 - (1.0 - p.nbar) / (1.0 - p.A * log(Pb2)), depth_of(&p, Pb2));
   double b1, x1, b2, x2, a1, a2, l1, l2;
   double e1 = settled_error(100, &b1, &x1, &a1, &l1);
-  printf("  settled_bed, 100 cells: max |phi - closed-form cell average| = %.2e below the top 2 cm, L1 %.2e m; "
-         "bottom cell %.5f vs %.5f; solids above a face within %.2e m (of 0.05 m)\n",
-         e1, l1, b1, x1, a1);
+  printf(
+      "  settled_bed, 100 cells: max |phi - closed-form cell average| = %.2e below the top 2 cm, L1 %.2e m; "
+      "bottom cell %.5f vs %.5f; solids above a face within %.2e m (of 0.05 m)\n",
+      e1, l1, b1, x1, a1);
   CHECK_MSG(e1 <= 1e-3, "settled bed off the closed form by %.4f (100 cells; tolerance 0.005)", e1);
   CHECK_MSG(a1 <= 2e-4, "solids above a face off by %.3g m", a1);
   if (quick) return; /* the refined run */
@@ -327,8 +328,7 @@ static void fluidization_step(void) {
    * 7.78 mm/s at porosity 0.65, 11.51 at 0.716; the scene's inlet uses these */
   const bed b = {998.2, 1.002e-3, 2600.0, 3e-4};
   double U0 = equilibrium_velocity(&b, k_pringle_dilute, 0.65), U1 = equilibrium_velocity(&b, k_pringle_dilute, 0.716);
-  CHECK_MSG(fabs(U0 - 7.78e-3) < 0.01e-3 && fabs(U1 - 11.51e-3) < 0.01e-3, "U(0.65) = %.5f, U(0.716) = %.5f", U0,
-            U1);
+  CHECK_MSG(fabs(U0 - 7.78e-3) < 0.01e-3 && fabs(U1 - 11.51e-3) < 0.01e-3, "U(0.65) = %.5f, U(0.716) = %.5f", U0, U1);
   CHECK_MSG(fabs(U0 - 0.0077783) < 1e-7 && fabs(U1 - 0.0115101) < 1e-7, "the scene's U0, U1 are not %.7f, %.7f", U0,
             U1);
   /* the last run: second-order (MUSCL, MC-limited) transport, which shows no overshoot either */
@@ -339,9 +339,10 @@ static void fluidization_step(void) {
   for (int k = 0; k < n_runs; ++k)
     if (fluidization_step_run(cells[k], dts[k], order[k], &r[k])) return;
   for (int k = 0; k < n_runs; ++k) {
-    printf("  fluidization_step %d cells, dt %.3g s, order %d: final porosity %.4f, overshoot %.4f, front at x = 0.3 "
-           "m at t = %.2f s\n",
-           cells[k], dts[k], order[k], r[k].final_porosity, r[k].overshoot, r[k].t_cross);
+    printf(
+        "  fluidization_step %d cells, dt %.3g s, order %d: final porosity %.4f, overshoot %.4f, front at x = 0.3 "
+        "m at t = %.2f s\n",
+        cells[k], dts[k], order[k], r[k].final_porosity, r[k].overshoot, r[k].t_cross);
     CHECK_MSG(fabs(r[k].final_porosity - 0.716) <= 0.005, "final porosity %.4f, Pringle (2001): 0.716 +- 0.005",
               r[k].final_porosity);
     CHECK_MSG(r[k].overshoot <= 0.02, "overshoot %.4f > 0.02", r[k].overshoot);
@@ -384,10 +385,11 @@ static void settling_illite(void) {
     for (int i = n / 4; i < 3 * n / 4; ++i) zone = fmax(zone, fabs(phi[i] - phi0));
     for (int i = 0; i < n; ++i) lo = fmin(lo, 1.0 - phi[i]), hi = fmax(hi, 1.0 - phi[i]);
     double fall = missing / phi0;
-    printf("  settling_illite t = %3.0f s: the top has fallen %.2f mm (hindered settling %.2f mm, %+.2f %%), "
-           "porosity %.4f (bottom) to %.4f, constant zone within %.1e of 0.95, level of phi = 0.025 at %.4f m\n",
-           tf, 1e3 * fall, 1e3 * v * tf, 100 * (fall / (v * tf) - 1.0), lo, hi, zone,
-           scalar(out, "interface_height_0", tf));
+    printf(
+        "  settling_illite t = %3.0f s: the top has fallen %.2f mm (hindered settling %.2f mm, %+.2f %%), "
+        "porosity %.4f (bottom) to %.4f, constant zone within %.1e of 0.95, level of phi = 0.025 at %.4f m\n",
+        tf, 1e3 * fall, 1e3 * v * tf, 100 * (fall / (v * tf) - 1.0), lo, hi, zone,
+        scalar(out, "interface_height_0", tf));
     CHECK_MSG(n == n_cells && fabs(tf - times[k]) < 1e-9, "illite: output at %g s", times[k]);
     CHECK_MSG(fabs(fall / (v * tf) - 1.0) < 0.01, "illite: the top fell %.4g m by %g s, hindered settling %.4g", fall,
               tf, v * tf);
@@ -397,14 +399,15 @@ static void settling_illite(void) {
     free(phi);
   }
   /* on to rest: steps of 20 s (the drag is implicit), stopped when max |dphi/dt| < 1e-10 per s */
-  const char *rest_sets[] = {"time.dt=20", "time.end=400000", "output.every=100000",
-                             "two_fluid.steady_tolerance=1e-10", NULL};
+  const char *rest_sets[] = {"time.dt=20", "time.end=400000", "output.every=100000", "two_fluid.steady_tolerance=1e-10",
+                             NULL};
   const rest_case rc = {"settling_illite", rest_sets, {0.1075, 0.95, b.rho_s - b.rho_f}, H, phi0 * H, 400000.0};
   double bp, bx, above, l1;
   double worst = bed_at_rest_error(&rc, (int)n_cells, &bp, &bx, &above, &l1);
-  printf("  settling_illite at rest: max |porosity - closed-form cell average| %.2e below the top 2 cm, L1 %.2e m; "
-         "bottom cell %.4f vs %.4f; solids above a face within %.2e m (of 0.02 m)\n",
-         worst, l1, 1.0 - bp, 1.0 - bx, above);
+  printf(
+      "  settling_illite at rest: max |porosity - closed-form cell average| %.2e below the top 2 cm, L1 %.2e m; "
+      "bottom cell %.4f vs %.4f; solids above a face within %.2e m (of 0.02 m)\n",
+      worst, l1, 1.0 - bp, 1.0 - bx, above);
   CHECK_MSG(worst <= 0.005, "illite at rest: off the closed form by %.4f (tolerance 0.005)", worst);
   CHECK_MSG(fabs((1.0 - bx) - 0.870) < 0.001, "illite: the closed form's bottom porosity %.4f, not 0.870", 1.0 - bx);
 }
@@ -416,8 +419,8 @@ static void settling_illite(void) {
  * resolved there), the single-shock contraction time t_c (0: an expansion). */
 typedef struct slis_case {
   double d, n0, n1, t_exp, t_fea, U0, U1, t95_kin, t99_kin, t_c;
-  int switch_crossed;       /* the change crosses drag/pringle's jump at porosity 0.6 (eq 3.12 vs 3.34) */
-  int matches_experiment;   /* see slis_step() */
+  int switch_crossed;     /* the change crosses drag/pringle's jump at porosity 0.6 (eq 3.12 vs 3.34) */
+  int matches_experiment; /* see slis_step() */
 } slis_case;
 static const slis_case slis[12] = {
     {3e-3, 0.54, 0.76, 15, 13.8, 11.1, 35.5, 11.3, 13.2, 0, 1, 1},
@@ -527,8 +530,7 @@ static int slis_run(int k, const char *extra, slis_result *r) {
   /* settled: within 1 % of the final level for the last 5 s at least (a bed top whose smoothed profile
    * passes the drag's jump at porosity 0.6 keeps a small flicker there, so max |dphi/dt| need not fall
    * to the scene's steady_tolerance) */
-  CHECK_MSG(r->t99 < t[m - 1] - 5.0 || t[m - 1] < 39.9, "slis case %d: the level has not settled by %g s", k,
-            t[m - 1]);
+  CHECK_MSG(r->t99 < t[m - 1] - 5.0 || t[m - 1] < 39.9, "slis case %d: the level has not settled by %g s", k, t[m - 1]);
   free(H), free(t);
   return 0;
 }
@@ -569,11 +571,12 @@ static void slis_step(void) {
     double dev95 = r.t95 / c->t95_kin - 1.0;
     char kin[64] = "kin n/r";
     if (c->t99_kin > 0) snprintf(kin, sizeof kin, "kin %.1f, %+.0f %%", c->t99_kin, 100 * dev_kin);
-    printf("  slis %2d %s %.2f -> %.2f: U %.2f -> %.2f mm/s, level %.4f -> %.4f m (sharp: %.4f), t95 %.2f s (kin %.1f, "
-           "%+.0f %%), t_1 = t99 %.2f s (%s; exp %.1f, %+.0f %%; thesis FE %.1f); front %.1f, %.1f, %.1f cells "
-           "at 1, 2, 3 s\n",
-           k, expansion ? "exp" : "con", c->n0, c->n1, 1e3 * r.U0, 1e3 * r.U1, r.H0, r.H1, H_exact, r.t95, c->t95_kin,
-           100 * dev95, r.t99, kin, c->t_exp, 100 * dev_exp, c->t_fea, r.width[0] / h, r.width[1] / h, r.width[2] / h);
+    printf(
+        "  slis %2d %s %.2f -> %.2f: U %.2f -> %.2f mm/s, level %.4f -> %.4f m (sharp: %.4f), t95 %.2f s (kin %.1f, "
+        "%+.0f %%), t_1 = t99 %.2f s (%s; exp %.1f, %+.0f %%; thesis FE %.1f); front %.1f, %.1f, %.1f cells "
+        "at 1, 2, 3 s\n",
+        k, expansion ? "exp" : "con", c->n0, c->n1, 1e3 * r.U0, 1e3 * r.U1, r.H0, r.H1, H_exact, r.t95, c->t95_kin,
+        100 * dev95, r.t99, kin, c->t_exp, 100 * dev_exp, c->t_fea, r.width[0] / h, r.width[1] / h, r.width[2] / h);
     CHECK_MSG(fabs(r.U0 - U0) <= 1e-9 * U0 && fabs(r.U1 - U1) <= 1e-9 * U1,
               "slis case %d: inflow %.9g, %.9g vs %.9g, %.9g", k, r.U0, r.U1, U0, U1);
     /* the level reads phi = 0.075 in the bed top's diffusive tail: above the sharp interface, by millimetres */
@@ -585,8 +588,7 @@ static void slis_step(void) {
     if (c->matches_experiment)
       CHECK_MSG(fabs(dev_exp) <= (expansion ? 0.2 : 0.4), "slis case %d: t_1 %.2f s, experiment %.1f", k, r.t99,
                 c->t_exp);
-    else
-      CHECK_MSG(r.t99 < c->t_exp, "slis case %d: t_1 %.2f s, experiment %.1f", k, r.t99, c->t_exp);
+    else CHECK_MSG(r.t99 < c->t_exp, "slis case %d: t_1 %.2f s, experiment %.1f", k, r.t99, c->t_exp);
     if (expansion) {
       CHECK_MSG(r.width[2] >= 1.5 * r.width[0], "slis case %d: expansion front %.1f -> %.1f cells from 1 to 3 s", k,
                 r.width[0] / h, r.width[2] / h);
@@ -624,8 +626,16 @@ static void stiff_fine_particles(void) {
   snprintf(dt, sizeof dt, "time.dt=%.17g", 1000 * tau);
   snprintf(end, sizeof end, "time.end=%.17g", t_end);
   snprintf(every, sizeof every, "output.every=%.17g", t_end / 5);
-  const char *sets[] = {"solid.diameter=1e-5", "mesh.x=0,0.01", "mesh.cells=100", "initial.porosity=0.9",
-                        "boundary.left.velocity=0", "two_fluid.steady_tolerance=0", dt, end, every, NULL};
+  const char *sets[] = {"solid.diameter=1e-5",
+                        "mesh.x=0,0.01",
+                        "mesh.cells=100",
+                        "initial.porosity=0.9",
+                        "boundary.left.velocity=0",
+                        "two_fluid.steady_tolerance=0",
+                        dt,
+                        end,
+                        every,
+                        NULL};
   const char *out = "stiff_fine.h5";
   if (run_ok("fluidized_bed", NULL, NULL, sets, out)) return;
   double ts[6], zs[6], worst_phi = 0.0, worst_mass = 0.0;
@@ -651,9 +661,10 @@ static void stiff_fine_particles(void) {
   double st = 0, sz = 0, stt = 0, szt = 0;
   for (int s = 2; s <= 5; ++s) st += ts[s], sz += zs[s], stt += ts[s] * ts[s], szt += ts[s] * zs[s];
   double speed = -(4 * szt - st * sz) / (4 * stt - st * st);
-  printf("  stiff: 10 um particles, dt = 1000 tau_p = %.3g s: the suspension top falls at %.4g m/s, Richardson-Zaki "
-         "%.4g (%+.2f %%); max phi %.4f, conservation %.1e\n",
-         1000 * tau, speed, v, 100 * (speed / v - 1), worst_phi, worst_mass);
+  printf(
+      "  stiff: 10 um particles, dt = 1000 tau_p = %.3g s: the suspension top falls at %.4g m/s, Richardson-Zaki "
+      "%.4g (%+.2f %%); max phi %.4f, conservation %.1e\n",
+      1000 * tau, speed, v, 100 * (speed / v - 1), worst_phi, worst_mass);
   CHECK_MSG(fabs(speed / v - 1) < 0.01, "settling front speed %.4g, Richardson-Zaki %.4g", speed, v);
   CHECK_MSG(worst_phi <= 0.64, "phi %.17g above phi_max", worst_phi);
   CHECK_MSG(worst_mass < 1e-12, "solids conservation error %.3g", worst_mass);
@@ -665,10 +676,10 @@ static void stiff_fine_particles(void) {
  * limiter's 0.64) for 400 s at the same steps: the implicit step then often needs retrying smaller, which is
  * slow (13 s of CPU to 4000 s), so the test stops early. */
 static void packing(void) {
-  const char *sets[] = {"initial.phi=0.5", "time.dt=20", "time.end=4000", "output.every=4000",
-                        "two_fluid.steady_tolerance=0", NULL};
-  const char *sets_short[] = {"initial.phi=0.5", "time.dt=20", "time.end=400", "output.every=400",
-                              "two_fluid.steady_tolerance=0", NULL};
+  const char *sets[] = {
+      "initial.phi=0.5", "time.dt=20", "time.end=4000", "output.every=4000", "two_fluid.steady_tolerance=0", NULL};
+  const char *sets_short[] = {
+      "initial.phi=0.5", "time.dt=20", "time.end=400", "output.every=400", "two_fluid.steady_tolerance=0", NULL};
   const char *out = "packing.h5";
   for (int k = 0; k < 2; ++k) {
     const char *ps = k == 0 ? "" : "[closure.solids_pressure]\nmodel = gidaspow_elastic\nphi_max = 0.62\n";
@@ -752,13 +763,22 @@ static void blow_out(void) {
   };
   const char *out = "blow_out.h5";
   for (size_t k = 0; k < sizeof runs / sizeof runs[0]; ++k) {
-    const char *sets[] = {runs[k].dt, runs[k].end, "output.every=1", "output.fields=phi,velocity_solid",
-                          "two_fluid.steady_tolerance=0", runs[k].velocity, NULL};
+    const char *sets[] = {runs[k].dt,
+                          runs[k].end,
+                          "output.every=1",
+                          "output.fields=phi,velocity_solid",
+                          "two_fluid.steady_tolerance=0",
+                          runs[k].velocity,
+                          NULL};
     const char *inlet = "[boundary.left]\ntype = inlet\nvelocity = t <= 0 ? 0.0111 : 0.5\n";
     sluice_summary res;
     sl_diag d = {{0}};
-    scene_request q = {.configs = configs, .scene = runs[k].scene, .replace_section = runs[k].velocity ? NULL :
-                       "boundary.left", .replacement = inlet, .sets = sets, .out = out};
+    scene_request q = {.configs = configs,
+                       .scene = runs[k].scene,
+                       .replace_section = runs[k].velocity ? NULL : "boundary.left",
+                       .replacement = inlet,
+                       .sets = sets,
+                       .out = out};
     int rc = scene_run(&q, &res, &d);
     CHECK_MSG(rc == 0, "blow-out %s %s: %s", runs[k].scene, runs[k].dt, d.msg);
     double left = NAN;
@@ -788,8 +808,8 @@ static void restart(void) {
       run_ok("fluidization_step", NULL, NULL, half, "tf_half.h5"))
     return;
   sl_diag d = {{0}};
-  scene_request q = {.configs = configs, .scene = "fluidization_step", .sets = full, .out = "tf_cont.h5",
-                     .restart = "tf_half.h5"};
+  scene_request q = {
+      .configs = configs, .scene = "fluidization_step", .sets = full, .out = "tf_cont.h5", .restart = "tf_half.h5"};
   int rc = scene_run(&q, NULL, &d);
   CHECK_MSG(rc == 0, "restart: %s", d.msg);
   const char *fields[4] = {"phi", "velocity_solid", "velocity_fluid", "pressure"};

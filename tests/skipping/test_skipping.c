@@ -32,15 +32,21 @@ static int run(scene_case *c, const char *scene, const char *const *sets, const 
 /* Constant viscosity, no inertia, fixed steps: one matrix, one
  * factorisation, right-hand sides only after the first step. */
 static void test_stokes_factorises_once(void) {
-  const char *sets[] = {"mesh.cells=8,8", "time.scheme=bdf1", "time.adaptive=false", "time.dt=0.01", "time.end=0.5",
-                        "output.every=0.1", NULL};
+  const char *sets[] = {"mesh.cells=8,8",
+                        "time.scheme=bdf1",
+                        "time.adaptive=false",
+                        "time.dt=0.01",
+                        "time.end=0.5",
+                        "output.every=0.1",
+                        NULL};
   scene_case c;
   sluice_summary r;
   if (run(&c, "cavity_stokes", sets, "skip_stokes.h5", &r)) return;
   const sluice_linear *ls = &r.linear;
-  printf("Stokes, %ld BDF1 steps: %ld matrix and %ld right-hand-side assemblies; %ld symbolic, %ld numeric "
-         "factorisations, %ld solves\n",
-         r.steps, r.matrix_assemblies, r.residual_assemblies, ls->n_symbolic, ls->n_numeric, ls->n_solves);
+  printf(
+      "Stokes, %ld BDF1 steps: %ld matrix and %ld right-hand-side assemblies; %ld symbolic, %ld numeric "
+      "factorisations, %ld solves\n",
+      r.steps, r.matrix_assemblies, r.residual_assemblies, ls->n_symbolic, ls->n_numeric, ls->n_solves);
   CHECK(r.steps == 50);
   CHECK_MSG(r.matrix_assemblies == 1 && r.residual_assemblies == r.steps - 1, "%ld matrix, %ld residual assemblies",
             r.matrix_assemblies, r.residual_assemblies);
@@ -59,7 +65,8 @@ static void test_only_named_closures(void) {
   sluice_summary r;
   if (run(&c, "kynch_settling", sets, "skip_kynch.h5", &r)) return;
   int on_path = scene_case_on_path(&c);
-  printf("kynch_settling: %d of %d libraries loaded, %ld dlopen\n", scene_case_n_loaded(&c), on_path, scene_case_dlopen(&c));
+  printf("kynch_settling: %d of %d libraries loaded, %ld dlopen\n", scene_case_n_loaded(&c), on_path,
+         scene_case_dlopen(&c));
   CHECK_MSG(on_path > 20, "only %d closure libraries on the search path", on_path);
   CHECK_MSG(scene_case_n_loaded(&c) == 1 && scene_case_dlopen(&c) == 1 &&
                 scene_case_loaded(&c, "hindered_settling_richardson_zaki.so") == 1,
@@ -75,7 +82,8 @@ static void test_only_named_closures(void) {
   /* the mixture with a phi-dependent viscosity: two libraries, nothing else */
   const char *bsets[] = {"mesh.cells=4,6", "time.end=2e-3", "output.every=0", NULL};
   if (run(&c, "boycott", bsets, "skip_boycott.h5", &r)) return;
-  CHECK_MSG(scene_case_n_loaded(&c) == 2 && scene_case_dlopen(&c) == 2 && scene_case_loaded(&c, "hindered_settling_nigam.so") &&
+  CHECK_MSG(scene_case_n_loaded(&c) == 2 && scene_case_dlopen(&c) == 2 &&
+                scene_case_loaded(&c, "hindered_settling_nigam.so") &&
                 scene_case_loaded(&c, "viscosity_krieger_dougherty.so"),
             "boycott: %d libraries loaded", scene_case_n_loaded(&c));
   const sluice_closure_use *v = scene_case_usage(&c, "viscosity", "krieger_dougherty");
@@ -110,9 +118,10 @@ static void test_closure_calls_per_assembly(void) {
   long passes = r.matrix_assemblies + r.residual_assemblies + r.output_times; /* every output has the diagnostics */
   long cells = 200;
   unsigned long long per_pass = u->points / (unsigned long long)passes;
-  printf("bingham_channel: %llu points in %llu calls over %ld assembly passes (%llu points per cell and pass), %ld "
-         "instances\n",
-         u->points, u->calls, passes, per_pass / (unsigned long long)cells, u->instances);
+  printf(
+      "bingham_channel: %llu points in %llu calls over %ld assembly passes (%llu points per cell and pass), %ld "
+      "instances\n",
+      u->points, u->calls, passes, per_pass / (unsigned long long)cells, u->instances);
   CHECK_MSG(u->points % (unsigned long long)passes == 0 && per_pass % (unsigned long long)cells == 0,
             "%llu points over %ld passes of %ld cells", u->points, passes, cells);
   /* the scene's own closure (provenance), then one per stage: eps changes */
@@ -182,9 +191,9 @@ static void test_unused_fields(void) {
     CHECK_MSG(0, "%s", d.msg);
     return;
   }
-  CHECK_MSG(ct.n_fields == 2 && strcmp(ct.fields[0].name, "pressure") == 0 &&
-                strcmp(ct.fields[1].name, "velocity") == 0,
-            "%d fields written without a viscosity closure", ct.n_fields);
+  CHECK_MSG(
+      ct.n_fields == 2 && strcmp(ct.fields[0].name, "pressure") == 0 && strcmp(ct.fields[1].name, "velocity") == 0,
+      "%d fields written without a viscosity closure", ct.n_fields);
   sl_output_contents_free(&ct);
 
   /* a mixture asked for velocity and phi: no pressure, no stream function */

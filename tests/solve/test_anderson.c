@@ -19,7 +19,8 @@
 
 enum { N = 4 };
 /* upper triangular: eigenvalues 0.95, -0.9, 0.5, -0.3 */
-static const double M[N][N] = {{0.95, 0.3, 0.0, 0.1}, {0.0, -0.9, 0.2, 0.0}, {0.0, 0.0, 0.5, 0.4}, {0.0, 0.0, 0.0, -0.3}};
+static const double M[N][N] = {
+    {0.95, 0.3, 0.0, 0.1}, {0.0, -0.9, 0.2, 0.0}, {0.0, 0.0, 0.5, 0.4}, {0.0, 0.0, 0.0, -0.3}};
 static const double B[N] = {1.0, -2.0, 0.5, 3.0};
 
 static void map(const double *x, double *g) {

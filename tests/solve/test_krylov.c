@@ -330,10 +330,11 @@ static void newton_reuse(void) {
   }
   double scale = 0.0;
   for (int32_t i = 0; i < n; ++i) scale = fmax(scale, fabs(u[1][i]));
-  printf("Newton, cubic reaction: %d iterations with reuse (%ld factorisations, %ld reused, %ld FGMRES iterations), "
-         "%d without (%ld factorisations); solutions within %.2e\n",
-         ns[0].iterations, ls_st[0]->n_numeric, ls_st[0]->n_reused, ls_st[0]->n_krylov_iterations, ns[1].iterations,
-         ls_st[1]->n_numeric, max_diff(u[0], u[1], n) / scale);
+  printf(
+      "Newton, cubic reaction: %d iterations with reuse (%ld factorisations, %ld reused, %ld FGMRES iterations), "
+      "%d without (%ld factorisations); solutions within %.2e\n",
+      ns[0].iterations, ls_st[0]->n_numeric, ls_st[0]->n_reused, ls_st[0]->n_krylov_iterations, ns[1].iterations,
+      ls_st[1]->n_numeric, max_diff(u[0], u[1], n) / scale);
   CHECK(ns[0].iterations == ns[1].iterations && ns[0].iterations >= 4);
   CHECK(ls_st[1]->n_numeric == ns[1].iterations && ls_st[0]->n_numeric < ns[0].iterations);
   CHECK(ls_st[0]->n_reused + ls_st[0]->n_numeric == ns[0].iterations);

@@ -42,8 +42,8 @@ static void manufactured(const char *name, int nx, int ny, const char *ordering)
   const sl_linsolve_stats *st = sl_linsolve_get_stats(ls);
   CHECK(st->rcond > 0 && st->rcond <= 1);
   if (ordering)
-    CHECK_MSG(st->ordering && strcmp(st->ordering, ordering) == 0, "%s %dx%d: ordering %s, expected %s", name, nx,
-              ny, st->ordering ? st->ordering : "(none)", ordering);
+    CHECK_MSG(st->ordering && strcmp(st->ordering, ordering) == 0, "%s %dx%d: ordering %s, expected %s", name, nx, ny,
+              st->ordering ? st->ordering : "(none)", ordering);
   sl_linsolve_destroy(ls);
   sl_csr_free(&A);
   free(xe), free(b), free(x);
@@ -165,10 +165,8 @@ static void singular(const char *name) {
   d.msg[0] = 0;
   CHECK(sl_linsolve_solve(ls, &A, b, x, &d) == SL_EFAILED);
   CHECK_CONTAINS(d.msg, name);
-  if (strcmp(name, "cholmod") == 0)
-    CHECK_CONTAINS(d.msg, "not positive definite");
-  else
-    CHECK_CONTAINS(d.msg, "singular");
+  if (strcmp(name, "cholmod") == 0) CHECK_CONTAINS(d.msg, "not positive definite");
+  else CHECK_CONTAINS(d.msg, "singular");
   printf("%s, singular: %s\n", name, d.msg);
   /* A failure leaves no factorisation behind: the next call tries again. */
   CHECK(sl_linsolve_solve(ls, &A, b, x, &d) == SL_EFAILED);
@@ -213,8 +211,12 @@ static int fake_solve(void *backend, const sl_csr *A, const double *b, double *x
   return sl_diag_set(d, SL_EFAILED, "fake: solve without a factorisation");
 }
 static void fake_destroy(void *backend) { free(backend); }
-static const sl_linsolve_ops fake_ops = {.name = "fake", .create = fake_create, .symbolic = fake_symbolic,
-                                         .numeric = fake_numeric, .solve = fake_solve, .destroy = fake_destroy};
+static const sl_linsolve_ops fake_ops = {.name = "fake",
+                                         .create = fake_create,
+                                         .symbolic = fake_symbolic,
+                                         .numeric = fake_numeric,
+                                         .solve = fake_solve,
+                                         .destroy = fake_destroy};
 
 /* sl_linsolve_set_fallback: a backend that finds the matrix singular hands it to KLU once, which solves it
  * (the manufactured solution to 1e-12) and stays; the summary starts with what happened. A failure that is
@@ -236,7 +238,8 @@ static void singular_fallback(void) {
   CHECK_MSG(rel_err(x, xe, n) <= 1e-12, "fallback: relative error %.3g", rel_err(x, xe, n));
   CHECK(strcmp(sl_linsolve_name(ls), "klu") == 0);
   CHECK(sl_linsolve_get_stats(ls)->n_numeric == 1 && sl_linsolve_get_stats(ls)->n_solves == 1);
-  CHECK_CONTAINS(sl_linsolve_fallback_note(ls), "fake found the matrix numerically singular (pivot ratio 1e-19): klu took over");
+  CHECK_CONTAINS(sl_linsolve_fallback_note(ls),
+                 "fake found the matrix numerically singular (pivot ratio 1e-19): klu took over");
   char sum[512];
   sl_linsolve_summary(ls, sum, sizeof sum);
   printf("fallback: %s\n", sum);

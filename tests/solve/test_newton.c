@@ -187,8 +187,8 @@ static void stokes_steps(void) {
   /* the steps: what changes before each and whether the matrix is then assembled */
   enum { NONE, HISTORY, LID, MASS, VISCOSITY, DENSITY, FIXED, WRITTEN, CALLBACK, NOT_LINEAR, N_STEPS };
   static const char *const what[N_STEPS] = {
-      "first solve", "new history", "new lid velocity", "mass coefficient", "viscosity", "density", "one more fixed dof",
-      "a write into the matrix", "a viscosity callback", "not declared linear"};
+      "first solve", "new history",        "new lid velocity",        "mass coefficient",     "viscosity",
+      "density",     "one more fixed dof", "a write into the matrix", "a viscosity callback", "not declared linear"};
   static const int assembles[N_STEPS] = {1, 0, 0, 1, 1, 1, 1, 1, 1, 1};
   for (int k = 0; k < N_STEPS && !rc; ++k) {
     for (int32_t i = 0; i < n; ++i) hist[i] = -100.0 * u[i] + (k == HISTORY ? 0.1 * sin(0.1 * i) : 0.0);
@@ -271,9 +271,10 @@ static void predicted_newton(void) {
     CHECK_MSG(rc == 0, "%s", d.msg);
     double err = 0.0;
     for (int32_t i = 0; i < n; ++i) err = fmax(err, fabs(u[i] - exact[i]));
-    printf("Newton from a start 1e-3 off, %s: %d corrections, %d matrix and %d residual-only assemblies, error %.2e of "
-           "the solution (tolerance 1e-6)\n", k == 0 ? "predicted" : "not predicted", st.iterations, p.matrices,
-           p.residuals, err / scale);
+    printf(
+        "Newton from a start 1e-3 off, %s: %d corrections, %d matrix and %d residual-only assemblies, error %.2e of "
+        "the solution (tolerance 1e-6)\n",
+        k == 0 ? "predicted" : "not predicted", st.iterations, p.matrices, p.residuals, err / scale);
     CHECK(err <= 1e-6 * scale);
     if (k == 0) CHECK(st.iterations == 1 && st.estimated && p.matrices == 1 && p.residuals == 1);
     else CHECK(st.iterations == 2 && p.matrices >= 2);

@@ -56,7 +56,9 @@ static inline int scene_case_run(scene_case *c, const char *scene_path, const ch
 }
 
 /* The libraries a run has loaded whose file name starts with `prefix`. */
-static inline int scene_case_loaded(const scene_case *c, const char *prefix) { return sluice_plugins_loaded(c->s, prefix); }
+static inline int scene_case_loaded(const scene_case *c, const char *prefix) {
+  return sluice_plugins_loaded(c->s, prefix);
+}
 
 /* The libraries loaded, on the search path, and the dlopen calls so far. */
 static inline int scene_case_n_loaded(const scene_case *c) {
@@ -94,9 +96,9 @@ typedef struct file_check {
   long n_phi_outside;     /* phi values outside [0, phi_max] */
   double phi_min, phi_max_seen;
   int has_phi;
-  int checkpoint_ok;      /* the last checkpoint reads back, every array finite */
+  int checkpoint_ok; /* the last checkpoint reads back, every array finite */
   double checkpoint_time;
-  char error[512];        /* a read failure ("" when none) */
+  char error[512]; /* a read failure ("" when none) */
 } file_check;
 
 /* Reads every field of every complete output time and the last checkpoint.

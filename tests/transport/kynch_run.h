@@ -10,8 +10,8 @@
 #include <stdlib.h>
 
 #include "core/mesh/mesh.h"
-#include "core/transport/transport.h"
 #include "core/study/kynch_exact.h"
+#include "core/transport/transport.h"
 
 typedef struct kr_run {
   sl_mesh *m;
@@ -32,7 +32,8 @@ static inline void kr_open(kr_run *r, int N, double H, double phi0, int order, s
   sl_diag d;
   *r = (kr_run){0};
   r->N = N, r->H = H, r->dt_outer = 0.01 * H, r->phi_max = phi_max;
-  sl_transport_opts o = {.phi_max = phi_max, .order = order, .limiter = lim, .settling = settling, .settling_user = user};
+  sl_transport_opts o = {
+      .phi_max = phi_max, .order = order, .limiter = lim, .settling = settling, .settling_user = user};
   if (sl_mesh_interval(0, H, N, NULL, &r->m, &d) || sl_transport_create(r->m, &o, &r->t, &d)) {
     fprintf(stderr, "kynch run: %s\n", d.msg);
     exit(1);

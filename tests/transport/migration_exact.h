@@ -179,8 +179,8 @@ static inline void mx_open(mx_run *r, mx_flow flow, int N, double a2, double phi
   r->flow = flow;
   r->r_in = flow == MX_COUETTE ? 0.2689 : 0;
   r->par = (mx_params){a2, MX_KC, MX_KMU};
-  sl_transport_opts o = {.phi_max = MX_PHI_M, .order = order, .geometry = SL_TRANSPORT_AXISYMMETRIC,
-                         .settling = mx_no_settling};
+  sl_transport_opts o = {
+      .phi_max = MX_PHI_M, .order = order, .geometry = SL_TRANSPORT_AXISYMMETRIC, .settling = mx_no_settling};
   sl_migration_opts mo = {.coef = mx_coef, .coef_user = &r->par, .ln_mu = mx_lnmu};
   if (sl_mesh_interval(r->r_in, 1, N, NULL, &r->m, &d)) mx_die("mesh", &d);
   if (sl_transport_create(r->m, &o, &r->t, &d)) mx_die("transport", &d);

@@ -109,7 +109,8 @@ static void fit_fronts(kr_run *r, const kynch *k, double *e_top, double *e_bot) 
 static sl_transport *open_or_die(const sl_mesh *m, double phi_max, sl_settling_fn fn, void *user, int n_table) {
   sl_diag d;
   sl_transport *t;
-  sl_transport_opts o = {.phi_max = phi_max, .order = 2, .table_points = n_table, .settling = fn, .settling_user = user};
+  sl_transport_opts o = {
+      .phi_max = phi_max, .order = 2, .table_points = n_table, .settling = fn, .settling_user = user};
   if (sl_transport_create(m, &o, &t, &d)) {
     fprintf(stderr, "transport: %s\n", d.msg);
     exit(1);
@@ -132,8 +133,7 @@ static void test_richardson_zaki(void) {
   sl_transport *tp = open_or_die(m, 0.64, closure_settling, &b, 0), *ta = open_or_die(m, 0.64, kx_settling, &law, 0);
   const sl_settling_table *xp = sl_transport_table(tp), *xa = sl_transport_table(ta);
   double worst = 0;
-  for (int k = 0; k < xp->n; ++k)
-    worst = fmax(worst, fmax(fabs(xp->F[k] - xa->F[k]), fabs(xp->D[k] - xa->D[k])));
+  for (int k = 0; k < xp->n; ++k) worst = fmax(worst, fmax(fabs(xp->F[k] - xa->F[k]), fabs(xp->D[k] - xa->D[k])));
   printf("richardson_zaki plug-in: flux table (%d nodes, one batch call) differs from the analytic law by %.1e\n",
          xp->n, worst);
   CHECK(worst < 1e-14);
@@ -152,9 +152,10 @@ static void test_richardson_zaki(void) {
   double diff = 0;
   for (int i = 0; i < 200; ++i) diff = fmax(diff, fabs(rp.phi[i] - ra.phi[i]));
   double l1 = kr_l1(&rp, &k);
-  printf("richardson_zaki plug-in, Kynch case A, 200 cells, t = 1.3 t1: max |phi_plugin - phi_analytic| = %.1e, "
-         "L1 error %.3e\n",
-         diff, l1);
+  printf(
+      "richardson_zaki plug-in, Kynch case A, 200 cells, t = 1.3 t1: max |phi_plugin - phi_analytic| = %.1e, "
+      "L1 error %.3e\n",
+      diff, l1);
   CHECK(diff < 1e-12 && l1 < 2e-3);
   kr_close(&rp);
   kr_close(&ra);
@@ -176,10 +177,11 @@ static void test_richardson_zaki(void) {
     double et, eb;
     fit_fronts(&rp, &k, &et, &eb);
     double mass = sl_transport_mass(rp.t, rp.phi);
-    printf("richardson_zaki plug-in, SI (u_t = %.4e m/s, 0.5 m, 200 cells), order %d: top %.4e m/s (%+.3f %%), "
-           "bottom shock %.4e m/s (%+.3f %%), fronts meet at %.2f s, %.1f sub-steps per 1 s step, mass error %.1e\n",
-           ut, order, k.v0, 100 * et, k.sigma, 100 * eb, k.t1, (double)rp.substeps / rp.outer_steps,
-           (mass - rp.mass0) / rp.mass0);
+    printf(
+        "richardson_zaki plug-in, SI (u_t = %.4e m/s, 0.5 m, 200 cells), order %d: top %.4e m/s (%+.3f %%), "
+        "bottom shock %.4e m/s (%+.3f %%), fronts meet at %.2f s, %.1f sub-steps per 1 s step, mass error %.1e\n",
+        ut, order, k.v0, 100 * et, k.sigma, 100 * eb, k.t1, (double)rp.substeps / rp.outer_steps,
+        (mass - rp.mass0) / rp.mass0);
     CHECK(fabs(et) < 0.01 && fabs(eb) < (order == 1 ? 0.04 : 0.01)); /* first order: the contact, see transport_kynch */
     CHECK(fabs(mass - rp.mass0) < 1e-13 * rp.mass0 && rp.max_phi <= 0.64 && rp.min_phi >= 0);
     kr_close(&rp);
@@ -200,9 +202,10 @@ static void test_nigam(void) {
   CHECK(fabs(k.t1 - 1.3496) < 5e-5 && fabs(k.z1 - 0.1659) < 5e-5 && k.bottom == KX_CONTACT && k.sed == 0);
   CHECK(fabs(kx_F(&k.law, 0.1) / (0.68 - 0.1) - 0.10657) < 5e-6);
   CHECK(fabs(k.infl - 0.3485) < 1e-4); /* 0.34859: the reference truncates */
-  printf("nigam exact: top %.5f, phi* %.4f, bottom shock %.5f, fronts meet at t = %.4f z = %.4f, inflection %.4f "
-         "(reference: 0.61808, 0.5299, 0.12289, 1.3496, 0.1659, 0.3485)\n",
-         k.v0, k.phis, k.sigma, k.t1, k.z1, k.infl);
+  printf(
+      "nigam exact: top %.5f, phi* %.4f, bottom shock %.5f, fronts meet at t = %.4f z = %.4f, inflection %.4f "
+      "(reference: 0.61808, 0.5299, 0.12289, 1.3496, 0.1659, 0.3485)\n",
+      k.v0, k.phis, k.sigma, k.t1, k.z1, k.infl);
   for (int order = 1; order <= 2; ++order) {
     kr_run r;
     kr_open(&r, 200, 1.0, 0.1, order, SL_LIMITER_MC, closure_settling, &b, 0.68);
@@ -210,9 +213,10 @@ static void test_nigam(void) {
     fit_fronts(&r, &k, &et, &eb);
     kr_advance(&r, 2.0 * k.t1);
     double l1 = kr_l1(&r, &k), mass = sl_transport_mass(r.t, r.phi);
-    printf("nigam plug-in, 200 cells, order %d: top %+.3f %%, bottom shock %+.3f %%; at t = 2 t1 L1 %.3e, bottom "
-           "cell %.5f (alpha_m = 0.68), mass error %.1e\n",
-           order, 100 * et, 100 * eb, l1, r.phi[0], (mass - r.mass0) / r.mass0);
+    printf(
+        "nigam plug-in, 200 cells, order %d: top %+.3f %%, bottom shock %+.3f %%; at t = 2 t1 L1 %.3e, bottom "
+        "cell %.5f (alpha_m = 0.68), mass error %.1e\n",
+        order, 100 * et, 100 * eb, l1, r.phi[0], (mass - r.mass0) / r.mass0);
     CHECK(fabs(et) < 0.01 && fabs(eb) < (order == 1 ? 0.04 : 0.01));
     CHECK(l1 < (order == 1 ? 6e-3 : 3e-3));
     CHECK(fabs(mass - r.mass0) < 1e-13 * r.mass0 && r.max_phi <= 0.68 && r.min_phi >= 0);

@@ -80,11 +80,12 @@ static void run_level(level *L, int order, double *phi_out) {
     L->tab_err = fmax(L->tab_err, fabs(mx_interp(&r, tab_r[k]) - tab_phi[k]));
     L->v_err = fmax(L->v_err, fabs(couette_v(&r, tab_r[k]) - tab_v[k]));
   }
-  printf("N = %3d, order %d: steady at t = %.0f after %ld sub-steps (%ld outer), phi in [%.4f, %.4f]; exact "
-         "(phi_w = %.5f): max |error| %.2e, mean |error| %.2e; reference table: max |dphi| %.2e, max |dv| %.2e; "
-         "mean %.15f, relative change %.1e; limited faces %d, clamped %.1e\n",
-         L->N, order, r.time, r.substeps, r.outer, r.phi[0], r.phi[L->N - 1], x.phi_w, L->err_max, L->err_l1,
-         L->tab_err, L->v_err, mean, L->mass_err, r.limited, r.clamped);
+  printf(
+      "N = %3d, order %d: steady at t = %.0f after %ld sub-steps (%ld outer), phi in [%.4f, %.4f]; exact "
+      "(phi_w = %.5f): max |error| %.2e, mean |error| %.2e; reference table: max |dphi| %.2e, max |dv| %.2e; "
+      "mean %.15f, relative change %.1e; limited faces %d, clamped %.1e\n",
+      L->N, order, r.time, r.substeps, r.outer, r.phi[0], r.phi[L->N - 1], x.phi_w, L->err_max, L->err_l1, L->tab_err,
+      L->v_err, mean, L->mass_err, r.limited, r.clamped);
   if (phi_out) memcpy(phi_out, r.phi, (size_t)L->N * sizeof *phi_out);
   free(avg);
   mx_close(&r);

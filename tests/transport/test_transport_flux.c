@@ -27,8 +27,8 @@ static double g_exact(const kx_law *l, double q, double w, double x) { return q 
 static double godunov_exact(const kx_law *l, double infl, double q, double w, double a, double b) {
   int want_min = a <= b;
   double lo = want_min ? a : b, hi = want_min ? b : a;
-  double best = want_min ? fmin(h_exact(l, q, w, lo), h_exact(l, q, w, hi))
-                         : fmax(h_exact(l, q, w, lo), h_exact(l, q, w, hi));
+  double best =
+      want_min ? fmin(h_exact(l, q, w, lo), h_exact(l, q, w, hi)) : fmax(h_exact(l, q, w, lo), h_exact(l, q, w, hi));
   const double cut[3] = {lo, fmin(fmax(infl, lo), hi), hi};
   for (int p = 0; p < 2; ++p) {
     double u = cut[p], v = cut[p + 1], gu = g_exact(l, q, w, u);
@@ -85,8 +85,8 @@ static void test_table(void) {
         /* The piece boundary is the inflection point of F (F' extreme). */
         kynch k;
         CHECK(kx_init(&k, *l, 1.0, 0.1) == 0);
-        CHECK_MSG(fabs(t.piece[1] * t.dphi - k.infl) <= t.dphi, "piece boundary %g, inflection %g",
-                  t.piece[1] * t.dphi, k.infl);
+        CHECK_MSG(fabs(t.piece[1] * t.dphi - k.infl) <= t.dphi, "piece boundary %g, inflection %g", t.piece[1] * t.dphi,
+                  k.infl);
         CHECK(t.sign == 1 && t.F[0] == 0 && t.F[t.n - 1] == 0);
       }
       sl_settling_table_free(&t);
@@ -95,9 +95,10 @@ static void test_table(void) {
   /* O(dphi^4) for the smooth law; Nigam's F'' is singular at alpha_m
    * ((1 - phi/alpha_m)^-0.3), which costs accuracy near it only. */
   double r = log(err[0][1] / err[0][2]) / log(4.0);
-  printf("Richardson-Zaki table error: %.2e, %.2e, %.2e on 129, 513, 2049 nodes (order %.2f); Nigam %.2e, %.2e, "
-         "%.2e\n",
-         err[0][0], err[0][1], err[0][2], r, err[1][0], err[1][1], err[1][2]);
+  printf(
+      "Richardson-Zaki table error: %.2e, %.2e, %.2e on 129, 513, 2049 nodes (order %.2f); Nigam %.2e, %.2e, "
+      "%.2e\n",
+      err[0][0], err[0][1], err[0][2], r, err[1][0], err[1][1], err[1][2]);
   CHECK(r > 3.5);
   CHECK(err[0][2] < 1e-12 && err[1][2] < 1e-7);
 }
@@ -124,14 +125,17 @@ static void test_godunov(void) {
     n_interior += fabs(ge - ends) > 1e-6 * scale;
     /* Monotone: non-decreasing in the owner state, non-increasing in the other. */
     double da = 1e-3 * urand(&seed);
-    worst_mono = fmax(worst_mono, sl_godunov_flux(&t, q, w, a, b) - sl_godunov_flux(&t, q, w, fmin(a + da, PHI_MAX), b));
-    worst_mono = fmax(worst_mono, sl_godunov_flux(&t, q, w, a, fmin(b + da, PHI_MAX)) - sl_godunov_flux(&t, q, w, a, b));
+    worst_mono =
+        fmax(worst_mono, sl_godunov_flux(&t, q, w, a, b) - sl_godunov_flux(&t, q, w, fmin(a + da, PHI_MAX), b));
+    worst_mono =
+        fmax(worst_mono, sl_godunov_flux(&t, q, w, a, fmin(b + da, PHI_MAX)) - sl_godunov_flux(&t, q, w, a, b));
     /* Consistent: G(u, u) = h(u) on the table. */
     CHECK(sl_godunov_flux(&t, q, w, a, a) == q * a + w * sl_settling_F(&t, a));
   }
-  printf("Godunov flux on the 2049-node table against the exact one: max error %.2e of |q| phi_max + |w| max F "
-         "(%d of 20000 with an interior extremum); monotonicity violated by at most %.1e\n",
-         worst, n_interior, worst_mono);
+  printf(
+      "Godunov flux on the 2049-node table against the exact one: max error %.2e of |q| phi_max + |w| max F "
+      "(%d of 20000 with an interior extremum); monotonicity violated by at most %.1e\n",
+      worst, n_interior, worst_mono);
   CHECK(worst < 1e-12);
   CHECK(n_interior > 1000);
   CHECK(worst_mono <= 1e-15);
@@ -159,7 +163,7 @@ static void test_godunov(void) {
 static int bad_callback(void *user, int n, const double *phi, double *u, double *du, sl_diag *d) {
   int mode = *(const int *)user;
   for (int i = 0; i < n; ++i) {
-    u[i] = mode == 0 ? pow(1 - phi[i], 4.65)                     /* no cut-off: F(phi_max) > 0 */
+    u[i] = mode == 0   ? pow(1 - phi[i], 4.65)                   /* no cut-off: F(phi_max) > 0 */
            : mode == 1 ? (0.3 - phi[i]) * (1 - phi[i] / PHI_MAX) /* changes sign */
                        : (phi[i] > 0.5 ? NAN : 1 - phi[i] / PHI_MAX);
     du[i] = 0;
@@ -210,8 +214,8 @@ static void test_table_in_solution(void) {
   for (int s = 0; s < 4; ++s) {
     kr_run r;
     sl_diag d;
-    sl_transport_opts o = {.phi_max = PHI_MAX, .order = 2, .table_points = sizes[s], .settling = kx_settling,
-                           .settling_user = &law};
+    sl_transport_opts o = {
+        .phi_max = PHI_MAX, .order = 2, .table_points = sizes[s], .settling = kx_settling, .settling_user = &law};
     r = (kr_run){0};
     kr_open(&r, 200, 1.0, 0.1, 2, SL_LIMITER_MC, kx_settling, &law, PHI_MAX);
     sl_transport_destroy(r.t);
@@ -230,9 +234,10 @@ static void test_table_in_solution(void) {
     diff[s] = 0;
     for (int i = 0; i < 200; ++i) diff[s] += fabs(phi[s][i] - phi[3][i]) / 200;
   }
-  printf("Kynch case A, MUSCL, 200 cells, t = 0.8 t1: L1 change from the table (129, 513, 2049 nodes against 8193): "
-         "%.2e, %.2e, %.2e; the discretisation error is %.2e\n",
-         diff[0], diff[1], diff[2], l1_exact);
+  printf(
+      "Kynch case A, MUSCL, 200 cells, t = 0.8 t1: L1 change from the table (129, 513, 2049 nodes against 8193): "
+      "%.2e, %.2e, %.2e; the discretisation error is %.2e\n",
+      diff[0], diff[1], diff[2], l1_exact);
   CHECK(diff[2] < 1e-10 * l1_exact / 1e-3 && diff[2] < 1e-9);
   for (int s = 0; s < 4; ++s) free(phi[s]);
 }
@@ -242,7 +247,8 @@ static void test_table_in_solution(void) {
 static sl_transport *open_t(const sl_mesh *m, sl_transport_geometry g, int order, kx_law *law) {
   sl_diag d;
   sl_transport *t;
-  sl_transport_opts o = {.phi_max = PHI_MAX, .order = order, .geometry = g, .settling = kx_settling, .settling_user = law};
+  sl_transport_opts o = {
+      .phi_max = PHI_MAX, .order = order, .geometry = g, .settling = kx_settling, .settling_user = law};
   if (sl_transport_create(m, &o, &t, &d)) {
     fprintf(stderr, "transport: %s\n", d.msg);
     exit(1);
@@ -276,8 +282,8 @@ static void test_geometry(void) {
     double expect = a[0] == b[0] ? fabs(b[1] - a[1]) * a[0] : 0.5 * fabs(b[0] * b[0] - a[0] * a[0]);
     worst = fmax(worst, fabs(A[f] - expect));
   }
-  CHECK_MSG(worst < 1e-14 && fabs(sum - 0.5 * (1.5 * 1.5 - 0.25) * 2) < 1e-14, "axisymmetric quads: %g, sum %g",
-            worst, sum);
+  CHECK_MSG(worst < 1e-14 && fabs(sum - 0.5 * (1.5 * 1.5 - 0.25) * 2) < 1e-14, "axisymmetric quads: %g, sum %g", worst,
+            sum);
   sl_transport_destroy(t);
   sl_mesh_destroy(m);
   /* Triangles reaching the axis: the same total, and axis faces carry no area. */
@@ -309,8 +315,8 @@ static void test_geometry(void) {
   sl_mesh_destroy(m);
   /* An axisymmetric mesh must have r >= 0. */
   CHECK(sl_mesh_interval(-1, 1, 4, NULL, &m, &d) == 0);
-  sl_transport_opts o = {.phi_max = PHI_MAX, .geometry = SL_TRANSPORT_AXISYMMETRIC, .settling = kx_settling,
-                         .settling_user = &law};
+  sl_transport_opts o = {
+      .phi_max = PHI_MAX, .geometry = SL_TRANSPORT_AXISYMMETRIC, .settling = kx_settling, .settling_user = &law};
   CHECK(sl_transport_create(m, &o, &t, &d) == SL_EBADINPUT && t == NULL);
   CHECK_CONTAINS(d.msg, "r = x = -1 < 0");
   sl_mesh_destroy(m);
@@ -416,9 +422,10 @@ static void test_open_boundaries(void) {
       worst = fmax(worst, fabs(sl_transport_mass(t, phi) - (m0 + inflow)));
       CHECK(st.max_divergence < 1e-15);
     }
-    printf("open column, order %d: solids volume %.6f after 2 s (from %.6f), balance with the reported inflow "
-           "off by %.1e\n",
-           order, sl_transport_mass(t, phi), m0, worst);
+    printf(
+        "open column, order %d: solids volume %.6f after 2 s (from %.6f), balance with the reported inflow "
+        "off by %.1e\n",
+        order, sl_transport_mass(t, phi), m0, worst);
     CHECK(worst < 1e-15 && inflow > 0);
     sl_transport_destroy(t);
   }

@@ -87,8 +87,8 @@ static void check_fronts(const kcase *c, const kynch *k, int order) {
      * linear wave, ~ (h t)^(1/2): its level crossing drifts ahead, an error
      * in the measured speed that falls like h^(1/2) (checked below). */
     double tol = order == 1 && k->bottom == KX_CONTACT ? 0.04 : 0.01;
-    CHECK_MSG(fabs(eb) < tol && fabs(em) < tol, "case %s order %d: bottom speed error %.3g, meeting time %.3g",
-              c->name, order, eb, em);
+    CHECK_MSG(fabs(eb) < tol && fabs(em) < tol, "case %s order %d: bottom speed error %.3g, meeting time %.3g", c->name,
+              order, eb, em);
     printf(", bottom shock %+.3f %%, fronts meet %+.3f %%", 100 * eb, 100 * em);
     if (order == 1 && k->bottom == KX_CONTACT) {
       double et4, eb4, em4, et8, eb8, em8;
@@ -141,10 +141,11 @@ static void check_sediment(const kcase *c, const kynch *k, int order) {
             worst_packed, worst_clear, l1);
   CHECK(r.max_phi <= PHI_MAX && r.min_phi >= 0);
   CHECK(fabs(mass - r.mass0) <= 1e-12 * r.mass0);
-  printf("case %s order %d: sediment at t = %.3g (t2 = %.4g): height %.5f, below it at most %.2e short of "
-         "phi_max, above it at most %.2e, L1 %.2e, mass error %.1e, max phi - phi_max %.1e\n",
-         c->name, order, t_end, k->t2, k->z_final, worst_packed, worst_clear, l1, (mass - r.mass0) / r.mass0,
-         r.max_phi - PHI_MAX);
+  printf(
+      "case %s order %d: sediment at t = %.3g (t2 = %.4g): height %.5f, below it at most %.2e short of "
+      "phi_max, above it at most %.2e, L1 %.2e, mass error %.1e, max phi - phi_max %.1e\n",
+      c->name, order, t_end, k->t2, k->z_final, worst_packed, worst_clear, l1, (mass - r.mass0) / r.mass0,
+      r.max_phi - PHI_MAX);
   kr_close(&r);
 }
 
@@ -235,11 +236,14 @@ int main(void) {
   for (int i = 0; i < 4; ++i) {
     CHECK(kx_init(&k[i], kx_richardson_zaki(1.0, cases[i].n, PHI_MAX), 1.0, cases[i].phi0) == 0);
     CHECK_MSG(k[i].bottom == cases[i].bottom, "case %s: bottom structure %d", cases[i].name, k[i].bottom);
-    printf("case %s: n = %.2f phi0 = %.2f: top speed %.5f, bottom %s phi* = %.5f speed %.5f, inflection %.5f, "
-           "sediment rises at %.5f, fronts meet at t = %.5f z = %.5f, at rest from t = %.5g, height %.5f\n",
-           cases[i].name, cases[i].n, cases[i].phi0, k[i].v0,
-           k[i].bottom == KX_SHOCK ? "shock" : k[i].bottom == KX_CONTACT ? "contact + fan" : "fan", k[i].phis,
-           k[i].sigma, k[i].infl, k[i].sed, k[i].t1, k[i].z1, k[i].t2, k[i].z_final);
+    printf(
+        "case %s: n = %.2f phi0 = %.2f: top speed %.5f, bottom %s phi* = %.5f speed %.5f, inflection %.5f, "
+        "sediment rises at %.5f, fronts meet at t = %.5f z = %.5f, at rest from t = %.5g, height %.5f\n",
+        cases[i].name, cases[i].n, cases[i].phi0, k[i].v0,
+        k[i].bottom == KX_SHOCK     ? "shock"
+        : k[i].bottom == KX_CONTACT ? "contact + fan"
+                                    : "fan",
+        k[i].phis, k[i].sigma, k[i].infl, k[i].sed, k[i].t1, k[i].z1, k[i].t2, k[i].z_final);
   }
   for (int i = 0; i < 4; ++i) check_exact(&k[i], cases[i].name);
   for (int i = 0; i < 4; ++i)

@@ -26,8 +26,8 @@ static kx_law law_a;
 static sl_transport *open_t(const sl_mesh *m, sl_transport_geometry g, int order) {
   sl_diag d;
   sl_transport *t;
-  sl_transport_opts o = {.phi_max = PHI_MAX, .order = order, .geometry = g, .settling = kx_settling,
-                         .settling_user = &law_a};
+  sl_transport_opts o = {
+      .phi_max = PHI_MAX, .order = order, .geometry = g, .settling = kx_settling, .settling_user = &law_a};
   if (sl_transport_create(m, &o, &t, &d)) {
     fprintf(stderr, "transport: %s\n", d.msg);
     exit(1);
@@ -59,7 +59,8 @@ static void run(sl_transport *t, const double *q, const double *w, double *phi, 
     tot->fallbacks += st.n_fallbacks;
     tot->max_div = fmax(tot->max_div, st.max_divergence);
     tot->clamped += st.clamped;
-    for (int c = 0; c < m->n_cells; ++c) tot->max_phi = fmax(tot->max_phi, phi[c]), tot->min_phi = fmin(tot->min_phi, phi[c]);
+    for (int c = 0; c < m->n_cells; ++c)
+      tot->max_phi = fmax(tot->max_phi, phi[c]), tot->min_phi = fmin(tot->min_phi, phi[c]);
   }
 }
 
@@ -78,7 +79,8 @@ static void test_columns(void) {
     for (int axi = 0; axi <= 1; ++axi) {
       sl_diag d;
       sl_mesh *m;
-      int rc = axi ? sl_mesh_annulus(0, 0.3, 0, 1, NX, N, NULL, &m, &d) : sl_mesh_rectangle(0, 0.3, 0, 1, NX, N, NULL, &m, &d);
+      int rc = axi ? sl_mesh_annulus(0, 0.3, 0, 1, NX, N, NULL, &m, &d)
+                   : sl_mesh_rectangle(0, 0.3, 0, 1, NX, N, NULL, &m, &d);
       CHECK(rc == 0);
       sl_transport *t = open_t(m, axi ? SL_TRANSPORT_AXISYMMETRIC : SL_TRANSPORT_PLANAR, order);
       double *w = alloc(m->n_faces), *phi = alloc(m->n_cells);
@@ -94,9 +96,10 @@ static void test_columns(void) {
         worst = fmax(worst, fabs(phi[c] - r1.phi[row]));
       }
       double dm = fabs(sl_transport_mass(t, phi) - m0) / m0;
-      printf("%s quads %dx%d, order %d: columns against the 1-D run: max |difference| %.1e, mass error %.1e, "
-             "sub-steps %ld (1-D %ld)\n",
-             axi ? "axisymmetric" : "planar", NX, N, order, worst, dm, tot.substeps, r1.substeps);
+      printf(
+          "%s quads %dx%d, order %d: columns against the 1-D run: max |difference| %.1e, mass error %.1e, "
+          "sub-steps %ld (1-D %ld)\n",
+          axi ? "axisymmetric" : "planar", NX, N, order, worst, dm, tot.substeps, r1.substeps);
       CHECK(worst < 1e-12 && dm < 1e-13 && tot.substeps == r1.substeps && tot.fallbacks == 0);
       free(w), free(phi);
       sl_transport_destroy(t);
@@ -137,16 +140,18 @@ static void test_triangles(void) {
     }
     kx_profile p = kx_at(&k, T);
     double l1 = 0, spread = 0;
-    for (int j = 0; j < N; ++j) l1 += fabs(row_mass[j] / row_vol[j] - kx_integral(&k, &p, (double)j / N, (j + 1.0) / N) * N) / N;
+    for (int j = 0; j < N; ++j)
+      l1 += fabs(row_mass[j] / row_vol[j] - kx_integral(&k, &p, (double)j / N, (j + 1.0) / N) * N) / N;
     for (int c = 0; c < m->n_cells; ++c) {
       int row = (int)(sl_transport_cell_points(t)[2 * c + 1] * N);
       spread = fmax(spread, fabs(phi[c] - row_mass[row] / row_vol[row]));
     }
     double dm = fabs(sl_transport_mass(t, phi) - m0) / m0;
-    printf("triangles (union jack) %dx%dx4, order %d, t = 0.8 t1: row-average L1 %.3e (1-D run %.3e), largest "
-           "departure from the row average %.2e, mass error %.1e, phi in [%.2g, %.6f], %d first-order fallbacks in "
-           "%ld sub-steps, round-off clamped %.1e\n",
-           NX, N, order, l1, l1_1d, spread, dm, tot.min_phi, tot.max_phi, tot.fallbacks, tot.substeps, tot.clamped);
+    printf(
+        "triangles (union jack) %dx%dx4, order %d, t = 0.8 t1: row-average L1 %.3e (1-D run %.3e), largest "
+        "departure from the row average %.2e, mass error %.1e, phi in [%.2g, %.6f], %d first-order fallbacks in "
+        "%ld sub-steps, round-off clamped %.1e\n",
+        NX, N, order, l1, l1_1d, spread, dm, tot.min_phi, tot.max_phi, tot.fallbacks, tot.substeps, tot.clamped);
     CHECK(l1 < 1.5 * l1_1d);
     CHECK(dm < 1e-13 && tot.min_phi >= 0 && tot.max_phi <= PHI_MAX);
     free(w), free(phi);
@@ -198,12 +203,14 @@ static void test_cellular(void) {
       double dm = fabs(sl_transport_mass(t, phi) - m0) / m0;
       double bottom = 0;
       for (int c = 0; c < m->n_cells; ++c) bottom = fmax(bottom, phi[c]);
-      printf("cellular flow + settling, %s 32x32, order %d, t = 3: mass error %.1e, phi in [%.2g, %.6f], largest "
-             "relative divergence of q %.1e, uniform phi without settling kept to %.1e, %d fallbacks in %ld "
-             "sub-steps, round-off clamped %.1e\n",
-             tri ? "triangles" : "quads", order, dm, tot.min_phi, tot.max_phi, tot.max_div, dev, tot.fallbacks,
-             tot.substeps, tot.clamped);
-      CHECK(dm < 1e-13 && tot.min_phi >= 0 && tot.max_phi <= PHI_MAX && tot.max_div < 1e-15 && tot.clamped < 1e-15 * m0);
+      printf(
+          "cellular flow + settling, %s 32x32, order %d, t = 3: mass error %.1e, phi in [%.2g, %.6f], largest "
+          "relative divergence of q %.1e, uniform phi without settling kept to %.1e, %d fallbacks in %ld "
+          "sub-steps, round-off clamped %.1e\n",
+          tri ? "triangles" : "quads", order, dm, tot.min_phi, tot.max_phi, tot.max_div, dev, tot.fallbacks,
+          tot.substeps, tot.clamped);
+      CHECK(dm < 1e-13 && tot.min_phi >= 0 && tot.max_phi <= PHI_MAX && tot.max_div < 1e-15 &&
+            tot.clamped < 1e-15 * m0);
       CHECK(bottom > 0.3); /* a sediment forms where the flow lets it */
       free(w), free(q), free(phi);
       sl_transport_destroy(t);
@@ -255,9 +262,10 @@ static void test_radial(void) {
       worst = fmax(worst, fabs(p2[c] - p1[col]));
     }
     double dm1 = fabs(sl_transport_mass(t1, p1) - m10) / m10, dm2 = fabs(sl_transport_mass(t2, p2) - m20) / m20;
-    printf("radial settling b = r e_r, order %d, t = %g: plateau phi %.8f, exact (dphi/dt = -2 phi u) %.8f, "
-           "error %.1e; annulus rows against the radial line %.1e; mass errors %.1e, %.1e; outer cell %.5f\n",
-           order, T, mid, exact, e, worst, dm1, dm2, p1[N - 1]);
+    printf(
+        "radial settling b = r e_r, order %d, t = %g: plateau phi %.8f, exact (dphi/dt = -2 phi u) %.8f, "
+        "error %.1e; annulus rows against the radial line %.1e; mass errors %.1e, %.1e; outer cell %.5f\n",
+        order, T, mid, exact, e, worst, dm1, dm2, p1[N - 1]);
     CHECK(e < (order == 1 ? 2e-3 : 1e-5));
     CHECK(worst < 1e-12 && dm1 < 1e-13 && dm2 < 1e-13);
     CHECK(tot1.max_phi <= PHI_MAX && tot1.min_phi >= 0 && p1[N - 1] > 0.3);

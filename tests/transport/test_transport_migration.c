@@ -125,9 +125,10 @@ static void test_stable_step(void) {
     int o = m->face_cells[2 * f], n = m->face_cells[2 * f + 1];
     if (n >= 0 && phi[o] == 0 && phi[n] == 0) zero_faces += flux[f] == 0;
   }
-  printf("phi = 0.3 between empty cells: dt_stable %.6e; after it the cell holds %.1e (lowest %.1e); after 1.01 "
-         "dt_stable %.2e\n",
-         dt, cell2, lowest, over);
+  printf(
+      "phi = 0.3 between empty cells: dt_stable %.6e; after it the cell holds %.1e (lowest %.1e); after 1.01 "
+      "dt_stable %.2e\n",
+      dt, cell2, lowest, over);
   CHECK(fabs(cell2) < 1e-15 && lowest >= -1e-15 && over < -1e-3);
   CHECK(zero_faces == 2);
   /* Uniform phi and g: no flux; zero shear: no flux and dt = +inf. */
@@ -148,9 +149,9 @@ static void test_stable_step(void) {
 /* ---- the bounds limiter and failures ----------------------------------------------------- */
 
 typedef struct synthetic {
-  double F;      /* flux through the faces, from left to right */
-  double dt;     /* the stable step it claims */
-  int mode;      /* 0: fine, 1: fail, 2: NaN, 3: dt = 0 */
+  double F;  /* flux through the faces, from left to right */
+  double dt; /* the stable step it claims */
+  int mode;  /* 0: fine, 1: fail, 2: NaN, 3: dt = 0 */
   int calls;
 } synthetic;
 
@@ -176,9 +177,10 @@ static void test_limiter(void) {
     sl_transport_stats st;
     CHECK(sl_transport_step(t, 1.0, NULL, NULL, phi, &st, &d) == 0);
     double m1 = sl_transport_mass(t, phi);
-    printf("order %d, synthetic flux 1.0 through 3 cells for dt = 1: phi = (%.6f, %.6f, %.6f), %d sub-steps, "
-           "%d faces limited, %.3e held back, mass change %.1e\n",
-           order, phi[0], phi[1], phi[2], st.n_substeps, st.n_extra_limited, st.extra_limited, fabs(m1 - m0) / m0);
+    printf(
+        "order %d, synthetic flux 1.0 through 3 cells for dt = 1: phi = (%.6f, %.6f, %.6f), %d sub-steps, "
+        "%d faces limited, %.3e held back, mass change %.1e\n",
+        order, phi[0], phi[1], phi[2], st.n_substeps, st.n_extra_limited, st.extra_limited, fabs(m1 - m0) / m0);
     CHECK(st.n_substeps == 1 && st.n_extra_limited > 0 && st.extra_limited > 0);
     CHECK(fabs(m1 - m0) <= 1e-15 * m0);
     CHECK(phi[0] >= 0 && phi[1] < MX_PHI_M && phi[2] < MX_PHI_M);
@@ -263,7 +265,8 @@ static double per_exact_avg(double K, double x0, double x1) {
   static const double gw[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
   double c = 0.5 * (x0 + x1), h = 0.5 * (x1 - x0), s = 0;
   for (int k = 0; k < 4; ++k)
-    for (int sg = -1; sg <= 1; sg += 2) s += gw[k] * mx_solve(K - log(per_g(c + sg * h * gx[k])), MX_EXPO * MX_KMU / MX_KC);
+    for (int sg = -1; sg <= 1; sg += 2)
+      s += gw[k] * mx_solve(K - log(per_g(c + sg * h * gx[k])), MX_EXPO * MX_KMU / MX_KC);
   return s / 2;
 }
 
@@ -314,9 +317,10 @@ static double per_run(int N, int box, double *phi1, double *row_diff, double *ma
     if (box) *row_diff = fmax(*row_diff, fabs(phi[c] - phi1[i]));
     else phi1[c] = phi[c];
   }
-  printf("periodic %s, N = %d, frozen g = 1 + 0.5 sin(2 pi x): steady after %ld sub-steps, max |error| %.2e, mass "
-         "change %.1e%s",
-         box ? "box (N x 1 quads)" : "interval", N, steps, err, *mass_err, box ? "" : "\n");
+  printf(
+      "periodic %s, N = %d, frozen g = 1 + 0.5 sin(2 pi x): steady after %ld sub-steps, max |error| %.2e, mass "
+      "change %.1e%s",
+      box ? "box (N x 1 quads)" : "interval", N, steps, err, *mass_err, box ? "" : "\n");
   if (box) printf(", rows against the interval %.1e\n", *row_diff);
   free(phi), free(g), free(prev), free(flux);
   sl_migration_destroy(mg);
@@ -355,7 +359,8 @@ static void test_annulus(void) {
   sl_transport *t1 = open_t(m1, 2, SL_TRANSPORT_AXISYMMETRIC), *t2 = open_t(m2, 2, SL_TRANSPORT_AXISYMMETRIC);
   if (sl_transport_set_periodic_named(t2, "bottom", "top", &d)) mx_die("periodic", &d);
   sl_migration *g1 = open_mg(t1, &p), *g2 = open_mg(t2, &p);
-  if (sl_transport_set_extra_flux(t1, sl_migration_flux, g1, &d) || sl_transport_set_extra_flux(t2, sl_migration_flux, g2, &d))
+  if (sl_transport_set_extra_flux(t1, sl_migration_flux, g1, &d) ||
+      sl_transport_set_extra_flux(t2, sl_migration_flux, g2, &d))
     mx_die("extra", &d);
   double *p1 = alloc(m1->n_cells), *p2 = alloc(m2->n_cells), *s1 = alloc(m1->n_cells), *s2 = alloc(m2->n_cells);
   const double *x1 = sl_transport_cell_points(t1), *x2 = sl_transport_cell_points(t2);
@@ -383,9 +388,10 @@ static void test_annulus(void) {
   }
   for (int c = 0; c < m1->n_cells; ++c) moved = fmax(moved, fabs(p1[c] - 0.45));
   double me = fabs(sl_transport_mass(t2, p2) - m0) / m0;
-  printf("annulus %dx3 periodic in z against the radial line, g = 1/r^2, steady state: phi moved up to %.3f, columns "
-         "differ by %.1e, sub-steps %ld / %ld, mass change %.1e\n",
-         NR, moved, diff, n2, n1, me);
+  printf(
+      "annulus %dx3 periodic in z against the radial line, g = 1/r^2, steady state: phi moved up to %.3f, columns "
+      "differ by %.1e, sub-steps %ld / %ld, mass change %.1e\n",
+      NR, moved, diff, n2, n1, me);
   CHECK(moved > 0.05 && diff < 1e-9 && me < 1e-13);
   free(q1), free(q2);
   free(p1), free(p2), free(s1), free(s2);

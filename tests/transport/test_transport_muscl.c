@@ -83,18 +83,18 @@ static sl_transport *open_t(const sl_mesh *m) {
 static void orders(const char *what, int kind, const double *l1, double min_order) {
   double o1 = log2(l1[0] / l1[1]), o2 = log2(l1[1] / l1[2]);
   printf("%s, %s: observed L1 orders %.2f, %.2f\n", what, mesh_name[kind], o1, o2);
-  CHECK_MSG(o1 >= min_order && o2 >= min_order, "%s, %s: L1 orders %.2f, %.2f (%.2f wanted)", what,
-            mesh_name[kind], o1, o2, min_order);
+  CHECK_MSG(o1 >= min_order && o2 >= min_order, "%s, %s: L1 orders %.2f, %.2f (%.2f wanted)", what, mesh_name[kind], o1,
+            o2, min_order);
 }
 
 /* Prints one run and checks what holds at every level: mass to round-off,
  * phi within the initial range [lo, hi], no first-order fallback. */
 static void check_run(const char *what, int kind, int n, const result *r, double lo, double hi) {
-  printf("%s, %s, n = %3d: L1 error %.3e, phi in [%.4f, %.4f], mass change %.1e, %ld sub-steps, %d fallbacks\n",
-         what, mesh_name[kind], n, r->l1, r->lo, r->hi, r->mass_err, r->substeps, r->fallbacks);
+  printf("%s, %s, n = %3d: L1 error %.3e, phi in [%.4f, %.4f], mass change %.1e, %ld sub-steps, %d fallbacks\n", what,
+         mesh_name[kind], n, r->l1, r->lo, r->hi, r->mass_err, r->substeps, r->fallbacks);
   CHECK_MSG(r->mass_err < 1e-14, "%s: mass changed by %.2e", what, r->mass_err);
-  CHECK_MSG(r->lo >= lo - 1e-12 && r->hi <= hi + 1e-12 && r->fallbacks == 0, "%s: phi in [%g, %g], %d fallbacks",
-            what, r->lo, r->hi, r->fallbacks);
+  CHECK_MSG(r->lo >= lo - 1e-12 && r->hi <= hi + 1e-12 && r->fallbacks == 0, "%s: phi in [%g, %g], %d fallbacks", what,
+            r->lo, r->hi, r->fallbacks);
 }
 
 /* ---- doubly periodic, uniform velocity ---------------------------------------------------------- */
@@ -278,9 +278,10 @@ static void test_settling_bounds(void) {
       for (int c = 0; c < m->n_cells; ++c) lo = fmin(lo, phi[c]), hi = fmax(hi, phi[c]);
     }
     double dm = fabs(sl_transport_mass(t, phi) - m0) / m0;
-    printf("walls, rotation and settling, %s, n = 32, half a turn: phi in [%.2g, %.6f], mass change %.1e, %d "
-           "fallbacks in %ld sub-steps, round-off clamped %.1e\n",
-           mesh_name[kind], lo, hi, dm, fallbacks, substeps, clamped);
+    printf(
+        "walls, rotation and settling, %s, n = 32, half a turn: phi in [%.2g, %.6f], mass change %.1e, %d "
+        "fallbacks in %ld sub-steps, round-off clamped %.1e\n",
+        mesh_name[kind], lo, hi, dm, fallbacks, substeps, clamped);
     CHECK_MSG(dm < 1e-13, "mass changed by %.2e", dm);
     CHECK(lo >= 0 && hi <= PHI_MAX && fallbacks == 0 && clamped < 1e-15 * m0);
     CHECK(hi > 0.6); /* a sediment forms */

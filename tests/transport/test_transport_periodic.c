@@ -123,9 +123,10 @@ static void test_box_orders(void) {
       const double *xc = sl_transport_cell_points(t);
       for (int c = 0; c < m->n_cells; ++c) diff = fmax(diff, fabs(phi[c] - p1[(int)(xc[2 * c] * ns[i])]));
       l1[i] = r.l1;
-      printf("box %3dx2 quads, order %d, one period: L1 error %.3e, max %.3e, phi in [%.4f, %.4f], mass change %.1e, "
-             "%ld sub-steps, %d fallbacks; rows against the 1-D periodic interval %.1e\n",
-             ns[i], order, r.l1, r.linf, r.lo, r.hi, r.mass_err, r.substeps, r.fallbacks, diff);
+      printf(
+          "box %3dx2 quads, order %d, one period: L1 error %.3e, max %.3e, phi in [%.4f, %.4f], mass change %.1e, "
+          "%ld sub-steps, %d fallbacks; rows against the 1-D periodic interval %.1e\n",
+          ns[i], order, r.l1, r.linf, r.lo, r.hi, r.mass_err, r.substeps, r.fallbacks, diff);
       CHECK_MSG(r.mass_err < 1e-14, "mass changed by %.2e", r.mass_err);
       CHECK_MSG(r1.mass_err < 1e-14, "1-D mass changed by %.2e", r1.mass_err);
       CHECK_MSG(diff < 1e-13, "rows differ from the 1-D run by %.2e", diff);
@@ -165,9 +166,10 @@ static void test_doubly_periodic_triangles(void) {
       phi[c] = phi0[c] = 0.3 + 0.2 * sin(2 * M_PI * xc[2 * c]) * sin(2 * M_PI * xc[2 * c + 1]);
     result r = advect(t, u, phi, phi0, 1.0, 0.1);
     if (!uj) l1[i] = r.l1;
-    printf("unit square, %d^2 x 2 %s triangles, doubly periodic, u = (1, 1), order 2, one period: L1 error "
-           "%.3e, max %.3e, phi in [%.4f, %.4f], mass change %.1e, %ld sub-steps, %d fallbacks\n",
-           n, uj ? "union-jack" : "\"/\"", r.l1, r.linf, r.lo, r.hi, r.mass_err, r.substeps, r.fallbacks);
+    printf(
+        "unit square, %d^2 x 2 %s triangles, doubly periodic, u = (1, 1), order 2, one period: L1 error "
+        "%.3e, max %.3e, phi in [%.4f, %.4f], mass change %.1e, %ld sub-steps, %d fallbacks\n",
+        n, uj ? "union-jack" : "\"/\"", r.l1, r.linf, r.lo, r.hi, r.mass_err, r.substeps, r.fallbacks);
     CHECK_MSG(r.mass_err < 1e-14, "mass changed by %.2e", r.mass_err);
     CHECK(r.lo >= 0.1 - 1e-12 && r.hi <= 0.5 + 1e-12);
     free(phi), free(phi0);
@@ -194,7 +196,8 @@ static void test_errors(void) {
   CHECK_CONTAINS(d.msg, "the node (2, 0.500001) of 'right' has no partner on 'left' at (0, 0.500001)");
   /* The same vertex moved across the boundary (x): the misplaced node is the one named. */
   for (int v = 0; v < m->n_vertices; ++v)
-    if (fabs(m->xy[2 * v] - 2) < 1e-12 && fabs(m->xy[2 * v + 1] - 0.5) < 1e-5) m->xy[2 * v + 1] = 0.5, m->xy[2 * v] = 2 + 1e-6;
+    if (fabs(m->xy[2 * v] - 2) < 1e-12 && fabs(m->xy[2 * v + 1] - 0.5) < 1e-5)
+      m->xy[2 * v + 1] = 0.5, m->xy[2 * v] = 2 + 1e-6;
   rc = sl_transport_set_periodic_named(t, "left", "right", &d);
   printf("moved vertex, across: %s\n", d.msg);
   CHECK(rc == SL_EBADINPUT);

@@ -78,11 +78,12 @@ static void run_level(level *L) {
     else L->tab_in = fmax(L->tab_in, e);
     L->w_err = fmax(L->w_err, fabs(pipe_w(&r, tab_r[k]) - tab_w[k]));
   }
-  printf("N = %3d: steady at t = %.0f after %ld sub-steps (%ld outer), phi in [%.4f, %.4f]; exact (phi_w = "
-         "%.5f): max |error| for r >= 0.2 %.2e, axis cell %.2e, mean |error| %.2e; reference table: max |dphi| %.2e "
-         "for r >= 0.2, %.2e for r < 0.2, max |dw| %.2e; mean %.15f, relative change %.1e; limited faces %d\n",
-         L->N, r.time, r.substeps, r.outer, r.phi[L->N - 1], r.phi[0], x.phi_w, L->err_out, L->err_axis, L->err_l1,
-         L->tab_out, L->tab_in, L->w_err, mean, L->mass_err, r.limited);
+  printf(
+      "N = %3d: steady at t = %.0f after %ld sub-steps (%ld outer), phi in [%.4f, %.4f]; exact (phi_w = "
+      "%.5f): max |error| for r >= 0.2 %.2e, axis cell %.2e, mean |error| %.2e; reference table: max |dphi| %.2e "
+      "for r >= 0.2, %.2e for r < 0.2, max |dw| %.2e; mean %.15f, relative change %.1e; limited faces %d\n",
+      L->N, r.time, r.substeps, r.outer, r.phi[L->N - 1], r.phi[0], x.phi_w, L->err_out, L->err_axis, L->err_l1,
+      L->tab_out, L->tab_in, L->w_err, mean, L->mass_err, r.limited);
   free(avg);
   mx_close(&r);
 }
@@ -102,9 +103,10 @@ int main(void) {
   double o_out1 = log2(lv[0].err_out / lv[1].err_out), o_out2 = log2(lv[1].err_out / lv[2].err_out);
   double o_l11 = log2(lv[0].err_l1 / lv[1].err_l1), o_l12 = log2(lv[1].err_l1 / lv[2].err_l1);
   double o_ax1 = log2(lv[0].err_axis / lv[1].err_axis), o_ax2 = log2(lv[1].err_axis / lv[2].err_axis);
-  printf("observed orders against the exact steady state: max for r >= 0.2 %.2f, %.2f; mean %.2f, %.2f; axis cell "
-         "%.2f, %.2f\n",
-         o_out1, o_out2, o_l11, o_l12, o_ax1, o_ax2);
+  printf(
+      "observed orders against the exact steady state: max for r >= 0.2 %.2f, %.2f; mean %.2f, %.2f; axis cell "
+      "%.2f, %.2f\n",
+      o_out1, o_out2, o_l11, o_l12, o_ax1, o_ax2);
   CHECK_MSG(o_out1 > 1.7 && o_out2 > 1.7, "orders for r >= 0.2: %.2f %.2f", o_out1, o_out2);
   CHECK_MSG(o_l11 > 1.5 && o_l12 > 1.5, "orders of the mean error: %.2f %.2f", o_l11, o_l12);
   CHECK_MSG(o_ax1 > 0.8 && o_ax2 > 0.8, "orders at the axis: %.2f %.2f", o_ax1, o_ax2);

@@ -54,8 +54,8 @@ static void expect_error(int line, const char *text, const char *prefix, const c
   CHECK_MSG(rc == SL_EBADINPUT, "line %d: '%s' gives rc %d, expected SL_EBADINPUT", line, text, rc);
   CHECK_MSG(e == NULL, "line %d: '%s' failed but handed out a program", line, text);
   if (rc == 0 && e) sl_expr_free(e);
-  CHECK_MSG(strncmp(d.msg, prefix, strlen(prefix)) == 0, "line %d: '%s': \"%s\" does not start with \"%s\"", line,
-            text, d.msg, prefix);
+  CHECK_MSG(strncmp(d.msg, prefix, strlen(prefix)) == 0, "line %d: '%s': \"%s\" does not start with \"%s\"", line, text,
+            d.msg, prefix);
   CHECK_MSG(strstr(d.msg, part) != NULL, "line %d: '%s': \"%s\" does not contain \"%s\"", line, text, d.msg, part);
 }
 #define EXPECT_ERR(text, prefix, part) expect_error(__LINE__, (text), (prefix), (part))
@@ -147,9 +147,9 @@ static void test_arithmetic(void) {
 static void test_power_unary(void) {
   double x = rt(g_vals[0]), y = rt(g_vals[1]), t = rt(g_vals[2]);
   EXPECT("2^3", 8.0);
-  EXPECT("2^3^2", 512.0);   /* right-associative: 2^(3^2) */
+  EXPECT("2^3^2", 512.0); /* right-associative: 2^(3^2) */
   EXPECT("(2^3)^2", 64.0);
-  EXPECT("-2^2", -4.0);     /* ^ binds tighter than unary minus */
+  EXPECT("-2^2", -4.0); /* ^ binds tighter than unary minus */
   EXPECT("(-2)^2", 4.0);
   EXPECT("-x^2", -(x * x));
   EXPECT("2^-1", 0.5);
@@ -361,11 +361,11 @@ static void test_folding(void) {
   EXPECT_FOLD("sin(pi/2)", 1, sin(rt(PI) / 2), 0, 0, 0);
   EXPECT_FOLD("max(1, 2, 3)", 1, 3.0, 0, 0, 0);
   EXPECT_FOLD("1 > 0 && 2 > 1", 1, 1.0, 0, 0, 0);
-  EXPECT_FOLD("1 ? 2 : x", 1, 2.0, 0, 0, 0);   /* the branch with x is dropped */
+  EXPECT_FOLD("1 ? 2 : x", 1, 2.0, 0, 0, 0); /* the branch with x is dropped */
   EXPECT_FOLD("0 ? y : 2^3", 1, 8.0, 0, 0, 0);
   EXPECT_FOLD("0 ? 2 : x", 0, 0, 1, 0, 0);
   EXPECT_FOLD("1 < 2 ? t : y", 0, 0, 0, 0, 1);
-  EXPECT_FOLD("x * 0", 0, 0, 1, 0, 0);          /* no algebra: x may be inf */
+  EXPECT_FOLD("x * 0", 0, 0, 1, 0, 0); /* no algebra: x may be inf */
   EXPECT_FOLD("x - x", 0, 0, 1, 0, 0);
   EXPECT_FOLD("(2^2)^x", 0, 0, 1, 0, 0);
   EXPECT_FOLD("x + t", 0, 0, 1, 0, 1);
@@ -410,7 +410,8 @@ static void test_errors(void) {
   EXPECT_ERR("x(2)", "column 1: ", "'x' is a variable, not a function");
   EXPECT_ERR("1 + pi(2)", "column 5: ", "'pi' is a constant, not a function");
   EXPECT_ERR("1 + 2 )", "column 7: ", "unmatched ')'");
-  EXPECT_ERR("1 2", "column 3: ", "expected an operator or the end of the expression, found '2'; write '*' to multiply");
+  EXPECT_ERR("1 2",
+             "column 3: ", "expected an operator or the end of the expression, found '2'; write '*' to multiply");
   EXPECT_ERR("2x", "column 2: ", "found 'x'; write '*' to multiply");
   EXPECT_ERR("2 (x)", "column 3: ", "found '('; write '*' to multiply");
   EXPECT_ERR("(x) y", "column 5: ", "write '*' to multiply");
@@ -501,10 +502,8 @@ static void test_errors(void) {
     buf[n] = '\0';
     double s = g_vals[0] + g_vals[1], ref = g_vals[2];
     for (int i = 0; i < levels; ++i) ref = s * ref;
-    if (levels == 60)
-      EXPECT(buf, ref);
-    else
-      EXPECT_ERR(buf, "expression too complex", "evaluation stack slots, at most 64");
+    if (levels == 60) EXPECT(buf, ref);
+    else EXPECT_ERR(buf, "expression too complex", "evaluation stack slots, at most 64");
   }
   free(buf);
 }
@@ -529,10 +528,10 @@ typedef struct {
   const char *name;
   int nargs; /* -1: 2 to 4 */
 } rfunc;
-static const rfunc rfuncs[] = {{"sin", 1},  {"cos", 1},   {"tan", 1},   {"asin", 1},  {"acos", 1},  {"atan", 1},
-                               {"atan2", 2}, {"sinh", 1},  {"cosh", 1},  {"tanh", 1},  {"exp", 1},   {"log", 1},
-                               {"log10", 1}, {"sqrt", 1},  {"abs", 1},   {"min", -1},  {"max", -1},  {"pow", 2},
-                               {"floor", 1}, {"ceil", 1},  {"sign", 1},  {"step", 1}};
+static const rfunc rfuncs[] = {{"sin", 1},   {"cos", 1},  {"tan", 1},  {"asin", 1}, {"acos", 1}, {"atan", 1},
+                               {"atan2", 2}, {"sinh", 1}, {"cosh", 1}, {"tanh", 1}, {"exp", 1},  {"log", 1},
+                               {"log10", 1}, {"sqrt", 1}, {"abs", 1},  {"min", -1}, {"max", -1}, {"pow", 2},
+                               {"floor", 1}, {"ceil", 1}, {"sign", 1}, {"step", 1}};
 enum { N_RFUNCS = (int)(sizeof rfuncs / sizeof rfuncs[0]) };
 
 typedef struct node {
@@ -550,32 +549,52 @@ typedef struct {
 
 static double c_func(int f, const double *a, int n) {
   switch (f) {
-    case 0: return sin(a[0]);
-    case 1: return cos(a[0]);
-    case 2: return tan(a[0]);
-    case 3: return asin(a[0]);
-    case 4: return acos(a[0]);
-    case 5: return atan(a[0]);
-    case 6: return atan2(a[0], a[1]);
-    case 7: return sinh(a[0]);
-    case 8: return cosh(a[0]);
-    case 9: return tanh(a[0]);
-    case 10: return exp(a[0]);
-    case 11: return log(a[0]);
-    case 12: return log10(a[0]);
-    case 13: return sqrt(a[0]);
-    case 14: return fabs(a[0]);
+    case 0:
+      return sin(a[0]);
+    case 1:
+      return cos(a[0]);
+    case 2:
+      return tan(a[0]);
+    case 3:
+      return asin(a[0]);
+    case 4:
+      return acos(a[0]);
+    case 5:
+      return atan(a[0]);
+    case 6:
+      return atan2(a[0], a[1]);
+    case 7:
+      return sinh(a[0]);
+    case 8:
+      return cosh(a[0]);
+    case 9:
+      return tanh(a[0]);
+    case 10:
+      return exp(a[0]);
+    case 11:
+      return log(a[0]);
+    case 12:
+      return log10(a[0]);
+    case 13:
+      return sqrt(a[0]);
+    case 14:
+      return fabs(a[0]);
     case 15:
     case 16: {
       double r = a[0];
       for (int i = 1; i < n; ++i) r = f == 15 ? c_min(r, a[i]) : c_max(r, a[i]);
       return r;
     }
-    case 17: return pow(a[0], a[1]);
-    case 18: return floor(a[0]);
-    case 19: return ceil(a[0]);
-    case 20: return c_sign(a[0]);
-    default: return (double)(a[0] >= 0);
+    case 17:
+      return pow(a[0], a[1]);
+    case 18:
+      return floor(a[0]);
+    case 19:
+      return ceil(a[0]);
+    case 20:
+      return c_sign(a[0]);
+    default:
+      return (double)(a[0] >= 0);
   }
 }
 
@@ -633,12 +652,16 @@ static int gen(tree *T, int depth) {
 static int prec(const tree *T, int id) {
   const node *nd = &T->nodes[id];
   switch (nd->kind) {
-    case N_TERN: return 1;
-    case N_BIN: return bin_prec[nd->op];
+    case N_TERN:
+      return 1;
+    case N_BIN:
+      return bin_prec[nd->op];
     case N_NEG:
     case N_POS:
-    case N_NOT: return 8;
-    default: return 10;
+    case N_NOT:
+      return 8;
+    default:
+      return 10;
   }
 }
 
@@ -669,9 +692,15 @@ static void print(const tree *T, int id, char *buf, size_t *len, size_t cap) {
       put(buf, len, cap, " ");
       put(buf, len, cap, nd->text);
       break;
-    case N_VAR: put(buf, len, cap, vars[nd->op]); break;
-    case N_PI: put(buf, len, cap, "pi"); break;
-    case N_E: put(buf, len, cap, " e"); break;
+    case N_VAR:
+      put(buf, len, cap, vars[nd->op]);
+      break;
+    case N_PI:
+      put(buf, len, cap, "pi");
+      break;
+    case N_E:
+      put(buf, len, cap, " e");
+      break;
     case N_NEG:
     case N_POS:
     case N_NOT:
@@ -682,7 +711,7 @@ static void print(const tree *T, int id, char *buf, size_t *len, size_t cap) {
       int p = bin_prec[nd->op], pl = prec(T, nd->kid[0]), pr = prec(T, nd->kid[1]);
       int lp, rpar;
       if (nd->op == B_POW) {
-        lp = pl < 10; /* the base is a primary */
+        lp = pl < 10;  /* the base is a primary */
         rpar = pr < 8; /* the exponent is a unary */
       } else if (p == 4 || p == 5) {
         lp = pl <= p; /* comparisons do not chain */
@@ -753,30 +782,50 @@ static double power(const tree *T, int base, int expo, const double *vals) {
 static double value(const tree *T, int id, const double *vals) {
   const node *nd = &T->nodes[id];
   switch (nd->kind) {
-    case N_NUM: return nd->num;
-    case N_VAR: return vals[nd->op];
-    case N_PI: return PI;
-    case N_E: return E;
-    case N_NEG: return -value(T, nd->kid[0], vals);
-    case N_POS: return value(T, nd->kid[0], vals);
-    case N_NOT: return (double)(value(T, nd->kid[0], vals) == 0);
-    case N_TERN: return value(T, nd->kid[value(T, nd->kid[0], vals) != 0 ? 1 : 2], vals);
+    case N_NUM:
+      return nd->num;
+    case N_VAR:
+      return vals[nd->op];
+    case N_PI:
+      return PI;
+    case N_E:
+      return E;
+    case N_NEG:
+      return -value(T, nd->kid[0], vals);
+    case N_POS:
+      return value(T, nd->kid[0], vals);
+    case N_NOT:
+      return (double)(value(T, nd->kid[0], vals) == 0);
+    case N_TERN:
+      return value(T, nd->kid[value(T, nd->kid[0], vals) != 0 ? 1 : 2], vals);
     case N_BIN: {
       if (nd->op == B_POW) return power(T, nd->kid[0], nd->kid[1], vals);
       double a = value(T, nd->kid[0], vals), b = value(T, nd->kid[1], vals);
       switch (nd->op) {
-        case B_ADD: return a + b;
-        case B_SUB: return a - b;
-        case B_MUL: return a * b;
-        case B_DIV: return a / b;
-        case B_LT: return (double)(a < b);
-        case B_LE: return (double)(a <= b);
-        case B_GT: return (double)(a > b);
-        case B_GE: return (double)(a >= b);
-        case B_EQ: return (double)(a == b);
-        case B_NE: return (double)(a != b);
-        case B_AND: return (double)(a != 0 && b != 0);
-        default: return (double)(a != 0 || b != 0);
+        case B_ADD:
+          return a + b;
+        case B_SUB:
+          return a - b;
+        case B_MUL:
+          return a * b;
+        case B_DIV:
+          return a / b;
+        case B_LT:
+          return (double)(a < b);
+        case B_LE:
+          return (double)(a <= b);
+        case B_GT:
+          return (double)(a > b);
+        case B_GE:
+          return (double)(a >= b);
+        case B_EQ:
+          return (double)(a == b);
+        case B_NE:
+          return (double)(a != b);
+        case B_AND:
+          return (double)(a != 0 && b != 0);
+        default:
+          return (double)(a != 0 || b != 0);
       }
     }
     default: {
@@ -826,8 +875,8 @@ static void test_random(void) {
       double got = sl_expr_eval(e, vals), want = value(T, root, vals);
       ++evaluated;
       if (!same(got, want) && ++bad_value <= 5)
-        fprintf(stderr, "random: '%s' at (%g, %g, %g) = %.17g, tree gives %.17g\n", buf, vals[0], vals[1], vals[2],
-                got, want);
+        fprintf(stderr, "random: '%s' at (%g, %g, %g) = %.17g, tree gives %.17g\n", buf, vals[0], vals[1], vals[2], got,
+                want);
     }
     sl_expr_free(e);
   }

@@ -29,34 +29,34 @@ static int parse_str(const char *text, const char *name, sl_ini **ini, sl_diag *
 
 /* The message starts with `prefix` and contains `part`; a macro so that a
  * failure names the line of the case. */
-#define CHECK_ERR(rc, d, prefix, part)                                                                      \
-  do {                                                                                                      \
+#define CHECK_ERR(rc, d, prefix, part)                                                                       \
+  do {                                                                                                       \
     CHECK_MSG((rc) == SL_EBADINPUT, "rc = %d, expected 2 (message: %s)", (rc), (d).msg);                     \
     CHECK_MSG(strncmp((d).msg, (prefix), strlen(prefix)) == 0, "\"%s\" does not start with \"%s\"", (d).msg, \
-              (prefix));                                                                                    \
-    CHECK_CONTAINS((d).msg, (part));                                                                        \
+              (prefix));                                                                                     \
+    CHECK_CONTAINS((d).msg, (part));                                                                         \
   } while (0)
 
-#define CHECK_PARSE_ERR_N(text, len, prefix, part)                         \
-  do {                                                                     \
-    sl_ini *ini_ = NULL;                                                   \
-    sl_diag d_ = {{0}};                                                    \
+#define CHECK_PARSE_ERR_N(text, len, prefix, part)                       \
+  do {                                                                   \
+    sl_ini *ini_ = NULL;                                                 \
+    sl_diag d_ = {{0}};                                                  \
     int rc_ = sl_ini_parse_string((text), (len), "bad.ini", &ini_, &d_); \
-    CHECK_ERR(rc_, d_, prefix, part);                                      \
-    CHECK(ini_ == NULL);                                                   \
-    sl_ini_free(ini_);                                                     \
+    CHECK_ERR(rc_, d_, prefix, part);                                    \
+    CHECK(ini_ == NULL);                                                 \
+    sl_ini_free(ini_);                                                   \
   } while (0)
 
 #define CHECK_PARSE_ERR(text, prefix, part) CHECK_PARSE_ERR_N((text), strlen(text), prefix, part)
 
-#define CHECK_FILE_ERR(path, prefix, part)             \
-  do {                                                 \
-    sl_ini *ini_ = NULL;                               \
-    sl_diag d_ = {{0}};                                \
-    int rc_ = sl_ini_parse_file((path), &ini_, &d_);  \
-    CHECK_ERR(rc_, d_, prefix, part);                  \
-    CHECK(ini_ == NULL);                               \
-    sl_ini_free(ini_);                                 \
+#define CHECK_FILE_ERR(path, prefix, part)           \
+  do {                                               \
+    sl_ini *ini_ = NULL;                             \
+    sl_diag d_ = {{0}};                              \
+    int rc_ = sl_ini_parse_file((path), &ini_, &d_); \
+    CHECK_ERR(rc_, d_, prefix, part);                \
+    CHECK(ini_ == NULL);                             \
+    sl_ini_free(ini_);                               \
   } while (0)
 
 static const char *value_of(const sl_ini *ini, const char *section, const char *key) {
@@ -179,10 +179,11 @@ static void test_malformed(void) {
   CHECK_PARSE_ERR("[scene]\n  model   ; no value\n", "bad.ini:2:11: error: ", "missing '=' after key 'model'");
   CHECK_PARSE_ERR("[scene]\n = x\n", "bad.ini:2:2: error: ", "missing key before '='");
   /* Duplicate key in one section of one file names the first line. */
-  CHECK_PARSE_ERR("[time]\ndt = 1\nend = 2\n\ndt = 3\n", "bad.ini:5:1: error: ",
-                  "duplicate key 'dt' in [time] (first set at line 2)");
+  CHECK_PARSE_ERR("[time]\ndt = 1\nend = 2\n\ndt = 3\n",
+                  "bad.ini:5:1: error: ", "duplicate key 'dt' in [time] (first set at line 2)");
   /* Duplicate section header in one file. */
-  CHECK_PARSE_ERR("[a]\nx = 1\n[b]\ny = 2\n[a]\nz = 3\n", "bad.ini:5:1: error: ", "section [a] already opened at line 1");
+  CHECK_PARSE_ERR("[a]\nx = 1\n[b]\ny = 2\n[a]\nz = 3\n",
+                  "bad.ini:5:1: error: ", "section [a] already opened at line 1");
   /* A 100 kB line: refused with its size, no crash. */
   {
     size_t n = 100 * 1024;
@@ -203,10 +204,13 @@ static void test_malformed(void) {
   CHECK_PARSE_ERR("[a]\nk = a\rb\n", "bad.ini:2:6: error: ", "control character 0x0D");
   CHECK_PARSE_ERR("[a]\nk = \xff\n", "bad.ini:2:5: error: ", "invalid UTF-8 byte 0xFF");
   CHECK_PARSE_ERR("[a]\nk = \xC3\xA9\xC3\n", "bad.ini:2:6: error: ", "invalid UTF-8 byte 0xC3");
-  CHECK_PARSE_ERR("[a]\nk = \xC0\xAF\n", "bad.ini:2:5: error: ", "invalid UTF-8");       /* overlong '/' */
-  CHECK_PARSE_ERR("[a]\nk = \xED\xA0\x80\n", "bad.ini:2:5: error: ", "invalid UTF-8");   /* surrogate */
+  CHECK_PARSE_ERR("[a]\nk = \xC0\xAF\n", "bad.ini:2:5: error: ", "invalid UTF-8");         /* overlong '/' */
+  CHECK_PARSE_ERR("[a]\nk = \xED\xA0\x80\n", "bad.ini:2:5: error: ", "invalid UTF-8");     /* surrogate */
   CHECK_PARSE_ERR("[a]\nk = \xF4\x90\x80\x80\n", "bad.ini:2:5: error: ", "invalid UTF-8"); /* > U+10FFFF */
-  CHECK_PARSE_ERR("\x7f" "ELF\x02\x01", "bad.ini:1:1: error: ", "control character 0x7F");
+  CHECK_PARSE_ERR(
+      "\x7f"
+      "ELF\x02\x01",
+      "bad.ini:1:1: error: ", "control character 0x7F");
   /* Empty file, blank file, comments only. */
   CHECK_PARSE_ERR("", "bad.ini:1:1: error: ", "file is empty");
   CHECK_PARSE_ERR(" \n\t\r\n\n", "bad.ini:1:1: error: ", "file is empty");
@@ -237,8 +241,8 @@ static void test_malformed(void) {
   CHECK_PARSE_ERR("[a]\ndrag.model = x\n", "bad.ini:2:5: error: ", "invalid character '.' in key");
   CHECK_PARSE_ERR("[a]\n\xC3\xA9t\xC3\xA9 = x\n", "bad.ini:2:1: error: ", "expected a key, a [section] header");
   CHECK_PARSE_ERR("[a]\nk\xC3\xA9 = x\n", "bad.ini:2:2: error: ", "invalid character '\xC3\xA9' in key");
-  CHECK_PARSE_ERR("[a]\nx = 1\ninclude = b.ini\n", "bad.ini:3:1: error: ",
-                  "'include' must come before the first [section] header");
+  CHECK_PARSE_ERR("[a]\nx = 1\ninclude = b.ini\n",
+                  "bad.ini:3:1: error: ", "'include' must come before the first [section] header");
   CHECK_PARSE_ERR("include =\n[a]\n", "bad.ini:1:10: error: ", "include needs a file name");
   /* Columns count characters, not bytes. */
   CHECK_PARSE_ERR("[a]\nk = \xE2\x86\x92\xE2\x86\x92 \"\n", "bad.ini:2:8: error: ", "'\"' inside an unquoted value");
@@ -315,7 +319,8 @@ static void test_includes(void) {
   ini = NULL;
   rc = parse_str("include = base.ini\n[time]\ndt = 5\n", DIR "/memory.ini", &ini, &d);
   CHECK_MSG(rc == 0, "include from a string failed: %s", d.msg);
-  CHECK(ini && strcmp(value_of(ini, "time", "dt"), "5") == 0 && strcmp(value_of(ini, "scene", "model"), "mixture") == 0);
+  CHECK(ini && strcmp(value_of(ini, "time", "dt"), "5") == 0 &&
+        strcmp(value_of(ini, "scene", "model"), "mixture") == 0);
   sl_ini_free(ini);
 
   /* Loops name the chain. */
@@ -324,16 +329,15 @@ static void test_includes(void) {
   CHECK_FILE_ERR(DIR "/loop_a.ini", DIR "/loop_b.ini:2:11: error: ",
                  "include loop: " DIR "/loop_a.ini -> " DIR "/loop_b.ini -> " DIR "/loop_a.ini");
   write_file(DIR "/self.ini", "include = ./self.ini\n[a]\n");
-  CHECK_FILE_ERR(DIR "/self.ini", DIR "/self.ini:1:11: error: ", "include loop: " DIR "/self.ini -> " DIR "/./self.ini");
+  CHECK_FILE_ERR(DIR "/self.ini",
+                 DIR "/self.ini:1:11: error: ", "include loop: " DIR "/self.ini -> " DIR "/./self.ini");
 
   /* Depth limit 16: sixteen nested includes are fine, seventeen are not. */
   for (int i = 0; i <= 17; ++i) {
     char path[64], text[128];
     snprintf(path, sizeof path, DIR "/depth_%d.ini", i);
-    if (i < 17)
-      snprintf(text, sizeof text, "include = depth_%d.ini\n[d%d]\nx = %d\n", i + 1, i, i);
-    else
-      snprintf(text, sizeof text, "[d%d]\nx = %d\n", i, i);
+    if (i < 17) snprintf(text, sizeof text, "include = depth_%d.ini\n[d%d]\nx = %d\n", i + 1, i, i);
+    else snprintf(text, sizeof text, "[d%d]\nx = %d\n", i, i);
     write_file(path, text);
   }
   ini = NULL;
@@ -349,7 +353,8 @@ static void test_includes(void) {
                  "cannot read included file '" DIR "/nothere.ini': No such file or directory");
   write_file(DIR "/broken.ini", "[a]\nx = 1\nx = 2\n");
   write_file(DIR "/uses_broken.ini", "include = broken.ini\n[b]\n");
-  CHECK_FILE_ERR(DIR "/uses_broken.ini", DIR "/broken.ini:3:1: error: ", "duplicate key 'x' in [a] (first set at line 2)");
+  CHECK_FILE_ERR(DIR "/uses_broken.ini",
+                 DIR "/broken.ini:3:1: error: ", "duplicate key 'x' in [a] (first set at line 2)");
   write_file(DIR "/inc_dir.ini", "include = variants\n[b]\n");
   CHECK_FILE_ERR(DIR "/inc_dir.ini", DIR "/inc_dir.ini:1:11: error: ", "cannot read included file");
   write_file(DIR "/only_comments.ini", "; nothing\n");
@@ -363,27 +368,27 @@ static void test_includes(void) {
 /* ----------------------------------------------------------- typed getters */
 
 static const char *scene_text =
-    "[scene]\n"                  /* 1 */
-    "model = mixture\n"          /* 2 */
-    "\n"                         /* 3 */
-    "[mesh]\n"                   /* 4 */
-    "nx = 10\n"                  /* 5 */
-    "ny = abc\n"                 /* 6 */
-    "sizes = 1, x, 3\n"          /* 7 */
-    "\n"                         /* 8 */
-    "[time]\n"                   /* 9 */
-    "end = 5\n"                  /* 10 */
-    "adaptive = maybe\n"         /* 11 */
-    "dt  = -1\n"                 /* 12 */
-    "empty =\n"                  /* 13 */
-    "scheme = bdf3\n"            /* 14 */
+    "[scene]\n"                    /* 1 */
+    "model = mixture\n"            /* 2 */
+    "\n"                           /* 3 */
+    "[mesh]\n"                     /* 4 */
+    "nx = 10\n"                    /* 5 */
+    "ny = abc\n"                   /* 6 */
+    "sizes = 1, x, 3\n"            /* 7 */
+    "\n"                           /* 8 */
+    "[time]\n"                     /* 9 */
+    "end = 5\n"                    /* 10 */
+    "adaptive = maybe\n"           /* 11 */
+    "dt  = -1\n"                   /* 12 */
+    "empty =\n"                    /* 13 */
+    "scheme = bdf3\n"              /* 14 */
     "big = 99999999999999999999\n" /* 15 */
-    "name = \"bdf2\"\n"          /* 16 */
-    "on = ON\n"                  /* 17 */
-    "list = 1,,2\n"              /* 18 */
-    "tol = 1e-3\n"               /* 19 */
-    "huge = 1e999\n"             /* 20 */
-    "word = inf\n";              /* 21 */
+    "name = \"bdf2\"\n"            /* 16 */
+    "on = ON\n"                    /* 17 */
+    "list = 1,,2\n"                /* 18 */
+    "tol = 1e-3\n"                 /* 19 */
+    "huge = 1e999\n"               /* 20 */
+    "word = inf\n";                /* 21 */
 
 static void test_getters(void) {
   sl_ini *ini = NULL;
@@ -451,7 +456,8 @@ static void test_getters(void) {
 
   /* Empty values where one is required. */
   rc = sl_ini_get_real(ini, "time", "empty", 0, 1.0, 0, 10, &x, &d);
-  CHECK_MSG(rc == SL_EBADINPUT && strcmp(d.msg, "scene.ini:13:8: error: [time] empty has no value; expected a real number") == 0,
+  CHECK_MSG(rc == SL_EBADINPUT &&
+                strcmp(d.msg, "scene.ini:13:8: error: [time] empty has no value; expected a real number") == 0,
             "got \"%s\"", d.msg);
   rc = sl_ini_get_int(ini, "time", "empty", 1, 0, 0, 10, &l, &d);
   CHECK_ERR(rc, d, "scene.ini:13:8: error: ", "expected an integer");
@@ -466,10 +472,11 @@ static void test_getters(void) {
 
   /* Choices, with a did-you-mean. */
   rc = sl_ini_get_choice(ini, "time", "scheme", 1, 0, "bdf1|bdf2|steady", &c, &d);
-  CHECK_MSG(rc == SL_EBADINPUT &&
-                strcmp(d.msg, "scene.ini:14:10: error: [time] scheme = bdf3 is not one of: bdf1, bdf2, steady; "
-                              "did you mean 'bdf1'?") == 0,
-            "got \"%s\"", d.msg);
+  CHECK_MSG(
+      rc == SL_EBADINPUT && strcmp(d.msg,
+                                   "scene.ini:14:10: error: [time] scheme = bdf3 is not one of: bdf1, bdf2, steady; "
+                                   "did you mean 'bdf1'?") == 0,
+      "got \"%s\"", d.msg);
   rc = sl_ini_get_choice(ini, "scene", "model", 1, 0, "navier_stokes|two_fluid", &c, &d);
   CHECK_ERR(rc, d, "scene.ini:2:9: error: ", "[scene] model = mixture is not one of: navier_stokes, two_fluid");
   CHECK(strstr(d.msg, "did you mean") == NULL);
@@ -479,8 +486,9 @@ static void test_getters(void) {
   /* Lists: the bad item is pointed at. */
   rc = sl_ini_get_real_list(ini, "mesh", "sizes", 1, v, 8, &n, &d);
   CHECK_MSG(rc == SL_EBADINPUT &&
-                strcmp(d.msg, "scene.ini:7:12: error: [mesh] sizes = 1, x, 3: item 2 ('x') is not a real number or a constant "
-                              "expression: column 1: unknown name 'x' (this value takes no variables)") == 0,
+                strcmp(d.msg,
+                       "scene.ini:7:12: error: [mesh] sizes = 1, x, 3: item 2 ('x') is not a real number or a constant "
+                       "expression: column 1: unknown name 'x' (this value takes no variables)") == 0,
             "got \"%s\"", d.msg);
   rc = sl_ini_get_real_list(ini, "time", "list", 1, v, 8, &n, &d);
   CHECK_ERR(rc, d, "scene.ini:18:10: error: ", "[time] list = 1,,2: item 2 is empty");
@@ -547,8 +555,9 @@ static void test_unknown(void) {
   const char *prefixes[] = {"closure.", "boundary."};
   CHECK(sl_ini_check_sections(ini, known, 6, prefixes, 2, &d) == 0);
   rc = sl_ini_check_sections(ini, known, 3, prefixes, 2, &d);
-  CHECK_MSG(rc == SL_EBADINPUT && strcmp(d.msg, "u.ini:8:1: error: unknown section [scnee]; did you mean [scene]?") == 0,
-            "got \"%s\"", d.msg);
+  CHECK_MSG(
+      rc == SL_EBADINPUT && strcmp(d.msg, "u.ini:8:1: error: unknown section [scnee]; did you mean [scene]?") == 0,
+      "got \"%s\"", d.msg);
   const char *known2[] = {"scene", "time", "mesh", "scnee"};
   rc = sl_ini_check_sections(ini, known2, 4, prefixes, 2, &d);
   CHECK_MSG(rc == SL_EBADINPUT &&
@@ -564,14 +573,15 @@ static void test_unknown(void) {
 
   const char *time_keys[] = {"dt", "end", "scheme"};
   rc = sl_ini_check_keys(ini, "time", time_keys, 3, &d);
-  CHECK_MSG(rc == SL_EBADINPUT && strcmp(d.msg, "u.ini:5:3: error: unknown key 'dtt' in [time]; did you mean 'dt'?") == 0,
-            "got \"%s\"", d.msg);
+  CHECK_MSG(
+      rc == SL_EBADINPUT && strcmp(d.msg, "u.ini:5:3: error: unknown key 'dtt' in [time]; did you mean 'dt'?") == 0,
+      "got \"%s\"", d.msg);
   const char *drag_keys[] = {"correlation", "n"};
   rc = sl_ini_check_keys(ini, "closure.drag", drag_keys, 2, &d);
-  CHECK_MSG(rc == SL_EBADINPUT &&
-                strcmp(d.msg, "u.ini:7:1: error: unknown key 'model' in [closure.drag] (known keys: correlation, n)") ==
-                    0,
-            "got \"%s\"", d.msg);
+  CHECK_MSG(
+      rc == SL_EBADINPUT &&
+          strcmp(d.msg, "u.ini:7:1: error: unknown key 'model' in [closure.drag] (known keys: correlation, n)") == 0,
+      "got \"%s\"", d.msg);
   const char *scene_keys[] = {"model", "title"};
   CHECK(sl_ini_check_keys(ini, "scene", scene_keys, 2, &d) == 0);
   CHECK(sl_ini_check_keys(ini, "absent", scene_keys, 2, &d) == 0);

@@ -84,9 +84,11 @@ static void integrals(void) {
   double dj = 0.0, dy = 0.0, h = 1e-3;
   for (double x = 0.2; x < 30.0; x += 0.29) {
     double gj = (-sl_bessel_int_j0(x + 2 * h) + 8 * sl_bessel_int_j0(x + h) - 8 * sl_bessel_int_j0(x - h) +
-                 sl_bessel_int_j0(x - 2 * h)) / (12 * h);
+                 sl_bessel_int_j0(x - 2 * h)) /
+                (12 * h);
     double gy = (-sl_bessel_int_y0(x + 2 * h) + 8 * sl_bessel_int_y0(x + h) - 8 * sl_bessel_int_y0(x - h) +
-                 sl_bessel_int_y0(x - 2 * h)) / (12 * h);
+                 sl_bessel_int_y0(x - 2 * h)) /
+                (12 * h);
     dj = fmax(dj, fabs(gj - sl_bessel_j0(x)));
     dy = fmax(dy, fabs(gy - sl_bessel_y0(x)));
   }
@@ -129,8 +131,7 @@ static void language(void) {
   sl_expr *e = NULL;
   sl_diag d = {{0}};
   double v = 0.0;
-  CHECK(sl_expr_compile("int_y0(pi)", NULL, 0, &e, &d) == 0 && sl_expr_is_constant(e, &v) &&
-        v == sl_bessel_int_y0(PI));
+  CHECK(sl_expr_compile("int_y0(pi)", NULL, 0, &e, &d) == 0 && sl_expr_is_constant(e, &v) && v == sl_bessel_int_y0(PI));
   sl_expr_free(e);
   /* arity errors */
   static const char *const vars[] = {"x"};

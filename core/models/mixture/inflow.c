@@ -13,10 +13,10 @@ struct sl_mixture_inflow {
   const sl_scene *sc;
   sl_transport *tr;
   double phi_max;
-  int n;      /* boundaries with values along them */
-  int *b;     /* [n] their mesh indices */
-  int *timed; /* [n] 1: phi depends on t */
-  double *v;  /* scratch: one value per face of the longest */
+  int n;               /* boundaries with values along them */
+  int *b;              /* [n] their mesh indices */
+  int *timed;          /* [n] 1: phi depends on t */
+  double *v;           /* scratch: one value per face of the longest */
   int n_open;          /* the boundaries solids pass through */
   int *open_b;         /* [n_open] their mesh indices */
   double *trial, *cum; /* [n_open] solids in through each: the last transport step, the accepted ones' sum */
@@ -55,7 +55,8 @@ int sl_mixture_inflow_create(const sl_scene *sc, sl_transport *tr, const unsigne
   in->open_b = malloc((size_t)m->n_boundaries * sizeof *in->open_b);
   in->trial = calloc((size_t)m->n_boundaries + 1, sizeof *in->trial);
   in->cum = calloc((size_t)m->n_boundaries + 1, sizeof *in->cum);
-  if (!in->b || !in->timed || !in->v || !in->open_b || !in->trial || !in->cum) rc = sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
+  if (!in->b || !in->timed || !in->v || !in->open_b || !in->trial || !in->cum)
+    rc = sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
   for (int b = 0; b < m->n_boundaries && !rc; ++b) {
     const ns_boundary *nb = sl_scene_boundary(sc, b);
     int through = (open && open[b]) || (nb->type == NS_VELOCITY && nb->phi.e);

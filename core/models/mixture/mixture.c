@@ -31,7 +31,7 @@ typedef struct mixture_config {
   long order, table_points;
   int limiter;
   double cfl;
-  const char *inventory_regions; /* [output]: mesh regions whose solids inventory is written */
+  const char *inventory_regions;  /* [output]: mesh regions whose solids inventory is written */
   sl_scene_exprs inventory_where; /* [output]: regions as expressions of x, y (a cell counts where > 0) */
 } mixture_config;
 
@@ -62,14 +62,14 @@ typedef struct mixture {
   double rho_f, mu_f, phi_max;
   double g[2], g_ref, omega, centre[2];
   settling st;
-  int slip_acceleration; /* [mixture]: the slip follows g - Dj/Dt */
-  double *acc;           /* [2 n_cells] Dj/Dt (+ Coriolis) at the cell points (zero before the first step) */
-  int relative_flux_stress; /* [mixture]: the momentum carries -div(rho_f j_R j_R / (phi (1 - phi))) */
-  double *cell_stress;      /* [3 n_cells] its entries 00, 11, 01 per cell of the trial state */
-  double *settle_speed;     /* [n_cells] u_settle(phi) of the cells (scratch) */
-  double *node_stress;      /* [6 pressure dofs] of the current state: the flow's extra stress */
-  double *node_weight;      /* [pressure dofs] 1 / the cell volume around the node */
-  double *b_face;        /* [2 n_faces] the body-force direction per face */
+  int slip_acceleration;        /* [mixture]: the slip follows g - Dj/Dt */
+  double *acc;                  /* [2 n_cells] Dj/Dt (+ Coriolis) at the cell points (zero before the first step) */
+  int relative_flux_stress;     /* [mixture]: the momentum carries -div(rho_f j_R j_R / (phi (1 - phi))) */
+  double *cell_stress;          /* [3 n_cells] its entries 00, 11, 01 per cell of the trial state */
+  double *settle_speed;         /* [n_cells] u_settle(phi) of the cells (scratch) */
+  double *node_stress;          /* [6 pressure dofs] of the current state: the flow's extra stress */
+  double *node_weight;          /* [pressure dofs] 1 / the cell volume around the node */
+  double *b_face;               /* [2 n_faces] the body-force direction per face */
   double *cell_drag, *grad_phi; /* [4 n_cells], [2 n_cells]: the buoyancy's response to the step's velocity */
   sl_hydrostatic *hs;           /* the layers whose hydrostatic part of the buoyancy the pressure carries, or NULL */
   double *buoy_phi, *p_hydro;   /* [n_cells] phi less that part, [pressure dofs] its pressure */
@@ -84,13 +84,13 @@ typedef struct mixture {
   double *q_acc;               /* [n_faces] the conservative fluxes of the last accepted step */
   int n_inv;                   /* regions whose solids inventory is written ([output] inventory_*) */
   char inv_name[MAX_INVENTORIES][96];
-  unsigned char *inv_mask;     /* [n_inv * n_cells]: the cell is in region k */
-  double *inv_phi;             /* [n_cells] scratch: phi in the region, 0 elsewhere */
-  unsigned fields; /* bit k: field_names[k] is written */
+  unsigned char *inv_mask; /* [n_inv * n_cells]: the cell is in region k */
+  double *inv_phi;         /* [n_cells] scratch: phi in the region, 0 elsewhere */
+  unsigned fields;         /* bit k: field_names[k] is written */
   double inventory0, inflow, trial_inflow;
-  double inventory; /* of the current state */
+  double inventory;   /* of the current state */
   double cpu_coupled; /* CPU seconds in the transport steps */
-  double book[2]; /* inventory0 and inflow as checkpointed */
+  double book[2];     /* inventory0 and inflow as checkpointed */
   long substeps, fallbacks, trial_substeps, trial_fallbacks, advances;
   double max_raw_div, trial_raw_div, max_div;
   double flux_floor; /* the settling flux scale max |w_f| max |F|: the divergence is measured against it too */
@@ -99,10 +99,10 @@ typedef struct mixture {
   double level[MAX_LEVELS];
   /* shear-induced migration (optional) */
   const sl_flow_opts *flow;
-  sl_closure *mig_c, *visc_c;   /* [closure.migration]; [closure.viscosity] as mu(phi) (the scene's) */
+  sl_closure *mig_c, *visc_c; /* [closure.migration]; [closure.viscosity] as mu(phi) (the scene's) */
   sl_point_closure mig, visc;
   sl_migration *mg;
-  double *shear;           /* [n_cells] */
+  double *shear; /* [n_cells] */
   char params[2048];
 } mixture;
 
@@ -193,7 +193,8 @@ static void cell_accelerations(mixture *x, const double *u, const double *dudt) 
   int dim = m->dim, swirl = x->axi && th->n_comp == 3;
   for (int c = 0; c < m->n_cells; ++c) {
     double v[3] = {0, 0, 0}, g[2][2] = {{0, 0}, {0, 0}}, a[2] = {0, 0}, rate;
-    for (int i = 0; i < th->n_comp; ++i) sl_fe_eval(th->vel, u + (size_t)i * th->n_vel, c, xi, &v[i], i < dim ? g[i] : NULL);
+    for (int i = 0; i < th->n_comp; ++i)
+      sl_fe_eval(th->vel, u + (size_t)i * th->n_vel, c, xi, &v[i], i < dim ? g[i] : NULL);
     for (int i = 0; i < dim; ++i) {
       sl_fe_eval(th->vel, dudt + (size_t)i * th->n_vel, c, xi, &rate, NULL);
       a[i] = rate + v[0] * g[i][0] + (dim > 1 ? v[1] * g[i][1] : 0.0);
@@ -339,8 +340,9 @@ static void node_stress_of(mixture *x) {
  * node), the buffers, and the stress of the initial state. */
 static int stress_setup(mixture *x, sl_diag *d) {
   if (!x->st.c)
-    return sl_diag_set(d, SL_EBADINPUT, "[mixture] relative_flux_stress = true needs the relative flux of a "
-                                        "[closure.hindered_settling]; the scene has none");
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "[mixture] relative_flux_stress = true needs the relative flux of a "
+                       "[closure.hindered_settling]; the scene has none");
   const sl_dofmap *pm = x->th->pres;
   int nc = x->m->n_cells, np = pm->dofs_per_cell;
   x->cell_stress = malloc((size_t)3 * nc * sizeof *x->cell_stress);
@@ -410,7 +412,8 @@ static double interface_height(const mixture *x, const double *phi, double level
 
 /* ---- shear-induced migration ------------------------------------------------- */
 
-static int migration_coef(void *user, int n, const double *phi, const double *g, double *D_c, double *D_mu, sl_diag *d) {
+static int migration_coef(void *user, int n, const double *phi, const double *g, double *D_c, double *D_mu,
+                          sl_diag *d) {
   mixture *x = user;
   const double *values[Q_N] = {phi, g};
   sl_point_request rq[2] = {{"D_c", D_c, NULL, NULL}, {"D_mu", D_mu, NULL, NULL}};
@@ -464,13 +467,17 @@ static int migration_setup(mixture *x, sl_diag *d) {
     sl_closure_label(v, label, sizeof label);
     int in_phi = sl_closure_input(v, "phi");
     if (in_phi < 0 || sl_closure_output(v, "viscosity") < 0 || !(v->in[in_phi].flags & SL_FIELD_DIFF))
-      return sl_diag_set(d, SL_EBADINPUT, "%s: [closure.migration] needs [closure.viscosity] as a viscosity of phi; "
-                                          "%s is not", vs, label);
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "%s: [closure.migration] needs [closure.viscosity] as a viscosity of phi; "
+                         "%s is not",
+                         vs, label);
     for (int i = 0; i < v->n_in; ++i) {
       const char *name = v->in[i].name;
       if (strcmp(name, "phi") != 0 && strcmp(name, "mu_f") != 0 && strcmp(name, "rho_f") != 0)
-        return sl_diag_set(d, SL_EBADINPUT, "%s: [closure.migration] takes mu(phi) from [closure.viscosity], but %s "
-                                            "also depends on '%s'", vs, label, name);
+        return sl_diag_set(d, SL_EBADINPUT,
+                           "%s: [closure.migration] takes mu(phi) from [closure.viscosity], but %s "
+                           "also depends on '%s'",
+                           vs, label, name);
     }
     if ((rc = sl_point_bind(&x->visc, x->visc_c, quantity_names, Q_N, "closure.viscosity", "the mixture model", d)))
       return rc;
@@ -565,8 +572,10 @@ static int inventory_setup(mixture *x, sl_diag *d) {
       char where[160] = "[output] inventory_regions";
       if (src) snprintf(where, sizeof where, "%s:%d: [output] inventory_regions", src->file, src->line);
       if (!m->n_regions)
-        return sl_diag_set(d, SL_EBADINPUT, "%s: no region '%s': the mesh has no named regions (a Gmsh file's "
-                                            "physical surfaces; use inventory_where for an expression)", where, name);
+        return sl_diag_set(d, SL_EBADINPUT,
+                           "%s: no region '%s': the mesh has no named regions (a Gmsh file's "
+                           "physical surfaces; use inventory_where for an expression)",
+                           where, name);
       return sl_diag_set(d, SL_EBADINPUT, "%s: no region '%s' in the mesh%s%s%s", where, name,
                          near ? "; did you mean '" : "", near ? near : "", near ? "'?" : "");
     }
@@ -613,8 +622,9 @@ static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag
   if (sl_scene_given(sc, &cfg->reference_acceleration)) x->g_ref = cfg->reference_acceleration;
   if ((rc = settling_setup(x, d))) return rc;
   if (x->st.c && x->g_ref == 0.0)
-    return sl_diag_set(d, SL_EBADINPUT, "[closure.hindered_settling] is set but nothing drives settling: give [flow] "
-                                        "gravity or rotation, or [mixture] slip_acceleration = true");
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "[closure.hindered_settling] is set but nothing drives settling: give [flow] "
+                       "gravity or rotation, or [mixture] slip_acceleration = true");
   /* the transport */
   x->topts = (sl_transport_opts){.phi_max = x->phi_max,
                                  .order = (int)cfg->order,
@@ -661,8 +671,10 @@ static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag
     x->n_levels = sc->output.interface.n;
     for (int k = 0; k < x->n_levels; ++k) x->level[k] = sc->output.interface.v[k];
     if (x->n_levels > 0 && hypot(x->g[0], x->g[1]) == 0.0)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] interface: heights are measured against gravity, and the "
-                                          "scene has none", le->file, le->line);
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "%s:%d: [output] interface: heights are measured against gravity, and the "
+                         "scene has none",
+                         le->file, le->line);
   }
   return inventory_setup(x, d);
 }
@@ -677,7 +689,8 @@ static int advance(mixture *x, double t, double dt, const double *u, const doubl
    * largest speed where the mixture hardly moves across faces (a swirl, a closed column) */
   double umax = 0.0;
   for (int32_t i = 0; i < x->th->p_offset; ++i) umax = fmax(umax, fabs(u[i]));
-  int rc = sl_face_flux_conservative(x->ff, u, fmax(x->flux_floor, 1e-8 * umax * x->area_max), x->q, &x->trial_raw_div, d);
+  int rc =
+      sl_face_flux_conservative(x->ff, u, fmax(x->flux_floor, 1e-8 * umax * x->area_max), x->q, &x->trial_raw_div, d);
   if (rc) return rc;
   memcpy(x->trial, x->phi, (size_t)x->m->n_cells * sizeof *x->trial);
   if (x->mig_c) { /* the shear rate of the new velocity drives the migration over the step */
@@ -770,7 +783,6 @@ static int restore(mixture *x, const sl_checkpoint *ck, sl_diag *d) {
   return rc;
 }
 
-
 static void mixture_free(mixture *x) {
   sl_transport_destroy(x->tr);
   sl_mixture_inflow_destroy(x->inflow_bc);
@@ -794,60 +806,155 @@ static void mixture_free(mixture *x) {
 #define M(field) SL_AT_MODEL(mixture_config, field)
 
 static const sl_key solid_keys[] = {
-    {.section = "solid", .name = "density", .type = SL_KEY_REAL, SL_AT_SCENE(solid.density), .flags = SL_KEY_REQUIRED,
-     .min = 1e-3, .max = 1e5, .units = "kg m^-3", .help = "particle density"},
-    {.section = "solid", .name = "diameter", .type = SL_KEY_REAL, SL_AT_SCENE(solid.diameter), .min = 1e-9,
-     .max = 1.0, .units = "m", .def_doc = "required by closures with the input d_p", .help = "particle diameter"},
-    {.section = "solid", .name = "phi_max", .type = SL_KEY_REAL, SL_AT_SCENE(solid.phi_max), .def = 0.64, .min = 0.01,
-     .max = 1.0, .def_doc = "the settling closure's phi_max, else 0.64", .help = "maximum packing fraction"},
-    {.section = "solid", .name = "sphericity", .type = SL_KEY_REAL, SL_AT_SCENE(solid.sphericity), .def = 1.0,
-     .min = 0.01, .max = 1.0, .help = "particle sphericity"},
-    {.section = "solid", .name = "vessel_diameter", .type = SL_KEY_REAL, SL_AT_SCENE(solid.vessel_diameter),
-     .min = 1e-6, .max = 1e6, .units = "m", .def_doc = "none (no wall term)",
+    {.section = "solid",
+     .name = "density",
+     .type = SL_KEY_REAL,
+     SL_AT_SCENE(solid.density),
+     .flags = SL_KEY_REQUIRED,
+     .min = 1e-3,
+     .max = 1e5,
+     .units = "kg m^-3",
+     .help = "particle density"},
+    {.section = "solid",
+     .name = "diameter",
+     .type = SL_KEY_REAL,
+     SL_AT_SCENE(solid.diameter),
+     .min = 1e-9,
+     .max = 1.0,
+     .units = "m",
+     .def_doc = "required by closures with the input d_p",
+     .help = "particle diameter"},
+    {.section = "solid",
+     .name = "phi_max",
+     .type = SL_KEY_REAL,
+     SL_AT_SCENE(solid.phi_max),
+     .def = 0.64,
+     .min = 0.01,
+     .max = 1.0,
+     .def_doc = "the settling closure's phi_max, else 0.64",
+     .help = "maximum packing fraction"},
+    {.section = "solid",
+     .name = "sphericity",
+     .type = SL_KEY_REAL,
+     SL_AT_SCENE(solid.sphericity),
+     .def = 1.0,
+     .min = 0.01,
+     .max = 1.0,
+     .help = "particle sphericity"},
+    {.section = "solid",
+     .name = "vessel_diameter",
+     .type = SL_KEY_REAL,
+     SL_AT_SCENE(solid.vessel_diameter),
+     .min = 1e-6,
+     .max = 1e6,
+     .units = "m",
+     .def_doc = "none (no wall term)",
      .help = "the vessel (column, pipe) diameter D a settling law's wall term d/D uses (Richardson & Zaki 1954)"},
 };
 TABLE(mixture_solid_keys, solid_keys);
 
 static const sl_key mixture_keys[] = {
-    {.section = "mixture", .name = "slip_acceleration", .type = SL_KEY_BOOL, M(slip_acceleration),
+    {.section = "mixture",
+     .name = "slip_acceleration",
+     .type = SL_KEY_BOOL,
+     M(slip_acceleration),
      .help = "the slip follows g - Dj/Dt (Nigam 1999 eq 2.25), not only gravity and the frame's centrifugal force"},
-    {.section = "mixture", .name = "reference_acceleration", .type = SL_KEY_REAL, M(reference_acceleration),
-     .min = 1e-12, .max = 1e12, .units = "m s^-2",
+    {.section = "mixture",
+     .name = "reference_acceleration",
+     .type = SL_KEY_REAL,
+     M(reference_acceleration),
+     .min = 1e-12,
+     .max = 1e12,
+     .units = "m s^-2",
      .def_doc = "|g|, else the frame's largest centrifugal acceleration, else 1",
      .help = "the acceleration the settling closure is evaluated at"},
-    {.section = "mixture", .name = "diffusivity", .type = SL_KEY_REAL, M(diffusivity), .min = 0.0, .max = 1e6,
-     .units = "m^2 s^-1", .help = "particle diffusivity eps: the flux -eps grad(phi) (Lalli 1993)"},
-    {.section = "mixture", .name = "relative_flux_stress", .type = SL_KEY_BOOL, M(relative_flux_stress),
+    {.section = "mixture",
+     .name = "diffusivity",
+     .type = SL_KEY_REAL,
+     M(diffusivity),
+     .min = 0.0,
+     .max = 1e6,
+     .units = "m^2 s^-1",
+     .help = "particle diffusivity eps: the flux -eps grad(phi) (Lalli 1993)"},
+    {.section = "mixture",
+     .name = "relative_flux_stress",
+     .type = SL_KEY_BOOL,
+     M(relative_flux_stress),
      .help = "the momentum carries the stress rho_f j_R j_R / (phi (1 - phi)) of the settling flux (Nigam 1999 eq "
              "2.16)"},
 };
 TABLE(mixture_model_keys, mixture_keys);
 
 static const sl_key transport_keys[] = {
-    {.section = "transport", .name = "order", .type = SL_KEY_INT, M(order), .def = 2, .min = 1, .max = 2,
+    {.section = "transport",
+     .name = "order",
+     .type = SL_KEY_INT,
+     M(order),
+     .def = 2,
+     .min = 1,
+     .max = 2,
      .help = "1: Godunov, 2: MUSCL (second order)"},
-    {.section = "transport", .name = "limiter", .type = SL_KEY_CHOICE, M(limiter), .choices = "mc|minmod",
+    {.section = "transport",
+     .name = "limiter",
+     .type = SL_KEY_CHOICE,
+     M(limiter),
+     .choices = "mc|minmod",
      .help = "the slope limiter of order 2"},
-    {.section = "transport", .name = "cfl", .type = SL_KEY_REAL, M(cfl), .def = 0.9, .min = 1e-3, .max = 1.0,
+    {.section = "transport",
+     .name = "cfl",
+     .type = SL_KEY_REAL,
+     M(cfl),
+     .def = 0.9,
+     .min = 1e-3,
+     .max = 1.0,
      .help = "fraction of the stable explicit sub-step"},
-    {.section = "transport", .name = "table_points", .type = SL_KEY_INT, M(table_points), .def = 2049, .min = 17,
-     .max = 1000001, .help = "nodes of the settling-flux table"},
+    {.section = "transport",
+     .name = "table_points",
+     .type = SL_KEY_INT,
+     M(table_points),
+     .def = 2049,
+     .min = 17,
+     .max = 1000001,
+     .help = "nodes of the settling-flux table"},
 };
 TABLE(mixture_transport_keys, transport_keys);
 
 static const sl_key extra_keys[] = {
-    {.section = "initial", .name = "phi", .type = SL_KEY_EXPR, M(phi), .vars = "x,y", .flags = SL_KEY_REQUIRED,
+    {.section = "initial",
+     .name = "phi",
+     .type = SL_KEY_EXPR,
+     M(phi),
+     .vars = "x,y",
+     .flags = SL_KEY_REQUIRED,
      .help = "the initial solids fraction at the cell centroids"},
-    {.section = "output", .name = "interface", .type = SL_KEY_REALS, SL_AT_SCENE(output.interface),
-     .max_n = SL_REALS_MAX, .min = 0.0, .max = 1.0,
+    {.section = "output",
+     .name = "interface",
+     .type = SL_KEY_REALS,
+     SL_AT_SCENE(output.interface),
+     .max_n = SL_REALS_MAX,
+     .min = 0.0,
+     .max = 1.0,
      .help = "levels of phi whose heights (along -g) are written as interface_height_K"},
-    {.section = "output", .name = "inventory_regions", .type = SL_KEY_STRING, M(inventory_regions), .def_text = "",
+    {.section = "output",
+     .name = "inventory_regions",
+     .type = SL_KEY_STRING,
+     M(inventory_regions),
+     .def_text = "",
      .help = "mesh regions (Gmsh physical surfaces, comma-separated) whose solids volume int phi dV is written "
              "as solids_inventory_NAME"},
-    {.section = "output", .name = "inventory_where", .type = SL_KEY_EXPRS, M(inventory_where), .vars = "x,y",
-     .max_n = 3, .help = "regions as expressions of x, y (a cell counts where its centroid gives > 0), their solids "
-                         "volume written as solids_inventory_where_K"},
-    {.section = "boundary", .name = "phi", .type = SL_KEY_EXPR, SL_AT_BOUNDARY(ns_boundary, phi), .vars = "x,y,t",
+    {.section = "output",
+     .name = "inventory_where",
+     .type = SL_KEY_EXPRS,
+     M(inventory_where),
+     .vars = "x,y",
+     .max_n = 3,
+     .help = "regions as expressions of x, y (a cell counts where its centroid gives > 0), their solids "
+             "volume written as solids_inventory_where_K"},
+    {.section = "boundary",
+     .name = "phi",
+     .type = SL_KEY_EXPR,
+     SL_AT_BOUNDARY(ns_boundary, phi),
+     .vars = "x,y,t",
      .when_type = (1u << NS_OPEN) | (1u << NS_PRESSURE) | (1u << NS_TRACTION) | (1u << NS_VELOCITY),
      .def_doc = "0",
      .help = "the solids fraction of what flows in, an expression of x, y, t along the boundary (in [0, phi_max]); "
@@ -855,17 +962,18 @@ static const sl_key extra_keys[] = {
 };
 TABLE(mixture_extra_keys, extra_keys);
 
-static const char *const mixture_fields[] = {"velocity",        "pressure", "shear_rate", "viscosity", "yielded",
-                                             "stream_function", "phi"};
+static const char *const mixture_fields[] = {"velocity", "pressure",        "shear_rate", "viscosity",
+                                             "yielded",  "stream_function", "phi"};
 
 const sl_schema sl_mixture_schema = {
     .model = "mixture",
     .title = "drift-flux mixture model",
-    .summary = "The flow in the volume-averaged velocity j (div j = 0) with the mixture's density and viscosity, "
-               "carrying a solids fraction phi moved by j plus a hindered-settling flux (Nigam 1999, eqs 2.31-2.36), "
-               "shear-induced migration (Phillips et al. 1992) and a particle diffusivity; bounded, conservative "
-               "finite-volume transport with face fluxes from the flow; the slip along the fluid's acceleration in "
-               "a rotating frame.",
+    .summary =
+        "The flow in the volume-averaged velocity j (div j = 0) with the mixture's density and viscosity, "
+        "carrying a solids fraction phi moved by j plus a hindered-settling flux (Nigam 1999, eqs 2.31-2.36), "
+        "shear-induced migration (Phillips et al. 1992) and a particle diffusivity; bounded, conservative "
+        "finite-volume transport with face fluxes from the flow; the slip along the fluid's acceleration in "
+        "a rotating frame.",
     .tables = {&sl_keys_scene, &sl_flow_keys_scene, &sl_keys_mesh, &sl_keys_fluid, &mixture_solid_keys,
                &sl_flow_keys_flow, &sl_flow_keys_time, &sl_flow_keys_solver, &sl_keys_output, &sl_keys_plugins,
                &sl_flow_keys_boundary, &sl_flow_keys_initial, &mixture_extra_keys, &mixture_model_keys,
@@ -896,10 +1004,11 @@ static int mx_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) 
   if (!x) return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
   x->sc = sc, x->cfg = sc->config, x->rho_solid = sc->solid.density, x->phi_max = sc->solid.phi_max;
   unsigned mask, def = 1u | 2u | (sl_scene_closure(sc, "viscosity") ? 4u | 8u | 16u : 0u) | SL_FLOW_STREAM_FUNCTION |
-                        (1u << SL_FLOW_N_FIELDS);
+                       (1u << SL_FLOW_N_FIELDS);
   int rc = sl_scene_output_fields(sc, def, &mask, d);
-  if (!rc) rc = sl_flow_create(sc, &x->cfg->flow, x->rho_solid, mask & ((1u << SL_FLOW_N_FIELDS) - 1u), &x->flow_model,
-                               info, d);
+  if (!rc)
+    rc = sl_flow_create(sc, &x->cfg->flow, x->rho_solid, mask & ((1u << SL_FLOW_N_FIELDS) - 1u), &x->flow_model, info,
+                        d);
   if (!rc) rc = mixture_setup(x, x->flow_model, mask >> SL_FLOW_N_FIELDS, d);
   /* the initial velocity's fluxes until the first step: the stream function written at t = 0 is [initial]
      velocity's */

@@ -12,9 +12,9 @@
 #include "core/fe/field.h"
 #include "core/fv/face_flux.h"
 #include "core/fv/stream_function.h"
+#include "core/models/navier_stokes/factor_checkpoint.h"
 #include "core/models/navier_stokes/forces.h"
 #include "core/models/navier_stokes/projection.h"
-#include "core/models/navier_stokes/factor_checkpoint.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/point_eval.h"
 #include "core/scene/solver.h"
@@ -32,7 +32,14 @@ enum { MAX_COMP = 3 };
 
 const char *const sl_flow_field_names[SL_FLOW_N_FIELDS] = {"velocity",  "pressure", "shear_rate",
                                                            "viscosity", "yielded",  "stream_function"};
-enum { F_VELOCITY = 1, F_PRESSURE = 2, F_SHEAR = 4, F_VISCOSITY = 8, F_YIELDED = 16, F_STREAM = SL_FLOW_STREAM_FUNCTION };
+enum {
+  F_VELOCITY = 1,
+  F_PRESSURE = 2,
+  F_SHEAR = 4,
+  F_VISCOSITY = 8,
+  F_YIELDED = 16,
+  F_STREAM = SL_FLOW_STREAM_FUNCTION
+};
 
 /* ---- physics: fluid properties, the viscosity closure, forces ------------ */
 
@@ -56,7 +63,7 @@ typedef struct physics {
   double t; /* the time the body force is evaluated at (the end of the step being solved) */
   int has_force;
   char force_where[400]; /* file:line of [flow] body_force, for messages */
-  int riding;                /* a solids fraction rides on the flow: variable density, buoyancy, phi input */
+  int riding;            /* a solids fraction rides on the flow: variable density, buoyancy, phi input */
   const sl_flow_rider *rider;
 } physics;
 
@@ -207,7 +214,8 @@ static void physics_opts(physics *ph, sl_flow_opts *o) {
 /* P_ref = rho_f Omega^2 |x - c|^2 / 2 (axisymmetric: rho_f Omega^2 r^2 / 2), the pressure of the fluid's
  * centrifugal force, which the solved pressure leaves out (sl_flow_opts centrifugal_density). */
 static double centrifugal_pressure(const sl_flow_opts *o, const double *x) {
-  double dx = x[0] - (o->axisymmetric ? 0.0 : o->rotation_centre[0]), dy = o->axisymmetric ? 0.0 : x[1] - o->rotation_centre[1];
+  double dx = x[0] - (o->axisymmetric ? 0.0 : o->rotation_centre[0]),
+         dy = o->axisymmetric ? 0.0 : x[1] - o->rotation_centre[1];
   return 0.5 * o->centrifugal_density * o->omega * o->omega * (dx * dx + dy * dy);
 }
 
@@ -230,9 +238,9 @@ typedef struct bc_set {
   int has_natural; /* an open, pressure or traction boundary: no pressure datum */
   int n_pairs;     /* periodic pairs (boundary, partner), each once */
   sl_periodic_pair *pairs;
-  unsigned char *open; /* [n]: the velocity is free there */
+  unsigned char *open;   /* [n]: the velocity is free there */
   unsigned char *curved; /* [n]: a slip boundary not along x or y (its nodes rotated, slip.h); NULL: none */
-  const sl_scene *sc;  /* for the location of a value in messages */
+  const sl_scene *sc;    /* for the location of a value in messages */
 } bc_set;
 
 static void bc_set_free(bc_set *s) {
@@ -311,14 +319,14 @@ static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag 
         if (m->dim != 2)
           return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] type = slip: '%s' is not a point of a 1-D mesh", sec->file,
                              sec->line, sec->section, name);
-        if (!s->curved && !(s->curved = calloc((size_t)s->n + 1, 1)))
-          return sl_diag_set(d, SL_ENOMEM, "out of memory");
+        if (!s->curved && !(s->curved = calloc((size_t)s->n + 1, 1))) return sl_diag_set(d, SL_ENOMEM, "out of memory");
         s->curved[id] = 1;
       }
     } else if (b->type == NS_AXIS) {
       if (!axi || aligned_normal(m, id) != 0)
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] type = axis needs an axisymmetric scene and a boundary at r = 0",
-                           sec->file, sec->line, sec->section);
+        return sl_diag_set(d, SL_EBADINPUT,
+                           "%s:%d: [%s] type = axis needs an axisymmetric scene and a boundary at r = 0", sec->file,
+                           sec->line, sec->section);
       for (int f = m->bface_start[id]; f < m->bface_start[id + 1]; ++f) {
         double c[2];
         sl_mesh_face_centroid(m, m->bface[f], c);
@@ -353,9 +361,10 @@ static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag 
       double shift_r = pm.shift[0];
       sl_mesh_periodic_free(&pm);
       if (axi && fabs(shift_r) > 0.0)
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] type = periodic: an axisymmetric scene repeats along z only, "
-                                            "and '%s' is '%s' moved by %g in r", sec->file, sec->line, sec->section,
-                           partner, name, shift_r);
+        return sl_diag_set(d, SL_EBADINPUT,
+                           "%s:%d: [%s] type = periodic: an axisymmetric scene repeats along z only, "
+                           "and '%s' is '%s' moved by %g in r",
+                           sec->file, sec->line, sec->section, partner, name, shift_r);
       s->pairs[s->n_pairs++] = (sl_periodic_pair){m->boundary_names[id], m->boundary_names[pid]};
     }
   }
@@ -399,7 +408,7 @@ static int bc_setup(const sl_scene *sc, int n_comp, int axi, bc_set *s, sl_diag 
 typedef struct bc_eval {
   const sl_expr *e;
   double t;
-  int bad;          /* a value was not finite: the first one and where */
+  int bad; /* a value was not finite: the first one and where */
   double bad_v, bad_x[2];
 } bc_eval;
 
@@ -509,7 +518,7 @@ struct sl_flow {
      boundary speeds (measured per step at the constrained dofs); see velocity_scale */
   double u_data;
   const char *u_data_what;
-  double accel; /* the largest acceleration the forces give a fluid at rest, F / rho + |p| / (rho L) */
+  double accel;      /* the largest acceleration the forces give a fluid at rest, F / rho + |p| / (rho L) */
   double load_scale; /* the 2-norm of the load's own terms, for a linear step's round-off test (velocity_scale) */
   sl_model_stats st;
 };
@@ -534,16 +543,16 @@ void sl_flow_ride(sl_flow *f, const sl_flow_rider *r) {
 
 int sl_flow_write_mesh(sl_flow *f, sl_output *out, sl_diag *d) {
   const sl_th_space *th = f->th;
-  static const char *const topo[] = {[SL_CELL_LINE2] = "Edge_3", [SL_CELL_TRI3] = "Triangle_6",
-                                     [SL_CELL_QUAD4] = "Quadrilateral_9"};
+  static const char *const topo[] = {
+      [SL_CELL_LINE2] = "Edge_3", [SL_CELL_TRI3] = "Triangle_6", [SL_CELL_QUAD4] = "Quadrilateral_9"};
   /* the geometric nodes: periodic boundaries keep both sides in the file */
   const double *coords = th->vel->node_xy;
   if (th->mesh->dim == 1) { /* the writer takes n x dim coordinates */
     for (int32_t i = 0; i < th->vel->n_nodes; ++i) f->work[i] = th->vel->node_xy[2 * i];
     coords = f->work;
   }
-  return sl_output_write_mesh(out, th->mesh->dim, th->vel->n_nodes, coords, th->mesh->n_cells,
-                              th->vel->dofs_per_cell, th->vel->cell_nodes, topo[th->mesh->cell_type], d);
+  return sl_output_write_mesh(out, th->mesh->dim, th->vel->n_nodes, coords, th->mesh->n_cells, th->vel->dofs_per_cell,
+                              th->vel->cell_nodes, topo[th->mesh->cell_type], d);
 }
 
 /* The forces of u into f->force; steady: without the time derivative. */
@@ -568,8 +577,8 @@ static int write_forces(sl_flow *f, sl_output *out, const double *u, sl_diag *d)
       char name[300];
       snprintf(name, sizeof name, "force_%c_%s", axes[i], m->boundary_names[b]);
       /* planar: per metre of depth; axisymmetric: on the whole surface of revolution */
-      rc = sl_output_write_scalar_unit(out, name, f->prob.opts.axisymmetric ? "N" : "N/m", f->force[f->th->n_comp * b + i],
-                                       d);
+      rc = sl_output_write_scalar_unit(out, name, f->prob.opts.axisymmetric ? "N" : "N/m",
+                                       f->force[f->th->n_comp * b + i], d);
     }
   }
   f->force_valid = 0;
@@ -612,8 +621,8 @@ static int write_stream_stats(sl_flow *f, sl_output *out, sl_diag *d) {
   if (!rc) rc = sl_output_write_scalar_unit(out, "stream_function_centre_x", "m", xc[0], d);
   if (!rc) rc = sl_output_write_scalar_unit(out, "stream_function_centre_y", "m", xc[1], d);
   if (!rc)
-    rc = sl_output_write_scalar_unit(out, "stream_function_centre_phase", "rad",
-                                     atan2(xc[1] - c0[1], xc[0] - c0[0]), d);
+    rc =
+        sl_output_write_scalar_unit(out, "stream_function_centre_phase", "rad", atan2(xc[1] - c0[1], xc[0] - c0[0]), d);
   return rc;
 }
 
@@ -651,8 +660,7 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
     double mean = 0.0, area = 0.0;
     if (f->datum && sl_fe_integrate(th->pres, p, f->ph.axisymmetric, &mean, &area, NULL) == 0 && area > 0.0)
       mean /= area;
-    else
-      mean = 0.0;
+    else mean = 0.0;
     const sl_mesh *m = th->mesh;
     int nb = th->vel->dofs_per_cell, nvc = m->nv_per_cell;
     for (int c = 0; c < m->n_cells; ++c) {
@@ -689,8 +697,8 @@ int sl_flow_write(sl_flow *f, sl_output *out, const double *u, sl_diag *d) {
     if (!rc && q) {
       sl_stream_function_nodes(th, &f->pg, q, f->psi, f->node_psi);
       /* Stokes' stream function of the (r, z) plane has the units of a flow rate per radian */
-      rc = sl_output_write_field_unit(out, "stream_function", f->ph.axisymmetric ? "m^3/s" : "m^2/s",
-                                      SL_CENTRE_NODE, 1, f->node_psi, d);
+      rc = sl_output_write_field_unit(out, "stream_function", f->ph.axisymmetric ? "m^3/s" : "m^2/s", SL_CENTRE_NODE, 1,
+                                      f->node_psi, d);
       if (!rc && f->stream_stats) rc = write_stream_stats(f, out, d);
     }
   }
@@ -712,11 +720,16 @@ int sl_flow_restore(sl_flow *f, const sl_checkpoint *ck, sl_diag *d) {
 
 /* ---- solves ---------------------------------------------------------------- */
 
-static void report_iteration(void *user, int iteration, int picard, double correction, double residual,
-                             double terms) {
+static void report_iteration(void *user, int iteration, int picard, double correction, double residual, double terms) {
   const sl_flow *f = user;
-  sl_nl_report r = {.t = f->t_solve, .stage = f->stage, .n_stages = f->n_stages, .iteration = iteration,
-                    .picard = picard, .correction = correction, .residual = residual, .terms = terms};
+  sl_nl_report r = {.t = f->t_solve,
+                    .stage = f->stage,
+                    .n_stages = f->n_stages,
+                    .iteration = iteration,
+                    .picard = picard,
+                    .correction = correction,
+                    .residual = residual,
+                    .terms = terms};
   f->sc->hooks.nonlinear(f->sc->hooks.user, &r);
 }
 
@@ -826,7 +839,7 @@ static int check_growth(const sl_flow *f, const double *u, double t, sl_diag *d)
   double u_acc = f->accel * t; /* a periodic channel's forcing accelerates for as long as the run lasts */
   double scale = fmax(fmax(u_bc, f->u_data), u_acc), bound = SL_FLOW_GROWTH_FACTOR * scale;
   if (scale > 0.0 && umax <= bound) return 0;
-  if (scale == 0.0 && umax == 0.0) return 0; /* nothing drives it, nothing moves */
+  if (scale == 0.0 && umax == 0.0) return 0;    /* nothing drives it, nothing moves */
   if (scale == 0.0 && isfinite(umax)) return 0; /* no scale to judge by (round-off of a vessel at rest) */
   return sl_diag_set(d, SL_EFAILED,
                      "the velocity grew without bound in the step to t = %.6g: |u| = %.3g (unknown %d) exceeds %g "
@@ -834,16 +847,15 @@ static int check_growth(const sl_flow *f, const double *u, double t, sl_diag *d)
                      "a viscosity closure may resolve the flow)",
                      t, umax, (int)at, SL_FLOW_GROWTH_FACTOR, scale,
                      u_acc >= fmax(u_bc, f->u_data) ? "the forces' acceleration over the time run"
-                     : u_bc >= f->u_data                ? "the boundary speed"
-                                                        : f->u_data_what);
+                     : u_bc >= f->u_data            ? "the boundary speed"
+                                                    : f->u_data_what);
 }
 
 int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
   f->prob.opts.mass_coef = s->mass_coef;
   f->prob.opts.history = s->history;
   int rc;
-  if (f->bcs.time_dependent && (rc = bc_apply(&f->bcs, f->th, &f->prob.bc, s->t + s->dt, f->datum, d)))
-    return -rc;
+  if (f->bcs.time_dependent && (rc = bc_apply(&f->bcs, f->th, &f->prob.bc, s->t + s->dt, f->datum, d))) return -rc;
   size_t bytes = (size_t)f->th->n_dofs * sizeof *s->u;
   f->solved = 0;
   f->force_valid = 0;
@@ -860,7 +872,8 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
       if (f->pj) sl_projection_skip(f->pj);
       return 0;
     }
-    if ((f->column_at_rest && !(s->writes && (f->fields & F_PRESSURE))) || (f->fixed_point && !f->bcs.time_dependent && !force_depends_on_t(&f->ph))) {
+    if ((f->column_at_rest && !(s->writes && (f->fields & F_PRESSURE))) ||
+        (f->fixed_point && !f->bcs.time_dependent && !force_depends_on_t(&f->ph))) {
       memcpy(s->u, s->state, bytes);
       f->st.solves_skipped++;
       if (f->pj) sl_projection_skip(f->pj);
@@ -886,8 +899,8 @@ void sl_flow_accept(sl_flow *f) {
 /* Rebuilds the physics after a change of the scene (continuation). */
 static int rebuild_physics(sl_flow *f, sl_diag *d) {
   physics_free(&f->ph);
-  int rc = physics_setup(f->sc, f->th->n_comp, f->mesh->dim, f->prob.opts.axisymmetric, f->riding, f->rho_solid,
-                         &f->ph, d);
+  int rc =
+      physics_setup(f->sc, f->th->n_comp, f->mesh->dim, f->prob.opts.axisymmetric, f->riding, f->rho_solid, &f->ph, d);
   if (rc) return rc;
   if (f->riding) f->ph.rider = &f->rider;
   int convection = f->prob.opts.convection;
@@ -944,8 +957,8 @@ int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag
     f->force_valid = 0;
     r->converged = 1;
     if (f->nopts.linear)
-      snprintf(r->stop_reason, sizeof r->stop_reason, "steady state solved: a linear problem, one solve (residual %.2g)",
-               r->residual);
+      snprintf(r->stop_reason, sizeof r->stop_reason,
+               "steady state solved: a linear problem, one solve (residual %.2g)", r->residual);
     else if (snprintf(r->stop_reason, sizeof r->stop_reason, "steady state converged in %d Newton iteration%s (%s)",
                       its, its == 1 ? "" : "s", converged_text(f, tb, sizeof tb)) >= (int)sizeof r->stop_reason)
       mark_cut(r->stop_reason, sizeof r->stop_reason);
@@ -967,8 +980,8 @@ int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag
     if (k == n_stages) v = target;
     f->stage = k + 1;
     if (f->sc->hooks.interrupt && *f->sc->hooks.interrupt) {
-      rc = sl_diag_set(d, SL_EFAILED, "interrupted before continuation stage %ld of %ld (%s = %g)", k + 1,
-                       n_stages + 1, key, v);
+      rc = sl_diag_set(d, SL_EFAILED, "interrupted before continuation stage %ld of %ld (%s = %g)", k + 1, n_stages + 1,
+                       key, v);
       break;
     }
     if ((rc = sl_scene_set_real(f->sc, key, v, d))) break;
@@ -981,10 +994,11 @@ int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag
     if (!rc) memcpy(good, u, bytes), v_good = v;
     if (!rc && k == n_stages) {
       r->converged = 1;
-      if (snprintf(r->stop_reason, sizeof r->stop_reason,
-                   "steady state converged at %s = %g, the last of %ld continuation stages, in %d Newton iteration%s (%s)",
-                   key, v, n_stages + 1, its, its == 1 ? "" : "s",
-                   converged_text(f, tb, sizeof tb)) >= (int)sizeof r->stop_reason)
+      if (snprintf(
+              r->stop_reason, sizeof r->stop_reason,
+              "steady state converged at %s = %g, the last of %ld continuation stages, in %d Newton iteration%s (%s)",
+              key, v, n_stages + 1, its, its == 1 ? "" : "s",
+              converged_text(f, tb, sizeof tb)) >= (int)sizeof r->stop_reason)
         mark_cut(r->stop_reason, sizeof r->stop_reason);
     }
   }
@@ -1040,8 +1054,9 @@ static int stream_setup(sl_flow *f, sl_diag *d) {
   const sl_mesh *m = f->mesh;
   if (!(f->fields & F_STREAM) || m->dim != 2) return 0;
   if (!f->riding && f->bcs.n_pairs > 0)
-    return sl_diag_set(d, SL_EBADINPUT, "[output] fields = stream_function: not with periodic boundaries (the "
-                                        "stream function would not be periodic)");
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "[output] fields = stream_function: not with periodic boundaries (the "
+                       "stream function would not be periodic)");
   f->psi = malloc((size_t)m->n_vertices * sizeof *f->psi);
   f->node_psi = malloc((size_t)f->th->vel->n_nodes * sizeof *f->node_psi);
   if (!f->riding) f->q = malloc((size_t)m->n_faces * sizeof *f->q);
@@ -1168,8 +1183,10 @@ static int slip_setup(sl_flow *f, sl_diag *d) {
     goto out;
   }
   if (f->linear && strcmp(f->linear, "petsc") == 0) {
-    rc = sl_diag_set(d, SL_EBADINPUT, "%s on a curved boundary ('%s') needs a direct solver: [solver] linear = auto, "
-                                      "umfpack or klu, not petsc", at, name);
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s on a curved boundary ('%s') needs a direct solver: [solver] linear = auto, "
+                     "umfpack or klu, not petsc",
+                     at, name);
     goto out;
   }
   rc = sl_slip_create(&f->slip, f->th, ids, n_slip, other, n_other, f->prob.opts.axisymmetric, &f->prob.bc, d);
@@ -1201,12 +1218,14 @@ static int projection_setup(sl_flow *f, sl_diag *d) {
   if (sc->flow.scheme == 0) return 0;
   char at[400];
   if (sc->time.scheme == SL_SCHEME_STEADY)
-    return sl_diag_set(d, SL_EBADINPUT, "%s = projection: a split time step needs a transient [time] scheme "
-                                        "(bdf1 or bdf2); a steady scene is solved monolithic",
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s = projection: a split time step needs a transient [time] scheme "
+                       "(bdf1 or bdf2); a steady scene is solved monolithic",
                        sl_scene_where(sc, &sc->flow.scheme, at, sizeof at));
   if (ranks > 1) /* its operators are assembled and solved whole on one rank */
-    return sl_diag_set(d, SL_EBADINPUT, "%s = projection runs on one rank (this run has %d): use scheme = monolithic "
-                                        "under mpirun",
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s = projection runs on one rank (this run has %d): use scheme = monolithic "
+                       "under mpirun",
                        sl_scene_where(sc, &sc->flow.scheme, at, sizeof at), ranks);
   sl_projection_opts o = {.chi = f->riding ? fmin(f->ph.density, f->rho_solid) : f->ph.density,
                           .mu_rotational = f->ph.visc ? 0.0 : f->ph.viscosity,
@@ -1235,7 +1254,10 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
   int dim = f->mesh->dim, axi = geometry == 2;
   if ((geometry == 0) != (dim == 1)) {
     rc = sl_diag_set(d, SL_EBADINPUT, "[scene] geometry = %s but the mesh is %d-D",
-                     geometry == 0 ? "line" : geometry == 1 ? "planar" : "axisymmetric", dim);
+                     geometry == 0   ? "line"
+                     : geometry == 1 ? "planar"
+                                     : "axisymmetric",
+                     dim);
     goto fail;
   }
   if ((rc = check_continuation(sc, d))) goto fail;
@@ -1247,7 +1269,8 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
   f->prob.opts.convection = sc->flow.convection;
   f->prob.opts.omega = sc->flow.rotation;
   const sl_reals *ce = &sc->flow.rotation_centre;
-  f->prob.opts.rotation_centre[0] = ce->n > 0 ? ce->v[0] : 0.0, f->prob.opts.rotation_centre[1] = ce->n > 1 ? ce->v[1] : 0.0;
+  f->prob.opts.rotation_centre[0] = ce->n > 0 ? ce->v[0] : 0.0,
+  f->prob.opts.rotation_centre[1] = ce->n > 1 ? ce->v[1] : 0.0;
   if ((rc = sl_flow_check_geometry(f->th, &f->prob.opts, d))) goto fail;
   f->datum = !f->bcs.has_natural;
   f->column_at_rest = dim == 1 && f->th->n_comp == 1 && f->bcs.n > 0;
@@ -1268,9 +1291,9 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
   }
   if ((rc = bc_apply(&f->bcs, f->th, &f->prob.bc, 0.0, f->datum, d))) goto fail;
   if ((rc = sl_scene_linsolve_general(sc, f->th->n_dofs,
-                                       "the flow's matrix couples velocity and pressure (a saddle point: symmetric "
-                                       "indefinite without convection, nonsymmetric with it)",
-                                       &f->ls, &f->linear, d)))
+                                      "the flow's matrix couples velocity and pressure (a saddle point: symmetric "
+                                      "indefinite without convection, nonsymmetric with it)",
+                                      &f->ls, &f->linear, d)))
     goto fail;
   /* velocity, then pressure */
   if ((rc = sl_linsolve_set_blocks(f->ls, f->th->p_offset, sc->time.scheme != SL_SCHEME_STEADY, d))) goto fail;
@@ -1295,21 +1318,27 @@ int sl_flow_create(sl_scene *sc, const sl_flow_config *fc, double rho_solid, uns
     int any = 0;
     f->force_want = calloc((size_t)f->bcs.n + 1, 1);
     for (int i = 0; i < f->bcs.n && f->force_want; ++i)
-      any |= f->force_want[i] = (f->bcs.b[i].type == NS_WALL || f->bcs.b[i].type == NS_VELOCITY) && f->bcs.b[i].in->force;
+      any |= f->force_want[i] =
+          (f->bcs.b[i].type == NS_WALL || f->bcs.b[i].type == NS_VELOCITY) && f->bcs.b[i].in->force;
     f->force = calloc((size_t)f->th->n_comp * (f->bcs.n + 1), sizeof *f->force);
     f->force_work = malloc((size_t)f->th->n_vel + 1);
     if (!f->force_want || !f->force || !f->force_work) {
       rc = sl_diag_set(d, SL_ENOMEM, "out of memory");
       goto fail;
     }
-    if (!any) free(f->force_want), free(f->force), free(f->force_work), f->force_want = f->force_work = NULL, f->force = NULL;
+    if (!any)
+      free(f->force_want), free(f->force), free(f->force_work), f->force_want = f->force_work = NULL, f->force = NULL;
   }
   if ((rc = check_body_force(sc, &f->ph, d))) goto fail;
   if ((rc = projection_setup(f, d))) goto fail;
   if ((rc = initial_velocity(sc, fc, f->th, f->u, d))) goto fail;
   velocity_scale(f);
-  *info = (sl_model_info){.integrator = SL_INTEGRATE_BDF, .n = f->th->n_dofs, .n_err = f->th->p_offset, .u = f->u,
-                          .has_steady = 1, .state_name = "velocity"};
+  *info = (sl_model_info){.integrator = SL_INTEGRATE_BDF,
+                          .n = f->th->n_dofs,
+                          .n_err = f->th->p_offset,
+                          .u = f->u,
+                          .has_steady = 1,
+                          .state_name = "velocity"};
   *out = f;
   return 0;
 fail:

@@ -48,7 +48,7 @@ typedef struct ns_boundary {
   sl_reals traction;
   const char *partner;
   sl_scene_expr phi; /* the mixture: the solids fraction of inflow, of x, y, t (core/models/mixture/inflow.h) */
-  int force;  /* write the force of the fluid on this boundary (wall, velocity) with every output */
+  int force;         /* write the force of the fluid on this boundary (wall, velocity) with every output */
 } ns_boundary;
 
 /* The key tables the two models share (navier_stokes.c). */

@@ -59,8 +59,12 @@ typedef struct sl_flow_matrix_key matrix_key;
  * right-hand side only. */
 static int constant_matrix_key(const sl_flow_opts *o, matrix_key *k) {
   if (o->convection || o->viscosity || o->density.fn || o->cell_drag) return 0;
-  *k = (matrix_key){.mass_coef = o->mass_coef, .density = o->density.value, .viscosity = o->viscosity_value,
-                    .omega = o->omega, .axisymmetric = o->axisymmetric, .quad_degree = o->quad_degree};
+  *k = (matrix_key){.mass_coef = o->mass_coef,
+                    .density = o->density.value,
+                    .viscosity = o->viscosity_value,
+                    .omega = o->omega,
+                    .axisymmetric = o->axisymmetric,
+                    .quad_degree = o->quad_degree};
   return 1;
 }
 
@@ -141,8 +145,8 @@ int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_cs
   return linear_residual(p, u, 0, b, d);
 }
 
-int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const sl_newton_opts *o,
-                          sl_newton_stats *st, sl_diag *d) {
+int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const sl_newton_opts *o, sl_newton_stats *st,
+                          sl_diag *d) {
   int rc = collect_fixed(p, d);
   if (rc) return rc;
   sl_constraints_impose(&p->bc, u);

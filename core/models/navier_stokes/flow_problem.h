@@ -70,8 +70,8 @@ int sl_flow_problem_assemble(void *user, const double *u, sl_nl_mode mode, sl_cs
  * matrix of the previous solve still current (see above), only the
  * right-hand side is assembled (st->assemblies == 0); the problem sets
  * o->matrix_current itself. */
-int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const sl_newton_opts *o,
-                          sl_newton_stats *st, sl_diag *d);
+int sl_flow_problem_solve(sl_flow_problem *p, double *u, sl_linsolve *ls, const sl_newton_opts *o, sl_newton_stats *st,
+                          sl_diag *d);
 
 /* Imposes the constraint values on u, then assembles the momentum equations alone at u into vs, a system of
  * the velocity dofs (sl_flow_opts.velocity_block; a split step's linearisation, projection.h): Newton's

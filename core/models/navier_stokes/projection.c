@@ -34,7 +34,7 @@ struct sl_projection {
   int32_t *comp_dofs, *pmap; /* the per-component element dofs; [P.nnz] indices into F's values */
   sl_linsolve *ls_P;
   sl_krylov kry;
-  int refresh;           /* copy F into P (and so refactorise) at the next solve */
+  int refresh; /* copy F into P (and so refactorise) at the next solve */
   long krylov_solves, krylov_iterations, refreshes, direct_solves;
   /* the divergence: B = -int q div(v) (pressure rows, velocity columns), and the lumped pressure mass */
   sl_csr B;
@@ -70,7 +70,9 @@ static int build_divergence(sl_projection *pj, const sl_flow_problem *prob, sl_d
   sl_system s;
   int rc = sl_system_init(&s, th->n_dofs, th->mesh->n_cells, th->dofs_per_cell, th->cell_dofs, d);
   if (rc) return rc;
-  sl_flow_opts o = {.axisymmetric = prob->opts.axisymmetric, .density = {NULL, NULL, 1.0}, .viscosity_value = 1.0,
+  sl_flow_opts o = {.axisymmetric = prob->opts.axisymmetric,
+                    .density = {NULL, NULL, 1.0},
+                    .viscosity_value = 1.0,
                     .quad_degree = prob->opts.quad_degree};
   double *zero = calloc((size_t)th->n_dofs, sizeof *zero);
   if (!zero) rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
@@ -126,8 +128,10 @@ static int poisson_matrix(sl_projection *pj, int axisymmetric, double m, sl_diag
   sl_system_zero(&pj->psys);
   double T[4];
   correction_tensor(pj, m, T);
-  sl_diffusion_opts o = {.diffusivity = {NULL, NULL, 1.0}, .source = {NULL, NULL, 1.0},
-                         .axisymmetric = axisymmetric, .tensor = pj->omega != 0.0 ? T : NULL};
+  sl_diffusion_opts o = {.diffusivity = {NULL, NULL, 1.0},
+                         .source = {NULL, NULL, 1.0},
+                         .axisymmetric = axisymmetric,
+                         .tensor = pj->omega != 0.0 ? T : NULL};
   int rc = sl_assemble_diffusion(&pj->psys, pj->th->pres, &o, d);
   if (!rc) rc = sl_system_complete(&pj->psys, 1, d);
   if (!rc && pj->pfixed) rc = sl_csr_set_dirichlet(&pj->psys.A, pj->n_pfixed, pj->pfixed, NULL, NULL, 1, d);
@@ -187,8 +191,7 @@ static int velocity_mass(sl_projection *pj, int axisymmetric, sl_diag *d) {
   return rc;
 }
 
-int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *o, sl_projection **out,
-                         sl_diag *d) {
+int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *o, sl_projection **out, sl_diag *d) {
   *out = NULL;
   if (!(o->chi > 0.0)) {
     sl_linsolve_destroy(o->velocity_solver), sl_linsolve_destroy(o->poisson_solver);
@@ -218,8 +221,8 @@ int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *
   pj->grad = malloc((size_t)pj->nv * sizeof *pj->grad);
   pj->vmass = malloc((size_t)th->vel->n_dofs * sizeof *pj->vmass);
   int rc = 0;
-  if (!pj->vel_cell_dofs || !pj->mass || !pj->phi_hist[0] || !pj->phi_hist[1] || !pj->phi_trial || !pj->rhs ||
-      !pj->x || !pj->div || !pj->grad || !pj->vmass)
+  if (!pj->vel_cell_dofs || !pj->mass || !pj->phi_hist[0] || !pj->phi_hist[1] || !pj->phi_trial || !pj->rhs || !pj->x ||
+      !pj->div || !pj->grad || !pj->vmass)
     rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
   /* each cell's velocity dofs lead its combined list (core/fe/dofmap.h) */
   for (int c = 0; c < nc && !rc; ++c)
@@ -304,8 +307,10 @@ static int velocity_solve(sl_projection *pj, sl_csr *F, const double *b, double 
       pj->refresh = 0, pj->refreshes++;
     }
     memset(x, 0, (size_t)pj->nv * sizeof *x);
-    sl_krylov_opts ko = {.rtol = rtol, .restart = SL_PROJECTION_KRYLOV_BUDGET,
-                         .max_iterations = SL_PROJECTION_KRYLOV_BUDGET, .predict = 1};
+    sl_krylov_opts ko = {.rtol = rtol,
+                         .restart = SL_PROJECTION_KRYLOV_BUDGET,
+                         .max_iterations = SL_PROJECTION_KRYLOV_BUDGET,
+                         .predict = 1};
     sl_krylov_result kr;
     sl_diag dk = {{0}};
     int rc = sl_fgmres(&pj->kry, apply_F, F, apply_P, pj, b, x, &ko, &kr, &dk);
@@ -481,8 +486,9 @@ int sl_projection_restore(sl_projection *pj, const sl_checkpoint *ck, sl_diag *d
   const sl_checkpoint_array *P = sl_checkpoint_find(ck, "projection_blocks");
   if (!h && !a && !b && !P) return 0;
   if (!h || !a || !b || !P || h->n != 4 || a->n != pj->np || b->n != pj->np || P->n != pj->P.nnz)
-    return sl_diag_set(d, SL_EBADINPUT, "checkpoint: the projection's pressure increments do not fit the mesh "
-                                        "(%lld pressure values, the scene has %d)",
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "checkpoint: the projection's pressure increments do not fit the mesh "
+                       "(%lld pressure values, the scene has %d)",
                        a ? (long long)a->n : 0LL, (int)pj->np);
   pj->n_hist = (int)h->data[0], pj->m_hist[0] = h->data[1], pj->m_hist[1] = h->data[2];
   pj->refresh = h->data[3] != 0.0;

@@ -48,17 +48,16 @@ typedef struct sl_projection sl_projection;
 enum { SL_PROJECTION_KRYLOV_BUDGET = 30, SL_PROJECTION_SLOW = 10 };
 
 typedef struct sl_projection_opts {
-  double chi;          /* rho_min > 0: the Poisson equation's density */
-  double mu_rotational; /* the viscosity of the rotational correction; 0: the standard incremental form */
+  double chi;                /* rho_min > 0: the Poisson equation's density */
+  double mu_rotational;      /* the viscosity of the rotational correction; 0: the standard incremental form */
   const unsigned char *open; /* [mesh boundaries]: phi = 0 there (open, pressure, traction) */
-  int datum;           /* no open boundary: phi = 0 at the pressure datum (pressure dof 0) */
+  int datum;                 /* no open boundary: phi = 0 at the pressure datum (pressure dof 0) */
   /* the projection's from sl_projection_create on, even on failure: F directly (a fallback), the Poisson
    * matrix, F's diagonal blocks (the preconditioner) */
   sl_linsolve *velocity_solver, *poisson_solver, *preconditioner_solver;
 } sl_projection_opts;
 
-int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *o, sl_projection **out,
-                         sl_diag *d);
+int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *o, sl_projection **out, sl_diag *d);
 void sl_projection_destroy(sl_projection *pj);
 
 /* One trial step: u holds the predictor's velocity on entry and (u~^{k+1}, p^{k+1}) on return; state the

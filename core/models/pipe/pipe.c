@@ -26,10 +26,9 @@ static double wall_grading(double R, double w, int n) {
 }
 
 static void release(pipe *p) {
-  double **a[] = {&p->uf,   &p->us,    &p->phi,   &p->k,         &p->eps,      &p->theta,
-                  &p->mu_t, &p->mu_tk, &p->mu_te, &p->eps_prod,  &p->eps_sink, &p->K,
-                  &p->mu_s, &p->rhs,   &p->x,     &p->face_flux, &p->Kd,       &p->slip0,
-                  &p->ks,   &p->kfs};
+  double **a[] = {&p->uf,    &p->us,        &p->phi,      &p->k,        &p->eps, &p->theta, &p->mu_t,
+                  &p->mu_tk, &p->mu_te,     &p->eps_prod, &p->eps_sink, &p->K,   &p->mu_s,  &p->rhs,
+                  &p->x,     &p->face_flux, &p->Kd,       &p->slip0,    &p->ks,  &p->kfs};
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i) free(*a[i]);
   for (int i = 0; i < PIPE_NBUF; ++i) free(p->buf[i]);
   sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls};
@@ -116,9 +115,8 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
   if (!rc) rc = build_grid(p, d);
   const int n = p->n;
   if (!rc) {
-    double **a[] = {&p->uf,    &p->us,       &p->phi,      &p->k, &p->eps,  &p->theta, &p->mu_t, &p->mu_tk,
-                    &p->mu_te, &p->eps_prod, &p->eps_sink, &p->K, &p->mu_s, &p->Kd,    &p->slip0, &p->ks,
-                    &p->kfs};
+    double **a[] = {&p->uf,       &p->us,       &p->phi, &p->k,    &p->eps, &p->theta, &p->mu_t, &p->mu_tk, &p->mu_te,
+                    &p->eps_prod, &p->eps_sink, &p->K,   &p->mu_s, &p->Kd,  &p->slip0, &p->ks,   &p->kfs};
     for (size_t i = 0; i < sizeof a / sizeof a[0] && !rc; ++i)
       if (!(*a[i] = calloc((size_t)n, sizeof(double)))) rc = sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
     for (int i = 0; i < PIPE_NBUF && !rc; ++i)

@@ -31,9 +31,9 @@ typedef struct pipe_config {
   int granular_temperature; /* PIPE_THETA_* */
   int modulation;           /* 0 none, 1 Simonin's */
   double c_eps3;
-  int solids_viscosity; /* PIPE_SOLIDS_VISCOSITY_* */
-  double restitution;   /* e of solids_viscosity = peirano_leckner */
-  int solids_turbulence;     /* PIPE_SOLIDS_TURBULENCE_*: model C's k_s and k_fs from Tchen's equilibrium or transported */
+  int solids_viscosity;  /* PIPE_SOLIDS_VISCOSITY_* */
+  double restitution;    /* e of solids_viscosity = peirano_leckner */
+  int solids_turbulence; /* PIPE_SOLIDS_TURBULENCE_*: model C's k_s and k_fs from Tchen's equilibrium or transported */
   double covariance_schmidt; /* sigma_kfs of the k_fs diffusion (eq 5.23) */
   /* the developing pipe (pipe_march.c): length 0 for the fully developed one */
   double length, inlet_intensity, inlet_length_scale;
@@ -68,14 +68,14 @@ extern const char *const pipe_quantity_names[PQ_N];
 
 typedef struct pipe_march {
   int on, nz, j;
-  double h;                                        /* from the last station (the inlet for the first) to this */
+  double h; /* from the last station (the inlet for the first) to this */
   double *uf_up, *us_up, *phi_up, *k_up, *eps_up, *theta_up; /* [n] the last station's state */
   double *ks_up, *kfs_up;                                    /* [n] model C's transported k_s, k_fs there */
-  double *ff, *fs, *rff, *rfs, *rs; /* [nf] the phases' radial volume fluxes, rho_f ff, 1.5 rho_s fs, rho_s fs */
-  double *cap, *s_old;                             /* [n] a march step's storage and start for k or epsilon */
-  double *field[PIPE_NFIELDS];                     /* [n nz] every station's fields (the schema's order) */
-  double *G, *tau_fw, *tau_sw, *y_plus;            /* [nz] */
-  double pressure_drop;                            /* p(0) - p(L) */
+  double *ff, *fs, *rff, *rfs, *rs;     /* [nf] the phases' radial volume fluxes, rho_f ff, 1.5 rho_s fs, rho_s fs */
+  double *cap, *s_old;                  /* [n] a march step's storage and start for k or epsilon */
+  double *field[PIPE_NFIELDS];          /* [n nz] every station's fields (the schema's order) */
+  double *G, *tau_fw, *tau_sw, *y_plus; /* [nz] */
+  double pressure_drop;                 /* p(0) - p(L) */
   long iterations, worst_station_iterations;
   sl_mesh *mesh;
   sl_tensor_grid tg;
@@ -112,9 +112,9 @@ typedef struct pipe {
   sl_cell_scalar cs;
   sl_csr A;
   sl_linsolve *ls;
-  double *face_flux;         /* [nf] */
+  double *face_flux;                /* [nf] */
   double *rhs, *x, *buf[PIPE_NBUF]; /* buf[0..7], [14..17] scratch, [8..13] the steady solve's last state */
-  double dirichlet;          /* the value the wall cell's k or epsilon is held at (the cell-scalar hook's) */
+  double dirichlet;                 /* the value the wall cell's k or epsilon is held at (the cell-scalar hook's) */
   long iterations;
   double change;
   double relax;             /* the under-relaxation in use: [pipe] relaxation, halved where the iteration stalls */
@@ -127,10 +127,10 @@ typedef struct pipe {
 
 /* One point of model C's solids viscosity (pipe_peirano.c). */
 typedef struct pipe_pl_point {
-  double phi, k, eps, slip2, K;               /* the solids fraction, the fluid's k and epsilon, slip^2, the drag */
-  double rho_s, d_p, phi_max, restitution;    /* the particles */
-  double c_mu, c_beta;                        /* C_mu, the crossing-trajectory C_beta of t_fs */
-  int given;                                  /* 1: ks and kfs below (transported); 0: Tchen's equilibrium */
+  double phi, k, eps, slip2, K;            /* the solids fraction, the fluid's k and epsilon, slip^2, the drag */
+  double rho_s, d_p, phi_max, restitution; /* the particles */
+  double c_mu, c_beta;                     /* C_mu, the crossing-trajectory C_beta of t_fs */
+  int given;                               /* 1: ks and kfs below (transported); 0: Tchen's equilibrium */
   double ks, kfs;
 } pipe_pl_point;
 double pipe_peirano_leckner(const pipe_pl_point *q, double *nu_st);

@@ -69,10 +69,20 @@ double pipe_kfs(const pipe *p, int i) {
 pipe_pl_point pipe_pl_point_at(const pipe *p, int i) {
   double s = p->uf[i] - p->us[i];
   const int tr = p->cfg->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED;
-  return (pipe_pl_point){.phi = p->phi[i], .k = p->k[i], .eps = p->eps[i], .slip2 = s * s, .K = p->K[i],
-                         .rho_s = p->rho_s, .d_p = p->d_p, .phi_max = p->phi_max,
-                         .restitution = p->cfg->restitution, .c_mu = p->c_mu, .c_beta = p->cfg->crossing_trajectory,
-                         .given = tr, .ks = tr ? p->ks[i] : 0.0, .kfs = tr ? p->kfs[i] : 0.0};
+  return (pipe_pl_point){.phi = p->phi[i],
+                         .k = p->k[i],
+                         .eps = p->eps[i],
+                         .slip2 = s * s,
+                         .K = p->K[i],
+                         .rho_s = p->rho_s,
+                         .d_p = p->d_p,
+                         .phi_max = p->phi_max,
+                         .restitution = p->cfg->restitution,
+                         .c_mu = p->c_mu,
+                         .c_beta = p->cfg->crossing_trajectory,
+                         .given = tr,
+                         .ks = tr ? p->ks[i] : 0.0,
+                         .kfs = tr ? p->kfs[i] : 0.0};
 }
 
 static void set_theta(pipe *p) {
@@ -99,8 +109,7 @@ static int ks_wall(void *user, int c, double *rhs, double *diag, sl_diag *d) {
 
 /* One steady solve of k_s or k_fs (s_iter the iterate), with the developing pipe's convection (pipe_march.c:
    s_up the last station's). */
-static int solve(pipe *p, sl_cell_scalar_terms *t, const double *s_iter, const double *s_up, double *out,
-                 sl_diag *d) {
+static int solve(pipe *p, sl_cell_scalar_terms *t, const double *s_iter, const double *s_up, double *out, sl_diag *d) {
   t->dt = 1e30, t->s_old = s_iter;
   if (p->march.on) {
     pipe_march_ksfs(p, s_iter, s_up);
@@ -141,8 +150,12 @@ int pipe_ksfs_update(pipe *p, sl_diag *d) {
   /* the drag couples the pair (K k_fs in k_s's, 2 K S k_s in k_fs's): Gauss-Seidel sweeps, each k_s then k_fs */
   for (int sweep = 0; sweep < 3 && !rc; ++sweep) {
     for (int i = 0; i < n; ++i) srcs[i] = src[i] + p->K[i] * fmax(f_new[i], 0.0);
-    sl_cell_scalar_terms t = {.cap = cap, .k = dks, .source = srcs, .sink = snk,
-                              .boundary = p->ks_wall_energy ? ks_wall : NULL, .boundary_user = p};
+    sl_cell_scalar_terms t = {.cap = cap,
+                              .k = dks,
+                              .source = srcs,
+                              .sink = snk,
+                              .boundary = p->ks_wall_energy ? ks_wall : NULL,
+                              .boundary_user = p};
     if ((rc = solve(p, &t, p->ks, p->march.ks_up, s_new, d))) return sl_diag_prefix(d, rc, "pipe: the k_s equation");
     for (int i = 0; i < n; ++i) {
       const double K = p->K[i], S = ms[i] / ((1.0 - p->phi[i]) * p->rho_f), tfs = pipe_tfs(p, i);

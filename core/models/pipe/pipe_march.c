@@ -54,9 +54,9 @@
 
 void pipe_march_release(pipe *p) {
   pipe_march *m = &p->march;
-  double **a[] = {&m->uf_up, &m->us_up, &m->phi_up, &m->k_up,   &m->eps_up, &m->theta_up,
-                  &m->ff,    &m->fs,    &m->rff,    &m->rfs,    &m->cap,    &m->s_old,
-                  &m->G,     &m->tau_fw, &m->tau_sw, &m->y_plus, &m->ks_up,  &m->kfs_up, &m->rs};
+  double **a[] = {&m->uf_up,  &m->us_up,  &m->phi_up, &m->k_up,   &m->eps_up, &m->theta_up, &m->ff,
+                  &m->fs,     &m->rff,    &m->rfs,    &m->cap,    &m->s_old,  &m->G,        &m->tau_fw,
+                  &m->tau_sw, &m->y_plus, &m->ks_up,  &m->kfs_up, &m->rs};
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i) free(*a[i]), *a[i] = NULL;
   for (int k = 0; k < PIPE_NFIELDS; ++k) free(m->field[k]), m->field[k] = NULL;
   sl_fv_grid_free(&m->g);
@@ -84,7 +84,7 @@ int pipe_march_setup(pipe *p, sl_diag *d) {
   for (int i = 0; i < n; ++i)
     if (fabs(m->g.xc[i] - g1->xc[i]) > 1e-12 * p->R)
       return sl_diag_set(d, SL_EFAILED, "pipe: the developing pipe's radial cells differ from the row's at %d", i);
-  double **a[] = {&m->uf_up, &m->us_up,  &m->phi_up, &m->k_up, &m->eps_up,
+  double **a[] = {&m->uf_up,    &m->us_up, &m->phi_up, &m->k_up, &m->eps_up,
                   &m->theta_up, &m->ks_up, &m->kfs_up, &m->cap,  &m->s_old};
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i)
     if (!(*a[i] = calloc((size_t)n, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
@@ -103,7 +103,7 @@ int pipe_march_setup(pipe *p, sl_diag *d) {
   for (int i = 0; i < n; ++i) {
     m->uf_up[i] = m->us_up[i] = V, m->phi_up[i] = c->solids_fraction;
     m->k_up[i] = k0, m->eps_up[i] = pow(0.09, 0.75) * pow(k0, 1.5) / l0;
-    m->theta_up[i] = 2.0 * k0 / 3.0; /* isotropic, the solids' fluctuations the fluid's (digest erratum 12) */
+    m->theta_up[i] = 2.0 * k0 / 3.0;           /* isotropic, the solids' fluctuations the fluid's (digest erratum 12) */
     m->ks_up[i] = k0, m->kfs_up[i] = 2.0 * k0; /* model C's likewise: u_s' = u_f' at the inlet */
   }
   return 0;
@@ -235,7 +235,8 @@ void pipe_march_ksfs(pipe *p, const double *s_iter, const double *s_up) {
 static void store(pipe *p, int j) {
   pipe_march *m = &p->march;
   const double *f[PIPE_NFIELDS] = {p->uf, p->us, p->phi, p->k, p->eps, p->mu_t, p->theta, p->ks, p->kfs};
-  for (int k = 0; k < PIPE_NFIELDS; ++k) memcpy(m->field[k] + (size_t)j * (size_t)p->n, f[k], (size_t)p->n * sizeof(double));
+  for (int k = 0; k < PIPE_NFIELDS; ++k)
+    memcpy(m->field[k] + (size_t)j * (size_t)p->n, f[k], (size_t)p->n * sizeof(double));
   m->G[j] = p->G, m->tau_fw[j] = p->tau_fw, m->tau_sw[j] = p->tau_sw, m->y_plus[j] = p->y_plus;
 }
 
@@ -247,8 +248,7 @@ int pipe_march_solve(pipe *p, sl_diag *d) {
   memcpy(p->uf, m->uf_up, (size_t)n * sizeof(double)), memcpy(p->us, m->us_up, (size_t)n * sizeof(double));
   memcpy(p->k, m->k_up, (size_t)n * sizeof(double)), memcpy(p->eps, m->eps_up, (size_t)n * sizeof(double));
   memcpy(p->phi, m->phi_up, (size_t)n * sizeof(double));
-  if (p->cfg->granular_temperature == PIPE_THETA_TRANSPORT)
-    memcpy(p->theta, m->theta_up, (size_t)n * sizeof(double));
+  if (p->cfg->granular_temperature == PIPE_THETA_TRANSPORT) memcpy(p->theta, m->theta_up, (size_t)n * sizeof(double));
   if (p->cfg->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED) {
     memcpy(p->ks, m->ks_up, (size_t)n * sizeof(double)), memcpy(p->kfs, m->kfs_up, (size_t)n * sizeof(double));
     p->ksfs_started = 1;
@@ -309,7 +309,8 @@ int pipe_march_write(pipe *p, sl_output *out, unsigned mask, sl_diag *d) {
   const double V = p->cfg->bulk_velocity, q = 0.5 * p->rho_f * V * V;
   /* the pressure drop beyond the outlet's friction: the inlet's excess, in dynamic heads (the weight apart) */
   const double weight = -p->rho_f * p->gz * p->cfg->length;
-  const double excess = (m->pressure_drop - weight - 4.0 * m->tau_fw[m->nz - 1] / p->cfg->diameter * p->cfg->length) / q;
+  const double excess =
+      (m->pressure_drop - weight - 4.0 * m->tau_fw[m->nz - 1] / p->cfg->diameter * p->cfg->length) / q;
   if (!rc) rc = sl_output_write_scalar(out, "pressure_drop", m->pressure_drop, d);
   if (!rc) rc = sl_output_write_scalar(out, "inlet_excess_head", excess, d);
   if (!rc) rc = sl_output_write_scalar(out, "stations", (double)m->nz, d);

@@ -33,7 +33,7 @@ typedef struct scalar {
   sl_cell_scalar cs;
   const sc_boundary *b;
   double *c, *c_new, *flux, *cap, *src; /* cells, cells, faces, cells, cells */
-  double t_new;                          /* the time the trial step ends at */
+  double t_new;                         /* the time the trial step ends at */
   double *cellbuf;
   double inventory0, inflow, inflow_trial; /* the balance: what the value boundaries let in */
 } scalar;
@@ -117,7 +117,8 @@ static int sc_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) 
   const sl_mesh *m = sc->mesh;
   char at[400];
   int rc = m->dim == 2 ? 0 : sl_diag_set(d, SL_EBADINPUT, "[mesh]: the scalar model needs a 2-D mesh");
-  if (!rc && (rc = sl_tensor_grid_from_mesh(m, &s->tg, d))) rc = sl_diag_prefix(d, rc, "[mesh] (the scalar model's grid)");
+  if (!rc && (rc = sl_tensor_grid_from_mesh(m, &s->tg, d)))
+    rc = sl_diag_prefix(d, rc, "[mesh] (the scalar model's grid)");
   /* periodic sides come in opposite pairs */
   int periodic[2] = {0, 0};
   for (int dir = 0; dir < 2 && !rc; ++dir) {
@@ -191,14 +192,20 @@ static int sc_step(void *self, sl_step *st, int *iterations, sl_diag *d) {
   s->t_new = st->t + st->dt;
   *iterations = 1;
   if (s->cfg->source.e)
-    for (int c = 0; c < s->g.nc; ++c) s->src[c] = eval2(s->cfg->source.e, s->g.xc[c % s->g.nx], s->g.yc[c / s->g.nx], s->t_new);
+    for (int c = 0; c < s->g.nc; ++c)
+      s->src[c] = eval2(s->cfg->source.e, s->g.xc[c % s->g.nx], s->g.yc[c / s->g.nx], s->t_new);
   double *k = NULL;
   if (s->cfg->diffusivity > 0.0) { /* the cells' diffusivity: the scene's constant */
     k = s->cellbuf;
     for (int c = 0; c < s->g.nc; ++c) k[c] = s->cfg->diffusivity;
   }
-  sl_cell_scalar_terms t = {.dt = st->dt, .cap = s->cap, .s_old = s->c, .k = k, .source = s->src,
-                            .flux = s->cfg->velocity.n ? s->flux : NULL, .boundary = boundary_terms,
+  sl_cell_scalar_terms t = {.dt = st->dt,
+                            .cap = s->cap,
+                            .s_old = s->c,
+                            .k = k,
+                            .source = s->src,
+                            .flux = s->cfg->velocity.n ? s->flux : NULL,
+                            .boundary = boundary_terms,
                             .boundary_user = s};
   int rc = sl_cell_scalar_solve(&s->cs, &t, s->c_new, d);
   if (rc) return -rc; /* a direct solve of a fixed stencil does not get better with a smaller step */
@@ -288,20 +295,55 @@ const sl_model_ops sl_scalar_ops = {.setup = sc_setup,
 #define C(field) SL_AT_MODEL(sc_config, field)
 
 static const sl_key scalar_keys[] = {
-    {.section = "scene", .name = "geometry", .type = SL_KEY_CHOICE, SL_AT_SCENE(geometry), .def = 1,
-     .choices = "line|planar|axisymmetric", .help = "planar, or axisymmetric (x is r)"},
-    {.section = "scalar", .name = "diffusivity", .type = SL_KEY_REAL, C(diffusivity), .min = 0.0, .max = 1e6,
-     .units = "m^2 s^-1", .help = "D"},
-    {.section = "scalar", .name = "velocity", .type = SL_KEY_EXPRS, C(velocity), .vars = "x,y", .max_n = 2,
-     .units = "m s^-1", .help = "the carrying velocity, two components (default at rest)"},
-    {.section = "scalar", .name = "source", .type = SL_KEY_EXPR, C(source), .vars = "x,y,t",
+    {.section = "scene",
+     .name = "geometry",
+     .type = SL_KEY_CHOICE,
+     SL_AT_SCENE(geometry),
+     .def = 1,
+     .choices = "line|planar|axisymmetric",
+     .help = "planar, or axisymmetric (x is r)"},
+    {.section = "scalar",
+     .name = "diffusivity",
+     .type = SL_KEY_REAL,
+     C(diffusivity),
+     .min = 0.0,
+     .max = 1e6,
+     .units = "m^2 s^-1",
+     .help = "D"},
+    {.section = "scalar",
+     .name = "velocity",
+     .type = SL_KEY_EXPRS,
+     C(velocity),
+     .vars = "x,y",
+     .max_n = 2,
+     .units = "m s^-1",
+     .help = "the carrying velocity, two components (default at rest)"},
+    {.section = "scalar",
+     .name = "source",
+     .type = SL_KEY_EXPR,
+     C(source),
+     .vars = "x,y,t",
      .help = "S, per unit volume and time"},
-    {.section = "initial", .name = "value", .type = SL_KEY_EXPR, C(initial), .vars = "x,y", .def_doc = "required",
+    {.section = "initial",
+     .name = "value",
+     .type = SL_KEY_EXPR,
+     C(initial),
+     .vars = "x,y",
+     .def_doc = "required",
      .help = "the initial value at the cell centres"},
-    {.section = "boundary", .name = "type", .type = SL_KEY_CHOICE, SL_AT_BOUNDARY(sc_boundary, type),
-     .choices = "wall|value|periodic", .help = "wall (no flux), value (given), periodic (both opposite sides)"},
-    {.section = "boundary", .name = "value", .type = SL_KEY_EXPR, SL_AT_BOUNDARY(sc_boundary, value),
-     .vars = "x,y,t", .when_type = 1u << SC_VALUE, .help = "the value at the boundary"},
+    {.section = "boundary",
+     .name = "type",
+     .type = SL_KEY_CHOICE,
+     SL_AT_BOUNDARY(sc_boundary, type),
+     .choices = "wall|value|periodic",
+     .help = "wall (no flux), value (given), periodic (both opposite sides)"},
+    {.section = "boundary",
+     .name = "value",
+     .type = SL_KEY_EXPR,
+     SL_AT_BOUNDARY(sc_boundary, value),
+     .vars = "x,y,t",
+     .when_type = 1u << SC_VALUE,
+     .help = "the value at the boundary"},
 };
 TABLE(sc_keys, scalar_keys);
 
@@ -310,9 +352,10 @@ static const char *const scalar_fields[] = {"value"};
 const sl_schema sl_scalar_schema = {
     .model = "scalar",
     .title = "passive scalar",
-    .summary = "A scalar carried by a given velocity, diffusing, with a source, on the staggered finite-volume grid "
-               "of a rectangle: backward Euler, upwind convection, central diffusion; walls, given values, periodic "
-               "sides. The smallest model on the shared layers (core/fv).",
+    .summary =
+        "A scalar carried by a given velocity, diffusing, with a source, on the staggered finite-volume grid "
+        "of a rectangle: backward Euler, upwind convection, central diffusion; walls, given values, periodic "
+        "sides. The smallest model on the shared layers (core/fv).",
     .tables = {&sl_keys_scene, &sl_keys_mesh, &sl_keys_time_steps, &sl_keys_output, &sl_keys_plugins, &sc_keys},
     .n_tables = 6,
     .config_size = sizeof(sc_config),

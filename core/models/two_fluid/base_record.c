@@ -70,12 +70,14 @@ int tf_base_record_read(tf_base_record *r, const char *path, const char *scene_f
     r->t[r->n] = x, r->a[r->n] = y * to_si, ++r->n;
   }
   fclose(f);
-  if (!rc && r->n < 2) rc = sl_diag_set(d, SL_EBADINPUT, "%s: the base record '%s' has %d rows (at least 2)", where, full, r->n);
+  if (!rc && r->n < 2)
+    rc = sl_diag_set(d, SL_EBADINPUT, "%s: the base record '%s' has %d rows (at least 2)", where, full, r->n);
   if (!rc) {
     double m = 0.0;
     for (int i = 0; i < r->n; ++i) m = fmax(m, fabs(r->a[i]));
     if (peak > 0.0) {
-      if (m == 0.0) rc = sl_diag_set(d, SL_EBADINPUT, "%s: the base record '%s' is all zeros: it cannot be scaled", where, full);
+      if (m == 0.0)
+        rc = sl_diag_set(d, SL_EBADINPUT, "%s: the base record '%s' is all zeros: it cannot be scaled", where, full);
       for (int i = 0; i < r->n && !rc; ++i) r->a[i] *= peak / m;
       m = peak;
     }

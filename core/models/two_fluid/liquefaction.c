@@ -10,25 +10,25 @@
 #include "core/models/two_fluid/base_record.h"
 
 struct tf_liquefaction {
-  int n, top;          /* cells; the deposit is cells 0..top-1, faces 0..top */
-  tf_base_record rec;  /* n == 0: no shaking */
-  double start;        /* the record's t = 0 in run time */
+  int n, top;         /* cells; the deposit is cells 0..top-1, faces 0..top */
+  tf_base_record rec; /* n == 0: no shaking */
+  double start;       /* the record's t = 0 in run time */
   double k2max, g0_const, tan_phi, xi, omega_d, eta_res, liquefied_ratio, phi_min, nbar_drop, nbar_min;
-  int solid_mass;      /* 1: rho_s (as printed), 0: the mixture density */
-  double *nbar, *nbar0, *ps0, *ps, *dps;  /* [n] */
-  double *w, *v, *w_new, *v_new;          /* [n+1] faces: displacement and velocity relative to the base */
+  int solid_mass;                        /* 1: rho_s (as printed), 0: the mixture density */
+  double *nbar, *nbar0, *ps0, *ps, *dps; /* [n] */
+  double *w, *v, *w_new, *v_new;         /* [n+1] faces: displacement and velocity relative to the base */
   double *gam, *gam_rev, *path, *dir, *amp, *inc, *epsv, *nbar_new; /* [n] shear history */
-  double *rho, *a, *b, *tau0, *lo, *di, *up, *rhs;                 /* [n+1] work: density, tau coefficients */
-  double *nbar_ref;                       /* [n] nbar as the deposit was built (before a drop), for its height */
-  double ps_floor;                         /* cells with p_s0 below it (the partly filled surface cell) have no ratio */
-  double *ph, *p0;                        /* [n] the hydrostatic pressure; the fluid pressure at t = 0 */
+  double *rho, *a, *b, *tau0, *lo, *di, *up, *rhs;                  /* [n+1] work: density, tau coefficients */
+  double *nbar_ref; /* [n] nbar as the deposit was built (before a drop), for its height */
+  double ps_floor;  /* cells with p_s0 below it (the partly filled surface cell) have no ratio */
+  double *ph, *p0;  /* [n] the hydrostatic pressure; the fluid pressure at t = 0 */
   int nbar_min_given;
-  tf_closure dens;                        /* [closure.densification], c NULL: none */
+  tf_closure dens; /* [closure.densification], c NULL: none */
   double z_surface0, h_deposit, inventory_fluid0;
   long reversals;
   double ru_max, ru_max_depth, t_onset, onset_depth;
   /* the run's history, step by step */
-  int surface_cell;                       /* the topmost deposit cell with p_s0 above ps_floor */
+  int surface_cell; /* the topmost deposit cell with p_s0 above ps_floor */
   double ru_surface_max, ru_base_max, thick_onset, thick_shaking_max, base_peak, base_peak_time;
 };
 
@@ -48,11 +48,13 @@ int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, const int
   char at[400];
   *out = NULL;
   if (!c->ps.c || !sl_point_has_input(&c->ps.pc, "nbar"))
-    return sl_diag_set(d, SL_EBADINPUT, "%s: a shaken deposit ([shaking], [deposit], [closure.densification]) needs "
-                                        "a solids pressure of phi and nbar in [closure.solids_pressure] (e.g. model = "
-                                        "pringle_state, Pringle 2001 eq 4.30)",
-                       sl_scene_closure(sc, "solids_pressure") ? sl_scene_closure_where(sc, "solids_pressure", at, sizeof at)
-                                                               : "[closure.solids_pressure]");
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s: a shaken deposit ([shaking], [deposit], [closure.densification]) needs "
+                       "a solids pressure of phi and nbar in [closure.solids_pressure] (e.g. model = "
+                       "pringle_state, Pringle 2001 eq 4.30)",
+                       sl_scene_closure(sc, "solids_pressure")
+                           ? sl_scene_closure_where(sc, "solids_pressure", at, sizeof at)
+                           : "[closure.solids_pressure]");
   const sl_src *ne = sl_scene_src(sc, &cfg->nbar);
   const sl_src *fe = cfg->from && cfg->from[0] ? sl_scene_src(sc, &cfg->from) : NULL;
   sl_output_field nf = {0};
@@ -61,17 +63,18 @@ int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, const int
     nf.values = NULL;
   }
   if (!ne && !nf.values)
-    return sl_diag_set(d, SL_EBADINPUT, "[initial] nbar: the solids pressure %s takes the reference porosity nbar of "
-                                        "each cell: give its initial value (an expression of x)%s",
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "[initial] nbar: the solids pressure %s takes the reference porosity nbar of "
+                       "each cell: give its initial value (an expression of x)%s",
                        c->ps.c->desc->name, fe ? ", or start from a file that has it ([initial] from)" : "");
   tf_liquefaction *L = calloc(1, sizeof *L);
   if (!L) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   const int n = c->n;
   L->n = n;
-  double **cells[] = {&L->nbar_ref, &L->nbar, &L->nbar0, &L->ps0, &L->ps, &L->dps, &L->gam, &L->gam_rev, &L->path, &L->dir,
-                      &L->amp, &L->inc, &L->epsv, &L->nbar_new};
-  double **faces[] = {&L->w, &L->v, &L->w_new, &L->v_new, &L->rho, &L->a, &L->b, &L->tau0,
-                      &L->lo, &L->di, &L->up, &L->rhs, &L->ph, &L->p0};
+  double **cells[] = {&L->nbar_ref, &L->nbar, &L->nbar0, &L->ps0, &L->ps,  &L->dps,  &L->gam,
+                      &L->gam_rev,  &L->path, &L->dir,   &L->amp, &L->inc, &L->epsv, &L->nbar_new};
+  double **faces[] = {&L->w,    &L->v,  &L->w_new, &L->v_new, &L->rho, &L->a,  &L->b,
+                      &L->tau0, &L->lo, &L->di,    &L->up,    &L->rhs, &L->ph, &L->p0};
   int rc = 0;
   for (size_t i = 0; i < sizeof cells / sizeof cells[0] && !rc; ++i)
     if (!(*cells[i] = vec((size_t)n))) rc = SL_ENOMEM;
@@ -83,7 +86,8 @@ int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, const int
     return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   }
   const tf_lq_config *q = &cfg->lq;
-  L->k2max = q->k2max, L->g0_const = q->shear_modulus, L->tan_phi = tan(q->friction_angle * M_PI / 180.0), L->xi = q->damping;
+  L->k2max = q->k2max, L->g0_const = q->shear_modulus, L->tan_phi = tan(q->friction_angle * M_PI / 180.0),
+  L->xi = q->damping;
   L->omega_d = 2.0 * M_PI * q->damping_frequency, L->eta_res = q->residual_viscosity;
   L->liquefied_ratio = q->liquefied_ratio, L->phi_min = q->deposit_phi, L->nbar_drop = q->nbar_drop;
   L->solid_mass = q->mass == 1, L->start = q->start;
@@ -93,17 +97,19 @@ int tfl_create(const sl_scene *sc, const tf_config *cfg, tf_column *c, const int
     double xy[3] = {c->xc[i], 0.0, c->case_index};
     double v = ne ? sl_expr_eval(cfg->nbar.e, xy) : nf.values[cell_of[i]];
     if (!(v >= L->nbar_min && v < 1.0))
-      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s: nbar = %g at x = %g: allowed %g <= nbar < 1 ([deposit] "
-                                        "nbar_min)", ne ? ne->file : fe->file, ne ? ne->line : fe->line,
-                       ne ? "nbar" : "from", v, c->xc[i], L->nbar_min);
+      rc = sl_diag_set(d, SL_EBADINPUT,
+                       "%s:%d: [initial] %s: nbar = %g at x = %g: allowed %g <= nbar < 1 ([deposit] "
+                       "nbar_min)",
+                       ne ? ne->file : fe->file, ne ? ne->line : fe->line, ne ? "nbar" : "from", v, c->xc[i],
+                       L->nbar_min);
     L->nbar[i] = L->nbar0[i] = v;
   }
   sl_output_field_free(&nf);
   if (!rc && q->record && q->record[0]) {
     const sl_src *re = sl_scene_src(sc, &q->record);
     sl_scene_where(sc, &q->record, at, sizeof at);
-    rc = tf_base_record_read(&L->rec, q->record, re ? re->file : NULL, q->units == 0 ? 9.81 : 1.0,
-                             q->peak * 9.81, at, d);
+    rc = tf_base_record_read(&L->rec, q->record, re ? re->file : NULL, q->units == 0 ? 9.81 : 1.0, q->peak * 9.81, at,
+                             d);
   }
   if (!rc && (L->dens.c = sl_scene_closure(sc, "densification"))) {
     rc = sl_point_bind(&L->dens.pc, L->dens.c, dens_names, 5, "closure.densification", "the two_fluid column", d);
@@ -156,8 +162,10 @@ int tfl_start(tf_liquefaction *L, tf_column *c, sl_diag *d) {
   L->top = 0;
   while (L->top < L->n && c->phi[L->top] >= L->phi_min) ++L->top;
   if (L->top == 0)
-    return sl_diag_set(d, SL_EBADINPUT, "[deposit] phi_min = %g: no deposit at the base at t = 0 (phi = %g in the "
-                                        "bottom cell)", L->phi_min, c->phi[0]);
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "[deposit] phi_min = %g: no deposit at the base at t = 0 (phi = %g in the "
+                       "bottom cell)",
+                       L->phi_min, c->phi[0]);
   /* The densest reference state densification may reach: by default the one whose P_s at phi_max is twice
    * the deposit's largest P_s, so that a densified cell can carry its overburden again below the
    * packing limit (bisection on nbar, P_s falling as nbar falls). */
@@ -196,7 +204,7 @@ static void cell_shear(const tf_liquefaction *L, const tf_column *c, int i, doub
   double G0 = L->g0_const > 0.0 ? L->g0_const : 1e3 * 220.0 * L->k2max * sqrt(ps * 1e-3), tmax = ps * L->tan_phi;
   double g = fabs(L->gam[i]);
   *G = G0 > 0.0 && tmax > 0.0 ? G0 / (1.0 + G0 * g / tmax) : 0.0; /* Hardin & Drnevich (1972) */
-  if (L->g0_const > 0.0) *G = G0; /* the verification's linear elastic deposit */
+  if (L->g0_const > 0.0) *G = G0;                                 /* the verification's linear elastic deposit */
   *eta = 2.0 * L->xi * G0 / L->omega_d + L->eta_res;
   *rho = L->solid_mass ? c->rho_s : c->phi[i] * c->rho_s + (1.0 - c->phi[i]) * c->rho_f;
 }
@@ -314,19 +322,35 @@ int tfl_write(tf_liquefaction *L, tf_column *c, sl_output *out, const int *cell_
   struct {
     unsigned flag;
     const char *name;
-  } f[] = {{TFL_F_NBAR, "nbar"},           {TFL_F_RATIO, "stress_ratio"},      {TFL_F_EXCESS, "excess_pressure"},
-           {TFL_F_RU, "pore_pressure_ratio"}, {TFL_F_STRAIN, "shear_strain"}, {TFL_F_PS, "solids_pressure"}};
+  } f[] = {{TFL_F_NBAR, "nbar"},
+           {TFL_F_RATIO, "stress_ratio"},
+           {TFL_F_EXCESS, "excess_pressure"},
+           {TFL_F_RU, "pore_pressure_ratio"},
+           {TFL_F_STRAIN, "shear_strain"},
+           {TFL_F_PS, "solids_pressure"}};
   for (size_t k = 0; k < sizeof f / sizeof f[0] && !rc; ++k) {
     if (!(fields & f[k].flag)) continue;
     for (int i = 0; i < n; ++i) {
       double v = 0.0, ratio = L->ps0[i] > L->ps_floor ? L->ps[i] / L->ps0[i] : 1.0;
       switch (f[k].flag) {
-      case TFL_F_NBAR: v = L->nbar[i]; break;
-      case TFL_F_RATIO: v = i < top ? ratio : 1.0; break;
-      case TFL_F_EXCESS: v = c->p[i] - L->p0[i]; break;
-      case TFL_F_RU: v = i < top && L->ps0[i] > L->ps_floor ? (c->p[i] - L->p0[i]) / L->ps0[i] : 0.0; break;
-      case TFL_F_STRAIN: v = L->gam[i]; break;
-      default: v = L->ps[i]; break;
+        case TFL_F_NBAR:
+          v = L->nbar[i];
+          break;
+        case TFL_F_RATIO:
+          v = i < top ? ratio : 1.0;
+          break;
+        case TFL_F_EXCESS:
+          v = c->p[i] - L->p0[i];
+          break;
+        case TFL_F_RU:
+          v = i < top && L->ps0[i] > L->ps_floor ? (c->p[i] - L->p0[i]) / L->ps0[i] : 0.0;
+          break;
+        case TFL_F_STRAIN:
+          v = L->gam[i];
+          break;
+        default:
+          v = L->ps[i];
+          break;
       }
       cell[cell_of[i]] = v;
     }
@@ -361,22 +385,24 @@ int tfl_write(tf_liquefaction *L, tf_column *c, sl_output *out, const int *cell_
            {"onset_depth", L->onset_depth},
            {"base_acceleration", ag},
            {"surface_displacement", L->w[top]},
-           {"fluid_conservation_error", L->inventory_fluid0 > 0.0 ? (fluid - L->inventory_fluid0) / L->inventory_fluid0 : 0.0}};
+           {"fluid_conservation_error",
+            L->inventory_fluid0 > 0.0 ? (fluid - L->inventory_fluid0) / L->inventory_fluid0 : 0.0}};
   for (size_t k = 0; k < sizeof s / sizeof s[0] && !rc; ++k) rc = sl_output_write_scalar(out, s[k].name, s[k].v, d);
   return rc;
 }
 
 void tfl_summary(const tf_liquefaction *L, char *buf, size_t len) {
-  snprintf(buf, len, "deposit of %d cells (%.4g m), %ld strain reversals, largest pore pressure ratio %.3f at depth "
-                     "%.3g m, onset (ratio 0.95) at t = %.4g s, depth %.4g m",
+  snprintf(buf, len,
+           "deposit of %d cells (%.4g m), %ld strain reversals, largest pore pressure ratio %.3f at depth "
+           "%.3g m, onset (ratio 0.95) at t = %.4g s, depth %.4g m",
            L->top, L->h_deposit, L->reversals, L->ru_max, L->ru_max_depth, L->t_onset, L->onset_depth);
 }
 
 void tfl_free(tf_liquefaction *L) {
   if (!L) return;
-  double *all[] = {L->nbar_ref, L->nbar, L->nbar0, L->ps0, L->ps, L->dps, L->gam, L->gam_rev, L->path, L->dir, L->amp, L->inc,
-                   L->epsv, L->nbar_new, L->w, L->v, L->w_new, L->v_new, L->rho, L->a, L->b, L->tau0,
-                   L->lo, L->di, L->up, L->rhs, L->ph, L->p0};
+  double *all[] = {L->nbar_ref, L->nbar, L->nbar0, L->ps0,      L->ps, L->dps, L->gam,   L->gam_rev, L->path, L->dir,
+                   L->amp,      L->inc,  L->epsv,  L->nbar_new, L->w,  L->v,   L->w_new, L->v_new,   L->rho,  L->a,
+                   L->b,        L->tau0, L->lo,    L->di,       L->up, L->rhs, L->ph,    L->p0};
   for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i) free(all[i]);
   tf_base_record_free(&L->rec);
   if (L->dens.c) sl_point_release(&L->dens.pc);

@@ -65,13 +65,6 @@ void tfl_summary(const tf_liquefaction *L, char *buf, size_t len);
 void tfl_free(tf_liquefaction *L);
 
 /* The add-on's output fields (bits of the column's field mask). */
-enum {
-  TFL_F_NBAR = 16,
-  TFL_F_RATIO = 32,
-  TFL_F_EXCESS = 64,
-  TFL_F_RU = 128,
-  TFL_F_STRAIN = 256,
-  TFL_F_PS = 512
-};
+enum { TFL_F_NBAR = 16, TFL_F_RATIO = 32, TFL_F_EXCESS = 64, TFL_F_RU = 128, TFL_F_STRAIN = 256, TFL_F_PS = 512 };
 
 #endif

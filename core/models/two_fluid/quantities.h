@@ -8,8 +8,22 @@
 
 #include "core/models/granular.h"
 
-enum { TF_Q_PHI, TF_Q_SLIP, TF_Q_THETA, TF_Q_RHO_F, TF_Q_MU_F, TF_Q_RHO_S, TF_Q_D_P, TF_Q_SPHERICITY, TF_Q_GRAVITY,
-       TF_Q_SLIP_WALL, TF_Q_WALL_DISTANCE, TF_Q_SHEAR_RATE, TF_Q_DENSITY, TF_Q_N };
+enum {
+  TF_Q_PHI,
+  TF_Q_SLIP,
+  TF_Q_THETA,
+  TF_Q_RHO_F,
+  TF_Q_MU_F,
+  TF_Q_RHO_S,
+  TF_Q_D_P,
+  TF_Q_SPHERICITY,
+  TF_Q_GRAVITY,
+  TF_Q_SLIP_WALL,
+  TF_Q_WALL_DISTANCE,
+  TF_Q_SHEAR_RATE,
+  TF_Q_DENSITY,
+  TF_Q_N
+};
 extern const char *const tf_quantity_names[TF_Q_N];
 
 #endif

@@ -13,9 +13,8 @@
 #include "core/fv/cell_scalar.h"
 #include "core/fv/grid.h"
 #include "core/mesh/tensor_grid.h"
-#include "core/scene/mesh.h"
-#include "core/models/two_fluid/two_fluid.h"
 #include "core/models/two_fluid/quantities.h"
+#include "core/models/two_fluid/two_fluid.h"
 #include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/plugin/kinds.h"
 #include "core/plugin/point_eval.h"
@@ -25,19 +24,18 @@ enum { SOLIDS_NO_SLIP = 0, SOLIDS_FREE_SLIP = 1, SOLIDS_WALL_STRESS = 2 };
 enum { F_PHI = 1, F_UF = 2, F_US = 4, F_THETA = 8, F_PS = 16 };
 static const char *const field_names[] = {"phi", "velocity_fluid", "velocity_solid", "theta", "solids_pressure"};
 
-
 #define SH_PI 3.14159265358979323846
 
 typedef struct sh_wall {
   const char *name;
-  int node, inner;     /* the wall's vertex and the next one inwards */
-  int cell;            /* the wall's cell */
-  int solids;          /* SOLIDS_* */
-  int wall_function;   /* the wall closure reads wall_distance: slip at `inner` */
+  int node, inner;      /* the wall's vertex and the next one inwards */
+  int cell;             /* the wall's cell */
+  int solids;           /* SOLIDS_* */
+  int wall_function;    /* the wall closure reads wall_distance: slip at `inner` */
   const sl_expr *speed; /* of t (the scene's) */
-  double u;            /* the wall's speed now */
-  double area;         /* r_w^2 (annular, per radian) or 1: torque or force per unit stress */
-  double theta_area;   /* r_w or 1: energy per unit flux */
+  double u;             /* the wall's speed now */
+  double area;          /* r_w^2 (annular, per radian) or 1: torque or force per unit stress */
+  double theta_area;    /* r_w or 1: energy per unit flux */
   /* reported at the last accepted state */
   double tau_f, tau_s, slip, bagnold;
 } sh_wall;
@@ -51,14 +49,14 @@ typedef struct sh_layer {
   /* geometry: x [n+1]; per cell: h, W (volume), gm (momentum conductance); per node: V, a, s */
   double *x, *h, *W, *gm, *V, *a, *s;
   double rho_f, mu_f, rho_s, d_p, sphericity, phi_max, gravity, mu_s_const;
-  double *phi, *phin;              /* cells, nodes (held) */
-  double *uf, *us, *th;            /* state: velocities at the nodes, theta in the cells (th[n] unused) */
-  double *uf1, *us1, *th1;         /* the step's iterate */
+  double *phi, *phin;               /* cells, nodes (held) */
+  double *uf, *us, *th;             /* state: velocities at the nodes, theta in the cells (th[n] unused) */
+  double *uf1, *us1, *th1;          /* the step's iterate */
   double *uf_old, *us_old, dt_last; /* the state before the last accepted step, and that step */
   double *K, *dK, *slip, *muc, *muk, *kapc, *thc, *gam, *dgam, *work; /* work arrays */
   double *gdc, *rhoc, *mumc; /* cells: solids shear rate, mixture density, mixture viscosity */
-  double *blk;                     /* per node: lower, diagonal, upper 2x2 blocks and the rhs (STRIDE) */
-  double *qv[TF_Q_N];                 /* per-point values of constant quantities */
+  double *blk;               /* per node: lower, diagonal, upper 2x2 blocks and the rhs (STRIDE) */
+  double *qv[TF_Q_N];        /* per-point values of constant quantities */
   sl_closure *drag_c, *gran_c, *wall_c, *visc_c;
   sl_point_closure drag, gran, wall, visc;
   sh_wall wall_at[2];
@@ -121,8 +119,7 @@ static int eval_solids_viscosity(sh_layer *L, sl_diag *d) {
     v[TF_Q_SHEAR_RATE] = L->gdc, v[TF_Q_DENSITY] = L->rhoc;
     sl_point_request rq = {"viscosity", L->mumc, NULL, NULL};
     if ((rc = sl_point_eval(&L->visc, L->n, v, &rq, 1, d))) return rc;
-    for (int i = 0; i < L->n; ++i)
-      L->muc[i] += fmax(L->mumc[i] - (1.0 - L->phi[i]) * L->mu_f, 0.0);
+    for (int i = 0; i < L->n; ++i) L->muc[i] += fmax(L->mumc[i] - (1.0 - L->phi[i]) * L->mu_f, 0.0);
   }
   if (!L->granular) return 0;
   for (int i = 0; i < L->n; ++i) L->thc[i] = fmax(L->th1[i], SL_THETA_FLOOR);
@@ -146,7 +143,8 @@ static int eval_wall(sh_layer *L, sh_wall *w, double *tau, double *dtau, double 
   double one[TF_Q_N];
   const double *v[TF_Q_N];
   for (int k = 0; k < TF_Q_N; ++k) one[k] = L->qv[k][0], v[k] = &one[k];
-  one[TF_Q_PHI] = phi, one[TF_Q_THETA] = th, one[TF_Q_SLIP_WALL] = sl, one[TF_Q_WALL_DISTANCE] = dist, one[TF_Q_SLIP] = sl;
+  one[TF_Q_PHI] = phi, one[TF_Q_THETA] = th, one[TF_Q_SLIP_WALL] = sl, one[TF_Q_WALL_DISTANCE] = dist,
+  one[TF_Q_SLIP] = sl;
   /* one closure call: tau_w with its slip derivative, and the optional outputs the closure gives */
   sl_point_request rq[3] = {{"tau_w", tau, dtau, "slip_wall"}};
   int n_rq = 1;
@@ -230,9 +228,7 @@ static int block_thomas(sh_layer *L) {
 }
 
 /* The block holding the coupling of node k's rows to node j's unknowns. */
-static double *block_of(sh_layer *L, int k, int j) {
-  return j == k ? DIAG(L, k) : j > k ? UPPER(L, k) : LOWER(L, k);
-}
+static double *block_of(sh_layer *L, int k, int j) { return j == k ? DIAG(L, k) : j > k ? UPPER(L, k) : LOWER(L, k); }
 
 /* The cell stress flux G_i = c_i (a_i+1 u_i+1 - a_i u_i): the shear stress
  * times r^2 (annular) of cell i, c_i = mu_i gm_i. */
@@ -366,14 +362,21 @@ static int theta_transport(sh_layer *L, double dt, double *dmax, sl_diag *d) {
   const double *v[TF_Q_N];
   point_values(L, v, L->phi, NULL, L->thit);
   v[TF_Q_SHEAR_RATE] = L->gdc, v[TF_Q_DENSITY] = L->rhoc;
-  sl_point_request rq[3] = {{"mu_s", L->muk, NULL, NULL}, {"kappa", L->kapc, NULL, NULL},
-                            {"gamma", L->gam, L->dgam, "theta"}};
+  sl_point_request rq[3] = {
+      {"mu_s", L->muk, NULL, NULL}, {"kappa", L->kapc, NULL, NULL}, {"gamma", L->gam, L->dgam, "theta"}};
   if ((rc = sl_point_eval(&L->gran, n, v, rq, 3, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
   sl_theta_terms(n, L->rho_s, L->phi, L->muk, L->gdc, L->gam, L->dgam, L->thsink, L->thit, L->thcap, L->thsrc,
                  L->thsink);
-  sl_cell_scalar_terms t = {.dt = dt, .cap = L->thcap, .s_old = L->th, .k = L->kapc, .source = L->thsrc,
-                            .sink = L->thsink, .boundary = L->wall_c ? wall_energy : NULL, .boundary_user = L};
-  if ((rc = sl_cell_scalar_solve(&L->cs, &t, L->thx, d))) return sl_diag_prefix(d, rc, "the granular temperature's solve");
+  sl_cell_scalar_terms t = {.dt = dt,
+                            .cap = L->thcap,
+                            .s_old = L->th,
+                            .k = L->kapc,
+                            .source = L->thsrc,
+                            .sink = L->thsink,
+                            .boundary = L->wall_c ? wall_energy : NULL,
+                            .boundary_user = L};
+  if ((rc = sl_cell_scalar_solve(&L->cs, &t, L->thx, d)))
+    return sl_diag_prefix(d, rc, "the granular temperature's solve");
   double m = 0.0;
   for (int i = 0; i < n; ++i) {
     if (!isfinite(L->thx[i]))
@@ -483,12 +486,11 @@ static int geometry(sh_layer *L, sl_diag *d) {
   int rc = sl_scene_line_chain(m, L->vertex, L->cell_of, d);
   if (rc) return sl_diag_prefix(d, rc, "two_fluid (motion = shear)");
   size_t N = (size_t)n + 1;
-  double **nodes[] = {&L->uf_old, &L->us_old, &L->x,    &L->V,  &L->a,   &L->s,    &L->phin,
-                      &L->uf,     &L->us,     &L->th,   &L->uf1, &L->us1, &L->th1,  &L->K,
+  double **nodes[] = {&L->uf_old, &L->us_old, &L->x,   &L->V,    &L->a,    &L->s,       &L->phin,
+                      &L->uf,     &L->us,     &L->th,  &L->uf1,  &L->us1,  &L->th1,     &L->K,
                       &L->dK,     &L->slip,   &L->gam, &L->dgam, &L->work, &L->node_out};
-  double **cells[] = {&L->h,    &L->W,   &L->gm,  &L->phi, &L->muc,  &L->muk,
-                      &L->kapc, &L->thc, &L->cell_out, &L->gdc, &L->rhoc, &L->mumc,
-                      &L->thit, &L->thcap, &L->thsrc, &L->thsink, &L->thx};
+  double **cells[] = {&L->h,   &L->W,    &L->gm,   &L->phi,  &L->muc,   &L->muk,   &L->kapc,   &L->thc, &L->cell_out,
+                      &L->gdc, &L->rhoc, &L->mumc, &L->thit, &L->thcap, &L->thsrc, &L->thsink, &L->thx};
   for (size_t k = 0; k < sizeof nodes / sizeof nodes[0]; ++k)
     if (!(*nodes[k] = calloc(N, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "shear layer: out of memory");
   for (size_t k = 0; k < sizeof cells / sizeof cells[0]; ++k)
@@ -557,8 +559,10 @@ static int physics(sh_layer *L, sl_diag *d) {
   L->granular = L->gran_c != NULL;
   const sl_src *gt = sl_scene_src(sc, &cfg->granular_temperature);
   if (!L->granular && gt)
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature: needs [closure.granular] (a "
-                                        "kinetic theory, e.g. model = lun)", gt->file, gt->line);
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s:%d: [two_fluid] granular_temperature: needs [closure.granular] (a "
+                       "kinetic theory, e.g. model = lun)",
+                       gt->file, gt->line);
   if (L->granular) {
     if ((rc = sl_point_bind(&L->gran, L->gran_c, tf_quantity_names, TF_Q_N, "closure.granular", model, d))) return rc;
     if ((rc = sl_granular_require(&L->gran, 1, "the shear layer", d))) return rc;
@@ -569,10 +573,12 @@ static int physics(sh_layer *L, sl_diag *d) {
       return sl_diag_set(d, SL_EBADINPUT, "[closure.viscosity]: the closure gives no viscosity");
   }
   if ((L->wall_c = sl_scene_closure(sc, "wall_stress"))) {
-    if ((rc = sl_point_bind(&L->wall, L->wall_c, tf_quantity_names, TF_Q_N, "closure.wall_stress", model, d))) return rc;
+    if ((rc = sl_point_bind(&L->wall, L->wall_c, tf_quantity_names, TF_Q_N, "closure.wall_stress", model, d)))
+      return rc;
     if (sl_point_has_input(&L->wall, "shear_rate"))
-      return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: the shear layer gives a wall closure no shear_rate "
-                                          "(its slip_wall and wall_distance give the wall's shear rate)");
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "[closure.wall_stress]: the shear layer gives a wall closure no shear_rate "
+                         "(its slip_wall and wall_distance give the wall's shear rate)");
   }
   for (int k = 0; k <= L->n; ++k) {
     L->qv[TF_Q_RHO_F][k] = L->rho_f, L->qv[TF_Q_MU_F][k] = L->mu_f, L->qv[TF_Q_RHO_S][k] = L->rho_s;
@@ -605,8 +611,10 @@ static int walls(sh_layer *L, sl_diag *d) {
       any_stress = 1;
       if (!L->wall_c) {
         char at[400];
-        return sl_diag_set(d, SL_EBADINPUT, "%s = wall_stress needs [closure.wall_stress] (e.g. model = bagnold or "
-                                            "johnson_jackson)", sl_scene_where(L->sc, &b->solids, at, sizeof at));
+        return sl_diag_set(d, SL_EBADINPUT,
+                           "%s = wall_stress needs [closure.wall_stress] (e.g. model = bagnold or "
+                           "johnson_jackson)",
+                           sl_scene_where(L->sc, &b->solids, at, sizeof at));
       }
       w->wall_function = sl_point_has_input(&L->wall, "wall_distance");
       if (w->wall_function && L->n < 2)
@@ -614,8 +622,9 @@ static int walls(sh_layer *L, sl_diag *d) {
     }
   }
   if (L->wall_c && !any_stress)
-    return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: no wall uses it (set solids = wall_stress in a "
-                                        "[boundary.NAME])");
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "[closure.wall_stress]: no wall uses it (set solids = wall_stress in a "
+                       "[boundary.NAME])");
   if (L->wall_c && L->wall_at[0].wall_function && L->n < 3)
     return sl_diag_set(d, SL_EBADINPUT, "two_fluid shear layer: wall functions at both walls need at least 3 cells");
   return 0;
@@ -775,7 +784,8 @@ static int layer_restore(void *self, const sl_checkpoint *ck, sl_diag *d) {
     const sl_checkpoint_array *a = sl_checkpoint_find(ck, names[k]);
     int n = k == 2 ? L->n : L->n + 1;
     if (!a || a->n != n)
-      return sl_diag_set(d, SL_EBADINPUT, "restart: the checkpoint holds no shear-layer '%s' of %d values", names[k], n);
+      return sl_diag_set(d, SL_EBADINPUT, "restart: the checkpoint holds no shear-layer '%s' of %d values", names[k],
+                         n);
     memcpy(dst[k], a->data, (size_t)a->n * sizeof(double));
   }
   return 0;
@@ -831,11 +841,11 @@ static int layer_write(void *self, sl_output *out, double t, const double *u, sl
 }
 
 static void release(sh_layer *L) {
-  double *all[] = {L->uf_old, L->us_old, L->x,    L->h,    L->W,    L->gm,   L->V,     L->a,
-                   L->s,      L->phi,    L->phin, L->uf,   L->us,   L->th,   L->uf1,  L->us1,   L->th1,
-                   L->K,      L->dK,     L->slip, L->muc,  L->muk,  L->kapc, L->thc,   L->gdc,
-                   L->rhoc,   L->mumc,   L->gam,  L->dgam, L->work, L->blk,  L->node_out, L->cell_out,
-                   L->psc,    L->thit,   L->thcap, L->thsrc, L->thsink, L->thx};
+  double *all[] = {L->uf_old,   L->us_old, L->x,    L->h,     L->W,     L->gm,     L->V,    L->a,
+                   L->s,        L->phi,    L->phin, L->uf,    L->us,    L->th,     L->uf1,  L->us1,
+                   L->th1,      L->K,      L->dK,   L->slip,  L->muc,   L->muk,    L->kapc, L->thc,
+                   L->gdc,      L->rhoc,   L->mumc, L->gam,   L->dgam,  L->work,   L->blk,  L->node_out,
+                   L->cell_out, L->psc,    L->thit, L->thcap, L->thsrc, L->thsink, L->thx};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   for (int k = 0; k < TF_Q_N; ++k) free(L->qv[k]);
   sl_point_release(&L->drag), sl_point_release(&L->gran), sl_point_release(&L->wall), sl_point_release(&L->visc);
@@ -851,8 +861,10 @@ static int layer_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   int rc = 0;
   if (sc->geometry != 0) {
     char at[400];
-    rc = sl_diag_set(d, SL_EBADINPUT, "%s: the shear layer (motion = shear) is 1-D (geometry = line; cross_section = "
-                                      "annular for coaxial cylinders)", sl_scene_where(sc, &sc->geometry, at, sizeof at));
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s: the shear layer (motion = shear) is 1-D (geometry = line; cross_section = "
+                     "annular for coaxial cylinders)",
+                     sl_scene_where(sc, &sc->geometry, at, sizeof at));
   }
   if (!rc) rc = geometry(L, d);
   if (!rc) rc = physics(L, d);
@@ -866,8 +878,8 @@ static int layer_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *
   unsigned mask = 0;
   int has_ps = L->granular && sl_point_has_output(&L->gran, "p_s");
   if (!rc)
-    rc = sl_scene_output_fields(sc, F_PHI | F_UF | F_US | (L->granular ? F_THETA : 0u) | (has_ps ? F_PS : 0u), &mask,
-                                d);
+    rc =
+        sl_scene_output_fields(sc, F_PHI | F_UF | F_US | (L->granular ? F_THETA : 0u) | (has_ps ? F_PS : 0u), &mask, d);
   if (!rc && (mask & F_THETA) && !L->granular) {
     char at[400];
     rc = sl_diag_set(d, SL_EBADINPUT, "%s: theta needs [closure.granular]",

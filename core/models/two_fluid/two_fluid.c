@@ -9,9 +9,9 @@
 #include <string.h>
 #include <time.h>
 
+#include "core/models/two_fluid/liquefaction.h"
 #include "core/models/two_fluid/two_fluid_impl.h"
 #include "core/models/two_fluid/two_fluid_plane_impl.h"
-#include "core/models/two_fluid/liquefaction.h"
 #include "core/plugin/kinds.h"
 #include "core/scene/mesh.h"
 
@@ -31,12 +31,12 @@ typedef struct tf_run {
   double steady_tol;
   long substeps, iterations, advances;
   char steady_text[96];
-  tf_state ck; /* the checkpoint's view of the state */
-  char inlet_where[400]; /* file:line: [section] key of the inlet's value */
+  tf_state ck;                 /* the checkpoint's view of the state */
+  char inlet_where[400];       /* file:line: [section] key of the inlet's value */
   double level[TF_MAX_LEVELS]; /* [output] interface */
   int n_levels;
   tf_liquefaction *lq; /* the shaken deposit (liquefaction.h), or NULL */
-  long settle_steps;    /* [deposit] settle: its steps and time */
+  long settle_steps;   /* [deposit] settle: its steps and time */
   double settle_time, dt_min;
   char lq_summary[256]; /* the add-on's failure after an accepted step, stopping the next */
   int lq_failed;
@@ -48,8 +48,9 @@ static int column_from_mesh(tf_run *r, sl_diag *d) {
   const sl_mesh *m = r->mesh;
   tf_column *c = &r->c;
   if (m->dim != 1)
-    return sl_diag_set(d, SL_EBADINPUT, "[scene] model = two_fluid, geometry = line: the mesh must be 1-D (a 2-D "
-                                        "mesh takes geometry = planar or axisymmetric)");
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "[scene] model = two_fluid, geometry = line: the mesh must be 1-D (a 2-D "
+                       "mesh takes geometry = planar or axisymmetric)");
   int n = m->n_cells;
   c->n = n;
   r->cell_of = malloc((size_t)n * sizeof *r->cell_of);
@@ -88,17 +89,20 @@ static int boundaries(tf_run *r, sl_diag *d) {
       if (c->inlet_side >= 0)
         return sl_diag_set(d, SL_EBADINPUT, "[%s]: a second inlet (1-D: one inlet and one outlet at most)", sec);
       if (!ve == !ne)
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s]: an inlet takes either velocity (the superficial fluid "
-                                            "velocity entering, m/s) or porosity (that of the homogeneous bed the "
-                                            "inflow holds at rest), an expression of t and case%s",
+        return sl_diag_set(d, SL_EBADINPUT,
+                           "%s:%d: [%s]: an inlet takes either velocity (the superficial fluid "
+                           "velocity entering, m/s) or porosity (that of the homogeneous bed the "
+                           "inflow holds at rest), an expression of t and case%s",
                            where ? where->file : "(scene)", where ? where->line : 0, sec, ve ? "; not both" : "");
       if (ne && side != (c->below ? 0 : 1))
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] porosity: a bed is held by an inflow from below; this "
-                                            "inlet is at the top (give its velocity instead)", ne->file, ne->line,
-                           sec);
+        return sl_diag_set(d, SL_EBADINPUT,
+                           "%s:%d: [%s] porosity: a bed is held by an inflow from below; this "
+                           "inlet is at the top (give its velocity instead)",
+                           ne->file, ne->line, sec);
       if (ne && c->rho_s <= c->rho_f)
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] porosity: particles no denser than the fluid (%g <= %g "
-                                            "kg/m3) are not held by an upward flow (give the velocity instead)",
+        return sl_diag_set(d, SL_EBADINPUT,
+                           "%s:%d: [%s] porosity: particles no denser than the fluid (%g <= %g "
+                           "kg/m3) are not held by an upward flow (give the velocity instead)",
                            ne->file, ne->line, sec, c->rho_s, c->rho_f);
       const sl_src *e = ve ? ve : ne;
       if (ve) c->inlet = b->velocity.e;
@@ -112,11 +116,15 @@ static int boundaries(tf_run *r, sl_diag *d) {
     }
   }
   if (n_out == 2)
-    return sl_diag_set(d, SL_EBADINPUT, "[boundary.%s], [boundary.%s]: two outlets leave the 1-D mixture flux "
-                                        "undetermined; make one an inlet or a wall", names[0], names[1]);
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "[boundary.%s], [boundary.%s]: two outlets leave the 1-D mixture flux "
+                       "undetermined; make one an inlet or a wall",
+                       names[0], names[1]);
   if (c->inlet_side >= 0 && n_out == 0)
-    return sl_diag_set(d, SL_EBADINPUT, "[boundary.%s]: an inlet needs an outlet at the other end (in 1-D the "
-                                        "mixture flux is the same everywhere)", names[c->inlet_side]);
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "[boundary.%s]: an inlet needs an outlet at the other end (in 1-D the "
+                       "mixture flux is the same everywhere)",
+                       names[c->inlet_side]);
   return 0;
 }
 
@@ -127,13 +135,15 @@ static int initial_from_file(tf_run *r, const sl_src *fe, sl_diag *d) {
   int rc = sl_output_read_field(r->cfg->from, "phi", INFINITY, &f, d);
   if (rc) return sl_diag_prefix(d, SL_EBADINPUT, "%s:%d: [initial] from = %s", fe->file, fe->line, r->cfg->from);
   if (f.n != c->n || f.components != 1 || f.centring != SL_CENTRE_CELL)
-    rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] from = %s: its phi has %d values, the mesh %d cells (the "
-                                      "same mesh is needed)", fe->file, fe->line, r->cfg->from, (int)f.n, c->n);
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s:%d: [initial] from = %s: its phi has %d values, the mesh %d cells (the "
+                     "same mesh is needed)",
+                     fe->file, fe->line, r->cfg->from, (int)f.n, c->n);
   for (int i = 0; i < c->n && !rc; ++i) {
     double phi = f.values[r->cell_of[i]];
     if (!(phi >= 0.0 && phi <= c->phi_max))
-      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] from = %s: phi = %g in cell %d, above phi_max = %g",
-                       fe->file, fe->line, r->cfg->from, phi, i, c->phi_max);
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] from = %s: phi = %g in cell %d, above phi_max = %g", fe->file,
+                       fe->line, r->cfg->from, phi, i, c->phi_max);
     c->phi[i] = phi;
   }
   sl_output_field_free(&f);
@@ -151,8 +161,9 @@ static int initial_state(tf_run *r, sl_diag *d) {
   if (e && en)
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] porosity and phi both given: set one", en->file, en->line);
   if (!e && !en)
-    return sl_diag_set(d, SL_EBADINPUT, "[initial] phi (or porosity): the two_fluid model needs the initial solids "
-                                        "fraction");
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "[initial] phi (or porosity): the two_fluid model needs the initial solids "
+                       "fraction");
   const sl_src *use = e ? e : en;
   const sl_expr *ex = e ? r->cfg->phi.e : r->cfg->porosity.e;
   int rc = 0;
@@ -171,12 +182,13 @@ static int initial_state(tf_run *r, sl_diag *d) {
      step looks steady at once (issue 25: 2649 Pa for Ergun's 1091 Pa at 0.45 U_mf). Refused. */
   for (int i = 0; i < c->n; ++i)
     if (c->phi[i] >= c->phi_max * (1.0 - 1e-9))
-      return sl_diag_set(d, SL_EBADINPUT,
-                         "%s:%d: [initial] %s = %g at x = %g is a packed bed (phi = phi_max = %g), and the scene has no "
-                         "[closure.solids_pressure]: nothing would carry the bed's contact stress, so below minimum "
-                         "fluidisation its pressure drop and solids velocity would be wrong; add a solids-pressure "
-                         "closure (e.g. model = pringle_exponential, Pringle 2001) or start below phi_max",
-                         use->file, use->line, use->key, e ? c->phi[i] : 1.0 - c->phi[i], c->xc[i], c->phi_max);
+      return sl_diag_set(
+          d, SL_EBADINPUT,
+          "%s:%d: [initial] %s = %g at x = %g is a packed bed (phi = phi_max = %g), and the scene has no "
+          "[closure.solids_pressure]: nothing would carry the bed's contact stress, so below minimum "
+          "fluidisation its pressure drop and solids velocity would be wrong; add a solids-pressure "
+          "closure (e.g. model = pringle_exponential, Pringle 2001) or start below phi_max",
+          use->file, use->line, use->key, e ? c->phi[i] : 1.0 - c->phi[i], c->xc[i], c->phi_max);
   return 0;
 }
 
@@ -193,8 +205,8 @@ static int allocate(tf_column *c, sl_diag *d) {
 
 static void release(tf_run *r) {
   tf_column *c = &r->c;
-  double *all[] = {c->h,     c->xc,    c->xf,    c->dual, c->phi, c->p,     c->phi_new,
-                   c->p_new, c->alpha, c->u,     c->uf,   c->u_new, c->uf_new, r->node};
+  double *all[] = {c->h,     c->xc,    c->xf, c->dual, c->phi,   c->p,      c->phi_new,
+                   c->p_new, c->alpha, c->u,  c->uf,   c->u_new, c->uf_new, r->node};
   for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i) free(all[i]);
   tf_plane_free(c);
   sl_point_release(&c->drag.pc), sl_point_release(&c->ps.pc);
@@ -219,12 +231,16 @@ static int interface_levels(tf_run *r, sl_diag *d) {
   for (int k = 0; k < r->n_levels; ++k) {
     r->level[k] = r->sc->output.interface.v[k];
     if (!(r->level[k] > 0.0 && r->level[k] <= r->c.phi_max))
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] interface = %g: a level of phi, allowed 0 < level <= "
-                                          "phi_max = %g", le->file, le->line, r->level[k], r->c.phi_max);
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "%s:%d: [output] interface = %g: a level of phi, allowed 0 < level <= "
+                         "phi_max = %g",
+                         le->file, le->line, r->level[k], r->c.phi_max);
   }
   if (r->n_levels > 0 && r->c.g == 0.0)
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [output] interface: heights are measured against gravity, and the "
-                                        "scene has none", le->file, le->line);
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s:%d: [output] interface: heights are measured against gravity, and the "
+                       "scene has none",
+                       le->file, le->line);
   return 0;
 }
 
@@ -297,8 +313,14 @@ static int column_write(void *self, sl_output *out, double t, const double *u, s
 
 static int column_checkpoint(void *self, sl_checkpoint_array *a, int max) {
   tf_run *r = self;
-  r->ck = (tf_state){.phi = r->c.phi, .us = r->c.u, .uf = r->c.uf, .p = r->c.p, .n_cells = r->c.n,
-                     .n_faces = r->c.n + 1, .inventory0 = r->inventory0, .outflow = r->outflow};
+  r->ck = (tf_state){.phi = r->c.phi,
+                     .us = r->c.u,
+                     .uf = r->c.uf,
+                     .p = r->c.p,
+                     .n_cells = r->c.n,
+                     .n_faces = r->c.n + 1,
+                     .inventory0 = r->inventory0,
+                     .outflow = r->outflow};
   return tf_checkpoint_arrays(&r->ck, a, max);
 }
 
@@ -390,9 +412,11 @@ static int column_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag 
   if (!rc) rc = tf_scene_physics(sc, r->cfg, 1, &r->c, NULL, &r->steady_tol, d);
   int shaken = !rc && tfl_wanted(sc, &r->c);
   if (!rc)
-    rc = sl_scene_output_fields(sc, F_PHI | F_US | F_UF | F_P | (shaken ? TFL_F_NBAR | TFL_F_RATIO | TFL_F_EXCESS |
-                                                                             TFL_F_RU | TFL_F_STRAIN | TFL_F_PS : 0),
-                                &mask, d);
+    rc = sl_scene_output_fields(
+        sc,
+        F_PHI | F_US | F_UF | F_P |
+            (shaken ? TFL_F_NBAR | TFL_F_RATIO | TFL_F_EXCESS | TFL_F_RU | TFL_F_STRAIN | TFL_F_PS : 0),
+        &mask, d);
   r->fields = (int)mask;
   if (!rc) rc = boundaries(r, d);
   if (!rc) rc = allocate(&r->c, d);
@@ -444,8 +468,10 @@ static void column_stats(void *self, const sl_run_result *res, sl_model_stats *s
     char line[256];
     tfl_summary(r->lq, line, sizeof line);
     size_t at = strlen(st->coupling_summary);
-    snprintf(st->coupling_summary + at, sizeof st->coupling_summary - at, "; settled %.4g s in %ld steps before t = 0; "
-             "smallest dt %.3g s; %s", r->settle_time, r->settle_steps, r->dt_min, line);
+    snprintf(st->coupling_summary + at, sizeof st->coupling_summary - at,
+             "; settled %.4g s in %ld steps before t = 0; "
+             "smallest dt %.3g s; %s",
+             r->settle_time, r->settle_steps, r->dt_min, line);
   }
   const tfp_model *m = r->c.plane;
   if (m && m->ls) {

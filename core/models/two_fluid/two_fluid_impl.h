@@ -40,7 +40,7 @@ typedef struct tf_config {
   sl_scene_expr turb_k, turb_eps;
   double dispersion_schmidt;
   int dispersion;
-  int swirl; /* [two_fluid] swirl: the 2-D axisymmetric model's azimuthal velocities (two_fluid_plane_swirl.c) */
+  int swirl;       /* [two_fluid] swirl: the 2-D axisymmetric model's azimuthal velocities (two_fluid_plane_swirl.c) */
   int centrifugal; /* [two_fluid] centrifugal: the swirl's rho alpha u_theta^2 / r back on the radial momentum */
   /* [body] (two_fluid_plane_body.c): a solid body of blocked cells, the box x0, x1, y0, y1 it fills, its rotation */
   sl_reals body_box;
@@ -49,9 +49,9 @@ typedef struct tf_config {
 
 /* A boundary of the 1-D column. */
 typedef struct tfc_boundary {
-  int type;                        /* TF_WALL | TF_INLET | TF_OUTLET */
+  int type;                         /* TF_WALL | TF_INLET | TF_OUTLET */
   sl_scene_expr velocity, porosity; /* inlet: of (t, case) */
-  double pressure;                 /* outlet */
+  double pressure;                  /* outlet */
 } tfc_boundary;
 
 enum { TF_MAX_IN = 32 };
@@ -74,14 +74,14 @@ typedef struct tf_column {
   int below;                  /* 1: the gravity side of face k is cell k-1 (g <= 0); 0: cell k */
   /* physics */
   double rho_f, mu_f, rho_s, d_p, sphericity, g, phi_max;
-  double v_ref; /* velocity scale: |j| or the Stokes velocity */
+  double v_ref;        /* velocity scale: |j| or the Stokes velocity */
   tf_closure drag, ps; /* the scene's closures (not owned); ps.c NULL: no solids pressure */
   /* boundaries: [0] at x0, [1] at x1 */
   int bc[2];
   const sl_expr *inlet;          /* superficial fluid velocity entering, of (t, case) (the scene's) */
   const sl_expr *inlet_porosity; /* or the porosity of a bed the inflow holds in equilibrium, of (t, case) */
   int inlet_side;
-  double case_index;       /* [two_fluid] case, a variable of the scene's expressions */
+  double case_index;                     /* [two_fluid] case, a variable of the scene's expressions */
   double eq_porosity[2], eq_velocity[2]; /* the last two equilibria found (a step alternates between two) */
   int eq_next;
   double p_out;
@@ -98,10 +98,10 @@ typedef struct tf_column {
   double *alpha;
   struct tfp_model *plane; /* the n x 1 grid of the 2-D model the step runs on (two_fluid_step.c) */
   const char *linear;      /* its sparse solver's name */
-  double outflow_trial; /* solids volume per unit area that left during the trial */
-  int fatal;            /* the trial failed for a reason a smaller step cannot cure (the inlet's value) */
+  double outflow_trial;    /* solids volume per unit area that left during the trial */
+  int fatal;               /* the trial failed for a reason a smaller step cannot cure (the inlet's value) */
   long substeps_trial;
-  double transport_cpu; /* CPU seconds in the solids transport over the run (profile) */
+  double transport_cpu;   /* CPU seconds in the solids transport over the run (profile) */
   long last_substeps;     /* of the last transport call */
   long accepted_substeps; /* of the last accepted step's transport (0: none yet) */
   int iterations_trial;

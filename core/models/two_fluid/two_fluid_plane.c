@@ -58,7 +58,7 @@ typedef struct tfp_run {
   const tf_config *cfg;
   const sl_mesh *mesh;
   tfp_model m;
-  tfp_boundary *b; /* [n_boundaries]: the scene's */
+  tfp_boundary *b;    /* [n_boundaries]: the scene's */
   tfp_boundary *ball; /* with a [body]: the scene's and the body's wall (m.b) */
   int has_inlet, has_outlet;
   double steady_tol, inventory0, outflow;
@@ -83,8 +83,10 @@ static int boundaries(tfp_run *r, sl_diag *d) {
       return sl_diag_set(d, SL_EBADINPUT, "[%s] type = axis: only an axisymmetric scene has an axis", sec);
     if (b->type == TFP_INLET) {
       if (!b->velocity.e)
-        return sl_diag_set(d, SL_EBADINPUT, "[%s] velocity: an inlet needs the superficial fluid velocity entering "
-                                            "(m/s), an expression of x, y, t and case", sec);
+        return sl_diag_set(d, SL_EBADINPUT,
+                           "[%s] velocity: an inlet needs the superficial fluid velocity entering "
+                           "(m/s), an expression of x, y, t and case",
+                           sec);
       r->has_inlet = 1;
       /* the solids entering: finite and not negative at the inlet's face centres at t = 0 (later times: the step
          checks) */
@@ -97,9 +99,10 @@ static int boundaries(tfp_run *r, sl_diag *d) {
           double v[4] = {x, y, 0.0, r->m.c.case_index}, J = sl_expr_eval(b->solids_flux.e, v);
           if (isfinite(J) && J >= 0.0) continue;
           const sl_src *src = sl_scene_src(r->sc, &b->solids_flux);
-          return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] solids_flux = %g at (%g, %g), t = 0: it must be finite "
-                                              "and not negative (m/s)", src ? src->file : "?", src ? src->line : 0,
-                             sec, J, x, y);
+          return sl_diag_set(d, SL_EBADINPUT,
+                             "%s:%d: [%s] solids_flux = %g at (%g, %g), t = 0: it must be finite "
+                             "and not negative (m/s)",
+                             src ? src->file : "?", src ? src->line : 0, sec, J, x, y);
         }
     }
     if (b->type == TFP_OUTLET) r->has_outlet = 1;
@@ -113,11 +116,14 @@ static int boundaries(tfp_run *r, sl_diag *d) {
     if (count[0] == 0 && count[1] == 0) continue;
     static const char *const pair[2] = {"left and right", "bottom and top"};
     if (count[0] != n || count[1] != n)
-      return sl_diag_set(d, SL_EBADINPUT, "type = periodic: the %s sides must both be periodic, wholly (%d of %d and "
-                                          "%d of %d faces are)", pair[dir], count[0], n, count[1], n);
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "type = periodic: the %s sides must both be periodic, wholly (%d of %d and "
+                         "%d of %d faces are)",
+                         pair[dir], count[0], n, count[1], n);
     if (dir == 0 && r->m.axi)
-      return sl_diag_set(d, SL_EBADINPUT, "type = periodic: an axisymmetric scene is periodic along its axis only "
-                                          "(bottom and top)");
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "type = periodic: an axisymmetric scene is periodic along its axis only "
+                         "(bottom and top)");
     if ((dir == 0 ? gp->nx : gp->ny) < 2)
       return sl_diag_set(d, SL_EBADINPUT, "type = periodic: the %s sides need at least 2 cells between them",
                          pair[dir]);
@@ -146,13 +152,15 @@ static int initial_state(tfp_run *r, sl_diag *d) {
   const tf_config *cfg = r->cfg;
   const sl_src *te = sl_scene_src(sc, &cfg->theta);
   if (te && !(r->m.s.granular && !r->m.s.algebraic))
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] theta: only a transported granular temperature takes it "
-                                        "([closure.granular] with [two_fluid] granular_temperature = transport)",
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s:%d: [initial] theta: only a transported granular temperature takes it "
+                       "([closure.granular] with [two_fluid] granular_temperature = transport)",
                        te->file, te->line);
   if (te) { /* theta in the cells, m^2/s^2 (default 1e-6) */
     int trc = 0;
     for (int c = 0; c < r->m.fv.nc && !trc; ++c) {
-      double xy[3] = {r->m.fv.xc[c % r->m.fv.nx], r->m.fv.yc[c / r->m.fv.nx], r->m.c.case_index}, th = sl_expr_eval(cfg->theta.e, xy);
+      double xy[3] = {r->m.fv.xc[c % r->m.fv.nx], r->m.fv.yc[c / r->m.fv.nx], r->m.c.case_index},
+             th = sl_expr_eval(cfg->theta.e, xy);
       if (!(th > 0.0 && th < 1e4))
         trc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] theta = %g at (%g, %g): allowed 0 < theta < 1e4 m^2/s^2",
                           te->file, te->line, th, xy[0], xy[1]);
@@ -166,8 +174,9 @@ static int initial_state(tfp_run *r, sl_diag *d) {
   if (e && en)
     return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] porosity and phi both given: set one", en->file, en->line);
   if (!e && !en)
-    return sl_diag_set(d, SL_EBADINPUT, "[initial] phi (or porosity): the two_fluid model needs the initial solids "
-                                        "fraction, an expression of x, y and case");
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "[initial] phi (or porosity): the two_fluid model needs the initial solids "
+                       "fraction, an expression of x, y and case");
   const sl_src *use = e ? e : en;
   const sl_expr *ex = e ? cfg->phi.e : cfg->porosity.e;
   int rc = 0;
@@ -176,9 +185,9 @@ static int initial_state(tfp_run *r, sl_diag *d) {
     double xy[3] = {m->fv.xc[c % m->fv.nx], m->fv.yc[c / m->fv.nx], m->c.case_index}, v = sl_expr_eval(ex, xy);
     double phi = e ? v : 1.0 - v;
     if (!(phi >= 0.0 && phi <= m->c.phi_max))
-      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s = %g at (%g, %g): allowed %s = %g", use->file,
-                       use->line, use->key, v, xy[0], xy[1],
-                       e ? "0 <= phi <= phi_max" : "1 - phi_max <= porosity <= 1, phi_max", m->c.phi_max);
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s = %g at (%g, %g): allowed %s = %g", use->file, use->line,
+                       use->key, v, xy[0], xy[1], e ? "0 <= phi <= phi_max" : "1 - phi_max <= porosity <= 1, phi_max",
+                       m->c.phi_max);
     m->phi[c] = tfp_blocked(m, c) ? 0.0 : phi; /* a body's cell holds nothing */
   }
   if (rc) return rc;
@@ -188,8 +197,10 @@ static int initial_state(tfp_run *r, sl_diag *d) {
     const sl_src *ve = sl_scene_src(sc, vel[phase]);
     if (!ve) continue;
     if (vel[phase]->n != 2)
-      return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s: two components (along x, along y), expressions of "
-                                          "x, y and case; %d given", ve->file, ve->line, ve->key, vel[phase]->n);
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "%s:%d: [initial] %s: two components (along x, along y), expressions of "
+                         "x, y and case; %d given",
+                         ve->file, ve->line, ve->key, vel[phase]->n);
     sl_expr *const *comp = vel[phase]->e;
     double *u = phase ? m->us : m->uf;
     for (int f = 0; f < m->fv.nf; ++f) {
@@ -197,8 +208,9 @@ static int initial_state(tfp_run *r, sl_diag *d) {
       int j = dir ? (f - m->fv.nfx) / m->fv.nx : f / (m->fv.nx + 1);
       double xy[3] = {dir ? m->fv.xc[i] : m->grid.xf[i], dir ? m->grid.yf[j] : m->fv.yc[j], m->c.case_index};
       u[f] = sl_expr_eval(comp[dir], xy);
-      if (!isfinite(u[f])) rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s is not finite at (%g, %g)",
-                                            ve->file, ve->line, ve->key, xy[0], xy[1]);
+      if (!isfinite(u[f]))
+        rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [initial] %s is not finite at (%g, %g)", ve->file, ve->line, ve->key,
+                         xy[0], xy[1]);
     }
     if (rc) return rc;
   }
@@ -234,8 +246,7 @@ static int plane_write(void *self, sl_output *out, double t, const double *u_sta
   tfp_run *r = self;
   tfp_model *m = &r->m;
   int rc = 0;
-  if (r->fields & F_PHI)
-    rc = sl_output_write_field(out, "phi", SL_CENTRE_CELL, 1, to_mesh_order(r, m->phi, NULL), d);
+  if (r->fields & F_PHI) rc = sl_output_write_field(out, "phi", SL_CENTRE_CELL, 1, to_mesh_order(r, m->phi, NULL), d);
   /* velocities at the cell centres: the mean of the two faces of each family */
   double *vx = m->x, *vy = m->x + m->fv.nc; /* scratch between steps */
   for (int phase = 0; phase < 2 && !rc; ++phase) {
@@ -296,9 +307,15 @@ static int plane_write(void *self, sl_output *out, double t, const double *u_sta
 
 static tf_state plane_state(tfp_run *r) {
   tfp_model *m = &r->m;
-  return (tf_state){.phi = m->phi, .us = m->us, .uf = m->uf, .p = m->p, .n_cells = m->fv.nc, .n_faces = m->fv.nf,
+  return (tf_state){.phi = m->phi,
+                    .us = m->us,
+                    .uf = m->uf,
+                    .p = m->p,
+                    .n_cells = m->fv.nc,
+                    .n_faces = m->fv.nf,
                     .theta = m->s.granular && !m->s.algebraic ? m->s.theta : NULL,
-                    .inventory0 = r->inventory0, .outflow = r->outflow};
+                    .inventory0 = r->inventory0,
+                    .outflow = r->outflow};
 }
 
 static int plane_checkpoint(void *self, sl_checkpoint_array *a, int max) {
@@ -311,8 +328,9 @@ static int plane_restore(void *self, const sl_checkpoint *ck, sl_diag *d) {
   tfp_run *r = self;
   tf_state st = plane_state(r);
   if (r->m.sw.on)
-    return sl_diag_set(d, SL_EBADINPUT, "[two_fluid] swirl: a checkpoint does not hold the swirl; run the scene "
-                                        "from its start");
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "[two_fluid] swirl: a checkpoint does not hold the swirl; run the scene "
+                       "from its start");
   int rc = tf_checkpoint_restore(ck, "2-D two_fluid (the same grid)", &st, d);
   if (!rc && st.theta) memcpy(r->m.s.theta_new, r->m.s.theta, (size_t)r->m.fv.nc * sizeof *r->m.s.theta);
   if (!rc) r->inventory0 = st.inventory0, r->outflow = st.outflow;
@@ -359,8 +377,9 @@ static int swirl_setup(tfp_run *r, sl_diag *d) {
       return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [boundary.%s] angular_velocity: only with [two_fluid] swirl = true",
                          src->file, src->line, r->mesh->boundary_names[k]);
     if (r->cfg->swirl && r->b[k].type == TFP_WALL && r->b[k].solids == TFP_SOLIDS_WALL_STRESS)
-      return sl_diag_set(d, SL_EBADINPUT, "[boundary.%s] solids = wall_stress: [two_fluid] swirl takes walls that "
-                                          "hold the solids or let them slip (no_slip, free_slip)",
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "[boundary.%s] solids = wall_stress: [two_fluid] swirl takes walls that "
+                         "hold the solids or let them slip (no_slip, free_slip)",
                          r->mesh->boundary_names[k]);
   }
   if (r->cfg->centrifugal && !r->cfg->swirl)
@@ -381,8 +400,10 @@ static int swirl_setup(tfp_run *r, sl_diag *d) {
       r->m.c.v_ref = fmax(r->m.c.v_ref, fabs(r->m.b[r->m.n_b - r->m.n_bodies + k].angular_velocity) * r->m.body_r1[k]);
   }
   if (!r->m.axi)
-    return sl_diag_set(d, SL_EBADINPUT, "%s: [two_fluid] swirl: only an axisymmetric scene has a swirl "
-                                        "([scene] geometry = axisymmetric)", sl_scene_where(sc, &r->cfg->swirl, at, sizeof at));
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s: [two_fluid] swirl: only an axisymmetric scene has a swirl "
+                       "([scene] geometry = axisymmetric)",
+                       sl_scene_where(sc, &r->cfg->swirl, at, sizeof at));
   if (r->cfg->column_form)
     return sl_diag_set(d, SL_EBADINPUT, "%s: [two_fluid] swirl: not with column_form",
                        sl_scene_where(sc, &r->cfg->swirl, at, sizeof at));
@@ -475,8 +496,8 @@ static void plane_stats(void *self, const sl_run_result *res, sl_model_stats *st
     snprintf(st->coupling_summary, sizeof st->coupling_summary,
              "two_fluid (2-D staggered, %d x %d): %.1f iterations and %.1f transport sub-steps per step, solids "
              "conservation error %.1e, max phi %.4f (phi_max %.4g)",
-             r->m.fv.nx, r->m.fv.ny, (double)r->iterations / (double)r->advances, (double)r->substeps / (double)r->advances,
-             err, pmax, r->m.c.phi_max);
+             r->m.fv.nx, r->m.fv.ny, (double)r->iterations / (double)r->advances,
+             (double)r->substeps / (double)r->advances, err, pmax, r->m.c.phi_max);
   }
   if (r->m.ls)
     snprintf(st->linear_summary, sizeof st->linear_summary, "%s, %d unknowns", tfp_linear_name(&r->m, r->linear),

@@ -55,8 +55,10 @@ static int body_cells(tfp_model *m, int k, const double *v, int nv, const char *
   static const char *const edge[4] = {"x0", "x1", "y0", "y1"};
   for (int e = 0; e < 4; ++e)
     if (!on_line(v[e], lines[e], nl[e]))
-      return sl_diag_set(d, SL_EBADINPUT, "%s box: %s = %g is not on a grid line of the mesh (the body is made of "
-                                          "whole cells)", where, edge[e], v[e]);
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "%s box: %s = %g is not on a grid line of the mesh (the body is made of "
+                         "whole cells)",
+                         where, edge[e], v[e]);
   const int nc = g->nx * g->ny;
   int n_in = 0;
   for (int c = 0; c < nc; ++c) {
@@ -82,8 +84,10 @@ int tfp_body_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, const 
   *all = NULL;
   const sl_src *box = sl_scene_src(sc, &cfg->body_box), *om = sl_scene_src(sc, &cfg->body_omega);
   if (om && !box)
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [body] angular_velocity: the body needs its box (box = x0, x1, y0, "
-                                        "y1)", om->file, om->line);
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s:%d: [body] angular_velocity: the body needs its box (box = x0, x1, y0, "
+                       "y1)",
+                       om->file, om->line);
   int n = box ? 1 : 0;
   const char *name;
   sl_src sec;
@@ -120,8 +124,10 @@ int tfp_body_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, const 
       snprintf(m->body_where[k], sizeof m->body_where[k], "%s:%d: [%s]", sec.file, sec.line, sec.section);
       for (int q = 0; q < n_mesh_b && !rc; ++q)
         if (strcmp(sc->mesh->boundary_names[q], name) == 0)
-          rc = sl_diag_set(d, SL_EBADINPUT, "%s: the name of a boundary of the mesh (the output's scalars name "
-                                            "both): choose another", m->body_where[k]);
+          rc = sl_diag_set(d, SL_EBADINPUT,
+                           "%s: the name of a boundary of the mesh (the output's scalars name "
+                           "both): choose another",
+                           m->body_where[k]);
       for (int q = box ? 1 : 0; q < k && !rc; ++q)
         if (strcmp(m->body_names[q], name) == 0)
           rc = sl_diag_set(d, SL_EBADINPUT, "%s: a second body named %s", m->body_where[k], name);
@@ -138,13 +144,13 @@ int tfp_body_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, const 
       if (!rc && eo.file) {
         has_omega = 1;
         if (!cfg->swirl)
-          rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] angular_velocity: only with [two_fluid] swirl = true",
-                           eo.file, eo.line, sec.section);
+          rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [%s] angular_velocity: only with [two_fluid] swirl = true", eo.file,
+                           eo.line, sec.section);
       }
     }
     if (!rc && has_omega && !cfg->swirl && k == 0 && box)
-      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [body] angular_velocity: only with [two_fluid] swirl = true",
-                       om->file, om->line);
+      rc = sl_diag_set(d, SL_EBADINPUT, "%s:%d: [body] angular_velocity: only with [two_fluid] swirl = true", om->file,
+                       om->line);
     if (!rc && (m->fv.periodic[0] || m->fv.periodic[1] || cfg->column_form))
       rc = sl_diag_set(d, SL_EBADINPUT, "%s: not with periodic sides or [two_fluid] column_form", m->body_where[k]);
     if (!rc) rc = body_cells(m, k, v, nv, m->body_where[k], what, cells, d);

@@ -65,16 +65,19 @@ int tfp_dispersion_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, 
     for (int k = 0; k < 4; ++k)
       if (sl_scene_given(sc, keys[k])) {
         const sl_src *s = sl_scene_src(sc, keys[k]);
-        return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] %s: the solids' turbulent dispersion needs "
-                                            "[closure.turbulence] (e.g. model = k_epsilon)", s->file, s->line, s->key);
+        return sl_diag_set(d, SL_EBADINPUT,
+                           "%s:%d: [two_fluid] %s: the solids' turbulent dispersion needs "
+                           "[closure.turbulence] (e.g. model = k_epsilon)",
+                           s->file, s->line, s->key);
       }
     return 0;
   }
   char at[400];
   if (!sl_scene_given(sc, &cfg->turb_k) || !sl_scene_given(sc, &cfg->turb_eps))
-    return sl_diag_set(d, SL_EBADINPUT, "%s: [closure.turbulence] disperses the solids with the fluid's turbulence, "
-                                        "which the scene states: [two_fluid] turbulence_k and turbulence_epsilon "
-                                        "(expressions of x, y and case, m^2/s^2 and m^2/s^3)",
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s: [closure.turbulence] disperses the solids with the fluid's turbulence, "
+                       "which the scene states: [two_fluid] turbulence_k and turbulence_epsilon "
+                       "(expressions of x, y and case, m^2/s^2 and m^2/s^3)",
                        sl_scene_closure_where(sc, "turbulence", at, sizeof at));
   const size_t nc = (size_t)m->fv.nc, nf = (size_t)m->fv.nf;
   p->c = c, p->on = 1, p->turbophoretic = cfg->dispersion == 1, p->schmidt = cfg->dispersion_schmidt;
@@ -86,8 +89,7 @@ int tfp_dispersion_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, 
   if (!rc) rc = cell_values(m, sc, &cfg->turb_eps, 1e9, p->eps, d);
   if (!rc) rc = sl_point_bind(&p->pc, c, dq_names, DQ_N, "closure.turbulence", "two_fluid (2-D)", d);
   if (rc) return rc;
-  if (!sl_point_has_output(&p->pc, "mu_t"))
-    return sl_diag_set(d, SL_EBADINPUT, "%s: the closure gives no mu_t", at);
+  if (!sl_point_has_output(&p->pc, "mu_t")) return sl_diag_set(d, SL_EBADINPUT, "%s: the closure gives no mu_t", at);
   sl_point_constant(&p->pc, "rho_f", m->c.rho_f), sl_point_constant(&p->pc, "mu_f", m->c.mu_f);
   return 0;
 }
@@ -112,7 +114,8 @@ int tfp_dispersion_update(tfp_model *m, const double *phi, const double *uf, con
       return sl_diag_prefix(d, rc, "the turbophoretic drift's drag");
     for (int c = 0; c < nc; ++c) {
       p->tau[c] = p->K[c] > 0.0 ? p->phi[c] * m->c.rho_s / p->K[c] : 0.0;
-      if (!isfinite(p->tau[c])) return sl_diag_set(d, SL_EFAILED, "the particle relaxation time in cell %d is not finite", c);
+      if (!isfinite(p->tau[c]))
+        return sl_diag_set(d, SL_EFAILED, "the particle relaxation time in cell %d is not finite", c);
     }
   }
   for (int f = 0; f < nf; ++f) {

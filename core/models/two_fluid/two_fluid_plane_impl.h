@@ -43,14 +43,13 @@ enum { TFP_SOLIDS_NO_SLIP = 0, TFP_SOLIDS_FREE_SLIP, TFP_SOLIDS_WALL_STRESS };
 
 typedef struct tfp_boundary {
   int type;
-  int solids;             /* wall: TFP_SOLIDS_* */
-  sl_scene_expr velocity; /* inlet: superficial fluid velocity entering; wall: its own speed along the side (+x along
+  int solids;                /* wall: TFP_SOLIDS_* */
+  sl_scene_expr velocity;    /* inlet: superficial fluid velocity entering; wall: its own speed along the side (+x along
                              the bottom and top, +y along the left and right); of (x, y, t, case) (e NULL: 0) */
-  double pressure;        /* outlet */
+  double pressure;           /* outlet */
   sl_scene_expr solids_flux; /* inlet: the superficial solids velocity entering, of (x, y, t, case) (e NULL: held) */
   double angular_velocity;   /* wall, with [two_fluid] swirl: its rotation about the axis, rad/s */
 } tfp_boundary;
-
 
 /* The solids phase's stress (two_fluid_plane_solids.c): its viscosity in the
  * cells from [solid] viscosity, [closure.viscosity] and [closure.granular]
@@ -62,8 +61,8 @@ typedef struct tfp_solids {
   int granular, algebraic, exchange, wall_function;
   int kinetic_pressure; /* the granular closure's p_s joins the solids pressure */
   int wall_energy;      /* the wall closure's theta_flux enters the transported theta through the walls */
-  double mu_const;            /* [solid] viscosity */
-  double *qv[TF_Q_N];        /* the constant quantities, per point (corners: more than cells) */
+  double mu_const;      /* [solid] viscosity */
+  double *qv[TF_Q_N];   /* the constant quantities, per point (corners: more than cells) */
   /* cells [nc]: the viscosity, its tangent mu_s + gdot dmu_s/dgdot (Newton in the shear rate), the shear rate,
      the mixture density, the drag coefficient (the mean of the faces), the normal part 2 S':S' - 2 S_xy^2 of
      gdot^2; theta of the accepted state and of the iterate */
@@ -77,7 +76,7 @@ typedef struct tfp_solids {
   sl_cell_scalar th;
   double *th_old, *th_cap, *th_src, *th_sink, *th_x;
   double last_bagnold; /* the Bagnold number of the last wall-closure call (NAN: the closure gives none) */
-  int any; /* the solids carry a stress (a viscosity at all) */
+  int any;             /* the solids carry a stress (a viscosity at all) */
 } tfp_solids;
 
 /* The turbulent dispersion of the solids (two_fluid_plane_dispersion.c), with [closure.turbulence]: the cells' k
@@ -89,14 +88,14 @@ typedef struct tfp_dispersion {
   sl_closure *c; /* the scene's (not owned) */
   sl_point_closure pc;
   double *k, *eps, *mu_t, *tau, *slip, *K, *dK, *phi; /* cells [nc] */
-  double *D, *v;                                        /* faces [nf]: m^2/s, m/s along +x or +y */
+  double *D, *v;                                      /* faces [nf]: m^2/s, m/s along +x or +y */
 } tfp_dispersion;
 
 /* The swirl of an axisymmetric scene (two_fluid_plane_swirl.c): both phases' angular velocities in the cells,
  * fluid [0, nc) then solids [nc, 2 nc), of the accepted step and of the trial; their linear system. */
 typedef struct tfp_swirl {
   int on;
-  double *buf;        /* the allocation (om and om_new swap within it) */
+  double *buf; /* the allocation (om and om_new swap within it) */
   double *om, *om_new;
   double *rhs, *K, *slip; /* [2 nc], [nc], [nc] scratch */
   /* per boundary b (the mesh's, then the bodies'), of the last swirl solved: [5 b + k] the torque about the axis
@@ -110,14 +109,14 @@ typedef struct tfp_swirl {
 
 typedef struct tfp_model {
   sl_tensor_grid grid;
-  sl_fv_grid fv;   /* its staggered grid: cells, faces, neighbours, periodic images, geometry */
+  sl_fv_grid fv; /* its staggered grid: cells, faces, neighbours, periodic images, geometry */
   int axi;
-  int convection;  /* [flow] convection: the phases' rho alpha (u . grad) u */
+  int convection; /* [flow] convection: the phases' rho alpha (u . grad) u */
   double g[2];
   tfp_solids s;
-  tfp_dispersion disp; /* zero: none */
-  tfp_swirl sw;        /* zero: none */
-  tf_column c; /* the physics, the closures and the numerical keys (its column geometry is unused) */
+  tfp_dispersion disp;   /* zero: none */
+  tfp_swirl sw;          /* zero: none */
+  tf_column c;           /* the physics, the closures and the numerical keys (its column geometry is unused) */
   const tfp_boundary *b; /* [n_b]: the mesh's boundaries, then the bodies' walls */
   int n_b;
   /* [body] (two_fluid_plane_body.c): n_bodies solid bodies whose cells are blocked (core/fv/grid.h), their walls
@@ -125,7 +124,7 @@ typedef struct tfp_model {
      tfp_setup (which hands it to the grid, then frees it) */
   int n_bodies;
   int *body_cells;
-  char body_names[TFP_BODIES_MAX][64]; /* [n_bodies]: "body" for [body], NAME for [body.NAME] (output scalars) */
+  char body_names[TFP_BODIES_MAX][64];  /* [n_bodies]: "body" for [body], NAME for [body.NAME] (output scalars) */
   char body_where[TFP_BODIES_MAX][320]; /* [n_bodies]: "FILE:LINE: [body.NAME]", for messages */
   double body_r1[TFP_BODIES_MAX];       /* [n_bodies]: the body's outer radius inside the domain (x1) */
   int centrifugal; /* [two_fluid] centrifugal: rho alpha u_theta^2 / r of the swirl in the radial momentum */
@@ -133,14 +132,14 @@ typedef struct tfp_model {
      stress on it, [5 b + 2] the mean solids slip, [5 b + 3] the mean Bagnold number of the wall closure (NAN:
      none), [5 b + 4] the length (or area per radian) averaged over */
   double *wall_stats;
-  int *ftype;                     /* [nf]: TFP_FACE_* */
-  int *open_face, n_open;         /* the faces a flux can cross (not closed, not an image), ascending */
-  int *tan_noslip;                /* [4 nf]: per phase (fluid 0, solids 1) and end (minus 0, plus 1) of the face
+  int *ftype;             /* [nf]: TFP_FACE_* */
+  int *open_face, n_open; /* the faces a flux can cross (not closed, not an image), ascending */
+  int *tan_noslip;        /* [4 nf]: per phase (fluid 0, solids 1) and end (minus 0, plus 1) of the face
                                      across its family, 1 when a boundary there holds the phase (no-slip) */
-  int *end_wall;                  /* [2 nf]: per end, the wall (boundary index) along which the face runs, -1 none */
-  double *end_u;                  /* [2 nf]: that wall's speed along the face's direction */
-  double *end_us;                 /* [2 nf]: the solids velocity at that wall (its slip under a wall stress) */
-  double *js;                     /* [nf]: an inlet face's given solids volume flux per area, along +x or +y */
+  int *end_wall;          /* [2 nf]: per end, the wall (boundary index) along which the face runs, -1 none */
+  double *end_u;          /* [2 nf]: that wall's speed along the face's direction */
+  double *end_us;         /* [2 nf]: the solids velocity at that wall (its slip under a wall stress) */
+  double *js;             /* [nf]: an inlet face's given solids volume flux per area, along +x or +y */
   /* state: cells phi, p, P_s; faces the fluid and solids velocities (boundary faces hold their values) */
   double *phi, *p, *uf, *us;
   double *phi_new, *p_new, *uf_new, *us_new;
@@ -163,8 +162,8 @@ typedef struct tfp_model {
   double *phf, *phg, *w, *K, *dK, *slip, *sn, *ps, *dps, *flux, *alpha, *inflow, *x, *rhs;
   /* the linear system: its triplets (the pattern kept) */
   sl_triplets trip;
-  int phi_frozen;       /* this iteration takes the face phi from the step's start */
-  int sink_frozen;      /* this iteration keeps the drag coefficient of the granular sink 3 K theta */
+  int phi_frozen;  /* this iteration takes the face phi from the step's start */
+  int sink_frozen; /* this iteration keeps the drag coefficient of the granular sink 3 K theta */
   sl_csr A;
   sl_linsolve *ls;
   /* the fast path of a grid one cell across (two_fluid_plane_step.c, band_start): with band_allowed (the

@@ -51,12 +51,11 @@
 #include "core/models/two_fluid/two_fluid_plane_impl.h"
 #include "core/solve/linsolve.h"
 
-
 void tfp_solids_free(tfp_solids *s) {
-  double *all[] = {s->mu,    s->mu_t,  s->gdot, s->rho,    s->Kc,      s->theta,       s->theta_new,
-                   s->normal, s->mum,  s->mu_k, s->kap,    s->gam,     s->one,         s->shear,
-                   s->phi_k, s->rho_k, s->K_k,  s->gdot_k, s->theta_k, s->mu_k_corner, s->mu_tk,
-                   s->dgam,  s->th_old, s->th_cap, s->th_src, s->th_sink, s->th_x};
+  double *all[] = {s->mu,     s->mu_t,   s->gdot,   s->rho,    s->Kc,      s->theta,       s->theta_new,
+                   s->normal, s->mum,    s->mu_k,   s->kap,    s->gam,     s->one,         s->shear,
+                   s->phi_k,  s->rho_k,  s->K_k,    s->gdot_k, s->theta_k, s->mu_k_corner, s->mu_tk,
+                   s->dgam,   s->th_old, s->th_cap, s->th_src, s->th_sink, s->th_x};
   sl_cell_scalar_free(&s->th);
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   for (int k = 0; k < TF_Q_N; ++k) free(s->qv[k]);
@@ -66,10 +65,10 @@ void tfp_solids_free(tfp_solids *s) {
 int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_diag *d) {
   tfp_solids *s = &m->s;
   const size_t nc = (size_t)m->fv.nc, nk = (size_t)(m->fv.nx + 1) * (size_t)(m->fv.ny + 1); /* nk > nc */
-  double **a[] = {&s->mu,    &s->mu_t,  &s->gdot,  &s->rho,   &s->Kc,    &s->theta,   &s->theta_new,
-                  &s->normal, &s->mum,  &s->mu_k,  &s->kap,   &s->gam,   &s->one,     &s->shear,
-                  &s->phi_k, &s->rho_k, &s->K_k,   &s->gdot_k, &s->theta_k, &s->mu_k_corner, &s->mu_tk,
-                  &s->dgam,  &s->th_old, &s->th_cap, &s->th_src, &s->th_sink, &s->th_x};
+  double **a[] = {&s->mu,     &s->mu_t,   &s->gdot,   &s->rho,    &s->Kc,      &s->theta,       &s->theta_new,
+                  &s->normal, &s->mum,    &s->mu_k,   &s->kap,    &s->gam,     &s->one,         &s->shear,
+                  &s->phi_k,  &s->rho_k,  &s->K_k,    &s->gdot_k, &s->theta_k, &s->mu_k_corner, &s->mu_tk,
+                  &s->dgam,   &s->th_old, &s->th_cap, &s->th_src, &s->th_sink, &s->th_x};
   for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
     if (!(*a[k] = calloc(nk, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   for (int k = 0; k < TF_Q_N; ++k)
@@ -92,8 +91,10 @@ int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_d
   s->granular = s->gran_c != NULL;
   const sl_src *gt = sl_scene_src(sc, &cfg->granular_temperature);
   if (!s->granular && gt)
-    return sl_diag_set(d, SL_EBADINPUT, "%s:%d: [two_fluid] granular_temperature: needs [closure.granular] (a "
-                                        "kinetic theory, e.g. model = lun)", gt->file, gt->line);
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s:%d: [two_fluid] granular_temperature: needs [closure.granular] (a "
+                       "kinetic theory, e.g. model = lun)",
+                       gt->file, gt->line);
   if (s->granular) {
     s->algebraic = cfg->granular_temperature;
     s->exchange = cfg->interphase_dissipation;
@@ -126,20 +127,24 @@ int tfp_solids_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_d
   for (int f = 0; f < 2 * m->fv.nf; ++f)
     any_stress |= m->end_wall[f] >= 0 && m->b[m->end_wall[f]].solids == TFP_SOLIDS_WALL_STRESS;
   if ((s->wall_c = sl_scene_closure(sc, "wall_stress"))) {
-    if ((rc = sl_point_bind(&s->wall, s->wall_c, tf_quantity_names, TF_Q_N, "closure.wall_stress", model, d))) return rc;
+    if ((rc = sl_point_bind(&s->wall, s->wall_c, tf_quantity_names, TF_Q_N, "closure.wall_stress", model, d)))
+      return rc;
     if (!sl_point_has_output(&s->wall, "tau_w"))
       return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: the closure gives no tau_w");
     if (sl_point_has_input(&s->wall, "shear_rate"))
-      return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: the 2-D model gives a wall closure no shear_rate "
-                                          "(its slip_wall and wall_distance give the wall's shear rate)");
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "[closure.wall_stress]: the 2-D model gives a wall closure no shear_rate "
+                         "(its slip_wall and wall_distance give the wall's shear rate)");
     s->wall_function = sl_point_has_input(&s->wall, "wall_distance");
     s->wall_energy = s->granular && !s->algebraic && sl_point_has_output(&s->wall, "theta_flux");
     if (!any_stress)
-      return sl_diag_set(d, SL_EBADINPUT, "[closure.wall_stress]: no wall uses it (set solids = wall_stress in a "
-                                          "[boundary.NAME] of type wall)");
+      return sl_diag_set(d, SL_EBADINPUT,
+                         "[closure.wall_stress]: no wall uses it (set solids = wall_stress in a "
+                         "[boundary.NAME] of type wall)");
   } else if (any_stress) {
-    return sl_diag_set(d, SL_EBADINPUT, "solids = wall_stress needs [closure.wall_stress] (e.g. model = bagnold or "
-                                        "johnson_jackson)");
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "solids = wall_stress needs [closure.wall_stress] (e.g. model = bagnold or "
+                       "johnson_jackson)");
   }
   s->any = s->mu_const > 0.0 || s->visc_c || s->granular || any_stress;
   for (size_t c = 0; c < nc; ++c) s->theta[c] = s->theta_new[c] = SL_THETA_FLOOR;
@@ -169,7 +174,8 @@ static void corner_shear(tfp_model *m, const double *us) {
         if (m->fv.periodic[1]) below = (below + ny) % ny, above = above % ny;
         double ua, ub, gap;
         /* a body's wall: a dead face on one side (both: a corner inside the body, no shear) */
-        int dead_b = below >= 0 && tfp_dead(m, i + (nx + 1) * below), dead_a = above < ny && tfp_dead(m, i + (nx + 1) * above);
+        int dead_b = below >= 0 && tfp_dead(m, i + (nx + 1) * below),
+            dead_a = above < ny && tfp_dead(m, i + (nx + 1) * above);
         if ((dead_a || above >= ny) && (dead_b || below < 0) && (dead_a || dead_b)) ua = ub = 0.0, gap = 1.0;
         else if (dead_b) {
           fa = i + (nx + 1) * above;
@@ -196,7 +202,8 @@ static void corner_shear(tfp_model *m, const double *us) {
         int left = i - 1, right = i, fa, fb;
         if (m->fv.periodic[0]) left = (left + nx) % nx, right = right % nx;
         double ua, ub, gap;
-        int dead_l = left >= 0 && tfp_dead(m, m->fv.nfx + left + nx * j), dead_r = right < nx && tfp_dead(m, m->fv.nfx + right + nx * j);
+        int dead_l = left >= 0 && tfp_dead(m, m->fv.nfx + left + nx * j),
+            dead_r = right < nx && tfp_dead(m, m->fv.nfx + right + nx * j);
         if ((dead_l || left < 0) && (dead_r || right >= nx) && (dead_l || dead_r)) ua = ub = 0.0, gap = 1.0;
         else if (dead_l) {
           fa = m->fv.nfx + right + nx * j;
@@ -338,8 +345,7 @@ int tfp_solids_viscosity(tfp_model *m, const double *us, const double *phi, sl_d
     }
   int rc = solids_mu_points(m, m->fv.nc, phi, s->gdot, s->rho, s->Kc, s->theta_new, s->mu, s->mu_t, d);
   if (rc) return sl_diag_prefix(d, rc, "cells");
-  if ((rc = solids_mu_points(m, nk, s->phi_k, s->gdot_k, s->rho_k, s->K_k, s->theta_k, s->mu_k_corner,
-                             s->mu_tk, d)))
+  if ((rc = solids_mu_points(m, nk, s->phi_k, s->gdot_k, s->rho_k, s->K_k, s->theta_k, s->mu_k_corner, s->mu_tk, d)))
     return sl_diag_prefix(d, rc, "grid corners");
   return 0;
 }
@@ -371,7 +377,8 @@ static int wall_energy(tfp_model *m, int c, const int cf[4], double *rhs, double
         one[TF_Q_SHEAR_RATE] = s->gdot[c], one[TF_Q_DENSITY] = s->rho[c];
         sl_point_request rq = {"theta_flux", &q, &dq, "theta"};
         int rc = sl_point_eval(&s->wall, 1, v, &rq, 1, d);
-        if (rc) return sl_diag_prefix(d, rc, "[closure.wall_stress] theta_flux in cell (%d, %d)", c % m->fv.nx, c / m->fv.nx);
+        if (rc)
+          return sl_diag_prefix(d, rc, "[closure.wall_stress] theta_flux in cell (%d, %d)", c % m->fv.nx, c / m->fv.nx);
         q_sum += q, c_sum += sl_theta_wall_implicit(dq), ++n;
       }
       if (!n) continue;
@@ -410,14 +417,19 @@ int tfp_theta_solve(tfp_model *m, double dt, double *change, sl_diag *d) {
   const double *v[TF_Q_N];
   for (int k = 0; k < TF_Q_N; ++k) v[k] = s->qv[k];
   v[TF_Q_PHI] = m->phi_new, v[TF_Q_THETA] = s->th_old, v[TF_Q_SHEAR_RATE] = s->gdot, v[TF_Q_DENSITY] = s->rho;
-  sl_point_request rq[3] = {{"mu_s", s->mu_k, NULL, NULL}, {"kappa", s->kap, NULL, NULL},
-                            {"gamma", s->gam, s->dgam, "theta"}};
+  sl_point_request rq[3] = {
+      {"mu_s", s->mu_k, NULL, NULL}, {"kappa", s->kap, NULL, NULL}, {"gamma", s->gam, s->dgam, "theta"}};
   if ((rc = sl_point_eval(&s->gran, nc, v, rq, 3, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
   for (int c = 0; c < nc; ++c) s->th_sink[c] = sl_theta_exchange(s->exchange, s->Kc[c]);
   sl_theta_terms(nc, m->c.rho_s, m->phi_new, s->mu_k, s->gdot, s->gam, s->dgam, s->th_sink, s->th_old, s->th_cap,
                  s->th_src, s->th_sink);
-  sl_cell_scalar_terms terms = {.dt = dt, .cap = s->th_cap, .s_old = s->theta, .k = s->kap, .source = s->th_src,
-                                .sink = s->th_sink, .boundary = s->wall_energy ? wall_energy_of : NULL,
+  sl_cell_scalar_terms terms = {.dt = dt,
+                                .cap = s->th_cap,
+                                .s_old = s->theta,
+                                .k = s->kap,
+                                .source = s->th_src,
+                                .sink = s->th_sink,
+                                .boundary = s->wall_energy ? wall_energy_of : NULL,
                                 .boundary_user = m};
   if ((rc = sl_cell_scalar_solve(&s->th, &terms, s->th_x, d)))
     return sl_diag_prefix(d, rc, "the granular temperature's solve");
@@ -459,8 +471,7 @@ int tfp_solids_pressure(tfp_model *m, const double *phi, double *ps, double *dps
 /* tau_w and d tau_w / d slip at face f, phi given; theta, the shear rate and
  * the density the means of the face's two cells (one cell's would bias the
  * wall along the face's direction). */
-static int wall_tau(tfp_model *m, int f, double phi, double slip, double dist, double *tau, double *dtau,
-                    sl_diag *d) {
+static int wall_tau(tfp_model *m, int f, double phi, double slip, double dist, double *tau, double *dtau, sl_diag *d) {
   tfp_solids *s = &m->s;
   double one[TF_Q_N], th = 0.0, gd = 0.0, rho = 0.0;
   int n = 0;

@@ -70,18 +70,22 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
     if (rc) return rc;
   }
   const size_t nc = (size_t)m->fv.nc, nf = (size_t)m->fv.nf;
-  struct { double **p; size_t n; } a[] = {
-      {&m->phi, nc}, {&m->p, nc}, {&m->uf, nf}, {&m->us, nf}, {&m->phi_new, nc}, {&m->p_new, nc},
-      {&m->uf_new, nf}, {&m->us_new, nf}, {&m->phf, nf}, {&m->phg, nf}, {&m->w, nf}, {&m->K, nf}, {&m->dK, nf}, {&m->slip, nf},
-      {&m->sn, nf}, {&m->ps, nc}, {&m->dps, nc}, {&m->flux, nf}, {&m->alpha, nc}, {&m->inflow, nc},
-      {&m->x, 2 * nf + nc}, {&m->rhs, 2 * nf + nc}};
+  struct {
+    double **p;
+    size_t n;
+  } a[] = {{&m->phi, nc},        {&m->p, nc},           {&m->uf, nf},     {&m->us, nf},    {&m->phi_new, nc},
+           {&m->p_new, nc},      {&m->uf_new, nf},      {&m->us_new, nf}, {&m->phf, nf},   {&m->phg, nf},
+           {&m->w, nf},          {&m->K, nf},           {&m->dK, nf},     {&m->slip, nf},  {&m->sn, nf},
+           {&m->ps, nc},         {&m->dps, nc},         {&m->flux, nf},   {&m->alpha, nc}, {&m->inflow, nc},
+           {&m->x, 2 * nf + nc}, {&m->rhs, 2 * nf + nc}};
   for (size_t k = 0; k < sizeof a / sizeof a[0]; ++k)
     if (!(*a[k].p = calloc(a[k].n, sizeof(double)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   int **ia[] = {&m->ftype, &m->us_row, &m->uf_row, &m->open_face};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k)
     if (!(*ia[k] = calloc(nf, sizeof(int)))) return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
-  if (!(m->wall_stats = calloc(5 * (size_t)m->n_b, sizeof(double))) || !(m->tan_noslip = calloc(4 * nf, sizeof(int))) || !(m->end_wall = calloc(2 * nf, sizeof(int))) ||
-      !(m->end_u = calloc(2 * nf, sizeof(double))) || !(m->end_us = calloc(2 * nf, sizeof(double))) || !(m->js = calloc(nf, sizeof(double))))
+  if (!(m->wall_stats = calloc(5 * (size_t)m->n_b, sizeof(double))) || !(m->tan_noslip = calloc(4 * nf, sizeof(int))) ||
+      !(m->end_wall = calloc(2 * nf, sizeof(int))) || !(m->end_u = calloc(2 * nf, sizeof(double))) ||
+      !(m->end_us = calloc(2 * nf, sizeof(double))) || !(m->js = calloc(nf, sizeof(double))))
     return sl_diag_set(d, SL_ENOMEM, "two_fluid: out of memory");
   for (int f = 0; f < m->fv.nf; ++f) {
     if (m->fv.image[f]) m->ftype[f] = TFP_FACE_IMAGE;
@@ -154,10 +158,10 @@ int tfp_setup(tfp_model *m, sl_diag *d) {
 }
 
 void tfp_free(tfp_model *m) {
-  double *all[] = {m->phi,  m->p,
-                   m->uf,  m->us,  m->phi_new, m->p_new, m->uf_new, m->us_new, m->phf, m->phg,  m->w,    m->K,
-                   m->dK,  m->slip, m->sn,    m->ps,     m->dps,    m->flux,  m->alpha, m->inflow, m->x,
-                   m->rhs, m->end_u, m->end_us, m->js, m->wall_stats, m->acc_x, m->acc_g, m->acc_scale, m->col_uf0};
+  double *all[] = {m->phi, m->p,          m->uf,    m->us,     m->phi_new,   m->p_new,  m->uf_new, m->us_new,
+                   m->phf, m->phg,        m->w,     m->K,      m->dK,        m->slip,   m->sn,     m->ps,
+                   m->dps, m->flux,       m->alpha, m->inflow, m->x,         m->rhs,    m->end_u,  m->end_us,
+                   m->js,  m->wall_stats, m->acc_x, m->acc_g,  m->acc_scale, m->col_uf0};
   for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k) free(all[k]);
   int *ia[] = {m->ftype, m->us_row, m->uf_row, m->tan_noslip, m->end_wall, m->col_face, m->open_face};
   for (size_t k = 0; k < sizeof ia / sizeof ia[0]; ++k) free(ia[k]);
@@ -196,8 +200,8 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
       double v[4] = {x, y, t, m->c.case_index};
       double U = m->b[b].velocity.e ? sl_expr_eval(m->b[b].velocity.e, v) : 0.0;
       if (!isfinite(U))
-        return sl_diag_set(d, SL_EFAILED, "a wall's velocity is not a finite number (%g) at (%g, %g), t = %g", U, x,
-                           y, t);
+        return sl_diag_set(d, SL_EFAILED, "a wall's velocity is not a finite number (%g) at (%g, %g), t = %g", U, x, y,
+                           t);
       m->end_u[2 * f + end] = U;
       if (m->b[b].solids == TFP_SOLIDS_NO_SLIP) m->end_us[2 * f + end] = U;
     }
@@ -215,8 +219,10 @@ int tfp_boundary_values(tfp_model *m, double t, const double *phi, sl_diag *d) {
     double J = 0.0;
     const sl_scene_expr *je = &m->b[m->fv.bound[f]].solids_flux;
     if (je->e && !(isfinite(J = sl_expr_eval(je->e, v)) && J >= 0.0))
-      return sl_diag_set(d, SL_EFAILED, "the inlet's solids flux is %g at (%g, %g), t = %g: it must be finite and "
-                                        "not negative", J, x, y, t);
+      return sl_diag_set(d, SL_EFAILED,
+                         "the inlet's solids flux is %g at (%g, %g), t = %g: it must be finite and "
+                         "not negative",
+                         J, x, y, t);
     m->js[f] = inward * J;
     m->us[f] = phi[inside] > PHI_FLOOR ? m->js[f] / phi[inside] : 0.0;
     m->uf[f] = inward * U / (1.0 - phi[inside]);
@@ -291,7 +297,8 @@ static int viscous(tfp_model *m, int phase, int f, int row, const double *phi, s
     int ci = c % nx, cj = c / nx, cf[4];
     cell_faces(m, c, cf);
     int nb = cf[2 * dir + side];
-    double across = dir == 0 ? m->fv.hy[cj] * (m->axi ? m->fv.xc[ci] : 1.0) : m->fv.hx[ci] * (m->axi ? m->fv.xc[ci] : 1.0);
+    double across =
+        dir == 0 ? m->fv.hy[cj] * (m->axi ? m->fv.xc[ci] : 1.0) : m->fv.hx[ci] * (m->axi ? m->fv.xc[ci] : 1.0);
     double h = dir == 0 ? m->fv.hx[ci] : m->fv.hy[cj];
     double k = phase_mu(m, phase, phi, c) * across / h, kt = phase_mu_t(m, phase, phi, c) * across / h;
     rc |= flux_term(m, row, rows[nb], u[nb], k, kt, un[f], un[nb]);
@@ -380,8 +387,8 @@ static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_
   const double *un = phase ? m->us_new : m->uf_new;
   const int lo = m->fv.lo[f], hi = m->fv.hi[f];
   int rc = 0;
-  /* an entry coef u_g of face g: its unknown, or its given value */
-  #define TERM(g, coef) ((rows[g] >= 0) ? add(m, row, rows[g], (coef)) : (m->rhs[row] -= (coef) * un[g], 0))
+/* an entry coef u_g of face g: its unknown, or its given value */
+#define TERM(g, coef) ((rows[g] >= 0) ? add(m, row, rows[g], (coef)) : (m->rhs[row] -= (coef)*un[g], 0))
   /* along the normal: the same family's faces beyond the cells lo and hi */
   {
     int nb[2] = {-1, -1};
@@ -430,8 +437,7 @@ static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_
                  tfp_dead(m, dir == 0 ? i + (nx + 1) * to : m->fv.nfx + to + nx * j);
       if (to < 0 || to >= n_across || body) {
         if (m->fv.periodic[1 - dir]) to = (to + n_across) % n_across;
-        else { /* a wall (or an open side, or a body's wall) half a cell off */
-          int e = 2 * f + end;
+        else { /* a wall (or an open side, or a body's wall) half a cell off */ int e = 2 * f + end;
           dist[end] = 0.5 * hs[a];
           if (m->tan_noslip[4 * f + 2 * phase + end]) wall_value[end] = m->end_u[e];
           else if (phase == 1 && m->end_wall[e] >= 0 && m->b[m->end_wall[e]].solids == TFP_SOLIDS_WALL_STRESS)
@@ -451,7 +457,7 @@ static int convection(tfp_model *m, int phase, int f, int row, double rho_alpha_
       else m->rhs[row] -= w[end] * wall_value[end];
     }
   }
-  #undef TERM
+#undef TERM
   return rc;
 }
 
@@ -493,7 +499,7 @@ static int closures(tfp_model *m, const double *phi_drag, const double *phi, sl_
   }
   if ((rc = tfp_solids_pressure(m, phi, m->ps, m->dps, d))) return rc; /* the kinetic theory's, added */
   for (int c = 0; c < m->fv.nc; ++c) m->dps[c] = fmax(m->dps[c], 0.0); /* a softening law would be unstable */
-  for (int f = 0; f < m->fv.nf; ++f) { /* the transport's upwind phi of the iterate */
+  for (int f = 0; f < m->fv.nf; ++f) {                                 /* the transport's upwind phi of the iterate */
     double lo = m->fv.lo[f] >= 0 ? phi[m->fv.lo[f]] : 0.0, hi = m->fv.hi[f] >= 0 ? phi[m->fv.hi[f]] : 0.0;
     m->w[f] = m->us_new[f] > 0.0 ? lo : m->us_new[f] < 0.0 ? hi : fmax(lo, hi);
   }
@@ -563,7 +569,8 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
       double gradp = lo >= 0 && hi >= 0 ? (m->p_new[hi] - m->p_new[lo]) / m->fv.dist[f]
                      : lo < 0           ? (m->p_new[hi] - p_out) / m->fv.dist[f]
                                         : (p_out - m->p_new[lo]) / m->fv.dist[f];
-      double Ss = pg > PHI_FLOOR ? V * (rho_s * gs - gradp) : 0.0, Sf = pg > PHI_FLOOR ? -V * (rho_f * gf - gradp) : 0.0;
+      double Ss = pg > PHI_FLOOR ? V * (rho_s * gs - gradp) : 0.0,
+             Sf = pg > PHI_FLOOR ? -V * (rho_f * gf - gradp) : 0.0;
       int src[2] = {-1, -1};
       double wt[2] = {1.0, 0.0};
       if (lo < 0 || hi < 0) src[0] = lo < 0 ? hi : lo;
@@ -583,7 +590,8 @@ static int assemble(tfp_model *m, double dt, sl_diag *d) {
         double damp = pow(fmax(1.0, courant), -4.0);
         for (int k = 0; k < 4; ++k)
           if (m->us_row[cf[k]] >= 0)
-            cols[nc] = cf[k], dphi[nc++] = damp * wt[q] * (-(dt / m->fv.vol[c]) * SIGMA[k] * m->fv.area[cf[k]] * m->w[cf[k]]);
+            cols[nc] = cf[k],
+            dphi[nc++] = damp * wt[q] * (-(dt / m->fv.vol[c]) * SIGMA[k] * m->fv.area[cf[k]] * m->w[cf[k]]);
       }
       /* Dilute faces: the weight's sensitivity, drho g per unit phi, does not fall with phi as the row's inertia
          and drag do, and would take the row over (a bed blown out leaves such faces): the term is kept to half
@@ -671,7 +679,8 @@ static int wall_stresses(tfp_model *m, sl_diag *d) {
       }
       muf /= n;
       /* the solids' viscosity of the wall corner, as the momentum equation took it */
-      int i = dir == 0 ? f % (m->fv.nx + 1) : (f - m->fv.nfx) % m->fv.nx, j = dir == 0 ? f / (m->fv.nx + 1) : (f - m->fv.nfx) / m->fv.nx;
+      int i = dir == 0 ? f % (m->fv.nx + 1) : (f - m->fv.nfx) % m->fv.nx,
+          j = dir == 0 ? f / (m->fv.nx + 1) : (f - m->fv.nfx) / m->fv.nx;
       double mus = m->s.mu_k_corner[dir == 0 ? i + (m->fv.nx + 1) * (j + end) : (i + end) + (m->fv.nx + 1) * j];
       double tf = muf * (m->uf_new[f] - U) / (0.5 * h), ts = 0.0, slip = 0.0;
       if (m->b[b].solids == TFP_SOLIDS_NO_SLIP) ts = mus * (m->us_new[f] - U) / (0.5 * h);
@@ -707,12 +716,12 @@ static double column_flux(const tfp_model *m) {
 int tfp_column_start(tfp_model *m, int fluid_given, const char *where, sl_diag *d) {
   const int nx = m->fv.nx, ny = m->fv.ny, dir = ny > 1 ? 1 : 0, n = dir ? ny : nx;
   if ((dir ? nx : ny) != 1 || n < 2)
-    return sl_diag_set(d, SL_EBADINPUT, "%s: the column's form needs a grid one cell across (%d x %d cells)", where,
-                       nx, ny);
-  if (m->g[1 - dir] != 0.0 || m->fv.periodic[dir] || m->axi || m->s.any || m->convection ||
-      m->accelerate)
-    return sl_diag_set(d, SL_EBADINPUT, "%s: the column's form needs gravity along the column (%s), no periodic ends, "
-                                        "a planar scene, no solids stress, no [flow] convection and no acceleration",
+    return sl_diag_set(d, SL_EBADINPUT, "%s: the column's form needs a grid one cell across (%d x %d cells)", where, nx,
+                       ny);
+  if (m->g[1 - dir] != 0.0 || m->fv.periodic[dir] || m->axi || m->s.any || m->convection || m->accelerate)
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s: the column's form needs gravity along the column (%s), no periodic ends, "
+                       "a planar scene, no solids stress, no [flow] convection and no acceleration",
                        where, dir ? "along y" : "along x");
   m->column = 1, m->col_dir = dir, m->col_n = n;
   if (!(m->col_face = malloc((size_t)(n + 1) * sizeof *m->col_face)) ||
@@ -968,7 +977,8 @@ int tfp_step(tfp_model *m, double t, double dt, sl_diag *d) {
       return 0;
     }
   }
-  return sl_diag_set(d, SL_EFAILED, "the implicit step did not converge in %d iterations (last velocity change "
-                                    "%.3g m/s, tolerance %.3g)", m->c.max_iterations, change,
-                     m->c.tolerance * fmax(m->c.v_ref, umax));
+  return sl_diag_set(d, SL_EFAILED,
+                     "the implicit step did not converge in %d iterations (last velocity change "
+                     "%.3g m/s, tolerance %.3g)",
+                     m->c.max_iterations, change, m->c.tolerance * fmax(m->c.v_ref, umax));
 }

@@ -168,7 +168,8 @@ int tfp_swirl_step(tfp_model *m, double dt, sl_diag *d) {
         rc |= sl_triplets_add(&w->trip, rh, rh, g), rc |= sl_triplets_add(&w->trip, rh, rl, -g);
         if (m->convection) { /* the mass flux's angular momentum, of the upwind cell */
           double al = 0.5 * (phase ? m->phi_new[lo] + m->phi_new[hi] : 2.0 - m->phi_new[lo] - m->phi_new[hi]);
-          double q = empty ? 0.0 : rho[phase] * al * u[f] * m->fv.area[f] * rf * rf, qp = fmax(q, 0.0), qm = fmin(q, 0.0);
+          double q = empty ? 0.0 : rho[phase] * al * u[f] * m->fv.area[f] * rf * rf, qp = fmax(q, 0.0),
+                 qm = fmin(q, 0.0);
           rc |= sl_triplets_add(&w->trip, rl, rl, qp), rc |= sl_triplets_add(&w->trip, rl, rh, qm);
           rc |= sl_triplets_add(&w->trip, rh, rl, -qp), rc |= sl_triplets_add(&w->trip, rh, rh, -qm);
         }

@@ -24,9 +24,9 @@ static double cpu_now(void) { return (double)clock() / CLOCKS_PER_SEC; }
 /* Order 2's work for one call of tfp_transport: the geometry of the
  * reconstruction once, then per stage the limited half increments. */
 typedef struct muscl {
-  int *nb;      /* [4 nc]: cell c's neighbour along dir on side s at 4 c + 2 dir + s (c itself outside) */
-  double *g;    /* [6 nc]: its factors gl, gr, gc along dir at 6 c + 3 dir (0 next to the boundary) */
-  double *half; /* [2 nc]: half the limited increment across cell c along dir at 2 c + dir */
+  int *nb;       /* [4 nc]: cell c's neighbour along dir on side s at 4 c + 2 dir + s (c itself outside) */
+  double *g;     /* [6 nc]: its factors gl, gr, gc along dir at 6 c + 3 dir (0 next to the boundary) */
+  double *half;  /* [2 nc]: half the limited increment across cell c along dir at 2 c + dir */
   double *stage; /* [nc]: Heun's intermediate stage */
 } muscl;
 
@@ -59,7 +59,8 @@ static int muscl_setup(const tfp_model *m, muscl *w) {
         g[0] = g[1] = g[2] = 0.0;
         continue;
       }
-      double h = size[at], hl = size[dir == 0 ? l % m->fv.nx : l / m->fv.nx], hr = size[dir == 0 ? r % m->fv.nx : r / m->fv.nx];
+      double h = size[at], hl = size[dir == 0 ? l % m->fv.nx : l / m->fv.nx],
+             hr = size[dir == 0 ? r % m->fv.nx : r / m->fv.nx];
       g[0] = h / (h + hl), g[1] = h / (h + hr), g[2] = h / (2.0 * h + hl + hr);
     }
   return 0;
@@ -87,8 +88,8 @@ static void muscl_increments(const tfp_model *m, const muscl *w, const double *p
 /* One forward-Euler stage over ds from phi into next (next may be phi) of
  * the upwind solids fluxes of us (order 2: with the reconstruction of w)
  * plus the particle diffusivity, with the packing limiter. */
-static void transport_stage(tfp_model *m, const double *us, const double *phi, double ds, double *next,
-                            const muscl *w, double *out) {
+static void transport_stage(tfp_model *m, const double *us, const double *phi, double ds, double *next, const muscl *w,
+                            double *out) {
   const double phi_max = m->c.phi_max, D = m->c.diffusivity;
   double *F = m->flux, *alpha = m->alpha, *in = m->inflow;
   if (w) muscl_increments(m, w, phi);
@@ -142,8 +143,7 @@ int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double
     const int f = m->open_face[k], lo = m->fv.lo[f], hi = m->fv.hi[f];
     double q = m->fv.area[f] * us[f];
     double Df = m->c.diffusivity > 0.0 && lo >= 0 && hi >= 0 ? m->c.diffusivity * m->fv.area[f] / m->fv.dist[f] : 0.0;
-    if (m->disp.on && lo >= 0 && hi >= 0)
-      Df += m->fv.area[f] * (m->disp.D[f] / m->fv.dist[f] + fabs(m->disp.v[f]));
+    if (m->disp.on && lo >= 0 && hi >= 0) Df += m->fv.area[f] * (m->disp.D[f] / m->fv.dist[f] + fabs(m->disp.v[f]));
     if (lo >= 0) rate[lo] += fmax(q, 0.0) + Df;
     if (hi >= 0) rate[hi] += fmax(-q, 0.0) + Df;
   }
@@ -156,8 +156,10 @@ int tfp_transport(tfp_model *m, const double *us, double dt, double *phi, double
   /* an iterate far from the last accepted step's speeds is refused (the step is retried smaller) */
   double cap = fmax(1e3, 50.0 * (double)m->accepted_substeps);
   if (m->accepted_substeps > 0 && ns > cap)
-    return sl_diag_set(d, SL_EFAILED, "solids transport of this iterate would need %.3g sub-steps, more than 50 "
-                                      "times the last step's %ld", ns, m->accepted_substeps);
+    return sl_diag_set(d, SL_EFAILED,
+                       "solids transport of this iterate would need %.3g sub-steps, more than 50 "
+                       "times the last step's %ld",
+                       ns, m->accepted_substeps);
   long n = ns < 1.0 ? 1 : (long)ns;
   double ds = dt / (double)n, out = 0.0;
   muscl w = {0};

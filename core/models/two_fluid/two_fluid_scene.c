@@ -10,8 +10,8 @@
 #include "core/plugin/kinds.h"
 
 /* The quantities the two_fluid model gives its drag and solids-pressure closures. */
-static const char *const quantities[] = {"phi",        "slip",    "rho_f", "mu_f", "rho_s",
-                                         "d_p",        "sphericity", "gravity", "nbar"};
+static const char *const quantities[] = {"phi", "slip",       "rho_f",   "mu_f", "rho_s",
+                                         "d_p", "sphericity", "gravity", "nbar"};
 
 static int bind_closure(const sl_scene *sc, const tf_column *c, const char *role, tf_closure *b, int with_slip,
                         const char *output, sl_diag *d) {
@@ -50,8 +50,9 @@ int tf_scene_physics(const sl_scene *sc, const tf_config *cfg, int dim, tf_colum
   const sl_reals *gl = &sc->flow.gravity;
   int ng = sl_scene_given(sc, gl) ? gl->n : 0;
   if (ng > 0 && ng != dim)
-    return sl_diag_set(d, SL_EBADINPUT, "%s: a %s takes %d component%s, %d given", sl_scene_where(sc, gl, at, sizeof at),
-                       dim == 1 ? "1-D column" : "2-D scene", dim, dim == 1 ? " (along x)" : "s (x, y)", ng);
+    return sl_diag_set(d, SL_EBADINPUT, "%s: a %s takes %d component%s, %d given",
+                       sl_scene_where(sc, gl, at, sizeof at), dim == 1 ? "1-D column" : "2-D scene", dim,
+                       dim == 1 ? " (along x)" : "s (x, y)", ng);
   if (dim == 1) {
     c->g = ng == 1 ? gl->v[0] : -9.81;
     c->below = c->g <= 0.0;
@@ -70,8 +71,9 @@ int tf_scene_physics(const sl_scene *sc, const tf_config *cfg, int dim, tf_colum
   if (sl_scene_closure(sc, "solids_pressure") && (rc = bind_closure(sc, c, "solids_pressure", &c->ps, 0, "p_s", d)))
     return rc;
   if (dim == 2 && c->ps.c && sl_point_has_input(&c->ps.pc, "nbar"))
-    return sl_diag_set(d, SL_EBADINPUT, "%s: %s takes the reference porosity nbar of each cell, which only the 1-D "
-                                        "column holds (geometry = line, [initial] nbar)",
+    return sl_diag_set(d, SL_EBADINPUT,
+                       "%s: %s takes the reference porosity nbar of each cell, which only the 1-D "
+                       "column holds (geometry = line, [initial] nbar)",
                        sl_scene_closure_where(sc, "solids_pressure", at, sizeof at), c->ps.c->desc->name);
   /* the velocity scale of the convergence test: the Stokes velocity of one particle, or the through-flow */
   double d_eff = c->sphericity * c->d_p;

@@ -69,8 +69,10 @@ int tf_mixture_flux(tf_column *c, double t, double *j, sl_diag *d) {
   } else {
     double n = sl_expr_eval(c->inlet_porosity, vars);
     if (!(n > 1.0 - c->phi_max && n <= 1.0))
-      return sl_diag_set(d, SL_EFAILED, "the inlet porosity is %g at t = %g: allowed 1 - phi_max < porosity <= 1, "
-                                        "phi_max = %g", n, t, c->phi_max);
+      return sl_diag_set(d, SL_EFAILED,
+                         "the inlet porosity is %g at t = %g: allowed 1 - phi_max < porosity <= 1, "
+                         "phi_max = %g",
+                         n, t, c->phi_max);
     int k = c->eq_porosity[0] == n ? 0 : c->eq_porosity[1] == n ? 1 : -1;
     if (k < 0) {
       int rc = tf_equilibrium_velocity(c, n, &v, d);
@@ -125,8 +127,9 @@ int tf_plane_create(tf_column *c, const sl_scene *sc, const tf_config *cfg, sl_d
   g->side_tag[SL_SIDE_LEFT][0] = 0, g->side_tag[SL_SIDE_RIGHT][0] = 1;
   int rc = tfp_setup(m, d);
   if (!rc) rc = tfp_solids_bind(m, sc, cfg, d);
-  if (!rc) rc = sl_scene_linsolve_general(sc, m->n_unknowns, "the coupled two-fluid matrix is nonsymmetric", &m->ls,
-                                          &c->linear, d);
+  if (!rc)
+    rc = sl_scene_linsolve_general(sc, m->n_unknowns, "the coupled two-fluid matrix is nonsymmetric", &m->ls,
+                                   &c->linear, d);
   m->band_allowed = sc->solver.linear == 0 && !rc && strcmp(c->linear, "petsc") != 0; /* auto: the fast path */
   m->col_inlet_given = 1, m->col_inlet = 0.0;
   if (!rc) rc = tfp_column_start(m, 1, "[scene] geometry = line (the column)", d);

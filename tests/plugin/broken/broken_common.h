@@ -25,7 +25,8 @@ static int toy_evaluate(const void *state, const sl_eval_args *args) {
   double *out = args->out[0];
   double *dphi = sl_dout(args, 1, 0, 0);
   for (int32_t q = 0; q < args->Q; ++q) {
-    if (!(phi[q] >= 0.0 && phi[q] <= 0.6)) return sl_fail(args->err, SL_RECOVERABLE, q, "phi = %g outside [0, 0.6]", phi[q]);
+    if (!(phi[q] >= 0.0 && phi[q] <= 0.6))
+      return sl_fail(args->err, SL_RECOVERABLE, q, "phi = %g outside [0, 0.6]", phi[q]);
 #if defined(TOY_RETURNS_NAN)
     out[q] = phi[q] > 0.5 ? NAN : p->a * phi[q] * phi[q];
 #elif defined(TOY_RECOVERABLE_ABOVE)

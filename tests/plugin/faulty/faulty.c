@@ -92,15 +92,18 @@ static int faulty_evaluate(const void *state, const sl_eval_args *args) {
       for (volatile unsigned long i = 1; i != 0; i = i % 1000 + 1) {
       }
       break;
-    case F_EXIT: exit(0);
-    case F_FATAL: return sl_fail(args->err, SL_ERR_INTERNAL, 0, "the test closure gives up at t = %g", args->t);
+    case F_EXIT:
+      exit(0);
+    case F_FATAL:
+      return sl_fail(args->err, SL_ERR_INTERNAL, 0, "the test closure gives up at t = %g", args->t);
     case F_CLOCK: {
       static double last_t = -1.0;
       if (args->t != last_t) s->api->log(s->api->host, SL_LOG_INFO, "t = %.6g dt = %.6g", args->t, args->dt);
       last_t = args->t;
       break;
     }
-    default: break;
+    default:
+      break;
   }
   double *mu = args->out[0];
   double *dmu = sl_dout(args, 1, 0, 0);
