@@ -244,8 +244,9 @@ int main(void) {
   /* 6. Johnson & Jackson's solids wall (Krampa's model C wall): its energy flux into k_s at theta = (2/3) k_s;
      the mixture's momentum with the solids' wall stress */
   {
-    static char jj[8192];
-    snprintf(jj, sizeof jj, "%s[closure.wall_stress.solids]\nmodel = johnson_jackson\n", model_c);
+    static char jj[8192 + 64];
+    int len = snprintf(jj, sizeof jj, "%s[closure.wall_stress.solids]\nmodel = johnson_jackson\n", model_c);
+    CHECK_MSG(len > 0 && (size_t)len < sizeof jj, "the Johnson-Jackson scene does not fit (%d)", len);
     const char *sets[] = {base[0], base[1], base[2], base[3], "pipe.solids_wall=wall_stress", NULL};
     int rc = pipe_run_text(jj, "vertical_pipe.ini", sets, "pipe_ksfs_jj.h5", &err);
     CHECK_MSG(rc == 0, "model C transported, Johnson-Jackson walls: %s", err.msg);
