@@ -3,6 +3,7 @@
 """What configs/spectrometer.ini's output says (Nigam 1999, section 4.3):
 
   spectrometer_report.py OUT.h5 [OUT2.h5 ...]
+  spectrometer_report.py --series OUT.h5 RESTARTED.h5 ...   (one run, continued by --restart)
 
 per output time: the solids inventories downstream of the slot (inner_down,
 outer_down) and the efficiency outer_down/(inner_down + outer_down); the
@@ -12,7 +13,22 @@ outer outlet's share; the share passing the slot, 1 - (inner outlet + the
 inner channel's inventory growth)/inflow; the most retrograde swirl u_theta in the slot
 (its nodes); the largest phi in the cells on the inclined walls (the
 sediment); and at the last time the velocity across the inner channel half
-way to the slot against the rotating-channel profile of the inflow."""
+way to the slot against the rotating-channel profile of the inflow.
+
+Then the steadiness, window by window: over each window of WINDOW = 0.5
+time units ending at an output time (at least the inner channel's
+through-flow time T = V/(Q/2 pi) = 0.42, V its volume per radian), the
+efficiency E = outer outlet/(both outlets) of the solids leaving, the
+share lost by the inner outlet (of the solids entering), the inventory's
+growth (of the solids entering), and E's change from the window before.
+The run is steady from the first window where that change and the growth
+are both below STEADY = 1e-3.
+In a steady state the solids passing the slot leave by the outer outlet,
+so E is then also the share passing the slot and the limit of the
+cumulative share (outer_down + outer outlet)/(inner_down + outer_down +
+both outlets) of the particles that went downstream of the slot, the
+thesis's efficiency extrapolated from the inventories downstream of the
+slot; that cumulative share is printed too."""
 import math
 import sys
 
@@ -26,6 +42,10 @@ S, C = math.sin(G), math.cos(G)
 XI0 = 1 / S
 XA, XB, XE = XI0 + 11 * DELTA, XI0 + 13 * DELTA, XI0 + 24 * DELTA
 W = DELTA / 2
+# the inner channel's through-flow time: its volume per radian, 2 delta int r dxi with r = xi sin(g), over the flux
+# per radian Q/(2 pi)
+T_THROUGH = 2 * DELTA * S * (XE**2 - XI0**2) / 2 / (Q / (2 * math.pi))
+WINDOW, STEADY = 0.5, 1e-3
 
 
 def chan(x, y):
@@ -103,5 +123,51 @@ def report(path):
               f"{np.abs(ut[sel] - K * V / r).max():.3e} of max {np.abs(K * V / r).max():.3f}")
 
 
-for p in sys.argv[1:]:
-    report(p)
+def steadiness(paths):
+    """The window table (module docstring) of one run, in one file or in several continued by --restart;
+    returns (the steady time or None, E there, the last window's E)."""
+    seen = {}
+    for path in paths:
+        f = h5py.File(path, "r")
+        for k in sorted(k for k in f if k.startswith("step_")):
+            a = f[k].attrs
+            if "solids_inventory_inner_down" not in a:
+                continue
+            seen[round(float(a["time"]), 9)] = (a["time"], a["solids_through_inner_inlet"],
+                                                -a["solids_through_inner_outlet"], -a["solids_through_outer_outlet"],
+                                                a["solids_inventory"], a["solids_inventory_inner_down"],
+                                                a["solids_inventory_outer_down"])
+    rows = [seen[k] for k in sorted(seen)]
+    t = np.array([r[0] for r in rows])
+    print(f"  windows of {WINDOW} (through-flow time {T_THROUGH:.3f}); steady when E changes by < {STEADY:g} a window"
+          f" and the inventory grows by < {STEADY:g} of the solids entering:")
+    print("   t      E(outlets)  change    lost     growth   cumulative share downstream")
+    prev_e, t_steady, e_steady, e = None, None, None, float("nan")
+    for r in rows:
+        j = np.where(np.abs(t - (r[0] - WINDOW)) < 1e-6)[0]
+        if not len(j) or abs(r[0] / WINDOW - round(r[0] / WINDOW)) > 1e-6:
+            continue
+        q = rows[j[0]]
+        d_in, d_io, d_oo, d_inv = r[1] - q[1], r[2] - q[2], r[3] - q[3], r[4] - q[4]
+        e = d_oo / (d_io + d_oo)
+        cum = (r[6] + r[3]) / (r[5] + r[6] + r[2] + r[3])
+        ch = e - prev_e if prev_e is not None else float("nan")
+        if t_steady is None and prev_e is not None and abs(ch) < STEADY and abs(d_inv / d_in) < STEADY:
+            t_steady, e_steady = r[0], e
+        print(f"  {r[0]:5.2f}  {100*e:8.2f} %  {100*ch:+7.2f} %  {100*d_io/d_in:6.2f} %  {100*d_inv/d_in:6.2f} %"
+              f"  {100*cum:6.2f} %")
+        prev_e = e
+    if t_steady is not None:
+        print(f"  steady from t = {t_steady:.2f}: E = {100*e_steady:.2f} %; at the last window {100*e:.2f} %")
+    else:
+        print(f"  not steady by t = {t[-1]:.2f}: E = {100*e:.2f} % at the last window")
+    return t_steady, e_steady, e
+
+
+if sys.argv[1:2] == ["--series"]:
+    report(sys.argv[-1])
+    steadiness(sys.argv[2:])
+else:
+    for p in sys.argv[1:]:
+        report(p)
+        steadiness([p])

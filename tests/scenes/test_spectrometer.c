@@ -198,18 +198,26 @@ typedef struct spectro_run {
   double swirl;         /* min u_theta over the slot's nodes */
   double wall_phi;      /* largest phi in the cells touching the outer channel's outer wall */
   double lost;          /* solids leaving by the inner outlet over t in [0.5, 1], of the solids entering then */
+  /* over the windows [t_end - 0.5, t_end] and [t_end - 1, t_end - 0.5] (0.5: at least the inner channel's
+   * through-flow time, 0.42; configs/spectrometer_report.py): */
+  double e_window, e_window_prev; /* solids leaving by the outer outlet / by both outlets */
+  double growth;                  /* the inventory's growth over the last window / the solids entering then */
+  double passing;                 /* 1 - (inner outlet + the inner channel's growth) / entering, the last window */
 } spectro_run;
 
-/* The run on mesh_file (NULL: the coarse mesh of the tests; else a path under the source tree). */
-static int spectrometer_run_on(const char *mesh_file, const char *divert, const char *out, spectro_run *r) {
-  char mesh[4400], dv[64];
+/* configs/SCENE.ini to t = end on mesh_file (NULL: the coarse mesh of the tests; else a path under the source
+ * tree), with [parameters] divert set when divert is not NULL. */
+static int spectrometer_run_scene(const char *scene, const char *mesh_file, const char *divert, const char *end,
+                                  const char *out, spectro_run *r) {
+  char mesh[4400], dv[64], te[64];
   const char *src = getenv("SLUICE_SOURCE_DIR");
   snprintf(mesh, sizeof mesh, "mesh.file=%s/%s", src ? src : ".",
            mesh_file ? mesh_file : "tests/scenes/spectrometer_coarse.msh");
-  snprintf(dv, sizeof dv, "parameters.divert=%s", divert);
-  const char *sets[] = {mesh, dv, "time.end=1", NULL};
+  snprintf(dv, sizeof dv, "parameters.divert=%s", divert ? divert : "");
+  snprintf(te, sizeof te, "time.end=%s", end);
+  const char *sets[] = {mesh, te, divert ? dv : NULL, NULL};
   set_configs("configs");
-  if (run_ok("spectrometer", NULL, NULL, sets, out)) return 1;
+  if (run_ok(scene, NULL, NULL, sets, out)) return 1;
   sl_output_scalars sc;
   sl_diag d = {{0}};
   if (sl_output_read_scalars(out, &sc, &d)) {
@@ -250,13 +258,26 @@ static int spectrometer_run_on(const char *mesh_file, const char *divert, const 
     double through = V(i, k_in) + V(i, k_oi) + V(i, k_io) + V(i, k_oo);
     r->conservation = fmax(r->conservation, fabs(V(i, k_inv) - through) / V(b, k_in));
   }
+  int w1 = 0, w2 = 0; /* the outputs at t_end - 0.5 and t_end - 1 */
+  for (int i = 0; i < sc.n_times; ++i) {
+    if (fabs(sc.times[i] - (sc.times[b] - 0.5)) < fabs(sc.times[w1] - (sc.times[b] - 0.5))) w1 = i;
+    if (fabs(sc.times[i] - (sc.times[b] - 1)) < fabs(sc.times[w2] - (sc.times[b] - 1))) w2 = i;
+  }
+  double o1 = -(V(b, k_oo) - V(w1, k_oo)), i1 = -(V(b, k_io) - V(w1, k_io));
+  double o2 = -(V(w1, k_oo) - V(w2, k_oo)), i2 = -(V(w1, k_io) - V(w2, k_io)), in1 = V(b, k_in) - V(w1, k_in);
+  double inner1 = V(b, k_iu) + V(b, k_is) + V(b, k_id) - V(w1, k_iu) - V(w1, k_is) - V(w1, k_id);
+  r->e_window = o1 / (o1 + i1);
+  r->e_window_prev = o2 / (o2 + i2);
+  r->growth = (V(b, k_inv) - V(w1, k_inv)) / in1;
+  r->passing = 1 - (i1 + inner1) / in1;
+  double t_end = sc.times[b];
 #undef V
   sl_output_scalars_free(&sc);
   /* the swirl in the slot and the sediment on the outer channel's outer wall, at t = 1 */
   sl_output_mesh m;
   sl_output_field ut, phi;
-  if (sl_output_read_mesh(out, &m, &d) || sl_output_read_field(out, "u_theta", 1.0, &ut, &d) ||
-      sl_output_read_field(out, "phi", 1.0, &phi, &d)) {
+  if (sl_output_read_mesh(out, &m, &d) || sl_output_read_field(out, "u_theta", t_end, &ut, &d) ||
+      sl_output_read_field(out, "phi", t_end, &phi, &d)) {
     CHECK_MSG(0, "%s: %s", out, d.msg);
     return 1;
   }
@@ -278,6 +299,10 @@ static int spectrometer_run_on(const char *mesh_file, const char *divert, const 
   }
   sl_output_mesh_free(&m), sl_output_field_free(&ut), sl_output_field_free(&phi);
   return 0;
+}
+
+static int spectrometer_run_on(const char *mesh_file, const char *divert, const char *out, spectro_run *r) {
+  return spectrometer_run_scene("spectrometer", mesh_file, divert, "1", out, r);
 }
 
 static int spectrometer_run(const char *divert, const char *out, spectro_run *r) {
@@ -343,6 +368,45 @@ static void spectrometer_mesh(void) {
   CHECK_MSG(c12.conservation < 1e-12, "%g", c12.conservation);
 }
 
+/* The steady efficiency (Nigam 1999, section 4.3: "the steady share of particles passing to the outer channel"),
+ * configs/spectrometer.ini and configs/spectrometer_diverted.ini (20 % of the inner channel's flux through the
+ * slot) on the coarse mesh to t = 2.5. Steady: the share E of the solids leaving that leave by the outer outlet,
+ * over the window [2, 2.5] (a window of at least the inner channel's through-flow time, 0.42), differs from the
+ * window before by less than 1e-3, and the inventory grows by less than 1e-3 of the solids entering. In a steady
+ * state the solids balance makes E the share passing the slot too (to 1e-3). The diversion raises E and at least
+ * halves the loss by the inner outlet (measured 71.7 % -> 92.7 %, the thesis 75-80 % -> 90-95 %); a sediment is on
+ * the outer channel's outer wall in both runs; the slot's swirl is retrograde in both (the thesis found it weaker
+ * with the diversion, this geometry finds it stronger: printed, not asserted, docs/rotating.md). */
+static void spectrometer_steady(void) {
+  spectro_run b, v;
+  if (spectrometer_run_scene("spectrometer", NULL, NULL, "2.5", "spectrometer_steady_base.h5", &b) ||
+      spectrometer_run_scene("spectrometer_diverted", NULL, NULL, "2.5", "spectrometer_steady_divert.h5", &v))
+    return;
+  const double alpha_in = 0.038411435;
+  const spectro_run *r[2] = {&b, &v};
+  for (int k = 0; k < 2; ++k)
+    printf(
+        "spectrometer %s (coarse, t = 2.5): E = outer outlet / both %.3f %% (window before %.3f %%), passing the "
+        "slot %.3f %%, inventory growth %.1e of the inflow; thesis's inventory measure %.1f %%; swirl in the slot "
+        "%.3f; phi on the outer wall %.3f; balance %.1e\n",
+        k ? "diverted" : "base", 100 * r[k]->e_window, 100 * r[k]->e_window_prev, 100 * r[k]->passing, r[k]->growth,
+        100 * r[k]->eff_inventory, r[k]->swirl, r[k]->wall_phi, r[k]->conservation);
+  printf("  steady efficiency %.1f %% -> %.1f %% diverted (thesis 75-80 -> 90-95); swirl %.3f -> %.3f (%s)\n",
+         100 * b.e_window, 100 * v.e_window, b.swirl, v.swirl, v.swirl > b.swirl ? "weaker" : "stronger");
+  for (int k = 0; k < 2; ++k) {
+    CHECK_MSG(fabs(r[k]->e_window - r[k]->e_window_prev) < 1e-3, "not steady: E %.5f after %.5f", r[k]->e_window,
+              r[k]->e_window_prev);
+    CHECK_MSG(fabs(r[k]->growth) < 1e-3, "not steady: the inventory grows by %.2e of the inflow", r[k]->growth);
+    CHECK_MSG(fabs(r[k]->passing - r[k]->e_window) < 1e-3, "passing %.5f against E %.5f", r[k]->passing,
+              r[k]->e_window);
+    CHECK_MSG(r[k]->conservation < 1e-12, "%g", r[k]->conservation);
+    CHECK_MSG(r[k]->wall_phi > 1.5 * alpha_in, "no sediment: %g", r[k]->wall_phi);
+    CHECK_MSG(r[k]->swirl < -0.1, "no retrograde swirl in the slot: %g", r[k]->swirl);
+  }
+  CHECK_MSG(v.e_window > b.e_window, "diverting does not raise the efficiency: %g -> %g", b.e_window, v.e_window);
+  CHECK_MSG(1 - v.e_window < 0.5 * (1 - b.e_window), "the loss %.4f -> %.4f", 1 - b.e_window, 1 - v.e_window);
+}
+
 int main(int argc, char **argv) {
   static const struct {
     const char *name;
@@ -350,11 +414,12 @@ int main(int argc, char **argv) {
   } parts[] = {{"inflow", inflow},
                {"parameters", parameters},
                {"spectrometer", spectrometer},
-               {"spectrometer_mesh", spectrometer_mesh}};
+               {"spectrometer_mesh", spectrometer_mesh},
+               {"spectrometer_steady", spectrometer_steady}};
   int ran = 0;
   for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
     if (argc < 2 || strcmp(argv[1], parts[k].name) == 0) parts[k].run(), ++ran;
   if (!ran)
-    return fprintf(stderr, "unknown part '%s' (inflow, parameters, spectrometer, spectrometer_mesh)\n", argv[1]), 2;
+    return fprintf(stderr, "unknown part '%s' (inflow, parameters, spectrometer, spectrometer_mesh, spectrometer_steady)\n", argv[1]), 2;
   return sl_test_summary();
 }
