@@ -18,17 +18,18 @@ way to the slot against the rotating-channel profile of the inflow.
 Then the steadiness, window by window: over each window of WINDOW = 0.5
 time units ending at an output time (at least the inner channel's
 through-flow time T = V/(Q/2 pi) = 0.42, V its volume per radian), the
-efficiency E = outer outlet/(both outlets) of the solids leaving, the
-share lost by the inner outlet (of the solids entering), the inventory's
-growth (of the solids entering), and E's change from the window before.
-The run is steady from the first window where that change and the growth
-are both below STEADY = 1e-3.
-In a steady state the solids passing the slot leave by the outer outlet,
-so E is then also the share passing the slot and the limit of the
-cumulative share (outer_down + outer outlet)/(inner_down + outer_down +
-both outlets) of the particles that went downstream of the slot, the
-thesis's efficiency extrapolated from the inventories downstream of the
-slot; that cumulative share is printed too."""
+efficiency P, the share of the solids entering that pass to the outer
+channel: 1 - (inner outlet + the inner channel's inventory growth)/(solids
+entering); its change from the window before; the inner channel's growth
+and the whole inventory's (of the solids entering); the share E = outer
+outlet/(both outlets) of the solids leaving, and the cumulative share
+(outer_down + outer outlet)/(inner_down + outer_down + both outlets) of
+the particles that went downstream of the slot (the thesis's efficiency,
+extrapolated from the inventories downstream of the slot). The run is
+steady from the first window where P's change and the inner channel's
+growth are both below STEADY = 1e-3. The outer channel's sediment may
+still fill and slide (E then moves with it); once it is steady too, E and
+the cumulative share tend to P."""
 import math
 import sys
 
@@ -125,7 +126,7 @@ def report(path):
 
 def steadiness(paths):
     """The window table (module docstring) of one run, in one file or in several continued by --restart;
-    returns (the steady time or None, E there, the last window's E)."""
+    returns (the steady time or None, P there, the last window's P)."""
     seen = {}
     for path in paths:
         f = h5py.File(path, "r")
@@ -133,35 +134,37 @@ def steadiness(paths):
             a = f[k].attrs
             if "solids_inventory_inner_down" not in a:
                 continue
+            inner = a["solids_inventory_inner_up"] + a["solids_inventory_inner_slot"] + a["solids_inventory_inner_down"]
             seen[round(float(a["time"]), 9)] = (a["time"], a["solids_through_inner_inlet"],
                                                 -a["solids_through_inner_outlet"], -a["solids_through_outer_outlet"],
                                                 a["solids_inventory"], a["solids_inventory_inner_down"],
-                                                a["solids_inventory_outer_down"])
+                                                a["solids_inventory_outer_down"], inner)
     rows = [seen[k] for k in sorted(seen)]
     t = np.array([r[0] for r in rows])
-    print(f"  windows of {WINDOW} (through-flow time {T_THROUGH:.3f}); steady when E changes by < {STEADY:g} a window"
-          f" and the inventory grows by < {STEADY:g} of the solids entering:")
-    print("   t      E(outlets)  change    lost     growth   cumulative share downstream")
-    prev_e, t_steady, e_steady, e = None, None, None, float("nan")
+    print(f"  windows of {WINDOW} (through-flow time {T_THROUGH:.3f}); steady when P changes by < {STEADY:g} a window"
+          f" and the inner channel's inventory grows by < {STEADY:g} of the solids entering:")
+    print("   t      P(passing)  change    lost     growth: inner   all    E(outlets)  cumulative share downstream")
+    prev_p, t_steady, p_steady, p = None, None, None, float("nan")
     for r in rows:
         j = np.where(np.abs(t - (r[0] - WINDOW)) < 1e-6)[0]
         if not len(j) or abs(r[0] / WINDOW - round(r[0] / WINDOW)) > 1e-6:
             continue
         q = rows[j[0]]
-        d_in, d_io, d_oo, d_inv = r[1] - q[1], r[2] - q[2], r[3] - q[3], r[4] - q[4]
+        d_in, d_io, d_oo, d_inv, d_inner = r[1] - q[1], r[2] - q[2], r[3] - q[3], r[4] - q[4], r[7] - q[7]
+        p = 1 - (d_io + d_inner) / d_in
         e = d_oo / (d_io + d_oo)
         cum = (r[6] + r[3]) / (r[5] + r[6] + r[2] + r[3])
-        ch = e - prev_e if prev_e is not None else float("nan")
-        if t_steady is None and prev_e is not None and abs(ch) < STEADY and abs(d_inv / d_in) < STEADY:
-            t_steady, e_steady = r[0], e
-        print(f"  {r[0]:5.2f}  {100*e:8.2f} %  {100*ch:+7.2f} %  {100*d_io/d_in:6.2f} %  {100*d_inv/d_in:6.2f} %"
-              f"  {100*cum:6.2f} %")
-        prev_e = e
+        ch = p - prev_p if prev_p is not None else float("nan")
+        if t_steady is None and prev_p is not None and abs(ch) < STEADY and abs(d_inner / d_in) < STEADY:
+            t_steady, p_steady = r[0], p
+        print(f"  {r[0]:5.2f}  {100*p:8.2f} %  {100*ch:+7.2f} %  {100*d_io/d_in:6.2f} %  {100*d_inner/d_in:+7.2f} %"
+              f" {100*d_inv/d_in:+7.2f} %  {100*e:7.2f} %   {100*cum:6.2f} %")
+        prev_p = p
     if t_steady is not None:
-        print(f"  steady from t = {t_steady:.2f}: E = {100*e_steady:.2f} %; at the last window {100*e:.2f} %")
+        print(f"  steady from t = {t_steady:.2f}: P = {100*p_steady:.2f} %; at the last window {100*p:.2f} %")
     else:
-        print(f"  not steady by t = {t[-1]:.2f}: E = {100*e:.2f} % at the last window")
-    return t_steady, e_steady, e
+        print(f"  not steady by t = {t[-1]:.2f}: P = {100*p:.2f} % at the last window")
+    return t_steady, p_steady, p
 
 
 if sys.argv[1:2] == ["--series"]:
