@@ -52,7 +52,8 @@ enum { MAX_N = 8, N_SAMPLES = 2001 };
 
 typedef struct run_out {
   int ok;
-  long unknowns, newton, factorisations; /* Newton iterations, numeric factorisations (FreeFEM: its Newton's) */
+  long unknowns, newton, factorisations; /* Newton iterations, numeric factorisations (FreeFEM: one a Newton
+                                             iteration, printed as its iterations; its Stokes start adds one) */
   double umin, cpu;
   char err[512];
 } run_out;
@@ -257,8 +258,9 @@ int main(int argc, char **argv) {
 
   printf("Bingham cavity, Re = 0, Bn = %d, Papanastasiou m = 1000: u* = %.8f (%s); tolerance %.0e\n\n", bn, ref, method,
          tol);
-  printf("| code | n | unknowns | u_min | abs(u_min - u*) | CPU s | Newton iterations | factorisations |\n"
-         "|---|---|---|---|---|---|---|---|\n");
+  printf(
+      "| code | n | unknowns | u_min | abs(u_min - u*) | CPU s | Newton iterations | factorisations |\n"
+      "|---|---|---|---|---|---|---|---|\n");
   for (int k = 0; k < nn; ++k)
     for (int c = 0; c < 1 + freefem; ++c)
       printf("| %s | %d | %ld | %.8f | %.2e | %.3g | %ld | %ld |\n", c ? "FreeFEM P2/P1" : "sluice Q2/Q1", ns[k],

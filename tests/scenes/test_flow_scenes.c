@@ -303,8 +303,8 @@ static void bingham_bn20_continuation(void) {
     if (run_scene("bench/bingham_cavity_bn20", sets, out, NULL, &res)) return;
     umin[k] = centreline_min_fine(out);
     newton[k] = res.nonlinear_iterations, fact[k] = res.linear.n_numeric;
-    printf("Bingham Bn = 20, 16 x 16, %s: u_min %.10f, %ld Newton iterations, %ld factorisations\n", name[k],
-           umin[k], newton[k], fact[k]);
+    printf("Bingham Bn = 20, 16 x 16, %s: u_min %.10f, %ld Newton iterations, %ld factorisations\n", name[k], umin[k],
+           newton[k], fact[k]);
   }
   for (int k = 0; k < 3; ++k) {
     CHECK_MSG(fabs(umin[k] - umin[0]) < 1e-8, "%s: u_min %.10f, direct %.10f", name[k], umin[k], umin[0]);
@@ -672,6 +672,7 @@ int main(int argc, char **argv) {
   int ran = 0;
   for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
     if (argc < 2 || strcmp(argv[1], parts[k].name) == 0) parts[k].run(), ++ran;
-  if (!ran) return fprintf(stderr, "unknown part '%s' (cavity, bingham, continuation, time, mms, projection)\n", argv[1]), 2;
+  if (!ran)
+    return fprintf(stderr, "unknown part '%s' (cavity, bingham, continuation, time, mms, projection)\n", argv[1]), 2;
   return sl_test_summary();
 }

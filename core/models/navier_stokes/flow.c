@@ -29,7 +29,8 @@ enum { MAX_COMP = 3 };
 
 /* Steady continuation (sl_flow_steady): the relative residual of a stage's first and damped corrections, and
  * the FGMRES budget of a reused factorisation (and the iterations beyond which the next solve refactorises);
- * a KLU factorisation of the 40 x 40 Bingham cavity costs about 30 FGMRES iterations with the old one. */
+ * a KLU refactorisation of the 40 x 40 Bingham cavity costs as much as about 40 FGMRES iterations with the old
+ * one (0.18 s against 4.5 ms, `sluice run --profile`). */
 #define SL_FLOW_CONTINUATION_DAMPED_RTOL 0.1
 #define SL_FLOW_CONTINUATION_FGMRES 40
 #define SL_FLOW_CONTINUATION_FGMRES_SLOW 15
@@ -984,7 +985,8 @@ int sl_flow_steady(sl_flow *f, double *u, long *steps, long *iterations, sl_diag
   /* A stage's first and damped Newton corrections to a relative residual of SL_FLOW_CONTINUATION_DAMPED_RTOL
      (newton.h damped_linear_rtol), and a larger FGMRES budget for the older factorisation: the damped iterations
      at the start of a stage are then mostly answered by FGMRES instead of a factorisation each (the Bingham
-     cavity at Bn = 20, 40 x 40: 31 factorisations -> 13, docs/benchmarks.md). */
+     cavity at Bn = 20 on 16 x 16 cells, every stage to 1e-9: 39 factorisations with direct solves, 9 with this;
+     test scenes_flow_bingham_continuation, docs/benchmarks.md). */
   sl_linsolve_reuse reuse = sl_linsolve_get_reuse(f->ls), wide = reuse;
   if (wide.enabled)
     wide.max_iterations = SL_FLOW_CONTINUATION_FGMRES, wide.slow_iterations = SL_FLOW_CONTINUATION_FGMRES_SLOW;
