@@ -31,7 +31,7 @@ static void release(pipe *p) {
                   &p->x,     &p->face_flux, &p->Kd,       &p->slip0,    &p->ks,  &p->kfs};
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i) free(*a[i]);
   for (int i = 0; i < PIPE_NBUF; ++i) free(p->buf[i]);
-  sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls};
+  sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls, &p->lift};
   for (size_t i = 0; i < sizeof pc / sizeof pc[0]; ++i) sl_point_release(pc[i]);
   pipe_march_release(p);
   sl_cell_scalar_free(&p->cs);

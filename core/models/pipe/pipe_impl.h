@@ -106,7 +106,8 @@ typedef struct pipe {
   double u_wall;   /* the solids' slip speed at the wall the solids' wall closure saw last */
   double inv_slip; /* 1/lambda_slip of the solids' wall closure at the wall cell (0: none or free slip) */
   /* closures */
-  sl_point_closure turb, wallf, drag, gran, psol, walls;
+  sl_point_closure turb, wallf, drag, gran, psol, walls, lift;
+  int have_lift; /* [closure.lift]: the shear lift in the radial solids balance (pipe_solids.c) */
   int have_gran, have_psol, have_walls, walls_at_node, wall_energy, ks_wall_energy;
   /* solvers */
   sl_cell_scalar cs;

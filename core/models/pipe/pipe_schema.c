@@ -310,8 +310,11 @@ const sl_schema sl_pipe_schema = {
               {"drag", 0, "the interphase drag K(phi, slip), with solids (e.g. model = gidaspow)"},
               {"granular", 0, "kinetic theory: mu_s, p_s and gamma of (phi, theta); theta from its local balance"},
               {"solids_pressure", 0, "a solids pressure p_s(phi) in the radial balance"},
-              {"wall_stress.solids", 0, "the solids' wall stress with [pipe] solids_wall = wall_stress"}},
-    .n_roles = 6,
+              {"wall_stress.solids", 0, "the solids' wall stress with [pipe] solids_wall = wall_stress"},
+              {"lift", 0,
+               "the shear lift's coefficient C_L in the radial solids balance (e.g. model = saffman_mei; none: no "
+               "lift, as Krampa)"}},
+    .n_roles = 7,
     .config_size = sizeof(pipe_config),
     .boundary_size = 0,
     .fields = pipe_fields,
