@@ -14,6 +14,11 @@
  * C_L gdot ~ gdot^(1/2) vanishes at zero shear, where C_L diverges: the closure
  * refuses shear_rate below 1e-9 s^-1. A lagging particle (u_s < u_f along the
  * flow) is pushed towards the faster fluid, a leading one away from it.
+ * With correction = mclaughlin, f is instead McLaughlin's (1991, J. Fluid Mech. 224:261) weak-shear factor
+ * J(eps)/2.255, eps = Re_g^(1/2)/Re_p, in Mei's (1992) fit
+ *   J = 0.6765 {1 + tanh[2.5 (log10 eps + 0.191)]} {0.667 + tanh[6 (eps - 0.32)]},
+ * J -> 2.255 (Saffman's) as eps -> inf and -> 0 as eps -> 0: the lift vanishes where the shear is weak
+ * against the slip (a pipe's axis), where Saffman's C_L Re_g^(-1/2) would stay singular.
  * wall_damping (default on) multiplies C_L by Shaver & Podowski's (2015) step
  * (lift/wall_damping.h): Saffman's and Mei's flows are unbounded, and the
  * wall's own lift on a particle that nearly touches it (Wilson & Sellgren
@@ -25,6 +30,7 @@
 
 typedef struct saffman_mei_params {
   int32_t wall_damping;
+  int32_t correction; /* 0 Mei's finite Re_p, 1 McLaughlin's weak shear, 2 none (Saffman's own) */
 } saffman_mei_params;
 
 enum { IN_SHEAR_RATE, IN_SLIP, IN_WALL_DISTANCE, IN_RHO_F, IN_MU_F, IN_D_P, N_IN };
@@ -33,6 +39,9 @@ enum { OUT_C_L, N_OUT };
 static const sl_param_desc params[] = {
     SL_PARAM_BOOL_OF(saffman_mei_params, wall_damping, 1,
                      "damp C_L to 0 within one particle diameter of the wall (Shaver & Podowski 2015)"),
+    SL_PARAM_ENUM_OF(saffman_mei_params, correction, 1, "mei|mclaughlin|none",
+                     "Saffman's C_L corrected for a finite Re_p (mei), for a weak shear, Re_g^(1/2)/Re_p small "
+                     "(mclaughlin, Mei's fit of McLaughlin's J: well-posed on a pipe's axis), or not (none)"),
 };
 
 static const sl_field_desc inputs[] = {
@@ -48,19 +57,21 @@ static const sl_field_desc outputs[] = {
     {"C_L", "1", 0, 0, 0, 0, "lift coefficient of F_L = C_L rho_f phi (u_f - u_s) x curl u_f"},
 };
 
-/* Re_g = 25, Re_p = 10, beta = 1.25, two diameters off the wall: 3 6.46 f/(2 pi 5), f = (1 - 0.3314 sqrt(1.25))
-   exp(-1) + 0.3314 sqrt(1.25), by hand */
+/* Re_g = 25, Re_p = 10 (eps = 0.5), two diameters off the wall, the default correction (McLaughlin's): 3 6.46
+   J(0.5)/(2.255 2 pi 5), J(0.5) = 0.6765 (1 + tanh(2.5 (log10 0.5 + 0.191))) (0.667 + tanh(1.08)), by hand */
 static const double check_in_0[N_IN] = {100.0, 0.02, 1e-3, 1000.0, 1e-3, 5e-4};
-/* no slip: Saffman's own, 3 6.46/(2 pi 5) */
+/* no slip (eps infinite): Saffman's own, 3 6.46/(2 pi 5) */
 static const double check_in_1[N_IN] = {100.0, 0.0, 1e-3, 1000.0, 1e-3, 5e-4};
-/* Re_p = 50 (Mei's second branch): f = 0.0524 sqrt(beta Re_p) = 0.0524 sqrt(12.5) */
+/* Re_p = 50, eps = 0.1: McLaughlin's J is slightly negative below eps of about 0.2 (McLaughlin 1991, Fig. 4) */
 static const double check_in_2[N_IN] = {100.0, 0.1, 1e-3, 1000.0, 1e-3, 5e-4};
 /* the centre half a diameter off the wall: damped to 0 */
 static const double check_in_3[N_IN] = {100.0, 0.02, 2.5e-4, 1000.0, 1e-3, 5e-4};
+/* Mei's finite-Re_p branch (correction = mei) is checked by tests/models/test_pipe_lift.c (`sluice closure eval`):
+   the battery's points take the default parameters */
 static const sl_check_point checks[] = {
-    {check_in_0, OUT_C_L, 0.3714203423070176, 1e-13, "Saffman (1965, 1968) with Mei (1992), Re_p = 10, by hand"},
-    {check_in_1, OUT_C_L, 0.6168845594241863, 1e-13, "Saffman (1965, corrigendum 1968): 6.46, the Re_p -> 0 limit"},
-    {check_in_2, OUT_C_L, 0.11428525285666688, 1e-13, "Mei (1992), Re_p > 40: f = 0.0524 (beta Re_p)^(1/2)"},
+    {check_in_0, OUT_C_L, 0.1977179433315671, 1e-13, "Saffman (1965, 1968) with McLaughlin's J (Mei 1992), eps = 0.5"},
+    {check_in_1, OUT_C_L, 0.6168845594241863, 1e-13, "Saffman (1965, corrigendum 1968): 6.46, the weak-slip limit"},
+    {check_in_2, OUT_C_L, -0.0012724946366381633, 1e-11, "McLaughlin (1991) J in Mei's (1992) fit, eps = 0.1"},
     {check_in_3, OUT_C_L, 0.0, 1e-15, "Shaver & Podowski (2015): C_L = 0 at y = d_p/2"},
 };
 
@@ -77,7 +88,13 @@ static int evaluate(const void *state, const sl_eval_args *a) {
     const double nu = a->in[IN_MU_F][q] / a->in[IN_RHO_F][q], d = a->in[IN_D_P][q];
     const double re_g = a->in[IN_SHEAR_RATE][q] * d * d / nu, re_p = a->in[IN_SLIP][q] * d / nu;
     double f;
-    if (re_p <= 40.0) { /* (1 - alpha) e + alpha = e + alpha (1 - e), alpha (1 - e) -> 0 as Re_p -> 0 */
+    if (p->correction == 2) f = 1.0;
+    else if (p->correction == 1) { /* J(eps)/2.255, eps = Re_g^(1/2)/Re_p; J -> 2.255 (Saffman) as eps -> inf */
+      const double eps = re_p > 0.0 ? sqrt(re_g) / re_p : HUGE_VAL;
+      f = eps == HUGE_VAL
+              ? 1.0
+              : 0.6765 * (1.0 + tanh(2.5 * (log10(eps) + 0.191))) * (0.667 + tanh(6.0 * (eps - 0.32))) / 2.255;
+    } else if (re_p <= 40.0) { /* (1 - alpha) e + alpha = e + alpha (1 - e), alpha (1 - e) -> 0 as Re_p -> 0 */
       const double e = exp(-0.1 * re_p);
       f = e + (re_p > 0.0 ? 0.3314 * sqrt(0.5 * re_g / re_p) * -expm1(-0.1 * re_p) : 0.0);
     } else f = 0.0524 * sqrt(0.5 * re_g);
@@ -92,17 +109,23 @@ static const sl_closure_desc saffman_mei = {
     .kind = SL_KIND_LIFT,
     .name = "saffman_mei",
     .version = "1.0.0",
-    .summary = "Saffman's (1965) shear lift with Mei's (1992) finite-Re_p correction, damped at the wall",
+    .summary =
+        "Saffman's (1965) shear lift, corrected for a weak shear (McLaughlin 1991) or a finite Re_p (Mei "
+        "1992), damped at the wall",
     .formula =
-        "C_L = (3/(2 pi)) 6.46 f / Re_g^(1/2), Re_g = rho_f gdot d^2/mu_f, beta = Re_g/(2 Re_p)\n"
-        "f = (1 - 0.3314 beta^(1/2)) exp(-Re_p/10) + 0.3314 beta^(1/2) (Re_p <= 40), 0.0524 (beta Re_p)^(1/2) "
-        "above\nx f_w(y/d_p): 0 below 1/2, 3x^2 - 2x^3 of x = 2y/d_p - 1, 1 above 1 (wall_damping)",
+        "C_L = (3/(2 pi)) 6.46 f / Re_g^(1/2), Re_g = rho_f gdot d^2/mu_f, Re_p = rho_f slip d/mu_f\n"
+        "mclaughlin: f = J(eps)/2.255, eps = Re_g^(1/2)/Re_p, J = 0.6765 {1 + tanh[2.5 (log10 eps + 0.191)]} "
+        "{0.667 + tanh[6 (eps - 0.32)]}\n"
+        "mei: f = (1 - 0.3314 beta^(1/2)) exp(-Re_p/10) + 0.3314 beta^(1/2) (Re_p <= 40), 0.0524 (beta "
+        "Re_p)^(1/2) above, beta = Re_g/(2 Re_p)\n"
+        "x f_w(y/d_p): 0 below 1/2, 3x^2 - 2x^3 of x = 2y/d_p - 1, 1 above 1 (wall_damping)",
     .reference =
-        "Saffman (1965) J. Fluid Mech. 22:385 and (1968) 31:624; Mei (1992) Int. J. Multiphase Flow 18:145 "
-        "(his fit of Dandy & Dwyer 1990); Shaver & Podowski (2015) Trans. Am. Nucl. Soc. 112:1368",
+        "Saffman (1965) J. Fluid Mech. 22:385 and (1968) 31:624; McLaughlin (1991) J. Fluid Mech. 224:261; "
+        "Mei (1992) Int. J. Multiphase Flow 18:145 (his fits of McLaughlin's J and of Dandy & Dwyer 1990); "
+        "Shaver & Podowski (2015) Trans. Am. Nucl. Soc. 112:1368",
     .validity =
-        "Saffman: Re_p << Re_g^(1/2) << 1; Mei's fit (of Dandy & Dwyer 1990): 0.1 <= Re_p <= 100, "
-        "0.005 <= beta <= 0.4; beyond, an extrapolation",
+        "Saffman: Re_p << Re_g^(1/2) << 1; McLaughlin: Re_p, Re_g << 1 at any eps; Mei's finite-Re_p fit: 0.1 "
+        "<= Re_p <= 100, 0.005 <= beta <= 0.4; beyond, an extrapolation",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(saffman_mei_params),
