@@ -3,13 +3,13 @@
  * (Drew & Lahey 1979, Int. J. Multiphase Flow 5:243, eq 41; the lift of a
  * sphere in a weak inviscid shear, Auton 1987, J. Fluid Mech. 183:199:
  * C_L = 1/2), optionally damped to 0 at the wall by Shaver & Podowski's
- * (2015) step (lift/wall_damping.h). With it the pipe model's radial solids
+ * (2015) step (lift/lift_common.h). With it the pipe model's radial solids
  * balance has a closed-form check (tests/models/test_pipe_lift.c) and a
  * coefficient of 0 returns the balance without lift. */
 #include <math.h>
 #include <sluice/closure.h>
 
-#include "lift/wall_damping.h"
+#include "lift/lift_common.h"
 
 typedef struct constant_params {
   double coefficient;
@@ -45,12 +45,8 @@ static int evaluate(const void *state, const sl_eval_args *a) {
   const constant_params *p = state;
   double *cl = a->out[OUT_C_L];
   for (int32_t q = 0; q < a->Q; ++q) {
-    for (int i = 0; i < N_IN; ++i) {
-      const double v = a->in[i][q];
-      if (!(v >= inputs[i].valid_min && v <= inputs[i].valid_max))
-        return sl_fail(a->err, SL_RECOVERABLE, q, "%s = %g outside [%g, %g]", inputs[i].name, v, inputs[i].valid_min,
-                       inputs[i].valid_max);
-    }
+    const int rc = lift_check_inputs(a, inputs, N_IN, q);
+    if (rc) return rc;
     cl[q] = p->coefficient * (p->wall_damping ? lift_wall_damping(a->in[IN_WALL_DISTANCE][q], a->in[IN_D_P][q]) : 1.0);
   }
   return SL_OK;

@@ -20,13 +20,13 @@
  * J -> 2.255 (Saffman's) as eps -> inf and -> 0 as eps -> 0: the lift vanishes where the shear is weak
  * against the slip (a pipe's axis), where Saffman's C_L Re_g^(-1/2) would stay singular.
  * wall_damping (default on) multiplies C_L by Shaver & Podowski's (2015) step
- * (lift/wall_damping.h): Saffman's and Mei's flows are unbounded, and the
+ * (lift/lift_common.h): Saffman's and Mei's flows are unbounded, and the
  * wall's own lift on a particle that nearly touches it (Wilson & Sellgren
  * 2003, the repulsion Krampa's review mentions) is not theirs. */
 #include <math.h>
 #include <sluice/closure.h>
 
-#include "lift/wall_damping.h"
+#include "lift/lift_common.h"
 
 typedef struct saffman_mei_params {
   int32_t wall_damping;
@@ -79,12 +79,8 @@ static int evaluate(const void *state, const sl_eval_args *a) {
   const saffman_mei_params *p = state;
   double *cl = a->out[OUT_C_L];
   for (int32_t q = 0; q < a->Q; ++q) {
-    for (int i = 0; i < N_IN; ++i) {
-      const double v = a->in[i][q];
-      if (!(v >= inputs[i].valid_min && v <= inputs[i].valid_max))
-        return sl_fail(a->err, SL_RECOVERABLE, q, "%s = %g outside [%g, %g]", inputs[i].name, v, inputs[i].valid_min,
-                       inputs[i].valid_max);
-    }
+    const int rc = lift_check_inputs(a, inputs, N_IN, q);
+    if (rc) return rc;
     const double nu = a->in[IN_MU_F][q] / a->in[IN_RHO_F][q], d = a->in[IN_D_P][q];
     const double re_g = a->in[IN_SHEAR_RATE][q] * d * d / nu, re_p = a->in[IN_SLIP][q] * d / nu;
     double f;
