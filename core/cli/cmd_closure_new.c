@@ -228,6 +228,20 @@ static const ttemplate templates[] = {
      {0.45, 0.1},
      0.4494494494494494,
      "1 - 0.55 / (1 - 0.01 * 0.1)"},
+    {SL_KIND_LIFT,
+     {"shear_rate"},
+     0u,
+     {"C_L"},
+     {{"coefficient", 0.5, -10.0, 10.0, "1", "the lift coefficient C_L"}},
+     "  double *C_L = a->out[OUT_C_L];\n",
+     "    (void)a->in[IN_SHEAR_RATE][q]; /* a constant coefficient: the shear rate does not enter */\n"
+     "    C_L[q] = p->coefficient;\n",
+     "C_L = coefficient",
+     "Auton (1987) J. Fluid Mech. 183:199: C_L = 1/2 for a sphere in a weak inviscid shear",
+     "a weak shear of an inviscid flow",
+     {10.0},
+     0.5,
+     "C_L = 0.5"},
 };
 
 static const ttemplate *template_of(sl_kind k) {

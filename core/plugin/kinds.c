@@ -4,9 +4,9 @@
 #include <math.h>
 #include <string.h>
 
-static const char *const kind_names[] = {"drag",         "hindered_settling", "viscosity", "solids_pressure",
-                                         "wall_stress",  "granular",          "migration", "turbulence",
-                                         "densification"};
+static const char *const kind_names[] = {
+    "drag",     "hindered_settling", "viscosity",  "solids_pressure", "wall_stress",
+    "granular", "migration",         "turbulence", "densification",   "lift"};
 
 /* The host's field dictionary (closure.h, "Canonical input names"): what the
  * models can supply, with the range they supply it in. The typical values are
@@ -188,6 +188,18 @@ static const sl_kind_info contracts[] = {
          "Between strain reversals (strain_amplitude = 0) nbar_new = nbar",
          "two_fluid 1-D column under [shaking] (liquefaction): nbar_new at every step, bounded by [deposit] "
          "nbar_min and the current nbar"},
+    [SL_KIND_LIFT] =
+        {"lift coefficient C_L of the shear-induced lift on the solids: the force on them per unit volume is "
+         "F_L = C_L rho_f phi (u_f - u_s) x curl u_f (Drew & Lahey 1979; Auton 1987)",
+         {"shear_rate"},
+         0u,
+         {"slip", "phi", "wall_distance", "rho_f", "mu_f", "d_p"},
+         {{"C_L", "1", "lift coefficient of F_L = C_L rho_f phi (u_f - u_s) x curl u_f", 1}},
+         0,
+         "shear_rate or slip < 0, or outside the law's declared range (Saffman's C_L diverges as shear_rate^(-1/2) "
+         "at zero shear, where the force C_L shear_rate vanishes); wall_distance <= 0; any NaN",
+         "pipe: [closure.lift] C_L at the radial faces (shear_rate |du_f/dr| there, slip |u_f - u_s|, "
+         "wall_distance R - r), the radial lift phi rho_f C_L (u_f - u_s) du_f/dr in the radial solids balance"},
 };
 
 const sl_kind_info *sl_kind_info_of(sl_kind kind) {
@@ -224,7 +236,7 @@ int sl_kind_from_name(const char *name, sl_kind *kind, sl_diag *d) {
   if (s) return sl_diag_set(d, SL_EBADINPUT, "unknown closure kind '%s'; did you mean '%s'?", name, s);
   return sl_diag_set(d, SL_EBADINPUT,
                      "unknown closure kind '%s' (kinds: drag, hindered_settling, viscosity, solids_pressure, "
-                     "wall_stress, granular, migration, turbulence, densification)",
+                     "wall_stress, granular, migration, turbulence, densification, lift)",
                      name);
 }
 

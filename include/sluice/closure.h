@@ -92,6 +92,7 @@ enum {
  *                                        eps_production [s^-1],
  *                                        eps_sink [kg m^-3 s^-1], c_mu [1]
  *   densification      nbar              nbar_new [1]; volumetric_strain_increment [1]
+ *   lift               shear_rate        C_L [1], F_L = C_L rho_f phi (u_f - u_s) x curl u_f
  *
  * A closure may declare extra named inputs beyond these. */
 typedef enum sl_kind {
@@ -103,7 +104,8 @@ typedef enum sl_kind {
   SL_KIND_GRANULAR = 6,
   SL_KIND_MIGRATION = 7,
   SL_KIND_TURBULENCE = 8,
-  SL_KIND_DENSIFICATION = 9 /* the reference porosity nbar of a sand under cyclic shear (liquefaction) */
+  SL_KIND_DENSIFICATION = 9, /* the reference porosity nbar of a sand under cyclic shear (liquefaction) */
+  SL_KIND_LIFT = 10          /* the shear-induced lift on the solids (its coefficient C_L) */
 } sl_kind;
 
 /* ---- parameter schema ------------------------------------------------- */

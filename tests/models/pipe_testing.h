@@ -45,6 +45,42 @@ static inline int pipe_vertical_without_granular(char *text, size_t tcap, char *
   return 0;
 }
 
+/* A cell field with the cells' radii, sorted from the axis out (n cells). */
+typedef struct profile {
+  int n;
+  double r[512], v[512], lo[512], hi[512]; /* centre, faces, value */
+} profile;
+
+static inline int read_profile(const char *out, const char *name, profile *p) {
+  sl_output_field f;
+  sl_output_mesh m;
+  sl_diag d = {{0}};
+  if (sl_output_read_field(out, name, INFINITY, &f, &d) || sl_output_read_mesh(out, &m, &d)) {
+    CHECK_MSG(0, "%s: %s", out, d.msg);
+    return 1;
+  }
+  p->n = f.n < 512 ? f.n : 512;
+  for (int c = 0; c < p->n; ++c) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (int k = 0; k < m.nodes_per_cell; ++k) {
+      double x = m.coords[3 * m.cells[c * m.nodes_per_cell + k]];
+      lo = fmin(lo, x), hi = fmax(hi, x);
+    }
+    p->r[c] = 0.5 * (lo + hi), p->lo[c] = lo, p->hi[c] = hi, p->v[c] = f.values[c];
+  }
+  for (int i = 1; i < p->n; ++i) /* insertion sort by r */
+    for (int j = i; j > 0 && p->r[j] < p->r[j - 1]; --j) {
+      double *a[4] = {p->r, p->v, p->lo, p->hi};
+      for (int k = 0; k < 4; ++k) {
+        double t = a[k][j];
+        a[k][j] = a[k][j - 1], a[k][j - 1] = t;
+      }
+    }
+  sl_output_field_free(&f);
+  sl_output_mesh_free(&m);
+  return 0;
+}
+
 /* Churchill (1977), Fanning, smooth (Krampa 2009 eqs 2.12-2.13 with k = 0). */
 static inline double pipe_churchill(double Re) {
   double A = pow(-2.457 * log(pow(7.0 / Re, 0.9)), 16.0), B = pow(37530.0 / Re, 16.0);

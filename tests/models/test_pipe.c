@@ -11,7 +11,11 @@
  *  - 40 and 80 radial cells (the same wall cell) within 1 %;
  *  - up-flow and down-flow: the same wall stress, the manometric gradients
  *    4 tau_w/D both;
- *  - a wall cell wider than half the radius is refused before anything runs. */
+ *  - a wall cell wider than half the radius is refused before anything runs;
+ *  - driven by a given pressure gradient ([pipe] pressure_gradient): the -dP/dz of a run at V carries V back (to
+ *    1e-7, the steady solve's tolerance) with the same f, for water and for configs/vertical_pipe.ini's slurry
+ *    (its inventory held); water falling under gravity alone (down-flow, -dP/dz = 0) has the wall stress of its
+ *    weight, tau_w = rho g D/4, and f within 3 % of Churchill at the Re it reaches; refused with a length. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -132,6 +136,52 @@ static void bad_wall_cell(void) {
   CHECK_MSG(rc == 2 && strstr(e.msg, "wall_cell") && strstr(e.msg, "half the radius"), "rc %d: %s", rc, e.msg);
 }
 
+/* The pressure gradient given: the inverse of the bulk velocity given. */
+static void given_gradient(const char *text, const char *name, const char *out_v, const char *out_g) {
+  const char *sets0[] = {NULL};
+  sluice_error e = {0, ""};
+  int rc = pipe_run_text(text, name, sets0, out_v, &e);
+  CHECK_MSG(rc == 0, "%s: %s", name, e.msg);
+  if (rc) return;
+  const double G = pipe_scalar(out_v, "pressure_gradient"), V = pipe_scalar(out_v, "bulk_velocity");
+  const double f = pipe_scalar(out_v, "friction_factor"), phi = pipe_scalar(out_v, "phi_mean");
+  char s1[64];
+  snprintf(s1, sizeof s1, "pipe.pressure_gradient=%.17g", G);
+  const char *sets[] = {s1, NULL};
+  rc = pipe_run_text(text, name, sets, out_g, &e);
+  CHECK_MSG(rc == 0, "%s with -dP/dz given: %s", name, e.msg);
+  if (rc) return;
+  const double V1 = pipe_scalar(out_g, "bulk_velocity"), f1 = pipe_scalar(out_g, "friction_factor");
+  const double G1 = pipe_scalar(out_g, "pressure_gradient"), phi1 = pipe_scalar(out_g, "phi_mean");
+  printf("%s: -dP/dz %.10g Pa/m given carries V = %.10g m/s (%.2e against %.4g), f %.8g (%.2e)\n", name, G, V1,
+         V1 / V - 1.0, V, f1, f1 / f - 1.0);
+  CHECK_MSG(fabs(V1 / V - 1.0) < 1e-7 && fabs(f1 / f - 1.0) < 1e-7, "%s: V %.12g against %.12g, f %.10g against %.10g",
+            name, V1, V, f1, f);
+  CHECK_MSG(G1 == G, "%s: -dP/dz %.17g, given %.17g", name, G1, G);
+  CHECK_MSG(fabs(phi1 - phi) < 1e-12, "%s: the inventory %.15g against %.15g", name, phi1, phi);
+}
+
+static void falling_water(void) {
+  const char *sets[] = {"pipe.pressure_gradient=0", "flow.gravity=9.81", NULL};
+  sluice_error e = {0, ""};
+  int rc = run(sets, "pipe_falling.h5", &e);
+  CHECK_MSG(rc == 0, "falling water: %s", e.msg);
+  if (rc) return;
+  const double tw = pipe_scalar("pipe_falling.h5", "wall_shear_stress_fluid"),
+               V = pipe_scalar("pipe_falling.h5", "bulk_velocity");
+  const double f = pipe_scalar("pipe_falling.h5", "friction_factor"), fc = pipe_churchill(rho * V * D / mu);
+  printf(
+      "falling water, -dP/dz = 0: V = %.4f m/s, tau_w %.6g Pa against rho g D/4 %.6g, f %.6f against Churchill %.6f "
+      "(%+.2f %%)\n",
+      V, tw, rho * 9.81 * D / 4.0, f, fc, 100.0 * (f / fc - 1.0));
+  CHECK_MSG(fabs(tw / (rho * 9.81 * D / 4.0) - 1.0) < 1e-6, "tau_w %.9g against %.9g", tw, rho * 9.81 * D / 4.0);
+  CHECK_MSG(fabs(f / fc - 1.0) < 0.03, "f %.6f against Churchill's %.6f", f, fc);
+  const char *bad[] = {"pipe.pressure_gradient=1000", "pipe.length=4", NULL};
+  rc = run(bad, "pipe_bad_g.h5", &e);
+  printf("pressure_gradient with length: %d, %s\n", rc, e.msg);
+  CHECK_MSG(rc == 2 && strstr(e.msg, "pressure_gradient") && strstr(e.msg, "length"), "rc %d: %s", rc, e.msg);
+}
+
 int main(void) {
   if (load_scene()) return sl_test_summary();
   friction_factors();
@@ -139,5 +189,10 @@ int main(void) {
   grid();
   up_and_down();
   bad_wall_cell();
+  given_gradient(scene, "pipe_water.ini", "pipe_gv.h5", "pipe_gg.h5");
+  static char slurry[8192];
+  if (!sl_test_read_source("configs/vertical_pipe.ini", slurry, sizeof slurry))
+    given_gradient(slurry, "vertical_pipe.ini", "pipe_gsv.h5", "pipe_gsg.h5");
+  falling_water();
   return sl_test_summary();
 }

@@ -31,7 +31,7 @@ static void release(pipe *p) {
                   &p->x,     &p->face_flux, &p->Kd,       &p->slip0,    &p->ks,  &p->kfs};
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i) free(*a[i]);
   for (int i = 0; i < PIPE_NBUF; ++i) free(p->buf[i]);
-  sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls};
+  sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls, &p->lift};
   for (size_t i = 0; i < sizeof pc / sizeof pc[0]; ++i) sl_point_release(pc[i]);
   pipe_march_release(p);
   sl_cell_scalar_free(&p->cs);
@@ -112,6 +112,11 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
   if (!rc && c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED && !p->two_phase)
     rc = sl_diag_set(d, SL_EBADINPUT, "%s = transported needs solids: [pipe] solids_fraction > 0",
                      sl_scene_where(sc, &c->solids_turbulence, at, sizeof at));
+  if (!rc && c->pressure_gradient.n && c->length > 0.0)
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s: the developing pipe carries its inlet's flow rate, station by station: remove [pipe] "
+                     "length or pressure_gradient",
+                     sl_scene_where(sc, &c->pressure_gradient, at, sizeof at));
   if (!rc) rc = build_grid(p, d);
   const int n = p->n;
   if (!rc) {
@@ -324,11 +329,12 @@ static int pipe_write(void *self, sl_output *out, double t, const double *u, sl_
     flux_s += p->g.vol[i] * p->phi[i] * p->us[i];
     usm += p->g.vol[i] * p->us[i], ufm += p->g.vol[i] * p->uf[i];
   }
-  double tau = p->tau_fw + p->tau_sw, V = c->bulk_velocity, g = fabs(p->gz) > 0 ? fabs(p->gz) : 9.81;
+  double tau = p->tau_fw + p->tau_sw, V = pipe_bulk_velocity(p), g = fabs(p->gz) > 0 ? fabs(p->gz) : 9.81;
   struct {
     const char *name;
     double v;
   } s[] = {{"pressure_gradient", -p->G},
+           {"bulk_velocity", V},
            {"manometric_gradient", -p->G + p->rho_f * p->gz},
            {"wall_shear_stress_fluid", p->tau_fw},
            {"wall_shear_stress_solid", p->tau_sw},
@@ -358,7 +364,7 @@ static void pipe_stats(void *self, const sl_run_result *res, sl_model_stats *st)
   st->correction = p->change;
   memcpy(st->stop_reason, p->stop_reason, sizeof st->stop_reason);
   if (p->ls) st->linear = *sl_linsolve_get_stats(p->ls), st->has_linear = 1;
-  double tau = p->tau_fw + p->tau_sw, V = p->cfg->bulk_velocity;
+  double tau = p->tau_fw + p->tau_sw, V = pipe_bulk_velocity(p);
   snprintf(st->coupling_summary, sizeof st->coupling_summary,
            "pipe: -dP/dz %.6g Pa/m (manometric %.6g), tau_w %.4g Pa (fluid %.4g, solids %.4g), f %.5g, y+ %.3g", -p->G,
            -p->G + p->rho_f * p->gz, tau, p->tau_fw, p->tau_sw, tau / (0.5 * p->rho_f * V * V), p->y_plus);

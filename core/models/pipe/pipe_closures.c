@@ -64,6 +64,7 @@ int pipe_closures_bind(pipe *p, sl_diag *d) {
                      "(model = lun or gidaspow)");
   if (!rc) rc = bind(p, &p->psol, "solids_pressure", &p->have_psol, d);
   if (!rc) rc = bind(p, &p->walls, "wall_stress.solids", &p->have_walls, d);
+  if (!rc) rc = bind(p, &p->lift, "lift", &p->have_lift, d);
   if (!rc && p->have_walls) p->walls_at_node = sl_point_has_input(&p->walls, "wall_distance");
   if (!rc && p->have_walls && p->have_gran && p->cfg->granular_temperature == PIPE_THETA_TRANSPORT)
     p->wall_energy = sl_point_has_output(&p->walls, "theta_flux");

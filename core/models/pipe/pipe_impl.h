@@ -38,6 +38,7 @@ typedef struct pipe_config {
   /* the developing pipe (pipe_march.c): length 0 for the fully developed one */
   double length, inlet_intensity, inlet_length_scale;
   long axial_cells;
+  sl_reals pressure_gradient; /* -dP/dz held in place of the bulk velocity (n = 0: the bulk velocity drives) */
 } pipe_config;
 
 /* The host's quantities the closures bind to. */
@@ -106,7 +107,8 @@ typedef struct pipe {
   double u_wall;   /* the solids' slip speed at the wall the solids' wall closure saw last */
   double inv_slip; /* 1/lambda_slip of the solids' wall closure at the wall cell (0: none or free slip) */
   /* closures */
-  sl_point_closure turb, wallf, drag, gran, psol, walls;
+  sl_point_closure turb, wallf, drag, gran, psol, walls, lift;
+  int have_lift; /* [closure.lift]: the shear lift in the radial solids balance (pipe_solids.c) */
   int have_gran, have_psol, have_walls, walls_at_node, wall_energy, ks_wall_energy;
   /* solvers */
   sl_cell_scalar cs;
@@ -148,6 +150,7 @@ int pipe_solids_update(pipe *p, sl_diag *d);
 int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d);
 int pipe_theta_wall_flux(pipe *p, double theta, double *q, double *c_implicit, sl_diag *d);
 void pipe_face_gradients(const pipe *p, const double *u, double wall, double *gw, double *ge);
+double pipe_bulk_velocity(const pipe *p);
 /* model C's k_s and k_fs (pipe_ksfs.c) */
 double pipe_tfs(const pipe *p, int i);
 void pipe_ksfs_equilibrium(const pipe *p, int i, double *ks, double *kfs);

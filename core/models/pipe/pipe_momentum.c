@@ -5,6 +5,7 @@
  *   sum_faces a (u_i - u_nb) + A_w a_w u_i + K V (u_i - u_other) + c V G = c rho g_z V   (each phase)
  * with the drag K(s)(u_f - u_s) linearised about the last slip (Newton in the drag alone),
  *   sum_cells V (c_f u_f + c_s u_s) = V_bulk sum_cells V                                   (the flow rate)
+ * or, with [pipe] pressure_gradient, G = -(the given -dP/dz) in its place (the flow rate then follows);
  * a = the face's mean of the cells' effective viscosities times area over
  * distance, a_w the wall's tau_w/u of the wall cell (the wall function or the
  * solids' wall condition), per radian and unit length. One sparse direct
@@ -77,11 +78,12 @@ int pipe_momentum_solve(pipe *p, sl_diag *d) {
       double a = muf[i] * g->area[i + 1] / g->dist[i + 1] + 1e-300;
       add(A, s, s, a), add(A, s, f, -a);
     }
-    add(A, iG, f, cf * V), add(A, iG, s, cs * V);
+    if (!p->cfg->pressure_gradient.n) add(A, iG, f, cf * V), add(A, iG, s, cs * V);
     Vsum += V;
   }
   if (p->march.on) pipe_march_momentum(p, A, b); /* the developing pipe's convection (pipe_march.c) */
-  b[iG] = p->cfg->bulk_velocity * Vsum;
+  if (p->cfg->pressure_gradient.n) add(A, iG, iG, 1.0), b[iG] = -p->cfg->pressure_gradient.v[0]; /* G held */
+  else b[iG] = p->cfg->bulk_velocity * Vsum;
   sl_csr_touch(A);
   int rc = sl_linsolve_solve(p->ls, A, b, p->x, d);
   if (rc) return sl_diag_prefix(d, rc, "pipe: the momentum solve");
@@ -93,6 +95,18 @@ int pipe_momentum_solve(pipe *p, sl_diag *d) {
   p->G += w * (p->x[iG] - p->G);
   if (p->two_phase) p->tau_sw = p->a_sw * p->us[n - 1];
   return 0;
+}
+
+/* The mixture's bulk velocity carried, (1/A) int (c_f u_f + c_s u_s) dA: the given one, or with [pipe]
+   pressure_gradient what the state carries. */
+double pipe_bulk_velocity(const pipe *p) {
+  if (!p->cfg->pressure_gradient.n) return p->cfg->bulk_velocity;
+  double q = 0.0, A = 0.0;
+  for (int i = 0; i < p->n; ++i) {
+    const double cs = p->two_phase ? p->phi[i] : 0.0;
+    q += p->g.vol[i] * ((1.0 - cs) * p->uf[i] + cs * p->us[i]), A += p->g.vol[i];
+  }
+  return q / A;
 }
 
 /* du/dr on each cell's inner (gw) and outer (ge) face: zero at the axis, `wall` on the wall face (NaN: the

@@ -153,6 +153,45 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
   return 0;
 }
 
+/* The shear lift ([closure.lift]) in the radial balance, added to the faces' volume fluxes. The force on the
+   solids per unit volume, F_L = C_L rho_f c_s (u_f - u_s) x curl u_f (Drew & Lahey 1979, Int. J. Multiphase Flow
+   5:243, eq 41), has for axial velocities u(r) e_z (curl u_f = -(du_f/dr) e_theta, e_z x e_theta = -e_r) the
+   radial component
+     F_L = c_s rho_f C_L (u_f - u_s) du_f/dr,
+   equal and opposite on the fluid. In the radial momenta of the phases (the header's derivation) it joins the
+   dispersion, F_TD + F_L = c_f dp_s/dr, so the zero net flux phi v - D phi' = 0 gains the drift
+     v_L = c_f F_L/K = c_f rho_f C_L (u_f - u_s) (du_f/dr)/(K/c_s),
+   K/c_s the drag per unit volume of solids (finite as c_s -> 0). In up-flow heavy particles lag the fluid
+   (u_f - u_s > 0) where du_f/dr < 0: v_L < 0, towards the axis (Saffman 1965: towards the faster fluid), and in
+   down-flow they lead it and go to the wall. At the interior faces, with C_L of the face's |du_f/dr| (floored at
+   1e-9 s^-1, where C_L du_f/dr vanishes), slip and distance from the wall; nothing crosses the axis or the wall. */
+static int lift_flux(pipe *p, double *flux, sl_diag *d) {
+  const int n = p->n, m = n - 1;
+  const sl_fv_grid *g = &p->g;
+  if (m < 1) return 0;
+  double *cl = p->buf[6], *sh = p->buf[14], *sl = p->buf[15], *ph = p->buf[16], *yw = p->buf[17];
+  for (int f = 1; f < n; ++f) {
+    const int i = f - 1;
+    sh[i] = fmax(fabs(p->uf[f] - p->uf[i]) / g->dist[f], 1e-9);
+    sl[i] = fabs(0.5 * (p->slip0[i] + p->slip0[f]));
+    ph[i] = 0.5 * (p->phi[i] + p->phi[f]);
+    yw[i] = fmax(p->R - (g->xc[i] + 0.5 * g->hx[i]), 1e-9);
+  }
+  const double *v[PQ_N] = {0};
+  v[PQ_SHEAR] = sh, v[PQ_SLIP] = sl, v[PQ_PHI] = ph, v[PQ_WALL_DISTANCE] = yw;
+  sl_point_request rq = {"C_L", cl, NULL, NULL};
+  int rc = sl_point_eval(&p->lift, m, v, &rq, 1, d);
+  if (rc) return sl_diag_prefix(d, rc, "[closure.lift]");
+  for (int f = 1; f < n; ++f) {
+    const int i = f - 1;
+    const double Ks = 0.5 * (p->K[i] / fmax(p->phi[i], 1e-12) + p->K[f] / fmax(p->phi[f], 1e-12));
+    const double vl =
+        (1.0 - ph[i]) * p->rho_f * cl[i] * 0.5 * (p->slip0[i] + p->slip0[f]) * (p->uf[f] - p->uf[i]) / g->dist[f] / Ks;
+    flux[f] += vl * g->area[f];
+  }
+  return 0;
+}
+
 int pipe_solids_update(pipe *p, sl_diag *d) {
   const int n = p->n;
   const sl_fv_grid *g = &p->g;
@@ -190,8 +229,12 @@ int pipe_solids_update(pipe *p, sl_diag *d) {
     double vr = -cf * cf * 0.5 * (Pt[i] + Pt[i + 1]) * (p->theta[i + 1] - p->theta[i]) / g->dist[f] / K;
     flux[f] = vr * g->area[f];
   }
-  sl_cell_scalar_terms t = {
-      .dt = 1e3 * p->R * p->R / fmax(Dmax, 1e-300), .cap = cap, .s_old = p->phi, .k = D, .flux = kinetic ? flux : NULL};
+  if (p->have_lift && (rc = lift_flux(p, flux, d))) return rc;
+  sl_cell_scalar_terms t = {.dt = 1e3 * p->R * p->R / fmax(Dmax, 1e-300),
+                            .cap = cap,
+                            .s_old = p->phi,
+                            .k = D,
+                            .flux = kinetic || p->have_lift ? flux : NULL};
   if (p->march.on) { /* the developing pipe: the solids' flux marched along z (pipe_march.c) */
     pipe_march_solids(p, cap, flux);
     t.dt = 1.0, t.s_old = p->march.s_old, t.flux = flux;
