@@ -26,8 +26,8 @@ outlet/(both outlets) of the solids leaving, and the cumulative share
 (outer_down + outer outlet)/(inner_down + outer_down + both outlets) of
 the particles that went downstream of the slot (the thesis's efficiency,
 extrapolated from the inventories downstream of the slot). The run is
-steady from the first window where P's change and the inner channel's
-growth are both below STEADY = 1e-3. The outer channel's sediment may
+steady from the first window of the last span of windows where P's
+change and the inner channel's growth are both below STEADY = 1e-3. The outer channel's sediment may
 still fill and slide (E then moves with it); once it is steady too, E and
 the cumulative share tend to P."""
 import math
@@ -155,8 +155,11 @@ def steadiness(paths):
         e = d_oo / (d_io + d_oo)
         cum = (r[6] + r[3]) / (r[5] + r[6] + r[2] + r[3])
         ch = p - prev_p if prev_p is not None else float("nan")
-        if t_steady is None and prev_p is not None and abs(ch) < STEADY and abs(d_inner / d_in) < STEADY:
-            t_steady, p_steady = r[0], p
+        if prev_p is not None and abs(ch) < STEADY and abs(d_inner / d_in) < STEADY:
+            if t_steady is None:
+                t_steady, p_steady = r[0], p
+        else:
+            t_steady = None  # not steady (again): a later window starts the steady span
         print(f"  {r[0]:5.2f}  {100*p:8.2f} %  {100*ch:+7.2f} %  {100*d_io/d_in:6.2f} %  {100*d_inner/d_in:+7.2f} %"
               f" {100*d_inv/d_in:+7.2f} %  {100*e:7.2f} %   {100*cum:6.2f} %")
         prev_p = p

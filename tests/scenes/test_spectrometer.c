@@ -21,7 +21,12 @@
  *    observations (a sediment on the inclined walls, the efficiency raised
  *    by the diversion, a retrograde swirl in the slot; the thesis found
  *    it weaker with the diversion, this geometry finds it stronger, which
- *    is printed, not asserted). */
+ *    is printed, not asserted);
+ *  - spectrometer_steady: the same two runs (the diverted one as
+ *    configs/spectrometer_diverted.ini) to t = 2.5: the steady share of the
+ *    particles passing to the outer channel, over windows of a through-flow
+ *    time, steady to 1e-3, equal to the outer outlet's share to 1e-3, raised
+ *    by the diversion; the sediment and the retrograde swirl in both. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
