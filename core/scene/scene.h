@@ -44,9 +44,10 @@ typedef struct sl_solver_config {
   const char *continuation; /* "section.key", "" for none */
   double continuation_from;
   long continuation_steps;
-  int skip_known;      /* skip the solves whose result is known (a flow at rest, at a fixed point) */
-  int reuse;           /* factorisation reuse: 0 auto, 1 never */
-  char *petsc_options; /* [solver.petsc] as PETSc options ("-ksp_type gmres ..."), NULL: none */
+  double continuation_tolerance; /* Newton's tolerance at the stages before the last (0: nonlinear_tolerance) */
+  int skip_known;                /* skip the solves whose result is known (a flow at rest, at a fixed point) */
+  int reuse;                     /* factorisation reuse: 0 auto, 1 never */
+  char *petsc_options;           /* [solver.petsc] as PETSc options ("-ksp_type gmres ..."), NULL: none */
 } sl_solver_config;
 
 /* [output] */

@@ -187,6 +187,8 @@ int sl_newton_solve(sl_csr *A, double *b, int32_t n, double *u, sl_nl_assemble_f
        follows the residual's decrease, Eisenstat & Walker 1996, SIAM J. Sci. Comput. 17:16). */
     double eta = linear_rtol;
     if (eta > 0.0 && res > 0.0) eta = fmin(1e-4, fmax(linear_rtol, linear_rtol * st->residual0 / res));
+    if (eta > 0.0 && !last_full && o.damped_linear_rtol > eta && o.damped_linear_rtol < 1.0)
+      eta = o.damped_linear_rtol; /* the first iterate, or one a shortened step reached (newton.h) */
     /* no digit below the round-off of the terms (a linear step's floor): |b - A du| <= floor is a direct solve's */
     if (eta > 0.0 && round_floor > 0.0 && res > 0.0) eta = fmax(eta, fmin(1e-4, round_floor / res));
     if ((rc = sl_linsolve_solve_rtol(ls, A, b, du, eta, d))) break;

@@ -78,6 +78,14 @@ typedef struct sl_newton_opts {
      only when one more iteration is needed (the test at the top of the next iteration then takes the terms'
      scale T with the matrix of the previous iterate). */
   int predicted;
+  /* The relative residual a correction is solved to at the first iterate and after a shortened step, when
+     larger than linear_rtol's (which the iterations after a full step keep): where the line search does not
+     take the full step, the linear model is poor and more digits of its solution are wasted ("oversolving",
+     Eisenstat & Walker 1996, SIAM J. Sci. Comput. 17:16). A correction with |F + J s| <= eta |F|, eta < 1, is
+     still a descent direction of |F|: grad(|F|^2 / 2) . s = F . (F + J s) - |F|^2 <= (eta - 1) |F|^2
+     (Eisenstat & Walker 1994, SIAM J. Optim. 4:393), so the backtracking stays globally convergent. It lets an
+     older factorisation answer those solves by FGMRES. 0: off. */
+  double damped_linear_rtol;
   double linear_rtol; /* each correction's relative residual |b - A du|_2 <= linear_rtol |b|_2, so that
                            the solver may reuse an older factorisation (sl_linsolve_solve_rtol); default
                            SL_NEWTON_LINEAR_RTOL (predicted: at least 1e-2 rtol); negative: direct solves. A
