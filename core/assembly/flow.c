@@ -481,11 +481,13 @@ static int for_each_batch(const sl_th_space *th, const double *u, const sl_flow_
   if ((rc = work_create(&w, th, o, d))) return rc;
   w->load_only = load_only;
   /* a system assembled on several ranks: this rank's cells only (their closures alone are called here) */
-  int32_t c0 = 0, ncell = th->mesh->n_cells;
-  if (s) sl_system_elements(s, &c0, &ncell);
-  for (int first = c0; first < ncell && !rc; first += SL_ASSEMBLY_BATCH_CELLS) {
-    int n = ncell - first < SL_ASSEMBLY_BATCH_CELLS ? ncell - first : SL_ASSEMBLY_BATCH_CELLS;
-    if (!(rc = batch_pass(w, th, u, o, first, n, d))) rc = fn(w, th, o, first, n, user, d);
+  int32_t c0 = 0, c1 = th->mesh->n_cells;
+  for (int32_t at = 0; at < th->mesh->n_cells && c0 < c1 && !rc; at = c1) {
+    if (s) sl_system_next_run(s, at, &c0, &c1); /* the next run of this rank's cells */
+    for (int first = c0; first < c1 && !rc; first += SL_ASSEMBLY_BATCH_CELLS) {
+      int n = c1 - first < SL_ASSEMBLY_BATCH_CELLS ? c1 - first : SL_ASSEMBLY_BATCH_CELLS;
+      if (!(rc = batch_pass(w, th, u, o, first, n, d))) rc = fn(w, th, o, first, n, user, d);
+    }
   }
   work_free(w);
   return rc;

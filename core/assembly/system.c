@@ -35,6 +35,7 @@ void sl_system_free(sl_system *s) {
   sl_csr_free(&s->A);
   sl_csr_elem_map_free(&s->map);
   free(s->b);
+  free(s->elem_local);
   memset(s, 0, sizeof *s);
 }
 
@@ -44,9 +45,9 @@ void sl_system_zero(sl_system *s) {
 }
 
 int sl_system_add_element(sl_system *s, int32_t e, const double *Ke, const double *be, sl_diag *d) {
-  if (s->distributed && (e < s->elem_begin || e >= s->elem_end)) return 0; /* another rank's */
+  if (s->distributed && (e < 0 || e >= s->n_elem || s->elem_local[e] < 0)) return 0; /* another rank's */
   if (Ke) {
-    int rc = sl_csr_add_element_mapped(&s->A, &s->map, e - (s->distributed ? s->elem_begin : 0), Ke, d);
+    int rc = sl_csr_add_element_mapped(&s->A, &s->map, s->distributed ? s->elem_local[e] : e, Ke, d);
     if (rc) return rc;
   }
   if (be) {
@@ -63,10 +64,9 @@ void sl_system_partition(int32_t n_elem, int rank, int ranks, int32_t *begin, in
   *end = (int32_t)((int64_t)n_elem * (rank + 1) / ranks);
 }
 
-/* Row ownership and the ranks' numbering (see system.h): owner[i] is the rank of the first element holding dof i
- * (the elements are visited in increasing order, so that is the lowest); a dof of no element goes to the last
- * rank. */
-static int build_rows(sl_system *s, int rank, int ranks, sl_diag *d) {
+/* Row ownership and the ranks' numbering (see system.h): owner[i] is the rank (part[e]) of the lowest-numbered
+ * element e holding dof i; a dof of no element goes to the last rank. */
+static int build_rows(sl_system *s, const int32_t *part, int rank, int ranks, sl_diag *d) {
   int32_t n = s->n_dofs;
   sl_rows *r = &s->rows;
   int32_t *owner = malloc((size_t)n * sizeof *owner), *count = calloc((size_t)ranks + 1, sizeof *count);
@@ -77,13 +77,9 @@ static int build_rows(sl_system *s, int rank, int ranks, sl_diag *d) {
     return sl_diag_set(d, SL_ENOMEM, "assembly: out of memory for the rows of %d dofs", (int)n);
   }
   for (int32_t i = 0; i < n; ++i) owner[i] = -1;
-  for (int q = 0; q < ranks; ++q) {
-    int32_t e0, e1;
-    sl_system_partition(s->n_elem, q, ranks, &e0, &e1);
-    for (int64_t k = (int64_t)e0 * s->dofs_per_elem; k < (int64_t)e1 * s->dofs_per_elem; ++k) {
-      int32_t i = s->elem_dofs[k];
-      if (i >= 0 && i < n && owner[i] < 0) owner[i] = q;
-    }
+  for (int64_t k = 0; k < (int64_t)s->n_elem * s->dofs_per_elem; ++k) {
+    int32_t i = s->elem_dofs[k];
+    if (i >= 0 && i < n && owner[i] < 0) owner[i] = part[k / s->dofs_per_elem];
   }
   for (int32_t i = 0; i < n; ++i) {
     if (owner[i] < 0) owner[i] = ranks - 1;
@@ -109,20 +105,54 @@ int sl_system_init_ranks(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_
   memset(s, 0, sizeof *s);
   s->n_dofs = n_dofs, s->n_elem = n_elem, s->dofs_per_elem = dofs_per_elem, s->elem_dofs = elem_dofs;
   s->distributed = 1;
-  sl_system_partition(n_elem, rank, ranks, &s->elem_begin, &s->elem_end);
   s->b = calloc((size_t)n_dofs, sizeof *s->b);
-  if (!s->b) return sl_diag_set(d, SL_ENOMEM, "assembly: out of memory for a system of %d dofs", (int)n_dofs);
-  int rc = build_rows(s, rank, ranks, d);
+  s->elem_local = malloc(((size_t)n_elem + 1) * sizeof *s->elem_local);
+  int32_t *part = malloc(((size_t)n_elem + 1) * sizeof *part), *size = calloc((size_t)ranks, sizeof *size);
+  if (!s->b || !s->elem_local || !part || !size) {
+    free(part), free(size);
+    sl_system_free(s);
+    return sl_diag_set(d, SL_ENOMEM, "assembly: out of memory for a system of %d dofs", (int)n_dofs);
+  }
+  int rc = sl_linsolve_partition(n_elem, dofs_per_elem, elem_dofs, n_dofs, ranks, part, d);
+  for (int32_t e = 0; e < n_elem && !rc; ++e) {
+    if (part[e] < 0 || part[e] >= ranks)
+      rc = sl_diag_set(d, SL_EFAILED, "assembly: cell %d's part %d is not a rank of %d", (int)e, (int)part[e], ranks);
+    else
+      ++size[part[e]];
+  }
+  int empty = 0;
+  for (int q = 0; q < ranks && !rc; ++q) empty |= size[q] == 0;
+  if (empty) /* a part left empty (a mesh of few cells): the blocks of the numbering instead */
+    for (int q = 0; q < ranks; ++q) {
+      int32_t e0, e1;
+      sl_system_partition(n_elem, q, ranks, &e0, &e1);
+      for (int32_t e = e0; e < e1; ++e) part[e] = q;
+    }
+  free(size);
+  if (!rc) rc = build_rows(s, part, rank, ranks, d);
   if (rc) {
+    free(part);
     sl_system_free(s);
     return rc;
   }
+  /* this rank's elements, in increasing order, and the range holding them */
+  int32_t n_own = 0;
+  s->elem_begin = n_elem, s->elem_end = 0;
+  for (int32_t e = 0; e < n_elem; ++e) {
+    s->elem_local[e] = part[e] == rank ? n_own++ : -1;
+    if (part[e] == rank) {
+      if (e < s->elem_begin) s->elem_begin = e;
+      s->elem_end = e + 1;
+    }
+  }
+  if (n_own == 0) s->elem_begin = s->elem_end = 0;
+  free(part);
   /* The pattern: the own elements' rows and columns, and the rows this rank owns of the other ranks' elements
    * that touch them (so that an owned row has its complete pattern here); other rows of those are skipped. */
   const int dpe = dofs_per_elem;
-  int32_t n_own = s->elem_end - s->elem_begin, n_ghost = 0;
+  int32_t n_ghost = 0;
   for (int32_t e = 0; e < n_elem; ++e) {
-    if (e >= s->elem_begin && e < s->elem_end) continue;
+    if (s->elem_local[e] >= 0) continue;
     for (int a = 0; a < dpe; ++a) {
       int32_t i = elem_dofs[(size_t)e * dpe + a];
       if (i >= 0 && i < n_dofs && s->rows.owned[i]) {
@@ -141,11 +171,13 @@ int sl_system_init_ranks(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_
     return sl_diag_set(d, SL_ENOMEM, "assembly: out of memory for a system of %d dofs", (int)n_dofs);
   }
   for (int32_t e = 0; e <= m; ++e) ptr[e] = e * dpe;
-  memcpy(row_dofs, elem_dofs + (size_t)s->elem_begin * dpe, (size_t)n_own * dpe * sizeof *row_dofs);
+  for (int32_t e = 0; e < n_elem; ++e)
+    if (s->elem_local[e] >= 0)
+      memcpy(row_dofs + (size_t)s->elem_local[e] * dpe, elem_dofs + (size_t)e * dpe, (size_t)dpe * sizeof *row_dofs);
   memcpy(col_dofs, row_dofs, (size_t)n_own * dpe * sizeof *col_dofs);
   int32_t k = n_own;
   for (int32_t e = 0; e < n_elem; ++e) {
-    if (e >= s->elem_begin && e < s->elem_end) continue;
+    if (s->elem_local[e] >= 0) continue;
     const int32_t *dofs = elem_dofs + (size_t)e * dpe;
     int touches = 0;
     for (int a = 0; a < dpe; ++a) touches |= dofs[a] >= 0 && dofs[a] < n_dofs && s->rows.owned[dofs[a]];
@@ -158,10 +190,9 @@ int sl_system_init_ranks(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_
     ++k;
   }
   rc = sl_csr_build(&s->A, n_dofs, n_dofs, m, ptr, row_dofs, ptr, col_dofs, d);
-  free(row_dofs), free(col_dofs);
-  if (!rc)
-    rc = sl_csr_elem_map_build(&s->map, &s->A, n_own, ptr, elem_dofs + (size_t)s->elem_begin * dpe, NULL, NULL, d);
-  free(ptr);
+  free(col_dofs);
+  if (!rc) rc = sl_csr_elem_map_build(&s->map, &s->A, n_own, ptr, row_dofs, NULL, NULL, d);
+  free(ptr), free(row_dofs);
   if (rc) {
     sl_system_free(s);
     return rc;
@@ -173,6 +204,15 @@ int sl_system_init_ranks(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_
 void sl_system_elements(const sl_system *s, int32_t *begin, int32_t *end) {
   *begin = s->distributed ? s->elem_begin : 0;
   *end = s->distributed ? s->elem_end : s->n_elem;
+}
+
+void sl_system_next_run(const sl_system *s, int32_t from, int32_t *begin, int32_t *end) {
+  int32_t n = s->distributed ? s->elem_end : s->n_elem, e = from < 0 ? 0 : from;
+  while (s->distributed && e < n && s->elem_local[e] < 0) ++e;
+  *begin = e;
+  while (s->distributed && e < n && s->elem_local[e] >= 0) ++e;
+  *end = s->distributed ? e : n;
+  if (*begin > *end) *begin = *end;
 }
 
 int sl_system_complete(sl_system *s, int matrix, sl_diag *d) {

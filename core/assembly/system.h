@@ -28,9 +28,11 @@ typedef struct sl_system {
   sl_csr A;
   sl_csr_elem_map map;
   double *b; /* [n_dofs] */
-  /* sl_system_init_ranks on several ranks: this rank's elements [elem_begin, elem_end) (else all), and the
-   * rows it owns (A.rows points here: the system must not be moved) */
+  /* sl_system_init_ranks on several ranks: this rank's elements lie in [elem_begin, elem_end) (else all are
+   * its own), elem_local[e] the place of element e among them (-1: another rank's), and the rows it owns
+   * (A.rows points here: the system must not be moved) */
   int32_t elem_begin, elem_end;
+  int32_t *elem_local;
   int distributed;
   sl_rows rows;
 } sl_system;
@@ -53,15 +55,20 @@ int sl_system_add_element(sl_system *s, int32_t e, const double *Ke, const doubl
  * block is a compact piece of the domain). */
 void sl_system_partition(int32_t n_elem, int rank, int ranks, int32_t *begin, int32_t *end);
 /* As sl_system_init, for rank `rank` of `ranks` (one rank: sl_system_init). On several ranks the system is
- * distributed: this rank assembles its own elements (sl_system_partition) only, and owns the rows of the dofs
+ * distributed: this rank assembles its own elements only (the graph partition's part, sl_linsolve_partition;
+ * sl_system_partition's block where a part would be empty), and owns the rows of the dofs
  * whose lowest-numbered element is one of its own (so a rank owns the rows of its part of the domain, a dof
  * on the border between two parts going to the lower rank). Its matrix holds only the rows its elements touch
  * and the complete pattern of the rows it owns; A.rows says which those are and numbers every rank's rows
  * contiguously, in the sluice order within a rank (core/solve/sparse.h). */
 int sl_system_init_ranks(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_elem, const int32_t *elem_dofs,
                          int rank, int ranks, sl_diag *d);
-/* The elements this rank assembles: [*begin, *end) (all of them on one rank). */
+/* The range holding the elements this rank assembles: [*begin, *end) (all of them on one rank); the others in it
+ * add nothing (sl_system_add_element). */
 void sl_system_elements(const sl_system *s, int32_t *begin, int32_t *end);
+/* The first run of consecutive elements this rank assembles at or after `from`: [*begin, *end) (empty,
+ * *begin == *end, when there is none); on one rank [from, n_elem). */
+void sl_system_next_run(const sl_system *s, int32_t from, int32_t *begin, int32_t *end);
 /* After the elements are added, before the constraints: on several ranks each rank holds only its own
  * elements' part; this adds the parts of every row into the rank that owns it (PETSc's MatSetValues with
  * ADD_VALUES and its VecSetValues: a row another rank owns travels there, sl_linsolve_rows_complete), so that

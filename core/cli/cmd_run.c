@@ -146,9 +146,10 @@ static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, do
   if (rs.ranks > 1)
     fprintf(f,
             "%s rows on %d ranks: this rank owns %ld of %ld rows; its matrix %ld entries, %ld of them in its rows, of "
-            "%ld in all; the parts exchanged in %.3g s (%ld assemblies, %ld with the matrix; before them %.3g s "
-            "waiting for the other ranks)\n",
-            p, rs.ranks, rs.owned_rows, rs.rows, rs.entries_here, rs.owned_entries, rs.all_entries, rs.seconds,
+            "%ld in all; border: %ld of its rows' entries in other ranks' columns, %ld on all ranks; the parts "
+            "exchanged in %.3g s (%ld assemblies, %ld with the matrix; before them %.3g s waiting for the other ranks)\n",
+            p, rs.ranks, rs.owned_rows, rs.rows, rs.entries_here, rs.owned_entries, rs.all_entries, rs.border_entries,
+            rs.all_border, rs.seconds,
             rs.calls, rs.matrix_calls, rs.waiting);
   sluice_print_closure_profile(sc, f, p, cpu_total);
   if (m->output_times > 0)

@@ -90,6 +90,11 @@ int sl_linsolve_rows_complete(sl_rows *rows, sl_csr *A, double *b, int matrix, s
   (void)rows, (void)A, (void)b, (void)matrix;
   return sl_diag_set(d, SL_EFAILED, "a system divided among ranks needs a build with PETSc");
 }
+int sl_linsolve_partition(int32_t n_elem, int dofs_per_elem, const int32_t *elem_dofs, int32_t n_dofs, int ranks,
+                          int32_t *part, sl_diag *d) {
+  (void)n_elem, (void)dofs_per_elem, (void)elem_dofs, (void)n_dofs, (void)ranks, (void)part;
+  return sl_diag_set(d, SL_EFAILED, "a system divided among ranks needs a build with PETSc");
+}
 void sl_linsolve_rows_free(sl_rows *rows) { (void)rows; }
 void sl_linsolve_rows_stats(sl_rows_stats *st) { memset(st, 0, sizeof *st); }
 void sl_linsolve_rows_profile(int on) { (void)on; }

@@ -134,6 +134,13 @@ int sl_linsolve_sum_ordered(double *x, int n, sl_diag *d);
  * through PETSc's stash in MatAssemblyBegin/End, into a matrix and a vector kept in rows->exchange; A's values
  * only with `matrix` (then A is touched). Collective. SL_EFAILED without PETSc. */
 int sl_linsolve_rows_complete(sl_rows *rows, sl_csr *A, double *b, int matrix, sl_diag *d);
+/* The cells' partition among `ranks` ranks (the number launched): part[e] is the rank of element e, on every
+ * rank the same. The cells' graph (two elements are neighbours when they share an unknown, the edge weighted by
+ * how many) is partitioned by PETSc's MatPartitioning, PT-Scotch by default (Debian's PETSc has no ParMETIS;
+ * -mat_partitioning_type chooses another), so that the cut, the border the ranks exchange, is small.
+ * Collective. SL_EFAILED without PETSc. */
+int sl_linsolve_partition(int32_t n_elem, int dofs_per_elem, const int32_t *elem_dofs, int32_t n_dofs, int ranks,
+                          int32_t *part, sl_diag *d);
 /* Frees rows->exchange. */
 void sl_linsolve_rows_free(sl_rows *rows);
 /* What sl_linsolve_rows_complete did in this process (the last pattern's sizes): all zero on one rank. */
@@ -146,6 +153,8 @@ typedef struct sl_rows_stats {
   long entries_here;     /* this rank's matrix: the entries of the rows its elements touch */
   long owned_entries;    /* of those, in its own rows */
   long all_entries;      /* the owned entries of every rank: the whole matrix's entries */
+  long border_entries;   /* of the owned entries, those in a column another rank owns (the off-rank block) */
+  long all_border;       /* the border entries of every rank */
 } sl_rows_stats;
 void sl_linsolve_rows_stats(sl_rows_stats *st);
 /* On (`sluice run --profile`): the ranks meet (MPI_Barrier) before each sl_linsolve_rows_complete, so that its

@@ -202,11 +202,17 @@ static int rows_prepare(rows_exchange *x, const sl_rows *rows, const sl_csr *A, 
   PetscMPIInt size = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
   st->ranks = size, st->rows = rows->n, st->owned_rows = rows->end - rows->begin, st->entries_here = A->nnz;
-  st->owned_entries = 0;
+  st->owned_entries = st->border_entries = 0;
   for (int32_t k = 0; k < rows->end - rows->begin; ++k)
-    st->owned_entries += A->row_ptr[rows->local[k] + 1] - A->row_ptr[rows->local[k]];
-  if (MPI_Allreduce(&st->owned_entries, &st->all_entries, 1, MPI_LONG, MPI_SUM, PETSC_COMM_WORLD))
+    for (int32_t p = A->row_ptr[rows->local[k]]; p < A->row_ptr[rows->local[k] + 1]; ++p) {
+      int32_t g = rows->global[A->col_idx[p]];
+      ++st->owned_entries;
+      st->border_entries += g < rows->begin || g >= rows->end;
+    }
+  long mine[2] = {st->owned_entries, st->border_entries}, all[2];
+  if (MPI_Allreduce(mine, all, 2, MPI_LONG, MPI_SUM, PETSC_COMM_WORLD))
     return sl_diag_set(d, SL_EFAILED, "petsc: counting the matrix's entries over the ranks failed");
+  st->all_entries = all[0], st->all_border = all[1];
   return 0;
 }
 
@@ -630,3 +636,107 @@ const sl_linsolve_ops sl_linsolve_petsc_ops = {.name = "petsc",
                                                .solve_rtol = petsc_solve_rtol,
                                                .set_blocks = petsc_set_blocks,
                                                .describe = petsc_describe};
+
+/* ---- the cells' partition --------------------------------------------------------------------------------- */
+
+int sl_linsolve_partition(int32_t n_elem, int dofs_per_elem, const int32_t *elem_dofs, int32_t n_dofs, int ranks,
+                          int32_t *part, sl_diag *d) {
+  int rc = petsc_start(d);
+  if (rc) return rc;
+  PetscMPIInt rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  if (size != ranks || n_elem < ranks)
+    return sl_diag_set(d, SL_EBADINPUT, "petsc: %d cells cannot be divided among %d ranks (launched on %d)",
+                       (int)n_elem, ranks, (int)size);
+  const int dpe = dofs_per_elem;
+  /* dof -> its cells (CSR), every rank the whole of it */
+  int32_t *dptr = calloc((size_t)n_dofs + 2, sizeof *dptr), *dcell = malloc(((size_t)n_elem * dpe + 1) * sizeof *dcell);
+  int32_t *stamp = malloc(((size_t)n_elem + 1) * sizeof *stamp), *weight = calloc((size_t)n_elem + 1, sizeof *weight);
+  if (!dptr || !dcell || !stamp || !weight) {
+    free(dptr), free(dcell), free(stamp), free(weight);
+    return sl_diag_set(d, SL_ENOMEM, "petsc: out of memory for the cells' graph");
+  }
+  for (int64_t k = 0; k < (int64_t)n_elem * dpe; ++k)
+    if (elem_dofs[k] >= 0 && elem_dofs[k] < n_dofs) ++dptr[elem_dofs[k] + 2];
+  for (int32_t i = 0; i < n_dofs; ++i) dptr[i + 2] += dptr[i + 1];
+  for (int32_t e = 0; e < n_elem; ++e)
+    for (int a = 0; a < dpe; ++a) {
+      int32_t i = elem_dofs[(size_t)e * dpe + a];
+      if (i >= 0 && i < n_dofs) dcell[dptr[i + 1]++] = e;
+    }
+  for (int32_t e = 0; e < n_elem; ++e) stamp[e] = -1;
+  /* The graph's rows of this rank: the cells [n r / N, n (r + 1) / N); two cells are neighbours when they share
+   * an unknown, the edge weighted by how many they share (the entries a cut between them puts on the border). */
+  int32_t e0 = (int32_t)((int64_t)n_elem * rank / size), e1 = (int32_t)((int64_t)n_elem * (rank + 1) / size);
+  PetscInt *ai = NULL, *aj = NULL, *aw = NULL, nnz = 0;
+  PetscErrorCode e = 0;
+  for (int pass = 0; pass < 2 && !e; ++pass) {
+    nnz = 0;
+    for (int32_t c = e0; c < e1; ++c) {
+      if (pass) ai[c - e0] = nnz;
+      PetscInt r0 = nnz;
+      for (int a = 0; a < dpe; ++a) {
+        int32_t i = elem_dofs[(size_t)c * dpe + a];
+        if (i < 0 || i >= n_dofs) continue;
+        for (int32_t q = dptr[i]; q < dptr[i + 1]; ++q) {
+          int32_t f = dcell[q];
+          if (f == c) continue;
+          if (stamp[f] != c) {
+            stamp[f] = c, weight[f] = 0;
+            if (pass) aj[nnz] = f;
+            ++nnz;
+          }
+          ++weight[f];
+        }
+      }
+      if (!pass) continue;
+      /* sorted columns (insertion: a few tens a row), with their weights */
+      for (PetscInt k = r0; k < nnz; ++k) aw[k] = weight[aj[k]];
+      for (PetscInt k = r0 + 1; k < nnz; ++k)
+        for (PetscInt m = k; m > r0 && aj[m - 1] > aj[m]; --m) {
+          PetscInt t = aj[m];
+          aj[m] = aj[m - 1], aj[m - 1] = t, t = aw[m], aw[m] = aw[m - 1], aw[m - 1] = t;
+        }
+    }
+    if (!pass) {
+      for (int32_t c = 0; c < n_elem; ++c) stamp[c] = -1;
+      e = PetscMalloc1(e1 - e0 + 1, &ai);
+      if (!e) e = PetscMalloc1(nnz + 1, &aj);
+      if (!e) e = PetscMalloc1(nnz + 1, &aw);
+    } else {
+      ai[e1 - e0] = nnz;
+    }
+  }
+  free(dptr), free(dcell), free(stamp), free(weight);
+  if (e) {
+    PetscFree(ai), PetscFree(aj), PetscFree(aw);
+    return petsc_fail(e, "allocating the cells' graph", d);
+  }
+  Mat adj = NULL;
+  MatPartitioning mp = NULL;
+  IS is = NULL, all = NULL;
+  /* MatCreateMPIAdj takes ai, aj, aw (freed with adj) */
+  e = MatCreateMPIAdj(PETSC_COMM_WORLD, e1 - e0, n_elem, ai, aj, aw, &adj);
+  if (e) PetscFree(ai), PetscFree(aj), PetscFree(aw);
+  if (!e) e = MatPartitioningCreate(PETSC_COMM_WORLD, &mp);
+  if (!e) e = MatPartitioningSetAdjacency(mp, adj);
+  if (!e) e = MatPartitioningSetNParts(mp, size);
+  /* PT-Scotch: the graph partitioner Debian's PETSc is built with (no ParMETIS there) */
+  if (!e) e = MatPartitioningSetType(mp, MATPARTITIONINGPTSCOTCH);
+  if (!e) e = MatPartitioningSetFromOptions(mp);
+  if (!e) e = MatPartitioningApply(mp, &is);
+  if (!e) e = ISAllGather(is, &all);
+  const PetscInt *p = NULL;
+  if (!e) e = ISGetIndices(all, &p);
+  if (!e) {
+    for (int32_t c = 0; c < n_elem; ++c) part[c] = (int32_t)p[c];
+    e = ISRestoreIndices(all, &p);
+  }
+  if (all) ISDestroy(&all);
+  if (is) ISDestroy(&is);
+  if (mp) MatPartitioningDestroy(&mp);
+  if (adj) MatDestroy(&adj);
+  if (e) return petsc_fail(e, "partitioning the cells", d);
+  return 0;
+}

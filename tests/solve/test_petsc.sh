@@ -3,7 +3,7 @@
 # The Stokes cavity (steady saddle point: FGMRES, Schur field split, BoomerAMG) against KLU along both centre
 # lines; the boycott vessel (the mixture, transient steps) with fixed steps against KLU; the options given
 # on the command line, in [solver.petsc] and in PETSC_OPTIONS, in that order of precedence; what a scene
-# may not set; and under mpirun: 1, 2 and 3 ranks against the serial answer, each rank assembling 1/N of the
+# may not set; and under mpirun: 1, 2, 3 (and 4) ranks against the serial answer, each rank assembling 1/N of the
 # cells (the closure points rank 0 evaluates) and keeping only its own rows, ranks > 0 writing no file, a failure to open the output
 # stopping every rank, a restart on another number of ranks.
 set -u
@@ -129,7 +129,22 @@ if command -v mpirun > /dev/null; then
     check "$n ranks: rank 0 holds its share of the entries (${here:-?} of ${all:-?})" \
       test -n "$here" -a "$((10 * n * ${here:-0}))" -lt "$((11 * ${all:-0}))" -a "$((10 * n * ${own_rows:-0}))" -lt "$((11 * ${all_rows:-0}))"
   done
-  # partitioned assembly: each rank assembles its own block of cells and calls the closures there alone. The
+  # the cells partitioned by their graph (PT-Scotch through PETSc's MatPartitioning) against the blocks of the
+  # numbering (strips of rows; -mat_partitioning_type current keeps each cell on the rank its graph row is
+  # on): on 4 ranks of the 32 x 32 cavity the border (the owned rows' entries in other ranks' columns, summed
+  # over the ranks) is under 0.8 of the strips' (a square's quadrants against 3 cuts across it: 2/3), and the
+  # velocity is the 1-rank run's to the same tolerance as on 2 and 3 ranks
+  border() { sed -n 's/.*border: [0-9]* of its rows. entries in other ranks. columns, \([0-9]*\) on all ranks.*/\1/p' "$1"; }
+  mpirun -n 4 "$sluice" run "$cav" --set solver.linear=petsc -o c4.h5 --profile > c4.log 2>&1
+  PETSC_OPTIONS="-mat_partitioning_type current" \
+    mpirun -n 4 "$sluice" run "$cav" --set solver.linear=petsc -o c4s.h5 --profile > c4s.log 2>&1
+  "$sluice" sample c4.h5 --field velocity --line 0.5,0:0.5,1 --n 65 > c4.csv 2>/dev/null
+  b4=$(border c4.log) b4s=$(border c4s.log) dv=$(max_diff c1.csv c4.csv 6)
+  echo "cavity on 4 ranks: border ${b4:-?} entries partitioned, ${b4s:-?} in strips; velocity differs from 1 rank's by $dv"
+  check "4 ranks: the partition's border is under 0.8 of the strips' (${b4:-?} of ${b4s:-?})" \
+    test -n "$b4" -a -n "$b4s" -a "$((10 * ${b4:-0}))" -lt "$((8 * ${b4s:-0}))"
+  check "cavity on 4 ranks agrees with 1 rank ($dv)" below "$dv" 1e-8
+  # partitioned assembly: each rank assembles its own part of the cells and calls the closures there alone. The
   # Bingham cavity at 12 x 12 cells (144, divisible by 2 and 3), one continuation stage, no cell fields: rank
   # 0's viscosity points (--profile) are exactly 1/N of the serial run's, and the velocity is the serial one's
   # to the solver tolerance

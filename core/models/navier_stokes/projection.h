@@ -46,6 +46,9 @@ typedef struct sl_projection sl_projection;
 
 /* The velocity solve's FGMRES budget, and the iterations after which its preconditioner is refactorised. */
 enum { SL_PROJECTION_KRYLOV_BUDGET = 30, SL_PROJECTION_SLOW = 10 };
+/* The loosest relative residual of the velocity solve (projection.c velocity_solve): two digits of the correction
+ * at least. */
+#define SL_PROJECTION_RTOL_MAX 1e-2
 
 typedef struct sl_projection_opts {
   double chi;                /* rho_min > 0: the Poisson equation's density */
@@ -61,7 +64,8 @@ int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *
 void sl_projection_destroy(sl_projection *pj);
 
 /* One trial step: u holds the predictor's velocity on entry and (u~^{k+1}, p^{k+1}) on return; state the
- * accepted (u~^k, p^k). linear_rtol: the velocity solve's relative residual. The problem's options (mass
+ * accepted (u~^k, p^k). linear_rtol: the velocity solve's accuracy, the relative correction of Newton's test
+ * (velocity_solve). The problem's options (mass
  * coefficient, history) are the step's; its constraints at t + h. */
 int sl_projection_step(sl_projection *pj, sl_flow_problem *prob, const sl_step *s, double *u, double linear_rtol,
                        double *t_assembly, sl_diag *d);
