@@ -352,6 +352,7 @@ static int pipe_write(void *self, sl_output *out, double t, const double *u, sl_
            {"phi_wall", p->phi[n - 1]},
            {"velocity_solid_wall", p->us[n - 1]},
            {"slip_length", p->inv_slip > 0.0 ? 1.0 / p->inv_slip : 0.0},
+           {"wall_normal_stress_solid", p->p_wall},
            {"iterations", (double)p->iterations}};
   for (size_t k = 0; k < sizeof s / sizeof s[0] && !rc; ++k) rc = sl_output_write_scalar(out, s[k].name, s[k].v, d);
   return rc;
