@@ -112,6 +112,11 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
   if (!rc && c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED && !p->two_phase)
     rc = sl_diag_set(d, SL_EBADINPUT, "%s = transported needs solids: [pipe] solids_fraction > 0",
                      sl_scene_where(sc, &c->solids_turbulence, at, sizeof at));
+  if (!rc && c->wall_normal_stress == PIPE_NORMAL_CONTACT_KINETIC && !sl_scene_closure(sc, "granular"))
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s = contact_kinetic adds the kinetic theory's pressure: the scene has no [closure.granular] "
+                     "(allowed without it: contact)",
+                     sl_scene_where(sc, &c->wall_normal_stress, at, sizeof at));
   if (!rc && c->pressure_gradient.n && c->length > 0.0)
     rc = sl_diag_set(d, SL_EBADINPUT,
                      "%s: the developing pipe carries its inlet's flow rate, station by station: remove [pipe] "

@@ -16,6 +16,7 @@
 enum { PIPE_NO_SLIP = 0, PIPE_FREE_SLIP, PIPE_WALL_STRESS };
 enum { PIPE_DISPERSION_GRADIENT = 0, PIPE_DISPERSION_SIMONIN };
 enum { PIPE_THETA_ALGEBRAIC = 0, PIPE_THETA_TRANSPORT };
+enum { PIPE_NORMAL_CONTACT = 0, PIPE_NORMAL_CONTACT_KINETIC };
 enum { PIPE_SOLIDS_VISCOSITY_EDDY = 0, PIPE_SOLIDS_VISCOSITY_PEIRANO_LECKNER };
 enum { PIPE_SOLIDS_TURBULENCE_EQUILIBRIUM = 0, PIPE_SOLIDS_TURBULENCE_TRANSPORTED };
 /* the pipe's scratch and saved-state arrays of n cells (pipe.buf) */
@@ -26,6 +27,7 @@ typedef struct pipe_config {
   long cells, iterations;
   double tolerance, relaxation, pseudo_step;
   int solids_wall, kinetic_pressure;
+  int wall_normal_stress; /* PIPE_NORMAL_*: what the solids' wall closure's normal_stress is */
   double solids_schmidt, dispersion_schmidt, crossing_trajectory;
   int dispersion;           /* PIPE_DISPERSION_* */
   int granular_temperature; /* PIPE_THETA_* */

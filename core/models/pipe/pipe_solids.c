@@ -75,11 +75,13 @@ static int granular_theta(pipe *p, const double *gd, sl_diag *d) {
   return 0;
 }
 
-/* The solids' normal stress on the wall, for a wall closure that takes one (`normal_stress`: wall_stress/coulomb):
-   the solids pressures the model carries, at the wall cell, [closure.solids_pressure]'s p_s(phi) and the kinetic
-   theory's p_s(phi, theta) of [closure.granular] (Lun et al. 1984, Krampa 2009 eq 5.9), the latter whether or not
-   [pipe] kinetic_pressure puts it in the radial balance (the collisions load the wall either way). Nothing else
-   presses the solids on the wall of a vertical pipe: there is no weight across the section. */
+/* The solids' normal stress on the wall, for a wall closure that takes one (`normal_stress`: wall_stress/coulomb),
+   at the wall cell: the contact (frictional) pressure of [closure.solids_pressure], p_s(phi), the normal stress
+   of Johnson & Jackson's (1987) frictional wall term tau_sn^f tan(phi_w) (Krampa 2009 eq 4.92), whose collisional
+   part is wall_stress/johnson_jackson's; with [pipe] wall_normal_stress = contact_kinetic also the kinetic
+   theory's p_s(phi, theta) of [closure.granular] (Lun et al. 1984, Krampa 2009 eq 5.9), whether or not [pipe]
+   kinetic_pressure puts it in the radial balance. Nothing else presses the solids on the wall of a vertical
+   pipe: there is no weight across the section. */
 static int wall_normal_stress(pipe *p, double *pn, sl_diag *d) {
   const int w = p->n - 1;
   double phw = p->phi[w], thw = p->theta[w], ps = 0.0;
@@ -92,7 +94,7 @@ static int wall_normal_stress(pipe *p, double *pn, sl_diag *d) {
     if ((rc = sl_point_eval(&p->psol, 1, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.solids_pressure]");
     *pn += ps;
   }
-  if (p->have_gran) {
+  if (p->have_gran && p->cfg->wall_normal_stress == PIPE_NORMAL_CONTACT_KINETIC) {
     sl_point_request rq = {"p_s", &ps, NULL, NULL};
     if ((rc = sl_point_eval(&p->gran, 1, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
     *pn += ps;
