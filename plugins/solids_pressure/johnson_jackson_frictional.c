@@ -13,15 +13,7 @@
 
 #include "granular/frictional.h"
 
-static const sl_param_desc params[] = {
-    SL_PARAM_REAL_OF(fr_params, fr, 0.05, 0.0, 1e8, "Pa", "coefficient Fr"),
-    SL_PARAM_REAL_OF(fr_params, r, 2.0, 1.0, 10.0, "1", "exponent of (phi - phi_min); r > 1 makes p_s C1 at phi_min"),
-    SL_PARAM_REAL_OF(fr_params, s, 5.0, 0.0, 10.0, "1", "exponent of (phi_max - phi)"),
-    SL_PARAM_REAL_OF(fr_params, phi_min, 0.5, 0.0, 0.74, "1", "solids fraction where the contacts start"),
-    SL_PARAM_REAL_OF(fr_params, phi_max, 0.63, 0.3, 0.74, "1", "maximum packing"),
-    SL_PARAM_REAL_OF(fr_params, delta, 0.01, 1e-4, 0.1, "1",
-                     "p_s is continued by its tangent line above phi_max - delta (C1, finite)"),
-};
+static const sl_param_desc params[] = {FR_JJ_PRESSURE_PARAMS};
 
 enum { IN_PHI, N_IN };
 enum { OUT_P_S, N_OUT };
