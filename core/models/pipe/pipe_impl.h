@@ -41,6 +41,7 @@ typedef struct pipe_config {
   double length, inlet_intensity, inlet_length_scale;
   long axial_cells;
   sl_reals pressure_gradient; /* -dP/dz held in place of the bulk velocity (n = 0: the bulk velocity drives) */
+  int loop; /* the loop's up- and down-flow sections sharing one solids inventory (pipe_loop.c) */
 } pipe_config;
 
 /* The host's quantities the closures bind to. */
@@ -101,6 +102,8 @@ typedef struct pipe {
   double *ks, *kfs; /* model C's solids turbulent energy and fluid-particle covariance (pipe_ksfs.c) */
   int ksfs_started;
   double G; /* dP/dz */
+  double phi_target; /* the section-mean solids fraction the radial balance holds: [pipe] solids_fraction, or the
+                       loop's share for this section (pipe_loop.c) */
   /* coefficients (cells) */
   double *mu_t, *mu_tk, *mu_te, *eps_prod, *eps_sink, *K, *mu_s;
   double *Kd, *slip0; /* d(K s)/ds at the last slip, and that slip u_f - u_s (the drag's Newton linearisation) */
@@ -129,6 +132,9 @@ typedef struct pipe {
   int converged, warned_yplus;
   char stop_reason[256];
   pipe_march march;
+  struct pipe *other; /* [pipe] loop: the section of the other direction (its own state and closures) */
+  long loop_iterations; /* the loop's updates of the sections' shares */
+  double loop_flux_mismatch; /* the sections' solids fluxes' last relative difference */
 } pipe;
 
 /* One point of model C's solids viscosity (pipe_peirano.c). */
@@ -163,6 +169,9 @@ pipe_pl_point pipe_pl_point_at(const pipe *p, int i);
 void pipe_ksfs_start(pipe *p);
 int pipe_ksfs_update(pipe *p, sl_diag *d);
 int pipe_converge(pipe *p, sl_diag *d);
+/* the loop (pipe_loop.c) */
+int pipe_loop_solve(pipe *p, sl_diag *d);
+double pipe_solids_flux(const pipe *p);
 /* the developing pipe (pipe_march.c) */
 int pipe_march_setup(pipe *p, sl_diag *d);
 void pipe_march_release(pipe *p);

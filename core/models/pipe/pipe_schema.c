@@ -216,6 +216,15 @@ static const sl_key pipe_keys[] = {
      .help = "drive by this mean -dP/dz along the flow instead (the bulk velocity is then what it carries; "
              "bulk_velocity its first guess and the velocity of wall_y_plus); not with length"},
     {.section = "pipe",
+     .name = "loop",
+     .type = SL_KEY_BOOL,
+     C(loop),
+     .def = 0,
+     .help = "the thesis's loop: this section and one of the other direction (gravity reversed) at the same bulk "
+             "velocity, sharing the solids so that both carry the same solids flux and their mean fraction is "
+             "solids_fraction (the loop's nominal); writes both manometric gradients and their average; not with "
+             "length or pressure_gradient"},
+    {.section = "pipe",
      .name = "length",
      .type = SL_KEY_REAL,
      C(length),

@@ -272,7 +272,7 @@ int pipe_solids_update(pipe *p, sl_diag *d) {
   rc = sl_cell_scalar_solve(&p->cs, &t, s, d);
   if (rc) return sl_diag_prefix(d, rc, "pipe: the radial solids balance");
   /* bound and restore the inventory (the developing pipe carries its inlet's flux instead: bounded only) */
-  double target = p->cfg->solids_fraction, cap_phi = p->phi_max - 0.01;
+  double target = p->phi_target, cap_phi = p->phi_max - 0.01;
   for (int pass = 0; pass < (p->march.on ? 1 : 20); ++pass) {
     double m = 0.0, A = 0.0;
     for (int i = 0; i < n; ++i) s[i] = fmin(fmax(s[i], 0.0), cap_phi), m += g->vol[i] * s[i], A += g->vol[i];
