@@ -154,6 +154,10 @@ typedef struct sluice_summary {
   double cpu_setup, cpu_flow, cpu_coupled, cpu_output;
   long output_times, output_datasets;
   double output_bytes;
+  /* under mpirun every rank writes its block of the file's values: this
+   * rank's bytes of them, and in how many collective transfers */
+  double output_bytes_rank, output_bytes_all;
+  long output_collective;
 } sluice_summary;
 
 /* Runs the scene. sum is filled in every case (a failed run's output_path
