@@ -60,7 +60,8 @@ typedef struct sluice_open_opts {
 } sluice_open_opts;
 
 /* The process's rank and the number of ranks it was launched with by mpirun (0 and 1 otherwise). With PETSc,
- * the ranks share the linear solves and every rank keeps the whole state; rank 0 alone should write output.
+ * the ranks share the linear solves and every rank keeps the whole state; every rank runs the scene and the
+ * ranks write its one output file together (parallel HDF5); rank 0 alone should print.
  * Starts MPI when launched by mpirun; call it before sluice_open. */
 int sluice_ranks(int *rank, int *size, sluice_error *e);
 

@@ -88,7 +88,7 @@ for bad in "ksp_monitor = true" "log_view = true" "ksp_view = ascii:/tmp/x" "fie
   check "its message names the file and line: $bad" grep -q "bad.ini:5" <<<"$out"
   check "nothing written for: $bad" test ! -e bad.h5
 done
-# several ranks (mpirun): the linear solves shared, rank 0 writing; the same answer as KLU on one rank
+# several ranks (mpirun): the linear solves shared, the file written by all ranks; the same answer as KLU on one rank
 if command -v mpirun > /dev/null; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
   for n in 1 2 3; do
@@ -283,7 +283,7 @@ if command -v mpirun > /dev/null; then
   else
     echo "h5dump not found: the files of several ranks are not compared dataset by dataset"
   fi
-  # rank 0 alone opens the output: when it cannot, every rank stops (exit 2), none waits for it
+  # an output that may not be replaced: every rank stops (exit 2), none waits for another
   echo "not sluice's" > foreign.h5
   out=$(timeout 120 mpirun -n 2 "$sluice" run "$cav" --set mesh.cells=8,8 -o foreign.h5 2>&1); rc=$?
   check "2 ranks, an output rank 0 may not replace: exit 2 on every rank (exit $rc)" test "$rc" = 2
