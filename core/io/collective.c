@@ -115,8 +115,7 @@ done:
 #endif
 }
 
-int sl_io_serial_interlude(sl_output *o, int (*fn)(sl_output *, const void *, sl_diag *), const void *arg,
-                           sl_diag *d) {
+int sl_io_serial_interlude(sl_output *o, int (*fn)(sl_output *, const void *, sl_diag *), const void *arg, sl_diag *d) {
   if (!o->collective) return fn(o, arg, d);
   if (o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: step %d is still open", o->path, o->next_index);
   const char *name = o->committed ? o->path : o->tmp_path;

@@ -70,7 +70,7 @@ struct sl_output {
   int collective;      /* every rank writes this file (collective.c); rank, ranks then MPI_COMM_WORLD's */
   int rank, ranks;
   double bytes_here, bytes_all; /* of the values (fields, mesh, checkpoints): this rank's, all ranks' */
-  long n_collective;   /* of those writes HDF5 made collectively */
+  long n_collective;            /* of those writes HDF5 made collectively */
   hid_t file;
   int have_mesh, dim, nodes_per_cell;
   int32_t n_vertices, n_cells;
@@ -125,8 +125,7 @@ int sl_io_write_rows(sl_output *o, hid_t ds, hid_t mtype, size_t elem, hsize_t n
 /* fn(o, arg, d) on rank 0 alone, into the file the ranks closed for it (what
  * parallel HDF5 cannot write: variable-length strings); then every rank
  * opens it again. Just fn when not collective. */
-int sl_io_serial_interlude(sl_output *o, int (*fn)(sl_output *, const void *, sl_diag *), const void *arg,
-                           sl_diag *d);
+int sl_io_serial_interlude(sl_output *o, int (*fn)(sl_output *, const void *, sl_diag *), const void *arg, sl_diag *d);
 
 /* output.c: the file takes its name (the first complete output time or
  * checkpoint); the old sidecars go. */

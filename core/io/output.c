@@ -142,8 +142,8 @@ static hid_t lcpl_parents(void) {
 }
 
 /* Creates and writes a dataset of rank 1 or 2 at `name` (relative to loc). */
-static int write_array(sl_output *o, hid_t loc, const char *name, const char *full, hid_t ftype, hid_t mtype,
-                       int rank, const hsize_t *dims, const void *buf, hid_t *keep, sl_diag *d) {
+static int write_array(sl_output *o, hid_t loc, const char *name, const char *full, hid_t ftype, hid_t mtype, int rank,
+                       const hsize_t *dims, const void *buf, hid_t *keep, sl_diag *d) {
   hid_t lcpl = lcpl_parents(), space = H5Screate_simple(rank, dims, NULL), ds = -1;
   hid_t dcpl = o->collective ? H5Pcreate(H5P_DATASET_CREATE) : H5P_DEFAULT;
   int rc = 0;

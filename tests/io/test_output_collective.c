@@ -59,7 +59,8 @@ static int write_file(const char *path, int collective, double bytes[2], long *n
   make_data(g, 0);
   int rc = sl_output_open_opts(&o, path, &oo, d);
   if (!rc) rc = sl_output_write_mesh(o, 2, NV, g->xy, NC, 4, g->quads, "Quadrilateral", d);
-  const sl_provenance_closure cl = {"closure.viscosity", "viscosity", "constant", "1", "/x/viscosity.so", "mu = 1e-3\n"};
+  const sl_provenance_closure cl = {"closure.viscosity", "viscosity",  "constant", "1",
+                                    "/x/viscosity.so",   "mu = 1e-3\n"};
   const sl_provenance prov = {"0.1.0", "[mesh]\ncells = 7, 5\n", 1, &cl};
   if (!rc) rc = sl_output_write_provenance(o, &prov, d);
   for (int k = 0; !rc && k < N_STEPS; ++k) {
