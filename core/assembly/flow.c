@@ -121,14 +121,18 @@ static void eval_state(const flow_work *w, const sl_th_space *th, const double *
   const sl_fe_values *fv = w->fv;
   int c = fv->cell, nb = th->vel->dofs_per_cell, np = th->pres->dofs_per_cell, dim = th->mesh->dim;
   const int32_t *vd = th->vel->cell_dofs + (size_t)c * nb, *pd = th->pres->cell_dofs + (size_t)c * np;
+  double ul[MAX_COMP][SL_ELEMENT_MAX_BASIS]; /* the cell's velocity values, gathered once */
+  for (int a = 0; a < th->n_comp; ++a) {
+    const double *ua = u + sl_th_vel_dof(th, a, 0);
+    for (int b = 0; b < nb; ++b) ul[a][b] = ua[vd[b]];
+  }
   for (int q = 0; q < fv->quad.n; ++q) {
     qp_state *s = &st[q];
     memset(s, 0, sizeof *s);
     for (int a = 0; a < th->n_comp; ++a) {
       int A = w->frame[a];
-      const double *ua = u + sl_th_vel_dof(th, a, 0);
       for (int b = 0; b < nb; ++b) {
-        double v = ua[vd[b]];
+        double v = ul[a][b];
         s->u[A] += v * fv->phi[0][q][b];
         for (int j = 0; j < dim; ++j) s->G[A][j] += v * fv->grad[0][q][b][j];
       }
@@ -258,7 +262,8 @@ static void axi_accumulate(axi_acc *restrict acc, double *Ke, int n, int nc, int
     for (int j = i; j < nb; ++j) pp[npair++] = phi[i] * phi[j];
   for (int k = 0; k < nc * nc; ++k) {
     double *restrict M = acc->M[k], ck = wq * cw[k];
-    for (int e = 0; e < npair; ++e) M[e] += ck * pp[e];
+    if (ck != 0.0) /* (z, theta) without a Coriolis term */
+      for (int e = 0; e < npair; ++e) M[e] += ck * pp[e];
   }
   for (int i = 0; i < nb; ++i) {
     double gi0 = wm * g0[i], gi1 = wm * g1[i], hi = wm * h[i], pi = phi[i];
