@@ -26,6 +26,8 @@ static double wall_grading(double R, double w, int n) {
 }
 
 static void release(pipe *p) {
+  if (!p) return;
+  release(p->other);
   double **a[] = {&p->uf,    &p->us,        &p->phi,      &p->k,        &p->eps, &p->theta, &p->mu_t,
                   &p->mu_tk, &p->mu_te,     &p->eps_prod, &p->eps_sink, &p->K,   &p->mu_s,  &p->rhs,
                   &p->x,     &p->face_flux, &p->Kd,       &p->slip0,    &p->ks,  &p->kfs};
@@ -74,13 +76,16 @@ static int build_grid(pipe *p, sl_diag *d) {
   return rc;
 }
 
-static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) {
+/* One section of the pipe with gravity gz along its flow. */
+static int pipe_create(sl_scene *sc, double gz, pipe **out, sl_diag *d) {
+  *out = NULL;
   pipe *p = calloc(1, sizeof *p);
   if (!p) return sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
   p->sc = sc, p->cfg = sc->config;
   const pipe_config *c = p->cfg;
   char at[400];
-  p->n = (int)c->cells, p->R = 0.5 * c->diameter, p->gz = sc->flow.gravity.n ? sc->flow.gravity.v[0] : -9.81;
+  p->n = (int)c->cells, p->R = 0.5 * c->diameter, p->gz = gz;
+  p->phi_target = c->solids_fraction;
   p->rho_f = sc->fluid.density, p->mu_f = sc->fluid.viscosity;
   p->rho_s = sc->solid.density, p->d_p = sc->solid.diameter, p->phi_max = sc->solid.phi_max;
   p->two_phase = c->solids_fraction > 0.0;
@@ -112,11 +117,21 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
   if (!rc && c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED && !p->two_phase)
     rc = sl_diag_set(d, SL_EBADINPUT, "%s = transported needs solids: [pipe] solids_fraction > 0",
                      sl_scene_where(sc, &c->solids_turbulence, at, sizeof at));
+  if (!rc && c->wall_normal_stress == PIPE_NORMAL_CONTACT_KINETIC && !sl_scene_closure(sc, "granular"))
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s = contact_kinetic adds the kinetic theory's pressure: the scene has no [closure.granular] "
+                     "(allowed without it: contact)",
+                     sl_scene_where(sc, &c->wall_normal_stress, at, sizeof at));
   if (!rc && c->pressure_gradient.n && c->length > 0.0)
     rc = sl_diag_set(d, SL_EBADINPUT,
                      "%s: the developing pipe carries its inlet's flow rate, station by station: remove [pipe] "
                      "length or pressure_gradient",
                      sl_scene_where(sc, &c->pressure_gradient, at, sizeof at));
+  if (!rc && c->loop && (c->pressure_gradient.n || c->length > 0.0))
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s = true: the loop's two sections share one bulk velocity and are fully developed: remove "
+                     "[pipe] %s",
+                     sl_scene_where(sc, &c->loop, at, sizeof at), c->pressure_gradient.n ? "pressure_gradient" : "length");
   if (!rc) rc = build_grid(p, d);
   const int n = p->n;
   if (!rc) {
@@ -145,8 +160,22 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
     p->k[i] = k0, p->eps[i] = pow(0.09, 0.75) * pow(k0, 1.5) / l0;
     p->phi[i] = c->solids_fraction, p->theta[i] = 1e-4;
   }
+  *out = p;
+  return 0;
+}
+
+static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) {
+  const pipe_config *c = sc->config;
+  double gz = sc->flow.gravity.n ? sc->flow.gravity.v[0] : -9.81;
+  pipe *p;
+  int rc = pipe_create(sc, gz, &p, d);
+  if (rc) return rc;
+  if (c->loop && (rc = pipe_create(sc, -gz, &p->other, d))) {
+    release(p);
+    return rc;
+  }
   *info = (sl_model_info){
-      .integrator = SL_INTEGRATE_BDF, .n = n, .n_err = n, .u = p->uf, .has_steady = 1, .state_name = "velocity"};
+      .integrator = SL_INTEGRATE_BDF, .n = p->n, .n_err = p->n, .u = p->uf, .has_steady = 1, .state_name = "velocity"};
   *self = p;
   return 0;
 }
@@ -225,11 +254,13 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
   pipe *p = self;
   const pipe_config *c = p->cfg;
   const int n = p->n;
-  int rc = p->march.on ? pipe_march_solve(p, d) : pipe_converge(p, d);
-  /* the last coefficients and wall stresses of the state reached */
-  if (!rc) rc = pipe_turbulence_coefficients(p, d);
-  if (!rc) rc = pipe_wall_function(p, d);
-  if (!rc && p->two_phase) rc = pipe_solids_coefficients(p, d);
+  int rc = p->march.on ? pipe_march_solve(p, d) : p->other ? pipe_loop_solve(p, d) : pipe_converge(p, d);
+  /* the last coefficients and wall stresses of the state reached (the loop's: of both sections) */
+  for (pipe *q = p; q && !rc; q = q->other) {
+    rc = pipe_turbulence_coefficients(q, d);
+    if (!rc) rc = pipe_wall_function(q, d);
+    if (!rc && q->two_phase) rc = pipe_solids_coefficients(q, d);
+  }
   *steps = 1, *its = p->iterations;
   if (u != p->uf) memcpy(u, p->uf, (size_t)n * sizeof(double));
   if (!rc && !p->converged) {
@@ -303,6 +334,12 @@ static double at_radius(const pipe *p, const double *f, double r) {
   return f[p->n - 1];
 }
 
+static double loop_phi_mean(const pipe *p) {
+  double A = 0.0, m = 0.0;
+  for (int i = 0; i < p->n; ++i) A += p->g.vol[i], m += p->g.vol[i] * p->phi[i];
+  return m / A;
+}
+
 static int pipe_write(void *self, sl_output *out, double t, const double *u, sl_diag *d) {
   (void)t, (void)u;
   pipe *p = self;
@@ -352,8 +389,27 @@ static int pipe_write(void *self, sl_output *out, double t, const double *u, sl_
            {"phi_wall", p->phi[n - 1]},
            {"velocity_solid_wall", p->us[n - 1]},
            {"slip_length", p->inv_slip > 0.0 ? 1.0 / p->inv_slip : 0.0},
+           {"wall_normal_stress_solid", p->p_wall},
            {"iterations", (double)p->iterations}};
   for (size_t k = 0; k < sizeof s / sizeof s[0] && !rc; ++k) rc = sl_output_write_scalar(out, s[k].name, s[k].v, d);
+  if (!rc && p->other) { /* the loop (pipe_loop.c): both sections' in-situ fractions and manometric gradients */
+    const pipe *up = p->gz < 0.0 ? p : p->other, *dn = p->gz < 0.0 ? p->other : p;
+    double mu = -up->G + up->rho_f * up->gz, md = -dn->G + dn->rho_f * dn->gz;
+    struct {
+      const char *name;
+      double v;
+    } l[] = {{"loop_phi_mean_up", loop_phi_mean(up)},
+             {"loop_phi_mean_down", loop_phi_mean(dn)},
+             {"loop_manometric_gradient_up", mu},
+             {"loop_manometric_gradient_down", md},
+             {"loop_manometric_gradient_average", 0.5 * (mu + md)},
+             {"loop_wall_shear_stress_up", up->tau_fw + up->tau_sw},
+             {"loop_wall_shear_stress_down", dn->tau_fw + dn->tau_sw},
+             {"loop_solids_flux", pipe_solids_flux(p)},
+             {"loop_flux_mismatch", p->loop_flux_mismatch},
+             {"loop_iterations", (double)p->loop_iterations}};
+    for (size_t k = 0; k < sizeof l / sizeof l[0] && !rc; ++k) rc = sl_output_write_scalar(out, l[k].name, l[k].v, d);
+  }
   return rc;
 }
 
@@ -368,6 +424,14 @@ static void pipe_stats(void *self, const sl_run_result *res, sl_model_stats *st)
   snprintf(st->coupling_summary, sizeof st->coupling_summary,
            "pipe: -dP/dz %.6g Pa/m (manometric %.6g), tau_w %.4g Pa (fluid %.4g, solids %.4g), f %.5g, y+ %.3g", -p->G,
            -p->G + p->rho_f * p->gz, tau, p->tau_fw, p->tau_sw, tau / (0.5 * p->rho_f * V * V), p->y_plus);
+  if (p->other) {
+    const pipe *u = p->gz < 0.0 ? p : p->other, *w = p->gz < 0.0 ? p->other : p;
+    double mu = -u->G + u->rho_f * u->gz, md = -w->G + w->rho_f * w->gz;
+    size_t L = strlen(st->coupling_summary);
+    snprintf(st->coupling_summary + L, sizeof st->coupling_summary - L,
+             "; loop: manometric up %.6g, down %.6g, average %.6g Pa/m, phi up %.4f, down %.4f", mu, md,
+             0.5 * (mu + md), loop_phi_mean(u), loop_phi_mean(w));
+  }
   snprintf(st->linear_summary, sizeof st->linear_summary, "klu, %d radial cells", p->n);
 }
 

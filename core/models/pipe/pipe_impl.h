@@ -16,6 +16,7 @@
 enum { PIPE_NO_SLIP = 0, PIPE_FREE_SLIP, PIPE_WALL_STRESS };
 enum { PIPE_DISPERSION_GRADIENT = 0, PIPE_DISPERSION_SIMONIN };
 enum { PIPE_THETA_ALGEBRAIC = 0, PIPE_THETA_TRANSPORT };
+enum { PIPE_NORMAL_CONTACT = 0, PIPE_NORMAL_CONTACT_KINETIC };
 enum { PIPE_SOLIDS_VISCOSITY_EDDY = 0, PIPE_SOLIDS_VISCOSITY_PEIRANO_LECKNER };
 enum { PIPE_SOLIDS_TURBULENCE_EQUILIBRIUM = 0, PIPE_SOLIDS_TURBULENCE_TRANSPORTED };
 /* the pipe's scratch and saved-state arrays of n cells (pipe.buf) */
@@ -26,6 +27,7 @@ typedef struct pipe_config {
   long cells, iterations;
   double tolerance, relaxation, pseudo_step;
   int solids_wall, kinetic_pressure;
+  int wall_normal_stress; /* PIPE_NORMAL_*: what the solids' wall closure's normal_stress is */
   double solids_schmidt, dispersion_schmidt, crossing_trajectory;
   int dispersion;           /* PIPE_DISPERSION_* */
   int granular_temperature; /* PIPE_THETA_* */
@@ -39,6 +41,7 @@ typedef struct pipe_config {
   double length, inlet_intensity, inlet_length_scale;
   long axial_cells;
   sl_reals pressure_gradient; /* -dP/dz held in place of the bulk velocity (n = 0: the bulk velocity drives) */
+  int loop; /* the loop's up- and down-flow sections sharing one solids inventory (pipe_loop.c) */
 } pipe_config;
 
 /* The host's quantities the closures bind to. */
@@ -58,6 +61,7 @@ enum {
   PQ_WALL_DISTANCE,
   PQ_D_VESSEL,
   PQ_GRAVITY,
+  PQ_NORMAL_STRESS,
   PQ_N
 };
 extern const char *const pipe_quantity_names[PQ_N];
@@ -98,6 +102,8 @@ typedef struct pipe {
   double *ks, *kfs; /* model C's solids turbulent energy and fluid-particle covariance (pipe_ksfs.c) */
   int ksfs_started;
   double G; /* dP/dz */
+  double phi_target; /* the section-mean solids fraction the radial balance holds: [pipe] solids_fraction, or the
+                       loop's share for this section (pipe_loop.c) */
   /* coefficients (cells) */
   double *mu_t, *mu_tk, *mu_te, *eps_prod, *eps_sink, *K, *mu_s;
   double *Kd, *slip0; /* d(K s)/ds at the last slip, and that slip u_f - u_s (the drag's Newton linearisation) */
@@ -106,10 +112,11 @@ typedef struct pipe {
   double tau_fw, tau_sw, u_tau, y_plus, k_wall, eps_wall, a_fw, a_sw;
   double u_wall;   /* the solids' slip speed at the wall the solids' wall closure saw last */
   double inv_slip; /* 1/lambda_slip of the solids' wall closure at the wall cell (0: none or free slip) */
+  double p_wall;   /* the solids' normal stress on the wall: their pressures at the wall cell (pipe_solids.c) */
   /* closures */
   sl_point_closure turb, wallf, drag, gran, psol, walls, lift;
   int have_lift; /* [closure.lift]: the shear lift in the radial solids balance (pipe_solids.c) */
-  int have_gran, have_psol, have_walls, walls_at_node, wall_energy, ks_wall_energy;
+  int have_gran, have_psol, have_walls, walls_at_node, walls_normal, wall_energy, ks_wall_energy;
   /* solvers */
   sl_cell_scalar cs;
   sl_csr A;
@@ -125,6 +132,9 @@ typedef struct pipe {
   int converged, warned_yplus;
   char stop_reason[256];
   pipe_march march;
+  struct pipe *other; /* [pipe] loop: the section of the other direction (its own state and closures) */
+  long loop_iterations; /* the loop's updates of the sections' shares */
+  double loop_flux_mismatch; /* the sections' solids fluxes' last relative difference */
 } pipe;
 
 /* One point of model C's solids viscosity (pipe_peirano.c). */
@@ -159,6 +169,9 @@ pipe_pl_point pipe_pl_point_at(const pipe *p, int i);
 void pipe_ksfs_start(pipe *p);
 int pipe_ksfs_update(pipe *p, sl_diag *d);
 int pipe_converge(pipe *p, sl_diag *d);
+/* the loop (pipe_loop.c) */
+int pipe_loop_solve(pipe *p, sl_diag *d);
+double pipe_solids_flux(const pipe *p);
 /* the developing pipe (pipe_march.c) */
 int pipe_march_setup(pipe *p, sl_diag *d);
 void pipe_march_release(pipe *p);

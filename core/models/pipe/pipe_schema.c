@@ -106,6 +106,15 @@ static const sl_key pipe_keys[] = {
      .def = 1,
      .help = "with [closure.granular]: its p_s(phi, theta) in the radial solids balance (false: its viscosity only)"},
     {.section = "pipe",
+     .name = "wall_normal_stress",
+     .type = SL_KEY_CHOICE,
+     C(wall_normal_stress),
+     .choices = "contact|contact_kinetic",
+     .def = PIPE_NORMAL_CONTACT,
+     .help = "the solids' normal stress on the wall a solids wall closure takes (normal_stress: wall_stress/coulomb): "
+             "the contact pressure of [closure.solids_pressure] at the wall cell (contact, Johnson & Jackson 1987's "
+             "frictional term), or that plus the kinetic pressure of [closure.granular] (contact_kinetic)"},
+    {.section = "pipe",
      .name = "granular_temperature",
      .type = SL_KEY_CHOICE,
      C(granular_temperature),
@@ -206,6 +215,15 @@ static const sl_key pipe_keys[] = {
      .def_doc = "none: the bulk velocity drives",
      .help = "drive by this mean -dP/dz along the flow instead (the bulk velocity is then what it carries; "
              "bulk_velocity its first guess and the velocity of wall_y_plus); not with length"},
+    {.section = "pipe",
+     .name = "loop",
+     .type = SL_KEY_BOOL,
+     C(loop),
+     .def = 0,
+     .help = "the thesis's loop: this section and one of the other direction (gravity reversed) at the same bulk "
+             "velocity, sharing the solids so that both carry the same solids flux and their mean fraction is "
+             "solids_fraction (the loop's nominal); writes both manometric gradients and their average; not with "
+             "length or pressure_gradient"},
     {.section = "pipe",
      .name = "length",
      .type = SL_KEY_REAL,
