@@ -426,8 +426,9 @@ static void spectrometer_steady(void) {
   const double s = sin(SP_G), c = cos(SP_G), xa = 1 / s + 11 * SP_DELTA, xb = 1 / s + 13 * SP_DELTA;
   const double area = s * (xb * xb - xa * xa) / 2 + 1.25 * SP_DELTA * c * (xb - xa);
   const double u_s = 0.2 * SP_Q / (2 * M_PI) / area, dv = -1.25 * (1 / 4.22e-4) * c * SP_DELTA * SP_DELTA * 1.06 * u_s;
-  printf("  swirl change %.4f with the diversion, the Coriolis force on the through-flow u_s = %.4f: %.4f (ratio %.2f)\n",
-         v.swirl - b.swirl, u_s, dv, (v.swirl - b.swirl) / dv);
+  printf(
+      "  swirl change %.4f with the diversion, the Coriolis force on the through-flow u_s = %.4f: %.4f (ratio %.2f)\n",
+      v.swirl - b.swirl, u_s, dv, (v.swirl - b.swirl) / dv);
   CHECK_MSG((v.swirl - b.swirl) / dv > 0.5 && (v.swirl - b.swirl) / dv < 2, "swirl change %.4f against %.4f",
             v.swirl - b.swirl, dv);
 }
