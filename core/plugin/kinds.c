@@ -26,6 +26,8 @@ static const sl_input_info inputs[] = {
     {"d_vessel", "m", "vessel (pipe, column) diameter; infinite when the scene gives none", 0.1, 1e-6, HUGE_VAL},
     {"wall_distance", "m", "distance of the first node off the wall from the wall", 1e-3, 1e-9, 10.0},
     {"slip_wall", "m s^-1", "tangential solids speed at the first node off the wall", 1.0, 0.0, 100.0},
+    {"normal_stress", "Pa", "normal stress of the solids on the wall (their pressure at the first node off it)", 100.0,
+     0.0, 1e9},
     {"u_t", "m s^-1", "terminal settling velocity of one particle", 1e-3, 0.0, 100.0},
     {"pressure", "Pa", "local pressure", 1e5, -1e12, 1e12},
     {"k", "m^2 s^-2", "turbulent kinetic energy", 1e-2, 1e-30, 1e6},
@@ -53,6 +55,7 @@ static const char *const input_names[] = {"phi",
                                           "d_vessel",
                                           "wall_distance",
                                           "slip_wall",
+                                          "normal_stress",
                                           "u_t",
                                           "pressure",
                                           "k",
@@ -121,7 +124,7 @@ static const sl_kind_info contracts[] = {
         {"shear stress the wall exerts on the solids as a function of their tangential slip at the wall",
          {"slip_wall"},
          1u,
-         {"phi", "theta", "wall_distance", "rho_s", "mu_f", "d_p"},
+         {"phi", "theta", "wall_distance", "rho_s", "mu_f", "d_p", "normal_stress"},
          {{"tau_w", "Pa", "solids wall shear stress (magnitude, opposing the slip)", 1},
           {"bagnold_number", "1", "Bagnold number at the wall (optional, written to the output)", 0},
           {"theta_flux", "kg s^-3", "granular-energy flux through the wall (optional, with a transported theta)", 0},
@@ -131,7 +134,8 @@ static const sl_kind_info contracts[] = {
          "slip_wall < 0; phi outside [0, packing]; wall_distance <= 0; any NaN. The closure takes no shear_rate "
          "(slip_wall and wall_distance give the wall's shear rate)",
          "two_fluid 2-D model and shear layer, on walls with solids = wall_stress: tau_w and dtau_w/dslip_wall; "
-         "pipe: [closure.wall_stress.solids] the same, and [closure.wall_stress.fluid] the fluid's wall function "
+         "pipe: [closure.wall_stress.solids] the same (normal_stress: the solids pressures of the wall cell, "
+         "[closure.solids_pressure] and the kinetic theory's), and [closure.wall_stress.fluid] the fluid's wall function "
          "(u_tau, y_plus, k_wall, epsilon_wall besides tau_w)"},
     [SL_KIND_GRANULAR] =
         {"kinetic-theory coefficients of the solids phase as functions of the solids fraction and the granular "

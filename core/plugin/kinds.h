@@ -39,7 +39,7 @@ typedef struct sl_kind_output {
   int required;
 } sl_kind_output;
 
-enum { SL_KIND_MAX_INPUTS = 6, SL_KIND_MAX_OUTPUTS = 6 };
+enum { SL_KIND_MAX_INPUTS = 8, SL_KIND_MAX_OUTPUTS = 6 };
 
 /* A kind's contract as a closure author reads it. */
 typedef struct sl_kind_info {

@@ -146,6 +146,7 @@ typedef struct sl_param_desc {
  *   gravity     magnitude of the effective body force    m s^-2
  *   d_vessel    vessel (pipe, column) diameter           m
  *   wall_distance, slip_wall   distance to and tangential slip at a wall
+ *   normal_stress  the solids' normal stress on a wall     Pa
  *   k, epsilon  turbulent kinetic energy and its dissipation rate  m^2 s^-2, m^2 s^-3
  *   nbar        reference porosity of a sand (Pringle 2001 eq 4.30), a state 1
  *   strain_amplitude  shear strain amplitude of the half-cycle ended at a strain

@@ -75,6 +75,18 @@ enum { FR_OUT_P_FR, FR_OUT_MU_FR, FR_N_OUT };
         {"mu_fr", "Pa s", SL_FIELD_OPTIONAL, 0, 0, 0, "frictional (Coulomb) shear viscosity"},        \
   }
 
+/* The parameters of the Johnson-Jackson pressure (granular/johnson_jackson_frictional, and
+   solids_pressure/johnson_jackson_frictional where p_fr is the solids pressure p_s). */
+#define FR_JJ_PRESSURE_PARAMS                                                                                      \
+  SL_PARAM_REAL_OF(fr_params, fr, 0.05, 0.0, 1e8, "Pa", "coefficient Fr"),                                         \
+      SL_PARAM_REAL_OF(fr_params, r, 2.0, 1.0, 10.0, "1",                                                          \
+                       "exponent of (phi - phi_min); r > 1 makes p_fr C1 at phi_min"),                             \
+      SL_PARAM_REAL_OF(fr_params, s, 5.0, 0.0, 10.0, "1", "exponent of (phi_max - phi)"),                          \
+      SL_PARAM_REAL_OF(fr_params, phi_min, 0.5, 0.0, 0.74, "1", "solids fraction where friction starts"),          \
+      SL_PARAM_REAL_OF(fr_params, phi_max, 0.63, 0.3, 0.74, "1", "maximum packing"),                               \
+      SL_PARAM_REAL_OF(fr_params, delta, 0.01, 1e-4, 0.1, "1",                                                     \
+                       "p_fr is continued by its tangent line above phi_max - delta (C1, finite)")
+
 /* Johnson-Jackson pressure without continuation, phi_min < phi < phi_max. */
 static inline double fr_jj_raw(const fr_params *p, double phi, double *dp) {
   double a = phi - p->phi_min, b = p->phi_max - phi;

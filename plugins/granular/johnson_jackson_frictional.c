@@ -25,13 +25,7 @@
 static const sl_param_desc params[] = {
     SL_PARAM_REAL_OF(fr_params, friction_angle, 0.49741883681838395, 0.0, 1.5707963267948966, "rad",
                      "angle of internal friction phi_f in RADIANS (28.5 degrees = 0.4974)"),
-    SL_PARAM_REAL_OF(fr_params, fr, 0.05, 0.0, 1e8, "Pa", "coefficient Fr"),
-    SL_PARAM_REAL_OF(fr_params, r, 2.0, 1.0, 10.0, "1", "exponent of (phi - phi_min); r > 1 makes p_fr C1 at phi_min"),
-    SL_PARAM_REAL_OF(fr_params, s, 5.0, 0.0, 10.0, "1", "exponent of (phi_max - phi)"),
-    SL_PARAM_REAL_OF(fr_params, phi_min, 0.5, 0.0, 0.74, "1", "solids fraction where friction starts"),
-    SL_PARAM_REAL_OF(fr_params, phi_max, 0.63, 0.3, 0.74, "1", "maximum packing"),
-    SL_PARAM_REAL_OF(fr_params, delta, 0.01, 1e-4, 0.1, "1",
-                     "p_fr is continued by its tangent line above phi_max - delta (C1, finite)"),
+    FR_JJ_PRESSURE_PARAMS,
     SL_PARAM_REAL_OF(fr_params, shear_rate_reg, 1e-4, 1e-12, 1.0, "s^-1",
                      "regularisation: mu_fr = p_fr sin(phi_f)/sqrt(shear_rate^2 + shear_rate_reg^2)"),
 };

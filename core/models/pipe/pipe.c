@@ -112,6 +112,11 @@ static int pipe_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d
   if (!rc && c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED && !p->two_phase)
     rc = sl_diag_set(d, SL_EBADINPUT, "%s = transported needs solids: [pipe] solids_fraction > 0",
                      sl_scene_where(sc, &c->solids_turbulence, at, sizeof at));
+  if (!rc && c->wall_normal_stress == PIPE_NORMAL_CONTACT_KINETIC && !sl_scene_closure(sc, "granular"))
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s = contact_kinetic adds the kinetic theory's pressure: the scene has no [closure.granular] "
+                     "(allowed without it: contact)",
+                     sl_scene_where(sc, &c->wall_normal_stress, at, sizeof at));
   if (!rc && c->pressure_gradient.n && c->length > 0.0)
     rc = sl_diag_set(d, SL_EBADINPUT,
                      "%s: the developing pipe carries its inlet's flow rate, station by station: remove [pipe] "
@@ -352,6 +357,7 @@ static int pipe_write(void *self, sl_output *out, double t, const double *u, sl_
            {"phi_wall", p->phi[n - 1]},
            {"velocity_solid_wall", p->us[n - 1]},
            {"slip_length", p->inv_slip > 0.0 ? 1.0 / p->inv_slip : 0.0},
+           {"wall_normal_stress_solid", p->p_wall},
            {"iterations", (double)p->iterations}};
   for (size_t k = 0; k < sizeof s / sizeof s[0] && !rc; ++k) rc = sl_output_write_scalar(out, s[k].name, s[k].v, d);
   return rc;

@@ -7,7 +7,7 @@
 
 const char *const pipe_quantity_names[PQ_N] = {
     "phi",   "slip", "k",          "epsilon",   "theta",         "shear_rate", "rho_f",  "mu_f",
-    "rho_s", "d_p",  "sphericity", "slip_wall", "wall_distance", "d_vessel",   "gravity"};
+    "rho_s", "d_p",  "sphericity", "slip_wall", "wall_distance", "d_vessel",   "gravity", "normal_stress"};
 
 static const char *const model_name = "the pipe model";
 
@@ -66,6 +66,7 @@ int pipe_closures_bind(pipe *p, sl_diag *d) {
   if (!rc) rc = bind(p, &p->walls, "wall_stress.solids", &p->have_walls, d);
   if (!rc) rc = bind(p, &p->lift, "lift", &p->have_lift, d);
   if (!rc && p->have_walls) p->walls_at_node = sl_point_has_input(&p->walls, "wall_distance");
+  if (!rc && p->have_walls) p->walls_normal = sl_point_has_input(&p->walls, "normal_stress");
   if (!rc && p->have_walls && p->have_gran && p->cfg->granular_temperature == PIPE_THETA_TRANSPORT)
     p->wall_energy = sl_point_has_output(&p->walls, "theta_flux");
   if (!rc && p->have_walls && p->cfg->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED)

@@ -16,6 +16,7 @@
 enum { PIPE_NO_SLIP = 0, PIPE_FREE_SLIP, PIPE_WALL_STRESS };
 enum { PIPE_DISPERSION_GRADIENT = 0, PIPE_DISPERSION_SIMONIN };
 enum { PIPE_THETA_ALGEBRAIC = 0, PIPE_THETA_TRANSPORT };
+enum { PIPE_NORMAL_CONTACT = 0, PIPE_NORMAL_CONTACT_KINETIC };
 enum { PIPE_SOLIDS_VISCOSITY_EDDY = 0, PIPE_SOLIDS_VISCOSITY_PEIRANO_LECKNER };
 enum { PIPE_SOLIDS_TURBULENCE_EQUILIBRIUM = 0, PIPE_SOLIDS_TURBULENCE_TRANSPORTED };
 /* the pipe's scratch and saved-state arrays of n cells (pipe.buf) */
@@ -26,6 +27,7 @@ typedef struct pipe_config {
   long cells, iterations;
   double tolerance, relaxation, pseudo_step;
   int solids_wall, kinetic_pressure;
+  int wall_normal_stress; /* PIPE_NORMAL_*: what the solids' wall closure's normal_stress is */
   double solids_schmidt, dispersion_schmidt, crossing_trajectory;
   int dispersion;           /* PIPE_DISPERSION_* */
   int granular_temperature; /* PIPE_THETA_* */
@@ -58,6 +60,7 @@ enum {
   PQ_WALL_DISTANCE,
   PQ_D_VESSEL,
   PQ_GRAVITY,
+  PQ_NORMAL_STRESS,
   PQ_N
 };
 extern const char *const pipe_quantity_names[PQ_N];
@@ -106,10 +109,11 @@ typedef struct pipe {
   double tau_fw, tau_sw, u_tau, y_plus, k_wall, eps_wall, a_fw, a_sw;
   double u_wall;   /* the solids' slip speed at the wall the solids' wall closure saw last */
   double inv_slip; /* 1/lambda_slip of the solids' wall closure at the wall cell (0: none or free slip) */
+  double p_wall;   /* the solids' normal stress on the wall: their pressures at the wall cell (pipe_solids.c) */
   /* closures */
   sl_point_closure turb, wallf, drag, gran, psol, walls, lift;
   int have_lift; /* [closure.lift]: the shear lift in the radial solids balance (pipe_solids.c) */
-  int have_gran, have_psol, have_walls, walls_at_node, wall_energy, ks_wall_energy;
+  int have_gran, have_psol, have_walls, walls_at_node, walls_normal, wall_energy, ks_wall_energy;
   /* solvers */
   sl_cell_scalar cs;
   sl_csr A;

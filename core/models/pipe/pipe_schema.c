@@ -106,6 +106,15 @@ static const sl_key pipe_keys[] = {
      .def = 1,
      .help = "with [closure.granular]: its p_s(phi, theta) in the radial solids balance (false: its viscosity only)"},
     {.section = "pipe",
+     .name = "wall_normal_stress",
+     .type = SL_KEY_CHOICE,
+     C(wall_normal_stress),
+     .choices = "contact|contact_kinetic",
+     .def = PIPE_NORMAL_CONTACT,
+     .help = "the solids' normal stress on the wall a solids wall closure takes (normal_stress: wall_stress/coulomb): "
+             "the contact pressure of [closure.solids_pressure] at the wall cell (contact, Johnson & Jackson 1987's "
+             "frictional term), or that plus the kinetic pressure of [closure.granular] (contact_kinetic)"},
+    {.section = "pipe",
      .name = "granular_temperature",
      .type = SL_KEY_CHOICE,
      C(granular_temperature),

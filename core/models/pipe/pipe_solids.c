@@ -75,6 +75,34 @@ static int granular_theta(pipe *p, const double *gd, sl_diag *d) {
   return 0;
 }
 
+/* The solids' normal stress on the wall, for a wall closure that takes one (`normal_stress`: wall_stress/coulomb),
+   at the wall cell: the contact (frictional) pressure of [closure.solids_pressure], p_s(phi), the normal stress
+   of Johnson & Jackson's (1987) frictional wall term tau_sn^f tan(phi_w) (Krampa 2009 eq 4.92), whose collisional
+   part is wall_stress/johnson_jackson's; with [pipe] wall_normal_stress = contact_kinetic also the kinetic
+   theory's p_s(phi, theta) of [closure.granular] (Lun et al. 1984, Krampa 2009 eq 5.9), whether or not [pipe]
+   kinetic_pressure puts it in the radial balance. Nothing else presses the solids on the wall of a vertical
+   pipe: there is no weight across the section. */
+static int wall_normal_stress(pipe *p, double *pn, sl_diag *d) {
+  const int w = p->n - 1;
+  double phw = p->phi[w], thw = p->theta[w], ps = 0.0;
+  const double *v[PQ_N] = {0};
+  v[PQ_PHI] = &phw, v[PQ_THETA] = &thw;
+  *pn = 0.0;
+  int rc = 0;
+  if (p->have_psol) {
+    sl_point_request rq = {"p_s", &ps, NULL, NULL};
+    if ((rc = sl_point_eval(&p->psol, 1, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.solids_pressure]");
+    *pn += ps;
+  }
+  if (p->have_gran && p->cfg->wall_normal_stress == PIPE_NORMAL_CONTACT_KINETIC) {
+    sl_point_request rq = {"p_s", &ps, NULL, NULL};
+    if ((rc = sl_point_eval(&p->gran, 1, v, &rq, 1, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
+    *pn += ps;
+  }
+  *pn = fmax(*pn, 0.0);
+  return 0;
+}
+
 int pipe_solids_coefficients(pipe *p, sl_diag *d) {
   const int n = p->n;
   double *slip = p->buf[0], *gd = p->buf[4], *dK = p->buf[1];
@@ -138,8 +166,10 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
         uw = U * a_ns / (a_ns + a);
       }
       const double *vw[PQ_N] = {0};
-      double phw = p->phi[w], thw = p->theta[w], gdw = U / yp;
-      vw[PQ_SLIP_WALL] = &uw, vw[PQ_PHI] = &phw, vw[PQ_THETA] = &thw, vw[PQ_SHEAR] = &gdw;
+      double phw = p->phi[w], thw = p->theta[w], gdw = U / yp, pn = 0.0;
+      if (p->walls_normal && (rc = wall_normal_stress(p, &pn, d))) return rc;
+      p->p_wall = pn;
+      vw[PQ_SLIP_WALL] = &uw, vw[PQ_PHI] = &phw, vw[PQ_THETA] = &thw, vw[PQ_SHEAR] = &gdw, vw[PQ_NORMAL_STRESS] = &pn;
       p->u_wall = uw;
       double inv = 0.0;
       sl_point_request rw[2] = {{"tau_w", &tau, &dtau, "slip_wall"}, {"inverse_slip_length", &inv, NULL, NULL}};
