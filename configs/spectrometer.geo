@@ -30,13 +30,21 @@ EndIf
 If (!Exists(nl))
   nl = 3;
 EndIf
+// the slot's width along the channel and the separating wall's thickness, in delta (-setnumber sw, wt: the
+// geometry's sensitivity, docs/rotating.md; the scene's outer channel then needs [parameters] off = (2 + wt) delta)
+If (!Exists(sw))
+  sw = 2;
+EndIf
+If (!Exists(wt))
+  wt = 0.5;
+EndIf
 g = Pi / 4;
 delta = 0.195 / (4 * Pi);
-w = delta / 2;
+w = wt * delta;
 xi0 = 1 / Sin(g);
 L = 24 * delta;
-xa = xi0 + 11 * delta;
-xb = xi0 + 13 * delta;
+xa = xi0 + (12 - sw / 2) * delta;
+xb = xi0 + (12 + sw / 2) * delta;
 xe = xi0 + L;
 xs[] = {xi0, xa, xb, xe};
 ns[] = {-delta, delta, delta + w, 3 * delta + w};
@@ -67,14 +75,14 @@ For i In {0 : 2}
     EndIf
   EndFor
 EndFor
-na = Round(11 * nl) + 1; // cells along the parts before and after the slot
-nb = Round(2 * nl) + 1;  // along the slot
+na = Round((12 - sw / 2) * nl) + 1; // cells along the parts before and after the slot
+nb = Round(sw * nl) + 1;             // along the slot
 For j In {0 : 3}
   Transfinite Curve{100 + j} = na; Transfinite Curve{110 + j} = nb; Transfinite Curve{120 + j} = na;
 EndFor
 For i In {0 : 3}
   Transfinite Curve{200 + 10 * i} = nn + 1; Transfinite Curve{200 + 10 * i + 2} = nn + 1;
-  Transfinite Curve{200 + 10 * i + 1} = Round(nn / 4) + 1; // the wall delta/2 thick
+  Transfinite Curve{200 + 10 * i + 1} = Round(nn * wt / 2) + 1; // the wall wt delta thick
 EndFor
 For i In {0 : 2}
   For j In {0 : 2}

@@ -2,8 +2,11 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """What configs/spectrometer.ini's output says (Nigam 1999, section 4.3):
 
-  spectrometer_report.py OUT.h5 [OUT2.h5 ...]
-  spectrometer_report.py --series OUT.h5 RESTARTED.h5 ...   (one run, continued by --restart)
+  spectrometer_report.py [--slot SW WT] OUT.h5 [OUT2.h5 ...]
+  spectrometer_report.py [--slot SW WT] --series OUT.h5 RESTARTED.h5 ...   (one run, continued by --restart)
+
+--slot: the mesh was made with gmsh -setnumber sw SW -setnumber wt WT (the slot's width and the separating
+wall's thickness in delta; default 2 and 0.5, configs/spectrometer.geo).
 
 per output time: the solids inventories downstream of the slot (inner_down,
 outer_down) and the efficiency outer_down/(inner_down + outer_down); the
@@ -13,7 +16,10 @@ outer outlet's share; the share passing the slot, 1 - (inner outlet + the
 inner channel's inventory growth)/inflow; the most retrograde swirl u_theta in the slot
 (its nodes); the largest phi in the cells on the inclined walls (the
 sediment); and at the last time the velocity across the inner channel half
-way to the slot against the rotating-channel profile of the inflow.
+way to the slot against the rotating-channel profile of the inflow, and the
+slot's through-flow u_s (the mean outward velocity on its mid-line) with the
+swirl it adds by the Coriolis force, -(5/4)(Omega cos(g) b^2/nu) u_s (b the
+slot's half-width; docs/rotating.md, "The swirl in the slot").
 
 Then the steadiness, window by window: over each window of WINDOW = 0.5
 time units ending at an output time (at least the inner channel's
@@ -41,8 +47,10 @@ G = math.pi / 4
 DELTA = Q / (4 * math.pi)
 S, C = math.sin(G), math.cos(G)
 XI0 = 1 / S
-XA, XB, XE = XI0 + 11 * DELTA, XI0 + 13 * DELTA, XI0 + 24 * DELTA
-W = DELTA / 2
+SW, WT = 2.0, 0.5  # the slot's width and the wall's thickness, in delta (--slot)
+XA, XB, XE = XI0 + (12 - SW / 2) * DELTA, XI0 + (12 + SW / 2) * DELTA, XI0 + 24 * DELTA
+W = WT * DELTA
+RO, RE = 4.22e-4, 1.06
 # the inner channel's through-flow time: its volume per radian, 2 delta int r dxi with r = xi sin(g), over the flux
 # per radian Q/(2 pi)
 T_THROUGH = 2 * DELTA * S * (XE**2 - XI0**2) / 2 / (Q / (2 * math.pi))
@@ -104,9 +112,9 @@ def report(path):
     u = g["velocity"][:]
     ut = g["u_theta"][:].ravel()
     xi_m = 0.5 * (XI0 + XA)
-    sel = (np.abs(xi_n - xi_m) < 0.6 * (XA - XI0) / 11 / 3) & (n_n < DELTA + 1e-9)
+    sel = (np.abs(xi_n - xi_m) < 0.6 * DELTA / 3) & (n_n < DELTA + 1e-9)
     if sel.any():
-        Ro, Re = 4.22e-4, 1.06
+        Ro, Re = RO, RE
         E1 = Ro / (Re * S * DELTA**2)
         aa = 1 / math.sqrt(E1)
         G1 = 2 * aa * (math.cosh(2 * aa) + math.cos(2 * aa)) / (math.sinh(2 * aa) - math.sin(2 * aa))
@@ -122,6 +130,19 @@ def report(path):
         print(f"  half way to the slot (xi - xi0 = {xi_m - XI0:.4f}), t = {g.attrs['time']:.2f}: u_xi against K U/r "
               f"{np.abs(uxi - K * U / r).max():.3e} of max {np.abs(K * U / r).max():.3f}; u_theta against K V/r "
               f"{np.abs(ut[sel] - K * V / r).max():.3e} of max {np.abs(K * V / r).max():.3f}")
+    # the slot's through-flow: u_n = u . (cos g, sin g) on its mid-line, weighted by r (the flux per radian over
+    # the area per radian); the swirl the Coriolis force on it adds at the slot's centre: the azimuthal component
+    # of Nigam 1999 eq 4.151, (2/Ro) u_r = (1/Re) v'' across the slot (steady, advection neglected), with
+    # u_r = cos(g) u_n, u_n = (3/2) u_s (1 - s^2/b^2) and v(+-b) = 0
+    mid = (np.abs(n_n - (DELTA + W / 2)) < 1e-7) & (xi_n > XA - 1e-9) & (xi_n < XB + 1e-9)
+    if mid.sum() > 1:
+        o = np.argsort(xi_n[mid])
+        x_m, u_m, r_m = xi_n[mid][o], (u[mid, 0] * C + u[mid, 1] * S)[o], xy[mid, 0][o]
+        u_s = np.trapz(u_m * r_m, x_m) / np.trapz(r_m, x_m)
+        b = SW * DELTA / 2
+        print(f"  the slot's through-flow u_s = {u_s:.4f} (flux per radian {np.trapz(u_m * r_m, x_m):.5f}); the swirl"
+              f" the Coriolis force on it adds, -(5/4)(Omega cos(g) b^2/nu) u_s = "
+              f"{-1.25 * C * b * b * RE / RO * u_s:.4f}")
 
 
 def steadiness(paths):
@@ -170,10 +191,15 @@ def steadiness(paths):
     return t_steady, p_steady, p
 
 
-if sys.argv[1:2] == ["--series"]:
-    report(sys.argv[-1])
-    steadiness(sys.argv[2:])
+args = sys.argv[1:]
+if args[:1] == ["--slot"]:
+    SW, WT = float(args[1]), float(args[2])
+    XA, XB, W = XI0 + (12 - SW / 2) * DELTA, XI0 + (12 + SW / 2) * DELTA, WT * DELTA
+    args = args[3:]
+if args[:1] == ["--series"]:
+    report(args[-1])
+    steadiness(args[1:])
 else:
-    for p in sys.argv[1:]:
+    for p in args:
         report(p)
         steadiness([p])

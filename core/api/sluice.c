@@ -215,6 +215,8 @@ static void summarise(const sl_run_result *res, sluice_summary *sum) {
   sum->cpu_output = res->cpu_output;
   sum->output_times = res->output_times, sum->output_datasets = res->output_datasets;
   sum->output_bytes = res->output_bytes;
+  sum->output_bytes_rank = res->output_bytes_rank, sum->output_bytes_all = res->output_bytes_all;
+  sum->output_collective = res->output_collective;
 }
 
 /* The run's progress call, with the live summary brought up to date first. */

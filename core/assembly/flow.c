@@ -41,6 +41,14 @@ static inline sym3 sym_part(const double G[3][3]) {
       {G[0][0], G[1][1], G[2][2], 0.5 * (G[0][1] + G[1][0]), 0.5 * (G[0][2] + G[2][0]), 0.5 * (G[1][2] + G[2][1])}};
 }
 
+/* The sums of the axisymmetric fast path (axi_accumulate). */
+typedef struct axi_acc {
+  double X[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS], Y[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS],
+      H[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS], S[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS],
+      Z[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS], U[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS];
+  double M[MAX_COMP * MAX_COMP][SL_ELEMENT_MAX_BASIS * (SL_ELEMENT_MAX_BASIS + 1) / 2]; /* packed upper triangles */
+} axi_acc;
+
 typedef struct flow_work {
   sl_fe_values *fv; /* space 0: velocity, space 1: pressure */
   sl_asm_batch batch;
@@ -48,6 +56,7 @@ typedef struct flow_work {
   double *rho, *mu, *force;
   int frame[MAX_COMP]; /* frame axis of each velocity component */
   double Ke[MAX_ELEM_DOFS * MAX_ELEM_DOFS], be[MAX_ELEM_DOFS];
+  axi_acc acc; /* the axisymmetric fast path's sums over the cell's points */
   int load_only; /* SL_FLOW_LOAD: the iterate and the viscosity are not needed */
 } flow_work;
 
@@ -112,14 +121,18 @@ static void eval_state(const flow_work *w, const sl_th_space *th, const double *
   const sl_fe_values *fv = w->fv;
   int c = fv->cell, nb = th->vel->dofs_per_cell, np = th->pres->dofs_per_cell, dim = th->mesh->dim;
   const int32_t *vd = th->vel->cell_dofs + (size_t)c * nb, *pd = th->pres->cell_dofs + (size_t)c * np;
+  double ul[MAX_COMP][SL_ELEMENT_MAX_BASIS]; /* the cell's velocity values, gathered once */
+  for (int a = 0; a < th->n_comp; ++a) {
+    const double *ua = u + sl_th_vel_dof(th, a, 0);
+    for (int b = 0; b < nb; ++b) ul[a][b] = ua[vd[b]];
+  }
   for (int q = 0; q < fv->quad.n; ++q) {
     qp_state *s = &st[q];
     memset(s, 0, sizeof *s);
     for (int a = 0; a < th->n_comp; ++a) {
       int A = w->frame[a];
-      const double *ua = u + sl_th_vel_dof(th, a, 0);
       for (int b = 0; b < nb; ++b) {
-        double v = ua[vd[b]];
+        double v = ul[a][b];
         s->u[A] += v * fv->phi[0][q][b];
         for (int j = 0; j < dim; ++j) s->G[A][j] += v * fv->grad[0][q][b][j];
       }
@@ -194,26 +207,10 @@ static void planar_matrix(double *Ke, int n, int nb, double wq, const double *ph
   }
 }
 
-/* y_j += a0 x0_j + a1 x1_j + a2 x2_j + a3 x3_j + a4 x4_j (j < n): a row segment of the element matrix. */
-static inline void axpy5(double *restrict y, int n, const double *restrict x0, double a0, const double *restrict x1,
-                         double a1, const double *restrict x2, double a2, const double *restrict x3, double a3,
-                         const double *restrict x4, double a4) {
-  for (int j = 0; j < n; ++j) y[j] += a0 * x0[j] + a1 * x1[j] + a2 * x2[j] + a3 * x3[j] + a4 * x4[j];
-}
-
-static inline void axpy2(double *restrict y, int n, const double *restrict x0, double a0, const double *restrict x1,
-                         double a1) {
-  for (int j = 0; j < n; ++j) y[j] += a0 * x0[j] + a1 * x1[j];
-}
-
-static inline void axpy1(double *restrict y, int n, const double *restrict x0, double a0) {
-  for (int j = 0; j < n; ++j) y[j] += a0 * x0[j];
-}
-
-/* The same matrix axisymmetric (frame axes r = 0, z = 1, theta = 2, the swirl if nc = 3), without a shear-rate
- * dependent viscosity, per pair of scalar basis functions (i, j) for all component pairs at once. With
- * g = grad(phi) in (r, z), h = phi / r and the hoop entries of flow.h (grad(phi e_r) has (theta, theta) = h,
- * grad(phi e_theta) has (r, theta) = -h), the viscous term 2 mu D(phi_i e_A) : D(phi_j e_B) is
+/* The axisymmetric matrix without a shear-rate dependent viscosity (frame axes r = 0, z = 1, theta = 2, the swirl
+ * if nc = 3), per pair of scalar basis functions (i, j) for all component pairs at once. With g = grad(phi) in
+ * (r, z), h = phi / r and the hoop entries of flow.h (grad(phi e_r) has (theta, theta) = h, grad(phi e_theta) has
+ * (r, theta) = -h), the viscous term 2 mu D(phi_i e_A) : D(phi_j e_B) is
  *   (r, r): mu (g_i.g_j + d_r phi_i d_r phi_j + 2 h_i h_j),    (r, z): mu d_z phi_i d_r phi_j,
  *   (z, z): mu (g_i.g_j + d_z phi_i d_z phi_j),                (z, r): mu d_r phi_i d_z phi_j,
  *   (theta, theta): mu (g_i.g_j + h_i h_j - d_r phi_i h_j - h_i d_r phi_j),  zero between theta and (r, z)
@@ -222,11 +219,27 @@ static inline void axpy1(double *restrict y, int n, const double *restrict x0, d
  * delta_AB u.grad(phi_j) plus, from the hoop entries, (theta, r) u_theta h_j and (r, theta) -u_theta h_j
  * (Batchelor's (u.grad u)_r = ... - u_th^2 / r, (u.grad u)_th = ... + u_r u_th / r, linearised); mass, Coriolis
  * rho C, the cell's sink K (in-plane) and Newton's rho G(u) are phi_i c_AB phi_j. div(phi e_r) = d_r phi + h,
- * div(phi e_z) = d_z phi, div(phi e_theta) = 0. The same terms as the general loop of element(); a fifth of its
- * operations on the swirl's 27 x 27 block. */
-static void axi_matrix(double *Ke, int n, int nc, int nb, double wq, double r, const double *phi,
-                       const double (*grad)[2], const double *psi, int np, double rq, double mq, double mass_coef,
-                       const double *K, const double C[3][3], const qp_state *s, int convection, int newton) {
+ * div(phi e_z) = d_z phi, div(phi e_theta) = 0. The same terms as the general loop of element().
+ *
+ * Every block is a combination of a few scalar matrices summed over the cell's points: the symmetric
+ * X = sum mu w d_r phi_i d_r phi_j, Y (d_z, d_z), H (h, h), S (d_r phi_i h_j + h_i d_r phi_j) and the
+ * c_AB-weighted masses M_AB (upper triangles only), the unsymmetric Z (d_z phi_i d_r phi_j) and the convection
+ * U (phi_i u.grad phi_j): (r, r) = 2X + Y + 2H + U + M_rr, (z, z) = X + 2Y + U + M_zz, (theta, theta) = X + Y +
+ * H - S + U + M_thth, (r, z) = Z + M_rz, (z, r) = Z^T + M_zr, the swirl's other pairs M_AB alone (axi_accumulate
+ * per point, axi_finish per cell): 750 products a point where the row updates per point took 1800. */
+
+static void axi_clear(axi_acc *acc, int nc, int nb) {
+  size_t sz = (size_t)nb * nb * sizeof(double);
+  memset(acc->X, 0, sz), memset(acc->Y, 0, sz), memset(acc->H, 0, sz), memset(acc->S, 0, sz);
+  memset(acc->Z, 0, sz), memset(acc->U, 0, sz);
+  for (int k = 0; k < nc * nc; ++k) memset(acc->M[k], 0, (size_t)nb * (nb + 1) / 2 * sizeof(double));
+}
+
+/* One point's part of the sums of axi_acc; the pressure columns and rows (np of them) straight into Ke. */
+static void axi_accumulate(axi_acc *restrict acc, double *Ke, int n, int nc, int nb, double wq, double r,
+                           const double *phi, const double (*grad)[2], const double *psi, int np, double rq, double mq,
+                           double mass_coef, const double *K, const double C[3][3], const qp_state *s, int convection,
+                           int newton) {
   double c[3][3], a[SL_ELEMENT_MAX_BASIS], h[SL_ELEMENT_MAX_BASIS], g0[SL_ELEMENT_MAX_BASIS], g1[SL_ELEMENT_MAX_BASIS];
   double rinv = 1.0 / r;
   for (int A = 0; A < 3; ++A)
@@ -238,28 +251,55 @@ static void axi_matrix(double *Ke, int n, int nc, int nb, double wq, double r, c
     a[j] = convection ? wq * rq * (s->u[0] * grad[j][0] + s->u[1] * grad[j][1]) : 0.0;
     h[j] = phi[j] * rinv, g0[j] = grad[j][0], g1[j] = grad[j][1];
   }
-  double wm = wq * mq;
+  double wm = wq * mq, cw[MAX_COMP * MAX_COMP];
+  for (int A = 0; A < nc; ++A)
+    for (int B = 0; B < nc; ++B) cw[A * nc + B] = c[A][B];
   int nv = nc * nb;
+  /* the masses: phi_i phi_j once, packed by rows of the upper triangle, then one long update for each (A, B) */
+  double pp[SL_ELEMENT_MAX_BASIS * (SL_ELEMENT_MAX_BASIS + 1) / 2];
+  int npair = 0;
+  for (int i = 0; i < nb; ++i)
+    for (int j = i; j < nb; ++j) pp[npair++] = phi[i] * phi[j];
+  for (int k = 0; k < nc * nc; ++k) {
+    double *restrict M = acc->M[k], ck = wq * cw[k];
+    if (ck != 0.0) /* (z, theta) without a Coriolis term */
+      for (int e = 0; e < npair; ++e) M[e] += ck * pp[e];
+  }
   for (int i = 0; i < nb; ++i) {
-    double *restrict r0 = Ke + (size_t)i * n, *restrict r1 = Ke + (size_t)(nb + i) * n;
-    double wpi = wq * phi[i], gi0 = wm * grad[i][0], gi1 = wm * grad[i][1], hi = wm * h[i], pi = phi[i];
-    /* each row segment (A, i) x (B, .) is a combination of the vectors d_r phi, d_z phi, h, phi and a over j */
-    axpy5(r0, nb, g0, 2.0 * gi0, g1, gi1, h, 2.0 * hi, a, pi, phi, wpi * c[0][0]);
-    axpy2(r0 + nb, nb, g0, gi1, phi, wpi * c[0][1]);
-    axpy2(r1, nb, g1, gi0, phi, wpi * c[1][0]);
-    axpy5(r1 + nb, nb, g0, gi0, g1, 2.0 * gi1, h, 0.0, a, pi, phi, wpi * c[1][1]);
-    if (nc == 3) {
-      double *restrict r2 = Ke + (size_t)(2 * nb + i) * n;
-      axpy1(r0 + 2 * nb, nb, phi, wpi * c[0][2]);
-      axpy1(r1 + 2 * nb, nb, phi, wpi * c[1][2]);
-      axpy1(r2, nb, phi, wpi * c[2][0]);
-      axpy1(r2 + nb, nb, phi, wpi * c[2][1]);
-      axpy5(r2 + 2 * nb, nb, g0, gi0 - hi, g1, gi1, h, hi - gi0, a, pi, phi, wpi * c[2][2]);
+    double gi0 = wm * g0[i], gi1 = wm * g1[i], hi = wm * h[i], pi = phi[i];
+    double *restrict X = acc->X + i * nb, *restrict Y = acc->Y + i * nb, *restrict H = acc->H + i * nb,
+                     *restrict S = acc->S + i * nb, *restrict Z = acc->Z + i * nb, *restrict U = acc->U + i * nb;
+    for (int j = i; j < nb; ++j) {
+      X[j] += gi0 * g0[j], Y[j] += gi1 * g1[j], H[j] += hi * h[j];
+      S[j] += gi0 * h[j] + hi * g0[j];
     }
+    for (int j = 0; j < nb; ++j) Z[j] += gi1 * g0[j], U[j] += pi * a[j];
     for (int k = 0; k < np; ++k) { /* -psi_k div(phi_i e_A), and its transpose; div(phi e_theta) = 0 */
       double b0 = -wq * psi[k] * (grad[i][0] + h[i]), b1 = -wq * psi[k] * grad[i][1];
-      r0[nv + k] += b0, r1[nv + k] += b1;
+      Ke[(size_t)i * n + nv + k] += b0, Ke[(size_t)(nb + i) * n + nv + k] += b1;
       Ke[(size_t)(nv + k) * n + i] += b0, Ke[(size_t)(nv + k) * n + nb + i] += b1;
+    }
+  }
+}
+
+/* The cell's velocity blocks from the sums (axi_acc), added to Ke. */
+static void axi_finish(const axi_acc *acc, double *Ke, int n, int nc, int nb) {
+  for (int i = 0; i < nb; ++i) {
+    double *r0 = Ke + (size_t)i * n, *r1 = Ke + (size_t)(nb + i) * n, *r2 = nc == 3 ? Ke + (size_t)(2 * nb + i) * n : NULL;
+    for (int j = 0; j < nb; ++j) {
+      int lo = i <= j ? i : j, hi = i <= j ? j : i;
+      int ij = lo * nb + hi;                              /* the upper triangle's entry of a symmetric sum */
+      int e = lo * nb - lo * (lo - 1) / 2 + (hi - lo); /* the same, packed (the masses) */
+      double X = acc->X[ij], Y = acc->Y[ij], H = acc->H[ij], U = acc->U[i * nb + j];
+      r0[j] += 2.0 * X + Y + 2.0 * H + U + acc->M[0][e];
+      r0[nb + j] += acc->Z[i * nb + j] + acc->M[1][e];
+      r1[j] += acc->Z[j * nb + i] + acc->M[nc][e];
+      r1[nb + j] += X + 2.0 * Y + U + acc->M[nc + 1][e];
+      if (nc == 3) {
+        r0[2 * nb + j] += acc->M[2][e], r1[2 * nb + j] += acc->M[5][e];
+        r2[j] += acc->M[6][e], r2[nb + j] += acc->M[7][e];
+        r2[2 * nb + j] += X + Y + H - acc->S[ij] + U + acc->M[8][e];
+      }
     }
   }
 }
@@ -283,6 +323,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
     else C[0][1] = -2.0 * o->omega, C[1][0] = 2.0 * o->omega;
   }
   basis_vec bv[MAX_VEL];
+  int acc_used = 0;
   for (int q = 0; q < fv->quad.n; ++q) {
     const qp_state *s = &st[q];
     double wq = fv->JxW[q], r = fv->x[q][0], rq = rho[q];
@@ -337,28 +378,50 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
     int gen_newtonian = newton && dmq != 0.0 && gam > 0.0;
     int fast = matrix && !gen_newtonian && w->frame[0] == 0 && w->frame[1] == 1 &&
                ((planar2 && o->omega == 0.0) || (axi && (nc == 2 || w->frame[2] == 2)));
-    /* The basis vectors of this point. */
-    for (int a = 0; a < nc; ++a)
+    /* The residual of the fast paths' cases from the scalar basis functions (the same arithmetic as the basis
+       vectors' below: D(phi e_r) has 00 = d_r phi, 11 = 0, 22 = phi / r, 01 = d_z phi / 2; D(phi e_z) 11 = d_z phi,
+       01 = d_r phi / 2; D(phi e_theta) 02 = (d_r phi - phi / r) / 2, 12 = d_z phi / 2, div 0). */
+    int fast_res = w->frame[0] == 0 && w->frame[1] == 1 && (axi ? nc == 2 || w->frame[2] == 2 : planar2);
+    if (fast_res) {
+      const double *ph = fv->phi[0][q];
+      const double(*gr)[2] = (const double(*)[2])fv->grad[0][q];
       for (int i = 0; i < nb; ++i) {
-        basis_vec *v = &bv[a * nb + i];
-        double T[3][3] = {{0}};
-        int A = w->frame[a];
-        double ph = fv->phi[0][q][i];
-        for (int j = 0; j < dim; ++j) T[A][j] = fv->grad[0][q][i][j];
-        if (axi && A == 0) T[2][2] = ph / r;
-        if (axi && A == 2) T[0][2] = -ph / r;
-        v->D = sym_part(T);
-        v->div = T[0][0] + T[1][1] + T[2][2];
-        if (o->convection && matrix && !fast)
-          for (int B = 0; B < 3; ++B) v->Tu[B] = T[B][0] * s->u[0] + T[B][1] * s->u[1] + T[B][2] * s->u[2];
-        v->phi = ph;
-        v->A = A;
+        double g0 = gr[i][0], g1 = gr[i][1], hh = axi ? ph[i] / r : 0.0;
+        double sd0 = axi ? (Du.v[0] * g0 + Du.v[2] * hh) + 2.0 * (Du.v[3] * (0.5 * g1))
+                         : Du.v[0] * g0 + 2.0 * (Du.v[3] * (0.5 * g1));
+        double sd1 = Du.v[1] * g1 + 2.0 * (Du.v[3] * (0.5 * g0));
+        w->be[i] -= wq * (m[0] * ph[i] + 2.0 * mq * sd0 - s->p * (axi ? g0 + hh : g0));
+        w->be[nb + i] -= wq * (m[1] * ph[i] + 2.0 * mq * sd1 - s->p * g1);
+        if (nc == 3) {
+          double sd2 = 2.0 * (Du.v[4] * (0.5 * (-hh + g0)) + Du.v[5] * (0.5 * g1));
+          w->be[2 * nb + i] -= wq * (m[2] * ph[i] + 2.0 * mq * sd2);
+        }
       }
-    /* Residual. */
-    for (int k = 0; k < nv; ++k) {
-      const basis_vec *v = &bv[k];
-      w->be[k] -= wq * (m[v->A] * v->phi + 2.0 * mq * sym_dot(&Du, &v->D) - s->p * v->div);
     }
+    /* The basis vectors of this point: for the general loop and its residual. */
+    if (!fast_res || (matrix && !fast)) {
+      for (int a = 0; a < nc; ++a)
+        for (int i = 0; i < nb; ++i) {
+          basis_vec *v = &bv[a * nb + i];
+          double T[3][3] = {{0}};
+          int A = w->frame[a];
+          double ph = fv->phi[0][q][i];
+          for (int j = 0; j < dim; ++j) T[A][j] = fv->grad[0][q][i][j];
+          if (axi && A == 0) T[2][2] = ph / r;
+          if (axi && A == 2) T[0][2] = -ph / r;
+          v->D = sym_part(T);
+          v->div = T[0][0] + T[1][1] + T[2][2];
+          if (o->convection && matrix && !fast)
+            for (int B = 0; B < 3; ++B) v->Tu[B] = T[B][0] * s->u[0] + T[B][1] * s->u[1] + T[B][2] * s->u[2];
+          v->phi = ph;
+          v->A = A;
+        }
+    }
+    if (!fast_res) /* Residual. */
+      for (int k = 0; k < nv; ++k) {
+        const basis_vec *v = &bv[k];
+        w->be[k] -= wq * (m[v->A] * v->phi + 2.0 * mq * sym_dot(&Du, &v->D) - s->p * v->div);
+      }
     const double *psi = fv->phi[1][q];
     for (int k = 0; k < npc; ++k) w->be[nv + k] -= wq * (-psi[k] * divu);
     if (!matrix) continue;
@@ -375,8 +438,9 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       continue;
     }
     if (fast) {
-      axi_matrix(w->Ke, n, nc, nb, wq, r, fv->phi[0][q], (const double(*)[2])fv->grad[0][q], psi, npc, rq, mq,
-                 o->mass_coef, K, (const double(*)[3])C, s, o->convection, newton);
+      if (!acc_used) axi_clear(&w->acc, nc, nb), acc_used = 1;
+      axi_accumulate(&w->acc, w->Ke, n, nc, nb, wq, r, fv->phi[0][q], (const double(*)[2])fv->grad[0][q], psi, npc,
+                     rq, mq, o->mass_coef, K, (const double(*)[3])C, s, o->convection, newton);
       continue;
     }
     double rm = rq * o->mass_coef, w2mu = 2.0 * wq * mq;
@@ -422,6 +486,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       }
     }
   }
+  if (acc_used) axi_finish(&w->acc, w->Ke, n, nc, nb);
 }
 
 /* Evaluates the iterate over a batch of cells and calls the coefficients. */

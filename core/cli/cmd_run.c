@@ -155,6 +155,11 @@ static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, do
   if (m->output_times > 0)
     fprintf(f, "%s output: %ld output times, %ld datasets, %.3g MB of field values\n", p, m->output_times,
             m->output_datasets, m->output_bytes / 1e6);
+  if (m->output_times > 0 && rs.ranks > 1)
+    fprintf(f,
+            "%s output on %d ranks: this rank wrote %.0f of the %.0f bytes of the file's values (fields, mesh, "
+            "checkpoints) in %ld collective transfers\n",
+            p, rs.ranks, m->output_bytes_rank, m->output_bytes_all, m->output_collective);
   double known = m->cpu_setup + m->cpu_flow + m->cpu_coupled + m->cpu_output;
   if (known > 0 && cpu_total > 0) {
     double other = cpu_total > known ? cpu_total - known : 0.0;
@@ -360,8 +365,8 @@ int sl_cmd_run(int argc, char **argv) {
 
   sluice *sc = NULL;
   sluice_error e = {0, ""};
-  /* under mpirun the ranks share the linear solves; rank 0 prints and writes, the others' output is discarded
-     (sl_model_run) and they print nothing */
+  /* under mpirun the ranks share the linear solves and write the one output file together (sl_model_run); rank 0
+     prints, the others print nothing */
   int rank = 0, ranks = 1;
   if (sluice_ranks(&rank, &ranks, &e)) return sl_cli_error(e.code, "%s", e.msg);
   if (rank > 0 && (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr))) return 1;

@@ -67,7 +67,10 @@ struct sl_output {
   char *xmf_path, *csv_path;
   const char *h5_name; /* base name of path, used inside the sidecar */
   int committed;       /* renamed to path: the old result is gone */
-  int discard;         /* sl_output_open_discard: every call succeeds, nothing is written */
+  int collective;      /* every rank writes this file (collective.c); rank, ranks then MPI_COMM_WORLD's */
+  int rank, ranks;
+  double bytes_here, bytes_all; /* of the values (fields, mesh, checkpoints): this rank's, all ranks' */
+  long n_collective;            /* of those writes HDF5 made collectively */
   hid_t file;
   int have_mesh, dim, nodes_per_cell;
   int32_t n_vertices, n_cells;
@@ -99,6 +102,30 @@ struct sl_output {
   int row_stride; /* of rows: 1 + n_cols when they were stored */
   long csv_end;
 };
+
+/* Closes every object of the file still open, then the file (after a
+ * failed write a dataset whose close failed stays open); H5Fclose's status. */
+herr_t sl_h5_close_all(hid_t file);
+
+/* collective.c: one file written by every rank (parallel HDF5) */
+/* Makes o collective: rank and ranks from MPI_COMM_WORLD (SL_EBADINPUT
+ * when HDF5 is serial or MPI is not started). */
+int sl_io_collective_start(sl_output *o, sl_diag *d);
+/* A file-access property list: the MPI-IO driver when collective; close it. */
+hid_t sl_io_fapl(const sl_output *o);
+/* The largest of the ranks' codes, on every rank (rc when not collective). */
+int sl_io_agree(const sl_output *o, int rc);
+void sl_io_barrier(const sl_output *o);
+/* This process writes the sidecars and renames and removes files. */
+int sl_io_rank0(const sl_output *o);
+/* Writes a dataset of n rows of width elements of elem bytes (rank 1: width
+ * 1) from buf, all n rows: the whole when not collective, else this rank's
+ * block [r n / N, (r + 1) n / N) in one collective transfer. < 0 on failure. */
+int sl_io_write_rows(sl_output *o, hid_t ds, hid_t mtype, size_t elem, hsize_t n, hsize_t width, const void *buf);
+/* fn(o, arg, d) on rank 0 alone, into the file the ranks closed for it (what
+ * parallel HDF5 cannot write: variable-length strings); then every rank
+ * opens it again. Just fn when not collective. */
+int sl_io_serial_interlude(sl_output *o, int (*fn)(sl_output *, const void *, sl_diag *), const void *arg, sl_diag *d);
 
 /* output.c: the file takes its name (the first complete output time or
  * checkpoint); the old sidecars go. */

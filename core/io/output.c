@@ -55,26 +55,11 @@ static void free_output(sl_output *o) {
 
 int sl_output_open(sl_output **out, const char *path, sl_diag *d) { return sl_output_open_opts(out, path, NULL, d); }
 
-int sl_output_open_discard(sl_output **out, const char *path, sl_diag *d) {
-  *out = NULL;
-  sl_output *o = calloc(1, sizeof *o);
-  if (!o || !(o->path = dup_str(path ? path : "(discarded)"))) {
-    free(o);
-    return sl_diag_set(d, SL_ENOMEM, "out of memory");
-  }
-  o->discard = 1;
-  o->file = o->step_group = -1;
-  o->ck_current = -1;
-  o->xmf_fd = o->csv_fd = -1;
-  *out = o;
-  return 0;
-}
-
 int sl_output_open_opts(sl_output **out, const char *path, const sl_output_opts *opts, sl_diag *d) {
   *out = NULL;
   sl_h5_quiet();
   int rc = sl_output_check_path(path, opts, d);
-  if (rc) return rc;
+  if (rc && !(opts && opts->collective)) return rc; /* collective: every rank learns of it below */
   sl_output *o = calloc(1, sizeof *o);
   if (!o) return sl_diag_set(d, SL_ENOMEM, "out of memory");
   o->file = o->step_group = -1;
@@ -87,13 +72,26 @@ int sl_output_open_opts(sl_output **out, const char *path, const sl_output_opts 
   }
   const char *base = strrchr(o->path, '/');
   o->h5_name = base ? base + 1 : o->path;
+  o->ranks = 1;
+  if (opts && opts->collective) {
+    int started = sl_io_collective_start(o, d);
+    if (started) {
+      free_output(o);
+      return rc ? rc : started;
+    }
+  }
   /* a temporary of a run that was killed (sluice's own, checked above) */
-  if (unlink(o->tmp_path) != 0 && errno != ENOENT) {
+  if (!rc && sl_io_rank0(o) && unlink(o->tmp_path) != 0 && errno != ENOENT)
     rc = sl_diag_set(d, SL_EBADINPUT, "cannot remove the stale temporary '%s': %s", o->tmp_path, strerror(errno));
+  int all = sl_io_agree(o, rc); /* every rank's path check, then rank 0's removal, before the collective create */
+  if (all) {
+    if (!rc) rc = sl_diag_set(d, all, "%s: another rank could not open the output", o->path);
     free_output(o);
     return rc;
   }
-  o->file = H5Fcreate(o->tmp_path, H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t fapl = sl_io_fapl(o);
+  o->file = fapl >= 0 ? H5Fcreate(o->tmp_path, H5F_ACC_EXCL, H5P_DEFAULT, fapl) : -1;
+  if (fapl >= 0) H5Pclose(fapl);
   if (o->file < 0) {
     rc = sl_h5_fail(d, SL_EBADINPUT, o->tmp_path, "cannot create", "the output file");
     free_output(o);
@@ -104,7 +102,7 @@ int sl_output_open_opts(sl_output **out, const char *path, const sl_output_opts 
   if (!rc && H5Fflush(o->file, H5F_SCOPE_GLOBAL) < 0) rc = sl_h5_fail(d, SL_EFAILED, o->tmp_path, "cannot flush", "/");
   if (rc) {
     H5Fclose(o->file);
-    unlink(o->tmp_path);
+    if (sl_io_rank0(o)) unlink(o->tmp_path);
     free_output(o);
     return rc;
   }
@@ -116,15 +114,21 @@ int sl_output_open_opts(sl_output **out, const char *path, const sl_output_opts 
 int sl_output_commit(sl_output *o, sl_diag *d) {
   if (o->committed) return 0;
   if (H5Fflush(o->file, H5F_SCOPE_GLOBAL) < 0) return sl_h5_fail(d, SL_EFAILED, o->path, "cannot flush", "the file");
-  if (rename(o->tmp_path, o->path) != 0)
-    return sl_diag_set(d, SL_EFAILED, "cannot rename '%s' to '%s': %s", o->tmp_path, o->path, strerror(errno));
-  o->committed = 1;
-  /* the old sidecars would point into the new file */
-  if (unlink(o->xmf_path) != 0 && errno != ENOENT)
-    return sl_diag_set(d, SL_EFAILED, "cannot remove the old sidecar '%s': %s", o->xmf_path, strerror(errno));
-  if (unlink(o->csv_path) != 0 && errno != ENOENT)
-    return sl_diag_set(d, SL_EFAILED, "cannot remove the old '%s': %s", o->csv_path, strerror(errno));
-  return 0;
+  int rc = 0, renamed = 0;
+  if (sl_io_rank0(o)) {
+    if (rename(o->tmp_path, o->path) != 0)
+      rc = sl_diag_set(d, SL_EFAILED, "cannot rename '%s' to '%s': %s", o->tmp_path, o->path, strerror(errno));
+    else renamed = 1;
+    /* the old sidecars would point into the new file */
+    if (!rc && unlink(o->xmf_path) != 0 && errno != ENOENT)
+      rc = sl_diag_set(d, SL_EFAILED, "cannot remove the old sidecar '%s': %s", o->xmf_path, strerror(errno));
+    if (!rc && unlink(o->csv_path) != 0 && errno != ENOENT)
+      rc = sl_diag_set(d, SL_EFAILED, "cannot remove the old '%s': %s", o->csv_path, strerror(errno));
+  }
+  int all = sl_io_agree(o, rc); /* the file has its name on every rank from here on */
+  if (all && !rc) rc = sl_diag_set(d, all, "%s: rank 0 could not rename the output", o->path);
+  if (renamed || (o->rank > 0 && !all)) o->committed = 1;
+  return rc;
 }
 
 /* Link-creation property list that creates missing parent groups. */
@@ -138,20 +142,22 @@ static hid_t lcpl_parents(void) {
 }
 
 /* Creates and writes a dataset of rank 1 or 2 at `name` (relative to loc). */
-static int write_array(const sl_output *o, hid_t loc, const char *name, const char *full, hid_t ftype, hid_t mtype,
-                       int rank, const hsize_t *dims, const void *buf, hid_t *keep, sl_diag *d) {
+static int write_array(sl_output *o, hid_t loc, const char *name, const char *full, hid_t ftype, hid_t mtype, int rank,
+                       const hsize_t *dims, const void *buf, hid_t *keep, sl_diag *d) {
   hid_t lcpl = lcpl_parents(), space = H5Screate_simple(rank, dims, NULL), ds = -1;
+  hid_t dcpl = o->collective ? H5Pcreate(H5P_DATASET_CREATE) : H5P_DEFAULT;
   int rc = 0;
-  if (lcpl < 0 || space < 0) {
+  /* collective: the blocks cover the dataset, no fill values written first */
+  if (lcpl < 0 || space < 0 || dcpl < 0 || (o->collective && H5Pset_fill_time(dcpl, H5D_FILL_TIME_NEVER) < 0)) {
     rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot prepare dataset", full);
     goto done;
   }
-  ds = H5Dcreate2(loc, name, ftype, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+  ds = H5Dcreate2(loc, name, ftype, space, lcpl, dcpl, H5P_DEFAULT);
   if (ds < 0) {
     rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot create dataset", full);
     goto done;
   }
-  if (H5Dwrite(ds, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) < 0)
+  if (sl_io_write_rows(o, ds, mtype, H5Tget_size(mtype), dims[0], rank == 2 ? dims[1] : 1, buf) < 0)
     rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot write dataset", full);
 done:
   if (ds >= 0) {
@@ -163,13 +169,14 @@ done:
   }
   if (space >= 0) H5Sclose(space);
   if (lcpl >= 0) H5Pclose(lcpl);
+  if (dcpl > 0 && dcpl != H5P_DEFAULT) H5Pclose(dcpl);
   return rc;
 }
 
 /* /mesh/cell_centres: the centroid of the polygon through each cell's
  * corner nodes (the first 2, 3 or 4 of its nodes), from the shoelace
  * formula; the midpoint in 1-D. Where cell fields are given. */
-static int cell_centres(const sl_output *o, int dim, const double *coords, int32_t n_cells, int nodes_per_cell,
+static int cell_centres(sl_output *o, int dim, const double *coords, int32_t n_cells, int nodes_per_cell,
                         const int32_t *cells, const char *topology, sl_diag *d) {
   int corners = strncmp(topology, "Triangle", 8) == 0 ? 3 : strncmp(topology, "Quadrilateral", 13) == 0 ? 4 : 2;
   double *c = calloc((size_t)n_cells * 3, sizeof *c);
@@ -205,7 +212,6 @@ static int cell_centres(const sl_output *o, int dim, const double *coords, int32
 
 int sl_output_write_mesh(sl_output *o, int dim, int32_t n_vertices, const double *coords, int32_t n_cells,
                          int nodes_per_cell, const int32_t *cells, const char *topology, sl_diag *d) {
-  if (o->discard) return 0;
   if (o->have_mesh) return sl_diag_set(d, SL_EBADINPUT, "%s: the mesh is already written", o->path);
   if (dim < 1 || dim > 3) return sl_diag_set(d, SL_EBADINPUT, "%s: mesh dimension %d is not 1, 2 or 3", o->path, dim);
   if (!coords || !cells) return sl_diag_set(d, SL_EBADINPUT, "%s: mesh coordinates or cells missing", o->path);
@@ -270,7 +276,6 @@ int sl_output_write_mesh(sl_output *o, int dim, int32_t n_vertices, const double
 }
 
 int sl_output_begin_step(sl_output *o, double t, sl_diag *d) {
-  if (o->discard) return 0;
   if (!o->have_mesh) return sl_diag_set(d, SL_EBADINPUT, "%s: write the mesh before the first step", o->path);
   if (o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: step %d is still open", o->path, o->next_index);
   if (t != t) return sl_diag_set(d, SL_EBADINPUT, "%s: output time is NaN", o->path);
@@ -305,7 +310,6 @@ int sl_output_write_field(sl_output *o, const char *name, sl_centring centring, 
 
 int sl_output_write_field_unit(sl_output *o, const char *name, const char *unit, sl_centring centring, int components,
                                const double *values, sl_diag *d) {
-  if (o->discard) return 0;
   if (!unit) unit = "";
   if (!o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: field '%s' written outside a step", o->path, name);
   int rc = sl_io_check_name(name, 200, "field", d);
@@ -376,8 +380,11 @@ void sl_output_stats(const sl_output *o, long *times, long *datasets, double *by
   *times = o->n_steps, *datasets = o->n_datasets, *bytes = o->bytes;
 }
 
+void sl_output_rank_stats(const sl_output *o, double *here, double *all, long *collective) {
+  *here = o->bytes_here, *all = o->bytes_all, *collective = o->n_collective;
+}
+
 int sl_output_end_step(sl_output *o, sl_diag *d) {
-  if (o->discard) return 0;
   if (!o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: no step is open", o->path);
   o->in_step = 0;
   int index = o->next_index++;
@@ -402,8 +409,8 @@ int sl_output_end_step(sl_output *o, sl_diag *d) {
   return rc;
 }
 
-int sl_output_write_provenance(sl_output *o, const sl_provenance *p, sl_diag *d) {
-  if (o->discard) return 0;
+static int provenance(sl_output *o, const void *arg, sl_diag *d) {
+  const sl_provenance *p = arg;
   const char *path = o->path;
   if (!p || (p->n_closures > 0 && !p->closures) || p->n_closures < 0)
     return sl_diag_set(d, SL_EBADINPUT, "%s: provenance missing", path);
@@ -448,12 +455,16 @@ int sl_output_write_provenance(sl_output *o, const sl_provenance *p, sl_diag *d)
   return rc;
 }
 
-/* Closes every object of the file still open, then the file: after a
- * failed write a dataset whose close failed stays open. (A file whose close
- * failed cannot be closed again: HDF5 1.10 crashes trying, also in its exit
- * handler; space.c keeps writes from failing, main.c keeps the handler from
- * running.) Returns H5Fclose's status. */
-static herr_t close_file(hid_t file) {
+/* Its string datasets are variable-length: under a collective output rank
+ * 0 writes them alone (collective.c). */
+int sl_output_write_provenance(sl_output *o, const sl_provenance *p, sl_diag *d) {
+  return sl_io_serial_interlude(o, provenance, p, d);
+}
+
+/* (A file whose close failed cannot be closed again: HDF5 1.10 crashes
+ * trying, also in its exit handler; space.c keeps writes from failing,
+ * main.c keeps the handler from running.) */
+herr_t sl_h5_close_all(hid_t file) {
   herr_t st = 0;
   for (int pass = 0; pass < 1; ++pass) {
     ssize_t n =
@@ -482,10 +493,6 @@ static herr_t close_file(hid_t file) {
 
 int sl_output_close(sl_output *o, sl_diag *d) {
   if (!o) return 0;
-  if (o->discard) {
-    free_output(o);
-    return 0;
-  }
   int rc = 0;
   if (o->in_step) { /* an unfinished step stays out of the sidecar */
     H5Gclose(o->step_group);
@@ -498,35 +505,30 @@ int sl_output_close(sl_output *o, sl_diag *d) {
     if (!o->committed && !rc) rc = sl_output_commit(o, d);
     /* closed even when a flush failed (a full disk): HDF5 must not find the
      * file still open when the process exits */
-    if (close_file(o->file) < 0 && !rc) rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot close", "the file");
+    if (sl_h5_close_all(o->file) < 0 && !rc) rc = sl_h5_fail(d, SL_EFAILED, o->path, "cannot close", "the file");
     o->file = -1;
   }
-  if (!o->committed) unlink(o->tmp_path);
+  if (!o->committed && sl_io_rank0(o)) unlink(o->tmp_path);
   free_output(o);
   return rc;
 }
 
 int sl_output_abort(sl_output *o) {
   if (!o) return 0;
-  if (o->discard) {
-    free_output(o);
-    return 0;
-  }
   if (o->in_step) H5Gclose(o->step_group);
   o->in_step = 0;
   if (o->file >= 0) {
     if (o->committed) H5Fflush(o->file, H5F_SCOPE_GLOBAL);
-    close_file(o->file);
+    sl_h5_close_all(o->file);
     o->file = -1;
   }
   int kept = o->committed;
-  if (!kept) unlink(o->tmp_path); /* the earlier result stays */
+  if (!kept && sl_io_rank0(o)) unlink(o->tmp_path); /* the earlier result stays */
   free_output(o);
   return kept;
 }
 
 static int add_scalar(sl_output *o, const char *name, const char *unit, double value, sl_diag *d) {
-  if (o->discard) return 0;
   if (!o->in_step) return sl_diag_set(d, SL_EBADINPUT, "%s: scalar '%s' written outside a step", o->path, name);
   int rc = sl_io_check_name(name, 200, "scalar", d);
   if (rc) return sl_diag_prefix(d, rc, "%s", o->path);

@@ -60,6 +60,10 @@ typedef struct sl_output_opts {
   /* more files never replaced (the files the scene includes) */
   const char *const *protect_more;
   int n_protect_more;
+  /* every rank of MPI_COMM_WORLD opens the file together and writes its
+   * block of each dataset's rows (parallel HDF5; collective.c); the ranks
+   * make the same calls with the same values. The PETSc build only. */
+  int collective;
 } sl_output_opts;
 
 /* The checks sl_output_open_opts makes, creating nothing (SL_EBADINPUT with
@@ -71,12 +75,6 @@ int sl_output_check_path(const char *path, const sl_output_opts *opts, sl_diag *
 int sl_output_open_opts(sl_output **out, const char *path, const sl_output_opts *opts, sl_diag *d);
 /* With the default opts: not from a scene, no overwrite. */
 int sl_output_open(sl_output **out, const char *path, sl_diag *d);
-/* A writer that writes nothing: every call below succeeds and does nothing,
- * sl_output_stats counts nothing, no file is checked, created or removed.
- * The ranks after the first of a run on several (mpirun) hold the whole
- * state as rank 0 does and take the same path through the output calls;
- * rank 0 alone writes. path is kept for messages only (may be NULL). */
-int sl_output_open_discard(sl_output **out, const char *path, sl_diag *d);
 /* The run failed: closes and frees. Before the first complete output time
  * (or checkpoint) the new file is removed and what was there before stays:
  * returns 0 then, 1 when the file was kept. */
@@ -154,6 +152,10 @@ int sl_output_write_checkpoint(sl_output *out, const sl_checkpoint *ck, sl_diag 
 /* What has been written so far: complete output times, field datasets and
  * the bytes of their values. */
 void sl_output_stats(const sl_output *out, long *times, long *datasets, double *bytes);
+/* The bytes of values (fields, mesh, checkpoints) this rank wrote, those
+ * all ranks wrote, and in how many collective transfers this rank's went
+ * (0 when not collective). */
+void sl_output_rank_stats(const sl_output *out, double *here, double *all, long *collective);
 
 /* Flushes, closes and frees (also after failures); a file with no complete
  * output time yet is renamed to its name now. */

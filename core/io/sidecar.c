@@ -291,7 +291,7 @@ static int csv_step(sl_output *o, double t, sl_diag *d) {
         row[1 + c] = isnan(o->scalars[i].value) ? fabs(o->scalars[i].value) : o->scalars[i].value;
   }
   ++o->n_rows;
-  if (o->n_cols == 0) return 0; /* no scalars (yet): no CSV */
+  if (o->n_cols == 0 || !sl_io_rank0(o)) return 0; /* no scalars (yet): no CSV; rank 0's alone (collective.c) */
   sbuf b = {0};
   int whole = grew || o->csv_fd < 0;
   if (whole) {
@@ -322,6 +322,8 @@ static int csv_step(sl_output *o, double t, sl_diag *d) {
 }
 
 int sl_sidecar_step(sl_output *o, sl_diag *d) {
+  /* a collective output's .xmf is rank 0's; every rank notes the scalars' units in the file */
+  if (!sl_io_rank0(o)) return csv_step(o, o->step_time, d);
   int index = o->next_index - 1;
   char *body = sl_sidecar_grid(o, index);
   if (!body) return sl_diag_set(d, SL_ENOMEM, "%s: out of memory", o->path);

@@ -17,7 +17,7 @@
  * superblock and the metadata flushed at close. */
 enum { SPACE_MARGIN = 256 * 1024 };
 
-int sl_io_space_check(const sl_output *o, double bytes, const char *what, sl_diag *d) {
+static int space_check(const sl_output *o, double bytes, const char *what, sl_diag *d) {
   double need = bytes * 1.125 + SPACE_MARGIN;
   const char *file = o->committed ? o->path : o->tmp_path;
   hsize_t size = 0;
@@ -48,6 +48,15 @@ int sl_io_space_check(const sl_output *o, double bytes, const char *what, sl_dia
     return sl_diag_set(d, SL_EFAILED, "%s: no room to write %s: it needs about %.3g MB and the disk has %.3g MB free",
                        o->path, what, need / 1e6, left / 1e6);
   return 0;
+}
+
+/* Collective: rank 0 decides for every rank (the ranks would otherwise see
+ * the disk at different moments, and one stop where the others write). */
+int sl_io_space_check(const sl_output *o, double bytes, const char *what, sl_diag *d) {
+  int rc = sl_io_rank0(o) ? space_check(o, bytes, what, d) : 0;
+  int all = sl_io_agree(o, rc);
+  if (all && !rc) rc = sl_diag_set(d, all, "%s: no room to write %s (rank 0 found)", o->path, what);
+  return rc;
 }
 
 void sl_io_process_start(void) { H5dont_atexit(); }

@@ -98,28 +98,20 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
   void *self = p.self;
   const sl_model_ops *ops = p.entry ? p.entry->ops : NULL;
   const sl_model_info info = p.info;
-  /* on several ranks (mpirun) every rank holds the whole state and makes the same output calls; rank 0 alone
-     writes, the others' writer discards */
+  /* on several ranks (mpirun) every rank holds the whole state and makes the same output calls: the ranks write the
+     one file together, each its block of every dataset (core/io/collective.c) */
   int rank = 0, ranks = 1;
   if (!rc) rc = sl_linsolve_ranks(&rank, &ranks, d);
   if (!rc) {
     sl_scene_output_path(sc, o->output, o->scene_path, res->output_path, sizeof res->output_path);
-    if (rank > 0) {
-      rc = sl_output_open_discard(&out, res->output_path, d);
-    } else {
-      sl_output_opts oo;
-      char dir[4096];
-      sl_run_output_opts(o, dir, sizeof dir, &oo);
-      oo.protect_more = (const char *const *)ini->files, oo.n_protect_more = ini->n_files;
-      rc = sl_output_open_opts(&out, res->output_path, &oo, d);
-      const sl_src *at = o->output ? NULL : sl_scene_src(sc, &sc->output.file); /* the line that named the file */
-      if (rc == SL_EBADINPUT && at) sl_diag_prefix(d, rc, "%s:%d", at->file, at->line);
-    }
-    if (ranks > 1) { /* rank 0 could not open the output: every rank stops */
-      int all = sl_linsolve_agree(rc);
-      if (all && !rc)
-        rc = sl_diag_set(d, all, "rank %d of %d: rank 0 could not open the output %s", rank, ranks, res->output_path);
-    }
+    sl_output_opts oo;
+    char dir[4096];
+    sl_run_output_opts(o, dir, sizeof dir, &oo);
+    oo.protect_more = (const char *const *)ini->files, oo.n_protect_more = ini->n_files;
+    oo.collective = ranks > 1;
+    rc = sl_output_open_opts(&out, res->output_path, &oo, d);
+    const sl_src *at = o->output ? NULL : sl_scene_src(sc, &sc->output.file); /* the line that named the file */
+    if (rc == SL_EBADINPUT && at) sl_diag_prefix(d, rc, "%s:%d", at->file, at->line);
   }
   if (!rc) rc = ops->write_mesh(self, out, d);
   if (!rc) rc = sl_scene_provenance_make(sc, o->sluice_version, &pv, d);
@@ -135,6 +127,7 @@ int sl_model_run(sl_ini *ini, const sl_registry *reg, const sl_run_opts *o, sl_r
     memcpy(res->stop_reason, res->model.stop_reason, sizeof res->stop_reason);
   if (out) {
     sl_output_stats(out, &res->output_times, &res->output_datasets, &res->output_bytes);
+    sl_output_rank_stats(out, &res->output_bytes_rank, &res->output_bytes_all, &res->output_collective);
     if (rc) { /* before the first complete output time, what was there stays */
       if (!sl_output_abort(out)) res->output_path[0] = '\0';
     } else rc = sl_output_close(out, d);

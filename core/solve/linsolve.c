@@ -442,7 +442,12 @@ int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {
     /* a refactorisation (KLU's) keeps the pivots of the last fresh factorisation: remember whose they are */
     ls->refactored = ls->st.n_refactor > refactors && ls->st.n_refactor_redo == redone;
     ls->distributed = A->rows != NULL;
-    if (!ls->refactored) {
+    /* the pivots' values are kept only for a checkpoint's history (sl_linsolve_history), which an iterative
+       backend (solve_rtol: PETSc) or rows divided among ranks never take: a copy of the matrix's values less */
+    if (ls->ops->solve_rtol || ls->distributed) {
+      free(ls->pivoted);
+      ls->pivoted = NULL, ls->n_pivoted = 0;
+    } else if (!ls->refactored) {
       if (ls->n_pivoted != A->nnz) {
         free(ls->pivoted);
         ls->pivoted = malloc((size_t)A->nnz * sizeof *ls->pivoted);

@@ -121,7 +121,7 @@ int sl_linsolve_petsc_scene_options(const char *options, sl_diag *d);
  * launcher's so that a caller can refuse to run the same scene N times. */
 int sl_linsolve_ranks(int *rank, int *size, sl_diag *d);
 /* On several ranks: the largest of every rank's rc (0 when all are 0), so that a step one rank alone can fail
- * (opening the output, which rank 0 alone does) is failed by all; on one rank (or without PETSc) rc itself. */
+ * (a closure out of range on one rank's points) is failed by all; on one rank (or without PETSc) rc itself. */
 int sl_linsolve_agree(int rc);
 /* On several ranks: x[0..n) becomes the sum over the ranks of their x, added in rank order on every rank so
  * that every rank gets bitwise the same sums (Newton's norms of a system whose rows are divided among the ranks:

@@ -154,6 +154,9 @@ typedef struct sl_run_result {
   double solve, factorisation, output, cpu_setup, cpu_output;
   long output_times, output_datasets;
   double output_bytes;
+  /* of the values, what this rank wrote, in how many collective transfers (mpirun) */
+  double output_bytes_rank, output_bytes_all;
+  long output_collective;
   sl_model_stats model;
 } sl_run_result;
 

@@ -60,7 +60,8 @@ typedef struct sluice_open_opts {
 } sluice_open_opts;
 
 /* The process's rank and the number of ranks it was launched with by mpirun (0 and 1 otherwise). With PETSc,
- * the ranks share the linear solves and every rank keeps the whole state; rank 0 alone should write output.
+ * the ranks share the linear solves and every rank keeps the whole state; every rank runs the scene and the
+ * ranks write its one output file together (parallel HDF5); rank 0 alone should print.
  * Starts MPI when launched by mpirun; call it before sluice_open. */
 int sluice_ranks(int *rank, int *size, sluice_error *e);
 
@@ -154,6 +155,10 @@ typedef struct sluice_summary {
   double cpu_setup, cpu_flow, cpu_coupled, cpu_output;
   long output_times, output_datasets;
   double output_bytes;
+  /* under mpirun every rank writes its block of the file's values: this
+   * rank's bytes of them, and in how many collective transfers */
+  double output_bytes_rank, output_bytes_all;
+  long output_collective;
 } sluice_summary;
 
 /* Runs the scene. sum is filled in every case (a failed run's output_path

@@ -4,8 +4,9 @@
 # lines; the boycott vessel (the mixture, transient steps) with fixed steps against KLU; the options given
 # on the command line, in [solver.petsc] and in PETSC_OPTIONS, in that order of precedence; what a scene
 # may not set; and under mpirun: 1, 2, 3 (and 4) ranks against the serial answer, each rank assembling 1/N of the
-# cells (the closure points rank 0 evaluates) and keeping only its own rows, ranks > 0 writing no file, a failure to open the output
-# stopping every rank, a restart on another number of ranks.
+# cells (the closure points rank 0 evaluates) and keeping only its own rows, the ranks writing the one output file
+# together (parallel HDF5, each its block of every dataset), a failure to open the output stopping every rank, a
+# restart on another number of ranks.
 set -u
 sluice=$1 configs=$2
 work=$(mktemp -d)
@@ -87,7 +88,7 @@ for bad in "ksp_monitor = true" "log_view = true" "ksp_view = ascii:/tmp/x" "fie
   check "its message names the file and line: $bad" grep -q "bad.ini:5" <<<"$out"
   check "nothing written for: $bad" test ! -e bad.h5
 done
-# several ranks (mpirun): the linear solves shared, rank 0 writing; the same answer as KLU on one rank
+# several ranks (mpirun): the linear solves shared, the file written by all ranks; the same answer as KLU on one rank
 if command -v mpirun > /dev/null; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
   for n in 1 2 3; do
@@ -194,7 +195,17 @@ if command -v mpirun > /dev/null; then
   check "restart of a 1-rank checkpoint on 2 ranks continues the run ($dphi)" below "$dphi" 1e-9
   check "... on 2 ranks" grep -q "2 ranks)" cont.log
   check "no rank wrote a private folder" test -z "$(ls -A | grep sluice-rank)"
-  # ranks > 0 write nothing: a run on 2 ranks in a folder of its own leaves the files a run on 1 leaves, with
+  # the ranks write the one file together (parallel HDF5): rank 0 wrote its block of every dataset's rows, 1/N
+  # of the values' bytes (fields, mesh, checkpoints) within 2 % (its blocks are the floors of n / N), in
+  # collective transfers; before, rank 0 wrote all of them alone
+  for n in 2 3; do
+    read -r here all coll <<<"$(sed -n "s/.*output on $n ranks: this rank wrote \([0-9]*\) of the \([0-9]*\) bytes.* in \([0-9]*\) collective.*/\1 \2 \3/p" c$n.log)"
+    echo "cavity on $n ranks: rank 0 wrote ${here:-?} of the ${all:-?} bytes of values, in ${coll:-?} collective transfers"
+    check "$n ranks: rank 0 wrote 1/$n of the file's values (${here:-?} of ${all:-?})" \
+      test -n "$here" -a "$((50 * (n * ${here:-0} - ${all:-0})))" -le "${all:-0}" -a "$((50 * (${all:-0} - n * ${here:-0})))" -le "${all:-0}"
+    check "$n ranks: in collective transfers (${coll:-?})" test "${coll:-0}" -gt 0
+  done
+  # the ranks write no more files than one does: a run on 2 ranks in a folder of its own leaves the files a run on 1 leaves, with
   # the same contents (h5diff: every value within a relative 1e-8, the solver's tolerance; the sidecar the same
   # text, the scalars' CSV within 1e-8)
   mkdir one two
@@ -272,7 +283,7 @@ if command -v mpirun > /dev/null; then
   else
     echo "h5dump not found: the files of several ranks are not compared dataset by dataset"
   fi
-  # rank 0 alone opens the output: when it cannot, every rank stops (exit 2), none waits for it
+  # an output that may not be replaced: every rank stops (exit 2), none waits for another
   echo "not sluice's" > foreign.h5
   out=$(timeout 120 mpirun -n 2 "$sluice" run "$cav" --set mesh.cells=8,8 -o foreign.h5 2>&1); rc=$?
   check "2 ranks, an output rank 0 may not replace: exit 2 on every rank (exit $rc)" test "$rc" = 2
