@@ -172,8 +172,12 @@ static double water_density(double T) {
 }
 static double water_viscosity(double T) { return 2.414e-5 * pow(10.0, 247.8 / (T + 273.15 - 140.0)); }
 
-/* One row in one direction: the manometric gradient in kPa/m (NaN when the run fails). */
-static double run_row(const row *r, int down, double ks, double *us) {
+/* 1: each row as the loop ([pipe] loop = true), up-flow and down-flow in one run sharing the solids */
+static int loop;
+
+/* One row in one direction, or with loop both in one run: the (up-flow section's, with loop) manometric gradient in
+   kPa/m, the down-flow section's into *loop_down (may be NULL); NaN when the run fails. */
+static double run_row(const row *r, int down, double ks, double *us, double *loop_down) {
   char s[6][80];
   snprintf(s[0], 80, "fluid.density=%.10g", water_density(r->t));
   snprintf(s[1], 80, "fluid.viscosity=%.10g", water_viscosity(r->t));
@@ -181,60 +185,29 @@ static double run_row(const row *r, int down, double ks, double *us) {
   snprintf(s[3], 80, "pipe.solids_fraction=%.10g", r->c);
   snprintf(s[4], 80, "flow.gravity=%s", down ? "9.81" : "-9.81");
   snprintf(s[5], 80, "closure.wall_stress.fluid.roughness=%.10g", ks);
-  const char *sets[] = {
-      s[0], s[1], s[2], s[3], s[4], s[5], scene == scene_a || scene == scene_al ? "solid.viscosity=1e-8" : NULL, NULL};
-  sluice *sl = NULL;
-  sluice_error e = {0, ""};
-  sluice_open_opts oo = {.sets = sets};
-  sluice_run_opts ro = {.output = out_h5, .version = "test"};
-  sluice_summary sum;
-  int rc = sluice_open_text(scene, strlen(scene), "vertical_pipe.ini", &oo, &sl, &e);
-  if (!rc) rc = sluice_run(sl, &ro, &sum, &e);
-  sluice_close(sl);
-  ++runs;
-  if (rc) {
-    ++failures;
-    printf("  %s V = %.2f %s: %s\n", r->table, r->v, down ? "down" : "up", e.msg);
-    return NAN;
-  }
-  if (us) *us = pipe_scalar(out_h5, "solids_mean_velocity");
-  return 1e-3 * pipe_scalar(out_h5, "manometric_gradient");
-}
-
-/* 1: each row as the loop ([pipe] loop = true), up-flow and down-flow in one run sharing the solids */
-static int loop;
-
-/* One row as the loop: both manometric gradients in kPa/m (NaN when the run fails). */
-static void run_row_loop(row *r, double ks) {
-  char s[5][80];
-  snprintf(s[0], 80, "fluid.density=%.10g", water_density(r->t));
-  snprintf(s[1], 80, "fluid.viscosity=%.10g", water_viscosity(r->t));
-  snprintf(s[2], 80, "pipe.bulk_velocity=%.10g", r->v);
-  snprintf(s[3], 80, "pipe.solids_fraction=%.10g", r->c);
-  snprintf(s[4], 80, "closure.wall_stress.fluid.roughness=%.10g", ks);
-  const char *sets[] = {s[0], s[1], s[2], s[3], s[4], "flow.gravity=-9.81", "pipe.loop=true", NULL};
+  const char *sets[9] = {s[0], s[1], s[2], s[3], s[4], s[5]};
+  int k = 6;
+  if (scene == scene_a || scene == scene_al) sets[k++] = "solid.viscosity=1e-8";
+  if (loop) sets[k++] = "pipe.loop=true";
   sluice_error e = {0, ""};
   ++runs;
   if (pipe_run_text(scene, "vertical_pipe.ini", sets, out_h5, &e)) {
     ++failures;
-    printf("  %s V = %.2f loop: %s\n", r->table, r->v, e.msg);
-    r->p_up = r->p_down = NAN;
-    return;
+    printf("  %s V = %.2f %s: %s\n", r->table, r->v, loop ? "loop" : down ? "down" : "up", e.msg);
+    if (loop_down) *loop_down = NAN;
+    return NAN;
   }
-  r->us = pipe_scalar(out_h5, "solids_mean_velocity");
-  r->p_up = 1e-3 * pipe_scalar(out_h5, "loop_manometric_gradient_up");
-  r->p_down = 1e-3 * pipe_scalar(out_h5, "loop_manometric_gradient_down");
+  if (us) *us = pipe_scalar(out_h5, "solids_mean_velocity");
+  if (!loop) return 1e-3 * pipe_scalar(out_h5, "manometric_gradient");
+  if (loop_down) *loop_down = 1e-3 * pipe_scalar(out_h5, "loop_manometric_gradient_down");
+  return 1e-3 * pipe_scalar(out_h5, "loop_manometric_gradient_up");
 }
 
 static void run_rows(const char *table, double ks) {
   for (int i = 0; i < n_rows; ++i) {
     if (table && strcmp(rows[i].table, table) != 0) continue;
-    if (loop) {
-      run_row_loop(&rows[i], ks);
-      continue;
-    }
-    rows[i].p_up = run_row(&rows[i], 0, ks, &rows[i].us);
-    rows[i].p_down = run_row(&rows[i], 1, ks, NULL);
+    rows[i].p_up = run_row(&rows[i], 0, ks, &rows[i].us, loop ? &rows[i].p_down : NULL);
+    if (!loop) rows[i].p_down = run_row(&rows[i], 1, ks, NULL, NULL);
   }
 }
 
@@ -343,7 +316,7 @@ static void model_scored(const char *label, const char *csv, int assert_targets,
   for (int k = 0; k < 2; ++k) {
     row r = {.c = 0.25, .t = 22.8, .v = vv[k]};
     double us = NAN;
-    run_row(&r, 0, ks, &us);
+    run_row(&r, 0, ks, &us, NULL);
     printf("25 %%, up-flow, V = %.0f m/s: mean solids velocity %.3f m/s, L-probe %.2f (%+.1f %%)\n", vv[k], us, meas[k],
            100.0 * (us / meas[k] - 1.0));
   }

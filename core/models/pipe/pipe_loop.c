@@ -44,7 +44,7 @@ int pipe_loop_solve(pipe *a, sl_diag *d) {
   const pipe_config *c = a->cfg;
   const double C = c->solids_fraction, cap = a->phi_max - 0.01, tol = 10.0 * c->tolerance;
   long its = 0;
-  double x0 = C, f0, x1, f1 = 0.0;
+  double x0 = C, f0 = 0.0, x1, f1 = 0.0;
   a->loop_iterations = 0;
   int rc = evaluate(a, C, x0, &f0, &its, d), ok = a->converged && b->converged;
   if (!a->two_phase || rc || !ok || fabs(f0) <= tol) {
