@@ -46,8 +46,12 @@
  * 5 % table; every run converging and each table's mean error as recorded (docs/pipe.md) to 1 point.
  * One more: model B as the loop ([pipe] loop = true: both sections in one run sharing the solids at one solids flux),
  * calibrated on the 5 % table; the same targets, and each table's mean error as recorded (docs/pipe.md) to 1 point.
- * The program runs in two parts (argument "models": A, B, B in full, C; "variants": the lift, the Coulomb friction and
- * the loop; no argument: both), registered as two tests that run side by side.
+ * A third part ("slip"): candidates for the loop's missing slip, each as the loop calibrated on the 5 % table (Di
+ * Felice's and Richardson-Zaki's drag, n = 3.19, for the beads' Re_t = 40; Saffman's lift; model B in full), with the
+ * slip each table's slowest row needs against the model's; asserted: the Richardson-Zaki variant's mean errors as
+ * recorded to 1 point with every run converging, and the needed slip at 40-45 % above 3 u_t.
+ * The program runs in three parts (argument "models": A, B, B in full, C; "variants": the lift, the Coulomb friction
+ * and the loop; "slip"; no argument: all), registered as three tests that run side by side.
  * The predictions go to krampa_tables_c_predicted.csv (and _model_a, _model_b_full, _model_b_full_blend,
  * _model_c, _model_b_lift, _model_a_lift, _model_b_full_blend_lift, _model_b_coulomb,
  * _model_b_full_blend_coulomb, _model_b_loop). */

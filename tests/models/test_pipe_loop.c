@@ -10,6 +10,7 @@
  *   mixture momentum, Krampa 2009 eq 2.1, to the solve's tolerance);
  * - the up-flow section is the single up-flow run at its share (solids_fraction = c_u), to 1e-6;
  * - neutrally buoyant solids (rho_s = rho_f) do not slip by gravity: both shares are the nominal exactly;
+ * - with Richardson-Zaki's drag (n = 3.19), dilute (2 %, 1 m/s): the sections' mean slip is u_t (1 - C)^(n - 1), to 1e-4;
  * - loop with length or pressure_gradient is refused (a bad-input error, before any output). */
 #include <math.h>
 #include <stdio.h>
