@@ -73,7 +73,7 @@ typedef struct row {
   char table[8];
   double c, q, down, up, t, avg, v;
   double p_up, p_down, us; /* predicted manometric gradients (kPa/m), the up-flow's mean solids velocity */
-  double cu, cd;            /* with the loop: the sections' in-situ mean fractions */
+  double cu, cd;           /* with the loop: the sections' in-situ mean fractions */
 } row;
 
 static row rows[MAX_ROWS];
@@ -161,10 +161,10 @@ static int load(void) {
     const char *fs_b = strstr(scene_b, "solids_wall = free_slip"), *fs_t = strstr(scene_btb, "solids_wall = free_slip");
     CHECK_MSG(fs_b && fs_t, "vertical_pipe.ini has no solids_wall = free_slip");
     if (!fs_b || !fs_t) return 1;
-    snprintf(scene_bw, sizeof scene_bw, "%.*ssolids_wall = wall_stress\nwall_normal_stress = contact_kinetic%s%s", (int)(fs_b - scene_b), scene_b,
-             fs_b + strlen("solids_wall = free_slip"), coulomb);
-    snprintf(scene_btbw, sizeof scene_btbw, "%.*ssolids_wall = wall_stress\nwall_normal_stress = contact_kinetic%s%s", (int)(fs_t - scene_btb), scene_btb,
-             fs_t + strlen("solids_wall = free_slip"), coulomb);
+    snprintf(scene_bw, sizeof scene_bw, "%.*ssolids_wall = wall_stress\nwall_normal_stress = contact_kinetic%s%s",
+             (int)(fs_b - scene_b), scene_b, fs_b + strlen("solids_wall = free_slip"), coulomb);
+    snprintf(scene_btbw, sizeof scene_btbw, "%.*ssolids_wall = wall_stress\nwall_normal_stress = contact_kinetic%s%s",
+             (int)(fs_t - scene_btb), scene_btb, fs_t + strlen("solids_wall = free_slip"), coulomb);
   }
   return n_rows == 76 ? 0 : 1;
 }
@@ -464,9 +464,10 @@ static void variants_added(void) {
    tau_u = (D/4)((dP/L)_u - (c_u rho_s + (1 - c_u) rho_f - rho_f) g), tau_d = (D/4)((dP/L)_d + (c_d ... ) g), against
    the model's. The needed slips of C.5-C.7 into need (m/s; may be NULL). */
 static void slip_report(const char *label, double *need_out) {
-  printf("%s: the slowest row of each table\n| table | V (m/s) | c_u - c_d | needed | slip (m/s) | needed | tau_u (Pa) "
-         "| from data | tau_d (Pa) | from data |\n|---|---|---|---|---|---|---|---|---|---|\n",
-         label);
+  printf(
+      "%s: the slowest row of each table\n| table | V (m/s) | c_u - c_d | needed | slip (m/s) | needed | tau_u (Pa) "
+      "| from data | tau_d (Pa) | from data |\n|---|---|---|---|---|---|---|---|---|---|\n",
+      label);
   const char *tables[7] = {"C.1", "C.2", "C.3", "C.4", "C.5", "C.6", "C.7"};
   for (int k = 0; k < 7; ++k) {
     const row *lo = NULL;
@@ -480,8 +481,8 @@ static void slip_report(const char *label, double *need_out) {
                  f = lo->v / (2.0 * lo->c * (1.0 - lo->c));
     const double tu = 0.25 * D * (1e3 * lo->p_up - lo->cu * drg), td = 0.25 * D * (1e3 * lo->p_down + lo->cd * drg);
     const double tu_m = 0.25 * D * (1e3 * lo->up - lo->cu * drg), td_m = 0.25 * D * (1e3 * lo->down + lo->cd * drg);
-    printf("| %s | %.2f | %.4f | %.4f | %.4f | %.4f | %.2f | %.2f | %.2f | %.2f |\n", tables[k], lo->v, dc, need, dc * f,
-           need * f, tu, tu_m, td, td_m);
+    printf("| %s | %.2f | %.4f | %.4f | %.4f | %.4f | %.2f | %.2f | %.2f | %.2f |\n", tables[k], lo->v, dc, need,
+           dc * f, need * f, tu, tu_m, td, td_m);
     if (need_out && k >= 4) need_out[k - 4] = need * f;
   }
 }

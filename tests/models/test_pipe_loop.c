@@ -105,9 +105,10 @@ static void richardson_zaki_dilute(void) {
   }
   const double ut = 0.5 * (lo + hi), s_rz = ut * pow(1.0 - C, n - 1.0);
   const double su = (V - F) / (1.0 - cu) - F / cu, sd = (F - V) / (1.0 - cd) + F / cd;
-  printf("Richardson-Zaki drag, %g %%, %g m/s: u_t %.5f m/s, slip up %.6f down %.6f (mean %.6f) against u_t eps^(n-1) "
-         "%.6f (%+.3f %%)\n",
-         100.0 * C, V, ut, su, sd, 0.5 * (su + sd), s_rz, 100.0 * (0.5 * (su + sd) / s_rz - 1.0));
+  printf(
+      "Richardson-Zaki drag, %g %%, %g m/s: u_t %.5f m/s, slip up %.6f down %.6f (mean %.6f) against u_t eps^(n-1) "
+      "%.6f (%+.3f %%)\n",
+      100.0 * C, V, ut, su, sd, 0.5 * (su + sd), s_rz, 100.0 * (0.5 * (su + sd) / s_rz - 1.0));
   CHECK_MSG(fabs(0.5 * (su + sd) / s_rz - 1.0) < 1e-4, "the sections' mean slip %.6g against %.6g", 0.5 * (su + sd),
             s_rz);
   CHECK_MSG(su > 0.0 && sd > 0.0, "slips %g, %g: the solids lag going up and lead going down", su, sd);
@@ -119,8 +120,7 @@ static void refused(const char *set, const char *key) {
   int rc = pipe_run_text(base, "vertical_pipe.ini", sets, "pipe_loop_refused.h5", &e);
   printf("loop with %s: %s\n", set, e.msg);
   CHECK_MSG(rc == SLUICE_BAD_INPUT, "loop with %s: code %d, not a bad-input error", set, rc);
-  CHECK_MSG(strstr(e.msg, key) != NULL && strstr(e.msg, "loop") != NULL, "the message names neither loop nor %s",
-            key);
+  CHECK_MSG(strstr(e.msg, key) != NULL && strstr(e.msg, "loop") != NULL, "the message names neither loop nor %s", key);
   FILE *f = fopen("pipe_loop_refused.h5", "rb");
   CHECK_MSG(f == NULL, "a refused scene wrote its output");
   if (f) fclose(f);
