@@ -36,18 +36,24 @@ int sl_scene_petsc_section(const sl_ini_section *sec, char **options, sl_diag *d
     sl_ini_entry *e = (sl_ini_entry *)&sec->entries[i]; /* marked read here, as the typed getters do */
     const char *k = e->key;
     int family = 0, ok = 1;
+    /* the split step's two solvers read their options under a prefix (core/solve/linsolve.h roles) */
+    const char *kf = k;
+    if (strncmp(kf, "velocity_", 9) == 0) kf += 9;
+    else if (strncmp(kf, "poisson_", 8) == 0) kf += 8;
     for (size_t f = 0; f < sizeof petsc_families / sizeof *petsc_families; ++f)
-      family |= strncmp(k, petsc_families[f], strlen(petsc_families[f])) == 0;
+      family |= strncmp(kf, petsc_families[f], strlen(petsc_families[f])) == 0;
     for (const char *c = k; *c && ok; ++c) ok = (*c >= 'a' && *c <= 'z') || (*c >= '0' && *c <= '9') || *c == '_';
     const char *refused = NULL;
     for (size_t w = 0; w < sizeof petsc_refused / sizeof *petsc_refused && !refused; ++w)
       if (strstr(k, petsc_refused[w])) refused = petsc_refused[w];
     int rc = 0;
     if (!ok || !family)
-      rc = sl_diag_set(d, SL_EBADINPUT,
-                       "%s:%d:%d: error: [%s] %s: not a solver option a scene may set (allowed: PETSc options "
-                       "starting ksp_, pc_, fieldsplit_, sub_, mg_ or mat_, without the dash)",
-                       e->file, e->line, e->col, sec->name, k);
+      rc = sl_diag_set(
+          d, SL_EBADINPUT,
+          "%s:%d:%d: error: [%s] %s: not a solver option a scene may set (allowed: PETSc options "
+          "starting ksp_, pc_, fieldsplit_, sub_, mg_ or mat_, or those after velocity_ or poisson_, without the "
+          "dash)",
+          e->file, e->line, e->col, sec->name, k);
     else if (refused)
       rc = sl_diag_set(d, SL_EBADINPUT,
                        "%s:%d:%d: error: [%s] %s: an option that can %s is not taken from a scene file; give it on "

@@ -354,8 +354,22 @@ void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len) {
   }
 }
 
+void sl_linsolve_describe(const sl_linsolve *ls, char *buf, size_t len) {
+  if (ls->ops->describe) {
+    char what[160];
+    ls->ops->describe(ls->backend, what, sizeof what);
+    snprintf(buf, len, "%s, %s", ls->ops->name, what);
+  } else {
+    snprintf(buf, len, "%s, %ld numeric", ls->ops->name, ls->st.n_numeric);
+  }
+}
+
 int sl_linsolve_set_blocks(sl_linsolve *ls, int32_t split, int transient, sl_diag *d) {
   return ls->ops->set_blocks ? ls->ops->set_blocks(ls->backend, split, transient, d) : 0;
+}
+
+int sl_linsolve_set_role(sl_linsolve *ls, int role, sl_diag *d) {
+  return ls->ops->set_role ? ls->ops->set_role(ls->backend, role, d) : 0;
 }
 
 int sl_linsolve_factor(sl_linsolve *ls, const sl_csr *A, sl_diag *d) {

@@ -95,6 +95,8 @@ typedef struct sl_linsolve_ops {
   int (*set_blocks)(void *backend, int32_t split, int transient, sl_diag *d);
   /* Optional: what the backend does, for the run's summary ("fgmres/fieldsplit, 120 iterations"). */
   void (*describe)(void *backend, char *buf, size_t len);
+  /* Optional: the system's role among a run's several (sl_linsolve_set_role). */
+  int (*set_role)(void *backend, int role, sl_diag *d);
 } sl_linsolve_ops;
 
 /* Fill-reducing orderings a backend may be told to use. AUTO is the
@@ -209,6 +211,20 @@ int sl_linsolve_solve(sl_linsolve *ls, const sl_csr *A, const double *b, double 
  * ignore it. */
 int sl_linsolve_set_blocks(sl_linsolve *ls, int32_t split, int transient, sl_diag *d);
 
+/* What a system is among the several of one run, for an iterative backend's defaults and options (the direct
+ * backends ignore it). PETSc: the solver reads its options under the role's prefix (-velocity_ksp_type,
+ * -poisson_pc_type ...), and its defaults are the role's: the split step's velocity block (nonsymmetric, its
+ * mass term dominant) GMRES with ILU(0), block Jacobi with ILU(0) on each rank's rows on several ranks; its
+ * pressure Poisson operator (symmetric positive definite) CG with BoomerAMG (GAMG without hypre); the rotating
+ * frame's Poisson operator (nonsymmetric) GMRES with BoomerAMG. */
+enum {
+  SL_LINSOLVE_ROLE_ANY = 0,
+  SL_LINSOLVE_ROLE_VELOCITY,      /* prefix "velocity_" */
+  SL_LINSOLVE_ROLE_POISSON,       /* prefix "poisson_", symmetric positive definite */
+  SL_LINSOLVE_ROLE_POISSON_NONSYM /* prefix "poisson_", nonsymmetric */
+};
+int sl_linsolve_set_role(sl_linsolve *ls, int role, sl_diag *d);
+
 /* Force a numeric factorisation at the next solve (values written without
  * sl_csr_touch). */
 void sl_linsolve_values_changed(sl_linsolve *ls);
@@ -270,5 +286,8 @@ const sl_linsolve_stats *sl_linsolve_get_stats(const sl_linsolve *ls);
  * "klu (amd ordering): 1 symbolic ..., 13 numeric ..., 159 reused (FGMRES
  * 7.5 iterations a solve, 0 refactorised) ..., 172 solves ...". */
 void sl_linsolve_summary(const sl_linsolve *ls, char *buf, size_t len);
+/* Shorter: the backend and what it did ("petsc, gmres/bjacobi, 637 iterations, 2 ranks"; a direct backend's
+ * numeric factorisations). */
+void sl_linsolve_describe(const sl_linsolve *ls, char *buf, size_t len);
 
 #endif

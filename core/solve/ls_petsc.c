@@ -13,6 +13,8 @@
  *    (GAMG where PETSc has no hypre), the Schur complement by the
  *    "selfp" approximation A11 - A10 diag(A00)^-1 A01 and Jacobi, upper
  *    triangular factorisation;
+ *  - the split step's velocity block and Poisson operator (sl_linsolve_set_role) by GMRES with ILU(0)
+ *    (block Jacobi on several ranks) and CG with BoomerAMG, under the options prefixes -velocity_, -poisson_;
  *  - any other system by GMRES(30) with ILU(0), right-preconditioned.
  * The tolerance is on the true residual, |b - A x| <= rtol |b| (right
  * preconditioning): 1e-10 for a solve that must be exact to Newton's eye,
@@ -52,6 +54,7 @@ typedef struct petsc_state {
   int configured;      /* the KSP has its type and options */
   int user_tolerances; /* -ksp_rtol or -ksp_max_it given: they replace the exact solve's */
   long iterations;
+  int role;            /* SL_LINSOLVE_ROLE_*: the options prefix and the defaults (sl_linsolve_set_role) */
   const sl_rows *rows; /* the matrix's rows are divided among the ranks (A->rows): this rank's own rows only */
   rows_exchange map;   /* a row's columns in the ranks' numbering (its cols buffer) */
 } petsc_state;
@@ -375,6 +378,29 @@ static int petsc_set_blocks(void *backend, int32_t split, int transient, sl_diag
   return 0;
 }
 
+static int petsc_set_role(void *backend, int role, sl_diag *d) {
+  petsc_state *s = backend;
+  if (role < SL_LINSOLVE_ROLE_ANY || role > SL_LINSOLVE_ROLE_POISSON_NONSYM)
+    return sl_diag_set(d, SL_EBADINPUT, "petsc: no solver role %d", role);
+  s->role = role;
+  s->configured = 0;
+  return 0;
+}
+
+/* The options prefix of a role (without the leading dash), NULL for none. */
+static const char *role_prefix(int role) {
+  return role == SL_LINSOLVE_ROLE_VELOCITY                                             ? "velocity_"
+         : role == SL_LINSOLVE_ROLE_POISSON || role == SL_LINSOLVE_ROLE_POISSON_NONSYM ? "poisson_"
+                                                                                       : NULL;
+}
+
+/* A KSP for this solver, reading its options under its role's prefix. */
+static int create_ksp(petsc_state *s, sl_diag *d) {
+  TRY(KSPCreate(PETSC_COMM_WORLD, &s->ksp), "KSPCreate");
+  if (role_prefix(s->role)) TRY(KSPSetOptionsPrefix(s->ksp, role_prefix(s->role)), "KSPSetOptionsPrefix");
+  return 0;
+}
+
 /* Rows divided among the ranks: this rank's rows of the velocity (sluice rows below split) and of the pressure,
  * in the ranks' numbering (increasing there, as local[] is). */
 static int field_sets(const petsc_state *s, IS *u, IS *p, sl_diag *d) {
@@ -436,15 +462,26 @@ static int configure(petsc_state *s, sl_diag *d) {
      * does not converge there); a transient step's mass-dominated A makes S and selfp both a pressure
      * Laplacian, which needs AMG (16 iterations a solve on the boycott vessel; Jacobi does not converge) */
     TRY(option_default("-fieldsplit_p_pc_type", !s->transient ? "jacobi" : hypre ? "hypre" : "gamg"), "options");
+  } else if (s->role == SL_LINSOLVE_ROLE_POISSON || s->role == SL_LINSOLVE_ROLE_POISSON_NONSYM) {
+    /* the pressure Laplacian: one BoomerAMG V-cycle a Krylov iteration is mesh-independent (Elman, Silvester &
+     * Wathen 2014, ch. 2); CG where the operator is symmetric positive definite */
+    PetscBool hypre = PETSC_FALSE;
+    TRY(PetscHasExternalPackage("hypre", &hypre), "PetscHasExternalPackage");
+    TRY(KSPSetType(s->ksp, s->role == SL_LINSOLVE_ROLE_POISSON ? KSPCG : KSPGMRES), "KSPSetType");
+    TRY(PCSetType(pc, hypre ? PCHYPRE : PCGAMG), "PCSetType");
   } else {
+    /* ILU(0) is sequential in PETSc: on several ranks it runs on each rank's block of rows (block Jacobi) */
     TRY(KSPSetType(s->ksp, KSPGMRES), "KSPSetType");
-    TRY(PCSetType(pc, PCILU), "PCSetType");
+    TRY(PCSetType(pc, s->size > 1 ? PCBJACOBI : PCILU), "PCSetType");
   }
-  TRY(KSPSetPCSide(s->ksp, PC_RIGHT), "KSPSetPCSide");
+  /* the tolerance is on the true residual: right preconditioning; CG takes the left side only, with the
+   * unpreconditioned norm */
+  TRY(KSPSetPCSide(s->ksp, s->role == SL_LINSOLVE_ROLE_POISSON && s->split == 0 ? PC_LEFT : PC_RIGHT), "KSPSetPCSide");
   TRY(KSPSetNormType(s->ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
   PetscBool rtol_given = PETSC_FALSE, max_it_given = PETSC_FALSE;
-  TRY(PetscOptionsHasName(NULL, NULL, "-ksp_rtol", &rtol_given), "options");
-  TRY(PetscOptionsHasName(NULL, NULL, "-ksp_max_it", &max_it_given), "options");
+  const char *prefix = role_prefix(s->role);
+  TRY(PetscOptionsHasName(NULL, prefix, "-ksp_rtol", &rtol_given), "options");
+  TRY(PetscOptionsHasName(NULL, prefix, "-ksp_max_it", &max_it_given), "options");
   s->user_tolerances = rtol_given || max_it_given;
   TRY(KSPSetTolerances(s->ksp, PETSC_EXACT_RTOL, 0.0, PETSC_DEFAULT, PETSC_EXACT_MAX_IT), "KSPSetTolerances");
   PetscErrorCode e = KSPSetFromOptions(s->ksp);
@@ -486,8 +523,7 @@ static int petsc_symbolic(void *backend, const sl_csr *A, sl_diag *d) {
     TRY(VecCreateMPI(PETSC_COMM_WORLD, s->r1 - s->r0, A->n_rows, &s->b), "VecCreateMPI");
     TRY(VecDuplicate(s->b, &s->x), "VecDuplicate");
     TRY(VecScatterCreateToAll(s->x, &s->to_all, &s->x_all), "VecScatterCreateToAll");
-    TRY(KSPCreate(PETSC_COMM_WORLD, &s->ksp), "KSPCreate");
-    return 0;
+    return create_ksp(s, d);
   }
   owned_rows(A, rank, size, &s->r0, &s->r1);
   int32_t nloc = s->r1 - s->r0;
@@ -512,8 +548,7 @@ static int petsc_symbolic(void *backend, const sl_csr *A, sl_diag *d) {
     TRY(VecScatterCreateToAll(s->x, &s->to_all, &s->x_all), "VecScatterCreateToAll");
   }
   if (size == 1) TRY(MatCreateVecs(s->A, &s->x, &s->b), "MatCreateVecs");
-  TRY(KSPCreate(PETSC_COMM_WORLD, &s->ksp), "KSPCreate");
-  return 0;
+  return create_ksp(s, d);
 }
 
 static int petsc_numeric(void *backend, const sl_csr *A, sl_linsolve_stats *st, sl_diag *d) {
@@ -635,7 +670,8 @@ const sl_linsolve_ops sl_linsolve_petsc_ops = {.name = "petsc",
                                                .destroy = petsc_destroy,
                                                .solve_rtol = petsc_solve_rtol,
                                                .set_blocks = petsc_set_blocks,
-                                               .describe = petsc_describe};
+                                               .describe = petsc_describe,
+                                               .set_role = petsc_set_role};
 
 /* ---- the cells' partition --------------------------------------------------------------------------------- */
 

@@ -1228,16 +1228,16 @@ static int projection_setup(sl_flow *f, sl_diag *d) {
   int rank = 0, ranks = 1, rc0 = sl_linsolve_ranks(&rank, &ranks, d);
   if (rc0) return rc0;
   /* auto (the default, docs/transient_cost.md "The default scheme", measured): the split step for a transient
-     suspension (solids riding on the flow) on one rank in a frame at rest and without a yield stress, where it
-     costs 0.3-0.4 of the monolithic step at the scenes' accuracy; the monolithic step otherwise: the rotating
-     waves' split step is unstable by t = 7.8 with a no-slip wall at Omega dt = 10, the Bingham bed's steps fall
+     suspension (solids riding on the flow) in a frame at rest and without a yield stress, on any number of
+     ranks, where it costs 0.3-0.4 of the monolithic step at the scenes' accuracy; the monolithic step otherwise:
+     the rotating waves' split step is unstable by t = 7.8 with a no-slip wall at Omega dt = 10, the Bingham bed's steps fall
      to 1e-5 under the splitting error of a 1e5 viscosity contrast, and the plain fluid's scenes keep their
      second-order pressure. A linear (Stokes) step stays monolithic too: one solve a step, none where the
      load is at round-off (the box at rest 0.065 s against the split step's 0.61 s; boycott with convection off
      to t = 0.2, 2.2 s against 1.9 s). */
   int linear = !sc->flow.convection && !f->ph.visc;
-  if (sc->flow.scheme == 2 && (sc->time.scheme == SL_SCHEME_STEADY || ranks > 1 || !f->riding ||
-                               sc->flow.rotation != 0.0 || f->ph.yield_stress > 0.0 || linear))
+  if (sc->flow.scheme == 2 && (sc->time.scheme == SL_SCHEME_STEADY || !f->riding || sc->flow.rotation != 0.0 ||
+                               f->ph.yield_stress > 0.0 || linear))
     return 0;
   if (sc->flow.scheme == 0) return 0;
   char at[400];
@@ -1246,21 +1246,30 @@ static int projection_setup(sl_flow *f, sl_diag *d) {
                        "%s = projection: a split time step needs a transient [time] scheme "
                        "(bdf1 or bdf2); a steady scene is solved monolithic",
                        sl_scene_where(sc, &sc->flow.scheme, at, sizeof at));
-  if (ranks > 1) /* its operators are assembled and solved whole on one rank */
-    return sl_diag_set(d, SL_EBADINPUT,
-                       "%s = projection runs on one rank (this run has %d): use scheme = monolithic "
-                       "under mpirun",
-                       sl_scene_where(sc, &sc->flow.scheme, at, sizeof at), ranks);
   sl_projection_opts o = {.chi = f->riding ? fmin(f->ph.density, f->rho_solid) : f->ph.density,
                           .mu_rotational = f->ph.visc ? 0.0 : f->ph.viscosity,
                           .open = f->bcs.open,
-                          .datum = f->datum};
+                          .datum = f->datum,
+                          .rank = rank,
+                          .ranks = ranks};
   const char *name;
   int rc = sl_scene_linsolve_general(sc, f->th->p_offset, "the split step's velocity matrix is nonsymmetric",
                                      &o.velocity_solver, &name, d);
   if (rc) return rc;
+  /* PETSc (under mpirun, or chosen): both operators assembled on the ranks' cells and solved on their rows by
+     Krylov solvers with the roles' defaults (linsolve.h); otherwise F's diagonal blocks precondition FGMRES */
+  o.distributed = strcmp(name, "petsc") == 0;
   if ((rc = sl_scene_linsolve_general(sc, f->th->pres->n_dofs, "", &o.poisson_solver, &name, d)) ||
-      (rc = sl_scene_linsolve_general(sc, f->th->p_offset, "", &o.preconditioner_solver, &name, d))) {
+      (!o.distributed &&
+       (rc = sl_scene_linsolve_general(sc, f->th->p_offset, "", &o.preconditioner_solver, &name, d)))) {
+    sl_linsolve_destroy(o.velocity_solver), sl_linsolve_destroy(o.poisson_solver);
+    return rc;
+  }
+  if (o.distributed &&
+      ((rc = sl_linsolve_set_role(o.velocity_solver, SL_LINSOLVE_ROLE_VELOCITY, d)) ||
+       (rc = sl_linsolve_set_role(o.poisson_solver,
+                                  sc->flow.rotation != 0.0 ? SL_LINSOLVE_ROLE_POISSON_NONSYM : SL_LINSOLVE_ROLE_POISSON,
+                                  d)))) {
     sl_linsolve_destroy(o.velocity_solver), sl_linsolve_destroy(o.poisson_solver);
     return rc;
   }

@@ -147,10 +147,14 @@ static int poisson_matrix(sl_projection *pj, int axisymmetric, double m, sl_diag
 static int build_poisson(sl_projection *pj, const sl_flow_problem *prob, sl_diag *d) {
   const sl_dofmap *pm = pj->th->pres;
   const sl_mesh *m = pj->th->mesh;
-  int rc = sl_system_init(&pj->psys, pm->n_dofs, m->n_cells, pm->dofs_per_cell, pm->cell_dofs, d);
+  int rc = sl_system_init_ranks(&pj->psys, pm->n_dofs, m->n_cells, pm->dofs_per_cell, pm->cell_dofs, pj->o.rank,
+                                pj->o.ranks, d);
   if (rc) return rc;
   if ((rc = poisson_matrix(pj, prob->opts.axisymmetric, 1.0, d))) return rc;
   memcpy(pj->mass, pj->psys.b, (size_t)pj->np * sizeof *pj->mass);
+  /* distributed, each rank holds its own rows of b (zeros elsewhere): the ranks' sum is the whole lumped mass,
+   * bitwise the same on every rank */
+  if (pj->psys.distributed && (rc = sl_linsolve_sum_ordered(pj->mass, pj->np, d))) return rc;
   for (int32_t i = 0; i < pj->np; ++i) pj->volume += pj->mass[i];
   if ((rc = sl_constraints_init(&pj->pbc, pm->n_dofs, d))) return rc;
   int any = 0;
@@ -230,21 +234,24 @@ int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *
   for (int c = 0; c < nc && !rc; ++c)
     memcpy(pj->vel_cell_dofs + (size_t)c * nbv, th->cell_dofs + (size_t)c * th->dofs_per_cell,
            (size_t)nbv * sizeof *pj->vel_cell_dofs);
-  if (!rc) rc = sl_system_init(&pj->vsys, pj->nv, nc, nbv, pj->vel_cell_dofs, d);
+  if (!rc) {
+    if (!o->distributed) rc = sl_system_init(&pj->vsys, pj->nv, nc, nbv, pj->vel_cell_dofs, d);
+    else rc = sl_system_init_ranks(&pj->vsys, pj->nv, nc, nbv, pj->vel_cell_dofs, o->rank, o->ranks, d);
+  }
   int ncomp = th->n_comp, nb = th->vel->dofs_per_cell;
   if (!rc && !(pj->comp_dofs = malloc((size_t)nc * nbv * sizeof *pj->comp_dofs)))
     rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
   /* In a rotating frame the Coriolis force couples the components as strongly as the mass term holds each (2
    * Omega against m = 1.5 / dt: 13 times at Omega dt = 10), and the diagonal blocks are no preconditioner
    * there (FGMRES fails and F is solved directly at every step): P is then F itself, kept as long as it works. */
-  if (!rc) { /* element (cell, component): that component's dofs of the cell; rotating, the cell's */
+  if (!rc && !o->distributed) { /* element (cell, component): that component's dofs of the cell; rotating, the cell's */
     memcpy(pj->comp_dofs, pj->vel_cell_dofs, (size_t)nc * nbv * sizeof *pj->comp_dofs);
     rc = pj->omega != 0.0 ? sl_csr_build_uniform(&pj->P, pj->nv, nc, nbv, pj->comp_dofs, d)
                           : sl_csr_build_uniform(&pj->P, pj->nv, nc * ncomp, nb, pj->comp_dofs, d);
   }
   if (!rc && !(pj->pmap = malloc(((size_t)pj->P.nnz + 1) * sizeof *pj->pmap)))
     rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
-  if (!rc) { /* P's entries among F's (the same rows, fewer columns) */
+  if (!rc && !o->distributed) { /* P's entries among F's (the same rows, fewer columns) */
     const sl_csr *F = &pj->vsys.A, *P = &pj->P;
     for (int32_t i = 0; i < pj->nv && !rc; ++i) {
       int32_t k = F->row_ptr[i], end = F->row_ptr[i + 1];
@@ -258,7 +265,7 @@ int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *
       }
     }
   }
-  if (!rc) rc = sl_krylov_init(&pj->kry, pj->nv, SL_PROJECTION_KRYLOV_BUDGET, d);
+  if (!rc && !o->distributed) rc = sl_krylov_init(&pj->kry, pj->nv, SL_PROJECTION_KRYLOV_BUDGET, d);
   if (!rc) rc = build_divergence(pj, prob, d);
   if (!rc) rc = build_poisson(pj, prob, d);
   if (!rc && pj->omega != 0.0) rc = velocity_mass(pj, prob->opts.axisymmetric, d);
@@ -316,6 +323,15 @@ static int velocity_solve(sl_projection *pj, sl_csr *F, const double *b, double 
   un = sqrt(un);
   double eps = rtol;
   if (pj->dnorm > 0.0 && un > 0.0) eps = fmin(SL_PROJECTION_RTOL_MAX, fmax(rtol, rtol * un / pj->dnorm));
+  if (pj->o.distributed) { /* the iterative velocity solver on the ranks' rows, x gathered on every rank */
+    int rc = sl_linsolve_solve_rtol(pj->ls_v, F, b, x, eps, d);
+    if (rc) return rc;
+    double xn = 0.0;
+    for (int32_t i = 0; i < pj->nv; ++i) xn += x[i] * x[i];
+    pj->dnorm = sqrt(xn), pj->h_last = pj->h_now;
+    pj->krylov_solves++;
+    return 0;
+  }
   for (int attempt = 0; attempt < 2; ++attempt) {
     int fresh = pj->refresh;
     if (pj->refresh) {
@@ -501,12 +517,13 @@ int sl_projection_checkpoint(sl_projection *pj, sl_checkpoint_array *a, int max)
   snprintf(a[0].name, sizeof a[0].name, "projection_history"), a[0].n = 6, a[0].data = head;
   snprintf(a[1].name, sizeof a[1].name, "projection_phi"), a[1].n = pj->np, a[1].data = pj->phi_hist[0];
   snprintf(a[2].name, sizeof a[2].name, "projection_phi_prev"), a[2].n = pj->np, a[2].data = pj->phi_hist[1];
-  snprintf(a[3].name, sizeof a[3].name, "projection_blocks"), a[3].n = pj->P.nnz, a[3].data = pj->P.values;
   /* the blocks' and the fallback's factorisations, which a restart rebuilds (the Poisson operator's, factorised
-     once, it computes afresh as the run did) */
-  snprintf(a[4].name, sizeof a[4].name, "projection_correction"), a[4].n = pj->nv, a[4].data = pj->x;
-  int n = 5;
-  n += sl_factor_checkpoint(pj->ls_P, "linsolve_projection_blocks", a + n, max - n);
+     once, it computes afresh as the run did); distributed, no blocks */
+  snprintf(a[3].name, sizeof a[3].name, "projection_correction"), a[3].n = pj->nv, a[3].data = pj->x;
+  int n = 4;
+  if (!pj->o.distributed)
+    snprintf(a[n].name, sizeof a[n].name, "projection_blocks"), a[n].n = pj->P.nnz, a[n++].data = pj->P.values;
+  if (pj->ls_P) n += sl_factor_checkpoint(pj->ls_P, "linsolve_projection_blocks", a + n, max - n);
   n += sl_factor_checkpoint(pj->ls_v, "linsolve_projection_velocity", a + n, max - n);
   return n;
 }
@@ -517,7 +534,10 @@ int sl_projection_restore(sl_projection *pj, const sl_checkpoint *ck, sl_diag *d
   const sl_checkpoint_array *b = sl_checkpoint_find(ck, "projection_phi_prev");
   const sl_checkpoint_array *P = sl_checkpoint_find(ck, "projection_blocks");
   if (!h && !a && !b && !P) return 0;
-  if (!h || !a || !b || !P || (h->n < 4 || h->n > 6) || a->n != pj->np || b->n != pj->np || P->n != pj->P.nnz)
+  /* the blocks are not needed distributed, and a distributed run's checkpoint has none: they are formed at the
+     next solve */
+  if (pj->o.distributed) P = NULL;
+  if (!h || !a || !b || (h->n < 4 || h->n > 6) || a->n != pj->np || b->n != pj->np || (P && P->n != pj->P.nnz))
     return sl_diag_set(d, SL_EBADINPUT,
                        "checkpoint: the projection's pressure increments do not fit the mesh "
                        "(%lld pressure values, the scene has %d)",
@@ -532,19 +552,33 @@ int sl_projection_restore(sl_projection *pj, const sl_checkpoint *ck, sl_diag *d
     pj->h_last = h->data[5];
     memcpy(pj->x, x->data, (size_t)pj->nv * sizeof(double));
   }
-  memcpy(pj->P.values, P->data, (size_t)pj->P.nnz * sizeof(double));
-  sl_csr_touch(&pj->P);
+  if (P) {
+    memcpy(pj->P.values, P->data, (size_t)pj->P.nnz * sizeof(double));
+    sl_csr_touch(&pj->P);
+  } else {
+    pj->refresh = 1;
+  }
   memcpy(pj->phi_hist[0], a->data, (size_t)pj->np * sizeof(double));
   memcpy(pj->phi_hist[1], b->data, (size_t)pj->np * sizeof(double));
-  int rc = sl_factor_restore(pj->ls_P, "linsolve_projection_blocks", ck, d);
+  int rc = pj->ls_P ? sl_factor_restore(pj->ls_P, "linsolve_projection_blocks", ck, d) : 0;
   return rc ? rc : sl_factor_restore(pj->ls_v, "linsolve_projection_velocity", ck, d);
 }
 
-const sl_linsolve *sl_projection_velocity_solver(const sl_projection *pj) { return pj->ls_P; }
+const sl_linsolve *sl_projection_velocity_solver(const sl_projection *pj) {
+  return pj->o.distributed ? pj->ls_v : pj->ls_P;
+}
 
 void sl_projection_summary(const sl_projection *pj, char *buf, size_t cap) {
   const sl_linsolve_stats *ps = sl_linsolve_get_stats(pj->ls_p);
   long n = pj->krylov_solves + pj->direct_solves;
+  if (pj->o.distributed) {
+    char v[160], p[160];
+    sl_linsolve_describe(pj->ls_v, v, sizeof v);
+    sl_linsolve_describe(pj->ls_p, p, sizeof p);
+    snprintf(buf, cap, "projection: velocity %ld solves (%s); pressure Poisson %ld solves (%s)", n, v,
+             pj->poisson_solves, p);
+    return;
+  }
   snprintf(buf, cap,
            "projection: velocity %ld solves, %ld reused (FGMRES with its diagonal blocks' factors, %.1f iterations a "
            "solve), %ld numeric (the blocks), %ld direct; pressure Poisson %ld factorisation%s, %ld solves",

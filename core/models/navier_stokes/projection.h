@@ -55,6 +55,10 @@ typedef struct sl_projection_opts {
   double mu_rotational;      /* the viscosity of the rotational correction; 0: the standard incremental form */
   const unsigned char *open; /* [mesh boundaries]: phi = 0 there (open, pressure, traction) */
   int datum;                 /* no open boundary: phi = 0 at the pressure datum (pressure dof 0) */
+  /* The velocity block and the Poisson operator assembled by rank `rank` of `ranks` on its own cells and
+   * solved by the (iterative, PETSc) velocity and Poisson solvers on their rows; F's diagonal blocks are not
+   * used (preconditioner_solver may be NULL). 0: each assembled whole, F by FGMRES with its diagonal blocks. */
+  int distributed, rank, ranks;
   /* the projection's from sl_projection_create on, even on failure: F directly (a fallback), the Poisson
    * matrix, F's diagonal blocks (the preconditioner) */
   sl_linsolve *velocity_solver, *poisson_solver, *preconditioner_solver;
