@@ -154,18 +154,25 @@ static void eval_state(const flow_work *w, const sl_th_space *th, const double *
     const double *ua = u + sl_th_vel_dof(th, a, 0);
     for (int b = 0; b < nb; ++b) ul[a][b] = ua[vd[b]];
   }
+  double pl[SL_ELEMENT_MAX_BASIS];
+  for (int k = 0; k < np; ++k) pl[k] = u[th->p_offset + pd[k]];
   for (int q = 0; q < fv->quad.n; ++q) {
     qp_state *s = &st[q];
     memset(s, 0, sizeof *s);
-    for (int a = 0; a < th->n_comp; ++a) {
+    for (int a = 0; a < th->n_comp; ++a) { /* the sums in registers, in the order of the basis functions */
       int A = w->frame[a];
+      double ua = 0.0, g[2] = {0.0, 0.0};
       for (int b = 0; b < nb; ++b) {
         double v = ul[a][b];
-        s->u[A] += v * fv->phi[0][q][b];
-        for (int j = 0; j < dim; ++j) s->G[A][j] += v * fv->grad[0][q][b][j];
+        ua += v * fv->phi[0][q][b];
+        for (int j = 0; j < dim; ++j) g[j] += v * fv->grad[0][q][b][j];
       }
+      s->u[A] = ua;
+      for (int j = 0; j < dim; ++j) s->G[A][j] = g[j];
     }
-    for (int k = 0; k < np; ++k) s->p += u[th->p_offset + pd[k]] * fv->phi[1][q][k];
+    double pq = 0.0;
+    for (int k = 0; k < np; ++k) pq += pl[k] * fv->phi[1][q][k];
+    s->p = pq;
     if (axi) {
       double r = fv->x[q][0];
       s->G[2][2] += s->u[0] / r;
@@ -306,8 +313,7 @@ static void axi_sums(axi_acc *restrict acc, const axi_pts *restrict P, int nq, i
     double x[AXI_NB] = {0}, y[AXI_NB] = {0}, hh[AXI_NB] = {0};
     for (int q = 0; q < nq; ++q) {
       double wm = P->wm[q], gi0 = wm * P->g0[q][i], gi1 = wm * P->g1[q][i], hi = wm * P->h[q][i];
-      for (int j = 0; j < AXI_NB; ++j)
-        x[j] += gi0 * P->g0[q][j], y[j] += gi1 * P->g1[q][j], hh[j] += hi * P->h[q][j];
+      for (int j = 0; j < AXI_NB; ++j) x[j] += gi0 * P->g0[q][j], y[j] += gi1 * P->g1[q][j], hh[j] += hi * P->h[q][j];
     }
     for (int j = 0; j < nb; ++j) acc->X[i * nb + j] = x[j], acc->Y[i * nb + j] = y[j], acc->H[i * nb + j] = hh[j];
   }
@@ -409,8 +415,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
         for (int e = 0; e < 6; ++e) T.v[e] += o->extra_stress[6 * (size_t)pd[k] + e] * fv->phi[1][q][k];
       for (int a = 0; a < nc; ++a)
         for (int i = 0; i < nb; ++i)
-          w->be[a * nb + i] +=
-              wq * stress_contraction(&T, w->frame[a], fv->phi[0][q][i], GR[q][i], dim, axi, r);
+          w->be[a * nb + i] += wq * stress_contraction(&T, w->frame[a], fv->phi[0][q][i], GR[q][i], dim, axi, r);
     }
     if (lin == SL_FLOW_LOAD) { /* the u-independent part of the momentum residual only */
       for (int a = 0; a < nc; ++a) {
@@ -495,13 +500,13 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       for (int k = 0; k < nv; ++k) s_ia[k] = sym_dot(&Du, &bv[k].D) / gam;
     }
     if (fast && planar2) {
-      planar_matrix(w->Ke, n, nb, wq, fv->phi[0][q], (const double(*)[2])GR[q], psi, npc, rq, mq, o->mass_coef,
-                    K, s, o->convection, newton);
+      planar_matrix(w->Ke, n, nb, wq, fv->phi[0][q], (const double(*)[2])GR[q], psi, npc, rq, mq, o->mass_coef, K, s,
+                    o->convection, newton);
       continue;
     }
     if (fast) {
-      axi_point(&w->pts, q, w->Ke, n, nc, nb, wq, r, fv->phi[0][q], (const double(*)[2])GR[q], psi, npc, rq,
-                mq, o->mass_coef, K, (const double(*)[3])C, s, o->convection, newton);
+      axi_point(&w->pts, q, w->Ke, n, nc, nb, wq, r, fv->phi[0][q], (const double(*)[2])GR[q], psi, npc, rq, mq,
+                o->mass_coef, K, (const double(*)[3])C, s, o->convection, newton);
       acc_used = 1, fast_at[q] = 1;
       continue;
     }
