@@ -68,6 +68,7 @@ int pipe_kseps_update(pipe *p, sl_diag *d) {
   pipe_face_gradients(p, p->us, NAN, gw, ge);
   for (int i = 0; i < n; ++i) P[i] = mu[i] * 0.5 * (gw[i] * gw[i] + ge[i] * ge[i]);
   const double a = p->cfg->pseudo_step, mul = p->sc->solid.viscosity;
+  const double rw = p->iterations > 0 ? p->relax : 1.0; /* under-relaxed as the velocities */
   /* the wall cell held at the log law's values: a sink that swamps its row, and its source */
   const double big = 1e12 * (p->rho_s * p->eps_s[w] / p->ks[w] + 1.0);
   for (int pass = 0; pass < 2; ++pass) {
@@ -93,7 +94,7 @@ int pipe_kseps_update(pipe *p, sl_diag *d) {
       dst[i] = fmax(x[i], 1e-14);
     }
     if (!is_k)
-      for (int i = 0; i < n; ++i) p->ks[i] = mu[i], p->eps_s[i] = x[i];
+      for (int i = 0; i < n; ++i) p->ks[i] += rw * (mu[i] - p->ks[i]), p->eps_s[i] += rw * (x[i] - p->eps_s[i]);
   }
   return 0;
 }
