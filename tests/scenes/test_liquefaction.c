@@ -249,6 +249,7 @@ static void base_after_shaking(const char *out) {
   if (ps) src = ps[0] * dn / (A * 0.3), free(ps);
   printf("  after the shaking: the remaining change of nbar can add at most %.1e Pa undrained\n", src);
   CHECK_MSG(dn < 1e-9, "nbar changed by %g after the shaking", dn);
+  CHECK_MSG(imax == 0, "the largest excess at 6 s is in cell %d, not at the base", imax);
   CHECK_MSG(worst <= umax + src + 1e-9 * umax, "base excess %g after the shaking, above the maximum %g at its end",
             worst, umax);
   free(nb6), free(nbe), free(u6);
