@@ -165,8 +165,8 @@ static double ergun_umf(double e, double w, double d, double mu) {
  * fraction 1 - nbar = 0.5 it was built with, and they leave it at most at phi q through its top face, so
  *   d(settlement)/dt <= phi_top ergun_umf(e_top, w) / (1 - nbar).
  * The bound is evaluated at every output of the shaking (0.5 s apart) from the run's own phi, and the largest
- * rate times the 6 s bounds the settlement at 6 s. With w = 1 and e = 0.435 (the top cell at t = 0) Ergun gives
- * 7.8 mm/s for 0.8 mm sand in water (d = 0.8 mm, mu = 1e-3 Pa s, 1000 and 2650 kg/m3), at most 0.047 m of
+ * rate times the 6 s bounds the settlement at 6 s. With w = 1 and e = 0.434 (the top cell at t = 0) Ergun gives
+ * 7.7 mm/s for 0.8 mm sand in water (d = 0.8 mm, mu = 1e-3 Pa s, 1000 and 2650 kg/m3), at most 0.046 m of
  * surface descent in 6 s: the thesis's "a little more than half" of about 0.43 m cannot drain in the shaking's 6 s
  * through a surface layer that is not fluidised. Also checked at each output: the solids' descent at the top
  * face of that cell, q, against the bound. */
