@@ -167,8 +167,8 @@ int main(void) {
     char nc[64];
     snprintf(nc, sizeof nc, "pipe.cells=%d", cells[c]);
     const char *sets[] = {"pipe.solids_viscosity=peirano_leckner",
-                          "pipe.modulation=simonin",
-                          "pipe.dispersion=simonin",
+                          "closure.turbulence_modulation.model=simonin",
+                          "closure.turbulent_dispersion.model=simonin",
                           "pipe.solids_turbulence=transported",
                           nc,
                           NULL};
@@ -185,8 +185,8 @@ int main(void) {
         cells[c], G[c], P, bal, P / bal - 1.0, pipe_scalar("pipe_ksfs.h5", "iterations"));
     CHECK_MSG(fabs(P / bal - 1.0) < 1e-8, "-dP/dz %.9g against 4 tau_w/D + rho_m g %.9g", P, bal);
     if (c == 1) {
-      const char *eq[] = {"pipe.solids_viscosity=peirano_leckner", "pipe.modulation=simonin", "pipe.dispersion=simonin",
-                          NULL};
+      const char *eq[] = {"pipe.solids_viscosity=peirano_leckner", "closure.turbulence_modulation.model=simonin",
+                          "closure.turbulent_dispersion.model=simonin", NULL};
       rc = pipe_run_text(model_c, "vertical_pipe.ini", eq, "pipe_ksfs_eq.h5", &err);
       CHECK_MSG(rc == 0, "model C with Tchen's k_s, k_fs: %s", err.msg);
       if (!rc) Geq = pipe_scalar("pipe_ksfs_eq.h5", "manometric_gradient");
@@ -215,8 +215,8 @@ int main(void) {
   /* 5. the developing pipe (pipe_march.c: k_s and k_fs convected by the solids) at its outlet against the fully
      developed pipe at the outlet's in-situ fraction. Model C's core has laminarised (k on the axis 1e-4 of model
      B's), so the flow develops slowly: 4 m (75 D, the thesis's CFX-4 pipe) is printed, 32 m (600 D) asserted */
-  const char *base[] = {"pipe.solids_viscosity=peirano_leckner", "pipe.modulation=simonin", "pipe.dispersion=simonin",
-                        "pipe.solids_turbulence=transported"};
+  const char *base[] = {"pipe.solids_viscosity=peirano_leckner", "closure.turbulence_modulation.model=simonin",
+                        "closure.turbulent_dispersion.model=simonin", "pipe.solids_turbulence=transported"};
   const char *lens[2] = {"pipe.length=4", "pipe.length=32"};
   for (int c = 0; c < 2; ++c) {
     const char *dev[] = {base[0], base[1], base[2], base[3], lens[c], "pipe.axial_cells=100", NULL};

@@ -154,7 +154,7 @@ static void kinetic_theory(void) {
          pp.v[n - 1], pt.v[0], pt.v[n - 1]);
   CHECK_MSG(pt.v[n - 1] > 10.0 * pt.v[0], "theta is not highest at the wall");
   CHECK_MSG(pp.v[n - 1] < 0.25 && pp.v[0] > 0.25, "the solids are not driven from the wall");
-  const char *sim[] = {"pipe.kinetic_pressure=true", "pipe.dispersion=simonin", NULL};
+  const char *sim[] = {"pipe.kinetic_pressure=true", "closure.turbulent_dispersion.model=simonin", NULL};
   profile ps;
   if (run(NULL, NULL, sim, "pipe_kt_simonin.h5", &e) || read_profile("pipe_kt_simonin.h5", "phi", &ps)) {
     CHECK_MSG(0, "simonin: %s", e.msg);
@@ -246,8 +246,8 @@ static void lprobe_terms(void) {
                                             {"closure.drag.model=di_felice", NULL, NULL},
                                             {"closure.drag.model=syamlal_obrien", NULL, NULL},
                                             {"pipe.kinetic_pressure=true", "pipe.granular_temperature=transport", NULL},
-                                            {"pipe.dispersion=simonin", NULL, NULL},
-                                            {"pipe.modulation=simonin", NULL, NULL},
+                                            {"closure.turbulent_dispersion.model=simonin", NULL, NULL},
+                                            {"closure.turbulence_modulation.model=simonin", NULL, NULL},
                                             {"pipe.solids_wall=no_slip", NULL, NULL}};
   const char *base_sets[] = {"pipe.bulk_velocity=2", "flow.gravity=-9.81", NULL};
   sluice_error e = {0, ""};
@@ -431,12 +431,13 @@ static void theta_transport(void) {
   }
 }
 
-/* Simonin's modulation of the fluid's turbulence (modulation = simonin, Krampa 2009 model C's fluid side with
-   Tchen's equilibrium k_fs): K (k_fs - 2k) = -2 K k/(1 + eta) <= 0 is an attenuation, so k falls in every cell
-   and the fluid's wall stress with it (0.5 mm beads at 25 %: tau_fw 22.55 -> 6.09 Pa, printed); modulation =
-   none is the default, bit for bit. */
+/* Simonin's modulation of the fluid's turbulence ([closure.turbulence_modulation] model = simonin, Krampa 2009
+   model C's fluid side with Tchen's equilibrium k_fs): K (k_fs - 2k) = -2 K k/(1 + eta) <= 0 is an attenuation, so
+   k falls in every cell and the fluid's wall stress with it (0.5 mm beads at 25 %: tau_fw 22.55 -> 6.09 Pa,
+   printed); model = none is the scene without the section, bit for bit. */
 static void modulation(void) {
-  const char *none[] = {"pipe.modulation=none", NULL}, *sim[] = {"pipe.modulation=simonin", NULL};
+  const char *none[] = {"closure.turbulence_modulation.model=none", NULL},
+             *sim[] = {"closure.turbulence_modulation.model=simonin", NULL};
   sluice_error e = {0, ""};
   profile k0, k1, kd;
   if (run(NULL, NULL, NULL, "pipe_mod0.h5", &e) || read_profile("pipe_mod0.h5", "k", &kd) ||
