@@ -252,7 +252,8 @@ static const sl_kind_info contracts[] = {
          "k towards k_fs/2)",
          "pipe: [closure.turbulence_modulation] in every cell with solids: with Tchen's k_fs = 2 k eta/(1 + eta) "
          "the implicit sink 2 A/(1 + eta) of k, with model C's transported k_fs the source A k_fs and the sink 2 A; "
-         "C_eps3 (eps/k) times both in epsilon; without the section, none"},
+         "in the developing pipe the drift work A g (nu_t + D_t/(c_f c_s)), g = grad(c_f).(u_f - u_s) (zero in the "
+         "fully developed pipe); C_eps3 (eps/k) times each in epsilon; without the section, none"},
 };
 
 const sl_kind_info *sl_kind_info_of(sl_kind kind) {

@@ -159,6 +159,8 @@ int pipe_momentum_init(pipe *p, sl_diag *d);
 int pipe_momentum_solve(pipe *p, sl_diag *d);
 int pipe_solids_coefficients(pipe *p, sl_diag *d);
 int pipe_solids_update(pipe *p, sl_diag *d);
+/* the solids' turbulent dispersivity D_t in every cell ([closure.turbulent_dispersion]; scratch buf[14..16]) */
+int pipe_turbulent_dispersivity(pipe *p, double *Dt, sl_diag *d);
 int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d);
 int pipe_theta_wall_flux(pipe *p, double theta, double *q, double *c_implicit, sl_diag *d);
 void pipe_face_gradients(const pipe *p, const double *u, double wall, double *gw, double *ge);
@@ -183,6 +185,7 @@ void pipe_march_scalar(pipe *p, const double *cap_pseudo, const double *s_iter, 
 void pipe_march_solids(pipe *p, double *cap, double *flux);
 void pipe_march_theta(pipe *p, const double *cap_pseudo);
 void pipe_march_ksfs(pipe *p, const double *s_iter, const double *s_up);
+void pipe_march_drift_work(const pipe *p, const double *A, const double *Dt, double *W);
 const double *pipe_march_drag_fraction(const pipe *p, double *phi_arg);
 void pipe_march_drag(pipe *p, const double *phi_arg, double *dK);
 int pipe_march_solve(pipe *p, sl_diag *d);

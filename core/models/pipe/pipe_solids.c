@@ -226,7 +226,7 @@ static int lift_flux(pipe *p, double *flux, sl_diag *d) {
    mu_t/rho_f, the eddy-particle interaction time t_fs with the crossing trajectories (Krampa 2009 eq 4.61, pipe_tfs)
    and the fluid-particle covariance k_fs (Tchen's or model C's, pipe_kfs), each computed where the closure takes it;
    without the section the gradient form with Schmidt number 1 (Krampa eq 4.59), D_t = nu_t. Scratch buf[14..16]. */
-static int turbulent_dispersivity(pipe *p, double *Dt, sl_diag *d) {
+int pipe_turbulent_dispersivity(pipe *p, double *Dt, sl_diag *d) {
   const int n = p->n;
   double *nu = p->buf[14], *tfs = p->buf[15], *kfs = p->buf[16];
   for (int i = 0; i < n; ++i) nu[i] = p->mu_t[i] / p->rho_f;
@@ -270,7 +270,7 @@ int pipe_solids_update(pipe *p, sl_diag *d) {
     for (int i = 0; i < n; ++i) B[i] += dph[i];
   }
   double *Dt = p->buf[17];
-  if ((rc = turbulent_dispersivity(p, Dt, d))) return rc;
+  if ((rc = pipe_turbulent_dispersivity(p, Dt, d))) return rc;
   double Dmax = 0.0;
   for (int i = 0; i < n; ++i) {
     double cs = p->phi[i], cf = 1.0 - cs;

@@ -14,9 +14,9 @@
  * `[closure.turbulence_modulation] model = simonin` adds the particles' modulation of Krampa's model C (eqs
  * 4.80-4.83, Simonin 1996): per unit volume, c_f rho_f Pi_kf = A (k_fs - 2 k) in the k equation and C_eps3 (eps/k)
  * times it in the epsilon equation, A and C_eps3 the closure's (Simonin's A: K the drag coefficient, c_s rho_s/t_p,
- * eq 4.58; here K stands for A). The drift parts, the slip times the
- * drift velocity and mu_t grad(c_f) . (u_f - u_s), vanish in the fully developed pipe (axial slip, radial
- * gradients). k_fs is Tchen's equilibrium 2 k eta/(1 + eta), eta = t_fs/t_p, with the crossing-trajectory
+ * eq 4.58; here K stands for A). The drift parts, the slip times the drift velocity (eqs 4.80-4.81) and the drift
+ * work A nu_t grad(c_f) . (u_f - u_s) (eq 4.82), vanish in the fully developed pipe (axial slip, radial
+ * gradients); the developing pipe adds them (pipe_march_drift_work), with C_eps3 (eps/k) times them in epsilon. k_fs is Tchen's equilibrium 2 k eta/(1 + eta), eta = t_fs/t_p, with the crossing-trajectory
  * t_fs of eq 4.61 (as [closure.turbulent_dispersion] model = simonin, pipe_solids.c), where model C transports it (eq 5.23), so that
  * K (k_fs - 2k) = -2 K k/(1 + eta) <= 0: an attenuation, vanishing for fine particles (eta -> infinity). Both
  * terms enter as implicit sinks. With `[pipe] solids_turbulence = transported` k_fs is model C's transported one
@@ -96,6 +96,12 @@ int pipe_turbulence_update(pipe *p, sl_diag *d) {
   const int modulated = p->two_phase && p->have_modu;
   int rc = modulated ? modulation_coefficients(p, A, c3, d) : 0;
   if (rc) return rc;
+  /* the developing pipe's drift work W (pipe_march.c; zero in the fully developed pipe), its part of either sign
+     into the source and the implicit sink, which the epsilon equation takes times C_eps3 (eps/k) as the rest */
+  double *W = p->buf[1], *Dt = p->buf[2];
+  const int drift = modulated && p->march.on;
+  if (drift && (rc = pipe_turbulent_dispersivity(p, Dt, d))) return rc;
+  if (drift) pipe_march_drift_work(p, A, Dt, W);
   for (int i = 0; i < n; ++i) {
     mod[i] = 0.0, modk[i] = 0.0;
     if (!modulated) c3[i] = 0.0;
@@ -106,6 +112,10 @@ int pipe_turbulence_update(pipe *p, sl_diag *d) {
     }
     double tp = fmax(p->phi[i], 1e-12) * p->rho_s / p->K[i];
     mod[i] = 2.0 * A[i] / (1.0 + pipe_tfs(p, i) / tp);
+  }
+  for (int i = 0; i < n && drift; ++i) {
+    if (W[i] > 0.0) modk[i] += W[i];
+    else mod[i] -= W[i] / p->k[i];
   }
   /* k */
   for (int i = 0; i < n; ++i) {
