@@ -1230,8 +1230,8 @@ static int projection_setup(sl_flow *f, sl_diag *d) {
   /* auto (the default, docs/transient_cost.md "The default scheme", measured): the split step for a transient
      suspension (solids riding on the flow) in a frame at rest and without a yield stress, on any number of
      ranks, where it costs 0.3-0.4 of the monolithic step at the scenes' accuracy; the monolithic step otherwise:
-     the rotating waves' split step is unstable by t = 7.8 with a no-slip wall at Omega dt = 10, the Bingham bed's steps fall
-     to 1e-5 under the splitting error of a 1e5 viscosity contrast, and the plain fluid's scenes keep their
+     the rotating waves' split step is unstable by t = 7.8 with a no-slip wall at Omega dt = 10, the Bingham
+     bed's steps fall to 1e-5 under the splitting error of a 1e5 viscosity contrast, and the plain fluid's scenes keep their
      second-order pressure. A linear (Stokes) step stays monolithic too: one solve a step, none where the
      load is at round-off (the box at rest 0.065 s against the split step's 0.61 s; boycott with convection off
      to t = 0.2, 2.2 s against 1.9 s). */

@@ -239,7 +239,8 @@ int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *
     else rc = sl_system_init_ranks(&pj->vsys, pj->nv, nc, nbv, pj->vel_cell_dofs, o->rank, o->ranks, d);
   }
   int ncomp = th->n_comp, nb = th->vel->dofs_per_cell;
-  if (!rc && !(pj->comp_dofs = malloc((size_t)nc * nbv * sizeof *pj->comp_dofs)))
+  /* distributed, F is solved without its diagonal blocks: no P, no map into F, no FGMRES workspace */
+  if (!rc && !o->distributed && !(pj->comp_dofs = malloc((size_t)nc * nbv * sizeof *pj->comp_dofs)))
     rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
   /* In a rotating frame the Coriolis force couples the components as strongly as the mass term holds each (2
    * Omega against m = 1.5 / dt: 13 times at Omega dt = 10), and the diagonal blocks are no preconditioner
@@ -249,7 +250,7 @@ int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *
     rc = pj->omega != 0.0 ? sl_csr_build_uniform(&pj->P, pj->nv, nc, nbv, pj->comp_dofs, d)
                           : sl_csr_build_uniform(&pj->P, pj->nv, nc * ncomp, nb, pj->comp_dofs, d);
   }
-  if (!rc && !(pj->pmap = malloc(((size_t)pj->P.nnz + 1) * sizeof *pj->pmap)))
+  if (!rc && !o->distributed && !(pj->pmap = malloc(((size_t)pj->P.nnz + 1) * sizeof *pj->pmap)))
     rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
   if (!rc && !o->distributed) { /* P's entries among F's (the same rows, fewer columns) */
     const sl_csr *F = &pj->vsys.A, *P = &pj->P;

@@ -30,7 +30,7 @@ static void release(pipe *p) {
   release(p->other);
   double **a[] = {&p->uf,    &p->us,        &p->phi,      &p->k,        &p->eps, &p->theta, &p->mu_t,
                   &p->mu_tk, &p->mu_te,     &p->eps_prod, &p->eps_sink, &p->K,   &p->mu_s,  &p->rhs,
-                  &p->x,     &p->face_flux, &p->Kd,       &p->slip0,    &p->ks,  &p->kfs};
+                  &p->x,     &p->face_flux, &p->Kd,       &p->slip0,    &p->ks,  &p->kfs,   &p->eps_s};
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i) free(*a[i]);
   for (int i = 0; i < PIPE_NBUF; ++i) free(p->buf[i]);
   sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls, &p->lift, &p->disp, &p->modu};
@@ -117,6 +117,14 @@ static int pipe_create(sl_scene *sc, double gz, pipe **out, sl_diag *d) {
   if (!rc && c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED && !p->two_phase)
     rc = sl_diag_set(d, SL_EBADINPUT, "%s = transported needs solids: [pipe] solids_fraction > 0",
                      sl_scene_where(sc, &c->solids_turbulence, at, sizeof at));
+  if (!rc && c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_K_EPSILON &&
+      (c->solids_viscosity != PIPE_SOLIDS_VISCOSITY_EDDY || !p->two_phase || c->length > 0.0))
+    rc = sl_diag_set(d, SL_EBADINPUT,
+                     "%s = k_epsilon is the solids' k_s-eps_s of Krampa's models A and B, which replaces the solids' "
+                     "eddy viscosity: it needs solids ([pipe] solids_fraction > 0), [pipe] solids_viscosity = eddy and "
+                     "the fully developed pipe (no [pipe] length); with solids_viscosity = peirano_leckner the choices "
+                     "are equilibrium or transported",
+                     sl_scene_where(sc, &c->solids_turbulence, at, sizeof at));
   if (!rc && c->wall_normal_stress == PIPE_NORMAL_CONTACT_KINETIC && !sl_scene_closure(sc, "granular"))
     rc = sl_diag_set(d, SL_EBADINPUT,
                      "%s = contact_kinetic adds the kinetic theory's pressure: the scene has no [closure.granular] "
@@ -137,7 +145,8 @@ static int pipe_create(sl_scene *sc, double gz, pipe **out, sl_diag *d) {
   const int n = p->n;
   if (!rc) {
     double **a[] = {&p->uf,       &p->us,       &p->phi, &p->k,    &p->eps, &p->theta, &p->mu_t, &p->mu_tk, &p->mu_te,
-                    &p->eps_prod, &p->eps_sink, &p->K,   &p->mu_s, &p->Kd,  &p->slip0, &p->ks,   &p->kfs};
+                    &p->eps_prod, &p->eps_sink, &p->K,   &p->mu_s, &p->Kd,  &p->slip0, &p->ks,   &p->kfs,
+                    &p->eps_s};
     for (size_t i = 0; i < sizeof a / sizeof a[0] && !rc; ++i)
       if (!(*a[i] = calloc((size_t)n, sizeof(double)))) rc = sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
     for (int i = 0; i < PIPE_NBUF && !rc; ++i)
@@ -199,6 +208,8 @@ int pipe_converge(pipe *p, sl_diag *d) {
   const int n = p->n;
   double *old[6] = {p->buf[8], p->buf[9], p->buf[10], p->buf[11], p->buf[12], p->buf[13]};
   const int ksfs = p->two_phase && c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED;
+  const int kseps = p->two_phase && c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_K_EPSILON; /* models A, B */
+  double *second = kseps ? p->eps_s : p->kfs; /* the solids' second turbulence field */
   int rc = 0;
   p->converged = 0;
   /* A stalled iteration (a limit cycle between the solids fraction, theta and the turbulence: 2.4 mm sand at
@@ -210,7 +221,7 @@ int pipe_converge(pipe *p, sl_diag *d) {
   for (long it = 1; it <= c->iterations && !rc; ++it) {
     memcpy(old[0], p->uf, (size_t)n * sizeof(double)), memcpy(old[1], p->k, (size_t)n * sizeof(double));
     memcpy(old[2], p->eps, (size_t)n * sizeof(double)), memcpy(old[3], p->phi, (size_t)n * sizeof(double));
-    memcpy(old[4], p->ks, (size_t)n * sizeof(double)), memcpy(old[5], p->kfs, (size_t)n * sizeof(double));
+    memcpy(old[4], p->ks, (size_t)n * sizeof(double)), memcpy(old[5], second, (size_t)n * sizeof(double));
     double G_old = p->G;
     if (p->march.on) pipe_march_fluxes(p);
     if (!rc) rc = pipe_turbulence_coefficients(p, d);
@@ -219,16 +230,17 @@ int pipe_converge(pipe *p, sl_diag *d) {
     if (!rc) rc = pipe_momentum_solve(p, d);
     if (!rc) rc = pipe_turbulence_update(p, d);
     if (!rc && ksfs) rc = pipe_ksfs_update(p, d);
+    if (!rc && kseps) rc = pipe_kseps_update(p, d);
     if (!rc && p->two_phase) rc = pipe_solids_update(p, d);
     p->iterations = it;
     if (rc) break;
     static const char *const names[7] = {"u_f", "k", "epsilon", "phi", "k_s", "k_fs", "dP/dz"};
-    const double *now[6] = {p->uf, p->k, p->eps, p->phi, p->ks, p->kfs};
+    const double *now[6] = {p->uf, p->k, p->eps, p->phi, p->ks, second};
     double ch = 0.0;
-    for (int k = 0; k < (ksfs ? 6 : p->two_phase ? 4 : 3); ++k) {
+    for (int k = 0; k < (ksfs || kseps ? 6 : p->two_phase ? 4 : 3); ++k) {
       int at = 0;
       double chk = rel_change(now[k], old[k], n, &at);
-      if (chk > ch) ch = chk, p->change_field = names[k], p->change_cell = at;
+      if (chk > ch) ch = chk, p->change_field = k == 5 && kseps ? "eps_s" : names[k], p->change_cell = at;
     }
     double cG = fabs(p->G - G_old) / fmax(fabs(p->G), 1e-300);
     if (cG > ch) ch = cG, p->change_field = names[6], p->change_cell = -1;
@@ -349,10 +361,11 @@ static int pipe_write(void *self, sl_output *out, double t, const double *u, sl_
   unsigned mask;
   /* k_s and k_fs by default when transported; asked for with Tchen's, they are its equilibrium (pipe_ksfs.c) */
   const int tr = c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_TRANSPORTED;
-  int rc = sl_scene_output_fields(p->sc, tr ? 0x1ffu : 0x7fu, &mask, d);
-  if (!rc && !tr && p->two_phase && !p->march.on)
+  const int ke = c->solids_turbulence == PIPE_SOLIDS_TURBULENCE_K_EPSILON; /* k_s and eps_s (pipe_kseps_solid.c) */
+  int rc = sl_scene_output_fields(p->sc, tr ? 0x1ffu : ke ? 0x2ffu : 0x7fu, &mask, d);
+  if (!rc && !tr && !ke && p->two_phase && !p->march.on)
     for (int i = 0; i < n; ++i) pipe_ksfs_equilibrium(p, i, &p->ks[i], &p->kfs[i]);
-  const double *fields[PIPE_NFIELDS] = {p->uf, p->us, p->phi, p->k, p->eps, p->mu_t, p->theta, p->ks, p->kfs};
+  const double *fields[PIPE_NFIELDS] = {p->uf, p->us, p->phi, p->k, p->eps, p->mu_t, p->theta, p->ks, p->kfs, p->eps_s};
   if (!rc && p->march.on) rc = pipe_march_write(p, out, mask, d), mask = 0; /* its 2-D fields */
   for (int k = 0; k < PIPE_NFIELDS && !rc; ++k) {
     if (!(mask >> k & 1u)) continue;

@@ -17,7 +17,7 @@ enum { PIPE_NO_SLIP = 0, PIPE_FREE_SLIP, PIPE_WALL_STRESS };
 enum { PIPE_THETA_ALGEBRAIC = 0, PIPE_THETA_TRANSPORT };
 enum { PIPE_NORMAL_CONTACT = 0, PIPE_NORMAL_CONTACT_KINETIC };
 enum { PIPE_SOLIDS_VISCOSITY_EDDY = 0, PIPE_SOLIDS_VISCOSITY_PEIRANO_LECKNER };
-enum { PIPE_SOLIDS_TURBULENCE_EQUILIBRIUM = 0, PIPE_SOLIDS_TURBULENCE_TRANSPORTED };
+enum { PIPE_SOLIDS_TURBULENCE_EQUILIBRIUM = 0, PIPE_SOLIDS_TURBULENCE_TRANSPORTED, PIPE_SOLIDS_TURBULENCE_K_EPSILON };
 /* the pipe's scratch and saved-state arrays of n cells (pipe.buf) */
 #define PIPE_NBUF 18
 
@@ -31,7 +31,8 @@ typedef struct pipe_config {
   int granular_temperature; /* PIPE_THETA_* */
   int solids_viscosity;     /* PIPE_SOLIDS_VISCOSITY_* */
   double restitution;       /* e of solids_viscosity = peirano_leckner */
-  int solids_turbulence; /* PIPE_SOLIDS_TURBULENCE_*: model C's k_s and k_fs from Tchen's equilibrium or transported */
+  int solids_turbulence;    /* PIPE_SOLIDS_TURBULENCE_*: model C's k_s and k_fs from Tchen's equilibrium or transported,
+                            or models A and B's solids k_s-eps_s (pipe_kseps_solid.c) */
   double covariance_schmidt; /* sigma_kfs of the k_fs diffusion (eq 5.23) */
   /* the developing pipe (pipe_march.c): length 0 for the fully developed one */
   double length, inlet_intensity, inlet_length_scale;
@@ -69,7 +70,7 @@ extern const char *const pipe_quantity_names[PQ_N];
 /* The developing pipe (`[pipe] length`, pipe_march.c): the stations along z, the last station's state, the
    radial volume fluxes of the phases through the row's faces, and every station's fields. */
 /* the output fields (the schema's: pipe_schema.c) */
-#define PIPE_NFIELDS 9
+#define PIPE_NFIELDS 10
 
 typedef struct pipe_march {
   int on, nz, j;
@@ -101,6 +102,8 @@ typedef struct pipe {
   double *uf, *us, *phi, *k, *eps, *theta;
   double *ks, *kfs; /* model C's solids turbulent energy and fluid-particle covariance (pipe_ksfs.c) */
   int ksfs_started;
+  double *eps_s; /* models A and B's solids dissipation, with k_s (pipe_kseps_solid.c) */
+  int kseps_started;
   double G;          /* dP/dz */
   double phi_target; /* the section-mean solids fraction the radial balance holds: [pipe] solids_fraction, or the
                        loop's share for this section (pipe_loop.c) */
@@ -172,6 +175,9 @@ double pipe_kfs(const pipe *p, int i);
 pipe_pl_point pipe_pl_point_at(const pipe *p, int i);
 void pipe_ksfs_start(pipe *p);
 int pipe_ksfs_update(pipe *p, sl_diag *d);
+/* models A and B's solids k_s-eps_s (pipe_kseps_solid.c) */
+void pipe_kseps_viscosity(pipe *p);
+int pipe_kseps_update(pipe *p, sl_diag *d);
 int pipe_converge(pipe *p, sl_diag *d);
 /* the loop (pipe_loop.c) */
 int pipe_loop_solve(pipe *p, sl_diag *d);

@@ -268,7 +268,7 @@ void pipe_march_drift_work(const pipe *p, const double *A, const double *Dt, dou
 /* The station's fields into the 2-D arrays (row j). */
 static void store(pipe *p, int j) {
   pipe_march *m = &p->march;
-  const double *f[PIPE_NFIELDS] = {p->uf, p->us, p->phi, p->k, p->eps, p->mu_t, p->theta, p->ks, p->kfs};
+  const double *f[PIPE_NFIELDS] = {p->uf, p->us, p->phi, p->k, p->eps, p->mu_t, p->theta, p->ks, p->kfs, p->eps_s};
   for (int k = 0; k < PIPE_NFIELDS; ++k)
     memcpy(m->field[k] + (size_t)j * (size_t)p->n, f[k], (size_t)p->n * sizeof(double));
   m->G[j] = p->G, m->tau_fw[j] = p->tau_fw, m->tau_sw[j] = p->tau_sw, m->y_plus[j] = p->y_plus;

@@ -135,12 +135,14 @@ static const sl_key pipe_keys[] = {
      .name = "solids_turbulence",
      .type = SL_KEY_CHOICE,
      C(solids_turbulence),
-     .choices = "equilibrium|transported",
+     .choices = "equilibrium|transported|k_epsilon",
      .def = PIPE_SOLIDS_TURBULENCE_EQUILIBRIUM,
      .help = "solids_viscosity = peirano_leckner: model C's k_s and k_fs from Tchen's equilibrium, or from their "
              "transport equations (Krampa 2009 eqs 5.20, 5.23; Simonin 1996), which then also feed "
-             "[closure.turbulence_modulation] and "
-             "[closure.turbulent_dispersion] model = simonin"},
+             "[closure.turbulence_modulation] and [closure.turbulent_dispersion] model = simonin; solids_viscosity = "
+             "eddy: the dispersed phase's zero-equation model (equilibrium), or the solids' own k_s-eps_s of Krampa's "
+             "models A and B (k_epsilon: eqs 4.82-4.83 for the solids with the Table 4.1 constants, the fluid's "
+             "log-law wall values; its eddy viscosity C_mu rho_s c_s k_s^2/eps_s replaces c_s rho_s nu_t/sigma)"},
     {.section = "pipe",
      .name = "covariance_schmidt",
      .type = SL_KEY_REAL,
@@ -291,8 +293,8 @@ static const sl_key pipe_keys[] = {
 };
 TABLE(pipe_key_table, pipe_keys);
 
-static const char *const pipe_fields[PIPE_NFIELDS] = {"velocity_fluid", "velocity_solid", "phi", "k",   "epsilon",
-                                                      "mu_t",           "theta",          "k_s", "k_fs"};
+static const char *const pipe_fields[PIPE_NFIELDS] = {"velocity_fluid", "velocity_solid", "phi", "k",    "epsilon",
+                                                      "mu_t",           "theta",          "k_s", "k_fs", "epsilon_s"};
 
 /* The keys that chose the dispersion and the modulation before they were closures. */
 static const sl_moved_key pipe_moved[] = {

@@ -127,6 +127,8 @@ int pipe_solids_coefficients(pipe *p, sl_diag *d) {
       pipe_pl_point q = pipe_pl_point_at(p, i);
       p->mu_s[i] = p->phi[i] * p->rho_s * pipe_peirano_leckner(&q, NULL) + p->sc->solid.viscosity;
     }
+  else if (p->cfg->solids_turbulence == PIPE_SOLIDS_TURBULENCE_K_EPSILON) /* models A, B (pipe_kseps_solid.c) */
+    pipe_kseps_viscosity(p);
   else
     for (int i = 0; i < n; ++i)
       p->mu_s[i] = p->phi[i] * p->rho_s * (p->mu_t[i] / p->rho_f) / p->cfg->solids_schmidt + p->sc->solid.viscosity;
