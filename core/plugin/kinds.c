@@ -4,9 +4,18 @@
 #include <math.h>
 #include <string.h>
 
-static const char *const kind_names[] = {
-    "drag",     "hindered_settling", "viscosity",  "solids_pressure", "wall_stress",
-    "granular", "migration",         "turbulence", "densification",   "lift"};
+static const char *const kind_names[] = {"drag",
+                                         "hindered_settling",
+                                         "viscosity",
+                                         "solids_pressure",
+                                         "wall_stress",
+                                         "granular",
+                                         "migration",
+                                         "turbulence",
+                                         "densification",
+                                         "lift",
+                                         "turbulent_dispersion",
+                                         "turbulence_modulation"};
 
 /* The host's field dictionary (closure.h, "Canonical input names"): what the
  * models can supply, with the range they supply it in. The typical values are
@@ -38,6 +47,11 @@ static const sl_input_info inputs[] = {
     {"strain_increment", "1", "|change of shear strain| over the step", 1e-4, 0.0, 1.0},
     {"strain_total", "1", "accumulated |shear strain| path", 1e-2, 0.0, 1e6},
     {"volumetric_strain", "1", "densification strain accumulated so far", 0.0, 0.0, 0.5},
+    {"nu_t", "m^2 s^-1", "the fluid's eddy (turbulent) kinematic viscosity mu_t/rho_f", 1e-4, 0.0, 1e6},
+    {"t_fs", "s", "eddy-particle interaction time with the crossing-trajectory effect (Csanady 1963)", 1e-2, 0.0, 1e9},
+    {"k_fs", "m^2 s^-2", "fluid-particle velocity covariance <u_f'.u_s'>", 1e-2, 0.0, 1e6},
+    {"drag_coefficient", "kg m^-3 s^-1", "the drag's momentum-exchange coefficient K (F_s = K (u_f - u_s))", 1e3, 0.0,
+     1e12},
 };
 enum { N_INPUTS = (int)(sizeof inputs / sizeof inputs[0]) };
 /* The same names in the same order, for suggestions (sl_input_names). */
@@ -64,7 +78,11 @@ static const char *const input_names[] = {"phi",
                                           "strain_amplitude",
                                           "strain_increment",
                                           "strain_total",
-                                          "volumetric_strain"};
+                                          "volumetric_strain",
+                                          "nu_t",
+                                          "t_fs",
+                                          "k_fs",
+                                          "drag_coefficient"};
 _Static_assert(sizeof input_names / sizeof input_names[0] == sizeof inputs / sizeof inputs[0],
                "one name per input of the dictionary");
 
@@ -135,7 +153,8 @@ static const sl_kind_info contracts[] = {
          "(slip_wall and wall_distance give the wall's shear rate)",
          "two_fluid 2-D model and shear layer, on walls with solids = wall_stress: tau_w and dtau_w/dslip_wall; "
          "pipe: [closure.wall_stress.solids] the same (normal_stress: the solids pressures of the wall cell, "
-         "[closure.solids_pressure] and the kinetic theory's), and [closure.wall_stress.fluid] the fluid's wall function "
+         "[closure.solids_pressure] and the kinetic theory's), and [closure.wall_stress.fluid] the fluid's wall "
+         "function "
          "(u_tau, y_plus, k_wall, epsilon_wall besides tau_w)"},
     [SL_KIND_GRANULAR] =
         {"kinetic-theory coefficients of the solids phase as functions of the solids fraction and the granular "
@@ -204,6 +223,37 @@ static const sl_kind_info contracts[] = {
          "at zero shear, where the force C_L shear_rate vanishes); wall_distance <= 0; any NaN",
          "pipe: [closure.lift] C_L at the radial faces (shear_rate |du_f/dr| there, slip |u_f - u_s|, "
          "wall_distance R - r), the radial lift phi rho_f C_L (u_f - u_s) du_f/dr in the radial solids balance"},
+    [SL_KIND_TURBULENT_DISPERSION] =
+        {"turbulent dispersivity D_t of the solids by the fluid's eddies: the turbulent (drift) flux of the solids "
+         "is -D_t grad(phi) (Krampa 2009 eqs 4.57-4.63; Burns et al. 2004's F_TD = -K D_t (grad c_s/c_s - grad "
+         "c_f/c_f))",
+         {NULL},
+         0u,
+         {"nu_t", "t_fs", "k_fs", "k", "epsilon", "phi", "drag_coefficient", "rho_f"},
+         {{"D_t", "m^2 s^-1", "the solids' turbulent dispersivity", 1}},
+         0,
+         "an input outside its declared range (nu_t, t_fs, k_fs < 0); any NaN",
+         "pipe: [closure.turbulent_dispersion] D_t in every cell (nu_t = mu_t/rho_f of [closure.turbulence], t_fs "
+         "of Krampa's eq 4.61 with [pipe] crossing_trajectory, k_fs Tchen's equilibrium or model C's transported "
+         "one), the radial solids balance's diffusivity D_t + c_s c_f^2 (dp_s/dphi)/K; without the section D_t = "
+         "nu_t (the gradient form with Schmidt number 1, eq 4.59)"},
+    [SL_KIND_TURBULENCE_MODULATION] =
+        {"the particles' modulation of the fluid's turbulence: an exchange coefficient A of the fluid's k "
+         "equation, c_f rho_f Pi_kf = A [k_fs - 2 k + (u_f - u_s).U_d] (and the drift work A nu_t grad(c_f).(u_f - "
+         "u_s)), and C_eps3 of the epsilon equation, C_eps3 (eps/k) times the same (Krampa 2009 eqs 4.80-4.83; "
+         "Simonin 1996)",
+         {"drag_coefficient"},
+         0u,
+         {"phi", "k", "epsilon", "rho_f", "rho_s", "d_p"},
+         {{"exchange", "kg m^-3 s^-1", "the exchange coefficient A (Simonin: the drag's K; 0: no modulation)", 1},
+          {"c_eps3", "1", "C_eps3 of the epsilon equation's modulation", 1}},
+         0,
+         "drag_coefficient < 0, or an input outside its declared range; any NaN. exchange >= 0 (an attenuation of "
+         "k towards k_fs/2)",
+         "pipe: [closure.turbulence_modulation] in every cell with solids: with Tchen's k_fs = 2 k eta/(1 + eta) "
+         "the implicit sink 2 A/(1 + eta) of k, with model C's transported k_fs the source A k_fs and the sink 2 A; "
+         "in the developing pipe the drift work A g (nu_t + D_t/(c_f c_s)), g = grad(c_f).(u_f - u_s) (zero in the "
+         "fully developed pipe); C_eps3 (eps/k) times each in epsilon; without the section, none"},
 };
 
 const sl_kind_info *sl_kind_info_of(sl_kind kind) {
@@ -240,7 +290,8 @@ int sl_kind_from_name(const char *name, sl_kind *kind, sl_diag *d) {
   if (s) return sl_diag_set(d, SL_EBADINPUT, "unknown closure kind '%s'; did you mean '%s'?", name, s);
   return sl_diag_set(d, SL_EBADINPUT,
                      "unknown closure kind '%s' (kinds: drag, hindered_settling, viscosity, solids_pressure, "
-                     "wall_stress, granular, migration, turbulence, densification, lift)",
+                     "wall_stress, granular, migration, turbulence, densification, lift, turbulent_dispersion, "
+                     "turbulence_modulation)",
                      name);
 }
 

@@ -9,7 +9,7 @@
 #include "core/util/diag.h"
 
 #define SL_KIND_FIRST SL_KIND_DRAG
-#define SL_KIND_LAST SL_KIND_LIFT
+#define SL_KIND_LAST SL_KIND_TURBULENCE_MODULATION
 
 /* "drag", "hindered_settling", ...; NULL for an unknown kind. */
 const char *sl_kind_name(sl_kind kind);

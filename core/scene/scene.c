@@ -221,9 +221,14 @@ static int check_keys(builder *b, const sl_ini_section *sec, const char *schema_
   for (int i = 0; i < sec->n_entries; ++i) {
     const sl_ini_entry *e = &sec->entries[i];
     if (sl_schema_key(s, schema_section, e->key)) continue;
+    char hint[256], label[256];
+    for (int m = 0; m < s->n_moved; ++m)
+      if (strcmp(s->moved[m].section, schema_section) == 0 && strcmp(s->moved[m].name, e->key) == 0)
+        return sl_diag_set(d, SL_EBADINPUT, "%s:%d:%d: error: [%s] %s is no longer a key of the %s: use %s", e->file,
+                           e->line, e->col, sec->name, e->key, model_label(s, label, sizeof label),
+                           s->moved[m].instead);
     const char *names[128];
     int n = section_keys(s, schema_section, names, 128);
-    char hint[256], label[256];
     owner_hint(b, schema_section, e->key, hint, sizeof hint);
     const char *sug = sl_suggest(e->key, names, n);
     char list[900];

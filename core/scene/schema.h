@@ -95,7 +95,12 @@ typedef struct sl_variant_rule {
   const char *section, *key, *values, *absent;
 } sl_variant_rule;
 
-enum { SL_SCHEMA_MAX_TABLES = 16, SL_SCHEMA_MAX_ROLES = 8, SL_SCHEMA_MAX_RULES = 3 };
+/* A key the model no longer reads, refused at its file:line with what replaces it ("[closure.drag] model = ..."). */
+typedef struct sl_moved_key {
+  const char *section, *name, *instead;
+} sl_moved_key;
+
+enum { SL_SCHEMA_MAX_TABLES = 16, SL_SCHEMA_MAX_ROLES = 10, SL_SCHEMA_MAX_RULES = 3 };
 
 typedef struct sl_schema {
   const char *model;   /* the [scene] model value */
@@ -112,6 +117,8 @@ typedef struct sl_schema {
   size_t boundary_size;      /* the struct of each boundary (0: the model reads no [boundary.NAME]) */
   const char *const *fields; /* the output fields [output] fields may name */
   int n_fields;
+  const sl_moved_key *moved; /* keys of earlier versions, refused with what to write instead */
+  int n_moved;
 } sl_schema;
 
 /* The key [section] name of a schema, or NULL. */

@@ -93,6 +93,9 @@ enum {
  *                                        eps_sink [kg m^-3 s^-1], c_mu [1]
  *   densification      nbar              nbar_new [1]; volumetric_strain_increment [1]
  *   lift               shear_rate        C_L [1], F_L = C_L rho_f phi (u_f - u_s) x curl u_f
+ *   turbulent_dispersion (none)          D_t [m^2 s^-1], the solids' turbulent flux -D_t grad(phi)
+ *   turbulence_modulation drag_coefficient exchange [kg m^-3 s^-1], c_eps3 [1]: c_f rho_f Pi_kf =
+ *                                        exchange (k_fs - 2 k + drift work)
  *
  * A closure may declare extra named inputs beyond these. */
 typedef enum sl_kind {
@@ -104,8 +107,10 @@ typedef enum sl_kind {
   SL_KIND_GRANULAR = 6,
   SL_KIND_MIGRATION = 7,
   SL_KIND_TURBULENCE = 8,
-  SL_KIND_DENSIFICATION = 9, /* the reference porosity nbar of a sand under cyclic shear (liquefaction) */
-  SL_KIND_LIFT = 10          /* the shear-induced lift on the solids (its coefficient C_L) */
+  SL_KIND_DENSIFICATION = 9,         /* the reference porosity nbar of a sand under cyclic shear (liquefaction) */
+  SL_KIND_LIFT = 10,                 /* the shear-induced lift on the solids (its coefficient C_L) */
+  SL_KIND_TURBULENT_DISPERSION = 11, /* the solids' turbulent dispersivity (drift by the fluid's eddies) */
+  SL_KIND_TURBULENCE_MODULATION = 12 /* the particles' modulation of the fluid's k and epsilon */
 } sl_kind;
 
 /* ---- parameter schema ------------------------------------------------- */

@@ -124,23 +124,22 @@ static int load(void) {
   snprintf(scene_btb, sizeof scene_btb, "%.*sblend = huilin_gidaspow\n%s", (int)at, scene_bt, scene_bt + at);
   /* model C: Peirano & Leckner's solids viscosity with Tchen's k_s and k_fs, Simonin's modulation and dispersion,
      no kinetic theory (its viscosity replaced) */
-  snprintf(scene_c, sizeof scene_c,
-           "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nmodulation = "
-           "simonin\ndispersion = simonin%.*s\n",
+  const char *simonin =
+      "[closure.turbulence_modulation]\nmodel = simonin\n\n[closure.turbulent_dispersion]\nmodel = "
+      "simonin\n";
+  snprintf(scene_c, sizeof scene_c, "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner%.*s\n%s",
            (int)(kp - scene_b), scene_b, (int)(gran - kp - strlen("kinetic_pressure = false")),
-           kp + strlen("kinetic_pressure = false"));
+           kp + strlen("kinetic_pressure = false"), simonin);
   /* model C with k_s and k_fs transported (Krampa eqs 5.20, 5.23) */
   snprintf(scene_ct, sizeof scene_ct,
-           "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nmodulation = "
-           "simonin\ndispersion = simonin\nsolids_turbulence = transported%.*s\n",
+           "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nsolids_turbulence = transported%.*s\n%s",
            (int)(kp - scene_b), scene_b, (int)(gran - kp - strlen("kinetic_pressure = false")),
-           kp + strlen("kinetic_pressure = false"));
+           kp + strlen("kinetic_pressure = false"), simonin);
   /* model C with k_s and k_fs transported (Krampa eqs 5.20, 5.23) */
   snprintf(scene_ct, sizeof scene_ct,
-           "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nmodulation = "
-           "simonin\ndispersion = simonin\nsolids_turbulence = transported%.*s\n",
+           "%.*skinetic_pressure = false\nsolids_viscosity = peirano_leckner\nsolids_turbulence = transported%.*s\n%s",
            (int)(kp - scene_b), scene_b, (int)(gran - kp - strlen("kinetic_pressure = false")),
-           kp + strlen("kinetic_pressure = false"));
+           kp + strlen("kinetic_pressure = false"), simonin);
   /* and with Johnson & Jackson's solids wall (Krampa's model C wall, eqs 4.92-4.93), its energy flux into k_s */
   {
     char *fs = strstr(scene_ct, "solids_wall = free_slip");

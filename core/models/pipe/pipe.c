@@ -33,7 +33,7 @@ static void release(pipe *p) {
                   &p->x,     &p->face_flux, &p->Kd,       &p->slip0,    &p->ks,  &p->kfs,   &p->eps_s};
   for (size_t i = 0; i < sizeof a / sizeof a[0]; ++i) free(*a[i]);
   for (int i = 0; i < PIPE_NBUF; ++i) free(p->buf[i]);
-  sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls, &p->lift};
+  sl_point_closure *pc[] = {&p->turb, &p->wallf, &p->drag, &p->gran, &p->psol, &p->walls, &p->lift, &p->disp, &p->modu};
   for (size_t i = 0; i < sizeof pc / sizeof pc[0]; ++i) sl_point_release(pc[i]);
   pipe_march_release(p);
   sl_cell_scalar_free(&p->cs);
@@ -139,7 +139,8 @@ static int pipe_create(sl_scene *sc, double gz, pipe **out, sl_diag *d) {
     rc = sl_diag_set(d, SL_EBADINPUT,
                      "%s = true: the loop's two sections share one bulk velocity and are fully developed: remove "
                      "[pipe] %s",
-                     sl_scene_where(sc, &c->loop, at, sizeof at), c->pressure_gradient.n ? "pressure_gradient" : "length");
+                     sl_scene_where(sc, &c->loop, at, sizeof at),
+                     c->pressure_gradient.n ? "pressure_gradient" : "length");
   if (!rc) rc = build_grid(p, d);
   const int n = p->n;
   if (!rc) {

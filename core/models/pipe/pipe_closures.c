@@ -6,8 +6,9 @@
 #include "core/models/pipe/pipe_impl.h"
 
 const char *const pipe_quantity_names[PQ_N] = {
-    "phi",   "slip", "k",          "epsilon",   "theta",         "shear_rate", "rho_f",  "mu_f",
-    "rho_s", "d_p",  "sphericity", "slip_wall", "wall_distance", "d_vessel",   "gravity", "normal_stress"};
+    "phi",     "slip",          "k",    "epsilon",    "theta",     "shear_rate",      "rho_f",
+    "mu_f",    "rho_s",         "d_p",  "sphericity", "slip_wall", "wall_distance",   "d_vessel",
+    "gravity", "normal_stress", "nu_t", "t_fs",       "k_fs",      "drag_coefficient"};
 
 static const char *const model_name = "the pipe model";
 
@@ -65,6 +66,8 @@ int pipe_closures_bind(pipe *p, sl_diag *d) {
   if (!rc) rc = bind(p, &p->psol, "solids_pressure", &p->have_psol, d);
   if (!rc) rc = bind(p, &p->walls, "wall_stress.solids", &p->have_walls, d);
   if (!rc) rc = bind(p, &p->lift, "lift", &p->have_lift, d);
+  if (!rc) rc = bind(p, &p->disp, "turbulent_dispersion", &p->have_disp, d);
+  if (!rc) rc = bind(p, &p->modu, "turbulence_modulation", &p->have_modu, d);
   if (!rc && p->have_walls) p->walls_at_node = sl_point_has_input(&p->walls, "wall_distance");
   if (!rc && p->have_walls) p->walls_normal = sl_point_has_input(&p->walls, "normal_stress");
   if (!rc && p->have_walls && p->have_gran && p->cfg->granular_temperature == PIPE_THETA_TRANSPORT)

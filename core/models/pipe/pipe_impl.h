@@ -14,7 +14,6 @@
 #include "core/solve/sparse.h"
 
 enum { PIPE_NO_SLIP = 0, PIPE_FREE_SLIP, PIPE_WALL_STRESS };
-enum { PIPE_DISPERSION_GRADIENT = 0, PIPE_DISPERSION_SIMONIN };
 enum { PIPE_THETA_ALGEBRAIC = 0, PIPE_THETA_TRANSPORT };
 enum { PIPE_NORMAL_CONTACT = 0, PIPE_NORMAL_CONTACT_KINETIC };
 enum { PIPE_SOLIDS_VISCOSITY_EDDY = 0, PIPE_SOLIDS_VISCOSITY_PEIRANO_LECKNER };
@@ -28,21 +27,18 @@ typedef struct pipe_config {
   double tolerance, relaxation, pseudo_step;
   int solids_wall, kinetic_pressure;
   int wall_normal_stress; /* PIPE_NORMAL_*: what the solids' wall closure's normal_stress is */
-  double solids_schmidt, dispersion_schmidt, crossing_trajectory;
-  int dispersion;           /* PIPE_DISPERSION_* */
+  double solids_schmidt, crossing_trajectory;
   int granular_temperature; /* PIPE_THETA_* */
-  int modulation;           /* 0 none, 1 Simonin's */
-  double c_eps3;
-  int solids_viscosity;  /* PIPE_SOLIDS_VISCOSITY_* */
-  double restitution;    /* e of solids_viscosity = peirano_leckner */
-  int solids_turbulence; /* PIPE_SOLIDS_TURBULENCE_*: model C's k_s and k_fs from Tchen's equilibrium or transported,
+  int solids_viscosity;     /* PIPE_SOLIDS_VISCOSITY_* */
+  double restitution;       /* e of solids_viscosity = peirano_leckner */
+  int solids_turbulence;    /* PIPE_SOLIDS_TURBULENCE_*: model C's k_s and k_fs from Tchen's equilibrium or transported,
                             or models A and B's solids k_s-eps_s (pipe_kseps_solid.c) */
   double covariance_schmidt; /* sigma_kfs of the k_fs diffusion (eq 5.23) */
   /* the developing pipe (pipe_march.c): length 0 for the fully developed one */
   double length, inlet_intensity, inlet_length_scale;
   long axial_cells;
   sl_reals pressure_gradient; /* -dP/dz held in place of the bulk velocity (n = 0: the bulk velocity drives) */
-  int loop; /* the loop's up- and down-flow sections sharing one solids inventory (pipe_loop.c) */
+  int loop;                   /* the loop's up- and down-flow sections sharing one solids inventory (pipe_loop.c) */
 } pipe_config;
 
 /* The host's quantities the closures bind to. */
@@ -63,6 +59,10 @@ enum {
   PQ_D_VESSEL,
   PQ_GRAVITY,
   PQ_NORMAL_STRESS,
+  PQ_NU_T, /* mu_t/rho_f */
+  PQ_T_FS, /* the eddy-particle interaction time (pipe_tfs) */
+  PQ_K_FS, /* the fluid-particle covariance (pipe_kfs) */
+  PQ_DRAG, /* the drag's K */
   PQ_N
 };
 extern const char *const pipe_quantity_names[PQ_N];
@@ -104,7 +104,7 @@ typedef struct pipe {
   int ksfs_started;
   double *eps_s; /* models A and B's solids dissipation, with k_s (pipe_kseps_solid.c) */
   int kseps_started;
-  double G; /* dP/dz */
+  double G;          /* dP/dz */
   double phi_target; /* the section-mean solids fraction the radial balance holds: [pipe] solids_fraction, or the
                        loop's share for this section (pipe_loop.c) */
   /* coefficients (cells) */
@@ -118,7 +118,9 @@ typedef struct pipe {
   double p_wall;   /* the solids' normal stress on the wall: their pressures at the wall cell (pipe_solids.c) */
   /* closures */
   sl_point_closure turb, wallf, drag, gran, psol, walls, lift;
-  int have_lift; /* [closure.lift]: the shear lift in the radial solids balance (pipe_solids.c) */
+  int have_lift;               /* [closure.lift]: the shear lift in the radial solids balance (pipe_solids.c) */
+  sl_point_closure disp, modu; /* [closure.turbulent_dispersion] (pipe_solids.c), [closure.turbulence_modulation] */
+  int have_disp, have_modu;    /* (pipe_turbulence.c) */
   int have_gran, have_psol, have_walls, walls_at_node, walls_normal, wall_energy, ks_wall_energy;
   /* solvers */
   sl_cell_scalar cs;
@@ -135,8 +137,8 @@ typedef struct pipe {
   int converged, warned_yplus;
   char stop_reason[256];
   pipe_march march;
-  struct pipe *other; /* [pipe] loop: the section of the other direction (its own state and closures) */
-  long loop_iterations; /* the loop's updates of the sections' shares */
+  struct pipe *other;        /* [pipe] loop: the section of the other direction (its own state and closures) */
+  long loop_iterations;      /* the loop's updates of the sections' shares */
   double loop_flux_mismatch; /* the sections' solids fluxes' last relative difference */
 } pipe;
 
@@ -160,6 +162,8 @@ int pipe_momentum_init(pipe *p, sl_diag *d);
 int pipe_momentum_solve(pipe *p, sl_diag *d);
 int pipe_solids_coefficients(pipe *p, sl_diag *d);
 int pipe_solids_update(pipe *p, sl_diag *d);
+/* the solids' turbulent dispersivity D_t in every cell ([closure.turbulent_dispersion]; scratch buf[14..16]) */
+int pipe_turbulent_dispersivity(pipe *p, double *Dt, sl_diag *d);
 int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d);
 int pipe_theta_wall_flux(pipe *p, double theta, double *q, double *c_implicit, sl_diag *d);
 void pipe_face_gradients(const pipe *p, const double *u, double wall, double *gw, double *ge);
@@ -187,6 +191,7 @@ void pipe_march_scalar(pipe *p, const double *cap_pseudo, const double *s_iter, 
 void pipe_march_solids(pipe *p, double *cap, double *flux);
 void pipe_march_theta(pipe *p, const double *cap_pseudo);
 void pipe_march_ksfs(pipe *p, const double *s_iter, const double *s_up);
+void pipe_march_drift_work(const pipe *p, const double *A, const double *Dt, double *W);
 const double *pipe_march_drag_fraction(const pipe *p, double *phi_arg);
 void pipe_march_drag(pipe *p, const double *phi_arg, double *dK);
 int pipe_march_solve(pipe *p, sl_diag *d);

@@ -231,6 +231,40 @@ void pipe_march_ksfs(pipe *p, const double *s_iter, const double *s_up) {
   }
 }
 
+/* The drift work of the particles' modulation of the fluid's turbulence (Krampa 2009 eqs 4.80-4.82, Simonin 1996;
+   digest section 1.4), per unit volume in every cell of the station, W = A [nu_t grad(c_f).(U_f - U_s) + (U_f -
+   U_s).U_d]: the drift-work term of the k equation 4.82, (c_s rho_s/(t_p rho_f)) mu_t grad(c_f).(U_f - U_s) with
+   c_s rho_s/t_p = K = A, and the drift part of c_f rho_f Pi_kf (eq 4.80), A (U_f - U_s).U_d, with the drift velocity
+   of eq 4.81, U_d = D (grad(c_f)/c_f - grad(c_s)/c_s), D the dispersivity of [closure.turbulent_dispersion] (eq 4.81's
+   t_fs k_fs/3 with model = simonin). With grad c_s = -grad c_f, U_d = D grad(c_f)/(c_f c_s), so that
+     W = A g (nu_t + D/(c_f c_s)),  g = grad(c_f).(U_f - U_s) = -(dphi/dz)(u_f - u_s) - (dphi/dr)(v_f - v_s),
+   A the closure's exchange coefficient (Simonin's: K). The axial part from the march's backward difference
+   (phi - phi_up)/h; the radial part at the interior faces, v_f and v_s the phases' radial velocities of their
+   volume fluxes (pipe_march_fluxes) over their fractions, averaged to the cells (nothing crosses the axis or the
+   wall). In the fully developed pipe the slip is axial and the gradients radial: g = 0 and W = 0; likewise here
+   where the station equals the last (phi = phi_up, no radial fluxes), to round-off (tests/models/test_pipe_ksfs.c).
+   W > 0 where the solids thin downstream while they lag the fluid (dphi/dz < 0, u_f > u_s): the fluid's
+   turbulent flux of solids works against the slip. A, Dt and W are [n]. */
+void pipe_march_drift_work(const pipe *p, const double *A, const double *Dt, double *W) {
+  const pipe_march *m = &p->march;
+  const sl_fv_grid *g = &p->g;
+  const int n = p->n;
+  for (int i = 0; i < n; ++i) {
+    W[i] = 0.0;
+    if (!m->on || !(A[i] > 0.0)) continue;
+    const double cs = fmax(p->phi[i], 1e-12), cf = 1.0 - p->phi[i];
+    double gr = 0.0; /* the radial part, the mean of the cell's two faces */
+    for (int f = i; f <= i + 1; ++f) {
+      if (f < 1 || f >= n) continue;
+      const double pf = 0.5 * (p->phi[f - 1] + p->phi[f]), a = g->area[f];
+      const double vf = m->ff[f] / ((1.0 - pf) * a), vs = m->fs[f] / (fmax(pf, 1e-12) * a);
+      gr -= 0.5 * (p->phi[f] - p->phi[f - 1]) / g->dist[f] * (vf - vs);
+    }
+    const double gz = -(p->phi[i] - m->phi_up[i]) / m->h * (p->uf[i] - p->us[i]);
+    W[i] = A[i] * (gz + gr) * (p->mu_t[i] / p->rho_f + Dt[i] / (cf * cs));
+  }
+}
+
 /* The station's fields into the 2-D arrays (row j). */
 static void store(pipe *p, int j) {
   pipe_march *m = &p->march;

@@ -10,8 +10,8 @@
  * with t_fs the eddy-particle interaction time with the crossing-trajectory effect (eq 4.61; Csanady 1963), t_p =
  * c_s rho_s/K (eq 4.58), g0 Lun & Savage's (1 - c_s/C_max)^(-2.5 C_max) (eq 4.91). Model C transports k_s and k_fs
  * (eqs 5.20, 5.23); here both are Tchen's equilibrium for heavy particles, k_fs = 2 k eta_r/(1 + eta_r) and k_s =
- * k eta_r/(1 + eta_r), eta_r = t_fs/t_p (Simonin 1996; the same k_fs as [pipe] modulation and dispersion =
- * simonin), so that the model's solids side is algebraic in k, epsilon and the drag. This pair is what eqs 5.20
+ * k eta_r/(1 + eta_r), eta_r = t_fs/t_p (Simonin 1996; the same k_fs as the modulation and dispersion closures'
+ * model = simonin), so that the model's solids side is algebraic in k, epsilon and the drag. This pair is what eqs 5.20
  * and 5.23 give without their production, diffusion and collisional terms: 5.20's interaction makes k_s = k_fs/2,
  * and 5.23's, (1/t_p)[(1 + S) k_fs - 2 k - 2 S k_s] + k_fs/t_fs = 0, then k_fs = 2 k t_fs/(t_fs + t_p). Limits (tests/models/
  * test_pipe_peirano.c): fine particles (t_p -> 0) follow the fluid, nu_st -> (2/3) t_fs k = C_mu k^2/eps at zero

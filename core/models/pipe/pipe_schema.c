@@ -124,22 +124,6 @@ static const sl_key pipe_keys[] = {
              "(Krampa 2009 eq 5.10 in the standard form; the wall adiabatic, or the solids' wall closure's "
              "theta_flux)"},
     {.section = "pipe",
-     .name = "modulation",
-     .type = SL_KEY_CHOICE,
-     C(modulation),
-     .choices = "none|simonin",
-     .help = "the particles' modulation of the fluid's k and epsilon: none (Krampa's models A, B) or Simonin's "
-             "K (k_fs - 2k) with Tchen's equilibrium k_fs (his model C, eqs 4.80-4.83, the drift terms zero here)"},
-    {.section = "pipe",
-     .name = "c_eps3",
-     .type = SL_KEY_REAL,
-     C(c_eps3),
-     .def = 1.2,
-     .min = 0.0,
-     .max = 10.0,
-     .help = "modulation = simonin: C_eps3 of the epsilon equation's C_eps3 (eps/k) times the k modulation "
-             "(Krampa 2009 Table 4.1: 1.2)"},
-    {.section = "pipe",
      .name = "solids_viscosity",
      .type = SL_KEY_CHOICE,
      C(solids_viscosity),
@@ -154,11 +138,11 @@ static const sl_key pipe_keys[] = {
      .choices = "equilibrium|transported|k_epsilon",
      .def = PIPE_SOLIDS_TURBULENCE_EQUILIBRIUM,
      .help = "solids_viscosity = peirano_leckner: model C's k_s and k_fs from Tchen's equilibrium, or from their "
-             "transport equations (Krampa 2009 eqs 5.20, 5.23; Simonin 1996), which then also feed modulation and "
-             "dispersion = simonin; solids_viscosity = eddy: the dispersed phase's zero-equation model "
-             "(equilibrium), or the solids' own k_s-eps_s of Krampa's models A and B (k_epsilon: eqs 4.82-4.83 for "
-             "the solids with the Table 4.1 constants, the fluid's log-law wall values; its eddy viscosity C_mu "
-             "rho_s c_s k_s^2/eps_s replaces c_s rho_s nu_t/sigma)"},
+             "transport equations (Krampa 2009 eqs 5.20, 5.23; Simonin 1996), which then also feed "
+             "[closure.turbulence_modulation] and [closure.turbulent_dispersion] model = simonin; solids_viscosity = "
+             "eddy: the dispersed phase's zero-equation model (equilibrium), or the solids' own k_s-eps_s of Krampa's "
+             "models A and B (k_epsilon: eqs 4.82-4.83 for the solids with the Table 4.1 constants, the fluid's "
+             "log-law wall values; its eddy viscosity C_mu rho_s c_s k_s^2/eps_s replaces c_s rho_s nu_t/sigma)"},
     {.section = "pipe",
      .name = "covariance_schmidt",
      .type = SL_KEY_REAL,
@@ -185,28 +169,15 @@ static const sl_key pipe_keys[] = {
      .max = 1e3,
      .help = "sigma of the solids' eddy viscosity c_s rho_s nu_t/sigma (Krampa 2009 eq 6.20)"},
     {.section = "pipe",
-     .name = "dispersion_schmidt",
-     .type = SL_KEY_REAL,
-     C(dispersion_schmidt),
-     .def = 1.0,
-     .min = 1e-3,
-     .max = 1e3,
-     .help = "sigma of the turbulent dispersion nu_t/sigma (Krampa 2009 eq 4.59: 1)"},
-    {.section = "pipe",
-     .name = "dispersion",
-     .type = SL_KEY_CHOICE,
-     C(dispersion),
-     .choices = "gradient|simonin",
-     .help = "the turbulent dispersivity: nu_t/sigma (gradient) or t_fs k_fs/3 with the crossing-trajectory time "
-             "(simonin; Krampa 2009 eqs 4.61-4.63)"},
-    {.section = "pipe",
      .name = "crossing_trajectory",
      .type = SL_KEY_REAL,
      C(crossing_trajectory),
      .def = 0.45,
      .min = 0.0,
      .max = 10.0,
-     .help = "simonin: C_beta of t_fs (Csanady 1963: 1.8 - 1.35 cos^2, the slip along the mean motion)"},
+     .help = "C_beta of the eddy-particle interaction time t_fs (Krampa 2009 eq 4.61; Csanady 1963: 1.8 - 1.35 cos^2, "
+             "the slip along the mean motion) of [closure.turbulent_dispersion] and [closure.turbulence_modulation] "
+             "model = simonin and of model C"},
     {.section = "pipe",
      .name = "pressure_gradient",
      .type = SL_KEY_REALS,
@@ -322,9 +293,16 @@ static const sl_key pipe_keys[] = {
 };
 TABLE(pipe_key_table, pipe_keys);
 
-static const char *const pipe_fields[PIPE_NFIELDS] = {"velocity_fluid", "velocity_solid", "phi", "k",   "epsilon",
-                                                      "mu_t",           "theta",          "k_s", "k_fs",
-                                                      "epsilon_s"};
+static const char *const pipe_fields[PIPE_NFIELDS] = {"velocity_fluid", "velocity_solid", "phi", "k",    "epsilon",
+                                                      "mu_t",           "theta",          "k_s", "k_fs", "epsilon_s"};
+
+/* The keys that chose the dispersion and the modulation before they were closures. */
+static const sl_moved_key pipe_moved[] = {
+    {"pipe", "dispersion", "[closure.turbulent_dispersion] model = gradient or simonin"},
+    {"pipe", "dispersion_schmidt", "[closure.turbulent_dispersion] model = gradient with schmidt = ..."},
+    {"pipe", "modulation", "[closure.turbulence_modulation] model = none or simonin"},
+    {"pipe", "c_eps3", "[closure.turbulence_modulation] model = simonin with c_eps3 = ..."},
+};
 
 const sl_schema sl_pipe_schema = {
     .model = "pipe",
@@ -346,10 +324,18 @@ const sl_schema sl_pipe_schema = {
               {"wall_stress.solids", 0, "the solids' wall stress with [pipe] solids_wall = wall_stress"},
               {"lift", 0,
                "the shear lift's coefficient C_L in the radial solids balance (e.g. model = saffman_mei; none: no "
-               "lift, as Krampa)"}},
-    .n_roles = 7,
+               "lift, as Krampa)"},
+              {"turbulent_dispersion", 0,
+               "the solids' turbulent dispersivity D_t in the radial solids balance (model = gradient: nu_t/sigma, or "
+               "simonin: t_fs k_fs/3; without it nu_t, the gradient form with Schmidt number 1)"},
+              {"turbulence_modulation", 0,
+               "the particles' modulation of the fluid's k and epsilon (model = simonin: Krampa's model C; none, or "
+               "without it: none, his models A and B)"}},
+    .n_roles = 9,
     .config_size = sizeof(pipe_config),
     .boundary_size = 0,
     .fields = pipe_fields,
     .n_fields = PIPE_NFIELDS,
+    .moved = pipe_moved,
+    .n_moved = (int)(sizeof pipe_moved / sizeof pipe_moved[0]),
 };

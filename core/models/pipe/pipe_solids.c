@@ -20,8 +20,8 @@
  *   phi v - D phi' = 0,  D = nu_t/sigma_d + c_s c_f^2 (dp_s/dphi)/K,
  *   v = -c_f^2 (dp_s/dtheta) theta'/K,
  * a cell scalar (core/fv/cell_scalar.h) with no flux through the axis and the
- * wall. With `dispersion = simonin` the dispersivity nu_t/sigma_d is replaced
- * by Simonin's D_fs = t_fs k_fs/3 (Krampa 2009 eq 4.63, Enwald et al. 1996)
+ * wall. The dispersivity is [closure.turbulent_dispersion]'s: model = gradient, nu_t/sigma_d, or
+ * model = simonin, Simonin's D_fs = t_fs k_fs/3 (Krampa 2009 eq 4.63, Enwald et al. 1996)
  * with the eddy-particle interaction time seen by a particle crossing the
  * eddies (Csanady 1963; Krampa eq 4.61),
  *   t_fs = C_mu (3k/(2 eps)) [1 + C_beta 3 |u_f - u_s|^2/(2k)]^(-1/2),
@@ -224,6 +224,31 @@ static int lift_flux(pipe *p, double *flux, sl_diag *d) {
   return 0;
 }
 
+/* The solids' turbulent dispersivity D_t of [closure.turbulent_dispersion] in every cell, from the fluid's nu_t =
+   mu_t/rho_f, the eddy-particle interaction time t_fs with the crossing trajectories (Krampa 2009 eq 4.61, pipe_tfs)
+   and the fluid-particle covariance k_fs (Tchen's or model C's, pipe_kfs), each computed where the closure takes it;
+   without the section the gradient form with Schmidt number 1 (Krampa eq 4.59), D_t = nu_t. Scratch buf[14..16]. */
+int pipe_turbulent_dispersivity(pipe *p, double *Dt, sl_diag *d) {
+  const int n = p->n;
+  double *nu = p->buf[14], *tfs = p->buf[15], *kfs = p->buf[16];
+  for (int i = 0; i < n; ++i) nu[i] = p->mu_t[i] / p->rho_f;
+  if (!p->have_disp) {
+    memcpy(Dt, nu, (size_t)n * sizeof *Dt);
+    return 0;
+  }
+  const int want_t = sl_point_has_input(&p->disp, "t_fs"), want_k = sl_point_has_input(&p->disp, "k_fs");
+  for (int i = 0; i < n; ++i) {
+    if (want_t) tfs[i] = pipe_tfs(p, i);
+    if (want_k) kfs[i] = pipe_kfs(p, i);
+  }
+  const double *v[PQ_N] = {0};
+  v[PQ_PHI] = p->phi, v[PQ_K] = p->k, v[PQ_EPS] = p->eps;
+  v[PQ_NU_T] = nu, v[PQ_T_FS] = tfs, v[PQ_K_FS] = kfs, v[PQ_DRAG] = p->K;
+  sl_point_request rq = {"D_t", Dt, NULL, NULL};
+  int rc = sl_point_eval(&p->disp, n, v, &rq, 1, d);
+  return rc ? sl_diag_prefix(d, rc, "[closure.turbulent_dispersion]") : 0;
+}
+
 int pipe_solids_update(pipe *p, sl_diag *d) {
   const int n = p->n;
   const sl_fv_grid *g = &p->g;
@@ -246,11 +271,12 @@ int pipe_solids_update(pipe *p, sl_diag *d) {
     if ((rc = sl_point_eval(&p->gran, n, v, rq, 2, d))) return sl_diag_prefix(d, rc, "[closure.granular]");
     for (int i = 0; i < n; ++i) B[i] += dph[i];
   }
+  double *Dt = p->buf[17];
+  if ((rc = pipe_turbulent_dispersivity(p, Dt, d))) return rc;
   double Dmax = 0.0;
   for (int i = 0; i < n; ++i) {
-    double cs = p->phi[i], cf = 1.0 - cs, Dt = p->mu_t[i] / p->rho_f / p->cfg->dispersion_schmidt;
-    if (p->cfg->dispersion == PIPE_DISPERSION_SIMONIN) Dt = pipe_tfs(p, i) * pipe_kfs(p, i) / 3.0;
-    D[i] = Dt + cs * cf * cf * B[i] / p->K[i];
+    double cs = p->phi[i], cf = 1.0 - cs;
+    D[i] = Dt[i] + cs * cf * cf * B[i] / p->K[i];
     Dmax = fmax(Dmax, D[i]);
     cap[i] = 1.0;
   }
