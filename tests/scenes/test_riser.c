@@ -124,11 +124,13 @@ static void profile(void) {
 }
 
 /* dispersed: configs/lscfb_riser_dispersed.ini, the no-slip riser with the turbulent dispersion of the solids
- * ([closure.turbulent_dispersion] model = gradient) and the turbophoretic drift (two_fluid_plane_dispersion.c), on 12 x 20 cells graded geometrically to the wall (the
- * last cell 0.05 times the first: 24.8 mm at the axis, 1.24 mm at the wall, y+ = 3.5). Across the developed rows
- * (z > 0.1 m) the wall cell must be denser than the axis cell by more than the laminar model's whole contrast
- * (1e-3 in porosity, scenes_riser_profile), the r dr mean porosity must stay at the 1-D balance within 2e-4 (the
- * solids the drift gathers in the wall's slow layer are few; measured 5e-5), solids conserved to round-off. The radial profile at z = 0.15 m is drawn (riser_porosity.svg/.png, docs/riser.md). */
+ * ([closure.turbulent_dispersion] model = gradient) and the turbophoretic drift (two_fluid_plane_dispersion.c), on
+ * 12 x 20 cells graded geometrically to the wall (the last cell 0.05 times the first: 24.8 mm at the axis, 1.24 mm
+ * at the wall, y+ = 3.5). Across the developed rows (z > 0.1 m) the wall cell must be denser than the axis cell by
+ * more than the laminar model's whole contrast (1e-3 in porosity, scenes_riser_profile), the r dr mean porosity must
+ * stay at the 1-D balance within 2e-4 (the solids the drift gathers in the wall's slow layer are few; measured
+ * 5e-5), solids conserved to round-off. The radial profile at z = 0.15 m is drawn (riser_porosity.svg/.png,
+ * docs/riser.md). */
 static void dispersed(void) {
   const double phi_eq = phi_uniform(), R = 0.1, ratio = 0.05;
   enum { NX = 12, NY = 20 };

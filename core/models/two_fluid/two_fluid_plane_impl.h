@@ -85,9 +85,9 @@ typedef struct tfp_solids {
  * transport's. */
 typedef struct tfp_dispersion {
   int on, turbophoretic;
-  int have_dc;   /* [closure.turbulent_dispersion] given (else D = nu_t) */
-  sl_closure *c; /* the scene's (not owned) */
-  sl_point_closure pc, dc; /* [closure.turbulence], [closure.turbulent_dispersion] */
+  int have_dc;                                        /* [closure.turbulent_dispersion] given (else D = nu_t) */
+  sl_closure *c;                                      /* the scene's (not owned) */
+  sl_point_closure pc, dc;                            /* [closure.turbulence], [closure.turbulent_dispersion] */
   double *k, *eps, *mu_t, *tau, *slip, *K, *dK, *phi; /* cells [nc] */
   double *D, *v, *nu;                                 /* faces [nf]: m^2/s, m/s along +x or +y, m^2/s */
 } tfp_dispersion;
