@@ -41,13 +41,35 @@ static inline sym3 sym_part(const double G[3][3]) {
       {G[0][0], G[1][1], G[2][2], 0.5 * (G[0][1] + G[1][0]), 0.5 * (G[0][2] + G[2][0]), 0.5 * (G[1][2] + G[2][1])}};
 }
 
-/* The sums of the axisymmetric fast path (axi_accumulate). */
+/* The axisymmetric fast path's point table: AXI_NB scalar basis functions a row (SL_ELEMENT_MAX_BASIS padded with
+ * zeros to a multiple of 4), AXI_NPAIR packed pairs (i <= j) padded to a multiple of 8, AXI_NK mass coefficients. */
+#define AXI_NB 12
+#define AXI_NPAIR 48
+#define AXI_NK (MAX_COMP * MAX_COMP)
+
+/* What axi_point keeps of each point of the cell, for axi_sums. */
+typedef struct axi_pts {
+  double g0[SL_QUAD_MAX_POINTS][AXI_NB], g1[SL_QUAD_MAX_POINTS][AXI_NB], h[SL_QUAD_MAX_POINTS][AXI_NB];
+  double a[SL_QUAD_MAX_POINTS][AXI_NB];      /* wq rho u.grad(phi_j), 0 without convection */
+  double phi[SL_QUAD_MAX_POINTS][AXI_NB];    /* phi_i */
+  double wm[SL_QUAD_MAX_POINTS];             /* wq mu */
+  double pp[SL_QUAD_MAX_POINTS][AXI_NPAIR];  /* phi_i phi_j, packed by rows of the upper triangle */
+  double ck[SL_QUAD_MAX_POINTS][AXI_NK + 2]; /* wq c_AB, zero beyond nc * nc (blocks of 3) */
+} axi_pts;
+
+/* The sums of the axisymmetric fast path (axi_sums). */
 typedef struct axi_acc {
   double X[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS], Y[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS],
       H[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS], S[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS],
       Z[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS], U[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS];
-  double M[MAX_COMP * MAX_COMP][SL_ELEMENT_MAX_BASIS * (SL_ELEMENT_MAX_BASIS + 1) / 2]; /* packed upper triangles */
+  double M[AXI_NK][AXI_NPAIR]; /* packed upper triangles */
 } axi_acc;
+
+/* The cell geometry of a batch (sl_fe_values_reinit in batch_pass), kept for the element pass. */
+typedef struct geo_cache {
+  double *JxW;
+  double (*grad)[SL_ELEMENT_MAX_BASIS][2]; /* space 0 (the velocity) */
+} geo_cache;
 
 typedef struct flow_work {
   sl_fe_values *fv; /* space 0: velocity, space 1: pressure */
@@ -57,6 +79,8 @@ typedef struct flow_work {
   int frame[MAX_COMP]; /* frame axis of each velocity component */
   double Ke[MAX_ELEM_DOFS * MAX_ELEM_DOFS], be[MAX_ELEM_DOFS];
   axi_acc acc; /* the axisymmetric fast path's sums over the cell's points */
+  axi_pts pts; /* and its point table */
+  geo_cache geo;
   int load_only; /* SL_FLOW_LOAD: the iterate and the viscosity are not needed */
 } flow_work;
 
@@ -65,6 +89,7 @@ static void work_free(flow_work *w) {
   sl_fe_values_destroy(w->fv);
   sl_asm_batch_free(&w->batch);
   free(w->state), free(w->rho), free(w->mu), free(w->force);
+  free(w->geo.JxW), free(w->geo.grad);
   free(w);
 }
 
@@ -86,7 +111,10 @@ static int work_create(flow_work **out, const sl_th_space *th, const sl_flow_opt
     w->rho = malloc(cap * sizeof *w->rho);
     w->mu = malloc(2 * cap * sizeof *w->mu);
     w->force = calloc(cap * th->n_comp, sizeof *w->force);
-    if (!w->state || !w->rho || !w->mu || !w->force) rc = sl_diag_set(d, SL_ENOMEM, "flow: out of memory");
+    w->geo.JxW = malloc(cap * sizeof *w->geo.JxW);
+    w->geo.grad = malloc(cap * sizeof *w->geo.grad);
+    if (!w->state || !w->rho || !w->mu || !w->force || !w->geo.JxW || !w->geo.grad)
+      rc = sl_diag_set(d, SL_ENOMEM, "flow: out of memory");
   }
   if (rc) {
     work_free(w);
@@ -126,18 +154,25 @@ static void eval_state(const flow_work *w, const sl_th_space *th, const double *
     const double *ua = u + sl_th_vel_dof(th, a, 0);
     for (int b = 0; b < nb; ++b) ul[a][b] = ua[vd[b]];
   }
+  double pl[SL_ELEMENT_MAX_BASIS];
+  for (int k = 0; k < np; ++k) pl[k] = u[th->p_offset + pd[k]];
   for (int q = 0; q < fv->quad.n; ++q) {
     qp_state *s = &st[q];
     memset(s, 0, sizeof *s);
-    for (int a = 0; a < th->n_comp; ++a) {
+    for (int a = 0; a < th->n_comp; ++a) { /* the sums in registers, in the order of the basis functions */
       int A = w->frame[a];
+      double ua = 0.0, g[2] = {0.0, 0.0};
       for (int b = 0; b < nb; ++b) {
         double v = ul[a][b];
-        s->u[A] += v * fv->phi[0][q][b];
-        for (int j = 0; j < dim; ++j) s->G[A][j] += v * fv->grad[0][q][b][j];
+        ua += v * fv->phi[0][q][b];
+        for (int j = 0; j < dim; ++j) g[j] += v * fv->grad[0][q][b][j];
       }
+      s->u[A] = ua;
+      for (int j = 0; j < dim; ++j) s->G[A][j] = g[j];
     }
-    for (int k = 0; k < np; ++k) s->p += u[th->p_offset + pd[k]] * fv->phi[1][q][k];
+    double pq = 0.0;
+    for (int k = 0; k < np; ++k) pq += pl[k] * fv->phi[1][q][k];
+    s->p = pq;
     if (axi) {
       double r = fv->x[q][0];
       s->G[2][2] += s->u[0] / r;
@@ -228,19 +263,13 @@ static void planar_matrix(double *Ke, int n, int nb, double wq, const double *ph
  * H - S + U + M_thth, (r, z) = Z + M_rz, (z, r) = Z^T + M_zr, the swirl's other pairs M_AB alone (axi_accumulate
  * per point, axi_finish per cell): 750 products a point where the row updates per point took 1800. */
 
-static void axi_clear(axi_acc *acc, int nc, int nb) {
-  size_t sz = (size_t)nb * nb * sizeof(double);
-  memset(acc->X, 0, sz), memset(acc->Y, 0, sz), memset(acc->H, 0, sz), memset(acc->S, 0, sz);
-  memset(acc->Z, 0, sz), memset(acc->U, 0, sz);
-  for (int k = 0; k < nc * nc; ++k) memset(acc->M[k], 0, (size_t)nb * (nb + 1) / 2 * sizeof(double));
-}
-
-/* One point's part of the sums of axi_acc; the pressure columns and rows (np of them) straight into Ke. */
-static void axi_accumulate(axi_acc *restrict acc, double *Ke, int n, int nc, int nb, double wq, double r,
-                           const double *phi, const double (*grad)[2], const double *psi, int np, double rq, double mq,
-                           double mass_coef, const double *K, const double C[3][3], const qp_state *s, int convection,
-                           int newton) {
-  double c[3][3], a[SL_ELEMENT_MAX_BASIS], h[SL_ELEMENT_MAX_BASIS], g0[SL_ELEMENT_MAX_BASIS], g1[SL_ELEMENT_MAX_BASIS];
+/* One point of the cell into the point table (axi_sums adds them up); the pressure columns and rows (np of them)
+ * straight into Ke. */
+static void axi_point(axi_pts *restrict P, int q, double *Ke, int n, int nc, int nb, double wq, double r,
+                      const double *phi, const double (*grad)[2], const double *psi, int np, double rq, double mq,
+                      double mass_coef, const double *K, const double C[3][3], const qp_state *s, int convection,
+                      int newton) {
+  double c[3][3], *restrict h = P->h[q];
   double rinv = 1.0 / r;
   for (int A = 0; A < 3; ++A)
     for (int B = 0; B < 3; ++B)
@@ -248,38 +277,69 @@ static void axi_accumulate(axi_acc *restrict acc, double *Ke, int n, int nc, int
                 (convection && newton ? rq * s->G[A][B] : 0.0);
   if (convection) c[2][0] += rq * s->u[2] * rinv, c[0][2] -= rq * s->u[2] * rinv;
   for (int j = 0; j < nb; ++j) {
-    a[j] = convection ? wq * rq * (s->u[0] * grad[j][0] + s->u[1] * grad[j][1]) : 0.0;
-    h[j] = phi[j] * rinv, g0[j] = grad[j][0], g1[j] = grad[j][1];
+    P->a[q][j] = convection ? wq * rq * (s->u[0] * grad[j][0] + s->u[1] * grad[j][1]) : 0.0;
+    h[j] = phi[j] * rinv, P->g0[q][j] = grad[j][0], P->g1[q][j] = grad[j][1], P->phi[q][j] = phi[j];
   }
-  double wm = wq * mq, cw[MAX_COMP * MAX_COMP];
+  P->wm[q] = wq * mq;
   for (int A = 0; A < nc; ++A)
-    for (int B = 0; B < nc; ++B) cw[A * nc + B] = c[A][B];
-  int nv = nc * nb;
-  /* the masses: phi_i phi_j once, packed by rows of the upper triangle, then one long update for each (A, B) */
-  double pp[SL_ELEMENT_MAX_BASIS * (SL_ELEMENT_MAX_BASIS + 1) / 2];
-  int npair = 0;
+    for (int B = 0; B < nc; ++B) P->ck[q][A * nc + B] = wq * c[A][B];
+  int npair = 0, nv = nc * nb;
   for (int i = 0; i < nb; ++i)
-    for (int j = i; j < nb; ++j) pp[npair++] = phi[i] * phi[j];
-  for (int k = 0; k < nc * nc; ++k) {
-    double *restrict M = acc->M[k], ck = wq * cw[k];
-    if (ck != 0.0) /* (z, theta) without a Coriolis term */
-      for (int e = 0; e < npair; ++e) M[e] += ck * pp[e];
-  }
-  for (int i = 0; i < nb; ++i) {
-    double gi0 = wm * g0[i], gi1 = wm * g1[i], hi = wm * h[i], pi = phi[i];
-    double *restrict X = acc->X + i * nb, *restrict Y = acc->Y + i * nb, *restrict H = acc->H + i * nb,
-                     *restrict S = acc->S + i * nb, *restrict Z = acc->Z + i * nb, *restrict U = acc->U + i * nb;
-    for (int j = i; j < nb; ++j) {
-      X[j] += gi0 * g0[j], Y[j] += gi1 * g1[j], H[j] += hi * h[j];
-      S[j] += gi0 * h[j] + hi * g0[j];
-    }
-    for (int j = 0; j < nb; ++j) Z[j] += gi1 * g0[j], U[j] += pi * a[j];
+    for (int j = i; j < nb; ++j) P->pp[q][npair++] = phi[i] * phi[j];
+  for (int i = 0; i < nb; ++i)
     for (int k = 0; k < np; ++k) { /* -psi_k div(phi_i e_A), and its transpose; div(phi e_theta) = 0 */
       double b0 = -wq * psi[k] * (grad[i][0] + h[i]), b1 = -wq * psi[k] * grad[i][1];
       Ke[(size_t)i * n + nv + k] += b0, Ke[(size_t)(nb + i) * n + nv + k] += b1;
       Ke[(size_t)(nv + k) * n + i] += b0, Ke[(size_t)(nv + k) * n + nb + i] += b1;
     }
+}
+
+/* A clone of the kernel for AVX2 where the compiler can make one (GCC on x86 with ifunc), chosen at load time. The
+ * arithmetic is the same in every clone: no reassociation, no contraction (ISO C mode), so the sums are bitwise
+ * those of the default build. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__gnu_linux__) && \
+    !defined(__SANITIZE_ADDRESS__)
+#define SL_AXI_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define SL_AXI_CLONES
+#endif
+
+/* The sums of axi_acc over the cell's nq points, point by point in the order of the points as the per-point
+ * updates added them, each sum held in registers over the points and stored once: X, Y, H, S (upper triangles
+ * used), Z, U (full), and the masses M_k = sum_q ck_k(q) pp(q) in blocks of 8 pairs and 3 coefficients. */
+SL_AXI_CLONES
+static void axi_sums(axi_acc *restrict acc, const axi_pts *restrict P, int nq, int nc, int nb) {
+  for (int i = 0; i < nb; ++i) {
+    double x[AXI_NB] = {0}, y[AXI_NB] = {0}, hh[AXI_NB] = {0};
+    for (int q = 0; q < nq; ++q) {
+      double wm = P->wm[q], gi0 = wm * P->g0[q][i], gi1 = wm * P->g1[q][i], hi = wm * P->h[q][i];
+      for (int j = 0; j < AXI_NB; ++j) x[j] += gi0 * P->g0[q][j], y[j] += gi1 * P->g1[q][j], hh[j] += hi * P->h[q][j];
+    }
+    for (int j = 0; j < nb; ++j) acc->X[i * nb + j] = x[j], acc->Y[i * nb + j] = y[j], acc->H[i * nb + j] = hh[j];
   }
+  for (int i = 0; i < nb; ++i) {
+    double sv[AXI_NB] = {0}, z[AXI_NB] = {0}, u[AXI_NB] = {0};
+    for (int q = 0; q < nq; ++q) {
+      double wm = P->wm[q], gi0 = wm * P->g0[q][i], gi1 = wm * P->g1[q][i], hi = wm * P->h[q][i], pi = P->phi[q][i];
+      for (int j = 0; j < AXI_NB; ++j)
+        sv[j] += gi0 * P->h[q][j] + hi * P->g0[q][j], z[j] += gi1 * P->g0[q][j], u[j] += pi * P->a[q][j];
+    }
+    for (int j = 0; j < nb; ++j) acc->S[i * nb + j] = sv[j], acc->Z[i * nb + j] = z[j], acc->U[i * nb + j] = u[j];
+  }
+  int npair = nb * (nb + 1) / 2, nk = nc * nc;
+  for (int e0 = 0; e0 < npair; e0 += 8)
+    for (int k0 = 0; k0 < nk; k0 += 3) {
+      double m0[8] = {0}, m1[8] = {0}, m2[8] = {0};
+      for (int q = 0; q < nq; ++q) {
+        const double *pp = P->pp[q] + e0, c0 = P->ck[q][k0], c1 = P->ck[q][k0 + 1], c2 = P->ck[q][k0 + 2];
+        for (int e = 0; e < 8; ++e) m0[e] += c0 * pp[e], m1[e] += c1 * pp[e], m2[e] += c2 * pp[e];
+      }
+      for (int e = 0; e < 8; ++e) {
+        acc->M[k0][e0 + e] = m0[e];
+        if (k0 + 1 < nk) acc->M[k0 + 1][e0 + e] = m1[e];
+        if (k0 + 2 < nk) acc->M[k0 + 2][e0 + e] = m2[e];
+      }
+    }
 }
 
 /* The cell's velocity blocks from the sums (axi_acc), added to Ke. */
@@ -305,8 +365,9 @@ static void axi_finish(const axi_acc *acc, double *Ke, int n, int nc, int nb) {
 }
 
 static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, sl_flow_linearisation lin,
-                    const qp_state *st, const double *shear, const double *rho, const double *mu, const double *force) {
-  const sl_fe_values *fv = w->fv;
+                    const qp_state *st, const double *shear, const double *rho, const double *mu, const double *force,
+                    const double (*X)[2], const double *JxW, const double (*GR)[SL_ELEMENT_MAX_BASIS][2]) {
+  const sl_fe_values *fv = w->fv; /* the reference tabulation; the cell's geometry is X, JxW and GR */
   int c = fv->cell, nc = th->n_comp, nb = th->vel->dofs_per_cell, np = th->pres->dofs_per_cell;
   /* npc: the pressure dofs the element's rows and columns hold (none for the velocity block alone) */
   int npc = o->velocity_block ? 0 : np;
@@ -322,25 +383,30 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
     if (axi) C[0][2] = -2.0 * o->omega, C[2][0] = 2.0 * o->omega;
     else C[0][1] = -2.0 * o->omega, C[1][0] = 2.0 * o->omega;
   }
+  double hl[MAX_COMP][SL_ELEMENT_MAX_BASIS]; /* the cell's history values, gathered once */
+  if (o->history)
+    for (int a = 0; a < nc; ++a) {
+      const double *ha = o->history + sl_th_vel_dof(th, a, 0);
+      for (int b = 0; b < nb; ++b) hl[a][b] = ha[vd[b]];
+    }
   basis_vec bv[MAX_VEL];
   int acc_used = 0;
+  unsigned char fast_at[SL_QUAD_MAX_POINTS] = {0}; /* the points in the fast path's table */
   for (int q = 0; q < fv->quad.n; ++q) {
     const qp_state *s = &st[q];
-    double wq = fv->JxW[q], r = fv->x[q][0], rq = rho[q];
+    double wq = JxW[q], r = X[q][0], rq = rho[q];
     /* du/dt ~ mass_coef u + history, in the frame. */
     double hist[3] = {0, 0, 0};
     if (o->history)
-      for (int a = 0; a < nc; ++a) {
-        const double *ha = o->history + sl_th_vel_dof(th, a, 0);
-        for (int b = 0; b < nb; ++b) hist[w->frame[a]] += ha[vd[b]] * fv->phi[0][q][b];
-      }
+      for (int a = 0; a < nc; ++a)
+        for (int b = 0; b < nb; ++b) hist[w->frame[a]] += hl[a][b] * fv->phi[0][q][b];
     /* Body force in the frame, centrifugal included. */
     double f[3] = {0, 0, 0};
     for (int a = 0; a < nc; ++a) f[w->frame[a]] += force[q * nc + a];
     if (o->omega != 0.0) {
       double w2 = (rq - o->centrifugal_density) * o->omega * o->omega;
       if (axi) f[0] += w2 * r;
-      else f[0] += w2 * (fv->x[q][0] - o->rotation_centre[0]), f[1] += w2 * (fv->x[q][1] - o->rotation_centre[1]);
+      else f[0] += w2 * (X[q][0] - o->rotation_centre[0]), f[1] += w2 * (X[q][1] - o->rotation_centre[1]);
     }
     if (o->extra_stress) { /* -div T, weakly + int T : grad(v); T interpolated in the pressure space */
       sym3 T = {{0}};
@@ -349,8 +415,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
         for (int e = 0; e < 6; ++e) T.v[e] += o->extra_stress[6 * (size_t)pd[k] + e] * fv->phi[1][q][k];
       for (int a = 0; a < nc; ++a)
         for (int i = 0; i < nb; ++i)
-          w->be[a * nb + i] +=
-              wq * stress_contraction(&T, w->frame[a], fv->phi[0][q][i], fv->grad[0][q][i], dim, axi, r);
+          w->be[a * nb + i] += wq * stress_contraction(&T, w->frame[a], fv->phi[0][q][i], GR[q][i], dim, axi, r);
     }
     if (lin == SL_FLOW_LOAD) { /* the u-independent part of the momentum residual only */
       for (int a = 0; a < nc; ++a) {
@@ -384,9 +449,11 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
     int fast_res = w->frame[0] == 0 && w->frame[1] == 1 && (axi ? nc == 2 || w->frame[2] == 2 : planar2);
     if (fast_res) {
       const double *ph = fv->phi[0][q];
-      const double(*gr)[2] = (const double(*)[2])fv->grad[0][q];
+      const double(*gr)[2] = (const double(*)[2])GR[q];
+      double hv[SL_ELEMENT_MAX_BASIS]; /* phi / r, in a loop of its own (the divisions vectorised) */
+      for (int i = 0; i < nb; ++i) hv[i] = axi ? ph[i] / r : 0.0;
       for (int i = 0; i < nb; ++i) {
-        double g0 = gr[i][0], g1 = gr[i][1], hh = axi ? ph[i] / r : 0.0;
+        double g0 = gr[i][0], g1 = gr[i][1], hh = hv[i];
         double sd0 = axi ? (Du.v[0] * g0 + Du.v[2] * hh) + 2.0 * (Du.v[3] * (0.5 * g1))
                          : Du.v[0] * g0 + 2.0 * (Du.v[3] * (0.5 * g1));
         double sd1 = Du.v[1] * g1 + 2.0 * (Du.v[3] * (0.5 * g0));
@@ -406,7 +473,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
           double T[3][3] = {{0}};
           int A = w->frame[a];
           double ph = fv->phi[0][q][i];
-          for (int j = 0; j < dim; ++j) T[A][j] = fv->grad[0][q][i][j];
+          for (int j = 0; j < dim; ++j) T[A][j] = GR[q][i][j];
           if (axi && A == 0) T[2][2] = ph / r;
           if (axi && A == 2) T[0][2] = -ph / r;
           v->D = sym_part(T);
@@ -433,14 +500,14 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       for (int k = 0; k < nv; ++k) s_ia[k] = sym_dot(&Du, &bv[k].D) / gam;
     }
     if (fast && planar2) {
-      planar_matrix(w->Ke, n, nb, wq, fv->phi[0][q], (const double(*)[2])fv->grad[0][q], psi, npc, rq, mq, o->mass_coef,
-                    K, s, o->convection, newton);
+      planar_matrix(w->Ke, n, nb, wq, fv->phi[0][q], (const double(*)[2])GR[q], psi, npc, rq, mq, o->mass_coef, K, s,
+                    o->convection, newton);
       continue;
     }
     if (fast) {
-      if (!acc_used) axi_clear(&w->acc, nc, nb), acc_used = 1;
-      axi_accumulate(&w->acc, w->Ke, n, nc, nb, wq, r, fv->phi[0][q], (const double(*)[2])fv->grad[0][q], psi, npc,
-                     rq, mq, o->mass_coef, K, (const double(*)[3])C, s, o->convection, newton);
+      axi_point(&w->pts, q, w->Ke, n, nc, nb, wq, r, fv->phi[0][q], (const double(*)[2])GR[q], psi, npc, rq, mq,
+                o->mass_coef, K, (const double(*)[3])C, s, o->convection, newton);
+      acc_used = 1, fast_at[q] = 1;
       continue;
     }
     double rm = rq * o->mass_coef, w2mu = 2.0 * wq * mq;
@@ -486,7 +553,19 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       }
     }
   }
-  if (acc_used) axi_finish(&w->acc, w->Ke, n, nc, nb);
+  if (acc_used) {
+    /* a point of the general loop (a shear-rate dependent viscosity there) adds zeros to the sums, as if skipped */
+    for (int q = 0; q < fv->quad.n; ++q)
+      if (!fast_at[q]) {
+        axi_pts *P = &w->pts;
+        P->wm[q] = 0.0;
+        memset(P->phi[q], 0, sizeof P->phi[q]), memset(P->a[q], 0, sizeof P->a[q]);
+        memset(P->g0[q], 0, sizeof P->g0[q]), memset(P->g1[q], 0, sizeof P->g1[q]), memset(P->h[q], 0, sizeof P->h[q]);
+        memset(P->ck[q], 0, sizeof P->ck[q]), memset(P->pp[q], 0, sizeof P->pp[q]);
+      }
+    axi_sums(&w->acc, &w->pts, fv->quad.n, nc, nb);
+    axi_finish(&w->acc, w->Ke, n, nc, nb);
+  }
 }
 
 /* Evaluates the iterate over a batch of cells and calls the coefficients. */
@@ -505,6 +584,9 @@ static int batch_pass(flow_work *w, const sl_th_space *th, const double *u, cons
     }
     if ((rc = sl_fe_values_reinit(w->fv, first + i, d))) break;
     memcpy(b->x + at, w->fv->x, (size_t)nq * sizeof *b->x);
+    /* the geometry the element pass needs (the points are b->x), kept so that it does not compute it again */
+    memcpy(w->geo.JxW + at, w->fv->JxW, (size_t)nq * sizeof *w->geo.JxW);
+    memcpy(w->geo.grad + at, w->fv->grad[0], (size_t)nq * sizeof *w->geo.grad);
     eval_state(w, th, u, o->axisymmetric, w->state + at, b->shear_rate + at);
   }
   if (rc) return rc;
@@ -569,12 +651,18 @@ static int assemble_batch(flow_work *w, const sl_th_space *th, const sl_flow_opt
   int nq = w->fv->quad.n, rc = 0;
   for (int i = 0; i < n && !rc; ++i) {
     size_t at = (size_t)i * nq;
-    /* the load pass needs the basis gradients for the extra stress only */
-    rc = w->load_only && !o->extra_stress ? sl_fe_values_reinit_measure(w->fv, first + i, d)
-                                          : sl_fe_values_reinit(w->fv, first + i, d);
-    if (rc) break;
+    sl_fe_values *fv = w->fv;
+    const double(*X)[2] = w->batch.x + at, *JxW = w->geo.JxW + at;
+    const double(*GR)[SL_ELEMENT_MAX_BASIS][2] = (const double(*)[SL_ELEMENT_MAX_BASIS][2])(w->geo.grad + at);
+    if (w->load_only) { /* the load pass needs the basis gradients for the extra stress only */
+      rc = o->extra_stress ? sl_fe_values_reinit(fv, first + i, d) : sl_fe_values_reinit_measure(fv, first + i, d);
+      if (rc) break;
+      X = (const double(*)[2])fv->x, JxW = fv->JxW, GR = (const double(*)[SL_ELEMENT_MAX_BASIS][2])fv->grad[0];
+    } else { /* the geometry batch_pass computed */
+      fv->cell = first + i;
+    }
     element(w, th, o, a->lin, w->state + at, w->batch.shear_rate + at, w->rho + at, w->mu + 2 * at,
-            w->force + at * th->n_comp);
+            w->force + at * th->n_comp, X, JxW, GR);
     int matrix = a->lin == SL_FLOW_NEWTON || a->lin == SL_FLOW_PICARD;
     rc = sl_system_add_element(a->s, first + i, matrix ? w->Ke : NULL, w->be, d);
   }

@@ -60,7 +60,7 @@ int sl_fgmres(sl_krylov *k, sl_krylov_apply_fn A, void *A_user, sl_krylov_apply_
   int m = opts && opts->restart > 0 ? opts->restart : 30;
   if (m > k->m) m = k->m;
   int max_it = opts && opts->max_iterations > 0 ? opts->max_iterations : 100;
-  int predict = opts ? opts->predict : 0;
+  int predict = opts ? opts->predict : 0, trust = opts ? opts->trust_estimate : 0;
   memset(res, 0, sizeof *res);
 
   double bnorm = sqrt(dot(b, b, n)), beta;
@@ -78,7 +78,7 @@ int sl_fgmres(sl_krylov *k, sl_krylov_apply_fn A, void *A_user, sl_krylov_apply_
     for (int32_t i = 0; i < n; ++i) V[i] = k->r[i] / beta;
     memset(g, 0, ((size_t)m + 1) * sizeof *g);
     g[0] = beta;
-    int j = 0, done = 0;
+    int j = 0, done = 0, reached = 0;
     while (j < m && total < max_it && !done) {
       double *v = V + (size_t)j * nn, *z = Z + (size_t)j * nn, *w = V + (size_t)(j + 1) * nn;
       if (M) {
@@ -119,7 +119,7 @@ int sl_fgmres(sl_krylov *k, sl_krylov_apply_fn A, void *A_user, sl_krylov_apply_
       ++j, ++total;
       double est = fabs(g[j]);
       if (est <= target || breakdown) {
-        done = 1;
+        done = 1, reached = est <= target;
       } else if (predict && total >= 3) {
         double rate = pow(est / res->residual0, 1.0 / total);
         if (!(rate < 1.0) || total + log(target / est) / log(rate) > max_it) done = stagnated = 1;
@@ -135,6 +135,13 @@ int sl_fgmres(sl_krylov *k, sl_krylov_apply_fn A, void *A_user, sl_krylov_apply_
       const double *zl = Z + (size_t)l * nn;
       double yl = k->y[l];
       for (int32_t q = 0; q < n; ++q) x[q] += yl * zl[q];
+    }
+    if (trust && reached && res->restarts == 0) {
+      res->iterations = total;
+      res->residual = fabs(g[j]);
+      res->rate = total > 0 && res->residual0 > 0 ? pow(res->residual / res->residual0, 1.0 / total) : 0.0;
+      res->status = SL_KRYLOV_CONVERGED;
+      return 0;
     }
     if ((rc = residual(A, A_user, b, x, k->r, n, &beta, d))) return rc;
     res->iterations = total;

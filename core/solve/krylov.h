@@ -30,6 +30,11 @@ typedef struct sl_krylov_opts {
   int restart;        /* Krylov space dimension m; default 30 (at most the workspace's) */
   int max_iterations; /* in all cycles; default 100 */
   int predict;        /* stop once the mean rate so far cannot reach rtol within max_iterations */
+  /* converged when the cycle's residual estimate |g_j| reaches rtol |b| in the first cycle, without the product
+   * that recomputes b - A x (the estimate is that residual's norm in exact arithmetic: Saad 2003, Iterative
+   * Methods for Sparse Linear Systems, 2nd ed., Proposition 6.9 for GMRES, and for FGMRES with its kept Z,
+   * section 9.4.1); result.residual is then the estimate */
+  int trust_estimate;
 } sl_krylov_opts;
 
 typedef enum sl_krylov_status {

@@ -193,6 +193,46 @@ static void preconditioned(void) {
   free(xe), free(b), free(x);
 }
 
+/* trust_estimate (the split step's velocity solve): the same iterations and bitwise the same x as with the last
+ * product, the true residual b - A x within rtol |b|, and the returned estimate that residual's norm up to rounding
+ * (equal in exact arithmetic: Saad 2003, Proposition 6.9, for FGMRES with its kept Z, section 9.4.1). */
+static void trusted_estimate(void) {
+  sl_diag d = {{0}};
+  sl_csr A = {0}, stale = {0};
+  CHECK(convdiff(&A, 20, 0.5, &d) == 0 && convdiff(&stale, 20, 0.5, &d) == 0);
+  for (int32_t i = 0; i < A.n_rows; ++i) {
+    A.values[sl_csr_find(&A, i, i)] += 0.4;
+    stale.values[sl_csr_find(&stale, i, i)] += 0.38;
+  }
+  sl_csr_touch(&A), sl_csr_touch(&stale);
+  int32_t n = A.n_rows;
+  double *b = malloc((size_t)n * sizeof *b), *x[2], *r = malloc((size_t)n * sizeof *r);
+  x[0] = malloc((size_t)n * sizeof *x[0]), x[1] = malloc((size_t)n * sizeof *x[1]);
+  for (int32_t i = 0; i < n; ++i) b[i] = cos(0.07 * i) + 0.2 * (i % 5);
+  sl_krylov_result res[2];
+  for (int t = 0; t < 2; ++t) {
+    sl_krylov kr;
+    lu_prec p = {NULL, &stale};
+    CHECK(sl_krylov_init(&kr, n, 20, &d) == 0 && sl_linsolve_create(&p.ls, "klu", &d) == 0);
+    sl_krylov_opts o = {.rtol = 1e-6, .restart = 20, .max_iterations = 20, .predict = 1, .trust_estimate = t};
+    memset(x[t], 0, (size_t)n * sizeof *x[t]);
+    CHECK(sl_fgmres(&kr, apply_csr, &A, apply_lu, &p, b, x[t], &o, &res[t], &d) == 0);
+    sl_linsolve_destroy(p.ls);
+    sl_krylov_free(&kr);
+  }
+  sl_csr_matvec(&A, x[1], r);
+  for (int32_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
+  double rt = norm2(r, n), bn = norm2(b, n);
+  printf("trusted estimate: %d and %d iterations, estimate %.6e, true residual %.6e (of |b| %.3e)\n",
+         res[1].iterations, res[0].iterations, res[1].residual, rt, bn);
+  CHECK(res[0].status == SL_KRYLOV_CONVERGED && res[1].status == SL_KRYLOV_CONVERGED);
+  CHECK(res[0].iterations == res[1].iterations && max_diff(x[0], x[1], n) == 0.0);
+  CHECK(rt <= 1e-6 * bn && res[0].residual == rt);
+  CHECK(fabs(res[1].residual - rt) <= 1e-6 * rt);
+  sl_csr_free(&A), sl_csr_free(&stale);
+  free(b), free(r), free(x[0]), free(x[1]);
+}
+
 /* ---- reuse in the linear solvers --------------------------------------------------- */
 
 static void reuse(const char *name) {
@@ -360,6 +400,7 @@ int main(void) {
   distinct_eigenvalues();
   unpreconditioned();
   preconditioned();
+  trusted_estimate();
   reuse("umfpack");
   reuse("klu");
   reuse("cholmod");

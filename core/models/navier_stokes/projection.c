@@ -349,7 +349,8 @@ static int velocity_solve(sl_projection *pj, sl_csr *F, const double *b, double 
     sl_krylov_opts ko = {.rtol = eps,
                          .restart = SL_PROJECTION_KRYLOV_BUDGET,
                          .max_iterations = SL_PROJECTION_KRYLOV_BUDGET,
-                         .predict = 1};
+                         .predict = 1,
+                         .trust_estimate = 1}; /* no product for the last residual: only x and the count are used */
     sl_krylov_result kr;
     sl_diag dk = {{0}};
     int rc = sl_fgmres(&pj->kry, apply_F, F, apply_P, pj, b, x, &ko, &kr, &dk);
