@@ -236,7 +236,8 @@ static const sl_kind_info contracts[] = {
          "pipe: [closure.turbulent_dispersion] D_t in every cell (nu_t = mu_t/rho_f of [closure.turbulence], t_fs "
          "of Krampa's eq 4.61 with [pipe] crossing_trajectory, k_fs Tchen's equilibrium or model C's transported "
          "one), the radial solids balance's diffusivity D_t + c_s c_f^2 (dp_s/dphi)/K; without the section D_t = "
-         "nu_t (the gradient form with Schmidt number 1, eq 4.59)"},
+         "nu_t (the gradient form with Schmidt number 1, eq 4.59); two_fluid (2-D): D_t at each face's nu_t (the "
+         "harmonic mean of its cells'), inputs nu_t and rho_f only (a closure that reads t_fs or k_fs is refused)"},
     [SL_KIND_TURBULENCE_MODULATION] =
         {"the particles' modulation of the fluid's turbulence: an exchange coefficient A of the fluid's k "
          "equation, c_f rho_f Pi_kf = A [k_fs - 2 k + (u_f - u_s).U_d] (and the drift work A nu_t grad(c_f).(u_f - "

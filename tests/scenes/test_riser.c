@@ -123,12 +123,14 @@ static void profile(void) {
   free(phi);
 }
 
-/* dispersed: configs/lscfb_riser_dispersed.ini, the no-slip riser with the turbulent dispersion of the solids in
- * its turbophoretic form (two_fluid_plane_dispersion.c), on 12 x 20 cells graded geometrically to the wall (the
- * last cell 0.05 times the first: 24.8 mm at the axis, 1.24 mm at the wall, y+ = 3.5). Across the developed rows
- * (z > 0.1 m) the wall cell must be denser than the axis cell by more than the laminar model's whole contrast
- * (1e-3 in porosity, scenes_riser_profile), the r dr mean porosity must stay at the 1-D balance within 2e-4 (the
- * solids the drift gathers in the wall's slow layer are few; measured 5e-5), solids conserved to round-off. The radial profile at z = 0.15 m is drawn (riser_porosity.svg/.png, docs/riser.md). */
+/* dispersed: configs/lscfb_riser_dispersed.ini, the no-slip riser with the turbulent dispersion of the solids
+ * ([closure.turbulent_dispersion] model = gradient) and the turbophoretic drift (two_fluid_plane_dispersion.c), on
+ * 12 x 20 cells graded geometrically to the wall (the last cell 0.05 times the first: 24.8 mm at the axis, 1.24 mm
+ * at the wall, y+ = 3.5). Across the developed rows (z > 0.1 m) the wall cell must be denser than the axis cell by
+ * more than the laminar model's whole contrast (1e-3 in porosity, scenes_riser_profile), the r dr mean porosity must
+ * stay at the 1-D balance within 2e-4 (the solids the drift gathers in the wall's slow layer are few; measured
+ * 5e-5), solids conserved to round-off. The radial profile at z = 0.15 m is drawn (riser_porosity.svg/.png,
+ * docs/riser.md). */
 static void dispersed(void) {
   const double phi_eq = phi_uniform(), R = 0.1, ratio = 0.05;
   enum { NX = 12, NY = 20 };
@@ -216,16 +218,23 @@ static void bad_input(void) {
     CHECK_MSG(rc == SL_EBADINPUT && strstr(d.msg, cases[k].expect), "%s: rc %d, %s", cases[k].sets[0], rc, d.msg);
   }
   /* the dispersion's keys: one without [closure.turbulence], the closure without k and epsilon, a k that is not
-     positive in a cell */
+     positive in a cell; [closure.turbulent_dispersion] without [closure.turbulence], and model = simonin, whose
+     t_fs and k_fs the 2-D model does not compute */
   struct {
     const char *scene, *sets[3];
     const char *expect;
   } disp[] = {
       {"lscfb_riser",
-       {"two_fluid.dispersion=turbophoretic", NULL},
-       "dispersion: the solids' turbulent dispersion needs [closure.turbulence]"},
+       {"two_fluid.turbophoresis=true", NULL},
+       "turbophoresis: the solids' turbulent dispersion needs [closure.turbulence]"},
       {"lscfb_riser", {"closure.turbulence.model=k_epsilon", NULL}, "[two_fluid] turbulence_k and turbulence_epsilon"},
       {"lscfb_riser_dispersed", {"two_fluid.turbulence_k=x - 0.05", NULL}, "turbulence_k = -0.0"},
+      {"lscfb_riser",
+       {"closure.turbulent_dispersion.model=gradient", NULL},
+       "the solids' turbulent dispersivity is of the fluid's eddy viscosity: it needs [closure.turbulence]"},
+      {"lscfb_riser_dispersed",
+       {"closure.turbulent_dispersion.model=simonin", NULL},
+       "takes t_fs and k_fs, which the 2-D two_fluid model does not compute"},
   };
   for (size_t k = 0; k < sizeof disp / sizeof disp[0]; ++k) {
     sl_diag d = {{0}};

@@ -500,14 +500,12 @@ static const sl_key plane_keys[] = {
      .def_doc = "required with [closure.turbulence]",
      .help = "its dissipation rate"},
     {.section = "two_fluid",
-     .name = "dispersion_schmidt",
-     .type = SL_KEY_REAL,
-     C(dispersion_schmidt),
-     .def = 1.0,
-     .min = 1e-3,
-     .max = 1e3,
-     .help = "sigma_d of the solids' turbulent dispersion nu_t/sigma_d (Krampa 2009 eq 4.59: "
-             "1)"},
+     .name = "turbophoresis",
+     .type = SL_KEY_BOOL,
+     C(turbophoresis),
+     .help = "with [closure.turbulence]: the solids' drift -phi tau_p grad(2k/3) down the turbulent intensity, "
+             "tau_p = phi rho_s/K of the drag (turbophoresis; Young & Leeming 1997), added to the dispersion's "
+             "flux"},
     {.section = "two_fluid",
      .name = "swirl",
      .type = SL_KEY_BOOL,
@@ -541,14 +539,6 @@ static const sl_key plane_keys[] = {
      .flags = SL_KEY_NAMED,
      .units = "rad s^-1",
      .help = "with [two_fluid] swirl: the body's rotation about the axis (a rotor)"},
-    {.section = "two_fluid",
-     .name = "dispersion",
-     .type = SL_KEY_CHOICE,
-     C(dispersion),
-     .choices = "gradient|turbophoretic",
-     .help = "with [closure.turbulence]: the solids flux -nu_t/sigma_d grad phi "
-             "(gradient), or with the drift -phi tau_p grad(2k/3) down the "
-             "turbulent intensity (turbophoretic; Young & Leeming 1997)"},
     {.section = "flow",
      .name = "gravity",
      .type = SL_KEY_REALS,
@@ -677,6 +667,14 @@ TABLE(tf_plane_keys, plane_keys);
 static const char *const plane_fields[] = {"phi",   "velocity_solid", "velocity_fluid", "pressure", "solids_pressure",
                                            "theta", "swirl_fluid",    "swirl_solid"};
 
+/* The keys that chose the solids' turbulent dispersion before it was a closure. */
+static const sl_moved_key plane_moved[] = {
+    {"two_fluid", "dispersion",
+     "[closure.turbulent_dispersion] model = gradient (and [two_fluid] turbophoresis = true for the turbophoretic "
+     "drift)"},
+    {"two_fluid", "dispersion_schmidt", "[closure.turbulent_dispersion] model = gradient with schmidt = ..."},
+};
+
 const sl_schema sl_two_fluid_plane_schema = {
     .model = "two_fluid",
     .variant = "motion = column, geometry = planar | axisymmetric",
@@ -695,12 +693,18 @@ const sl_schema sl_two_fluid_plane_schema = {
               {"viscosity", 0, "a suspension viscosity: the solids' share of it"},
               {"granular", 0, "kinetic theory: the solids viscosity, conductivity, dissipation and pressure of theta"},
               {"wall_stress", 0, "the solids' stress at walls with solids = wall_stress"},
-              {"turbulence", 0, "the eddy viscosity mu_t(k, epsilon) that disperses the solids (model = k_epsilon)"}},
-    .n_roles = 6,
+              {"turbulence", 0, "the eddy viscosity mu_t(k, epsilon) that disperses the solids (model = k_epsilon)"},
+              {"turbulent_dispersion", 0,
+               "with [closure.turbulence]: the solids' turbulent dispersivity D_t at each face's nu_t (model = "
+               "gradient: nu_t/sigma; without it nu_t, the gradient form with Schmidt number 1; simonin's t_fs and "
+               "k_fs are not computed here)"}},
+    .n_roles = 7,
     .config_size = sizeof(tf_config),
     .boundary_size = sizeof(tfp_boundary),
     .fields = plane_fields,
     .n_fields = 8,
+    .moved = plane_moved,
+    .n_moved = (int)(sizeof plane_moved / sizeof plane_moved[0]),
 };
 
 /* ---- the shear layer ------------------------------------------------------------------------- */

@@ -36,10 +36,10 @@ typedef struct tf_config {
   const char *from;                              /* [initial]: an output file whose last state the column starts from */
   tf_lq_config lq;
   /* [two_fluid] the 2-D model's turbulent dispersion of the solids (two_fluid_plane_dispersion.c): k and epsilon of
-     (x, y, case) for [closure.turbulence], the Schmidt number of the gradient flux, gradient|turbophoretic */
+     (x, y, case) for [closure.turbulence] (the dispersivity is [closure.turbulent_dispersion]'s), the turbophoretic
+     drift on or off */
   sl_scene_expr turb_k, turb_eps;
-  double dispersion_schmidt;
-  int dispersion;
+  int turbophoresis;
   int swirl;       /* [two_fluid] swirl: the 2-D axisymmetric model's azimuthal velocities (two_fluid_plane_swirl.c) */
   int centrifugal; /* [two_fluid] centrifugal: the swirl's rho alpha u_theta^2 / r back on the radial momentum */
   /* [body] (two_fluid_plane_body.c): a solid body of blocked cells, the box x0, x1, y0, y1 it fills, its rotation */

@@ -80,15 +80,16 @@ typedef struct tfp_solids {
 } tfp_solids;
 
 /* The turbulent dispersion of the solids (two_fluid_plane_dispersion.c), with [closure.turbulence]: the cells' k
- * and epsilon (of the scene's expressions) and eddy viscosity, per face the gradient flux's diffusivity and the
- * turbophoretic drift velocity; their solids flux is added to the transport's. */
+ * and epsilon (of the scene's expressions) and eddy viscosity, per face its nu_t, the dispersivity of
+ * [closure.turbulent_dispersion] there and the turbophoretic drift velocity; their solids flux is added to the
+ * transport's. */
 typedef struct tfp_dispersion {
   int on, turbophoretic;
-  double schmidt;
-  sl_closure *c; /* the scene's (not owned) */
-  sl_point_closure pc;
+  int have_dc;                                        /* [closure.turbulent_dispersion] given (else D = nu_t) */
+  sl_closure *c;                                      /* the scene's (not owned) */
+  sl_point_closure pc, dc;                            /* [closure.turbulence], [closure.turbulent_dispersion] */
   double *k, *eps, *mu_t, *tau, *slip, *K, *dK, *phi; /* cells [nc] */
-  double *D, *v;                                      /* faces [nf]: m^2/s, m/s along +x or +y */
+  double *D, *v, *nu;                                 /* faces [nf]: m^2/s, m/s along +x or +y, m^2/s */
 } tfp_dispersion;
 
 /* The swirl of an axisymmetric scene (two_fluid_plane_swirl.c): both phases' angular velocities in the cells,
@@ -251,9 +252,10 @@ void tfp_column_restored(tfp_model *m);
 const char *tfp_linear_name(const tfp_model *m, const char *general);
 sl_linsolve_stats tfp_linear_stats(const tfp_model *m);
 
-/* [closure.turbulence] and the [two_fluid] dispersion keys bound (two_fluid_plane_dispersion.c): nothing when the
- * scene has neither; SL_EBADINPUT with file:line for a key without the closure or k, epsilon outside (0, 1e6],
- * (0, 1e9] at a cell. After tfp_setup. */
+/* [closure.turbulence], [closure.turbulent_dispersion] and the [two_fluid] dispersion keys bound
+ * (two_fluid_plane_dispersion.c): nothing when the scene has none; SL_EBADINPUT with file:line for a key or
+ * [closure.turbulent_dispersion] without [closure.turbulence], a dispersion closure taking t_fs or k_fs, or k,
+ * epsilon outside (0, 1e6], (0, 1e9] at a cell. After tfp_setup. */
 int tfp_dispersion_bind(tfp_model *m, const sl_scene *sc, const tf_config *cfg, sl_diag *d);
 /* The faces' D and v at the solids fraction phi and the iterate's velocities (uf, us). 0 or SL_EFAILED. */
 int tfp_dispersion_update(tfp_model *m, const double *phi, const double *uf, const double *us, sl_diag *d);
