@@ -221,7 +221,9 @@ enum {
   SL_LINSOLVE_ROLE_ANY = 0,
   SL_LINSOLVE_ROLE_VELOCITY,      /* prefix "velocity_" */
   SL_LINSOLVE_ROLE_POISSON,       /* prefix "poisson_", symmetric positive definite */
-  SL_LINSOLVE_ROLE_POISSON_NONSYM /* prefix "poisson_", nonsymmetric */
+  SL_LINSOLVE_ROLE_POISSON_NONSYM, /* prefix "poisson_", nonsymmetric */
+  SL_LINSOLVE_ROLE_PRECONDITIONER  /* a Krylov solver's preconditioner: KLU solves with its factors in single
+                                      precision (core/solve/ls_klu.c) */
 };
 int sl_linsolve_set_role(sl_linsolve *ls, int role, sl_diag *d);
 

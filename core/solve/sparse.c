@@ -262,6 +262,21 @@ void sl_csr_matvec(const sl_csr *A, const double *x, double *y) {
   }
 }
 
+void sl_csr_matvec_split(const sl_csr *A, const double *x, double *y) {
+  const double *v = A->values;
+  const int32_t *c = A->col_idx;
+  for (int32_t i = 0; i < A->n_rows; ++i) {
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    int32_t p = A->row_ptr[i], end = A->row_ptr[i + 1];
+    for (; p + 3 < end; p += 4) {
+      s0 += v[p] * x[c[p]], s1 += v[p + 1] * x[c[p + 1]];
+      s2 += v[p + 2] * x[c[p + 2]], s3 += v[p + 3] * x[c[p + 3]];
+    }
+    for (; p < end; ++p) s0 += v[p] * x[c[p]];
+    y[i] = (s0 + s1) + (s2 + s3);
+  }
+}
+
 void sl_csr_matvec_add(const sl_csr *A, double alpha, const double *x, double beta, double *y) {
   for (int32_t i = 0; i < A->n_rows; ++i) {
     double s = 0.0;

@@ -108,6 +108,10 @@ static inline int sl_csr_add_element_mapped(sl_csr *A, const sl_csr_elem_map *ma
 
 /* y = A x (x has n_cols entries, y has n_rows; they must not overlap). */
 void sl_csr_matvec(const sl_csr *A, const double *x, double *y);
+/* y = A x with each row's sum in four partial sums (entries p mod 4), added at the end: the sum's additions four
+ * chains instead of one, so the product runs at the memory's speed, not the adder's latency; the result is
+ * sl_csr_matvec's up to round-off (another order of the same additions), not bitwise. */
+void sl_csr_matvec_split(const sl_csr *A, const double *x, double *y);
 /* y = alpha A x + beta y. */
 void sl_csr_matvec_add(const sl_csr *A, double alpha, const double *x, double beta, double *y);
 

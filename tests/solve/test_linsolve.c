@@ -3,6 +3,7 @@
  * Poisson matrices, factorisation counting, refactorisation, and failures
  * (singular, not positive definite, not symmetric, unknown names). */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -149,6 +150,61 @@ static void klu_refactor_fallback(void) {
   CHECK(st->n_refactor == 1 && st->n_refactor_redo == 1 && st->n_numeric == 2);
   sl_linsolve_destroy(ls);
   sl_csr_free(&A);
+}
+
+/* KLU in the preconditioner role solves with its factors in single precision (core/solve/ls_klu.c): the
+ * solution within a small multiple of 2^-24 times the condition number of the exact one. A nonsymmetric 7 x 7
+ * matrix of three diagonal blocks coupled one way (KLU's block triangular form, with off-diagonal entries), rows
+ * scaled by 1e3 and 1e-2 (KLU's row scaling) and a small leading diagonal (pivoting); then the 2-D Poisson
+ * matrix on 40 x 40, condition number (4 / pi^2) 41^2 = 681 (its extreme eigenvalues 8 sin^2(pi / 82) and
+ * 8 cos^2(pi / 82)). */
+static void klu_single(void) {
+  sl_diag d = {{0}};
+  enum { N = 7 };
+  const double a[N][N] = {{1e-3, 2, 0, 0, 1, 0, 0},  {3, 1, 1, 0, 0, 0.5, 0},  {1e3, 0, 4e3, 0, 0, 0, 2e3},
+                          {0, 0, 0, 2, 1, 0, 1},       {0, 0, 0, -1, 3, 0, 0},  {0, 0, 0, 0, 0, 0.05, -0.02},
+                          {0, 0, 0, 0, 0, 0.01, 0.03}};
+  int32_t rptr[N + 1], rows[N], cptr[N + 1], cols[N * N], k = 0;
+  rptr[0] = cptr[0] = 0;
+  for (int i = 0; i < N; ++i) {
+    rows[i] = i, rptr[i + 1] = i + 1;
+    for (int j = 0; j < N; ++j)
+      if (a[i][j] != 0.0) cols[k++] = j;
+    cptr[i + 1] = k;
+  }
+  sl_csr A = {0};
+  CHECK(sl_csr_build(&A, N, N, N, rptr, rows, cptr, cols, &d) == 0);
+  for (int32_t i = 0; i < N; ++i)
+    for (int32_t p = A.row_ptr[i]; p < A.row_ptr[i + 1]; ++p) A.values[p] = a[i][A.col_idx[p]];
+  double xe[N], b[N], x[N], y[N];
+  for (int i = 0; i < N; ++i) xe[i] = 1.0 + 0.3 * i - 0.05 * i * i;
+  sl_csr_matvec(&A, xe, b);
+  sl_linsolve *ls = NULL, *lsd = NULL;
+  CHECK(sl_linsolve_create(&ls, "klu", &d) == 0 && sl_linsolve_create(&lsd, "klu", &d) == 0);
+  CHECK(sl_linsolve_set_role(ls, SL_LINSOLVE_ROLE_PRECONDITIONER, &d) == 0);
+  CHECK_MSG(sl_linsolve_solve(ls, &A, b, x, &d) == 0, "%s", d.msg);
+  CHECK_MSG(sl_linsolve_solve(lsd, &A, b, y, &d) == 0, "%s", d.msg);
+  double es = rel_err(x, xe, N), ed = rel_err(y, xe, N);
+  printf("  klu single precision: 7 x 7 block triangular, relative error %.2e (double %.2e)\n", es, ed);
+  CHECK_MSG(es <= 1e-5 && es > 0.0, "single precision error %.3g", es); /* 2^-24 = 6e-8 times a condition near 1e2 */
+  CHECK_MSG(ed <= 1e-13, "double precision error %.3g", ed);
+  sl_linsolve_destroy(ls), sl_linsolve_destroy(lsd);
+  sl_csr_free(&A);
+  CHECK(poisson_build(&A, 40, 40, 0.0, &d) == 0);
+  int32_t n = A.n_rows;
+  double *pe = malloc((size_t)n * sizeof *pe), *pb = malloc((size_t)n * sizeof *pb), *px = malloc((size_t)n * sizeof *px);
+  for (int32_t i = 0; i < n; ++i) pe[i] = sin(0.37 * i) + 0.01 * i + 1.0;
+  sl_csr_matvec(&A, pe, pb);
+  CHECK(sl_linsolve_create(&ls, "klu", &d) == 0);
+  CHECK(sl_linsolve_set_role(ls, SL_LINSOLVE_ROLE_PRECONDITIONER, &d) == 0);
+  CHECK_MSG(sl_linsolve_solve(ls, &A, pb, px, &d) == 0, "%s", d.msg);
+  es = rel_err(px, pe, n);
+  printf("  klu single precision: 2-D Poisson 40 x 40, relative error %.2e (2^-24 x 681 = %.2e)\n", es,
+         681.0 * ldexp(1.0, -24));
+  CHECK_MSG(es <= 10.0 * 681.0 * ldexp(1.0, -24), "single precision error %.3g", es);
+  sl_linsolve_destroy(ls);
+  sl_csr_free(&A);
+  free(pe), free(pb), free(px);
 }
 
 static void singular(const char *name) {
@@ -379,6 +435,7 @@ int main(void) {
   manufactured("klu", 170, 170, "amd");   /* 28 900 unknowns */
   manufactured("klu", 180, 180, "metis"); /* 32 400 */
   klu_refactor_fallback();
+  klu_single();
   singular_fallback();
   cholmod_rejects();
   names();

@@ -295,7 +295,7 @@ void sl_projection_destroy(sl_projection *pj) {
 
 static int apply_F(void *user, const double *x, double *y, sl_diag *d) {
   (void)d;
-  sl_csr_matvec(user, x, y);
+  sl_csr_matvec_split(user, x, y);
   return 0;
 }
 
