@@ -1266,7 +1266,7 @@ static int projection_setup(sl_flow *f, sl_diag *d) {
     return rc;
   }
   /* F's diagonal blocks only precondition FGMRES on F itself: their factors in single precision (linsolve.h) */
-  if (!o.distributed && getenv("SL_P_DOUBLE") == NULL &&
+  if (!o.distributed &&
       (rc = sl_linsolve_set_role(o.preconditioner_solver, SL_LINSOLVE_ROLE_PRECONDITIONER, d))) {
     sl_linsolve_destroy(o.velocity_solver), sl_linsolve_destroy(o.poisson_solver);
     sl_linsolve_destroy(o.preconditioner_solver);
