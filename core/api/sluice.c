@@ -170,7 +170,7 @@ int sluice_check_restart(sluice *s, const char *restart, FILE *report, sluice_er
     const sl_closure *cl = s->scene->closures[r];
     if (!cl) continue;
     const sl_closure_desc *c = cl->desc;
-    fprintf(report, "  %-18s %-24s %s (%s)\n", sl_kind_name(c->kind), c->name, c->version, cl->library->path);
+    fprintf(report, "  %-21s %-24s %s (%s)\n", sl_kind_name(c->kind), c->name, c->version, cl->library->path);
   }
   /* the mesh's report says where the cells are finest */
   if (s->scene->mesh) sl_mesh_print_report(s->scene->mesh, report);

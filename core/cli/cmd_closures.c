@@ -20,13 +20,13 @@ int sl_cmd_closures(int argc, char **argv) {
   sl_registry *r;
   int rc = sl_cli_registry(&r, 1);
   if (rc) return rc;
-  printf("%-18s %-28s %-8s %-40s %s\n", "kind", "name", "version", "summary", "library");
+  printf("%-21s %-28s %-8s %-40s %s\n", "kind", "name", "version", "summary", "library");
   for (int k = SL_KIND_FIRST; k <= SL_KIND_LAST; ++k) {
     for (int i = 0; i < r->n_entries; ++i) {
       const sl_closure_entry *e = &r->entries[i];
       if ((int)e->desc->kind != k) continue;
       const char *base = strrchr(e->library->path, '/');
-      printf("%-18s %-28s %-8s %-40s %s\n", sl_kind_name(e->desc->kind), e->desc->name, e->desc->version,
+      printf("%-21s %-28s %-8s %-40s %s\n", sl_kind_name(e->desc->kind), e->desc->name, e->desc->version,
              e->desc->summary, base ? base + 1 : e->library->path);
     }
   }
