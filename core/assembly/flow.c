@@ -46,6 +46,9 @@ static inline sym3 sym_part(const double G[3][3]) {
 #define AXI_NB 12
 #define AXI_NPAIR 48
 #define AXI_NK (MAX_COMP * MAX_COMP)
+_Static_assert(AXI_NB >= SL_ELEMENT_MAX_BASIS && AXI_NB % 4 == 0, "axi_pts rows hold every basis function");
+_Static_assert(AXI_NPAIR >= SL_ELEMENT_MAX_BASIS * (SL_ELEMENT_MAX_BASIS + 1) / 2 && AXI_NPAIR % 8 == 0,
+               "axi_sums reads the pairs in blocks of 8");
 
 /* What axi_point keeps of each point of the cell, for axi_sums. */
 typedef struct axi_pts {

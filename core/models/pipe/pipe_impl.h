@@ -158,6 +158,9 @@ int pipe_closures_bind(pipe *p, sl_diag *d);
 int pipe_turbulence_coefficients(pipe *p, sl_diag *d);
 int pipe_wall_function(pipe *p, sl_diag *d);
 int pipe_turbulence_update(pipe *p, sl_diag *d);
+/* The cell-scalar boundary hook (core/fv/cell_scalar.h) that holds the wall cell at p->dirichlet: the k and
+   epsilon equations' wall-function values, the fluid's and the solids'. */
+int pipe_hold_wall(void *user, int c, double *rhs, double *diag, sl_diag *d);
 int pipe_momentum_init(pipe *p, sl_diag *d);
 int pipe_momentum_solve(pipe *p, sl_diag *d);
 int pipe_solids_coefficients(pipe *p, sl_diag *d);

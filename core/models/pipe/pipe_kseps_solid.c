@@ -48,7 +48,7 @@ void pipe_kseps_viscosity(pipe *p) {
 }
 
 int pipe_kseps_update(pipe *p, sl_diag *d) {
-  const int n = p->n, w = n - 1;
+  const int n = p->n;
   if (!p->kseps_started) pipe_kseps_viscosity(p);
   /* scratch: buf[0..7] and [14..17] (the steady solve keeps [8..13]) */
   double *mu = p->buf[0], *mk = p->buf[1], *me = p->buf[2], *ep = p->buf[3], *es = p->buf[4], *rho = p->buf[5];
@@ -69,8 +69,6 @@ int pipe_kseps_update(pipe *p, sl_diag *d) {
   for (int i = 0; i < n; ++i) P[i] = mu[i] * 0.5 * (gw[i] * gw[i] + ge[i] * ge[i]);
   const double a = p->cfg->pseudo_step, mul = p->sc->solid.viscosity;
   const double rw = p->iterations > 0 ? p->relax : 1.0; /* under-relaxed as the velocities */
-  /* the wall cell held at the log law's values: a sink that swamps its row, and its source */
-  const double big = 1e12 * (p->rho_s * p->eps_s[w] / p->ks[w] + 1.0);
   for (int pass = 0; pass < 2; ++pass) {
     const int is_k = pass == 0;
     for (int i = 0; i < n; ++i) {
@@ -80,9 +78,9 @@ int pipe_kseps_update(pipe *p, sl_diag *d) {
       src[i] = is_k ? cs * P[i] : cs * ep[i] * P[i];
       snk[i] = is_k ? cs * p->rho_s * p->eps_s[i] / p->ks[i] : cs * es[i];
     }
-    snk[w] += big, src[w] += big * (is_k ? p->k_wall : p->eps_wall);
+    p->dirichlet = is_k ? p->k_wall : p->eps_wall; /* the wall cell held at the log law's values */
     sl_cell_scalar_terms t = {.dt = 1.0, .cap = cap, .s_old = is_k ? p->ks : p->eps_s, .k = kd, .source = src,
-                              .sink = snk};
+                              .sink = snk, .boundary = pipe_hold_wall, .boundary_user = p};
     if ((rc = sl_cell_scalar_solve(&p->cs, &t, x, d)))
       return sl_diag_prefix(d, rc, is_k ? "pipe: the solids' k_s equation" : "pipe: the solids' eps_s equation");
     /* k_s first, with the eps_s of the step's start in its coefficients; eps_s with the k_s of the step's start */

@@ -60,8 +60,8 @@ int pipe_wall_function(pipe *p, sl_diag *d) {
   return 0;
 }
 
-/* The wall cell holds its value: a diagonal that swamps the row. */
-static int hold_wall(void *user, int c, double *rhs, double *diag, sl_diag *d) {
+/* The wall cell holds p->dirichlet: a diagonal that swamps the row (pipe_impl.h). */
+int pipe_hold_wall(void *user, int c, double *rhs, double *diag, sl_diag *d) {
   (void)d;
   pipe *p = user;
   if (c != p->n - 1) return 0;
@@ -88,7 +88,7 @@ int pipe_turbulence_update(pipe *p, sl_diag *d) {
   for (int i = 0; i < n; ++i) P[i] = p->mu_t[i] * 0.5 * (gw[i] * gw[i] + ge[i] * ge[i]);
   const double a = p->cfg->pseudo_step;
   sl_cell_scalar_terms t = {
-      .dt = 1.0, .cap = cap, .k = kd, .source = src, .sink = snk, .boundary = hold_wall, .boundary_user = p};
+      .dt = 1.0, .cap = cap, .k = kd, .source = src, .sink = snk, .boundary = pipe_hold_wall, .boundary_user = p};
   /* the modulation K (k_fs - 2k): with Tchen's k_fs the sink 2 K/(1 + eta) of k (0 without); with the transported
      k_fs (pipe_ksfs.c) the sink 2 K and the source K k_fs (modk) */
   double *mod = p->buf[6], *modk = p->buf[16], *A = p->buf[7], *c3 = p->buf[17];
