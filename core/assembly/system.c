@@ -27,6 +27,41 @@ int sl_system_init(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_el
   return rc;
 }
 
+int sl_system_init_kept(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_elem, const int32_t *elem_dofs,
+                        const unsigned char *keep, sl_diag *d) {
+  if (!keep) return sl_system_init(s, n_dofs, n_elem, dofs_per_elem, elem_dofs, d);
+  memset(s, 0, sizeof *s);
+  s->n_dofs = n_dofs, s->n_elem = n_elem, s->dofs_per_elem = dofs_per_elem, s->elem_dofs = elem_dofs;
+  const int dpe = dofs_per_elem;
+  int64_t n_kept = 0;
+  for (int k = 0; k < dpe * dpe; ++k) n_kept += keep[k] != 0;
+  /* the pattern: one piece per element row, the row's dof against its kept columns */
+  size_t n_rows = (size_t)n_elem * dpe;
+  int32_t *rptr = malloc((n_rows + 1) * sizeof *rptr), *cptr = malloc((n_rows + 1) * sizeof *cptr);
+  int32_t *cols = malloc(((size_t)n_elem * n_kept + 1) * sizeof *cols);
+  s->b = calloc((size_t)n_dofs, sizeof *s->b);
+  int rc = 0;
+  if (!rptr || !cptr || !cols || !s->b || n_rows > INT32_MAX || (int64_t)n_elem * n_kept > INT32_MAX)
+    rc = sl_diag_set(d, SL_ENOMEM, "assembly: out of memory for a system of %d dofs", (int)n_dofs);
+  s->elem_begin = 0, s->elem_end = n_elem;
+  if (!rc) {
+    int32_t at = 0;
+    for (size_t r = 0; r <= n_rows; ++r) rptr[r] = (int32_t)r;
+    for (int32_t e = 0; e < n_elem; ++e)
+      for (int a = 0; a < dpe; ++a) {
+        cptr[(size_t)e * dpe + a] = at;
+        for (int b = 0; b < dpe; ++b)
+          if (keep[a * dpe + b]) cols[at++] = elem_dofs[(size_t)e * dpe + b];
+      }
+    cptr[n_rows] = at;
+    rc = sl_csr_build(&s->A, n_dofs, n_dofs, (int32_t)n_rows, rptr, elem_dofs, cptr, cols, d);
+  }
+  free(rptr), free(cptr), free(cols);
+  if (!rc) rc = sl_csr_elem_map_build_kept(&s->map, &s->A, n_elem, dpe, elem_dofs, keep, d);
+  if (rc) sl_system_free(s);
+  return rc;
+}
+
 void sl_system_free(sl_system *s) {
   sl_linsolve_rows_free(&s->rows);
   free(s->rows.owned);

@@ -41,6 +41,11 @@ typedef struct sl_system {
  * system. Returns 0, SL_EBADINPUT (dof out of range) or SL_EFAILED. */
 int sl_system_init(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_elem, const int32_t *elem_dofs,
                    sl_diag *d);
+/* As sl_system_init, without the local pairs (a, b) of every element with keep[a * dofs_per_elem + b] == 0 in
+ * the pattern (a block the caller knows to be zero): sl_system_add_element drops those entries of Ke. keep
+ * NULL: sl_system_init. */
+int sl_system_init_kept(sl_system *s, int32_t n_dofs, int32_t n_elem, int dofs_per_elem, const int32_t *elem_dofs,
+                        const unsigned char *keep, sl_diag *d);
 void sl_system_free(sl_system *s);
 /* A = 0 and b = 0, pattern kept. */
 void sl_system_zero(sl_system *s);

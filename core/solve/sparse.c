@@ -205,8 +205,10 @@ int sl_csr_add_element(sl_csr *A, int n_r, const int32_t *rows, int n_c, const i
   return 0;
 }
 
-int sl_csr_elem_map_build(sl_csr_elem_map *map, const sl_csr *A, int32_t n_elem, const int32_t *row_ptr_e,
-                          const int32_t *row_dofs, const int32_t *col_ptr_e, const int32_t *col_dofs, sl_diag *d) {
+/* keep: NULL, or (uniform elements of n_keep rows and columns) keep[a * n_keep + b] == 0 for the pairs left out */
+static int elem_map_build(sl_csr_elem_map *map, const sl_csr *A, int32_t n_elem, const int32_t *row_ptr_e,
+                          const int32_t *row_dofs, const int32_t *col_ptr_e, const int32_t *col_dofs,
+                          const unsigned char *keep, int n_keep, sl_diag *d) {
   memset(map, 0, sizeof *map);
   if (!col_ptr_e || !col_dofs) {
     col_ptr_e = row_ptr_e;
@@ -232,6 +234,7 @@ int sl_csr_elem_map_build(sl_csr_elem_map *map, const sl_csr *A, int32_t n_elem,
       for (int32_t kb = col_ptr_e[e]; kb < col_ptr_e[e + 1]; ++kb) {
         int32_t j = col_dofs[kb];
         int32_t q = -1;
+        if (keep && !keep[(ka - row_ptr_e[e]) * n_keep + (kb - col_ptr_e[e])]) j = -1; /* left out of the pattern */
         if (i >= 0 && j >= 0) {
           q = sl_csr_find(A, i, j);
           if (q < 0) {
@@ -245,6 +248,24 @@ int sl_csr_elem_map_build(sl_csr_elem_map *map, const sl_csr *A, int32_t n_elem,
     }
   }
   return 0;
+}
+
+int sl_csr_elem_map_build(sl_csr_elem_map *map, const sl_csr *A, int32_t n_elem, const int32_t *row_ptr_e,
+                          const int32_t *row_dofs, const int32_t *col_ptr_e, const int32_t *col_dofs, sl_diag *d) {
+  return elem_map_build(map, A, n_elem, row_ptr_e, row_dofs, col_ptr_e, col_dofs, NULL, 0, d);
+}
+
+int sl_csr_elem_map_build_kept(sl_csr_elem_map *map, const sl_csr *A, int32_t n_elem, int dofs_per_elem,
+                               const int32_t *elem_dofs, const unsigned char *keep, sl_diag *d) {
+  int32_t *ptr = malloc(((size_t)n_elem + 1) * sizeof *ptr);
+  if (!ptr) {
+    memset(map, 0, sizeof *map);
+    return sl_diag_set(d, SL_ENOMEM, "element map: out of memory");
+  }
+  for (int32_t e = 0; e <= n_elem; ++e) ptr[e] = e * dofs_per_elem;
+  int rc = elem_map_build(map, A, n_elem, ptr, elem_dofs, NULL, NULL, keep, dofs_per_elem, d);
+  free(ptr);
+  return rc;
 }
 
 void sl_csr_elem_map_free(sl_csr_elem_map *map) {

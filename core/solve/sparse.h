@@ -88,6 +88,11 @@ typedef struct sl_csr_elem_map {
  * solve_bench program). */
 int sl_csr_elem_map_build(sl_csr_elem_map *map, const sl_csr *A, int32_t n_elem, const int32_t *row_ptr_e,
                           const int32_t *row_dofs, const int32_t *col_ptr_e, const int32_t *col_dofs, sl_diag *d);
+/* The map of n_elem elements of dofs_per_elem dofs each (square) whose local pairs (a, b) with keep[a *
+ * dofs_per_elem + b] == 0 are not in A's pattern: their positions are -1, and the mapped add drops those
+ * entries of Ke (which the caller knows to be zero). Every other pair must be in the pattern. */
+int sl_csr_elem_map_build_kept(sl_csr_elem_map *map, const sl_csr *A, int32_t n_elem, int dofs_per_elem,
+                               const int32_t *elem_dofs, const unsigned char *keep, sl_diag *d);
 void sl_csr_elem_map_free(sl_csr_elem_map *map);
 /* A += Ke of element e (row-major, the element's own row/column order).
  * Returns 0, or SL_EBADINPUT when the map was built for another pattern or e

@@ -59,6 +59,58 @@ static double rel_diff(const double *a, const double *b, int32_t n) {
   return num / den;
 }
 
+/* The velocity block alone (a split step's F, Newton) with swirl: its (z, theta) block, the z rows against the
+ * theta columns, is zero unless the viscosity changes with the shear rate (the generalized-Newtonian term
+ * 4 mu' gamma (Dhat:D(v)) (Dhat:D(dv)) couples every pair of components): the viscous term does not couple theta
+ * with (r, z), the convection's hoop terms and the Coriolis force couple theta with r only, Newton's rho G(u) has
+ * G_z,theta = 0 (core/models/navier_stokes/projection.c leaves the block out of F's pattern then). A pattern
+ * without it (sl_system_init_kept) gives the same F v, to the bit (the terms left out are +0). */
+static void check_ztheta(const char *name, const sl_th_space *th, const sl_flow_opts *o, const double *u,
+                         const double *v, int newtonian) {
+  sl_diag d = {{0}};
+  int nc = th->mesh->n_cells, nb = th->vel->dofs_per_cell, nbv = 3 * nb;
+  int32_t nv = th->p_offset, nvel = th->n_vel;
+  int32_t *vd = malloc((size_t)nc * nbv * sizeof *vd);
+  unsigned char *keep = malloc((size_t)nbv * nbv);
+  double *y0 = malloc(nv * sizeof *y0), *y1 = malloc(nv * sizeof *y1);
+  for (int c = 0; c < nc; ++c)
+    for (int k = 0; k < nbv; ++k) vd[c * nbv + k] = th->cell_dofs[(size_t)c * th->dofs_per_cell + k];
+  for (int a = 0; a < nbv; ++a)
+    for (int b = 0; b < nbv; ++b) keep[a * nbv + b] = !(a / nb == 1 && b / nb == 2);
+  sl_flow_opts ov = *o;
+  ov.velocity_block = 1;
+  sl_system full, kept;
+  CHECK(sl_system_init(&full, nv, nc, nbv, vd, &d) == 0);
+  CHECK_MSG(sl_system_init_kept(&kept, nv, nc, nbv, vd, keep, &d) == 0, "%s", d.msg);
+  sl_system_zero(&full), sl_system_zero(&kept);
+  CHECK(sl_assemble_flow(&full, th, u, &ov, SL_FLOW_NEWTON, &d) == 0);
+  CHECK_MSG(sl_assemble_flow(&kept, th, u, &ov, SL_FLOW_NEWTON, &d) == 0, "%s", d.msg);
+  double zt = 0.0, big = 0.0;
+  for (int32_t i = 0; i < nv; ++i)
+    for (int32_t p = full.A.row_ptr[i]; p < full.A.row_ptr[i + 1]; ++p) {
+      double a = fabs(full.A.values[p]);
+      big = fmax(big, a);
+      if (i / nvel == 1 && full.A.col_idx[p] / nvel == 2) zt = fmax(zt, a);
+    }
+  sl_csr_matvec(&full.A, v, y0);
+  sl_csr_matvec(&kept.A, v, y1);
+  double dy = 0.0;
+  for (int32_t i = 0; i < nv; ++i) dy = fmax(dy, fabs(y0[i] - y1[i]));
+  printf(
+      "%-34s (z, theta) block of F: max %.2e of %.2e; %d of %d entries kept, F v against the full pattern's "
+      "%.2e\n",
+      name, zt, big, (int)kept.A.nnz, (int)full.A.nnz, dy);
+  if (newtonian) {
+    CHECK_MSG(zt == 0.0, "%s: the (z, theta) block is %.3g, not zero", name, zt);
+    CHECK_MSG(dy == 0.0, "%s: F v without the (z, theta) block differs by %.3g", name, dy);
+    CHECK(9 * (full.A.nnz - kept.A.nnz) > full.A.nnz / 2); /* a block of nine (fewer where dofs are fixed) */
+  } else {
+    CHECK_MSG(zt > 1e-3 * big, "%s: the generalized-Newtonian (z, theta) block is %.3g", name, zt);
+  }
+  sl_system_free(&full), sl_system_free(&kept);
+  free(vd), free(keep), free(y0), free(y1);
+}
+
 static void check_case(const char *name, sl_mesh *m, int n_comp, int axisymmetric, int newtonian, int convection,
                        double omega) {
   sl_diag d = {{0}};
@@ -118,6 +170,7 @@ static void check_case(const char *name, sl_mesh *m, int n_comp, int axisymmetri
     sl_csr_matvec(&s.A, v, rp);
     CHECK(rel_diff(Jv, rp, n) < 1e-14);
   }
+  if (axisymmetric && n_comp == 3) check_ztheta(name, th, &o, u, v, newtonian);
   free(u), free(v), free(h), free(rp), free(rm), free(Jv), free(w), free(z);
   sl_system_free(&s);
   sl_th_destroy(th);

@@ -1251,7 +1251,8 @@ static int projection_setup(sl_flow *f, sl_diag *d) {
                           .open = f->bcs.open,
                           .datum = f->datum,
                           .rank = rank,
-                          .ranks = ranks};
+                          .ranks = ranks,
+                          .shear_free = !(f->ph.visc && f->ph.has_dmu)};
   const char *name;
   int rc = sl_scene_linsolve_general(sc, f->th->p_offset, "the split step's velocity matrix is nonsymmetric",
                                      &o.velocity_solver, &name, d);

@@ -234,10 +234,26 @@ int sl_projection_create(const sl_flow_problem *prob, const sl_projection_opts *
   for (int c = 0; c < nc && !rc; ++c)
     memcpy(pj->vel_cell_dofs + (size_t)c * nbv, th->cell_dofs + (size_t)c * th->dofs_per_cell,
            (size_t)nbv * sizeof *pj->vel_cell_dofs);
+  /* The (z, theta) block of F (the z rows, the theta columns) is zero in an axisymmetric scene with swirl whose
+     viscosity does not change with the shear rate: the viscous term does not couple theta with (r, z) (Batchelor
+     1967, Appendix 2; axi_matrix in core/assembly/flow.c), Picard's convection couples theta with r alone (the
+     hoop entries), the Coriolis force too (r and theta), the cell's sink is in-plane, and Newton's rho G(u) has
+     G_z,theta = d u_z / d theta = 0 (axisymmetric). Only the generalized-Newtonian term 4 mu' gamma (Dhat:D(v))
+     (Dhat:D(dv)) fills it. It is left out of F's pattern: 1/9 of F's entries, of the scatter and of each FGMRES
+     product. Kept: on several ranks, in a rotating frame (P is F itself there), and with curved slip walls
+     (their rotated r and z rows share one pattern). Test fe_flow_jacobian checks that the block is zero. */
+  unsigned char *keep = NULL;
+  if (!rc && !o->distributed && pj->axi && th->n_comp == 3 && o->shear_free && pj->omega == 0.0 && !prob->slip) {
+    int nb = th->vel->dofs_per_cell;
+    if (!(keep = malloc((size_t)nbv * nbv))) rc = sl_diag_set(d, SL_ENOMEM, "projection: out of memory");
+    for (int a = 0; a < nbv && keep; ++a)
+      for (int b = 0; b < nbv; ++b) keep[a * nbv + b] = !(a / nb == 1 && b / nb == 2);
+  }
   if (!rc) {
-    if (!o->distributed) rc = sl_system_init(&pj->vsys, pj->nv, nc, nbv, pj->vel_cell_dofs, d);
+    if (!o->distributed) rc = sl_system_init_kept(&pj->vsys, pj->nv, nc, nbv, pj->vel_cell_dofs, keep, d);
     else rc = sl_system_init_ranks(&pj->vsys, pj->nv, nc, nbv, pj->vel_cell_dofs, o->rank, o->ranks, d);
   }
+  free(keep);
   int ncomp = th->n_comp, nb = th->vel->dofs_per_cell;
   /* distributed, F is solved without its diagonal blocks: no P, no map into F, no FGMRES workspace */
   if (!rc && !o->distributed && !(pj->comp_dofs = malloc((size_t)nc * nbv * sizeof *pj->comp_dofs)))

@@ -59,6 +59,9 @@ typedef struct sl_projection_opts {
    * solved by the (iterative, PETSc) velocity and Poisson solvers on their rows; F's diagonal blocks are not
    * used (preconditioner_solver may be NULL). 0: each assembled whole, F by FGMRES with its diagonal blocks. */
   int distributed, rank, ranks;
+  /* The viscosity does not change with the shear rate (no closure, or one without d mu / d gamma): the
+   * axisymmetric velocity block with swirl then has no (z, theta) block (sl_projection_create). */
+  int shear_free;
   /* the projection's from sl_projection_create on, even on failure: F directly (a fallback), the Poisson
    * matrix, F's diagonal blocks (the preconditioner) */
   sl_linsolve *velocity_solver, *poisson_solver, *preconditioner_solver;
