@@ -19,6 +19,11 @@
 #define MAX_VEL (MAX_COMP * SL_ELEMENT_MAX_BASIS)
 #define MAX_ELEM_DOFS (MAX_VEL + 4)
 
+/* point_sums: EVAL_QB points a block, tables of EVAL_NQ points. */
+#define EVAL_QB 4
+#define EVAL_NQ SL_QUAD_MAX_POINTS
+_Static_assert(EVAL_NQ % EVAL_QB == 0, "the points' tables hold whole blocks");
+
 /* The iterate at one quadrature point, in the frame (e_0, e_1, e_2). */
 typedef struct qp_state {
   double u[3];
@@ -85,6 +90,10 @@ typedef struct flow_work {
   axi_pts pts; /* and its point table */
   geo_cache geo;
   int load_only; /* SL_FLOW_LOAD: the iterate and the viscosity are not needed */
+  /* the reference basis functions at the points, transposed (point_sums): velocity, pressure; nq4 points, the
+     quadrature's padded with zeros to whole blocks */
+  double phiT[SL_ELEMENT_MAX_BASIS][SL_QUAD_MAX_POINTS], psiT[SL_ELEMENT_MAX_BASIS][SL_QUAD_MAX_POINTS];
+  int nq4;
 } flow_work;
 
 static void work_free(flow_work *w) {
@@ -124,6 +133,13 @@ static int work_create(flow_work **out, const sl_th_space *th, const sl_flow_opt
     return rc;
   }
   for (int a = 0; a < th->n_comp; ++a) w->frame[a] = a < th->mesh->dim ? a : 2;
+  int nq = w->fv->quad.n;
+  w->nq4 = (nq + EVAL_QB - 1) / EVAL_QB * EVAL_QB;
+  for (int b = 0; b < SL_ELEMENT_MAX_BASIS; ++b)
+    for (int q = 0; q < w->nq4; ++q) {
+      w->phiT[b][q] = q < nq && b < th->vel->dofs_per_cell ? w->fv->phi[0][q][b] : 0.0;
+      w->psiT[b][q] = q < nq && b < th->pres->dofs_per_cell ? w->fv->phi[1][q][b] : 0.0;
+    }
   *out = w;
   return 0;
 }
@@ -146,36 +162,55 @@ static int check_input(const sl_system *s, const sl_th_space *th, const sl_flow_
   return 0;
 }
 
+/* Sums over a cell's basis functions at its points, EVAL_QB points at a time: out[a][q] = sum_b val[a][b]
+ * tab[b][q] (tab: a table transposed to points along its rows, nq4 of them, padded), each sum in the order of the
+ * basis functions from zero as a loop over b at one point adds it (the same value to the bit), the EVAL_QB points'
+ * sums side by side: short vectors instead of one chain of additions per point. */
+static void point_sums(int na, int nb, int nq4, const double (*val)[SL_ELEMENT_MAX_BASIS], const double (*tab)[EVAL_NQ],
+                       double (*out)[EVAL_NQ]) {
+  for (int a = 0; a < na; ++a)
+    for (int q0 = 0; q0 < nq4; q0 += EVAL_QB) {
+      double s[EVAL_QB] = {0};
+      for (int b = 0; b < nb; ++b) {
+        double v = val[a][b];
+        for (int k = 0; k < EVAL_QB; ++k) s[k] += v * tab[b][q0 + k];
+      }
+      for (int k = 0; k < EVAL_QB; ++k) out[a][q0 + k] = s[k];
+    }
+}
+
 /* The iterate at the quadrature points of the current cell. */
 static void eval_state(const flow_work *w, const sl_th_space *th, const double *u, int axi, qp_state *st,
                        double *shear) {
   const sl_fe_values *fv = w->fv;
-  int c = fv->cell, nb = th->vel->dofs_per_cell, np = th->pres->dofs_per_cell, dim = th->mesh->dim;
+  int c = fv->cell, nb = th->vel->dofs_per_cell, np = th->pres->dofs_per_cell, dim = th->mesh->dim, nc = th->n_comp;
+  int nq = fv->quad.n, nq4 = w->nq4;
   const int32_t *vd = th->vel->cell_dofs + (size_t)c * nb, *pd = th->pres->cell_dofs + (size_t)c * np;
   double ul[MAX_COMP][SL_ELEMENT_MAX_BASIS]; /* the cell's velocity values, gathered once */
-  for (int a = 0; a < th->n_comp; ++a) {
+  for (int a = 0; a < nc; ++a) {
     const double *ua = u + sl_th_vel_dof(th, a, 0);
     for (int b = 0; b < nb; ++b) ul[a][b] = ua[vd[b]];
   }
-  double pl[SL_ELEMENT_MAX_BASIS];
-  for (int k = 0; k < np; ++k) pl[k] = u[th->p_offset + pd[k]];
-  for (int q = 0; q < fv->quad.n; ++q) {
+  double pl[1][SL_ELEMENT_MAX_BASIS];
+  for (int k = 0; k < np; ++k) pl[0][k] = u[th->p_offset + pd[k]];
+  double gt[2][SL_ELEMENT_MAX_BASIS][EVAL_NQ]; /* the cell's basis gradients, transposed */
+  for (int j = 0; j < 2; ++j)
+    for (int b = 0; b < nb; ++b)
+      for (int q = 0; q < nq4; ++q) gt[j][b][q] = q < nq && j < dim ? fv->grad[0][q][b][j] : 0.0;
+  double U[MAX_COMP][EVAL_NQ], G0[MAX_COMP][EVAL_NQ], G1[MAX_COMP][EVAL_NQ], P[1][EVAL_NQ];
+  point_sums(nc, nb, nq4, (const double(*)[SL_ELEMENT_MAX_BASIS])ul, (const double(*)[EVAL_NQ])w->phiT, U);
+  point_sums(nc, nb, nq4, (const double(*)[SL_ELEMENT_MAX_BASIS])ul, (const double(*)[EVAL_NQ])gt[0], G0);
+  if (dim > 1) point_sums(nc, nb, nq4, (const double(*)[SL_ELEMENT_MAX_BASIS])ul, (const double(*)[EVAL_NQ])gt[1], G1);
+  point_sums(1, np, nq4, (const double(*)[SL_ELEMENT_MAX_BASIS])pl, (const double(*)[EVAL_NQ])w->psiT, P);
+  for (int q = 0; q < nq; ++q) {
     qp_state *s = &st[q];
     memset(s, 0, sizeof *s);
-    for (int a = 0; a < th->n_comp; ++a) { /* the sums in registers, in the order of the basis functions */
+    for (int a = 0; a < nc; ++a) {
       int A = w->frame[a];
-      double ua = 0.0, g[2] = {0.0, 0.0};
-      for (int b = 0; b < nb; ++b) {
-        double v = ul[a][b];
-        ua += v * fv->phi[0][q][b];
-        for (int j = 0; j < dim; ++j) g[j] += v * fv->grad[0][q][b][j];
-      }
-      s->u[A] = ua;
-      for (int j = 0; j < dim; ++j) s->G[A][j] = g[j];
+      s->u[A] = U[a][q], s->G[A][0] = G0[a][q];
+      if (dim > 1) s->G[A][1] = G1[a][q];
     }
-    double pq = 0.0;
-    for (int k = 0; k < np; ++k) pq += pl[k] * fv->phi[1][q][k];
-    s->p = pq;
+    s->p = P[0][q];
     if (axi) {
       double r = fv->x[q][0];
       s->G[2][2] += s->u[0] / r;
@@ -392,6 +427,9 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
       const double *ha = o->history + sl_th_vel_dof(th, a, 0);
       for (int b = 0; b < nb; ++b) hl[a][b] = ha[vd[b]];
     }
+  double hq[MAX_COMP][EVAL_NQ]; /* the history at the points */
+  if (o->history)
+    point_sums(nc, nb, w->nq4, (const double(*)[SL_ELEMENT_MAX_BASIS])hl, (const double(*)[EVAL_NQ])w->phiT, hq);
   basis_vec bv[MAX_VEL];
   int acc_used = 0;
   unsigned char fast_at[SL_QUAD_MAX_POINTS] = {0}; /* the points in the fast path's table */
@@ -401,8 +439,7 @@ static void element(flow_work *w, const sl_th_space *th, const sl_flow_opts *o, 
     /* du/dt ~ mass_coef u + history, in the frame. */
     double hist[3] = {0, 0, 0};
     if (o->history)
-      for (int a = 0; a < nc; ++a)
-        for (int b = 0; b < nb; ++b) hist[w->frame[a]] += hl[a][b] * fv->phi[0][q][b];
+      for (int a = 0; a < nc; ++a) hist[w->frame[a]] = hq[a][q];
     /* Body force in the frame, centrifugal included. */
     double f[3] = {0, 0, 0};
     for (int a = 0; a < nc; ++a) f[w->frame[a]] += force[q * nc + a];
