@@ -19,8 +19,18 @@
 #define MAX_VEL (MAX_COMP * SL_ELEMENT_MAX_BASIS)
 #define MAX_ELEM_DOFS (MAX_VEL + 4)
 
+/* A clone of the kernel for AVX2 where the compiler can make one (GCC on x86 with ifunc), chosen at load time. The
+ * arithmetic is the same in every clone: no reassociation, no contraction (ISO C mode), so the sums are bitwise
+ * those of the default build. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__gnu_linux__) && \
+    !defined(__SANITIZE_ADDRESS__)
+#define SL_AXI_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define SL_AXI_CLONES
+#endif
+
 /* point_sums: EVAL_QB points a block, tables of EVAL_NQ points. */
-#define EVAL_QB 4
+#define EVAL_QB 8
 #define EVAL_NQ SL_QUAD_MAX_POINTS
 _Static_assert(EVAL_NQ % EVAL_QB == 0, "the points' tables hold whole blocks");
 
@@ -50,7 +60,7 @@ static inline sym3 sym_part(const double G[3][3]) {
  * zeros to a multiple of 4), AXI_NPAIR packed pairs (i <= j) padded to a multiple of 8, AXI_NK mass coefficients. */
 #define AXI_NB 12
 #define AXI_NPAIR 48
-#define AXI_NK (MAX_COMP * MAX_COMP)
+#define AXI_NK 8 /* the c_AB but (z, theta), zero in every axisymmetric case (axi_point) */
 _Static_assert(AXI_NB >= SL_ELEMENT_MAX_BASIS && AXI_NB % 4 == 0, "axi_pts rows hold every basis function");
 _Static_assert(AXI_NPAIR >= SL_ELEMENT_MAX_BASIS * (SL_ELEMENT_MAX_BASIS + 1) / 2 && AXI_NPAIR % 8 == 0,
                "axi_sums reads the pairs in blocks of 8");
@@ -62,7 +72,7 @@ typedef struct axi_pts {
   double phi[SL_QUAD_MAX_POINTS][AXI_NB];    /* phi_i */
   double wm[SL_QUAD_MAX_POINTS];             /* wq mu */
   double pp[SL_QUAD_MAX_POINTS][AXI_NPAIR];  /* phi_i phi_j, packed by rows of the upper triangle */
-  double ck[SL_QUAD_MAX_POINTS][AXI_NK + 2]; /* wq c_AB, zero beyond nc * nc (blocks of 3) */
+  double ck[SL_QUAD_MAX_POINTS][AXI_NK]; /* wq c_AB packed (axi_mass_index), zero beyond (blocks of 4) */
 } axi_pts;
 
 /* The sums of the axisymmetric fast path (axi_sums). */
@@ -70,8 +80,12 @@ typedef struct axi_acc {
   double X[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS], Y[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS],
       H[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS], S[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS],
       Z[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS], U[SL_ELEMENT_MAX_BASIS * SL_ELEMENT_MAX_BASIS];
-  double M[AXI_NK][AXI_NPAIR]; /* packed upper triangles */
+  double M[AXI_NK][AXI_NPAIR]; /* packed upper triangles, in the order of ck */
 } axi_acc;
+
+/* The place of c_AB among the packed coefficients: row by row, (z, theta) left out (nc = 3: rr rz rt zr zz tr tz
+ * tt; nc = 2: rr rz zr zz). */
+static inline int axi_mass_index(int nc, int A, int B) { return nc == 3 ? A * 3 + B - (A * 3 + B > 5) : A * 2 + B; }
 
 /* The cell geometry of a batch (sl_fe_values_reinit in batch_pass), kept for the element pass. */
 typedef struct geo_cache {
@@ -93,6 +107,7 @@ typedef struct flow_work {
   /* the reference basis functions at the points, transposed (point_sums): velocity, pressure; nq4 points, the
      quadrature's padded with zeros to whole blocks */
   double phiT[SL_ELEMENT_MAX_BASIS][SL_QUAD_MAX_POINTS], psiT[SL_ELEMENT_MAX_BASIS][SL_QUAD_MAX_POINTS];
+  double gradT[2][SL_ELEMENT_MAX_BASIS][SL_QUAD_MAX_POINTS]; /* the cell's gradients (eval_state), zero padded */
   int nq4;
 } flow_work;
 
@@ -166,6 +181,7 @@ static int check_input(const sl_system *s, const sl_th_space *th, const sl_flow_
  * tab[b][q] (tab: a table transposed to points along its rows, nq4 of them, padded), each sum in the order of the
  * basis functions from zero as a loop over b at one point adds it (the same value to the bit), the EVAL_QB points'
  * sums side by side: short vectors instead of one chain of additions per point. */
+SL_AXI_CLONES
 static void point_sums(int na, int nb, int nq4, const double (*val)[SL_ELEMENT_MAX_BASIS], const double (*tab)[EVAL_NQ],
                        double (*out)[EVAL_NQ]) {
   for (int a = 0; a < na; ++a)
@@ -180,7 +196,7 @@ static void point_sums(int na, int nb, int nq4, const double (*val)[SL_ELEMENT_M
 }
 
 /* The iterate at the quadrature points of the current cell. */
-static void eval_state(const flow_work *w, const sl_th_space *th, const double *u, int axi, qp_state *st,
+static void eval_state(flow_work *w, const sl_th_space *th, const double *u, int axi, qp_state *st,
                        double *shear) {
   const sl_fe_values *fv = w->fv;
   int c = fv->cell, nb = th->vel->dofs_per_cell, np = th->pres->dofs_per_cell, dim = th->mesh->dim, nc = th->n_comp;
@@ -193,10 +209,12 @@ static void eval_state(const flow_work *w, const sl_th_space *th, const double *
   }
   double pl[1][SL_ELEMENT_MAX_BASIS];
   for (int k = 0; k < np; ++k) pl[0][k] = u[th->p_offset + pd[k]];
-  double gt[2][SL_ELEMENT_MAX_BASIS][EVAL_NQ]; /* the cell's basis gradients, transposed */
-  for (int j = 0; j < 2; ++j)
-    for (int b = 0; b < nb; ++b)
-      for (int q = 0; q < nq4; ++q) gt[j][b][q] = q < nq && j < dim ? fv->grad[0][q][b][j] : 0.0;
+  double(*gt)[SL_ELEMENT_MAX_BASIS][EVAL_NQ] = w->gradT; /* the cell's basis gradients, transposed */
+  for (int q = 0; q < nq; ++q)
+    for (int b = 0; b < nb; ++b) {
+      gt[0][b][q] = fv->grad[0][q][b][0];
+      if (dim > 1) gt[1][b][q] = fv->grad[0][q][b][1];
+    }
   double U[MAX_COMP][EVAL_NQ], G0[MAX_COMP][EVAL_NQ], G1[MAX_COMP][EVAL_NQ], P[1][EVAL_NQ];
   point_sums(nc, nb, nq4, (const double(*)[SL_ELEMENT_MAX_BASIS])ul, (const double(*)[EVAL_NQ])w->phiT, U);
   point_sums(nc, nb, nq4, (const double(*)[SL_ELEMENT_MAX_BASIS])ul, (const double(*)[EVAL_NQ])gt[0], G0);
@@ -319,8 +337,11 @@ static void axi_point(axi_pts *restrict P, int q, double *Ke, int n, int nc, int
     h[j] = phi[j] * rinv, P->g0[q][j] = grad[j][0], P->g1[q][j] = grad[j][1], P->phi[q][j] = phi[j];
   }
   P->wm[q] = wq * mq;
+  /* c_z,theta is zero: no Coriolis term there (the frame's C couples r and theta), no hoop entry of Picard's
+     convection (those are (r, theta) and (theta, r)), the sink in-plane, and G_z,theta = d u_z / d theta = 0 */
   for (int A = 0; A < nc; ++A)
-    for (int B = 0; B < nc; ++B) P->ck[q][A * nc + B] = wq * c[A][B];
+    for (int B = 0; B < nc; ++B)
+      if (!(A == 1 && B == 2)) P->ck[q][axi_mass_index(nc, A, B)] = wq * c[A][B];
   int npair = 0, nv = nc * nb;
   for (int i = 0; i < nb; ++i)
     for (int j = i; j < nb; ++j) P->pp[q][npair++] = phi[i] * phi[j];
@@ -332,51 +353,59 @@ static void axi_point(axi_pts *restrict P, int q, double *Ke, int n, int nc, int
     }
 }
 
-/* A clone of the kernel for AVX2 where the compiler can make one (GCC on x86 with ifunc), chosen at load time. The
- * arithmetic is the same in every clone: no reassociation, no contraction (ISO C mode), so the sums are bitwise
- * those of the default build. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__gnu_linux__) && \
-    !defined(__SANITIZE_ADDRESS__)
-#define SL_AXI_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define SL_AXI_CLONES
-#endif
 
 /* The sums of axi_acc over the cell's nq points, point by point in the order of the points as the per-point
  * updates added them, each sum held in registers over the points and stored once: X, Y, H, S (upper triangles
  * used), Z, U (full), and the masses M_k = sum_q ck_k(q) pp(q) in blocks of 8 pairs and 3 coefficients. */
-SL_AXI_CLONES
-static void axi_sums(axi_acc *restrict acc, const axi_pts *restrict P, int nq, int nc, int nb) {
-  for (int i = 0; i < nb; ++i) {
-    double x[AXI_NB] = {0}, y[AXI_NB] = {0}, hh[AXI_NB] = {0};
+/* Rows [i0, i1) of the symmetric sums X, Y, H and S from column j0 on (j0 <= i0 a multiple of 4, a constant where
+ * inlined): the upper triangles that axi_finish reads, and the columns of their block below it. */
+static inline void axi_sym_rows(axi_acc *restrict acc, const axi_pts *restrict P, int nq, int nb, int i0, int i1,
+                                int j0) {
+  for (int i = i0; i < i1 && i < nb; ++i) {
+    double x[AXI_NB] = {0}, y[AXI_NB] = {0}, hh[AXI_NB] = {0}, sv[AXI_NB] = {0};
     for (int q = 0; q < nq; ++q) {
       double wm = P->wm[q], gi0 = wm * P->g0[q][i], gi1 = wm * P->g1[q][i], hi = wm * P->h[q][i];
-      for (int j = 0; j < AXI_NB; ++j) x[j] += gi0 * P->g0[q][j], y[j] += gi1 * P->g1[q][j], hh[j] += hi * P->h[q][j];
+      for (int j = j0; j < AXI_NB; ++j) {
+        x[j] += gi0 * P->g0[q][j], y[j] += gi1 * P->g1[q][j], hh[j] += hi * P->h[q][j];
+        sv[j] += gi0 * P->h[q][j] + hi * P->g0[q][j];
+      }
     }
-    for (int j = 0; j < nb; ++j) acc->X[i * nb + j] = x[j], acc->Y[i * nb + j] = y[j], acc->H[i * nb + j] = hh[j];
+    for (int j = j0; j < nb; ++j)
+      acc->X[i * nb + j] = x[j], acc->Y[i * nb + j] = y[j], acc->H[i * nb + j] = hh[j], acc->S[i * nb + j] = sv[j];
   }
+}
+
+/* The sums of axi_acc over the cell's nq points, point by point in the order of the points as the per-point
+ * updates added them, each sum held in registers over the points and stored once: X, Y, H, S (the upper
+ * triangles, rows in blocks of 4 from their block's diagonal on), Z, U (full), and the masses M_k = sum_q ck_k(q)
+ * pp(q) in blocks of 8 pairs and 4 coefficients. */
+SL_AXI_CLONES
+static void axi_sums(axi_acc *restrict acc, const axi_pts *restrict P, int nq, int nc, int nb) {
+  _Static_assert(AXI_NB == 12, "axi_sums takes the rows in three blocks of 4");
+  axi_sym_rows(acc, P, nq, nb, 0, 4, 0);
+  axi_sym_rows(acc, P, nq, nb, 4, 8, 4);
+  axi_sym_rows(acc, P, nq, nb, 8, 12, 8);
   for (int i = 0; i < nb; ++i) {
-    double sv[AXI_NB] = {0}, z[AXI_NB] = {0}, u[AXI_NB] = {0};
+    double z[AXI_NB] = {0}, u[AXI_NB] = {0};
     for (int q = 0; q < nq; ++q) {
-      double wm = P->wm[q], gi0 = wm * P->g0[q][i], gi1 = wm * P->g1[q][i], hi = wm * P->h[q][i], pi = P->phi[q][i];
-      for (int j = 0; j < AXI_NB; ++j)
-        sv[j] += gi0 * P->h[q][j] + hi * P->g0[q][j], z[j] += gi1 * P->g0[q][j], u[j] += pi * P->a[q][j];
+      double gi1 = P->wm[q] * P->g1[q][i], pi = P->phi[q][i];
+      for (int j = 0; j < AXI_NB; ++j) z[j] += gi1 * P->g0[q][j], u[j] += pi * P->a[q][j];
     }
-    for (int j = 0; j < nb; ++j) acc->S[i * nb + j] = sv[j], acc->Z[i * nb + j] = z[j], acc->U[i * nb + j] = u[j];
+    for (int j = 0; j < nb; ++j) acc->Z[i * nb + j] = z[j], acc->U[i * nb + j] = u[j];
   }
-  int npair = nb * (nb + 1) / 2, nk = nc * nc;
+  int npair = nb * (nb + 1) / 2, nk = nc == 3 ? 8 : 4;
   for (int e0 = 0; e0 < npair; e0 += 8)
-    for (int k0 = 0; k0 < nk; k0 += 3) {
-      double m0[8] = {0}, m1[8] = {0}, m2[8] = {0};
+    for (int k0 = 0; k0 < nk; k0 += 4) {
+      double m0[8] = {0}, m1[8] = {0}, m2[8] = {0}, m3[8] = {0};
       for (int q = 0; q < nq; ++q) {
-        const double *pp = P->pp[q] + e0, c0 = P->ck[q][k0], c1 = P->ck[q][k0 + 1], c2 = P->ck[q][k0 + 2];
-        for (int e = 0; e < 8; ++e) m0[e] += c0 * pp[e], m1[e] += c1 * pp[e], m2[e] += c2 * pp[e];
+        const double *pp = P->pp[q] + e0, c0 = P->ck[q][k0], c1 = P->ck[q][k0 + 1], c2 = P->ck[q][k0 + 2],
+                     c3 = P->ck[q][k0 + 3];
+        for (int e = 0; e < 8; ++e)
+          m0[e] += c0 * pp[e], m1[e] += c1 * pp[e], m2[e] += c2 * pp[e], m3[e] += c3 * pp[e];
       }
-      for (int e = 0; e < 8; ++e) {
-        acc->M[k0][e0 + e] = m0[e];
-        if (k0 + 1 < nk) acc->M[k0 + 1][e0 + e] = m1[e];
-        if (k0 + 2 < nk) acc->M[k0 + 2][e0 + e] = m2[e];
-      }
+      for (int e = 0; e < 8; ++e)
+        acc->M[k0][e0 + e] = m0[e], acc->M[k0 + 1][e0 + e] = m1[e], acc->M[k0 + 2][e0 + e] = m2[e],
+                    acc->M[k0 + 3][e0 + e] = m3[e];
     }
 }
 
@@ -391,12 +420,12 @@ static void axi_finish(const axi_acc *acc, double *Ke, int n, int nc, int nb) {
       double X = acc->X[ij], Y = acc->Y[ij], H = acc->H[ij], U = acc->U[i * nb + j];
       r0[j] += 2.0 * X + Y + 2.0 * H + U + acc->M[0][e];
       r0[nb + j] += acc->Z[i * nb + j] + acc->M[1][e];
-      r1[j] += acc->Z[j * nb + i] + acc->M[nc][e];
-      r1[nb + j] += X + 2.0 * Y + U + acc->M[nc + 1][e];
-      if (nc == 3) {
-        r0[2 * nb + j] += acc->M[2][e], r1[2 * nb + j] += acc->M[5][e];
-        r2[j] += acc->M[6][e], r2[nb + j] += acc->M[7][e];
-        r2[2 * nb + j] += X + Y + H - acc->S[ij] + U + acc->M[8][e];
+      r1[j] += acc->Z[j * nb + i] + acc->M[axi_mass_index(nc, 1, 0)][e];
+      r1[nb + j] += X + 2.0 * Y + U + acc->M[axi_mass_index(nc, 1, 1)][e];
+      if (nc == 3) { /* (z, theta): zero (axi_point) */
+        r0[2 * nb + j] += acc->M[axi_mass_index(3, 0, 2)][e];
+        r2[j] += acc->M[axi_mass_index(3, 2, 0)][e], r2[nb + j] += acc->M[axi_mass_index(3, 2, 1)][e];
+        r2[2 * nb + j] += X + Y + H - acc->S[ij] + U + acc->M[axi_mass_index(3, 2, 2)][e];
       }
     }
   }
