@@ -72,7 +72,7 @@ typedef struct axi_pts {
   double phi[SL_QUAD_MAX_POINTS][AXI_NB];    /* phi_i */
   double wm[SL_QUAD_MAX_POINTS];             /* wq mu */
   double pp[SL_QUAD_MAX_POINTS][AXI_NPAIR];  /* phi_i phi_j, packed by rows of the upper triangle */
-  double ck[SL_QUAD_MAX_POINTS][AXI_NK]; /* wq c_AB packed (axi_mass_index), zero beyond (blocks of 4) */
+  double ck[SL_QUAD_MAX_POINTS][AXI_NK];     /* wq c_AB packed (axi_mass_index), zero beyond (blocks of 4) */
 } axi_pts;
 
 /* The sums of the axisymmetric fast path (axi_sums). */
@@ -196,8 +196,7 @@ static void point_sums(int na, int nb, int nq4, const double (*val)[SL_ELEMENT_M
 }
 
 /* The iterate at the quadrature points of the current cell. */
-static void eval_state(flow_work *w, const sl_th_space *th, const double *u, int axi, qp_state *st,
-                       double *shear) {
+static void eval_state(flow_work *w, const sl_th_space *th, const double *u, int axi, qp_state *st, double *shear) {
   const sl_fe_values *fv = w->fv;
   int c = fv->cell, nb = th->vel->dofs_per_cell, np = th->pres->dofs_per_cell, dim = th->mesh->dim, nc = th->n_comp;
   int nq = fv->quad.n, nq4 = w->nq4;
@@ -353,10 +352,6 @@ static void axi_point(axi_pts *restrict P, int q, double *Ke, int n, int nc, int
     }
 }
 
-
-/* The sums of axi_acc over the cell's nq points, point by point in the order of the points as the per-point
- * updates added them, each sum held in registers over the points and stored once: X, Y, H, S (upper triangles
- * used), Z, U (full), and the masses M_k = sum_q ck_k(q) pp(q) in blocks of 8 pairs and 3 coefficients. */
 /* Rows [i0, i1) of the symmetric sums X, Y, H and S from column j0 on (j0 <= i0 a multiple of 4, a constant where
  * inlined): the upper triangles that axi_finish reads, and the columns of their block below it. */
 static inline void axi_sym_rows(axi_acc *restrict acc, const axi_pts *restrict P, int nq, int nb, int i0, int i1,
@@ -400,12 +395,11 @@ static void axi_sums(axi_acc *restrict acc, const axi_pts *restrict P, int nq, i
       for (int q = 0; q < nq; ++q) {
         const double *pp = P->pp[q] + e0, c0 = P->ck[q][k0], c1 = P->ck[q][k0 + 1], c2 = P->ck[q][k0 + 2],
                      c3 = P->ck[q][k0 + 3];
-        for (int e = 0; e < 8; ++e)
-          m0[e] += c0 * pp[e], m1[e] += c1 * pp[e], m2[e] += c2 * pp[e], m3[e] += c3 * pp[e];
+        for (int e = 0; e < 8; ++e) m0[e] += c0 * pp[e], m1[e] += c1 * pp[e], m2[e] += c2 * pp[e], m3[e] += c3 * pp[e];
       }
       for (int e = 0; e < 8; ++e)
         acc->M[k0][e0 + e] = m0[e], acc->M[k0 + 1][e0 + e] = m1[e], acc->M[k0 + 2][e0 + e] = m2[e],
-                    acc->M[k0 + 3][e0 + e] = m3[e];
+                        acc->M[k0 + 3][e0 + e] = m3[e];
     }
 }
 
