@@ -90,7 +90,17 @@ int sl_scene_linsolve_general(const sl_scene *sc, int32_t n, const char *why, sl
   return sl_scene_linsolve(sc, n, ls, name, d);
 }
 
+static int scene_linsolve(const sl_scene *sc, int32_t n, int once, sl_linsolve **ls, const char **name, sl_diag *d);
+
 int sl_scene_linsolve(const sl_scene *sc, int32_t n, sl_linsolve **ls, const char **name, sl_diag *d) {
+  return scene_linsolve(sc, n, 0, ls, name, d);
+}
+
+int sl_scene_linsolve_once(const sl_scene *sc, int32_t n, sl_linsolve **ls, const char **name, sl_diag *d) {
+  return scene_linsolve(sc, n, 1, ls, name, d);
+}
+
+static int scene_linsolve(const sl_scene *sc, int32_t n, int once, sl_linsolve **ls, const char **name, sl_diag *d) {
   *ls = NULL;
   int which = sc->solver.linear; /* 0: auto, else linear_names[which - 1] */
   int n_names = (int)(sizeof linear_names / sizeof *linear_names);
@@ -98,7 +108,10 @@ int sl_scene_linsolve(const sl_scene *sc, int32_t n, sl_linsolve **ls, const cha
   int rc = sl_linsolve_ranks(&rank, &ranks, d);
   if (rc) return rc;
   /* auto: PETSc when launched on several ranks (the scene's validation refused a direct solver there) */
-  *name = which > 0 && which <= n_names ? linear_names[which - 1] : ranks > 1 ? "petsc" : sl_linsolve_default_name(n);
+  *name = which > 0 && which <= n_names ? linear_names[which - 1]
+          : ranks > 1                   ? "petsc"
+          : once                        ? sl_linsolve_default_name_once(n)
+                                        : sl_linsolve_default_name(n);
   if (strcmp(*name, "petsc") == 0 && (rc = sl_linsolve_petsc_scene_options(sc->solver.petsc_options, d))) return rc;
   if ((rc = sl_linsolve_create(ls, *name, d))) return rc;
   if (sc->solver.reuse && (rc = sl_linsolve_set_reuse_name(*ls, "never", d))) {

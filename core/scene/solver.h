@@ -24,6 +24,9 @@ int sl_scene_petsc_section(const sl_ini_section *sec, char **options, sl_diag *d
 
 /* For a system of n unknowns; *name: the solver's name (static). */
 int sl_scene_linsolve(const sl_scene *sc, int32_t n, sl_linsolve **ls, const char **name, sl_diag *d);
+/* The same for a matrix factorised once or twice a run and solved a few times (no refactorisations to reuse):
+ * auto picks sl_linsolve_default_name_once. */
+int sl_scene_linsolve_once(const sl_scene *sc, int32_t n, sl_linsolve **ls, const char **name, sl_diag *d);
 /* The same for a matrix that is never symmetric positive definite (`why` says what it is): a solver that needs
  * one (cholmod) is bad input found at set-up, not a failure of every step retried down to dt_min. */
 int sl_scene_linsolve_general(const sl_scene *sc, int32_t n, const char *why, sl_linsolve **ls, const char **name,

@@ -113,6 +113,13 @@ const char *sl_linsolve_default_name(int32_t n) {
   return n < SL_LINSOLVE_KLU_MAX_UNKNOWNS || reference ? "klu" : "umfpack";
 }
 
+const char *sl_linsolve_default_name_once(int32_t n) {
+  (void)n;
+  const char *blas = sl_blas_description();
+  int reference = !strncmp(blas, "reference", 9) || !strncmp(blas, "none", 4);
+  return reference ? "klu" : "umfpack";
+}
+
 int sl_linsolve_built(const char *name) {
   for (int i = 0; name && i < N_BUILT; ++i)
     if (strcmp(name, solver_names[i]) == 0) return 1;
