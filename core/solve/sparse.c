@@ -247,6 +247,21 @@ static int elem_map_build(sl_csr_elem_map *map, const sl_csr *A, int32_t n_elem,
       }
     }
   }
+  /* distinct: each element's positions marked with its number, a second mark of one is a repeat */
+  int32_t *mark = malloc(((size_t)A->nnz + 1) * sizeof *mark);
+  map->distinct = mark != NULL;
+  for (int32_t j = 0; mark && j < A->nnz; ++j) mark[j] = -1;
+  for (int32_t e = 0; mark && e < n_elem && map->distinct; ++e)
+    for (int64_t k = map->offset[e]; k < map->offset[e + 1]; ++k) {
+      int32_t q = map->pos[k];
+      if (q < 0) continue;
+      if (mark[q] == e) {
+        map->distinct = 0;
+        break;
+      }
+      mark[q] = e;
+    }
+  free(mark);
   return 0;
 }
 

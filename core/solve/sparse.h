@@ -80,6 +80,8 @@ typedef struct sl_csr_elem_map {
   int64_t *offset; /* n_elem + 1, into pos */
   int32_t *pos;    /* sum over e of n_r(e) * n_c(e) */
   uint64_t pattern_id;
+  int distinct; /* no element holds a position twice (no dof twice in an element): the add loads a group of
+                   entries before it stores them */
 } sl_csr_elem_map;
 
 /* Same element description as sl_csr_build (NULL columns: square). `map` is
@@ -104,8 +106,17 @@ static inline int sl_csr_add_element_mapped(sl_csr *A, const sl_csr_elem_map *ma
                        map->pattern_id != A->pattern_id ? "belongs to another sparsity pattern" : "out of range",
                        (int)e, (int)map->n_elem);
   const int32_t *p = map->pos + map->offset[e];
-  int64_t k = map->offset[e + 1] - map->offset[e];
-  for (int64_t q = 0; q < k; ++q)
+  int64_t k = map->offset[e + 1] - map->offset[e], q = 0;
+  if (map->distinct) { /* four entries loaded, then stored: no store waits on the next load (the positions differ) */
+    double sink[4] = {0}, *v = A->values;
+    for (; q + 4 <= k; q += 4) {
+      double *d0 = p[q] >= 0 ? v + p[q] : sink, *d1 = p[q + 1] >= 0 ? v + p[q + 1] : sink + 1;
+      double *d2 = p[q + 2] >= 0 ? v + p[q + 2] : sink + 2, *d3 = p[q + 3] >= 0 ? v + p[q + 3] : sink + 3;
+      double v0 = *d0 + Ke[q], v1 = *d1 + Ke[q + 1], v2 = *d2 + Ke[q + 2], v3 = *d3 + Ke[q + 3];
+      *d0 = v0, *d1 = v1, *d2 = v2, *d3 = v3;
+    }
+  }
+  for (; q < k; ++q)
     if (p[q] >= 0) A->values[p[q]] += Ke[q];
   ++A->values_gen;
   return 0;
