@@ -114,10 +114,9 @@ const char *sl_linsolve_default_name(int32_t n) {
 }
 
 const char *sl_linsolve_default_name_once(int32_t n) {
-  (void)n;
   const char *blas = sl_blas_description();
   int reference = !strncmp(blas, "reference", 9) || !strncmp(blas, "none", 4);
-  return reference ? "klu" : "umfpack";
+  return n < SL_LINSOLVE_ONCE_UMFPACK_MIN || reference ? "klu" : "umfpack";
 }
 
 int sl_linsolve_built(const char *name) {

@@ -192,10 +192,12 @@ const char *sl_linsolve_fallback_note(const sl_linsolve *ls);
 enum { SL_LINSOLVE_KLU_MAX_UNKNOWNS = 20000 };
 const char *sl_linsolve_default_name(int32_t n);
 /* The default for a matrix factorised once or twice a run, whose few solves follow one factorisation each (the
- * split step's coupled start, core/models/navier_stokes/flow.c): "umfpack" with an optimised BLAS, at every size,
- * "klu" on the reference BLAS. KLU's cheaper refactorisations are not used there; UMFPACK's supernodal
- * factorisation is faster: spinup's start (15 484 unknowns, one factorisation and an FGMRES solve with it)
- * 0.27 s of CPU against KLU's 0.37 s for the whole one-step run (docs/transient_cost.md). */
+ * split step's coupled start, core/models/navier_stokes/flow.c): "umfpack" with an optimised BLAS from
+ * SL_LINSOLVE_ONCE_UMFPACK_MIN unknowns on, "klu" below it and on the reference BLAS. KLU's cheaper
+ * refactorisations are not used there, and UMFPACK's supernodal factorisation is faster on the larger matrices:
+ * spinup's start (15 484 unknowns, one factorisation and an FGMRES solve with it) 0.27 s of CPU against KLU's
+ * 0.37 s for the whole one-step run; boycott's (7 195) 0.03-0.05 s either way (docs/transient_cost.md). */
+enum { SL_LINSOLVE_ONCE_UMFPACK_MIN = 10000 };
 const char *sl_linsolve_default_name_once(int32_t n);
 
 /* The names accepted by sl_linsolve_create, for help text. */
