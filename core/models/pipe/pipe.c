@@ -145,8 +145,7 @@ static int pipe_create(sl_scene *sc, double gz, pipe **out, sl_diag *d) {
   const int n = p->n;
   if (!rc) {
     double **a[] = {&p->uf,       &p->us,       &p->phi, &p->k,    &p->eps, &p->theta, &p->mu_t, &p->mu_tk, &p->mu_te,
-                    &p->eps_prod, &p->eps_sink, &p->K,   &p->mu_s, &p->Kd,  &p->slip0, &p->ks,   &p->kfs,
-                    &p->eps_s};
+                    &p->eps_prod, &p->eps_sink, &p->K,   &p->mu_s, &p->Kd,  &p->slip0, &p->ks,   &p->kfs,   &p->eps_s};
     for (size_t i = 0; i < sizeof a / sizeof a[0] && !rc; ++i)
       if (!(*a[i] = calloc((size_t)n, sizeof(double)))) rc = sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
     for (int i = 0; i < PIPE_NBUF && !rc; ++i)
