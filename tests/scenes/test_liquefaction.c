@@ -25,7 +25,11 @@
  * - 0.08 mm: a thicker liquefied zone at 6 s; configs/liquefaction_gravel.ini (8 mm, K2max from the gravel range):
  *   the pore pressure ratio below 0.95 everywhere at all times;
  * - the settlement during the shaking within the drainage bound of the surface layer (Ergun 1952), and the base
- *   excess after the shaking within the maximum at its end (no densification after it: maximum principle). */
+ *   excess after the shaking within the maximum at its end (no densification after it: maximum principle), and
+ *   only the bottom layers able to carry the base's peak;
+ * - free vibration: a linear elastic column's period against 4H/V_s and its logarithmic decrement against 2 pi
+ *   zeta of the stated damping, none without it (the integrator does not damp); the base case's free vibration
+ *   after the shaking against the discrete column's fundamental and the stated damping. */
 #include <complex.h>
 #include <math.h>
 #include <stdio.h>
