@@ -258,7 +258,8 @@ static void base_after_shaking(const char *out) {
    * nothing densifies in cells 0 .. k*-1 after 6 s, the maximum principle on them bounds the base by the larger of
    * their largest excess at 6 s and the most cell k* can carry, ratio x P_s0(k*): the upper layers' load transfer,
    * diffusing down, cannot make a later base peak. */
-  double ru_max = scalar(out, "max_pore_pressure_ratio", INFINITY), *ps0 = field_at(out, "solids_pressure", 0.0, &n2, NULL);
+  double ru_max = scalar(out, "max_pore_pressure_ratio", INFINITY),
+         *ps0 = field_at(out, "solids_pressure", 0.0, &n2, NULL);
   double peak = scalar(out, "base_excess_pressure_peak", INFINITY), h = 17.0 / n, ulow = -INFINITY;
   int ks = 0;
   while (ps0 && ks < n && ru_max * ps0[ks] >= peak) ulow = fmax(ulow, u6[ks]), ++ks;
@@ -608,8 +609,16 @@ static void free_vibration_elastic(void) {
   for (int k = 0; k < 2; ++k) {
     char s_xi[64];
     snprintf(s_xi, sizeof s_xi, "shaking.damping=%g", xis[k]);
-    const char *sets[] = {"mesh.cells=48",     s_rec,        s_xi,           "deposit.nbar_drop=0", "shaking.units=si",
-                          "shaking.shear_modulus=1e7", "time.end=10", "time.dt=0.01", "output.every=0.01",   NULL};
+    const char *sets[] = {"mesh.cells=48",
+                          s_rec,
+                          s_xi,
+                          "deposit.nbar_drop=0",
+                          "shaking.units=si",
+                          "shaking.shear_modulus=1e7",
+                          "time.end=10",
+                          "time.dt=0.01",
+                          "output.every=0.01",
+                          NULL};
     if (run_ok("terzaghi_consolidation", NULL, NULL, sets, "test_liquefaction_free.h5")) return;
     double *t, *w, T, delta, a1;
     int n = scalar_series("test_liquefaction_free.h5", "surface_displacement", 2.0, 10.0, &t, &w);
@@ -640,7 +649,8 @@ static double column_period(const double *phi, const double *ps, int top, double
   if (!G || !m || !x || !y || !c) goto done;
   for (int i = 0; i < top; ++i) G[i] = 1e3 * 220.0 * k2max * sqrt(fmax(ps[i], 0.0) * 1e-3) / h;
   for (int k = 1; k <= top; ++k) {
-    double r0 = phi[k - 1] * rho_s + (1.0 - phi[k - 1]) * rho_f, r1 = k < top ? phi[k] * rho_s + (1.0 - phi[k]) * rho_f : 0.0;
+    double r0 = phi[k - 1] * rho_s + (1.0 - phi[k - 1]) * rho_f,
+           r1 = k < top ? phi[k] * rho_s + (1.0 - phi[k]) * rho_f : 0.0;
     m[k] = 0.5 * h * (r0 + r1), x[k] = (double)k / top;
   }
   for (int it = 0; it < 200; ++it) {
@@ -726,13 +736,14 @@ static void scene_oscillation(void) {
     if (amp > gbig) gbig = amp, ibig = i;
     if (nb[i] > nbar_min + 1e-12) worst_free = fmax(worst_free, inc);
     if (i % 10 == 0 || i == top - 1)
-      printf("    cell %2d (%.2f m deep): strain amplitude %.2e over 6-7 s, eps_vd %.2f %%, C2 eps_vd/gamma %.1f, "
-             "Byrne's half-cycle increment %.1e %%%s\n",
-             i, scalar(out, "deposit_height", 0.0) - (i + 0.5) * h, amp, e, C2 * e / gp, inc,
-             nb[i] <= nbar_min + 1e-12 ? " (at nbar_min)" : "");
+      printf(
+          "    cell %2d (%.2f m deep): strain amplitude %.2e over 6-7 s, eps_vd %.2f %%, C2 eps_vd/gamma %.1f, "
+          "Byrne's half-cycle increment %.1e %%%s\n",
+          i, scalar(out, "deposit_height", 0.0) - (i + 0.5) * h, amp, e, C2 * e / gp, inc,
+          nb[i] <= nbar_min + 1e-12 ? " (at nbar_min)" : "");
   }
-  printf("    largest strain amplitude %.2e in cell %d; largest Byrne increment of a cell above nbar_min %.1e %%\n", gbig,
-         ibig, worst_free);
+  printf("    largest strain amplitude %.2e in cell %d; largest Byrne increment of a cell above nbar_min %.1e %%\n",
+         gbig, ibig, worst_free);
   free(gmax), free(gmin), free(nb);
   CHECK_MSG(m >= 20, "the deposit does not keep oscillating after the shaking (%d extrema over 9-15 s)", m);
   /* measured: +0.7 % and +0.9 %; the secant modulus at the window's strains (under 1e-4) against G0, and the
