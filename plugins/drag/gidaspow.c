@@ -115,7 +115,7 @@ static const sl_closure_desc gidaspow = {
         "36:523; Huilin & Gidaspow (2003) Chem. Eng. Sci. 58:3777 (blend)",
     .validity =
         "fluidised beds and suspensions, phi <= 0.74; K jumps at fluid fraction 0.8 unless blended "
-        "(at slip -> 0 by -13 %); C_D jumps by +0.34 % at Re = 1000; dK/dslip is reported as 0 at "
+        "(at slip -> 0 by -13 %); C_D jumps by +0.39 % at Re = 1000; dK/dslip is reported as 0 at "
         "slip = 0",
     .n_params = SL_COUNT_OF(params),
     .params = params,

@@ -83,7 +83,7 @@ static const sl_closure_desc schiller_naumann = {
         "Schiller & Naumann (1933) Z. Ver. Dtsch. Ing. 77:318; Rowe (1961) Trans. Inst. Chem. Eng. "
         "39:175; Pringle (2001) eqs 3.24-3.25",
     .validity =
-        "dilute suspensions (phi -> 0), Re up to about 2e5 (no drag crisis); C_D jumps by +0.34 % at "
+        "dilute suspensions (phi -> 0), Re up to about 2e5 (no drag crisis); C_D jumps by +0.39 % at "
         "Re = 1000; dK/dslip ~ slip^-0.313 as slip -> 0 and is reported as 0 at slip = 0",
     .n_params = 0,
     .params = NULL,

@@ -11,7 +11,7 @@
  * Rowe's correlation as printed by Pringle is the same function, so the
  * `rowe` and `schiller_naumann` choices of the closures give identical
  * numbers; both names are kept so that a scene can say which source it
- * follows. C_D jumps by +0.34 % at Re = 1000 (0.4383 -> 0.44).
+ * follows. C_D jumps by +0.39 % at Re = 1000 (0.4383 -> 0.44).
  *
  * Dallavalle (1948), Micromeritics, Pitman: C_D = (0.63 + 4.8/sqrt(Re))^2
  * (used by Di Felice 1994 and Syamlal & O'Brien 1988).

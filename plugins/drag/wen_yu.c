@@ -97,7 +97,7 @@ static const sl_closure_desc wen_yu = {
         "Fluidization ch. 5; Pringle (2001) eqs 3.24-3.25, 4.20",
     .validity =
         "dilute to moderately dense suspensions, fluid fraction above about 0.8 (Gidaspow switches to "
-        "Ergun below); evaluated for phi <= 0.74; C_D jumps by +0.34 % at Re = 1000; dK/dslip is "
+        "Ergun below); evaluated for phi <= 0.74; C_D jumps by +0.39 % at Re = 1000; dK/dslip is "
         "reported as 0 at slip = 0 (it grows as slip^-0.313 there)",
     .n_params = SL_COUNT_OF(params),
     .params = params,

@@ -168,7 +168,7 @@ static const sl_closure_desc richardson_zaki = {
         "monodisperse non-flocculated suspensions, 0 <= phi <= 1 (the data cover phi up to about 0.5; "
         "phi <= phi_max with the packing cut-off); the 1954 correlation jumps at its Re_t limits and its "
         "wall term was fitted for d/D up to about 0.1 (d > D is refused); C_D of the terminal velocity "
-        "jumps by +0.34 % at Re = 1000 and ignores the drag crisis",
+        "jumps by +0.39 % at Re = 1000 and ignores the drag crisis",
     .n_params = SL_COUNT_OF(params),
     .params = params,
     .params_size = sizeof(rz_params),

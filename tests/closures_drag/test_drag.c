@@ -157,7 +157,7 @@ static void test_schiller_naumann(void) {
    * K u_t = phi (rho_s - rho_f) g. */
   s = S(0.01, 0.0879, 998.2, 1.002e-3, 3e-3, 1.0);
   CHECK_CLOSE(Kx(t, X_NONE, s) * 0.0879, 0.01 * (1140.0 - 998.2) * 9.81, 2e-3);
-  /* The documented +0.34 % jump of C_D at Re = 1000. */
+  /* The documented +0.39 % jump of C_D at Re = 1000. */
   st lo = S(0.1, 1.0 - 1e-12, 1000.0, 1e-3, 1e-3, 1.0), hi = lo;
   hi.slip = 1.0 + 1e-12;
   double jump = Kx(t, X_NONE, hi) / Kx(t, X_NONE, lo) - 1.0;

@@ -145,8 +145,7 @@ static int pipe_create(sl_scene *sc, double gz, pipe **out, sl_diag *d) {
   const int n = p->n;
   if (!rc) {
     double **a[] = {&p->uf,       &p->us,       &p->phi, &p->k,    &p->eps, &p->theta, &p->mu_t, &p->mu_tk, &p->mu_te,
-                    &p->eps_prod, &p->eps_sink, &p->K,   &p->mu_s, &p->Kd,  &p->slip0, &p->ks,   &p->kfs,
-                    &p->eps_s};
+                    &p->eps_prod, &p->eps_sink, &p->K,   &p->mu_s, &p->Kd,  &p->slip0, &p->ks,   &p->kfs,   &p->eps_s};
     for (size_t i = 0; i < sizeof a / sizeof a[0] && !rc; ++i)
       if (!(*a[i] = calloc((size_t)n, sizeof(double)))) rc = sl_diag_set(d, SL_ENOMEM, "pipe: out of memory");
     for (int i = 0; i < PIPE_NBUF && !rc; ++i)
@@ -281,10 +280,22 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
     if (p->change_field && p->change_cell >= 0)
       snprintf(where, sizeof where, ", most in %s at r/R = %.3f", p->change_field, p->g.xc[p->change_cell] / p->R);
     else if (p->change_field) snprintf(where, sizeof where, ", most in %s", p->change_field);
-    snprintf(p->stop_reason, sizeof p->stop_reason,
-             "not converged: %ld iterations ([pipe] iterations) changed the state by %.3g > tolerance %.3g%s "
-             "(relaxation %.3g)",
-             p->iterations, p->change, c->tolerance, where, p->relax);
+    /* a discontinuous drag under a cell has no steady state there: say so (pipe_drag_jump) */
+    double jump = 0.0;
+    int jc = -1;
+    const char *across = NULL;
+    for (pipe *q = p; q && !rc && jc < 0; q = q->other) rc = pipe_drag_jump(q, &jump, &jc, &across, d);
+    if (rc) return rc;
+    if (jc >= 0)
+      snprintf(p->stop_reason, sizeof p->stop_reason,
+               "not converged: %ld iterations changed the state by %.3g > tolerance %.3g%s; [closure.drag] K jumps "
+               "%.2g %% within 0.1 %% of the %s at r/R = %.3f: no steady state there",
+               p->iterations, p->change, c->tolerance, where, 100.0 * jump, across, p->g.xc[jc] / p->R);
+    else
+      snprintf(p->stop_reason, sizeof p->stop_reason,
+               "not converged: %ld iterations ([pipe] iterations) changed the state by %.3g > tolerance %.3g%s "
+               "(relaxation %.3g)",
+               p->iterations, p->change, c->tolerance, where, p->relax);
     rc = sl_diag_set(d, SL_EFAILED, "pipe: %s", p->stop_reason);
   } else if (!rc) {
     if (p->march.on)

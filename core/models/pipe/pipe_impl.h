@@ -165,6 +165,8 @@ int pipe_momentum_init(pipe *p, sl_diag *d);
 int pipe_momentum_solve(pipe *p, sl_diag *d);
 int pipe_solids_coefficients(pipe *p, sl_diag *d);
 int pipe_solids_update(pipe *p, sl_diag *d);
+/* the largest jump of [closure.drag]'s K within 1e-3 of a cell's slip or phi (0, -1, NULL: none; scratch buf[0..7]) */
+int pipe_drag_jump(pipe *p, double *jump, int *cell, const char **across, sl_diag *d);
 /* the solids' turbulent dispersivity D_t in every cell ([closure.turbulent_dispersion]; scratch buf[14..16]) */
 int pipe_turbulent_dispersivity(pipe *p, double *Dt, sl_diag *d);
 int pipe_theta_transport(pipe *p, const double *gd, sl_diag *d);
