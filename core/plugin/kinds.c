@@ -239,7 +239,7 @@ static const sl_kind_info contracts[] = {
          "nu_t (the gradient form with Schmidt number 1, eq 4.59); two_fluid (2-D): D_t at each face's nu_t (the "
          "harmonic mean of its cells'), inputs nu_t and rho_f only (a closure that reads t_fs or k_fs is refused)"},
     [SL_KIND_TURBULENCE_MODULATION] =
-        {"the particles' modulation of the fluid's turbulence: an exchange coefficient A of the fluid's k "
+        {"particles' modulation of the fluid's turbulence: an exchange coefficient A of the fluid's k "
          "equation, c_f rho_f Pi_kf = A [k_fs - 2 k + (u_f - u_s).U_d] (and the drift work A nu_t grad(c_f).(u_f - "
          "u_s)), and C_eps3 of the epsilon equation, C_eps3 (eps/k) times the same (Krampa 2009 eqs 4.80-4.83; "
          "Simonin 1996)",

@@ -165,7 +165,8 @@ static const sl_key solver_keys[] = {
      .type = SL_KEY_CHOICE,
      SL_AT_SCENE(solver.linear),
      .choices = SL_SCENE_LINEAR_CHOICES,
-     .help = "the sparse direct solver (auto: klu below 20 000 unknowns or on the reference BLAS, else umfpack)"},
+     .help = "the sparse direct solver (auto: klu below 20 000 unknowns or on the reference BLAS, else umfpack; "
+             "a matrix factorised once, the split step's coupled start, umfpack from 10 000)"},
     {.section = "solver",
      .name = "reuse",
      .type = SL_KEY_CHOICE,
