@@ -180,6 +180,7 @@ int sluice_check_restart(sluice *s, const char *restart, FILE *report, sluice_er
 static void summarise(const sl_run_result *res, sluice_summary *sum) {
   const sl_model_stats *m = &res->model;
   sum->steps = res->steps, sum->rejected_steps = res->rejected_steps;
+  for (int k = 0; k < 4; ++k) sum->rejected_by[k] = res->rejected_by[k];
   sum->nonlinear_iterations = res->nonlinear_iterations;
   sum->t_start = res->t_start, sum->t_end = res->t_end, sum->t_reached = res->t_reached;
   sum->saved_time = res->saved_time, sum->saved_time_valid = res->saved_time_valid;

@@ -135,6 +135,14 @@ static void print_profile(FILE *f, const sluice *sc, const sluice_summary *m, do
             p, ls->n_reused, ls->n_solves,
             (double)ls->n_krylov_iterations / (double)(ls->n_reused + ls->n_krylov_failed), ls->krylov_max,
             ls->n_krylov_failed, ls->t_krylov);
+  if (m->rejected_by[0] + m->rejected_by[1] + m->rejected_by[2] + m->rejected_by[3] > 0) {
+    static const char *const why[4] = {"the BDF error estimate", "the splitting's error estimate",
+                                       "the nonlinear solve failed", "the solids transport failed"};
+    fprintf(f, "%s rejected steps by reason:", p);
+    for (int k = 0, first = 1; k < 4; ++k)
+      if (m->rejected_by[k] > 0) fprintf(f, "%s %s %ld", first ? "" : ",", why[k], m->rejected_by[k]), first = 0;
+    fputc('\n', f);
+  }
   if (m->solves_skipped > 0)
     fprintf(f, "%s %ld flow solve%s skipped (the flow known: at rest, or at a fixed point)\n", p, m->solves_skipped,
             m->solves_skipped == 1 ? "" : "s");

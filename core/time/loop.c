@@ -225,6 +225,7 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
       L->rejected++;
       h = nrc ? sl_bdf_controller_fail(&L->ctl, &s) : sl_bdf_controller_reject(&L->ctl, &s, err);
       limit_count[coupled_failed ? 5 : nrc ? 1 : 0]++;
+      res->rejected_by[coupled_failed ? 3 : nrc ? 2 : err == st.error && st.error > 1.0 ? 1 : 0]++;
       if (nrc < 0) {
         rc = sl_diag_set(d, -nrc, "%s", dn.msg);
         break;
@@ -332,7 +333,7 @@ static int run_fixed(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_ou
       break;
     }
     if (src) {
-      L->rejected++, ++n_cut;
+      L->rejected++, ++n_cut, res->rejected_by[2]++;
       h = 0.25 * hh;
       if (h < tc->dt_min) {
         rc = sl_diag_set(d, SL_EFAILED, "step rejected at t = %.6g down to dt = %.3g < dt_min = %.3g: %s", t, h,

@@ -142,6 +142,9 @@ typedef struct sl_run_opts {
 /* What a run did. */
 typedef struct sl_run_result {
   long steps, rejected_steps, nonlinear_iterations;
+  /* this run's rejections: the BDF estimate of the state, the model's estimate (sl_step error), the nonlinear
+     solve failed, the coupled part (complete) failed */
+  long rejected_by[4];
   double t_start, t_end, t_reached;
   double saved_time; /* the time of the last state written with its checkpoint (saved_time_valid) */
   int saved_time_valid;

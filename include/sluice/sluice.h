@@ -136,6 +136,9 @@ typedef struct sluice_linear {
 /* What a run did. */
 typedef struct sluice_summary {
   long steps, rejected_steps, nonlinear_iterations;
+  /* the rejections by reason: the BDF error estimate of the state, the model's own estimate (the splitting's),
+     the nonlinear solve failed, the coupled part (the solids transport) failed; this run's, not a restart's */
+  long rejected_by[4];
   double t_start, t_end, t_reached;
   double saved_time; /* the time of the last state saved with its checkpoint, when saved_time_valid */
   int saved_time_valid;
