@@ -68,6 +68,16 @@ double sl_bdf_error(const sl_bdf_step *s, const double *u, const double *predict
  * limited for BDF2 to omega <= 2 (zero-stable below 1 + sqrt 2). */
 double sl_bdf_next_h(const sl_bdf_step *s, double err);
 
+/* The step from t towards a time t_stop it must land on (an output time, the end) with the proposal h: h; or the
+ * rest t_stop - t when it is within 1.05 h (*landing = 1); or, adaptive, half the rest when the rest is below 2 h
+ * (*landing = 1), so that the approach is two equal steps of at least h / 2 each, not h and a sliver. eps: a step
+ * ending within eps of t_stop keeps its length. */
+double sl_bdf_landing_step(double t, double h, double t_stop, double eps, int adaptive, int *landing);
+/* The proposal after a landing step hh that had the proposal h and the controller's h_next: h, but at most
+ * max(h_next, 2 hh), so that the step after a landing is at most twice it (variable-step BDF2 is zero-stable
+ * for step ratios below 1 + sqrt(2): Grigorieff 1983, Numer. Math. 42:359). */
+double sl_bdf_after_landing(double h, double hh, double h_next);
+
 /* Accepts u as u_{n+1}: shifts the history, t += h. */
 void sl_bdf_accept(sl_bdf *b, const sl_bdf_step *s, const double *u);
 

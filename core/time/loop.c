@@ -175,14 +175,9 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
     if (tc->every > 0 && next_out * tc->every < t_stop) t_stop = next_out * tc->every;
     /* a step that ends there up to round-off keeps its length, so that a constant-coefficient matrix stays
        bitwise the same and is not factorised again */
-    if (fabs(b->t + hh - t_stop) > eps_t && (b->t + hh > t_stop || b->t + 1.05 * hh > t_stop))
-      hh = t_stop - b->t, limit = 3;
-    else if (tc->adaptive && b->t + 2.0 * hh > t_stop + eps_t)
-      /* the approach in two equal steps, each at least half the proposal, not a full one and a sliver: the
-         step after a sliver returned to the proposal at a ratio of up to 20 to it, beyond the zero-stability
-         bound 1 + sqrt(2) of variable-step BDF2 (Grigorieff 1983, Numer. Math. 42:359), and its error estimate
-         rejected it (spectrometer to t = 3: 27 of 83 rejections followed a landing; docs/transient_cost.md) */
-      hh = 0.5 * (t_stop - b->t), limit = 3;
+    int landing;
+    hh = sl_bdf_landing_step(b->t, hh, t_stop, eps_t, tc->adaptive, &landing);
+    if (landing) limit = 3;
     sl_bdf_step s;
     sl_bdf_prepare(b, hh, &s, hist, pred);
     memcpy(trial, pred, (size_t)n * sizeof *trial);
@@ -253,7 +248,7 @@ static int run_bdf(sl_time_loop *L, const sl_model_ops *ops, void *self, sl_outp
     double h_next = tc->adaptive ? sl_bdf_controller_accept(&L->ctl, &s, err) : tc->dt;
     if (h_next > tc->dt_max) h_next = tc->dt_max, limit = 2;
     if (limit != 3) h = h_next; /* a step shortened to hit the end keeps the proposal, */
-    else if (tc->adaptive) h = fmin(h, fmax(h_next, 2.0 * hh)); /* up to twice the step it took (as above) */
+    else if (tc->adaptive) h = sl_bdf_after_landing(h, hh, h_next); /* up to twice the step it took */
     limit_count[limit]++;
     if (o->monitor) {
       if (ops->stats) ops->stats(self, res, &res->model); /* what a monitor may read of the run so far */

@@ -12,7 +12,13 @@
  *    (explicit) stiff term, the filters reject fewer steps than the
  *    elementary controller; a step whose error falls like h (a
  *    non-smooth history) is found in three retries; the saved state
- *    continues the proposals exactly. */
+ *    continues the proposals exactly;
+ *  - landing on output times (sl_bdf_landing_step, sl_bdf_after_landing):
+ *    for any proposal h and distance to the output time, every step of
+ *    the approach is at least h/2 (or the whole rest within 1.05 h), the
+ *    output time is hit exactly, and the step after the landing is at most
+ *    twice the landing step: below BDF2's zero-stability bound 1 + sqrt(2)
+ *    on the step ratio (Grigorieff 1983). */
 #include <math.h>
 #include <stdio.h>
 
@@ -278,6 +284,32 @@ static void controller_state(void) {
   }
 }
 
+static void landing(void) {
+  int bad_short = 0, bad_ratio = 0, bad_hit = 0, cases = 0;
+  double worst = 0.0;
+  for (int a = 1; a <= 400; ++a)  /* distance to the output time, in units of the proposal h = 0.01 */
+    for (int g = 0; g < 3; ++g) { /* the controller's proposal after a landing: shrink, keep, grow */
+      const double h0 = 0.01, eps = 1e-12, t_stop = 1.0, rest = 0.0137 * a * h0;
+      double t = t_stop - rest, h = h0, last = 0.0;
+      int steps = 0;
+      while (t < t_stop - eps && steps < 100) {
+        int land;
+        double hh = sl_bdf_landing_step(t, h, t_stop, eps, 1, &land);
+        if (hh < 0.5 * h - 1e-15 && !(land && hh == t_stop - t && hh <= 1.05 * h)) ++bad_short;
+        t = fabs(t + hh - t_stop) <= eps ? t_stop : t + hh;
+        if (land) h = sl_bdf_after_landing(h, hh, (0.5 + 0.75 * g) * hh);
+        last = hh, ++steps;
+      }
+      if (t != t_stop) ++bad_hit;
+      if (h > 2.0 * last * (1 + 1e-12) && last < h0) ++bad_ratio;
+      worst = fmax(worst, h / last);
+      ++cases;
+    }
+  printf("landing: %d approaches, the step after the landing at most %.3f times it\n", cases, worst);
+  CHECK(bad_short == 0 && bad_hit == 0 && bad_ratio == 0);
+  CHECK(worst <= 2.0 + 1e-12 && worst < 1.0 + sqrt(2.0));
+}
+
 int main(void) {
   orders();
   estimates();
@@ -285,5 +317,6 @@ int main(void) {
   controlled();
   retry_exponent();
   controller_state();
+  landing();
   return sl_test_summary();
 }
