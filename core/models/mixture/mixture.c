@@ -81,6 +81,7 @@ typedef struct mixture {
   sl_mixture_inflow *inflow_bc; /* phi of the inflow along boundaries or in time (inflow.h), or NULL */
   sl_face_flux *ff;
   double *phi, *trial, *q, *w; /* cells, cells, faces, faces */
+  double *phi_flow, *q_pred;   /* [n_cells] the phi of the flow's viscosity and density (prepare), [n_faces] */
   double *q_acc;               /* [n_faces] the conservative fluxes of the last accepted step */
   int n_inv;                   /* regions whose solids inventory is written ([output] inventory_*) */
   char inv_name[MAX_INVENTORIES][96];
@@ -226,11 +227,34 @@ static void cell_accelerations(mixture *x, const double *u, const double *dudt) 
  * upright box, 4 x 50 cells, dt = 10 s: 1e-14 m/s to 9e-6 m/s in 10 steps
  * with settling off). Implicit, they are damped for every dt (backward
  * Euler), as in semi-implicit treatments of internal gravity waves. */
-static int prepare(void *user, double dt, sl_diag *d) {
+/* The phi whose viscosity and density the flow's step takes: phi at the step's end as the transport moves it with
+ * the face fluxes of the step's predicted velocity (the BDF predictor), from the accepted phi. With the accepted
+ * phi instead, the flow of a step lags the transport by one step: where the flow follows phi quasi-statically
+ * (the spectrometer: viscous and Ekman times of 3e-4 against steps of 1e-2) the new velocity jumped by the
+ * response to the last step's change of phi however short the step, its BDF estimate did not fall with the step,
+ * and the controller rejected 17.6 % of the steps (docs/transient_cost.md, "Rejected steps of the spectrometer").
+ * The buoyancy keeps the accepted phi with its implicit part below (prepare): with the predicted phi in it too
+ * (and that part only against the predictor's velocity) the settling box at a density contrast of 1 grew
+ * without bound, as the explicit coupling does. Where the transport fails the flow sees the accepted phi. */
+static void predict_transport(mixture *x, double dt, const double *u) {
+  int nc = x->m->n_cells;
+  memcpy(x->phi_flow, x->phi, (size_t)nc * sizeof *x->phi_flow);
+  if (!x->ff || !u) return;
+  double umax = 0.0;
+  for (int32_t i = 0; i < x->th->p_offset; ++i) umax = fmax(umax, fabs(u[i]));
+  sl_diag dp;
+  if (sl_face_flux_conservative(x->ff, u, fmax(x->flux_floor, 1e-8 * umax * x->area_max), x->q_pred, NULL, &dp))
+    return;
+  if (sl_transport_step(x->tr, dt, x->q_pred, x->st.c ? x->w : NULL, x->phi_flow, NULL, &dp))
+    memcpy(x->phi_flow, x->phi, (size_t)nc * sizeof *x->phi_flow);
+}
+
+static int prepare(void *user, double dt, const double *u, sl_diag *d) {
   mixture *x = user;
   (void)d;
   const double *xc = sl_transport_cell_points(x->tr);
   double drho = x->rho_solid - x->rho_f;
+  predict_transport(x, dt, u);
   sl_transport_gradient(x->tr, x->phi, x->grad_phi);
   for (int c = 0; c < x->m->n_cells; ++c) {
     double b[2], *K = x->cell_drag + 4 * (size_t)c, *g = x->grad_phi + 2 * c;
@@ -645,7 +669,10 @@ static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag
   x->q = malloc((size_t)nf * sizeof *x->q);
   x->w = calloc((size_t)nf, sizeof *x->w);
   x->q_acc = calloc((size_t)nf, sizeof *x->q_acc);
-  if (!x->phi || !x->trial || !x->q || !x->w || !x->q_acc) return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
+  x->phi_flow = malloc((size_t)nc * sizeof *x->phi_flow);
+  x->q_pred = calloc((size_t)nf, sizeof *x->q_pred);
+  if (!x->phi || !x->trial || !x->q || !x->w || !x->q_acc || !x->phi_flow || !x->q_pred)
+    return sl_diag_set(d, SL_ENOMEM, "mixture: out of memory");
   if (x->slip_acceleration) {
     x->acc = calloc((size_t)2 * nc, sizeof *x->acc);
     x->b_face = malloc((size_t)2 * nf * sizeof *x->b_face);
@@ -662,6 +689,7 @@ static int mixture_setup(mixture *x, const sl_flow *fl, unsigned fields, sl_diag
   }
   if ((rc = migration_setup(x, d))) return rc;
   if ((rc = initial_phi(x, d))) return rc;
+  memcpy(x->phi_flow, x->phi, (size_t)nc * sizeof *x->phi_flow);
   x->inventory = x->inventory0 = sl_transport_mass(x->tr, x->phi);
   if ((rc = hydrostatic_setup(x, open, d))) return rc;
   if (x->relative_flux_stress && (rc = stress_setup(x, d))) return rc;
@@ -714,6 +742,7 @@ static int unchanged(void *user) { return ((const mixture *)user)->unchanged; }
 static void accept(mixture *x) {
   x->unchanged = memcmp(x->phi, x->trial, (size_t)x->m->n_cells * sizeof *x->phi) == 0;
   memcpy(x->phi, x->trial, (size_t)x->m->n_cells * sizeof *x->phi);
+  memcpy(x->phi_flow, x->phi, (size_t)x->m->n_cells * sizeof *x->phi_flow);
   memcpy(x->q_acc, x->q, (size_t)x->m->n_faces * sizeof *x->q_acc);
   x->inflow += x->trial_inflow;
   sl_mixture_inflow_accept(x->inflow_bc);
@@ -768,6 +797,7 @@ static int restore(mixture *x, const sl_checkpoint *ck, sl_diag *d) {
   if (!p || p->n != x->m->n_cells || !b || b->n != 2)
     return sl_diag_set(d, SL_EBADINPUT, "restart: the checkpoint holds no solids fraction of %d cells", x->m->n_cells);
   memcpy(x->phi, p->data, (size_t)p->n * sizeof *x->phi);
+  memcpy(x->phi_flow, x->phi, (size_t)p->n * sizeof *x->phi_flow);
   x->inventory0 = b->data[0], x->inflow = b->data[1];
   sl_mixture_inflow_restore(x->inflow_bc, sl_checkpoint_find(ck, "solids_through"));
   x->inventory = sl_transport_mass(x->tr, x->phi);
@@ -788,6 +818,7 @@ static void mixture_free(mixture *x) {
   sl_mixture_inflow_destroy(x->inflow_bc);
   sl_face_flux_destroy(x->ff);
   free(x->phi), free(x->trial), free(x->q), free(x->w), free(x->q_acc), free(x->acc), free(x->b_face);
+  free(x->phi_flow), free(x->q_pred);
   free(x->cell_stress), free(x->settle_speed), free(x->node_stress), free(x->node_weight);
   free(x->cell_drag), free(x->grad_phi), free(x->buoy_phi), free(x->p_hydro);
   sl_hydrostatic_destroy(x->hs);
@@ -1018,12 +1049,12 @@ static int mx_setup(void **self, sl_scene *sc, sl_model_info *info, sl_diag *d) 
     return rc;
   }
   sl_flow_rider rider = {.rho_solid = x->rho_solid,
-                         .phi = x->phi,
+                         .phi = x->phi_flow,
                          .extra_stress = x->extra_stress,
                          .user = x,
                          .cell_drag = x->cell_drag,
                          .prepare = x->cell_drag ? prepare : NULL,
-                         .buoyant_phi = x->hs ? x->buoy_phi : NULL,
+                         .buoyant_phi = x->hs ? x->buoy_phi : x->phi, /* the accepted phi (predict_transport) */
                          .pressure_shift = x->hs ? x->p_hydro : NULL,
                          .face_flux = x->q_acc,
                          .unchanged = unchanged,

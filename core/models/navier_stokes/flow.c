@@ -888,7 +888,7 @@ int sl_flow_step(sl_flow *f, sl_step *s, int *iterations, sl_diag *d) {
       return 0;
     }
   }
-  if (f->riding && f->rider.prepare && (rc = f->rider.prepare(f->rider.user, s->dt, d))) return sl_step_code(rc);
+  if (f->riding && f->rider.prepare && (rc = f->rider.prepare(f->rider.user, s->dt, s->u, d))) return sl_step_code(rc);
   rc = f->pj ? split_step(f, s, iterations, d) : solve(f, s->u, iterations, d);
   if (rc == 0 && (rc = check_growth(f, s->u, s->t + s->dt, d))) return -rc;
   f->solved = 1;

@@ -76,9 +76,9 @@ typedef struct sl_flow_rider {
   const double *extra_stress;
   void *user; /* for the hooks below */
   /* A momentum sink per cell (sl_flow_opts cell_drag); before each solve of a step over dt the flow calls
-   * prepare (may be NULL), which brings it up to date. NULL: none. */
+   * prepare (may be NULL) with the step and its predicted velocity, which brings it up to date. NULL: none. */
   const double *cell_drag;
-  int (*prepare)(void *user, double dt, sl_diag *d);
+  int (*prepare)(void *user, double dt, const double *u_predicted, sl_diag *d);
   /* The cell values whose buoyancy the flow takes in place of phi's (the part of phi the pressure does not carry,
    * core/assembly/hydrostatic.h), and the pressure of the part left out, per pressure dof, added to the pressure
    * written. NULL: phi, none. */
