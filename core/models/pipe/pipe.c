@@ -286,16 +286,19 @@ static int pipe_steady(void *self, double *u, long *steps, long *its, sl_diag *d
     const char *across = NULL;
     for (pipe *q = p; q && !rc && jc < 0; q = q->other) rc = pipe_drag_jump(q, &jump, &jc, &across, d);
     if (rc) return rc;
+    int w;
     if (jc >= 0)
-      snprintf(p->stop_reason, sizeof p->stop_reason,
-               "not converged: %ld iterations changed the state by %.3g > tolerance %.3g%s; [closure.drag] K jumps "
-               "%.2g %% within 0.1 %% of the %s at r/R = %.3f: no steady state there",
-               p->iterations, p->change, c->tolerance, where, 100.0 * jump, across, p->g.xc[jc] / p->R);
+      w = snprintf(p->stop_reason, sizeof p->stop_reason,
+                   "not converged: %ld iterations changed the state by %.3g > tolerance %.3g%s; [closure.drag] K jumps "
+                   "%.2g %% within 0.1 %% of the %s at r/R = %.3f: no steady state there",
+                   p->iterations, p->change, c->tolerance, where, 100.0 * jump, across, p->g.xc[jc] / p->R);
     else
-      snprintf(p->stop_reason, sizeof p->stop_reason,
-               "not converged: %ld iterations ([pipe] iterations) changed the state by %.3g > tolerance %.3g%s "
-               "(relaxation %.3g)",
-               p->iterations, p->change, c->tolerance, where, p->relax);
+      w = snprintf(p->stop_reason, sizeof p->stop_reason,
+                   "not converged: %ld iterations ([pipe] iterations) changed the state by %.3g > tolerance %.3g%s "
+                   "(relaxation %.3g)",
+                   p->iterations, p->change, c->tolerance, where, p->relax);
+    /* the reason fills the run summary's fixed line (include/sluice/sluice.h): a cut one ends in "..." */
+    if (w >= (int)sizeof p->stop_reason) memcpy(p->stop_reason + sizeof p->stop_reason - 4, "...", 4);
     rc = sl_diag_set(d, SL_EFAILED, "pipe: %s", p->stop_reason);
   } else if (!rc) {
     if (p->march.on)
